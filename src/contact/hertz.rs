@@ -1,0 +1,132 @@
+//! Hertz normal contact of two smooth, non-conforming elastic bodies, for
+//! circular and elliptical contact areas.
+//!
+//! Sources: Hertz (1882); Johnson, *Contact Mechanics* (1985), §4.2
+//! (circular, eqs. 4.22-4.24) and §4.3 (elliptical, eqs. 4.36-4.42).
+//!
+//! Circular (relative radius R, 1/R = 1/R1 + 1/R2):
+//! ```text
+//! a = (3 F R / (4 E*))^(1/3),  delta = a^2 / R,  p0 = 3 F / (2 pi a^2),
+//! F = K delta^(3/2),  K = 4/3 E* sqrt(R)
+//! ```
+//! Elliptical (principal relative curvatures A <= B, A = 1/(2 Rx), B = 1/(2 Ry);
+//! semi-axes a >= b, k' = b/a, m = 1 - k'^2, K(m), E(m) complete elliptic integrals):
+//! ```text
+//! B/A = ((a/b)^2 E - K) / (K - E)                          (fixes k')
+//! a^3 = 3 F (K - E) / (2 pi E* m A),  b = k' a
+//! delta = 3 F K / (2 pi a E*),  p0 = 3 F / (2 pi a b)
+//! ```
+//! Both give F = K_h delta^(3/2); the law stores K_h and the constant
+//! c_a = a / F^(1/3), so evaluating it costs a few flops.
+
+use super::elliptic::{EllipticIntegrals, solve_kp};
+use std::f64::consts::PI;
+
+/// The Hertz force-approach law of one contact pair.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HertzLaw {
+    /// Effective modulus E* [Pa].
+    pub e_star: f64,
+    /// Relative radii of curvature [Rx, Ry] with Rx <= Ry [m]; equal for a
+    /// circular contact. Rx = 1/(2B), Ry = 1/(2A).
+    pub radii: [f64; 2],
+    /// Shape of the contact ellipse, b/a (1 for a circle).
+    pub axis_ratio: f64,
+    /// Hertz constant K_h in F = K_h delta^(3/2) [N/m^1.5].
+    pub hertz_constant: f64,
+    /// c_a = a / F^(1/3) [m/N^(1/3)].
+    semi_axis_coef: f64,
+}
+
+impl HertzLaw {
+    /// Circular contact with relative radius `r` (1/r = 1/R1 + 1/R2; a plane
+    /// has 1/R2 = 0, a concave seat a negative curvature).
+    pub fn circular(r: f64, e_star: f64) -> Self {
+        HertzLaw {
+            e_star,
+            radii: [r, r],
+            axis_ratio: 1.0,
+            hertz_constant: 4.0 / 3.0 * e_star * r.sqrt(),
+            semi_axis_coef: (3.0 * r / (4.0 * e_star)).cbrt(),
+        }
+    }
+
+    /// Elliptical contact from the two principal relative radii of curvature
+    /// `rx`, `ry` (any order; rx = ry gives the circular law exactly).
+    pub fn elliptical(rx: f64, ry: f64, e_star: f64) -> Self {
+        let (r_small, r_large) = if rx <= ry { (rx, ry) } else { (ry, rx) };
+        if r_small == r_large {
+            return Self::circular(r_small, e_star);
+        }
+        let curv_a = 0.5 / r_large; // smaller curvature, along the major axis a
+        let curv_b = 0.5 / r_small;
+        let ell = EllipticIntegrals::from_kp(solve_kp(curv_b / curv_a));
+        // a^3 / F = 3 (K - E) / (2 pi E* m A) = 3 K (S/m) / (2 pi E* A)
+        let coef = (3.0 * ell.k * ell.s_over_m / (2.0 * PI * e_star * curv_a)).cbrt();
+        // delta = 3 F K / (2 pi a E*) = F^(2/3) 3 K / (2 pi c_a E*)  =>  K_h = (2 pi c_a E* / (3 K))^(3/2)
+        let hertz_constant = (2.0 * PI * coef * e_star / (3.0 * ell.k)).powf(1.5);
+        HertzLaw {
+            e_star,
+            radii: [r_small, r_large],
+            axis_ratio: ell.kp,
+            hertz_constant,
+            semi_axis_coef: coef,
+        }
+    }
+
+    /// Normal force F = K_h delta^(3/2) for delta > 0, else 0 (no tension).
+    pub fn force(&self, approach: f64) -> f64 {
+        if approach > 0.0 {
+            self.hertz_constant * approach * approach.sqrt()
+        } else {
+            0.0
+        }
+    }
+
+    /// Normal stiffness dF/ddelta = 3/2 K_h delta^(1/2) (0 when open).
+    pub fn stiffness(&self, approach: f64) -> f64 {
+        if approach > 0.0 {
+            1.5 * self.hertz_constant * approach.sqrt()
+        } else {
+            0.0
+        }
+    }
+
+    /// Approach delta = (F / K_h)^(2/3) for a load F >= 0.
+    pub fn approach(&self, load: f64) -> f64 {
+        (load.max(0.0) / self.hertz_constant).powf(2.0 / 3.0)
+    }
+
+    /// Semi-axes [a, b], a >= b, for a load F.
+    pub fn semi_axes(&self, load: f64) -> [f64; 2] {
+        let a = self.semi_axis_coef * load.max(0.0).cbrt();
+        [a, a * self.axis_ratio]
+    }
+
+    /// Peak pressure p0 = 3 F / (2 pi a b).
+    pub fn max_pressure(&self, load: f64) -> f64 {
+        if load <= 0.0 {
+            return 0.0;
+        }
+        let [a, b] = self.semi_axes(load);
+        3.0 * load / (2.0 * PI * a * b)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn circular_law_matches_closed_forms() {
+        let (r, e, f) = (5e-3, 115.4e9, 4.7);
+        let h = HertzLaw::circular(r, e);
+        let a = (3.0 * f * r / (4.0 * e)).cbrt();
+        assert!((h.semi_axes(f)[0] / a - 1.0).abs() < 1e-14);
+        assert!((h.approach(f) / (a * a / r) - 1.0).abs() < 1e-14);
+        assert!((h.max_pressure(f) / (3.0 * f / (2.0 * PI * a * a)) - 1.0).abs() < 1e-14);
+        assert!((h.force(h.approach(f)) / f - 1.0).abs() < 1e-14);
+        assert_eq!(h.force(-1e-9), 0.0);
+        assert_eq!(h.stiffness(-1e-9), 0.0);
+    }
+}

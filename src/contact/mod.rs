@@ -1,0 +1,219 @@
+//! Compliant contact laws: one dispatcher over the contact shapes, the Hertz
+//! normal law (circular and elliptical) and the tangential laws.
+//!
+//! | shape | relative radii of curvature |
+//! | --- | --- |
+//! | sphere-plane | R = R1 |
+//! | sphere-sphere (convex) | 1/R = 1/R1 + 1/R2 |
+//! | sphere-seat (ball in a concave spherical seat, R2 > R1) | 1/R = 1/R1 - 1/R2 |
+//! | sphere-cylinder (crossed) | 1/Rx = 1/R1 + 1/R2 (across the pin), Ry = R1 (along it) |
+
+pub mod cattaneo;
+pub mod elliptic;
+pub mod hertz;
+pub mod tangential;
+
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use crate::material::{Material, effective_modulus, effective_shear_modulus};
+pub use hertz::HertzLaw;
+pub use tangential::{
+    Friction, SlipState, TangentialInput, TangentialLaw, TangentialResponse, TangentialState,
+    mindlin_stiffness,
+};
+
+/// The geometric type of a contact pair: a moving ball against a fixed element.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ContactShape {
+    SpherePlane,
+    SphereSphere,
+    SphereSeat,
+    SphereCylinder,
+}
+
+impl ContactShape {
+    pub const ALL: [ContactShape; 4] = [
+        ContactShape::SpherePlane,
+        ContactShape::SphereSphere,
+        ContactShape::SphereSeat,
+        ContactShape::SphereCylinder,
+    ];
+
+    /// Kebab-case name, as in scene files and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            ContactShape::SpherePlane => "sphere-plane",
+            ContactShape::SphereSphere => "sphere-sphere",
+            ContactShape::SphereSeat => "sphere-seat",
+            ContactShape::SphereCylinder => "sphere-cylinder",
+        }
+    }
+
+    /// Whether the shape needs the second body's radius.
+    pub fn needs_radius2(self) -> bool {
+        !matches!(self, ContactShape::SpherePlane)
+    }
+}
+
+impl std::str::FromStr for ContactShape {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        ContactShape::ALL
+            .into_iter()
+            .find(|c| c.name() == s)
+            .ok_or_else(|| {
+                let names: Vec<_> = ContactShape::ALL.iter().map(|c| c.name()).collect();
+                format!(
+                    "unknown contact shape `{s}` (expected one of {})",
+                    names.join(", ")
+                )
+            })
+    }
+}
+
+/// Bad contact input.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ContactError {
+    #[error("{field} = {value} m is invalid: a radius must be a positive, finite length")]
+    BadRadius { field: &'static str, value: f64 },
+    #[error("{shape} needs radius2 (the radius of the fixed element)")]
+    MissingRadius2 { shape: &'static str },
+    #[error(
+        "sphere-seat needs a seat radius radius2 = {r2} m larger than the ball radius radius1 = {r1} m"
+    )]
+    SeatTooSmall { r1: f64, r2: f64 },
+    #[error("load = {0} N is invalid: the normal load must be positive and finite")]
+    BadLoad(f64),
+}
+
+/// One contact pair: shape, radii and materials (1 = moving ball, 2 = fixed element).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactPair {
+    pub shape: ContactShape,
+    pub radius1: f64,
+    pub radius2: Option<f64>,
+    pub material1: Material,
+    pub material2: Material,
+}
+
+/// The laws of one contact pair, ready to evaluate.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactLaw {
+    pub hertz: HertzLaw,
+    /// Effective tangential modulus G* [Pa].
+    pub g_star: f64,
+}
+
+/// Everything a contact gives at one normal load (SI units).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ContactEvaluation {
+    pub shape: ContactShape,
+    pub load_n: f64,
+    pub effective_modulus_pa: f64,
+    pub effective_shear_modulus_pa: f64,
+    /// Relative radii of curvature [Rx, Ry], Rx <= Ry.
+    pub relative_radii_m: [f64; 2],
+    pub hertz_constant: f64,
+    pub approach_m: f64,
+    /// [a, b], a >= b.
+    pub semi_axes_m: [f64; 2],
+    pub max_pressure_pa: f64,
+    pub normal_stiffness_n_per_m: f64,
+    pub tangential_stiffness_n_per_m: f64,
+}
+
+fn check_radius(field: &'static str, value: f64) -> Result<f64, ContactError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(ContactError::BadRadius { field, value })
+    }
+}
+
+impl ContactPair {
+    /// Relative radii of curvature [Rx, Ry] of the pair (see the module table).
+    pub fn relative_radii(&self) -> Result<[f64; 2], ContactError> {
+        let r1 = check_radius("radius1", self.radius1)?;
+        let r2 = match (self.shape.needs_radius2(), self.radius2) {
+            (false, _) => None,
+            (true, None) => {
+                return Err(ContactError::MissingRadius2 {
+                    shape: self.shape.name(),
+                });
+            }
+            (true, Some(r)) => Some(check_radius("radius2", r)?),
+        };
+        Ok(match (self.shape, r2) {
+            (ContactShape::SpherePlane, _) => [r1, r1],
+            (ContactShape::SphereSphere, Some(r2)) => {
+                let r = 1.0 / (1.0 / r1 + 1.0 / r2);
+                [r, r]
+            }
+            (ContactShape::SphereSeat, Some(r2)) => {
+                if r2 <= r1 {
+                    return Err(ContactError::SeatTooSmall { r1, r2 });
+                }
+                let r = 1.0 / (1.0 / r1 - 1.0 / r2);
+                [r, r]
+            }
+            (ContactShape::SphereCylinder, Some(r2)) => [1.0 / (1.0 / r1 + 1.0 / r2), r1],
+            (_, None) => unreachable!("radius2 checked above"),
+        })
+    }
+
+    /// Build the laws of this pair.
+    pub fn law(&self) -> Result<ContactLaw, ContactError> {
+        let [rx, ry] = self.relative_radii()?;
+        let e_star = effective_modulus(&self.material1, &self.material2);
+        Ok(ContactLaw {
+            hertz: HertzLaw::elliptical(rx, ry, e_star),
+            g_star: effective_shear_modulus(&self.material1, &self.material2),
+        })
+    }
+
+    /// Evaluate the pair at a normal load.
+    pub fn evaluate(&self, load: f64) -> Result<ContactEvaluation, ContactError> {
+        let law = self.law()?;
+        law.evaluate(self.shape, load)
+    }
+}
+
+impl ContactLaw {
+    /// Mindlin stiffness k_t at normal load F, and dk_t/dF = k_t / (3 F)
+    /// (k_t ~ a ~ F^(1/3)).
+    pub fn tangential_stiffness(&self, load: f64) -> (f64, f64) {
+        if load <= 0.0 {
+            return (0.0, 0.0);
+        }
+        let kt = mindlin_stiffness(self.g_star, self.hertz.semi_axes(load));
+        (kt, kt / (3.0 * load))
+    }
+
+    /// All outputs at a normal load F > 0.
+    pub fn evaluate(
+        &self,
+        shape: ContactShape,
+        load: f64,
+    ) -> Result<ContactEvaluation, ContactError> {
+        if !(load.is_finite() && load > 0.0) {
+            return Err(ContactError::BadLoad(load));
+        }
+        let h = &self.hertz;
+        let approach = h.approach(load);
+        Ok(ContactEvaluation {
+            shape,
+            load_n: load,
+            effective_modulus_pa: h.e_star,
+            effective_shear_modulus_pa: self.g_star,
+            relative_radii_m: h.radii,
+            hertz_constant: h.hertz_constant,
+            approach_m: approach,
+            semi_axes_m: h.semi_axes(load),
+            max_pressure_pa: h.max_pressure(load),
+            normal_stiffness_n_per_m: h.stiffness(approach),
+            tangential_stiffness_n_per_m: self.tangential_stiffness(load).0,
+        })
+    }
+}

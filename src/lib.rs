@@ -1,0 +1,13 @@
+//! kinrepro: friction-induced re-seating scatter of kinematic couplings.
+//!
+//! Data flows one way (see README.md, "Architecture"):
+//! scene file -> [`scene`] -> coupling assembly -> solver -> pose -> study -> report.
+//! The compliant contact laws ([`contact`]) and the materials ([`material`])
+//! sit under everything; the CLI (`src/main.rs`) holds no physics.
+
+pub mod contact;
+pub mod material;
+pub mod report;
+
+pub use contact::{ContactLaw, ContactPair, ContactShape};
+pub use material::Material;

@@ -1,0 +1,91 @@
+//! The kinrepro command line: parse, call the library, print. No physics here.
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use kinrepro::contact::{ContactPair, ContactShape};
+use kinrepro::material::Material;
+
+#[derive(Parser)]
+#[command(
+    name = "kinrepro",
+    version,
+    about = "Re-seating reproducibility of kinematic couplings"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Evaluate one contact pair (Hertz normal law and Mindlin stiffness) at a load.
+    Contact {
+        /// sphere-plane | sphere-sphere | sphere-seat | sphere-cylinder
+        #[arg(long)]
+        shape: ContactShape,
+        /// Radius of the moving ball [m].
+        #[arg(long, allow_hyphen_values = true)]
+        radius1: f64,
+        /// Radius of the fixed sphere, seat or cylinder [m].
+        #[arg(long, allow_hyphen_values = true)]
+        radius2: Option<f64>,
+        /// Material of the ball (built-in name, e.g. steel).
+        #[arg(long)]
+        material1: String,
+        /// Material of the fixed element.
+        #[arg(long)]
+        material2: String,
+        /// Normal load [N].
+        #[arg(long, allow_hyphen_values = true)]
+        load: f64,
+        /// Print one JSON object instead of a table.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(msg) => {
+            eprintln!("error: {msg}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run(cli: Cli) -> Result<(), String> {
+    match cli.command {
+        Command::Contact {
+            shape,
+            radius1,
+            radius2,
+            material1,
+            material2,
+            load,
+            json,
+        } => {
+            let pair = ContactPair {
+                shape,
+                radius1,
+                radius2,
+                material1: Material::builtin(&material1)
+                    .map_err(|e| format!("--material1: {e}"))?,
+                material2: Material::builtin(&material2)
+                    .map_err(|e| format!("--material2: {e}"))?,
+            };
+            let eval = pair.evaluate(load).map_err(|e| e.to_string())?;
+            if json {
+                println!(
+                    "{}",
+                    serde_json::to_string_pretty(&eval).map_err(|e| e.to_string())?
+                );
+            } else {
+                print!("{}", kinrepro::report::contact::contact_table(&eval));
+            }
+            Ok(())
+        }
+    }
+}

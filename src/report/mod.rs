@@ -1,0 +1,4 @@
+//! Human-facing text: tables with labelled units. Every number comes from
+//! the library's result types; nothing here computes physics.
+
+pub mod contact;
