@@ -8,6 +8,7 @@
 pub mod contact;
 pub mod material;
 pub mod report;
+pub mod study;
 
 pub use contact::{ContactLaw, ContactPair, ContactShape};
 pub use material::Material;

@@ -1,0 +1,228 @@
+//! The TOML scene format as serde types (both forms). Values that are
+//! validated later keep their source span, so errors can name the line.
+//!
+//! High-level form: a `[coupling]` table (arrangement, diameters, groove
+//! realisation, materials, opening angle). Explicit form: `[[balls]]` and
+//! `[[surfaces]]`. Both share `[preload]`, `[friction]`, `[study]`,
+//! `[[evaluation_points]]` and `[[materials]]`. See docs/scenes.md.
+
+use serde::{Deserialize, Serialize};
+use toml::Spanned;
+
+use crate::contact::TangentialLaw;
+
+/// A scene file as written.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFile {
+    /// Optional display name.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+    /// User-defined materials (they may shadow built-in names).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub materials: Vec<MaterialFile>,
+    /// High-level form.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coupling: Option<CouplingFile>,
+    /// Explicit form: the moving balls (body frame = world frame in the
+    /// unloaded touching pose).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub balls: Vec<BallFile>,
+    /// Explicit form: the fixed surfaces, each serving one ball.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub surfaces: Vec<SurfaceFile>,
+    pub preload: PreloadFile,
+    pub friction: FrictionFile,
+    #[serde(default)]
+    pub study: StudyFile,
+    /// Points of the moving half whose pose is reported (default: the centre;
+    /// Kelvin adds the trihedral ball).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub evaluation_points: Vec<EvaluationPointFile>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialFile {
+    pub name: Spanned<String>,
+    /// Young's modulus [Pa].
+    pub youngs_modulus: Spanned<f64>,
+    /// Poisson's ratio [-].
+    pub poisson_ratio: Spanned<f64>,
+    /// Allowable peak contact pressure [Pa].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub allowable_pressure: Option<Spanned<f64>>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Arrangement {
+    /// Three V-grooves pointing at the centre.
+    Maxwell,
+    /// Trihedral seat, V-groove and flat.
+    Kelvin,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum GrooveKind {
+    /// Two flat flanks.
+    Planes,
+    /// Two cylindrical pins along the groove.
+    Cylinders,
+    /// Two fixed balls.
+    Balls,
+}
+
+/// High-level coupling description (lengths in metres).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CouplingFile {
+    pub arrangement: Arrangement,
+    /// Diameter of the circle of ball centres [m].
+    pub diameter: Spanned<f64>,
+    /// Moving ball diameter [m].
+    pub ball_diameter: Spanned<f64>,
+    pub ball_material: Spanned<String>,
+    /// How the grooves (and, for Kelvin, the trihedral seat) are realised.
+    pub groove: GrooveKind,
+    /// Pin or fixed-ball diameter [m] (cylinders, balls).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub groove_element_diameter: Option<Spanned<f64>>,
+    pub groove_material: Spanned<String>,
+    /// Angle between the two flanks of a groove [deg].
+    #[serde(default = "default_opening_angle")]
+    pub opening_angle_deg: Spanned<f64>,
+}
+
+fn default_opening_angle() -> Spanned<f64> {
+    Spanned::new(0..0, 90.0)
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BallFile {
+    /// Centre [m].
+    pub centre: Spanned<[f64; 3]>,
+    /// Radius [m].
+    pub radius: Spanned<f64>,
+    pub material: Spanned<String>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum SurfaceKind {
+    Plane,
+    Cylinder,
+    Sphere,
+}
+
+/// A fixed surface. Which fields are needed depends on `type`:
+/// plane: `point`, `normal`; cylinder: `axis_point`, `direction`, `radius`;
+/// sphere: `centre`, `radius`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SurfaceFile {
+    #[serde(rename = "type")]
+    pub kind: Spanned<SurfaceKind>,
+    /// The moving ball this surface serves, 1-based.
+    pub ball: Spanned<i64>,
+    pub material: Spanned<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub point: Option<Spanned<[f64; 3]>>,
+    /// Outward normal of a plane (towards the ball).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub normal: Option<Spanned<[f64; 3]>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub axis_point: Option<Spanned<[f64; 3]>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub direction: Option<Spanned<[f64; 3]>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub centre: Option<Spanned<[f64; 3]>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub radius: Option<Spanned<f64>>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PreloadFile {
+    /// Total preload [N], ramped from 0.
+    pub force: Spanned<f64>,
+    /// Point of application in the moving half [m] (default: the centre).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub point: Option<Spanned<[f64; 3]>>,
+    /// Direction (default [0, 0, -1]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub direction: Option<Spanned<[f64; 3]>>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Distribution {
+    /// Rectangular in mu0 +- spread (the paper's).
+    #[default]
+    Uniform,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionFile {
+    /// Nominal static coefficient mu0.
+    pub mu_static: Spanned<f64>,
+    /// Half-width of the variation: mu_s in mu0 +- spread.
+    #[serde(default = "zero")]
+    pub spread: Spanned<f64>,
+    #[serde(default)]
+    pub distribution: Distribution,
+    /// mu_d / mu_s.
+    #[serde(default = "default_dynamic_ratio")]
+    pub dynamic_ratio: Spanned<f64>,
+    #[serde(default)]
+    pub tangential_law: TangentialLaw,
+}
+
+fn zero() -> Spanned<f64> {
+    Spanned::new(0..0, 0.0)
+}
+
+fn default_dynamic_ratio() -> Spanned<f64> {
+    Spanned::new(0..0, 0.8)
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StudyFile {
+    #[serde(default = "default_samples")]
+    pub samples: Spanned<i64>,
+    /// lhs | mc | corners
+    #[serde(default = "default_sampler")]
+    pub sampler: Spanned<String>,
+    #[serde(default)]
+    pub seed: u64,
+}
+
+fn default_samples() -> Spanned<i64> {
+    Spanned::new(0..0, 25)
+}
+
+fn default_sampler() -> Spanned<String> {
+    Spanned::new(0..0, "lhs".to_string())
+}
+
+impl Default for StudyFile {
+    fn default() -> Self {
+        StudyFile {
+            samples: default_samples(),
+            sampler: default_sampler(),
+            seed: 0,
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct EvaluationPointFile {
+    pub name: String,
+    /// Position in the moving half [m] (world frame in the touching pose).
+    pub position: [f64; 3],
+}

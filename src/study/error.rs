@@ -1,0 +1,82 @@
+//! Error type of the study module: every bad input is reported, nothing panics.
+
+use thiserror::Error;
+
+/// Everything that can go wrong while designing, summarising, merging or plotting a study.
+#[derive(Debug, Error)]
+pub enum StudyError {
+    /// A design needs at least one input dimension.
+    #[error("a design needs at least one dimension (dims = 0)")]
+    ZeroDims,
+    /// A design needs at least one sample.
+    #[error("a design needs at least one sample (n = 0)")]
+    ZeroSamples,
+    /// Too many dimensions for a full-factorial corner design.
+    #[error(
+        "corner design with {dims} dimensions has 2^{dims} rows; at most {max} dimensions are allowed"
+    )]
+    TooManyCornerDims { dims: usize, max: usize },
+    /// A corner design always has 2^dims rows.
+    #[error(
+        "corner design with {dims} dimensions has {expected} rows, but n = {got} was requested"
+    )]
+    CornerCount {
+        dims: usize,
+        expected: usize,
+        got: usize,
+    },
+    /// The optimised Latin hypercube keeps an n x n distance matrix.
+    #[error("optimised Latin hypercube supports at most {max} samples (n = {n}); use Monte Carlo")]
+    LhsTooLarge { n: usize, max: usize },
+    /// A requested sample range does not lie inside 0..n.
+    #[error("sample range {start}..{end} is not inside 0..{n}")]
+    RangeOutOfBounds { start: usize, end: usize, n: usize },
+    /// Shard index/count out of range (shards are 1-based: 1..=count).
+    #[error("invalid shard {index}/{count}: need 1 <= index <= count")]
+    InvalidShard { index: usize, count: usize },
+    /// A `--shard` argument could not be parsed.
+    #[error("cannot parse shard '{0}': expected INDEX/COUNT, e.g. 3/8")]
+    ShardParse(String),
+    /// Unknown sampler name.
+    #[error("unknown sampler '{0}': expected lhs, mc or corners")]
+    UnknownSampler(String),
+    /// Statistics need at least two samples.
+    #[error("statistics need at least 2 samples, got {n}")]
+    TooFewSamples { n: usize },
+    /// NaN or infinity in data that must be finite.
+    #[error("non-finite value in {what}")]
+    NonFinite { what: String },
+    /// Invalid parameter (bootstrap level, resample count, ...).
+    #[error("invalid parameter: {0}")]
+    InvalidParameter(String),
+    /// Records disagree in their number of inputs or outputs.
+    #[error("sample {index}: {what}")]
+    RecordShape { index: usize, what: String },
+    /// Nothing was given to merge.
+    #[error("no shard files to merge")]
+    EmptyMerge,
+    /// Shard files were produced by different designs or output sets.
+    #[error("shard files do not belong to the same study: {0}")]
+    DesignMismatch(String),
+    /// The same sample index appears twice.
+    #[error("sample {0} appears more than once")]
+    DuplicateSample(usize),
+    /// Sample indices missing after a merge.
+    #[error("{count} sample(s) missing, the first is {first}")]
+    MissingSamples { first: usize, count: usize },
+    /// A sample index lies outside its design or its shard.
+    #[error("sample index {index} outside {what}")]
+    IndexOutOfRange { index: usize, what: String },
+    /// Stored inputs differ from the regenerated design.
+    #[error("sample {0}: stored inputs differ from the regenerated design")]
+    InputsMismatch(usize),
+    /// Nothing to plot.
+    #[error("nothing to plot: {0}")]
+    NothingToPlot(String),
+    /// Error reported by the plotting backend.
+    #[error("plotting failed: {0}")]
+    Plot(String),
+}
+
+/// Result alias of the study module.
+pub type Result<T> = std::result::Result<T, StudyError>;

@@ -1,0 +1,45 @@
+//! Statistics part of `kinrepro`: sampling designs over the per-contact friction coefficients,
+//! descriptive statistics of the re-seating scatter, merging of sharded runs and SVG plots.
+//!
+//! * [`sampling`]: optimised Latin hypercube, plain Monte Carlo and full-factorial corners over
+//!   [0, 1]^d, each a pure function of `(sampler, dims, n, seed)`; shard ranges.
+//! * [`stats`]: mean, min, max, sigma (n - 1), 3 sigma, bootstrap interval of sigma,
+//!   convergence of sigma, per-sample records and shard merging.
+//! * [`plot`]: sigma per variant and DOF, x-y scatter, convergence of sigma (SVG, plotters).
+//!
+//! # Scaling out with shards
+//!
+//! A study of n samples is split into N contiguous, balanced shards
+//! ([`sampling::shard::shard_range`], 1-based `--shard i/N`). Every shard regenerates the same
+//! design from `(sampler, dims, n, seed)` — Monte Carlo rows are computed individually from
+//! `(seed, index)`, an LHS design is recomputed whole (milliseconds) and sliced — evaluates only
+//! its rows, and writes a [`stats::ShardFile`] carrying the design spec, its shard and one
+//! record per sample. No communication between shards is needed, so they map directly onto a
+//! batch scheduler's job array, e.g. Slurm:
+//!
+//! ```text
+//! #SBATCH --array=1-16
+//! N=16
+//! kinrepro study SCENE --sampler lhs --samples 400 --seed 7 \
+//!     --shard $SLURM_ARRAY_TASK_ID/$N --format json > part_$SLURM_ARRAY_TASK_ID.json
+//! # afterwards (e.g. a job with --dependency=afterok:<array job id>):
+//! kinrepro merge part_*.json
+//! ```
+//!
+//! `merge` ([`stats::merge`]) checks that all parts share one design and output list and that
+//! the sample indices 0..n appear exactly once, sorts the records by index and recomputes the
+//! statistics, so the merged result is bit-for-bit the one of a single run. A failed array task
+//! is simply re-run with the same `--shard`.
+//!
+//! The module refers to its parts only through `super::` paths so that it can be moved to
+//! `src/study/` of the kinrepro crate unchanged (this file becoming `src/study/mod.rs`).
+
+pub mod error;
+pub mod plot;
+mod rng;
+pub mod sampling;
+pub mod stats;
+
+pub use error::{Result, StudyError};
+pub use sampling::shard::{Shard, shard_range};
+pub use sampling::{DesignSpec, Sampler, design, sample_range};

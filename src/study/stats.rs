@@ -1,0 +1,122 @@
+//! Descriptive statistics of the output quantities of a study.
+//!
+//! Per output quantity over the samples: n, mean, min, max, the sample standard deviation
+//! (divisor n - 1), the 3-sigma value and band, and a bootstrap percentile interval of sigma
+//! ([`bootstrap`]) that shows the sampling error of a small study (e.g. 25 runs).
+//!
+//! Mean and variance use the corrected two-pass algorithm (Chan, Golub & LeVeque 1983, eq. 1.7):
+//! `mean = sum(x)/n`, `var = (sum((x-mean)^2) - (sum(x-mean))^2/n) / (n-1)`, which is accurate
+//! even when the spread is tiny compared with the mean. Fewer than 2 values or any NaN/infinity
+//! is an error, never a NaN result.
+//!
+//! Shards are merged at the level of per-sample records ([`records`]): the statistics of a
+//! merged study are recomputed from the records sorted by sample index, so they equal those of a
+//! single run bit for bit.
+
+pub mod bootstrap;
+pub mod convergence;
+pub mod records;
+
+use serde::{Deserialize, Serialize};
+
+use super::error::{Result, StudyError};
+pub use bootstrap::{BOOTSTRAP_SEED, BootstrapConfig, Interval, bootstrap_sigma};
+pub use convergence::{ConvergencePoint, sigma_convergence};
+pub use records::{MergedStudy, SampleRecord, ShardFile, merge, verify_inputs};
+
+/// Statistics of one output quantity.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Summary {
+    /// Number of samples.
+    pub n: usize,
+    pub mean: f64,
+    pub min: f64,
+    pub max: f64,
+    /// Sample standard deviation (divisor n - 1).
+    pub sigma: f64,
+    /// 3 * sigma.
+    pub three_sigma: f64,
+    /// mean - 3 sigma.
+    pub lower_3sigma: f64,
+    /// mean + 3 sigma.
+    pub upper_3sigma: f64,
+    /// Bootstrap percentile interval of sigma.
+    pub sigma_interval: Interval,
+}
+
+/// Mean and sample standard deviation (corrected two-pass). Needs n >= 2 finite values.
+pub fn mean_sigma(values: &[f64]) -> Result<(f64, f64)> {
+    check_values(values)?;
+    Ok(mean_sigma_unchecked(values))
+}
+
+pub(crate) fn check_values(values: &[f64]) -> Result<()> {
+    if values.len() < 2 {
+        return Err(StudyError::TooFewSamples { n: values.len() });
+    }
+    if values.iter().any(|v| !v.is_finite()) {
+        return Err(StudyError::NonFinite {
+            what: "sample values".into(),
+        });
+    }
+    Ok(())
+}
+
+/// Corrected two-pass mean and standard deviation; caller checked n >= 2 and finiteness.
+pub(crate) fn mean_sigma_unchecked(values: &[f64]) -> (f64, f64) {
+    let n = values.len() as f64;
+    let mean = values.iter().sum::<f64>() / n;
+    let (mut ss, mut comp) = (0.0, 0.0);
+    for &v in values {
+        let dv = v - mean;
+        ss += dv * dv;
+        comp += dv;
+    }
+    let var = ((ss - comp * comp / n) / (n - 1.0)).max(0.0);
+    (mean, var.sqrt())
+}
+
+/// Full summary of one quantity, bootstrap interval included.
+pub fn summarize(values: &[f64], boot: &BootstrapConfig) -> Result<Summary> {
+    let (mean, sigma) = mean_sigma(values)?;
+    if !(mean.is_finite() && sigma.is_finite()) {
+        return Err(StudyError::NonFinite {
+            what: "mean or sigma (overflow)".into(),
+        });
+    }
+    let min = values.iter().copied().fold(f64::INFINITY, f64::min);
+    let max = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let sigma_interval = bootstrap_sigma(values, boot)?;
+    Ok(Summary {
+        n: values.len(),
+        mean,
+        min,
+        max,
+        sigma,
+        three_sigma: 3.0 * sigma,
+        lower_3sigma: mean - 3.0 * sigma,
+        upper_3sigma: mean + 3.0 * sigma,
+        sigma_interval,
+    })
+}
+
+/// One [`Summary`] per output quantity (column `j` of every record's `outputs`), taking the
+/// records in the given order (sort them by index first; [`merge`] does).
+pub fn summarize_outputs(records: &[SampleRecord], boot: &BootstrapConfig) -> Result<Vec<Summary>> {
+    let width = records.first().map_or(0, |r| r.outputs.len());
+    if records.len() < 2 {
+        return Err(StudyError::TooFewSamples { n: records.len() });
+    }
+    if let Some(r) = records.iter().find(|r| r.outputs.len() != width) {
+        return Err(StudyError::RecordShape {
+            index: r.index,
+            what: format!("{} outputs, expected {width}", r.outputs.len()),
+        });
+    }
+    (0..width)
+        .map(|j| {
+            let column: Vec<f64> = records.iter().map(|r| r.outputs[j]).collect();
+            summarize(&column, boot)
+        })
+        .collect()
+}
