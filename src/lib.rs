@@ -5,9 +5,12 @@
 //! The compliant contact laws ([`contact`]) and the materials ([`material`])
 //! sit under everything; the CLI (`src/main.rs`) holds no physics.
 
+pub mod assembly;
 pub mod contact;
+pub mod error;
 pub mod material;
 pub mod report;
+pub mod scene;
 pub mod study;
 
 pub use contact::{ContactLaw, ContactPair, ContactShape};

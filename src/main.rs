@@ -1,5 +1,6 @@
 //! The kinrepro command line: parse, call the library, print. No physics here.
 
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
@@ -43,6 +44,17 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Load and validate scenes; print contacts, constraint status and friction limit.
+    Check {
+        /// Scene files (TOML).
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+    },
+    /// Print the explicit form of a scene (loads back to the same coupling).
+    Expand {
+        /// Scene file (TOML).
+        scene: PathBuf,
+    },
 }
 
 fn main() -> ExitCode {
@@ -85,6 +97,35 @@ fn run(cli: Cli) -> Result<(), String> {
             } else {
                 print!("{}", kinrepro::report::contact::contact_table(&eval));
             }
+            Ok(())
+        }
+        Command::Check { scenes } => {
+            let mut failed = 0;
+            for path in &scenes {
+                match kinrepro::error::load_coupling(path) {
+                    Ok(c) => println!("{}", kinrepro::report::check::check_summary(&c)),
+                    Err(e) => {
+                        eprintln!("error: {e}");
+                        failed += 1;
+                    }
+                }
+            }
+            if failed > 0 {
+                return Err(format!("{failed} of {} scenes are invalid", scenes.len()));
+            }
+            Ok(())
+        }
+        Command::Expand { scene } => {
+            let file = scene.display().to_string();
+            let source = std::fs::read_to_string(&scene)
+                .map_err(|e| format!("{file}: cannot read the file: {e}"))?;
+            let text =
+                kinrepro::scene::Scene::expand_text(&source, &file).map_err(|e| e.to_string())?;
+            // The explicit form must assemble too.
+            let explicit =
+                kinrepro::scene::Scene::parse(&text, &file).map_err(|e| e.to_string())?;
+            kinrepro::assembly::Coupling::new(&explicit).map_err(|e| format!("{file}: {e}"))?;
+            print!("{text}");
             Ok(())
         }
     }

@@ -1,4 +1,5 @@
 //! Human-facing text: tables with labelled units. Every number comes from
 //! the library's result types; nothing here computes physics.
 
+pub mod check;
 pub mod contact;

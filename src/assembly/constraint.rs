@@ -1,0 +1,286 @@
+//! Kinematic design check: the constraint matrix of the six contacts, exact
+//! constraint, the frictionless preload distribution, and the friction limit
+//! for seating.
+//!
+//! Constraint matrix (Plücker coordinates of the contact normals; Blanding,
+//! *Exact Constraint*, 1999; Hale, *Principles and Techniques for Designing
+//! Precision Machines*, 1999, §7): row i is w_i = [n_i, (c_i - o) x n_i / L]
+//! with c_i the ball centre (every normal of a ball contact passes through
+//! it), o the centroid of the ball centres and L their largest distance from
+//! o, so that the matrix is dimensionless. A twist (v, w L) of the moving
+//! half changes gap i by w_i . (v, w L). The coupling is exactly constrained
+//! when there are six contacts and the matrix has rank 6; free motions span
+//! its null space, redundant constraints the null space of its transpose.
+
+use microlp::{ComparisonOp, OptimizationDirection, Problem};
+use nalgebra::{DMatrix, Vector3, Vector6};
+
+use super::{BodyPose, Coupling};
+
+/// Relative singular-value threshold for rank decisions.
+const RANK_TOL: f64 = 1e-9;
+
+/// Result of the constraint analysis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConstraintReport {
+    pub contacts: usize,
+    pub rank: usize,
+    pub exactly_constrained: bool,
+    /// Condition number of the dimensionless constraint matrix (infinite when singular).
+    pub condition_number: f64,
+    /// Free motions (null space), described in words.
+    pub free_motions: Vec<String>,
+    /// Redundant constraints (self-stress states), described in words.
+    pub redundant: Vec<String>,
+}
+
+impl ConstraintReport {
+    /// One sentence on what is wrong (or right).
+    pub fn describe(&self) -> String {
+        if self.exactly_constrained {
+            return format!(
+                "exactly constrained (6 contacts, rank 6, condition number {:.3})",
+                self.condition_number
+            );
+        }
+        let mut parts = vec![format!("{} contacts, rank {}", self.contacts, self.rank)];
+        if !self.free_motions.is_empty() {
+            parts.push(format!(
+                "under-constrained, free: {}",
+                self.free_motions.join("; ")
+            ));
+        }
+        if !self.redundant.is_empty() {
+            parts.push(format!(
+                "over-constrained, redundant: {}",
+                self.redundant.join("; ")
+            ));
+        }
+        parts.join("; ")
+    }
+}
+
+fn reference(coupling: &Coupling) -> (Vector3<f64>, f64) {
+    let n = coupling.balls.len() as f64;
+    let o = coupling
+        .balls
+        .iter()
+        .map(|b| b.centre)
+        .sum::<Vector3<f64>>()
+        / n;
+    let l = coupling
+        .balls
+        .iter()
+        .map(|b| (b.centre - o).norm())
+        .fold(0.0, f64::max)
+        .max(coupling.balls.iter().map(|b| b.radius).fold(0.0, f64::max));
+    (o, l)
+}
+
+/// Dimensionless constraint matrix (contacts x 6) at the scene pose.
+pub fn constraint_matrix(coupling: &Coupling) -> DMatrix<f64> {
+    let (o, l) = reference(coupling);
+    let pose = BodyPose::identity();
+    let m = coupling.contacts.len();
+    let mut a = DMatrix::zeros(m, 6);
+    for i in 0..m {
+        let n = coupling.geometry(i, &pose).normal;
+        let c = coupling.balls[coupling.contacts[i].ball].centre;
+        let mom = (c - o).cross(&n) / l;
+        for k in 0..3 {
+            a[(i, k)] = n[k];
+            a[(i, 3 + k)] = mom[k];
+        }
+    }
+    a
+}
+
+/// Analyse the constraint matrix.
+pub fn analyse(coupling: &Coupling) -> ConstraintReport {
+    let a = constraint_matrix(coupling);
+    let m = a.nrows();
+    let (o, l) = reference(coupling);
+    // Twist space: eigen-decomposition of A^T A (6 x 6).
+    let eig = (a.transpose() * &a).symmetric_eigen();
+    let lmax = eig.eigenvalues.max().max(f64::MIN_POSITIVE);
+    let mut free_motions = Vec::new();
+    let mut rank = 0;
+    for k in 0..6 {
+        if eig.eigenvalues[k] > RANK_TOL * RANK_TOL * lmax {
+            rank += 1;
+        } else {
+            let v = eig.eigenvectors.column(k);
+            free_motions.push(describe_twist(
+                &Vector3::new(v[0], v[1], v[2]),
+                &Vector3::new(v[3], v[4], v[5]),
+                &o,
+                l,
+            ));
+        }
+    }
+    // Constraint space: null space of A^T (m x m), the self-stress states.
+    let mut redundant = Vec::new();
+    if m > 0 {
+        let eig_c = (&a * a.transpose()).symmetric_eigen();
+        for k in 0..m {
+            if eig_c.eigenvalues[k] <= RANK_TOL * RANK_TOL * lmax {
+                let v = eig_c.eigenvectors.column(k);
+                let involved: Vec<String> = (0..m)
+                    .filter(|&i| v[i].abs() > 1e-6)
+                    .map(|i| (i + 1).to_string())
+                    .collect();
+                redundant.push(format!("contacts {} fight each other", involved.join(", ")));
+            }
+        }
+    }
+    let exactly = m == 6 && rank == 6;
+    let lmin = eig.eigenvalues.min();
+    ConstraintReport {
+        contacts: m,
+        rank,
+        exactly_constrained: exactly,
+        condition_number: if rank == 6 {
+            (lmax / lmin).sqrt()
+        } else {
+            f64::INFINITY
+        },
+        free_motions,
+        redundant,
+    }
+}
+
+/// Describe a dimensionless twist (v, w L) about the centroid `o` in words.
+fn describe_twist(v: &Vector3<f64>, wl: &Vector3<f64>, o: &Vector3<f64>, l: f64) -> String {
+    let fmt = |x: &Vector3<f64>| format!("({:.3}, {:.3}, {:.3})", x.x, x.y, x.z);
+    if wl.norm() < 1e-6 {
+        return format!("translation along {}", fmt(&v.normalize()));
+    }
+    let w = wl / l;
+    let axis = w.normalize();
+    // The screw axis passes through o + w x v / |w|^2.
+    let q = o + w.cross(v) / w.norm_squared();
+    format!(
+        "rotation about the axis {} through {} m",
+        fmt(&axis),
+        fmt(&q)
+    )
+}
+
+/// Contact forces that balance the preload with no friction: solve
+/// sum_i f_i [n_i; c_i x n_i] = -[F; p x F] (a positive f_i presses).
+pub fn frictionless_preload_forces(coupling: &Coupling) -> Vec<f64> {
+    let pose = coupling.touching_pose;
+    let rows = coupling.constraint_rows(&pose);
+    let m = rows.len();
+    let a = DMatrix::from_fn(6, m, |r, c| rows[c][r]);
+    let p = &coupling.scene.preload;
+    let f = p.direction * p.force;
+    let point = pose.apply(&p.point);
+    let mom = point.cross(&f);
+    let rhs = -Vector6::new(f.x, f.y, f.z, mom.x, mom.y, mom.z);
+    match a
+        .lu()
+        .solve(&nalgebra::DVector::from_column_slice(rhs.as_slice()))
+    {
+        Some(x) => x.iter().copied().collect(),
+        None => vec![0.0; m],
+    }
+}
+
+/// The friction limit for seating.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrictionLimit {
+    /// Largest mu at which no contact can stay open while the others hold
+    /// the preload in their friction cones; infinite if none can at mu = 10.
+    pub mu_limit: f64,
+    /// The contact whose opening needs the least friction (1-based).
+    pub critical_contact: usize,
+    /// Relative error bound of the polyhedral friction cone: the true limit
+    /// lies in [mu_limit cos(pi/K), mu_limit].
+    pub cone_error_bound: f64,
+}
+
+/// Number of facets of the inscribed friction pyramid.
+const CONE_FACETS: usize = 64;
+/// Search range and resolution of the limit.
+const MU_SEARCH_MAX: f64 = 10.0;
+const MU_RESOLUTION: f64 = 1e-4;
+
+/// The friction limit for seating (centring ability, after Hale 1999,
+/// "Friction-based design of kinematic couplings", and Patti & Vogels 2019):
+/// the coupling cannot centre if, with one contact i still open, the other
+/// five can balance the preload with forces inside their friction cones
+/// |F_t| <= mu F_n — the half then sticks off its seat. For each i the least
+/// such mu is found by bisection on a linear feasibility problem (friction
+/// cone replaced by an inscribed pyramid of K facets, microlp); the limit is
+/// the least over i. Below it the preload always drives the last contact
+/// closed.
+pub fn friction_limit(coupling: &Coupling) -> FrictionLimit {
+    let (o, l) = reference(coupling);
+    let pose = coupling.touching_pose;
+    let m = coupling.contacts.len();
+    let geoms: Vec<_> = (0..m).map(|i| coupling.geometry(i, &pose)).collect();
+    let p = &coupling.scene.preload;
+    let point = pose.apply(&p.point);
+    let target_f = -p.direction;
+    let target_m = -(point - o).cross(&p.direction) / l;
+    let feasible = |open: usize, mu: f64| -> bool {
+        let mut lp = Problem::new(OptimizationDirection::Minimize);
+        let mut rows: [Vec<(microlp::Variable, f64)>; 6] = Default::default();
+        for (j, g) in geoms.iter().enumerate() {
+            if j == open {
+                continue;
+            }
+            let n = g.normal;
+            let e1 = n
+                .cross(&if n.x.abs() < 0.9 {
+                    Vector3::x()
+                } else {
+                    Vector3::y()
+                })
+                .normalize();
+            let e2 = n.cross(&e1);
+            let arm = (g.point - o) / l;
+            for k in 0..CONE_FACETS {
+                let phi = 2.0 * std::f64::consts::PI * k as f64 / CONE_FACETS as f64;
+                let generator = n + (e1 * phi.cos() + e2 * phi.sin()) * mu;
+                let mom = arm.cross(&generator);
+                let var = lp.add_var(1.0, (0.0, f64::INFINITY));
+                for r in 0..3 {
+                    rows[r].push((var, generator[r]));
+                    rows[3 + r].push((var, mom[r]));
+                }
+            }
+        }
+        let rhs = [
+            target_f.x, target_f.y, target_f.z, target_m.x, target_m.y, target_m.z,
+        ];
+        for (r, row) in rows.iter().enumerate() {
+            lp.add_constraint(row.as_slice(), ComparisonOp::Eq, rhs[r]);
+        }
+        lp.solve().is_ok()
+    };
+    let mut best = (f64::INFINITY, 1);
+    for open in 0..m {
+        if !feasible(open, MU_SEARCH_MAX.min(best.0)) {
+            continue;
+        }
+        let (mut lo, mut hi) = (0.0, MU_SEARCH_MAX.min(best.0));
+        while hi - lo > MU_RESOLUTION {
+            let mid = 0.5 * (lo + hi);
+            if feasible(open, mid) {
+                hi = mid
+            } else {
+                lo = mid
+            }
+        }
+        if hi < best.0 {
+            best = (hi, open + 1);
+        }
+    }
+    FrictionLimit {
+        mu_limit: best.0,
+        critical_contact: best.1,
+        cone_error_bound: 1.0 - (std::f64::consts::PI / CONE_FACETS as f64).cos(),
+    }
+}

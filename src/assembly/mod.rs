@@ -1,0 +1,235 @@
+//! The coupling assembly: moving balls, fixed parry shapes and the contact
+//! laws of each pair, in the contact order of MODEL.md §1a (the `--mu` order).
+
+pub mod constraint;
+pub mod geometry;
+
+use nalgebra::{Matrix6, UnitQuaternion, Vector3, Vector6};
+use thiserror::Error;
+
+use crate::contact::{ContactError, ContactLaw, ContactPair, ContactShape};
+use crate::material::Material;
+use crate::scene::{Scene, SurfaceGeometry};
+pub use constraint::{ConstraintReport, FrictionLimit};
+pub use geometry::{ContactGeometry, FixedShape};
+
+/// Pose of the moving half: world = rotation * body + translation. The body
+/// frame coincides with the world frame in the scene as written.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BodyPose {
+    pub rotation: UnitQuaternion<f64>,
+    pub translation: Vector3<f64>,
+}
+
+impl BodyPose {
+    pub fn identity() -> Self {
+        BodyPose {
+            rotation: UnitQuaternion::identity(),
+            translation: Vector3::zeros(),
+        }
+    }
+
+    /// World position of a body point.
+    pub fn apply(&self, p: &Vector3<f64>) -> Vector3<f64> {
+        self.rotation * p + self.translation
+    }
+
+    /// This pose moved by a small spatial twist (v, w): rotation exp(w)
+    /// about the world origin, then translation v (exact finite rotation).
+    pub fn moved(&self, v: &Vector3<f64>, w: &Vector3<f64>) -> Self {
+        let dq = UnitQuaternion::from_scaled_axis(*w);
+        BodyPose {
+            rotation: dq * self.rotation,
+            translation: dq * self.translation + v,
+        }
+    }
+}
+
+/// One contact: a moving ball against a fixed surface.
+#[derive(Debug, Clone)]
+pub struct Contact {
+    /// Index of the moving ball (0-based).
+    pub ball: usize,
+    pub surface: SurfaceGeometry,
+    pub shape: ContactShape,
+    pub pair: ContactPair,
+    pub law: ContactLaw,
+    pub fixed: FixedShape,
+}
+
+/// A moving ball.
+#[derive(Debug, Clone)]
+pub struct MovingBall {
+    /// Centre in the body frame [m].
+    pub centre: Vector3<f64>,
+    pub radius: f64,
+    pub material: Material,
+}
+
+/// The assembled coupling.
+#[derive(Debug, Clone)]
+pub struct Coupling {
+    pub scene: Scene,
+    pub balls: Vec<MovingBall>,
+    pub contacts: Vec<Contact>,
+    /// The unloaded touching pose: every contact at zero gap.
+    pub touching_pose: BodyPose,
+}
+
+/// The assembly failed: the scene describes no working coupling.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum AssemblyError {
+    #[error("contact {contact}: {source}")]
+    Contact {
+        contact: usize,
+        #[source]
+        source: ContactError,
+    },
+    #[error(
+        "contact {contact} (ball {ball}): the ball does not touch its surface: gap {gap_m:.3e} m \
+         (a ball must touch every surface it is assigned at zero force; |gap| must be below {tol_m:.1e} m)"
+    )]
+    NotTouching {
+        contact: usize,
+        ball: usize,
+        gap_m: f64,
+        tol_m: f64,
+    },
+    #[error("the coupling is not exactly constrained: {0}")]
+    NotExactlyConstrained(String),
+    #[error(
+        "the preload cannot seat the coupling: contact {contact} would need a pulling force \
+         ({force_n:.4} N) to balance it"
+    )]
+    PreloadLifts { contact: usize, force_n: f64 },
+}
+
+/// Ball centres are placed at most this far from touching (before the
+/// touching pose is solved) [m].
+pub const TOUCH_TOLERANCE: f64 = 1e-6;
+
+impl Coupling {
+    /// Assemble a validated scene: laws, parry shapes, exact-constraint check,
+    /// touching pose, and the check that the preload loads every contact.
+    pub fn new(scene: &Scene) -> Result<Coupling, AssemblyError> {
+        let balls: Vec<MovingBall> = scene
+            .balls
+            .iter()
+            .map(|b| MovingBall {
+                centre: b.centre,
+                radius: b.radius,
+                material: b.material.clone(),
+            })
+            .collect();
+        let mut contacts = Vec::new();
+        for (i, s) in scene.surfaces.iter().enumerate() {
+            let ball = &balls[s.ball];
+            let (shape, radius2) = match s.geometry {
+                SurfaceGeometry::Plane { .. } => (ContactShape::SpherePlane, None),
+                SurfaceGeometry::Cylinder { radius, .. } => {
+                    (ContactShape::SphereCylinder, Some(radius))
+                }
+                SurfaceGeometry::Sphere { radius, .. } => {
+                    (ContactShape::SphereSphere, Some(radius))
+                }
+            };
+            let pair = ContactPair {
+                shape,
+                radius1: ball.radius,
+                radius2,
+                material1: ball.material.clone(),
+                material2: s.material.clone(),
+            };
+            let law = pair.law().map_err(|source| AssemblyError::Contact {
+                contact: i + 1,
+                source,
+            })?;
+            let half_length = 4.0 * (ball.radius + radius2.unwrap_or(0.0));
+            contacts.push(Contact {
+                ball: s.ball,
+                surface: s.geometry,
+                shape,
+                pair,
+                law,
+                fixed: FixedShape::new(&s.geometry, half_length),
+            });
+        }
+        let mut coupling = Coupling {
+            scene: scene.clone(),
+            balls,
+            contacts,
+            touching_pose: BodyPose::identity(),
+        };
+        for (i, c) in coupling.contacts.iter().enumerate() {
+            let g = coupling.geometry(i, &BodyPose::identity());
+            if g.gap.abs() > TOUCH_TOLERANCE {
+                return Err(AssemblyError::NotTouching {
+                    contact: i + 1,
+                    ball: c.ball + 1,
+                    gap_m: g.gap,
+                    tol_m: TOUCH_TOLERANCE,
+                });
+            }
+        }
+        let report = constraint::analyse(&coupling);
+        if !report.exactly_constrained {
+            return Err(AssemblyError::NotExactlyConstrained(report.describe()));
+        }
+        coupling.touching_pose = coupling.solve_touching_pose();
+        let forces = constraint::frictionless_preload_forces(&coupling);
+        if let Some((i, f)) = forces.iter().enumerate().find(|(_, f)| **f <= 0.0) {
+            return Err(AssemblyError::PreloadLifts {
+                contact: i + 1,
+                force_n: *f,
+            });
+        }
+        Ok(coupling)
+    }
+
+    /// Geometry of contact `i` with the moving half at `pose`.
+    pub fn geometry(&self, i: usize, pose: &BodyPose) -> ContactGeometry {
+        let c = &self.contacts[i];
+        let ball = &self.balls[c.ball];
+        let centre = pose.apply(&ball.centre);
+        // Prediction distance: far beyond any seating motion, so that an
+        // opening contact still reports its gap.
+        c.fixed
+            .contact(&centre, ball.radius, 1e-2)
+            .unwrap_or_else(|| geometry::closed_form(&c.surface, &centre, ball.radius))
+    }
+
+    /// Constraint rows w_i = [n_i; c_i x n_i] at `pose` (c_i the ball centre):
+    /// d(gap_i) = w_i . (v, w) for a twist (v, w) about the world origin.
+    pub fn constraint_rows(&self, pose: &BodyPose) -> Vec<Vector6<f64>> {
+        (0..self.contacts.len())
+            .map(|i| {
+                let n = self.geometry(i, pose).normal;
+                let c = pose.apply(&self.balls[self.contacts[i].ball].centre);
+                let m = c.cross(&n);
+                Vector6::new(n.x, n.y, n.z, m.x, m.y, m.z)
+            })
+            .collect()
+    }
+
+    /// Newton on the six gaps: the pose at which every contact touches at
+    /// zero gap (for exactly placed scenes the identity, to rounding).
+    fn solve_touching_pose(&self) -> BodyPose {
+        let mut pose = BodyPose::identity();
+        for _ in 0..20 {
+            let gaps = Vector6::from_iterator((0..6).map(|i| self.geometry(i, &pose).gap));
+            if gaps.amax() < 1e-16 {
+                break;
+            }
+            let rows = self.constraint_rows(&pose);
+            let j = Matrix6::from_fn(|r, c| rows[r][c]);
+            let Some(step) = j.lu().solve(&(-gaps)) else {
+                break;
+            };
+            pose = pose.moved(
+                &step.fixed_rows::<3>(0).into(),
+                &step.fixed_rows::<3>(3).into(),
+            );
+        }
+        pose
+    }
+}

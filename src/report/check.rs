@@ -1,0 +1,82 @@
+//! The summary printed by `kinrepro check`.
+
+use std::fmt::Write;
+
+use crate::assembly::Coupling;
+use crate::assembly::constraint::{analyse, friction_limit, frictionless_preload_forces};
+
+/// Summary of one assembled scene: contacts, constraint status, friction limit.
+pub fn check_summary(c: &Coupling) -> String {
+    let s = &c.scene;
+    let mut out = String::new();
+    let _ = writeln!(out, "{}  ({})", s.file, s.name);
+    let report = analyse(c);
+    let _ = writeln!(out, "  constraint: {}", report.describe());
+    let limit = friction_limit(c);
+    let mu_max = s.friction.mu_static + s.friction.spread;
+    let limit_text = if limit.mu_limit.is_finite() {
+        format!(
+            "mu < {:.4} (contact {} is the first that can stay open; polyhedral cone: true limit within -{:.2} %)",
+            limit.mu_limit,
+            limit.critical_contact,
+            100.0 * limit.cone_error_bound
+        )
+    } else {
+        "none below mu = 10".to_string()
+    };
+    let _ = writeln!(out, "  friction limit for seating: {limit_text}");
+    if mu_max >= limit.mu_limit {
+        let _ = writeln!(
+            out,
+            "  WARNING: mu_static + spread = {mu_max:.3} reaches the friction limit: the preload may not centre the coupling"
+        );
+    }
+    let _ = writeln!(
+        out,
+        "  preload: {:.4} N along ({:.3}, {:.3}, {:.3}) at ({:.4}, {:.4}, {:.4}) m; mu_s = {} +- {} (uniform), mu_d/mu_s = {}, {:?} tangential law",
+        s.preload.force,
+        s.preload.direction.x,
+        s.preload.direction.y,
+        s.preload.direction.z,
+        s.preload.point.x,
+        s.preload.point.y,
+        s.preload.point.z,
+        s.friction.mu_static,
+        s.friction.spread,
+        s.friction.dynamic_ratio,
+        s.friction.tangential_law
+    );
+    let forces = frictionless_preload_forces(c);
+    let _ = writeln!(
+        out,
+        "  {:>2} {:>4}  {:<16} {:>24}  {:>15}  {:>8} {:>8}  {:>10}",
+        "#",
+        "ball",
+        "pair",
+        "normal (x, y, z)",
+        "Rx, Ry [mm]",
+        "E* [GPa]",
+        "G* [GPa]",
+        "F_n(mu=0) [N]"
+    );
+    for (i, k) in c.contacts.iter().enumerate() {
+        let g = c.geometry(i, &c.touching_pose);
+        let h = &k.law.hertz;
+        let _ = writeln!(
+            out,
+            "  {:>2} {:>4}  {:<16} ({:>6.3}, {:>6.3}, {:>6.3})  {:>6.3}, {:>6.3}  {:>8.2} {:>8.2}  {:>10.4}",
+            i + 1,
+            k.ball + 1,
+            k.shape.name(),
+            g.normal.x,
+            g.normal.y,
+            g.normal.z,
+            h.radii[0] * 1e3,
+            h.radii[1] * 1e3,
+            h.e_star / 1e9,
+            k.law.g_star / 1e9,
+            forces[i]
+        );
+    }
+    out
+}

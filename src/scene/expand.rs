@@ -1,0 +1,207 @@
+//! Expansion of the high-level form into the explicit one, following the
+//! axes and contact numbering of MODEL.md §1a.
+//!
+//! With alpha = 90 deg - opening/2 the angle between a contact normal and z:
+//! - Maxwell, ball k with radial unit vector e_r and s = e_z x e_r: contact
+//!   2k-1 has normal sin(alpha) s + cos(alpha) e_z, contact 2k has
+//!   -sin(alpha) s + cos(alpha) e_z.
+//! - Kelvin: ball 1 in a trihedral seat whose elements lie radially inward
+//!   and at +120, +240 deg around the ball (counter-clockwise seen from +z),
+//!   each normal tilted by alpha towards the ball; ball 2 in a V whose axis
+//!   points at ball 1 (as Maxwell with e_r replaced by the unit vector from
+//!   ball 2 to ball 1); ball 3 on a flat (normal e_z).
+//!
+//! Each fixed element is placed so that its ball touches it at zero gap:
+//! a plane through c - r n, a pin axis through c - (r + R_pin) n along the
+//! groove, a fixed ball centred at c - (r + R_ball) n.
+
+use nalgebra::Vector3;
+use toml::Spanned;
+
+use super::error::{ErrorContext, SceneError};
+use super::file::{
+    Arrangement, BallFile, EvaluationPointFile, GrooveKind, SceneFile, SurfaceFile, SurfaceKind,
+};
+
+/// Azimuths of balls 1, 2, 3 [deg].
+pub const BALL_AZIMUTHS_DEG: [f64; 3] = [90.0, 210.0, 330.0];
+
+/// The explicit form of a scene file (unchanged if it is explicit already).
+pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, SceneError> {
+    let Some(c) = &raw.coupling else {
+        return Ok(raw.clone());
+    };
+    if !raw.balls.is_empty() || !raw.surfaces.is_empty() {
+        return Err(ctx.error(
+            None,
+            "coupling",
+            "give either the high-level [coupling] table or explicit [[balls]] and [[surfaces]], not both",
+        ));
+    }
+    let positive = |v: &Spanned<f64>, field: &str| -> Result<f64, SceneError> {
+        let x = *v.get_ref();
+        if x.is_finite() && x > 0.0 {
+            Ok(x)
+        } else {
+            Err(ctx.error(
+                Some(&v.span()),
+                field,
+                format!("{x} must be a positive length in metres"),
+            ))
+        }
+    };
+    let diameter = positive(&c.diameter, "coupling.diameter")?;
+    let r_ball = positive(&c.ball_diameter, "coupling.ball_diameter")? / 2.0;
+    let r_elem = match (c.groove, &c.groove_element_diameter) {
+        (GrooveKind::Planes, _) => 0.0,
+        (_, Some(d)) => positive(d, "coupling.groove_element_diameter")? / 2.0,
+        (kind, None) => {
+            return Err(ctx.error(
+                None,
+                "coupling.groove_element_diameter",
+                format!(
+                    "missing: groove = \"{}\" needs the pin or ball diameter",
+                    groove_name(kind)
+                ),
+            ));
+        }
+    };
+    let opening = *c.opening_angle_deg.get_ref();
+    if !(opening > 0.0 && opening < 180.0) {
+        return Err(ctx.error(
+            Some(&c.opening_angle_deg.span()),
+            "coupling.opening_angle_deg",
+            format!("{opening} must lie strictly between 0 and 180 degrees"),
+        ));
+    }
+    if r_ball >= diameter / 2.0 {
+        return Err(ctx.error(
+            Some(&c.ball_diameter.span()),
+            "coupling.ball_diameter",
+            "the balls overlap: ball diameter must be smaller than the coupling diameter",
+        ));
+    }
+    let alpha = (90.0 - opening / 2.0).to_radians();
+    let centres: Vec<Vector3<f64>> = BALL_AZIMUTHS_DEG
+        .iter()
+        .map(|a| {
+            let t = a.to_radians();
+            Vector3::new(t.cos(), t.sin(), 0.0) * (diameter / 2.0)
+        })
+        .collect();
+    let ez = Vector3::z();
+    let tilt = |horizontal: Vector3<f64>| horizontal * alpha.sin() + ez * alpha.cos();
+
+    // (ball index, normal, groove axis direction for pins)
+    let mut contacts: Vec<(usize, Vector3<f64>, Vector3<f64>, bool)> = Vec::new();
+    match c.arrangement {
+        Arrangement::Maxwell => {
+            for (k, ck) in centres.iter().enumerate() {
+                let er = Vector3::new(ck.x, ck.y, 0.0).normalize();
+                let s = ez.cross(&er);
+                contacts.push((k, tilt(s), er, false));
+                contacts.push((k, tilt(-s), er, false));
+            }
+        }
+        Arrangement::Kelvin => {
+            let er = Vector3::new(centres[0].x, centres[0].y, 0.0).normalize();
+            for j in 0..3 {
+                let ang = (120.0 * j as f64).to_radians();
+                // direction from ball 1 to fixed element j: -e_r rotated by +120 j about z
+                let d = rotate_z(&(-er), ang);
+                // pins of the trihedral seat lie horizontal, across the element direction
+                contacts.push((0, tilt(-d), ez.cross(&d), false));
+            }
+            let u = (centres[0] - centres[1]).normalize();
+            let s = ez.cross(&u);
+            contacts.push((1, tilt(s), u, false));
+            contacts.push((1, tilt(-s), u, false));
+            contacts.push((2, ez, Vector3::x(), true));
+        }
+    }
+
+    let ball_material = c.ball_material.clone();
+    let balls = centres
+        .iter()
+        .map(|ck| BallFile {
+            centre: Spanned::new(0..0, [ck.x, ck.y, ck.z]),
+            radius: Spanned::new(0..0, r_ball),
+            material: ball_material.clone(),
+        })
+        .collect();
+    let arr = |v: Vector3<f64>| Some(Spanned::new(0..0, [v.x, v.y, v.z]));
+    let surfaces = contacts
+        .into_iter()
+        .map(|(k, n, axis, flat)| {
+            let ck = centres[k];
+            let mut s = SurfaceFile {
+                kind: Spanned::new(0..0, SurfaceKind::Plane),
+                ball: Spanned::new(0..0, k as i64 + 1),
+                material: c.groove_material.clone(),
+                point: None,
+                normal: None,
+                axis_point: None,
+                direction: None,
+                centre: None,
+                radius: None,
+            };
+            match (c.groove, flat) {
+                (GrooveKind::Planes, _) | (_, true) => {
+                    s.point = arr(ck - n * r_ball);
+                    s.normal = arr(n);
+                }
+                (GrooveKind::Cylinders, false) => {
+                    s.kind = Spanned::new(0..0, SurfaceKind::Cylinder);
+                    s.axis_point = arr(ck - n * (r_ball + r_elem));
+                    s.direction = arr(axis);
+                    s.radius = Some(Spanned::new(0..0, r_elem));
+                }
+                (GrooveKind::Balls, false) => {
+                    s.kind = Spanned::new(0..0, SurfaceKind::Sphere);
+                    s.centre = arr(ck - n * (r_ball + r_elem));
+                    s.radius = Some(Spanned::new(0..0, r_elem));
+                }
+            }
+            s
+        })
+        .collect();
+
+    let mut evaluation_points = raw.evaluation_points.clone();
+    if evaluation_points.is_empty() {
+        evaluation_points.push(EvaluationPointFile {
+            name: "centre".to_string(),
+            position: [0.0; 3],
+        });
+        if c.arrangement == Arrangement::Kelvin {
+            let c1 = centres[0];
+            evaluation_points.push(EvaluationPointFile {
+                name: "trihedral ball".to_string(),
+                position: [c1.x, c1.y, c1.z],
+            });
+        }
+    }
+    Ok(SceneFile {
+        name: raw.name.clone(),
+        materials: raw.materials.clone(),
+        coupling: None,
+        balls,
+        surfaces,
+        preload: raw.preload.clone(),
+        friction: raw.friction.clone(),
+        study: raw.study.clone(),
+        evaluation_points,
+    })
+}
+
+fn rotate_z(v: &Vector3<f64>, angle: f64) -> Vector3<f64> {
+    let (s, c) = angle.sin_cos();
+    Vector3::new(c * v.x - s * v.y, s * v.x + c * v.y, v.z)
+}
+
+fn groove_name(k: GrooveKind) -> &'static str {
+    match k {
+        GrooveKind::Planes => "planes",
+        GrooveKind::Cylinders => "cylinders",
+        GrooveKind::Balls => "balls",
+    }
+}

@@ -1,0 +1,156 @@
+//! Scenes: the TOML file format (high-level and explicit forms), the
+//! expansion of the high-level form, and validation into a [`Scene`].
+//!
+//! Axes and contact numbering follow MODEL.md §1a: origin at the centre of
+//! the circle of ball centres in their plane (unloaded touching pose), z from
+//! the fixed to the moving half, balls 1, 2, 3 at azimuths 90, 210 and 330
+//! degrees; contacts are numbered ball by ball, which is the order of `--mu`.
+
+pub mod error;
+pub mod expand;
+pub mod file;
+pub mod resolve;
+
+use std::path::Path;
+
+use nalgebra::Vector3;
+
+use crate::contact::TangentialLaw;
+use crate::material::Material;
+use crate::study::Sampler;
+use error::ErrorContext;
+pub use error::SceneError;
+pub use file::{Arrangement, GrooveKind, SceneFile};
+
+/// A moving ball (body frame = world frame in the touching pose).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Ball {
+    pub centre: Vector3<f64>,
+    pub radius: f64,
+    pub material: Material,
+    /// Line in the scene file, for error messages.
+    pub line: Option<usize>,
+}
+
+/// The geometry of a fixed surface.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SurfaceGeometry {
+    /// Half-space below `point` with unit outward `normal` (towards the ball).
+    Plane {
+        point: Vector3<f64>,
+        normal: Vector3<f64>,
+    },
+    /// Cylinder (pin) of `radius` around the line through `axis_point`
+    /// along the unit `direction`.
+    Cylinder {
+        axis_point: Vector3<f64>,
+        direction: Vector3<f64>,
+        radius: f64,
+    },
+    /// Fixed ball.
+    Sphere { centre: Vector3<f64>, radius: f64 },
+}
+
+/// A fixed surface serving one moving ball: one contact.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Surface {
+    pub geometry: SurfaceGeometry,
+    pub material: Material,
+    /// Index of the moving ball (0-based).
+    pub ball: usize,
+    pub line: Option<usize>,
+}
+
+/// The preload on the moving half.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Preload {
+    /// Total force [N].
+    pub force: f64,
+    /// Point of application [m].
+    pub point: Vector3<f64>,
+    /// Unit direction.
+    pub direction: Vector3<f64>,
+}
+
+/// Friction settings: mu_s in mu0 +- spread (uniform), mu_d = ratio mu_s.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrictionSettings {
+    pub mu_static: f64,
+    pub spread: f64,
+    pub dynamic_ratio: f64,
+    pub tangential_law: TangentialLaw,
+}
+
+/// Study defaults of a scene.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StudySettings {
+    pub samples: usize,
+    pub sampler: Sampler,
+    pub seed: u64,
+}
+
+/// A point of the moving half whose pose is reported.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EvaluationPoint {
+    pub name: String,
+    pub position: Vector3<f64>,
+}
+
+/// A validated scene in explicit form.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    /// The file it came from (for messages).
+    pub file: String,
+    pub name: String,
+    pub balls: Vec<Ball>,
+    /// Fixed surfaces, ordered ball by ball: the contact order (`--mu`).
+    pub surfaces: Vec<Surface>,
+    pub preload: Preload,
+    pub friction: FrictionSettings,
+    pub study: StudySettings,
+    pub evaluation_points: Vec<EvaluationPoint>,
+}
+
+impl Scene {
+    /// Read and validate a scene file.
+    pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        let file = path.display().to_string();
+        let source = std::fs::read_to_string(path).map_err(|e| SceneError {
+            file: file.clone(),
+            line: None,
+            field: String::new(),
+            reason: format!("cannot read the file: {e}"),
+        })?;
+        Scene::parse(&source, &file)
+    }
+
+    /// Parse and validate scene text; `file` names it in errors.
+    pub fn parse(source: &str, file: &str) -> Result<Scene, SceneError> {
+        let ctx = ErrorContext { file, source };
+        let raw = parse_file(source, &ctx)?;
+        let explicit = expand::to_explicit(&raw, &ctx)?;
+        resolve::resolve(&explicit, &ctx)
+    }
+
+    /// The explicit TOML of a scene file (`kinrepro expand`).
+    pub fn expand_text(source: &str, file: &str) -> Result<String, SceneError> {
+        let ctx = ErrorContext { file, source };
+        let raw = parse_file(source, &ctx)?;
+        let explicit = expand::to_explicit(&raw, &ctx)?;
+        // Validate before printing, so that expand never prints a bad scene.
+        resolve::resolve(&explicit, &ctx)?;
+        let body =
+            toml::to_string_pretty(&explicit).map_err(|e| ctx.error(None, "", e.to_string()))?;
+        Ok(format!(
+            "# Explicit form of {file}, written by `kinrepro expand`.\n\
+             # Lengths in m, forces in N, moduli in Pa; contacts in the order of --mu.\n\n{body}"
+        ))
+    }
+}
+
+fn parse_file(source: &str, ctx: &ErrorContext) -> Result<SceneFile, SceneError> {
+    toml::from_str::<SceneFile>(source).map_err(|e| {
+        let span = e.span();
+        ctx.error(span.as_ref(), "", e.message().trim().to_string())
+    })
+}

@@ -1,0 +1,294 @@
+//! Validation of an explicit scene file into a [`Scene`]: materials resolved,
+//! every number checked for range, every surface complete.
+
+use nalgebra::Vector3;
+use toml::Spanned;
+
+use super::error::{ErrorContext, SceneError};
+use super::file::{SceneFile, SurfaceFile, SurfaceKind};
+use super::{
+    Ball, EvaluationPoint, FrictionSettings, Preload, Scene, StudySettings, Surface,
+    SurfaceGeometry,
+};
+use crate::material::{Material, MaterialError};
+use crate::study::Sampler;
+
+/// Largest friction coefficient accepted in a scene.
+pub const MU_MAX: f64 = 2.0;
+
+pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
+    let materials = user_materials(f, ctx)?;
+    let material = |name: &Spanned<String>, field: &str| -> Result<Material, SceneError> {
+        let n = name.get_ref();
+        if let Some(m) = materials.iter().find(|m| &m.name == n) {
+            return Ok(m.clone());
+        }
+        Material::builtin(n).map_err(|e| ctx.error(Some(&name.span()), field, e.to_string()))
+    };
+    let positive = |v: &Spanned<f64>, field: &str, unit: &str| -> Result<f64, SceneError> {
+        let x = *v.get_ref();
+        if x.is_finite() && x > 0.0 {
+            Ok(x)
+        } else {
+            Err(ctx.error(
+                Some(&v.span()),
+                field,
+                format!("{x} must be positive ({unit})"),
+            ))
+        }
+    };
+    let finite = |v: &Spanned<[f64; 3]>, field: &str| -> Result<Vector3<f64>, SceneError> {
+        let a = v.get_ref();
+        if a.iter().all(|x| x.is_finite()) {
+            Ok(Vector3::new(a[0], a[1], a[2]))
+        } else {
+            Err(ctx.error(Some(&v.span()), field, "coordinates must be finite numbers"))
+        }
+    };
+    let unit = |v: &Spanned<[f64; 3]>, field: &str| -> Result<Vector3<f64>, SceneError> {
+        let x = finite(v, field)?;
+        let n = x.norm();
+        if n > 0.0 {
+            Ok(x / n)
+        } else {
+            Err(ctx.error(
+                Some(&v.span()),
+                field,
+                "a direction must not be the zero vector",
+            ))
+        }
+    };
+
+    if f.balls.is_empty() {
+        return Err(ctx.error(
+            None,
+            "balls",
+            "no moving balls: give a [coupling] table or [[balls]] and [[surfaces]]",
+        ));
+    }
+    let mut balls = Vec::new();
+    for (i, b) in f.balls.iter().enumerate() {
+        let field = |k: &str| format!("balls[{}].{k}", i + 1);
+        balls.push(Ball {
+            centre: finite(&b.centre, &field("centre"))?,
+            radius: positive(&b.radius, &field("radius"), "m")?,
+            material: material(&b.material, &field("material"))?,
+            line: ctx.line_of(&b.radius.span()),
+        });
+    }
+
+    let mut surfaces = Vec::new();
+    for (i, s) in f.surfaces.iter().enumerate() {
+        let field = |k: &str| format!("surfaces[{}].{k}", i + 1);
+        let ball = *s.ball.get_ref();
+        if ball < 1 || ball as usize > balls.len() {
+            return Err(ctx.error(
+                Some(&s.ball.span()),
+                field("ball"),
+                format!("{ball} names no moving ball (there are {})", balls.len()),
+            ));
+        }
+        let need =
+            |v: &Option<Spanned<[f64; 3]>>, k: &str| -> Result<Spanned<[f64; 3]>, SceneError> {
+                v.clone().ok_or_else(|| missing(s, ctx, &field(k), k))
+            };
+        let radius = |s: &SurfaceFile| -> Result<f64, SceneError> {
+            let r = s
+                .radius
+                .as_ref()
+                .ok_or_else(|| missing(s, ctx, &field("radius"), "radius"))?;
+            positive(r, &field("radius"), "m")
+        };
+        let geometry = match s.kind.get_ref() {
+            SurfaceKind::Plane => SurfaceGeometry::Plane {
+                point: finite(&need(&s.point, "point")?, &field("point"))?,
+                normal: unit(&need(&s.normal, "normal")?, &field("normal"))?,
+            },
+            SurfaceKind::Cylinder => SurfaceGeometry::Cylinder {
+                axis_point: finite(&need(&s.axis_point, "axis_point")?, &field("axis_point"))?,
+                direction: unit(&need(&s.direction, "direction")?, &field("direction"))?,
+                radius: radius(s)?,
+            },
+            SurfaceKind::Sphere => SurfaceGeometry::Sphere {
+                centre: finite(&need(&s.centre, "centre")?, &field("centre"))?,
+                radius: radius(s)?,
+            },
+        };
+        surfaces.push(Surface {
+            geometry,
+            material: material(&s.material, &field("material"))?,
+            ball: ball as usize - 1,
+            line: ctx.line_of(&s.kind.span()),
+        });
+    }
+    // Contacts are numbered ball by ball (the order of --mu).
+    surfaces.sort_by_key(|s| s.ball);
+    for (k, b) in balls.iter().enumerate() {
+        if !surfaces.iter().any(|s| s.ball == k) {
+            return Err(SceneError {
+                file: ctx.file.to_string(),
+                line: b.line,
+                field: format!("balls[{}]", k + 1),
+                reason: "this ball touches no fixed surface (no [[surfaces]] entry has ball = \
+                         its number)"
+                    .to_string(),
+            });
+        }
+    }
+
+    let p = &f.preload;
+    let preload = Preload {
+        force: positive(&p.force, "preload.force", "N")?,
+        point: match &p.point {
+            Some(v) => finite(v, "preload.point")?,
+            None => Vector3::zeros(),
+        },
+        direction: match &p.direction {
+            Some(v) => unit(v, "preload.direction")?,
+            None => -Vector3::z(),
+        },
+    };
+
+    let fr = &f.friction;
+    let mu = *fr.mu_static.get_ref();
+    if !(0.0..=MU_MAX).contains(&mu) {
+        return Err(ctx.error(
+            Some(&fr.mu_static.span()),
+            "friction.mu_static",
+            format!("{mu} is outside [0, {MU_MAX}]"),
+        ));
+    }
+    let spread = *fr.spread.get_ref();
+    if !(spread >= 0.0 && spread <= mu) {
+        return Err(ctx.error(
+            Some(&fr.spread.span()),
+            "friction.spread",
+            format!("{spread} must lie in [0, mu_static = {mu}] (friction cannot be negative)"),
+        ));
+    }
+    if mu + spread > MU_MAX {
+        return Err(ctx.error(
+            Some(&fr.spread.span()),
+            "friction.spread",
+            format!("mu_static + spread = {} exceeds {MU_MAX}", mu + spread),
+        ));
+    }
+    let ratio = *fr.dynamic_ratio.get_ref();
+    if !(ratio > 0.0 && ratio <= 1.0) {
+        return Err(ctx.error(
+            Some(&fr.dynamic_ratio.span()),
+            "friction.dynamic_ratio",
+            format!("{ratio} must lie in (0, 1]: mu_d = ratio * mu_s"),
+        ));
+    }
+
+    let st = &f.study;
+    let samples = *st.samples.get_ref();
+    if samples < 2 {
+        return Err(ctx.error(
+            Some(&st.samples.span()),
+            "study.samples",
+            format!("{samples}: a study needs at least 2 samples"),
+        ));
+    }
+    let sampler: Sampler = st
+        .sampler
+        .get_ref()
+        .parse()
+        .map_err(|e| ctx.error(Some(&st.sampler.span()), "study.sampler", format!("{e}")))?;
+
+    let mut evaluation_points: Vec<EvaluationPoint> = f
+        .evaluation_points
+        .iter()
+        .map(|e| EvaluationPoint {
+            name: e.name.clone(),
+            position: Vector3::new(e.position[0], e.position[1], e.position[2]),
+        })
+        .collect();
+    if evaluation_points
+        .iter()
+        .any(|e| !e.position.iter().all(|x| x.is_finite()))
+    {
+        return Err(ctx.error(
+            None,
+            "evaluation_points",
+            "positions must be finite numbers",
+        ));
+    }
+    if evaluation_points.is_empty() {
+        evaluation_points.push(EvaluationPoint {
+            name: "centre".to_string(),
+            position: Vector3::zeros(),
+        });
+    }
+
+    Ok(Scene {
+        file: ctx.file.to_string(),
+        name: f.name.clone().unwrap_or_else(|| ctx.file.to_string()),
+        balls,
+        surfaces,
+        preload,
+        friction: FrictionSettings {
+            mu_static: mu,
+            spread,
+            dynamic_ratio: ratio,
+            tangential_law: fr.tangential_law,
+        },
+        study: StudySettings {
+            samples: samples as usize,
+            sampler,
+            seed: st.seed,
+        },
+        evaluation_points,
+    })
+}
+
+fn missing(s: &SurfaceFile, ctx: &ErrorContext, field: &str, key: &str) -> SceneError {
+    let kind = match s.kind.get_ref() {
+        SurfaceKind::Plane => "plane",
+        SurfaceKind::Cylinder => "cylinder",
+        SurfaceKind::Sphere => "sphere",
+    };
+    ctx.error(
+        Some(&s.kind.span()),
+        field,
+        format!("missing: a {kind} needs `{key}`"),
+    )
+}
+
+fn user_materials(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, SceneError> {
+    f.materials
+        .iter()
+        .enumerate()
+        .map(|(i, m)| {
+            Material::new(
+                m.name.get_ref(),
+                *m.youngs_modulus.get_ref(),
+                *m.poisson_ratio.get_ref(),
+                m.allowable_pressure.as_ref().map(|p| *p.get_ref()),
+            )
+            .map_err(|e| {
+                let span = match &e {
+                    MaterialError::Invalid {
+                        field: "youngs_modulus",
+                        ..
+                    } => m.youngs_modulus.span(),
+                    MaterialError::Invalid {
+                        field: "poisson_ratio",
+                        ..
+                    } => m.poisson_ratio.span(),
+                    MaterialError::Invalid {
+                        field: "allowable_pressure",
+                        ..
+                    } => m
+                        .allowable_pressure
+                        .as_ref()
+                        .map(|p| p.span())
+                        .unwrap_or_else(|| m.name.span()),
+                    _ => m.name.span(),
+                };
+                ctx.error(Some(&span), format!("materials[{}]", i + 1), e.to_string())
+            })
+        })
+        .collect()
+}
