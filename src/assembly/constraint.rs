@@ -17,8 +17,12 @@ use nalgebra::{DMatrix, Vector3, Vector6};
 
 use super::{BodyPose, Coupling};
 
-/// Relative singular-value threshold for rank decisions.
-const RANK_TOL: f64 = 1e-9;
+/// Rank threshold on the eigenvalues of A^T A and A A^T (the squared
+/// singular values), relative to the largest: singular values below 1e-6 of
+/// the largest count as zero (a condition number beyond 1e6 is no
+/// constraint in practice, and it stays well above the eigen-solver's
+/// rounding, ~1e-16 of the largest eigenvalue).
+const EIGEN_RANK_TOL: f64 = 1e-12;
 
 /// Result of the constraint analysis.
 #[derive(Debug, Clone, PartialEq)]
@@ -106,7 +110,7 @@ pub fn analyse(coupling: &Coupling) -> ConstraintReport {
     let mut free_motions = Vec::new();
     let mut rank = 0;
     for k in 0..6 {
-        if eig.eigenvalues[k] > RANK_TOL * RANK_TOL * lmax {
+        if eig.eigenvalues[k] > EIGEN_RANK_TOL * lmax {
             rank += 1;
         } else {
             let v = eig.eigenvectors.column(k);
@@ -123,7 +127,7 @@ pub fn analyse(coupling: &Coupling) -> ConstraintReport {
     if m > 0 {
         let eig_c = (&a * a.transpose()).symmetric_eigen();
         for k in 0..m {
-            if eig_c.eigenvalues[k] <= RANK_TOL * RANK_TOL * lmax {
+            if eig_c.eigenvalues[k] <= EIGEN_RANK_TOL * lmax {
                 let v = eig_c.eigenvectors.column(k);
                 let involved: Vec<String> = (0..m)
                     .filter(|&i| v[i].abs() > 1e-6)

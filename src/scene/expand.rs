@@ -16,6 +16,8 @@
 //! groove, a fixed ball centred at c - (r + R_ball) n.
 
 use nalgebra::Vector3;
+
+use crate::material::Material;
 use toml::Spanned;
 
 use super::error::{ErrorContext, SceneError};
@@ -50,6 +52,17 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
             ))
         }
     };
+    // Materials are checked here so that errors name the high-level field.
+    for (m, field) in [
+        (&c.ball_material, "coupling.ball_material"),
+        (&c.groove_material, "coupling.groove_material"),
+    ] {
+        let name = m.get_ref();
+        if !raw.materials.iter().any(|u| u.name.get_ref() == name) {
+            Material::builtin(name)
+                .map_err(|e| ctx.error(Some(&m.span()), field, e.to_string()))?;
+        }
+    }
     let diameter = positive(&c.diameter, "coupling.diameter")?;
     let r_ball = positive(&c.ball_diameter, "coupling.ball_diameter")? / 2.0;
     let r_elem = match (c.groove, &c.groove_element_diameter) {
