@@ -11,6 +11,7 @@ pub mod error;
 pub mod material;
 pub mod report;
 pub mod scene;
+pub mod solve;
 pub mod study;
 
 pub use contact::{ContactLaw, ContactPair, ContactShape};

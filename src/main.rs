@@ -50,6 +50,21 @@ enum Command {
         #[arg(required = true)]
         scenes: Vec<PathBuf>,
     },
+    /// Seat the coupling once (quasi-static) and print pose and contact states.
+    Run {
+        /// Scene file (TOML).
+        scene: PathBuf,
+        /// Static friction coefficients, one per contact in contact order
+        /// (default: the scene's nominal mu_static everywhere).
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        mu: Option<Vec<f64>>,
+        /// Nominal number of load increments.
+        #[arg(long, default_value_t = 20)]
+        increments: usize,
+        /// Print one JSON object (SI units) instead of a table.
+        #[arg(long)]
+        json: bool,
+    },
     /// Print the explicit form of a scene (loads back to the same coupling).
     Expand {
         /// Scene file (TOML).
@@ -112,6 +127,43 @@ fn run(cli: Cli) -> Result<(), String> {
             }
             if failed > 0 {
                 return Err(format!("{failed} of {} scenes are invalid", scenes.len()));
+            }
+            Ok(())
+        }
+        Command::Run {
+            scene,
+            mu,
+            increments,
+            json,
+        } => {
+            let coupling = kinrepro::error::load_coupling(&scene).map_err(|e| e.to_string())?;
+            let opts = kinrepro::solve::SolverOptions {
+                increments: increments.max(1),
+                ..Default::default()
+            };
+            let nominal_mu = kinrepro::solve::nominal_mu(&coupling);
+            let mu = mu.unwrap_or_else(|| nominal_mu.clone());
+            let file = coupling.scene.file.clone();
+            let seat = |m: &[f64]| {
+                kinrepro::solve::quasistatic::seat(&coupling, m, &opts)
+                    .map_err(|e| format!("{file}: {e}"))
+            };
+            let seating = seat(&mu)?;
+            let nominal = seat(&nominal_mu)?;
+            let report = kinrepro::report::run::RunReport::new(
+                &coupling,
+                &mu,
+                &seating,
+                &nominal,
+                "quasi-static",
+            );
+            if json {
+                println!(
+                    "{}",
+                    serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
+                );
+            } else {
+                print!("{}", report.table());
             }
             Ok(())
         }

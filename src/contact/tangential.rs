@@ -22,6 +22,12 @@
 //! slip   otherwise: F = mu_d F_n F_trial / |F_trial|
 //! ```
 //! The change from mu_s to mu_d is sudden, as in the paper's FE model.
+//!
+//! Sign convention: `du` is the tangential displacement of the moving body
+//! relative to the fixed surface at the contact, and the law's force is the
+//! tangential force along it that the moving body exerts on the fixed
+//! surface (a spring stretched by du). The friction force on the moving
+//! body is its negative.
 
 use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
@@ -66,7 +72,8 @@ pub enum SlipState {
 pub struct TangentialState {
     /// Contact normal the vectors below are tangent to.
     pub normal: Vector3<f64>,
-    /// Tangential force on the moving body [N].
+    /// Tangential force the moving body exerts on the fixed surface [N]
+    /// (the force on the moving body is its negative).
     pub force: Vector3<f64>,
     /// Gross sliding at the end of the last step.
     pub sliding: bool,

@@ -1,0 +1,156 @@
+//! Output of `kinrepro run`: one seating, as a table (nm, nrad, N) or JSON (SI).
+
+use std::fmt::Write;
+
+use serde::Serialize;
+
+use crate::assembly::Coupling;
+use crate::solve::{ContactResult, PointPose, Seating};
+
+/// Pose of one evaluation point, from the touching pose and from the nominal seating.
+#[derive(Debug, Clone, Serialize)]
+pub struct PointReport {
+    pub name: String,
+    pub position_m: [f64; 3],
+    pub pose: PointPose,
+    pub pose_rel_nominal: PointPose,
+}
+
+/// Everything `kinrepro run` reports.
+#[derive(Debug, Clone, Serialize)]
+pub struct RunReport {
+    pub scene: String,
+    pub name: String,
+    pub solver: String,
+    pub mu_static: Vec<f64>,
+    /// Pose of the first evaluation point (the centre by default).
+    pub pose: PointPose,
+    pub pose_rel_nominal: PointPose,
+    pub points: Vec<PointReport>,
+    pub contacts: Vec<ContactResult>,
+    pub increments: usize,
+    pub newton_iterations: usize,
+}
+
+impl RunReport {
+    pub fn new(
+        coupling: &Coupling,
+        mu: &[f64],
+        seating: &Seating,
+        nominal: &Seating,
+        solver: &str,
+    ) -> Self {
+        let points: Vec<PointReport> = coupling
+            .scene
+            .evaluation_points
+            .iter()
+            .map(|p| PointReport {
+                name: p.name.clone(),
+                position_m: [p.position.x, p.position.y, p.position.z],
+                pose: PointPose::between(&coupling.touching_pose, &seating.pose, &p.position),
+                pose_rel_nominal: PointPose::between(&nominal.pose, &seating.pose, &p.position),
+            })
+            .collect();
+        RunReport {
+            scene: coupling.scene.file.clone(),
+            name: coupling.scene.name.clone(),
+            solver: solver.to_string(),
+            mu_static: mu.to_vec(),
+            pose: points[0].pose,
+            pose_rel_nominal: points[0].pose_rel_nominal,
+            points,
+            contacts: seating.contacts.clone(),
+            increments: seating.increments,
+            newton_iterations: seating.newton_iterations,
+        }
+    }
+
+    /// Human-readable table: nm, nrad, N, MPa.
+    pub fn table(&self) -> String {
+        let mut s = String::new();
+        let _ = writeln!(s, "{}  ({})", self.scene, self.name);
+        let mu: Vec<String> = self.mu_static.iter().map(|m| format!("{m:.4}")).collect();
+        let _ = writeln!(
+            s,
+            "solver: {}, {} load increments, {} Newton iterations; mu_s = [{}]",
+            self.solver,
+            self.increments,
+            self.newton_iterations,
+            mu.join(", ")
+        );
+        let _ = writeln!(s);
+        let _ = writeln!(
+            s,
+            "{:<16} {:<22} {:>10} {:>10} {:>10} {:>11} {:>11} {:>11}",
+            "point",
+            "pose",
+            "x [nm]",
+            "y [nm]",
+            "z [nm]",
+            "phi_x[nrad]",
+            "phi_y[nrad]",
+            "phi_z[nrad]*"
+        );
+        for p in &self.points {
+            for (label, q) in [
+                ("from touching", &p.pose),
+                ("rel. to nominal mu", &p.pose_rel_nominal),
+            ] {
+                let _ = writeln!(
+                    s,
+                    "{:<16} {:<22} {:>10.4} {:>10.4} {:>10.4} {:>11.3} {:>11.3} {:>11.3}",
+                    p.name,
+                    label,
+                    q.x_m * 1e9,
+                    q.y_m * 1e9,
+                    q.z_m * 1e9,
+                    q.phi_x_rad * 1e9,
+                    q.phi_y_rad * 1e9,
+                    q.phi_z_rad * 1e9
+                );
+            }
+        }
+        let _ = writeln!(
+            s,
+            "* phi_z is reported but not evaluated for reproducibility."
+        );
+        let _ = writeln!(s);
+        let _ = writeln!(
+            s,
+            "{:>2} {:>7} {:>7} {:>10} {:>10} {:>9} {:>6} {:>11} {:>9}",
+            "#",
+            "mu_s",
+            "mu_d",
+            "F_n [N]",
+            "|F_t| [N]",
+            "|F_t|/F_n",
+            "state",
+            "approach[nm]",
+            "p0 [MPa]"
+        );
+        for (i, c) in self.contacts.iter().enumerate() {
+            let ratio = c
+                .pressure_ratio
+                .map(|r| format!(" ({:.0} % of allowable)", 100.0 * r))
+                .unwrap_or_default();
+            let _ = writeln!(
+                s,
+                "{:>2} {:>7.4} {:>7.4} {:>10.6} {:>10.6} {:>9.6} {:>6} {:>11.4} {:>9.2}{}",
+                i + 1,
+                c.mu_static,
+                c.mu_dynamic,
+                c.normal_force_n,
+                c.tangential_force_n,
+                c.tangential_force_n / c.normal_force_n,
+                match c.state {
+                    crate::contact::SlipState::Stick => "stick",
+                    crate::contact::SlipState::Slip => "slip",
+                },
+                c.approach_m * 1e9,
+                c.max_pressure_pa / 1e6,
+                ratio
+            );
+        }
+        s
+    }
+}
