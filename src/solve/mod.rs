@@ -34,7 +34,7 @@ impl Default for SolverOptions {
     fn default() -> Self {
         SolverOptions {
             increments: 20,
-            max_splits: 12,
+            max_splits: 8,
             max_newton: 40,
             tolerance: 1e-10,
         }

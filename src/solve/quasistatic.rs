@@ -94,13 +94,18 @@ impl<'a> Solver<'a> {
         let (mut s, mut h) = (0.0_f64, nominal);
         let mut evals: Vec<ContactEval> = Vec::new();
         let (mut accepted, mut iterations) = (0, 0);
+        let mut last_step: Option<(Vector6<f64>, f64)> = None;
         while s < 1.0 {
             let s_next = if s + h > 1.0 - 1e-12 { 1.0 } else { s + h };
             let lambda = s_next.powf(1.5);
-            let predictor = pose.moved(
-                &(self.x1.fixed_rows::<3>(0) * (s_next - s)).into(),
-                &(self.x1.fixed_rows::<3>(3) * (s_next - s)).into(),
-            );
+            // Secant predictor from the last accepted increment (the path is
+            // nearly straight in s), the frictionless one at the start.
+            let dx = match last_step {
+                Some((dx, ds)) => dx * ((s_next - s) / ds),
+                None => self.x1 * (s_next - s),
+            };
+            let predictor =
+                pose.moved(&dx.fixed_rows::<3>(0).into(), &dx.fixed_rows::<3>(3).into());
             match self.newton(&pose, &states, predictor, lambda) {
                 Step::Failed(residual) => {
                     if h <= h_min * 1.5 {
@@ -132,6 +137,7 @@ impl<'a> Solver<'a> {
                         });
                     }
                     states = new_evals.iter().map(|e| e.tangential.state).collect();
+                    last_step = Some((twist_between(&pose, &new_pose), s_next - s));
                     pose = new_pose;
                     evals = new_evals;
                     accepted += 1;
@@ -309,6 +315,14 @@ impl<'a> Solver<'a> {
             ],
         }
     }
+}
+
+/// The twist (v, w) with `from.moved(v, w) == to`.
+fn twist_between(from: &BodyPose, to: &BodyPose) -> Vector6<f64> {
+    let dq = to.rotation * from.rotation.inverse();
+    let w = dq.scaled_axis();
+    let v = to.translation - dq * from.translation;
+    Vector6::new(v.x, v.y, v.z, w.x, w.y, w.z)
 }
 
 use std::ops::AddAssign;
