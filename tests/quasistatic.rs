@@ -159,10 +159,7 @@ fn all_sliding_equilibrium(c: &Coupling, mu_d: &[f64], start: &BodyPose) -> Body
             let mut d = Vector6::zeros();
             d[k] = h;
             let plus = pose.moved(&d.fixed_rows::<3>(0).into(), &d.fixed_rows::<3>(3).into());
-            let minus = pose.moved(
-                &(-d.fixed_rows::<3>(0)).into(),
-                &(-d.fixed_rows::<3>(3)).into(),
-            );
+            let minus = pose.moved(&(-d.fixed_rows::<3>(0)), &(-d.fixed_rows::<3>(3)));
             j.set_column(k, &((residual(&plus) - residual(&minus)) / (2.0 * h)));
         }
         let dx = j.lu().solve(&(-r)).unwrap();
