@@ -6,6 +6,9 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 use kinrepro::contact::{ContactPair, ContactShape};
 use kinrepro::material::Material;
+use kinrepro::report::study::{StudyReport, VariantReport};
+use kinrepro::study::runner::{StudyOptions, design_for, run_variant};
+use kinrepro::study::{Sampler, Shard};
 
 #[derive(Parser)]
 #[command(
@@ -65,11 +68,70 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Reproducibility study: seat each scene once per friction sample and
+    /// report the scatter of the pose (Table 2 of the paper).
+    Study {
+        /// Scene files (TOML); the variants are reported side by side.
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+        /// Samples per scene (default: the scene's [study] samples; corners: 2^6).
+        #[arg(long)]
+        samples: Option<usize>,
+        /// lhs (space-filling Latin hypercube) | mc (Monte Carlo) | corners (all 2^6 extremes).
+        #[arg(long)]
+        sampler: Option<Sampler>,
+        /// Seed of the design (default: the scene's [study] seed).
+        #[arg(long)]
+        seed: Option<u64>,
+        /// Worker threads (default: all cores).
+        #[arg(long)]
+        jobs: Option<usize>,
+        /// Output: table (nm, nrad) | csv (SI) | json (statistics in nm/nrad, samples in SI).
+        #[arg(long, value_enum, default_value_t = Format::Table)]
+        format: Format,
+        /// Also write per-sample CSV files and SVG plots into this directory.
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Run only shard I of N of the samples (1-based, e.g. 3/16); merge the
+        /// JSON outputs with `kinrepro merge`.
+        #[arg(long)]
+        shard: Option<Shard>,
+        /// Nominal number of load increments per seating.
+        #[arg(long, default_value_t = 20)]
+        increments: usize,
+    },
+    /// Merge the JSON outputs of sharded studies into the result of one run.
+    Merge {
+        /// JSON files written by `kinrepro study --shard I/N --format json`.
+        #[arg(required = true)]
+        parts: Vec<PathBuf>,
+        #[arg(long, value_enum, default_value_t = Format::Json)]
+        format: Format,
+    },
     /// Print the explicit form of a scene (loads back to the same coupling).
     Expand {
         /// Scene file (TOML).
         scene: PathBuf,
     },
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum Format {
+    Table,
+    Csv,
+    Json,
+}
+
+fn print_study(report: &StudyReport, format: Format) -> Result<(), String> {
+    match format {
+        Format::Table => print!("{}", report.table()),
+        Format::Csv => print!("{}", report.csv()),
+        Format::Json => println!(
+            "{}",
+            serde_json::to_string_pretty(report).map_err(|e| e.to_string())?
+        ),
+    }
+    Ok(())
 }
 
 fn main() -> ExitCode {
@@ -166,6 +228,87 @@ fn run(cli: Cli) -> Result<(), String> {
                 print!("{}", report.table());
             }
             Ok(())
+        }
+        Command::Study {
+            scenes,
+            samples,
+            sampler,
+            seed,
+            jobs,
+            format,
+            out,
+            shard,
+            increments,
+        } => {
+            if let Some(j) = jobs {
+                rayon::ThreadPoolBuilder::new()
+                    .num_threads(j.max(1))
+                    .build_global()
+                    .map_err(|e| format!("--jobs: {e}"))?;
+            }
+            let opts = StudyOptions {
+                sampler,
+                samples,
+                seed,
+                shard: shard.unwrap_or_else(Shard::whole),
+                solver: kinrepro::solve::SolverOptions {
+                    increments: increments.max(1),
+                    ..Default::default()
+                },
+            };
+            let couplings = scenes
+                .iter()
+                .map(|p| kinrepro::error::load_coupling(p).map_err(|e| e.to_string()))
+                .collect::<Result<Vec<_>, _>>()?;
+            let mut total = 0;
+            for c in &couplings {
+                let d = design_for(c, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?;
+                total += opts
+                    .shard
+                    .range(d.n)
+                    .map_err(|e| format!("--shard: {e}"))?
+                    .len();
+            }
+            let bar = if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
+                let b = indicatif::ProgressBar::new(total as u64);
+                b.set_style(
+                    indicatif::ProgressStyle::with_template(
+                        "{elapsed_precise} [{bar:40}] {pos}/{len} seatings ({eta})",
+                    )
+                    .map_err(|e| e.to_string())?,
+                );
+                b
+            } else {
+                indicatif::ProgressBar::hidden()
+            };
+            let mut variants = Vec::new();
+            for c in &couplings {
+                let run = run_variant(c, &opts, &|| bar.inc(1)).map_err(|e| e.to_string())?;
+                variants.push(
+                    VariantReport::new(c, run).map_err(|e| format!("{}: {e}", c.scene.file))?,
+                );
+            }
+            bar.finish_and_clear();
+            let report = StudyReport::new(variants, opts.shard);
+            if let Some(dir) = out {
+                for f in report.write_files(&dir, &couplings)? {
+                    eprintln!("wrote {f}");
+                }
+            }
+            print_study(&report, format)
+        }
+        Command::Merge { parts, format } => {
+            let docs = parts
+                .iter()
+                .map(|p| {
+                    let text = std::fs::read_to_string(p)
+                        .map_err(|e| format!("{}: cannot read: {e}", p.display()))?;
+                    serde_json::from_str::<StudyReport>(&text)
+                        .map_err(|e| format!("{}: not a kinrepro study JSON: {e}", p.display()))
+                })
+                .collect::<Result<Vec<_>, _>>()?;
+            let merged = StudyReport::merge(docs).map_err(|e| format!("merge: {e}"))?;
+            print_study(&merged, format)
         }
         Command::Expand { scene } => {
             let file = scene.display().to_string();

@@ -37,6 +37,7 @@
 pub mod error;
 pub mod plot;
 mod rng;
+pub mod runner;
 pub mod sampling;
 pub mod stats;
 

@@ -1,0 +1,469 @@
+//! Study results: the JSON document (SI records plus nm/nrad statistics),
+//! the Table 2 style text table, CSV, shard merging and the files of `--out`.
+
+use std::fmt::Write;
+use std::path::Path;
+
+use serde::{Deserialize, Serialize};
+
+use crate::assembly::Coupling;
+use crate::study::plot::{
+    ConvergenceSeries, Dof, VariantScatter, VariantSigma, plot_convergence, plot_sigma_bars,
+    plot_xy_scatter,
+};
+use crate::study::runner::{COMPONENTS, VariantRun, mu_of_row};
+use crate::study::stats::{
+    BootstrapConfig, SampleRecord, ShardFile, Summary, merge, sigma_convergence, summarize_outputs,
+    verify_inputs,
+};
+use crate::study::{DesignSpec, Sampler, Shard, StudyError};
+
+/// Five DOFs in human units: x, y, z [nm], phi_x, phi_y [nrad].
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Dofs {
+    pub x_nm: f64,
+    pub y_nm: f64,
+    pub z_nm: f64,
+    pub phi_x_nrad: f64,
+    pub phi_y_nrad: f64,
+}
+
+impl Dofs {
+    /// From five SI values (m, m, m, rad, rad).
+    fn from_si(v: [f64; 5]) -> Self {
+        Dofs {
+            x_nm: v[0] * 1e9,
+            y_nm: v[1] * 1e9,
+            z_nm: v[2] * 1e9,
+            phi_x_nrad: v[3] * 1e9,
+            phi_y_nrad: v[4] * 1e9,
+        }
+    }
+
+    pub fn values(&self) -> [f64; 5] {
+        [
+            self.x_nm,
+            self.y_nm,
+            self.z_nm,
+            self.phi_x_nrad,
+            self.phi_y_nrad,
+        ]
+    }
+}
+
+/// Statistics of one evaluation point over the samples (relative to the
+/// nominal-mu pose; sigma with divisor n - 1).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PointStats {
+    pub name: String,
+    pub n: usize,
+    pub sigma: Dofs,
+    /// Bootstrap 90 % percentile interval of sigma.
+    pub sigma_ci90_low: Dofs,
+    pub sigma_ci90_high: Dofs,
+    /// Reproducibility +- 3 sigma.
+    pub three_sigma: Dofs,
+    pub mean: Dofs,
+    pub min: Dofs,
+    pub max: Dofs,
+}
+
+/// One scene's study.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct VariantReport {
+    pub scene: String,
+    pub name: String,
+    /// Samples in the whole design.
+    pub samples: usize,
+    pub sampler: Sampler,
+    pub seed: u64,
+    pub mu_static: f64,
+    pub spread: f64,
+    pub dynamic_ratio: f64,
+    /// True for one shard of several: statistics wait for `kinrepro merge`.
+    pub partial: bool,
+    /// Statistics per evaluation point, the centre of the moving half first.
+    pub points: Vec<PointStats>,
+    pub design: DesignSpec,
+    pub shard: Shard,
+    pub output_names: Vec<String>,
+    /// Per sample: index, design row in [0, 1]^6, outputs in SI (see output_names).
+    pub records: Vec<SampleRecord>,
+}
+
+/// The whole study document (`--format json`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StudyReport {
+    /// The seed and sampler of every variant (null if the variants differ).
+    pub seed: Option<u64>,
+    pub sampler: Option<Sampler>,
+    pub shard: Shard,
+    pub variants: Vec<VariantReport>,
+}
+
+/// Point names, in output order.
+fn point_names(output_names: &[String]) -> Vec<String> {
+    output_names
+        .chunks(COMPONENTS.len())
+        .map(|c| {
+            c[0].rsplit_once('/')
+                .map_or(c[0].clone(), |(p, _)| p.to_string())
+        })
+        .collect()
+}
+
+fn point_stats(
+    output_names: &[String],
+    records: &[SampleRecord],
+) -> Result<Vec<PointStats>, StudyError> {
+    let summaries = summarize_outputs(records, &BootstrapConfig::default())?;
+    let pick = |chunk: &[Summary], f: &dyn Fn(&Summary) -> f64| {
+        Dofs::from_si([
+            f(&chunk[0]),
+            f(&chunk[1]),
+            f(&chunk[2]),
+            f(&chunk[3]),
+            f(&chunk[4]),
+        ])
+    };
+    Ok(point_names(output_names)
+        .into_iter()
+        .zip(summaries.chunks(COMPONENTS.len()))
+        .map(|(name, c)| PointStats {
+            name,
+            n: c[0].n,
+            sigma: pick(c, &|s| s.sigma),
+            sigma_ci90_low: pick(c, &|s| s.sigma_interval.lower),
+            sigma_ci90_high: pick(c, &|s| s.sigma_interval.upper),
+            three_sigma: pick(c, &|s| s.three_sigma),
+            mean: pick(c, &|s| s.mean),
+            min: pick(c, &|s| s.min),
+            max: pick(c, &|s| s.max),
+        })
+        .collect())
+}
+
+impl VariantReport {
+    /// Build from a run; statistics only when the run holds every sample.
+    pub fn new(coupling: &Coupling, run: VariantRun) -> Result<Self, StudyError> {
+        let f = &coupling.scene.friction;
+        let mut v = VariantReport {
+            scene: coupling.scene.file.clone(),
+            name: coupling.scene.name.clone(),
+            samples: run.design.n,
+            sampler: run.design.sampler,
+            seed: run.design.seed,
+            mu_static: f.mu_static,
+            spread: f.spread,
+            dynamic_ratio: f.dynamic_ratio,
+            partial: run.shard.count > 1,
+            points: Vec::new(),
+            design: run.design,
+            shard: run.shard,
+            output_names: run.output_names,
+            records: run.records,
+        };
+        if !v.partial {
+            v.points = point_stats(&v.output_names, &v.records)?;
+        }
+        Ok(v)
+    }
+}
+
+impl StudyReport {
+    pub fn new(variants: Vec<VariantReport>, shard: Shard) -> Self {
+        let same = |f: &dyn Fn(&VariantReport) -> String| {
+            variants.windows(2).all(|w| f(&w[0]) == f(&w[1]))
+        };
+        let seed =
+            (!variants.is_empty() && same(&|v| v.seed.to_string())).then(|| variants[0].seed);
+        let sampler =
+            (!variants.is_empty() && same(&|v| v.sampler.to_string())).then(|| variants[0].sampler);
+        StudyReport {
+            seed,
+            sampler,
+            shard,
+            variants,
+        }
+    }
+
+    /// Merge shard documents (any order) into the document of one full run.
+    pub fn merge(parts: Vec<StudyReport>) -> Result<StudyReport, StudyError> {
+        let first = parts.first().ok_or(StudyError::EmptyMerge)?;
+        let mut variants = Vec::new();
+        for proto in &first.variants {
+            let files: Vec<ShardFile> = parts
+                .iter()
+                .flat_map(|p| p.variants.iter())
+                .filter(|v| v.scene == proto.scene && v.design == proto.design)
+                .map(|v| ShardFile {
+                    design: v.design,
+                    shard: v.shard,
+                    output_names: v.output_names.clone(),
+                    records: v.records.clone(),
+                })
+                .collect();
+            let merged = merge(files)?;
+            verify_inputs(&merged)?;
+            let mut v = proto.clone();
+            v.partial = false;
+            v.shard = Shard::whole();
+            v.records = merged.records;
+            v.points = point_stats(&v.output_names, &v.records)?;
+            variants.push(v);
+        }
+        Ok(StudyReport::new(variants, Shard::whole()))
+    }
+
+    /// The text table: the variants side by side as in the paper's Table 2,
+    /// then the full statistics of each variant.
+    pub fn table(&self) -> String {
+        let mut s = String::new();
+        let sampler = self
+            .sampler
+            .map_or("per scene".to_string(), |x| x.to_string());
+        let seed = self.seed.map_or("per scene".to_string(), |x| x.to_string());
+        let _ = writeln!(
+            s,
+            "kinrepro study: sampler {sampler}, seed {seed}, shard {}",
+            self.shard
+        );
+        let _ = writeln!(
+            s,
+            "Standard deviation (n-1) of the seated pose relative to the nominal-mu pose; below each row the bootstrap 90 % interval of sigma."
+        );
+        let _ = writeln!(s);
+        let _ = writeln!(
+            s,
+            "{:<4}{:<46}{:<16}{:>5} {:>13} {:>13} {:>13} {:>17} {:>17}",
+            "#",
+            "variant",
+            "point",
+            "n",
+            "sigma_x [nm]",
+            "sigma_y [nm]",
+            "sigma_z [nm]",
+            "sigma_phi_x[nrad]",
+            "sigma_phi_y[nrad]"
+        );
+        for (i, v) in self.variants.iter().enumerate() {
+            if v.partial {
+                let _ = writeln!(
+                    s,
+                    "{:<4}{:<46}(shard {} of {} samples: run `kinrepro merge` for statistics)",
+                    i + 1,
+                    v.name,
+                    v.shard,
+                    v.samples
+                );
+                continue;
+            }
+            for p in &v.points {
+                let sg = p.sigma.values();
+                let lo = p.sigma_ci90_low.values();
+                let hi = p.sigma_ci90_high.values();
+                let _ = writeln!(
+                    s,
+                    "{:<4}{:<46}{:<16}{:>5} {:>13.3} {:>13.3} {:>13.3} {:>17.2} {:>17.2}",
+                    i + 1,
+                    truncate(&v.name, 45),
+                    p.name,
+                    p.n,
+                    sg[0],
+                    sg[1],
+                    sg[2],
+                    sg[3],
+                    sg[4]
+                );
+                let ci: Vec<String> = (0..5)
+                    .map(|k| {
+                        let w = if k < 3 { 13 } else { 17 };
+                        format!("{:>w$}", format!("[{:.2}, {:.2}]", lo[k], hi[k]))
+                    })
+                    .collect();
+                let _ = writeln!(s, "{:<71}{}", "", ci.join(" "));
+            }
+        }
+        for v in self.variants.iter().filter(|v| !v.partial) {
+            let _ = writeln!(s);
+            let _ = writeln!(
+                s,
+                "{} ({}): {} samples, {} seed {}, mu_s = {} +- {} uniform, mu_d = {} mu_s",
+                v.name,
+                v.scene,
+                v.samples,
+                v.sampler,
+                v.seed,
+                v.mu_static,
+                v.spread,
+                v.dynamic_ratio
+            );
+            for p in &v.points {
+                let _ = writeln!(
+                    s,
+                    "  {:<16} {:<10} {:>12} {:>12} {:>12} {:>12} {:>12}",
+                    p.name, "", "mean", "min", "max", "sigma", "+-3 sigma"
+                );
+                let rows = [
+                    ("x [nm]", 0),
+                    ("y [nm]", 1),
+                    ("z [nm]", 2),
+                    ("phi_x [nrad]", 3),
+                    ("phi_y [nrad]", 4),
+                ];
+                for (label, k) in rows {
+                    let _ = writeln!(
+                        s,
+                        "  {:<16} {:<10} {:>12.3} {:>12.3} {:>12.3} {:>12.3} {:>12.3}",
+                        "",
+                        label,
+                        p.mean.values()[k],
+                        p.min.values()[k],
+                        p.max.values()[k],
+                        p.sigma.values()[k],
+                        p.three_sigma.values()[k]
+                    );
+                }
+            }
+        }
+        s
+    }
+
+    /// Summary statistics as CSV, one row per variant, point and DOF (SI units).
+    pub fn csv(&self) -> String {
+        let mut s = String::from(
+            "scene,name,point,dof,unit,n,mean,min,max,sigma,three_sigma,sigma_ci90_low,sigma_ci90_high\n",
+        );
+        for v in self.variants.iter().filter(|v| !v.partial) {
+            for p in &v.points {
+                for (k, comp) in COMPONENTS.iter().enumerate() {
+                    let (dof, unit) = comp.rsplit_once('_').unwrap_or((comp, ""));
+                    let si = |d: &Dofs| d.values()[k] * 1e-9;
+                    let _ = writeln!(
+                        s,
+                        "{},{},{},{dof},{unit},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
+                        csv_field(&v.scene),
+                        csv_field(&v.name),
+                        csv_field(&p.name),
+                        p.n,
+                        si(&p.mean),
+                        si(&p.min),
+                        si(&p.max),
+                        si(&p.sigma),
+                        si(&p.three_sigma),
+                        si(&p.sigma_ci90_low),
+                        si(&p.sigma_ci90_high)
+                    );
+                }
+            }
+        }
+        s
+    }
+
+    /// Write per-sample CSV files and the SVG plots into `dir`.
+    pub fn write_files(&self, dir: &Path, couplings: &[Coupling]) -> Result<Vec<String>, String> {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
+        let mut written = Vec::new();
+        let mut write = |name: String, text: String| -> Result<(), String> {
+            let path = dir.join(&name);
+            std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+            written.push(path.display().to_string());
+            Ok(())
+        };
+        for (i, (v, c)) in self.variants.iter().zip(couplings).enumerate() {
+            let stem = Path::new(&v.scene)
+                .file_stem()
+                .map_or("scene".into(), |s| s.to_string_lossy().into_owned());
+            let mut t = String::from("index");
+            for k in 1..=v.design.dims {
+                let _ = write!(t, ",mu_{k}");
+            }
+            for n in &v.output_names {
+                let _ = write!(t, ",{}", csv_field(n));
+            }
+            t.push('\n');
+            for r in &v.records {
+                let _ = write!(t, "{}", r.index);
+                for m in mu_of_row(c, &r.inputs) {
+                    let _ = write!(t, ",{m:e}");
+                }
+                for o in &r.outputs {
+                    let _ = write!(t, ",{o:e}");
+                }
+                t.push('\n');
+            }
+            write(format!("samples_{:02}_{stem}.csv", i + 1), t)?;
+        }
+        let full: Vec<&VariantReport> = self.variants.iter().filter(|v| !v.partial).collect();
+        if full.is_empty() {
+            return Ok(written);
+        }
+        let label = |i: usize, v: &VariantReport| format!("{} {}", i + 1, truncate(&v.name, 30));
+        let sigmas: Vec<VariantSigma> = full
+            .iter()
+            .enumerate()
+            .map(|(i, v)| VariantSigma {
+                variant: label(i, v),
+                sigma: v.points[0].sigma.values(),
+            })
+            .collect();
+        let scatter: Vec<VariantScatter> = full
+            .iter()
+            .enumerate()
+            .map(|(i, v)| VariantScatter {
+                variant: label(i, v),
+                xy: v
+                    .records
+                    .iter()
+                    .map(|r| (r.outputs[0] * 1e9, r.outputs[1] * 1e9))
+                    .collect(),
+            })
+            .collect();
+        let mut conv = Vec::new();
+        for (i, v) in full.iter().enumerate() {
+            for (k, dof) in Dof::ALL.iter().enumerate() {
+                let values: Vec<f64> = v.records.iter().map(|r| r.outputs[k] * 1e9).collect();
+                conv.push(ConvergenceSeries {
+                    variant: label(i, v),
+                    dof: *dof,
+                    points: sigma_convergence(&values).map_err(|e| e.to_string())?,
+                });
+            }
+        }
+        for (name, result) in [
+            (
+                "sigma_bars.svg",
+                plot_sigma_bars(&dir.join("sigma_bars.svg"), &sigmas),
+            ),
+            (
+                "scatter_xy.svg",
+                plot_xy_scatter(&dir.join("scatter_xy.svg"), &scatter),
+            ),
+            (
+                "sigma_convergence.svg",
+                plot_convergence(&dir.join("sigma_convergence.svg"), &conv),
+            ),
+        ] {
+            result.map_err(|e| format!("{}: {e}", dir.join(name).display()))?;
+            written.push(dir.join(name).display().to_string());
+        }
+        Ok(written)
+    }
+}
+
+fn truncate(s: &str, n: usize) -> String {
+    if s.chars().count() <= n {
+        s.to_string()
+    } else {
+        s.chars().take(n - 1).collect::<String>() + "…"
+    }
+}
+
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}

@@ -1,0 +1,201 @@
+//! Studies: determinism, sharding, symmetry of the Maxwell scatter and a
+//! mean near zero, through the library and the CLI.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use kinrepro::report::study::{StudyReport, VariantReport};
+use kinrepro::study::runner::{StudyOptions, run_variant};
+use kinrepro::study::{Sampler, Shard};
+
+fn scene(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name)
+}
+
+fn kinrepro(args: &[&str]) -> (bool, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn same_seed_same_json_bytes_and_four_shards_merge_to_one_run() {
+    let dir = std::env::temp_dir().join(format!("kinrepro-shards-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let s1 = scene("01_maxwell_vgroove_steel.toml");
+    let s6 = scene("06_kelvin_steel.toml");
+    let (s1, s6) = (s1.to_str().unwrap(), s6.to_str().unwrap());
+    for sampler in ["lhs", "mc"] {
+        let base = [
+            "study",
+            s1,
+            s6,
+            "--samples",
+            "22",
+            "--seed",
+            "11",
+            "--sampler",
+            sampler,
+            "--format",
+            "json",
+        ];
+        let (ok, one, err) = kinrepro(&base);
+        assert!(ok, "{err}");
+        let (_, again, _) = kinrepro(&base);
+        assert_eq!(one, again, "same seed must give the same bytes");
+        let (_, other, _) = kinrepro(&[
+            "study",
+            s1,
+            s6,
+            "--samples",
+            "22",
+            "--seed",
+            "12",
+            "--sampler",
+            sampler,
+            "--format",
+            "json",
+        ]);
+        assert_ne!(one, other);
+        let mut parts = Vec::new();
+        for i in [3, 1, 4, 2] {
+            let shard = format!("{i}/4");
+            let mut args = base.to_vec();
+            args.extend(["--shard", &shard, "--jobs", "1"]);
+            let (ok, part, err) = kinrepro(&args);
+            assert!(ok, "{err}");
+            let f = dir.join(format!("part_{sampler}_{i}.json"));
+            std::fs::write(&f, part).unwrap();
+            parts.push(f.display().to_string());
+        }
+        let mut args = vec!["merge"];
+        args.extend(parts.iter().map(|s| s.as_str()));
+        let (ok, merged, err) = kinrepro(&args);
+        assert!(ok, "{err}");
+        assert_eq!(
+            merged, one,
+            "{sampler}: 4 merged shards differ from one run"
+        );
+        // A missing shard is an error, not a smaller study.
+        let (ok, _, err) = kinrepro(&["merge", &parts[0], &parts[1], &parts[2]]);
+        assert!(!ok && err.contains("merge"), "{err}");
+    }
+}
+
+fn maxwell_mc(name: &str, n: usize) -> VariantReport {
+    let c = kinrepro::error::load_coupling(&scene(name)).unwrap();
+    let opts = StudyOptions {
+        sampler: Some(Sampler::MonteCarlo),
+        samples: Some(n),
+        seed: Some(2024),
+        shard: Shard::whole(),
+        ..Default::default()
+    };
+    VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap()).unwrap()
+}
+
+#[test]
+fn maxwell_scatter_is_symmetric_in_x_y_and_centred() {
+    for name in [
+        "01_maxwell_vgroove_steel.toml",
+        "02_maxwell_pins_steel.toml",
+        "03_maxwell_pins_sic.toml",
+        "04_maxwell_balls_steel.toml",
+        "05_maxwell_balls_sic.toml",
+    ] {
+        let v = maxwell_mc(name, 2000);
+        let p = &v.points[0];
+        let s = p.sigma;
+        assert!(
+            (s.x_nm / s.y_nm - 1.0).abs() < 0.05,
+            "{name}: sigma_x {} sigma_y {}",
+            s.x_nm,
+            s.y_nm
+        );
+        assert!(
+            (s.phi_x_nrad / s.phi_y_nrad - 1.0).abs() < 0.05,
+            "{name}: {} {}",
+            s.phi_x_nrad,
+            s.phi_y_nrad
+        );
+        // sigma_z below sigma_x and sigma_y (MODEL.md section 6).
+        assert!(s.z_nm < s.x_nm.min(s.y_nm));
+        // Mean displacement relative to nominal is small against sigma.
+        let m = p.mean.values();
+        let sg = s.values();
+        for k in 0..5 {
+            assert!(
+                m[k].abs() < 0.5 * sg[k],
+                "{name} dof {k}: mean {} sigma {}",
+                m[k],
+                sg[k]
+            );
+        }
+    }
+}
+
+#[test]
+fn table_csv_and_plots_are_written() {
+    let dir = std::env::temp_dir().join(format!("kinrepro-out-{}", std::process::id()));
+    let s1 = scene("01_maxwell_vgroove_steel.toml");
+    let (ok, table, err) = kinrepro(&[
+        "study",
+        s1.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    assert!(
+        table.contains("sigma_x [nm]")
+            && table.contains("sigma_phi_x[nrad]")
+            && table.contains("seed 1")
+    );
+    for f in [
+        "samples_01_01_maxwell_vgroove_steel.csv",
+        "sigma_bars.svg",
+        "scatter_xy.svg",
+        "sigma_convergence.svg",
+    ] {
+        let text = std::fs::read_to_string(dir.join(f)).unwrap();
+        assert!(text.len() > 100, "{f}");
+    }
+    let samples =
+        std::fs::read_to_string(dir.join("samples_01_01_maxwell_vgroove_steel.csv")).unwrap();
+    assert_eq!(samples.lines().count(), 26);
+    assert!(samples.starts_with("index,mu_1,mu_2,mu_3,mu_4,mu_5,mu_6,centre/x_m"));
+    let (ok, csv, _) = kinrepro(&[
+        "study",
+        s1.to_str().unwrap(),
+        "--format",
+        "csv",
+        "--samples",
+        "8",
+    ]);
+    assert!(ok);
+    assert_eq!(csv.lines().count(), 1 + 5);
+    // The corners design has 2^6 samples, each mu at mu0 +- spread.
+    let (ok, json, _) = kinrepro(&[
+        "study",
+        s1.to_str().unwrap(),
+        "--sampler",
+        "corners",
+        "--format",
+        "json",
+    ]);
+    assert!(ok);
+    let r: StudyReport = serde_json::from_str(&json).unwrap();
+    assert_eq!(r.variants[0].samples, 64);
+    // Bad input: unknown sampler, bad shard.
+    let (ok, _, err) = kinrepro(&["study", s1.to_str().unwrap(), "--sampler", "sobol"]);
+    assert!(!ok && err.contains("sobol"));
+    let (ok, _, err) = kinrepro(&["study", s1.to_str().unwrap(), "--shard", "5/4"]);
+    assert!(!ok && !err.contains("panicked"), "{err}");
+}
