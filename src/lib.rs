@@ -8,6 +8,7 @@
 pub mod assembly;
 pub mod contact;
 pub mod error;
+pub mod fe;
 pub mod material;
 pub mod report;
 pub mod scene;

@@ -1,0 +1,186 @@
+//! A small finite-element contact solver that validates Hertz
+//! theory for the contact types of kinematic couplings.
+//!
+//! Model: a rigid indenter with the combined gap profile
+//! `h(x, y) = x²/(2Rx) + y²/(2Ry)` is pressed, frictionless, into an elastic quarter
+//! block (symmetry rollers on `x = 0`, `y = 0`) whose outer faces carry the
+//! Boussinesq point-load displacement field of the total load, so that the block
+//! represents a half-space and the approach is measured from infinity, as in Hertz
+//! theory. The block gets `E = E*(1-ν²)` with `ν` = [`MeshOptions::poisson`]
+//! (default 0.3): with a rigid frictionless indenter only `E/(1-ν²)` enters the
+//! normal problem (Johnson 1985 §3.4), so the result depends only on `E*`.
+//!
+//! Modules: [`mesh`] (graded hexahedral mesh), [`elasticity`] (elements, assembly,
+//! sparse Cholesky), [`boussinesq`] (far field), [`contact`] (Signorini active set),
+//! [`hertz_ref`] (kinrepro's Hertz law, the reference), [`validate`] (case runner, convergence study).
+
+pub mod boussinesq;
+pub mod contact;
+pub mod elasticity;
+pub mod hertz_ref;
+pub mod mesh;
+pub mod validate;
+
+pub use hertz_ref::{HertzSolution, hertz};
+
+/// Errors of the FE contact solver.
+#[derive(Debug, thiserror::Error)]
+pub enum FeError {
+    /// Bad input (non-positive radius, load, modulus, invalid mesh options...).
+    #[error("invalid input: {0}")]
+    InvalidInput(String),
+    /// The sparse Cholesky factorization failed (matrix not positive definite).
+    #[error("sparse factorization failed: {0}")]
+    Factorization(String),
+    /// The contact active set did not converge.
+    #[error("contact active set did not converge after {0} iterations")]
+    ContactNotConverged(usize),
+    /// The contact zone reached the edge of the candidate (fine) zone.
+    #[error("contact zone reaches the edge of the candidate zone; increase fine_zone_rel")]
+    CandidateZoneTooSmall,
+    /// A non-finite or non-physical value appeared.
+    #[error("non-finite or non-physical value in {0}")]
+    NonFinite(&'static str),
+}
+
+/// One contact case: profile radii of the combined gap `h = x²/(2rx) + y²/(2ry)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FeCase {
+    /// Effective radius in the x–z plane (m).
+    pub rx: f64,
+    /// Effective radius in the y–z plane (m).
+    pub ry: f64,
+    /// Effective modulus `E* = 1/((1-ν1²)/E1 + (1-ν2²)/E2)` (Pa).
+    pub e_star: f64,
+    /// Normal load (N).
+    pub load: f64,
+}
+
+impl FeCase {
+    fn check(&self) -> Result<(), FeError> {
+        for (n, v) in [
+            ("rx", self.rx),
+            ("ry", self.ry),
+            ("e_star", self.e_star),
+            ("load", self.load),
+        ] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(FeError::InvalidInput(format!(
+                    "{n} must be finite and positive, got {v}"
+                )));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Mesh and model options.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshOptions {
+    /// Element size at the contact divided by the Hertz semi-axis along the same
+    /// direction (in depth: by the smaller semi-axis).
+    pub element_size_rel: f64,
+    /// Element order: 2 = 27-node Lagrange (default), 1 = 8-node.
+    pub order: usize,
+    /// Extent of the uniform fine zone (= contact candidates) / Hertz semi-axis.
+    pub fine_zone_rel: f64,
+    /// Block size (x, y and depth) / larger Hertz semi-axis.
+    pub domain_rel: f64,
+    /// Geometric growth ratio of the element sizes outside the fine zone.
+    pub growth: f64,
+    /// Poisson's ratio of the block (`E = E*(1-ν²)`).
+    pub poisson: f64,
+    /// Number of load levels of the force–approach curve.
+    pub curve_levels: usize,
+}
+
+impl Default for MeshOptions {
+    /// The default mesh, meeting approach within 2 % and semi-axes within 5 % of
+    /// Hertz for the kinrepro contact types. The relative sizes are chosen so that
+    /// no node falls on the Hertz contact edge (node spacing `h/2 = 0.09 a`), which
+    /// would flatter the semi-axis estimate.
+    fn default() -> Self {
+        Self {
+            element_size_rel: 0.18,
+            order: 2,
+            fine_zone_rel: 1.3,
+            domain_rel: 10.0,
+            growth: 1.5,
+            poisson: 0.3,
+            curve_levels: 5,
+        }
+    }
+}
+
+impl MeshOptions {
+    /// A coarse mesh for fast tests (seconds in release), within 5 % of Hertz.
+    pub fn coarse() -> Self {
+        Self {
+            element_size_rel: 0.3,
+            ..Self::default()
+        }
+    }
+
+    fn check(&self) -> Result<(), FeError> {
+        let ok = self.element_size_rel > 0.0
+            && self.element_size_rel <= 1.0
+            && (self.order == 1 || self.order == 2)
+            && self.fine_zone_rel > 1.0
+            && self.domain_rel > 2.0 * self.fine_zone_rel
+            && self.growth >= 1.0
+            && self.growth <= 3.0
+            && self.poisson >= 0.0
+            && self.poisson < 0.5;
+        if ok {
+            Ok(())
+        } else {
+            Err(FeError::InvalidInput(format!("mesh options {self:?}")))
+        }
+    }
+}
+
+/// Result of one FE contact solve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FeResult {
+    /// Force–approach curve `(approach m, total force N)` at increasing load levels.
+    pub curve: Vec<(f64, f64)>,
+    /// Approach at the target load (m).
+    pub approach: f64,
+    /// Contact semi-axes `[along x, along y]` (m).
+    pub semi_axes: [f64; 2],
+    /// Peak pressure (Pa): nodal force / tributary area at the centre node.
+    pub peak_pressure: f64,
+    /// Element size at the contact across the smaller semi-axis (m).
+    pub element_size: f64,
+    /// Number of free degrees of freedom.
+    pub dofs: usize,
+    /// Wall-clock time of the solve (s).
+    pub seconds: f64,
+}
+
+/// Solves one contact case.
+pub fn solve_case(case: &FeCase, mesh: &MeshOptions) -> Result<FeResult, FeError> {
+    validate::run_case(case, mesh)
+}
+
+/// One level of a mesh-convergence study. Errors are signed, `FE/Hertz - 1`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConvergenceRow {
+    /// Element size at the contact across the smaller semi-axis (m).
+    pub element_size: f64,
+    /// Element size / Hertz semi-axis.
+    pub element_size_over_a: f64,
+    /// Free DOFs.
+    pub dofs: usize,
+    /// Relative approach error.
+    pub approach_error_rel: f64,
+    /// Relative semi-axis errors `[x, y]`.
+    pub semi_axis_error_rel: [f64; 2],
+    /// Solve time (s).
+    pub seconds: f64,
+}
+
+/// Mesh-convergence study over relative element sizes `levels`.
+pub fn convergence_study(case: &FeCase, levels: &[f64]) -> Result<Vec<ConvergenceRow>, FeError> {
+    validate::run_convergence(case, levels)
+}
