@@ -4,3 +4,4 @@
 pub mod check;
 pub mod contact;
 pub mod run;
+pub mod trace;
