@@ -345,3 +345,66 @@ fn trace_records_the_seating() {
     assert_eq!(last.pose, s.pose);
     assert!(samples.windows(2).all(|w| w[1].time > w[0].time));
 }
+
+/// The default mass model, by hand: three 10 mm steel balls and a steel
+/// disc of radius 40 + 10 mm, 10 mm thick.
+#[test]
+fn default_mass_is_balls_plus_plate() {
+    let c = coupling("01_maxwell_vgroove_steel.toml");
+    let m = dynamic::MassModel::of(&c);
+    let rho = 7850.0;
+    let ball = rho * 4.0 / 3.0 * std::f64::consts::PI * 0.005_f64.powi(3);
+    let plate = rho * std::f64::consts::PI * 0.05_f64.powi(2) * 0.01;
+    assert!((m.mass - (3.0 * ball + plate)).abs() < 1e-12);
+    // Centre of mass: the plate's centre is 10 mm above the ball plane.
+    assert!((m.centre_of_mass.z - plate * 0.01 / m.mass).abs() < 1e-15);
+    assert_eq!(m.source, dynamic::MassSource::BallsAndPlate);
+}
+
+fn scene_with(dynamics: &str) -> Result<kinrepro::scene::Scene, kinrepro::scene::SceneError> {
+    let base = std::fs::read_to_string("scenes/01_maxwell_vgroove_steel.toml").unwrap();
+    kinrepro::scene::Scene::parse(&format!("{base}\n{dynamics}"), "test.toml")
+}
+
+#[test]
+fn dynamics_table_is_read_and_checked() {
+    let s = scene_with(
+        "[dynamics]\nmass = 1.5\ninertia = [2e-3, 2e-3, 3e-3]\ncentre_of_mass = [0.0, 0.0, 0.01]\n",
+    )
+    .unwrap();
+    let c = Coupling::new(&s).unwrap();
+    let m = dynamic::MassModel::of(&c);
+    assert_eq!(m.mass, 1.5);
+    assert_eq!(m.inertia[(2, 2)], 3e-3);
+    assert_eq!(m.centre_of_mass.z, 0.01);
+    assert_eq!(m.source, dynamic::MassSource::Scene);
+    // It seats, and the mass sets only the time scale.
+    let seated = dynamic::seat(&c, &[0.0; 6], &DynamicOptions::default()).unwrap();
+    let reference = quasistatic::seat(&c, &[0.0; 6], &SolverOptions::default()).unwrap();
+    assert!((seated.pose.translation - reference.pose.translation).norm() < 1e-13);
+
+    for (bad, field) in [
+        (
+            "[dynamics]\nmass = -1.0\ninertia = [1e-3, 1e-3, 1e-3]\n",
+            "dynamics.mass",
+        ),
+        (
+            "[dynamics]\nmass = 1.0\ninertia = [1e-3, 0.0, 1e-3]\n",
+            "dynamics.inertia",
+        ),
+        (
+            "[dynamics]\nmass = 1.0\ninertia = [1e-3, 1e-3, 3e-3]\n",
+            "dynamics.inertia",
+        ),
+        (
+            "[dynamics]\nmass = 1.0\ninertia = [1e-3, 1e-3, 1e-3]\ncolour = 1\n",
+            "",
+        ),
+    ] {
+        let e = scene_with(bad).unwrap_err();
+        let msg = e.to_string();
+        eprintln!("{msg}");
+        assert!(msg.contains(field), "{msg}");
+        assert!(e.line.is_some(), "{msg}");
+    }
+}
