@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand};
+use clap::{Parser, Subcommand, ValueEnum};
 use kinrepro::contact::{ContactPair, ContactShape};
 use kinrepro::material::Material;
 use kinrepro::report::study::{StudyReport, VariantReport};
@@ -53,7 +53,7 @@ enum Command {
         #[arg(required = true)]
         scenes: Vec<PathBuf>,
     },
-    /// Seat the coupling once (quasi-static) and print pose and contact states.
+    /// Seat the coupling once and print pose and contact states.
     Run {
         /// Scene file (TOML).
         scene: PathBuf,
@@ -61,9 +61,21 @@ enum Command {
         /// (default: the scene's nominal mu_static everywhere).
         #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
         mu: Option<Vec<f64>>,
-        /// Nominal number of load increments.
+        /// Nominal number of load increments (quasi-static solver).
         #[arg(long, default_value_t = 20)]
         increments: usize,
+        /// Seating solver.
+        #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
+        solver: SolverKind,
+        /// Dynamic solver: write the time history (CSV, SI units) to this file.
+        #[arg(long)]
+        trace: Option<PathBuf>,
+        /// Dynamic solver: start offset x,y,z of the moving half from the touching pose [m].
+        #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+        offset: Option<Vec<f64>>,
+        /// Dynamic solver: start tilt phi_x,phi_y,phi_z (rotation vector about the origin) [rad].
+        #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+        tilt: Option<Vec<f64>>,
         /// Print one JSON object (SI units) instead of a table.
         #[arg(long)]
         json: bool,
@@ -134,6 +146,25 @@ fn print_study(report: &StudyReport, format: Format) -> Result<(), String> {
     Ok(())
 }
 
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum SolverKind {
+    /// Quasi-static path following (Newton per load increment).
+    QuasiStatic,
+    /// Seating dynamics with rapier3d-f64 and the compliant contact layer.
+    Dynamic,
+}
+
+fn vector3(name: &str, v: Option<Vec<f64>>) -> Result<nalgebra::Vector3<f64>, String> {
+    match v {
+        None => Ok(nalgebra::Vector3::zeros()),
+        Some(v) if v.len() == 3 => Ok(nalgebra::Vector3::new(v[0], v[1], v[2])),
+        Some(v) => Err(format!(
+            "--{name} needs three comma-separated values, got {}",
+            v.len()
+        )),
+    }
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
@@ -196,28 +227,76 @@ fn run(cli: Cli) -> Result<(), String> {
             scene,
             mu,
             increments,
+            solver,
+            trace,
+            offset,
+            tilt,
             json,
         } => {
+            use kinrepro::solve::dynamic::{DynamicOptions, StartPose, seat_traced};
             let coupling = kinrepro::error::load_coupling(&scene).map_err(|e| e.to_string())?;
+            if solver == SolverKind::QuasiStatic
+                && (trace.is_some() || offset.is_some() || tilt.is_some())
+            {
+                return Err("--trace, --offset and --tilt need --solver dynamic".to_string());
+            }
             let opts = kinrepro::solve::SolverOptions {
                 increments: increments.max(1),
+                ..Default::default()
+            };
+            let dyn_opts = DynamicOptions {
+                start: StartPose {
+                    offset: vector3("offset", offset)?,
+                    tilt: vector3("tilt", tilt)?,
+                },
                 ..Default::default()
             };
             let nominal_mu = kinrepro::solve::nominal_mu(&coupling);
             let mu = mu.unwrap_or_else(|| nominal_mu.clone());
             let file = coupling.scene.file.clone();
             let seat = |m: &[f64]| {
-                kinrepro::solve::quasistatic::seat(&coupling, m, &opts)
-                    .map_err(|e| format!("{file}: {e}"))
+                match solver {
+                    SolverKind::QuasiStatic => {
+                        kinrepro::solve::quasistatic::seat(&coupling, m, &opts)
+                    }
+                    SolverKind::Dynamic => kinrepro::solve::dynamic::seat(&coupling, m, &dyn_opts),
+                }
+                .map_err(|e| format!("{file}: {e}"))
             };
-            let seating = seat(&mu)?;
+            let seating = match (&trace, solver) {
+                (Some(path), SolverKind::Dynamic) => {
+                    let name = path.display().to_string();
+                    let f = std::fs::File::create(path)
+                        .map_err(|e| format!("{name}: cannot create the trace file: {e}"))?;
+                    let mut w = kinrepro::report::trace::TraceWriter::new(
+                        std::io::BufWriter::new(f),
+                        &coupling,
+                    )
+                    .map_err(|e| format!("{name}: {e}"))?;
+                    let mut io_err = None;
+                    let result = seat_traced(&coupling, &mu, &dyn_opts, &mut |s| {
+                        if io_err.is_none() {
+                            io_err = w.write(s).err();
+                        }
+                    });
+                    if let Some(e) = io_err {
+                        return Err(format!("{name}: writing the trace failed: {e}"));
+                    }
+                    w.finish().map_err(|e| format!("{name}: {e}"))?;
+                    result.map_err(|e| format!("{file}: {e} (trace written to {name})"))?
+                }
+                _ => seat(&mu)?,
+            };
             let nominal = seat(&nominal_mu)?;
             let report = kinrepro::report::run::RunReport::new(
                 &coupling,
                 &mu,
                 &seating,
                 &nominal,
-                "quasi-static",
+                match solver {
+                    SolverKind::QuasiStatic => "quasi-static",
+                    SolverKind::Dynamic => "dynamic",
+                },
             );
             if json {
                 println!(

@@ -5,3 +5,4 @@ pub mod check;
 pub mod contact;
 pub mod run;
 pub mod study;
+pub mod trace;

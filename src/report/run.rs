@@ -70,14 +70,23 @@ impl RunReport {
         let mut s = String::new();
         let _ = writeln!(s, "{}  ({})", self.scene, self.name);
         let mu: Vec<String> = self.mu_static.iter().map(|m| format!("{m:.4}")).collect();
-        let _ = writeln!(
-            s,
-            "solver: {}, {} load increments, {} Newton iterations; mu_s = [{}]",
-            self.solver,
-            self.increments,
-            self.newton_iterations,
-            mu.join(", ")
-        );
+        if self.solver == "dynamic" {
+            let _ = writeln!(
+                s,
+                "solver: dynamic (rapier3d-f64), {} time steps; mu_s = [{}]",
+                self.increments,
+                mu.join(", ")
+            );
+        } else {
+            let _ = writeln!(
+                s,
+                "solver: {}, {} load increments, {} Newton iterations; mu_s = [{}]",
+                self.solver,
+                self.increments,
+                self.newton_iterations,
+                mu.join(", ")
+            );
+        }
         let _ = writeln!(s);
         let _ = writeln!(
             s,

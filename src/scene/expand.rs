@@ -203,6 +203,7 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
         friction: raw.friction.clone(),
         study: raw.study.clone(),
         evaluation_points,
+        dynamics: raw.dynamics.clone(),
     })
 }
 

@@ -39,6 +39,10 @@ pub struct SceneFile {
     /// Kelvin adds the trihedral ball).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub evaluation_points: Vec<EvaluationPointFile>,
+    /// Mass properties of the moving half for the dynamic solver (optional;
+    /// default: three balls plus a plate, see `solve::dynamic::mass`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dynamics: Option<DynamicsFile>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -225,4 +229,19 @@ pub struct EvaluationPointFile {
     pub name: String,
     /// Position in the moving half [m] (world frame in the touching pose).
     pub position: [f64; 3],
+}
+
+/// `[dynamics]`: mass properties of the moving half (dynamic solver only;
+/// the seated pose does not depend on them, only the time scale does).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DynamicsFile {
+    /// Mass of the moving half [kg].
+    pub mass: Spanned<f64>,
+    /// Principal moments of inertia about the centre of mass, along the
+    /// scene axes x, y, z [kg m^2].
+    pub inertia: Spanned<[f64; 3]>,
+    /// Centre of mass in the moving half [m] (default: the origin).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub centre_of_mass: Option<Spanned<[f64; 3]>>,
 }

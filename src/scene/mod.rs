@@ -96,6 +96,17 @@ pub struct EvaluationPoint {
     pub position: Vector3<f64>,
 }
 
+/// Mass properties of the moving half given in the scene (`[dynamics]`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DynamicsSettings {
+    /// Mass [kg].
+    pub mass: f64,
+    /// Principal moments of inertia about the centre of mass along x, y, z [kg m^2].
+    pub inertia: Vector3<f64>,
+    /// Centre of mass in the body frame [m].
+    pub centre_of_mass: Vector3<f64>,
+}
+
 /// A validated scene in explicit form.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
@@ -109,6 +120,8 @@ pub struct Scene {
     pub friction: FrictionSettings,
     pub study: StudySettings,
     pub evaluation_points: Vec<EvaluationPoint>,
+    /// Mass properties for the dynamic solver; `None`: the default model.
+    pub dynamics: Option<DynamicsSettings>,
 }
 
 impl Scene {

@@ -7,8 +7,8 @@ use toml::Spanned;
 use super::error::{ErrorContext, SceneError};
 use super::file::{SceneFile, SurfaceFile, SurfaceKind};
 use super::{
-    Ball, EvaluationPoint, FrictionSettings, Preload, Scene, StudySettings, Surface,
-    SurfaceGeometry,
+    Ball, DynamicsSettings, EvaluationPoint, FrictionSettings, Preload, Scene, StudySettings,
+    Surface, SurfaceGeometry,
 };
 use crate::material::{Material, MaterialError};
 use crate::study::Sampler;
@@ -222,6 +222,44 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         });
     }
 
+    let dynamics = match &f.dynamics {
+        None => None,
+        Some(d) => {
+            let mass = positive(&d.mass, "dynamics.mass", "kg")?;
+            let i = finite(&d.inertia, "dynamics.inertia")?;
+            let bad =
+                |reason: String| ctx.error(Some(&d.inertia.span()), "dynamics.inertia", reason);
+            if !i.iter().all(|v| *v > 0.0) {
+                return Err(bad(format!(
+                    "[{}, {}, {}]: principal moments of inertia must be positive (kg m^2)",
+                    i.x, i.y, i.z
+                )));
+            }
+            // Principal moments of a real body obey the triangle inequality
+            // (I_a + I_b >= I_c, since I_a + I_b - I_c = 2 int z_c^2 dm >= 0).
+            let sum = i.x + i.y + i.z;
+            if let Some(k) = (0..3).find(|&k| 2.0 * i[k] > sum * (1.0 + 1e-12)) {
+                return Err(bad(format!(
+                    "[{}, {}, {}]: no rigid body has these principal moments: the {} moment \
+                     exceeds the sum of the other two",
+                    i.x,
+                    i.y,
+                    i.z,
+                    ["x", "y", "z"][k]
+                )));
+            }
+            let centre_of_mass = match &d.centre_of_mass {
+                Some(v) => finite(v, "dynamics.centre_of_mass")?,
+                None => Vector3::zeros(),
+            };
+            Some(DynamicsSettings {
+                mass,
+                inertia: i,
+                centre_of_mass,
+            })
+        }
+    };
+
     Ok(Scene {
         file: ctx.file.to_string(),
         name: f.name.clone().unwrap_or_else(|| ctx.file.to_string()),
@@ -240,6 +278,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
             seed: st.seed,
         },
         evaluation_points,
+        dynamics,
     })
 }
 

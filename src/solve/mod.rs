@@ -6,6 +6,7 @@
 //! solver.
 
 pub mod contact_layer;
+pub mod dynamic;
 pub mod quasistatic;
 
 use nalgebra::Vector3;
@@ -15,6 +16,7 @@ use thiserror::Error;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, SlipState};
 use crate::scene::resolve::MU_MAX;
+use contact_layer::ContactEval;
 
 /// Settings of the quasi-static solver.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -67,6 +69,42 @@ pub enum SolveError {
          moving half has moved {displacement_m:.3e} m"
     )]
     SlidAway { percent: f64, displacement_m: f64 },
+    #[error(
+        "the coupling does not centre: the moving half came to rest with contact(s) {open} open \
+         (largest gap {gap_m:.3e} m) at full preload; friction (largest mu_s {mu_max}) holds it \
+         off its seat. The friction limit of this coupling is mu = {mu_limit:.4} (contact \
+         {critical_contact} the first to stay open): lower the friction below it"
+    )]
+    NotCentred {
+        /// The open contacts, 1-based, as a list ("2, 5").
+        open: String,
+        gap_m: f64,
+        mu_max: f64,
+        mu_limit: f64,
+        critical_contact: usize,
+    },
+    #[error(
+        "the dynamic seating did not settle within {time_s:.4e} s ({steps} steps): kinetic \
+         energy {kinetic_j:.3e} J, relative force residual {residual:.3e}"
+    )]
+    NotSettled {
+        time_s: f64,
+        steps: usize,
+        kinetic_j: f64,
+        residual: f64,
+    },
+    #[error(
+        "the start pose overlaps contact {contact} by {overlap_m:.3e} m: an offset start must \
+         leave every ball clear of its surfaces (raise the z offset or reduce the tilt)"
+    )]
+    StartOverlaps { contact: usize, overlap_m: f64 },
+    #[error("invalid dynamic-solver setting: {0}")]
+    BadOption(String),
+    #[error(
+        "the dynamic seating became non-finite at t = {time_s:.4e} s (step {step}): the time \
+         step is too large for the contact stiffness"
+    )]
+    NonFinite { time_s: f64, step: usize },
 }
 
 /// Per-contact state at the end of a seating (SI units).
@@ -86,6 +124,37 @@ pub struct ContactResult {
     pub pressure_ratio: Option<f64>,
     pub point_m: [f64; 3],
     pub normal: [f64; 3],
+}
+
+impl ContactResult {
+    /// The reported state of contact `i` from its evaluation by the contact
+    /// layer (shared by both solvers).
+    pub fn from_eval(coupling: &Coupling, i: usize, e: &ContactEval, friction: Friction) -> Self {
+        let contact = &coupling.contacts[i];
+        let p0 = contact.law.hertz.max_pressure(e.normal_force);
+        let allow = [&contact.pair.material1, &contact.pair.material2]
+            .iter()
+            .filter_map(|m| m.allowable_pressure)
+            .fold(f64::INFINITY, f64::min);
+        let ft = -e.tangential.force;
+        ContactResult {
+            normal_force_n: e.normal_force,
+            tangential_force: [ft.x, ft.y, ft.z],
+            tangential_force_n: ft.norm(),
+            approach_m: e.approach,
+            state: e.slip(),
+            mu_static: friction.mu_s,
+            mu_dynamic: friction.mu_d,
+            max_pressure_pa: p0,
+            pressure_ratio: allow.is_finite().then(|| p0 / allow),
+            point_m: [e.geometry.point.x, e.geometry.point.y, e.geometry.point.z],
+            normal: [
+                e.geometry.normal.x,
+                e.geometry.normal.y,
+                e.geometry.normal.z,
+            ],
+        }
+    }
 }
 
 /// The result of one seating.

@@ -290,30 +290,7 @@ impl<'a> Solver<'a> {
     }
 
     fn result(&self, i: usize, e: &ContactEval) -> ContactResult {
-        let contact = &self.coupling.contacts[i];
-        let p0 = contact.law.hertz.max_pressure(e.normal_force);
-        let allow = [&contact.pair.material1, &contact.pair.material2]
-            .iter()
-            .filter_map(|m| m.allowable_pressure)
-            .fold(f64::INFINITY, f64::min);
-        let ft = -e.tangential.force;
-        ContactResult {
-            normal_force_n: e.normal_force,
-            tangential_force: [ft.x, ft.y, ft.z],
-            tangential_force_n: ft.norm(),
-            approach_m: e.approach,
-            state: e.slip(),
-            mu_static: self.friction[i].mu_s,
-            mu_dynamic: self.friction[i].mu_d,
-            max_pressure_pa: p0,
-            pressure_ratio: allow.is_finite().then(|| p0 / allow),
-            point_m: [e.geometry.point.x, e.geometry.point.y, e.geometry.point.z],
-            normal: [
-                e.geometry.normal.x,
-                e.geometry.normal.y,
-                e.geometry.normal.z,
-            ],
-        }
+        ContactResult::from_eval(self.coupling, i, e, self.friction[i])
     }
 }
 
