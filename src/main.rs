@@ -7,7 +7,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 use kinrepro::contact::{ContactPair, ContactShape};
 use kinrepro::material::Material;
 use kinrepro::report::study::{StudyReport, VariantReport};
-use kinrepro::study::runner::{StudyOptions, design_for, run_variant};
+use kinrepro::study::runner::{StartBounds, StudyOptions, Variation, design_for, run_variant};
 use kinrepro::study::{Sampler, Shard};
 
 #[derive(Parser)]
@@ -108,9 +108,23 @@ enum Command {
         /// JSON outputs with `kinrepro merge`.
         #[arg(long)]
         shard: Option<Shard>,
-        /// Nominal number of load increments per seating.
+        /// Nominal number of load increments per seating (quasi-static solver).
         #[arg(long, default_value_t = 20)]
         increments: usize,
+        /// Seating solver.
+        #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
+        solver: SolverKind,
+        /// What varies from sample to sample: friction, start (a random start
+        /// pose above the seat; needs --solver dynamic), or both (friction,start).
+        #[arg(long, value_delimiter = ',', default_value = "friction")]
+        vary: Vec<VaryKind>,
+        /// Start variation: half-widths of the x and y offset and the largest
+        /// height z above the seat [m].
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        offset_bounds: Option<Vec<f64>>,
+        /// Start variation: half-widths of the tilt about x, y, z [rad].
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        tilt_bounds: Option<Vec<f64>>,
     },
     /// Merge the JSON outputs of sharded studies into the result of one run.
     Merge {
@@ -144,6 +158,14 @@ fn print_study(report: &StudyReport, format: Format) -> Result<(), String> {
         ),
     }
     Ok(())
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum VaryKind {
+    /// The six static friction coefficients.
+    Friction,
+    /// The start pose of the moving half (dynamic solver).
+    Start,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -318,6 +340,10 @@ fn run(cli: Cli) -> Result<(), String> {
             out,
             shard,
             increments,
+            solver,
+            vary,
+            offset_bounds,
+            tilt_bounds,
         } => {
             if let Some(j) = jobs {
                 rayon::ThreadPoolBuilder::new()
@@ -330,9 +356,37 @@ fn run(cli: Cli) -> Result<(), String> {
                 samples,
                 seed,
                 shard: shard.unwrap_or_else(Shard::whole),
-                solver: kinrepro::solve::SolverOptions {
-                    increments: increments.max(1),
-                    ..Default::default()
+                method: match solver {
+                    SolverKind::QuasiStatic => {
+                        kinrepro::solve::Method::QuasiStatic(kinrepro::solve::SolverOptions {
+                            increments: increments.max(1),
+                            ..Default::default()
+                        })
+                    }
+                    SolverKind::Dynamic => kinrepro::solve::Method::Dynamic(Default::default()),
+                },
+                variation: Variation {
+                    friction: vary.contains(&VaryKind::Friction),
+                    start: if vary.contains(&VaryKind::Start) {
+                        let bounds = |name: &str, v: Option<Vec<f64>>| -> Result<_, String> {
+                            let v = vector3(name, v)?;
+                            if v.iter().any(|x| !x.is_finite() || *x < 0.0) {
+                                return Err(format!("--{name}: bounds must be finite and >= 0"));
+                            }
+                            Ok(v)
+                        };
+                        Some(StartBounds {
+                            offset: bounds("offset-bounds", offset_bounds)?,
+                            tilt: bounds("tilt-bounds", tilt_bounds)?,
+                        })
+                    } else {
+                        if offset_bounds.is_some() || tilt_bounds.is_some() {
+                            return Err(
+                                "--offset-bounds and --tilt-bounds need --vary start".into()
+                            );
+                        }
+                        None
+                    },
                 },
             };
             let couplings = scenes
@@ -364,7 +418,8 @@ fn run(cli: Cli) -> Result<(), String> {
             for c in &couplings {
                 let run = run_variant(c, &opts, &|| bar.inc(1)).map_err(|e| e.to_string())?;
                 variants.push(
-                    VariantReport::new(c, run).map_err(|e| format!("{}: {e}", c.scene.file))?,
+                    VariantReport::new(c, run, &opts)
+                        .map_err(|e| format!("{}: {e}", c.scene.file))?,
                 );
             }
             bar.finish_and_clear();

@@ -99,7 +99,7 @@ fn maxwell_mc(name: &str, n: usize) -> VariantReport {
         shard: Shard::whole(),
         ..Default::default()
     };
-    VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap()).unwrap()
+    VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap(), &opts).unwrap()
 }
 
 #[test]
@@ -198,4 +198,83 @@ fn table_csv_and_plots_are_written() {
     assert!(!ok && err.contains("sobol"));
     let (ok, _, err) = kinrepro(&["study", s1.to_str().unwrap(), "--shard", "5/4"]);
     assert!(!ok && !err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn dynamic_studies_with_random_start_poses() {
+    use kinrepro::solve::Method;
+    use kinrepro::study::runner::{StartBounds, Variation, lifted_clear};
+    use nalgebra::Vector3;
+    // Below the friction limit (0.31 for this groove) an offset start centres.
+    let text = std::fs::read_to_string(scene("01_maxwell_vgroove_steel.toml"))
+        .unwrap()
+        .replace("mu_static = 0.5 ", "mu_static = 0.2 ");
+    let s = kinrepro::scene::Scene::parse(&text, "low_mu.toml").unwrap();
+    let c = kinrepro::assembly::Coupling::new(&s).unwrap();
+    let bounds = StartBounds {
+        offset: Vector3::new(20e-6, 20e-6, 30e-6),
+        tilt: Vector3::new(1e-4, 1e-4, 1e-4),
+    };
+    let variation = Variation {
+        friction: false,
+        start: Some(bounds),
+    };
+    // Every drawn start lies above the seat: clear of all surfaces, within the bounds.
+    for row in kinrepro::study::design(Sampler::Lhs, 6, 12, 3).unwrap() {
+        let (mu, start) = variation.map(&c, &row);
+        assert_eq!(mu, vec![0.2; 6]);
+        assert!(start.offset.x.abs() <= 20e-6 && start.offset.y.abs() <= 20e-6);
+        assert!(start.tilt.iter().all(|t| t.abs() <= 1e-4));
+        let base = lifted_clear(
+            &c,
+            kinrepro::solve::dynamic::StartPose {
+                offset: Vector3::new(start.offset.x, start.offset.y, 0.0),
+                tilt: start.tilt,
+            },
+        );
+        assert!(start.offset.z >= base.offset.z && start.offset.z <= base.offset.z + 30e-6 + 1e-12);
+        let pose = c.touching_pose.moved(&base.offset, &base.tilt);
+        let min_gap = (0..6)
+            .map(|i| c.geometry(i, &pose).gap)
+            .fold(f64::INFINITY, f64::min);
+        assert!((min_gap - 1e-9).abs() < 1e-12, "{min_gap:e}");
+    }
+    let opts = StudyOptions {
+        samples: Some(6),
+        method: Method::Dynamic(Default::default()),
+        variation,
+        ..Default::default()
+    };
+    let v = VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap(), &opts).unwrap();
+    assert_eq!(v.solver, "dynamic");
+    assert_eq!(v.inputs.len(), 6);
+    // With equal friction the start alone leaves a scatter (friction holds
+    // each arrival slightly differently), but every sample centres: no pose
+    // ends further than 100 nm from the nominal seating.
+    let p = &v.points[0];
+    assert!(p.max.x_nm.abs().max(p.min.x_nm.abs()) < 100.0, "{p:?}");
+    // A varied start needs the dynamic solver; a study must vary something.
+    let bad = StudyOptions {
+        variation,
+        ..Default::default()
+    };
+    assert!(
+        run_variant(&c, &bad, &|| {})
+            .unwrap_err()
+            .to_string()
+            .contains("--solver dynamic")
+    );
+    let none = StudyOptions {
+        variation: Variation {
+            friction: false,
+            start: None,
+        },
+        ..Default::default()
+    };
+    assert!(
+        run_variant(&c, &none, &|| {})
+            .unwrap_err()
+            .to_string()
+            .contains("varies nothing")
+    );
 }

@@ -11,7 +11,7 @@ use crate::study::plot::{
     ConvergenceSeries, Dof, VariantScatter, VariantSigma, plot_convergence, plot_sigma_bars,
     plot_xy_scatter,
 };
-use crate::study::runner::{COMPONENTS, VariantRun, mu_of_row};
+use crate::study::runner::{COMPONENTS, StartBounds, StudyOptions, VariantRun, Variation};
 use crate::study::stats::{
     BootstrapConfig, SampleRecord, ShardFile, Summary, merge, sigma_convergence, summarize_outputs,
     verify_inputs,
@@ -80,6 +80,14 @@ pub struct VariantReport {
     pub mu_static: f64,
     pub spread: f64,
     pub dynamic_ratio: f64,
+    /// The seating solver.
+    pub solver: String,
+    /// What varied: the names of the design dimensions, in row order.
+    pub inputs: Vec<String>,
+    /// Start-pose bounds when the start varied: offset half-widths (z: largest
+    /// height) [m] and tilt half-widths [rad].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub start_bounds: Option<[[f64; 3]; 2]>,
     /// True for one shard of several: statistics wait for `kinrepro merge`.
     pub partial: bool,
     /// Statistics per evaluation point, the centre of the moving half first.
@@ -145,8 +153,13 @@ fn point_stats(
 
 impl VariantReport {
     /// Build from a run; statistics only when the run holds every sample.
-    pub fn new(coupling: &Coupling, run: VariantRun) -> Result<Self, StudyError> {
+    pub fn new(
+        coupling: &Coupling,
+        run: VariantRun,
+        opts: &StudyOptions,
+    ) -> Result<Self, StudyError> {
         let f = &coupling.scene.friction;
+        let var = &opts.variation;
         let mut v = VariantReport {
             scene: coupling.scene.file.clone(),
             name: coupling.scene.name.clone(),
@@ -156,6 +169,9 @@ impl VariantReport {
             mu_static: f.mu_static,
             spread: f.spread,
             dynamic_ratio: f.dynamic_ratio,
+            solver: opts.method.name().to_string(),
+            inputs: var.input_names(coupling.contacts.len()),
+            start_bounds: var.start.map(|b| [b.offset.into(), b.tilt.into()]),
             partial: run.shard.count > 1,
             points: Vec::new(),
             design: run.design,
@@ -167,6 +183,19 @@ impl VariantReport {
             v.points = point_stats(&v.output_names, &v.records)?;
         }
         Ok(v)
+    }
+}
+
+impl VariantReport {
+    /// The variation this study used (to map design rows to inputs).
+    pub fn variation(&self) -> Variation {
+        Variation {
+            friction: self.inputs.first().is_some_and(|n| n.starts_with("mu_")),
+            start: self.start_bounds.map(|[o, t]| StartBounds {
+                offset: o.into(),
+                tilt: t.into(),
+            }),
+        }
     }
 }
 
@@ -376,8 +405,8 @@ impl StudyReport {
                 .file_stem()
                 .map_or("scene".into(), |s| s.to_string_lossy().into_owned());
             let mut t = String::from("index");
-            for k in 1..=v.design.dims {
-                let _ = write!(t, ",mu_{k}");
+            for name in &v.inputs {
+                let _ = write!(t, ",{name}");
             }
             for n in &v.output_names {
                 let _ = write!(t, ",{}", csv_field(n));
@@ -385,7 +414,15 @@ impl StudyReport {
             t.push('\n');
             for r in &v.records {
                 let _ = write!(t, "{}", r.index);
-                for m in mu_of_row(c, &r.inputs) {
+                let (mu, start) = v.variation().map(c, &r.inputs);
+                let mut values: Vec<f64> = Vec::new();
+                if v.inputs.first().is_some_and(|n| n.starts_with("mu_")) {
+                    values.extend(mu);
+                }
+                if v.start_bounds.is_some() {
+                    values.extend(start.offset.iter().chain(start.tilt.iter()));
+                }
+                for m in values {
                     let _ = write!(t, ",{m:e}");
                 }
                 for o in &r.outputs {

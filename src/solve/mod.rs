@@ -234,3 +234,49 @@ pub fn frictions(coupling: &Coupling, mu_s: &[f64]) -> Result<Vec<Friction>, Sol
 pub fn nominal_mu(coupling: &Coupling) -> Vec<f64> {
     vec![coupling.scene.friction.mu_static; coupling.contacts.len()]
 }
+
+/// Which solver seats the coupling, with its settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Method {
+    /// Quasi-static path following (the default).
+    QuasiStatic(SolverOptions),
+    /// Seating dynamics with rapier3d-f64.
+    Dynamic(dynamic::DynamicOptions),
+}
+
+impl Default for Method {
+    fn default() -> Self {
+        Method::QuasiStatic(SolverOptions::default())
+    }
+}
+
+impl Method {
+    /// The solver's name, as on the command line.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Method::QuasiStatic(_) => "quasi-static",
+            Method::Dynamic(_) => "dynamic",
+        }
+    }
+
+    /// Seat with static coefficients `mu_s`; `start` is where the dynamic
+    /// solver starts (the quasi-static solver always starts touching).
+    pub fn seat(
+        &self,
+        coupling: &Coupling,
+        mu_s: &[f64],
+        start: &dynamic::StartPose,
+    ) -> Result<Seating, SolveError> {
+        match self {
+            Method::QuasiStatic(o) => quasistatic::seat(coupling, mu_s, o),
+            Method::Dynamic(o) => dynamic::seat(
+                coupling,
+                mu_s,
+                &dynamic::DynamicOptions {
+                    start: *start,
+                    ..*o
+                },
+            ),
+        }
+    }
+}

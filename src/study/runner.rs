@@ -2,10 +2,13 @@
 //! coupling once per sample (rayon across samples), and record the pose of
 //! every evaluation point relative to the nominal-mu seating.
 //!
-//! Sample i uses mu_s,k = mu0 + spread (2 u_ik - 1) for contact k, where u_i
-//! is row i of the design on [0, 1]^6 (MODEL.md §4, rectangular
-//! distribution). Its values depend only on (sampler, n, seed, i), so shards
-//! of the sample range computed anywhere merge into exactly one run.
+//! Inputs: the row u_i of the design on [0, 1]^d maps to the varied
+//! quantities in order: with friction varied, mu_s,k = mu0 + spread
+//! (2 u_ik - 1) for contact k (MODEL.md §4, rectangular distribution); with
+//! the start varied (dynamic solver), an offset x, y in +-b_x, +-b_y, z in
+//! [0, b_z] above the seat and a tilt in +-b_phi per axis. A row depends only
+//! on (sampler, n, seed, i), so shards of the sample range computed anywhere
+//! merge into exactly one run.
 
 use rayon::prelude::*;
 use thiserror::Error;
@@ -14,11 +17,118 @@ use super::StudyError;
 use super::stats::SampleRecord;
 use super::{DesignSpec, Sampler, Shard};
 use crate::assembly::Coupling;
-use crate::solve::quasistatic::seat;
-use crate::solve::{PointPose, SolveError, SolverOptions, nominal_mu};
+use nalgebra::Vector3;
+
+use crate::solve::dynamic::StartPose;
+use crate::solve::{Method, PointPose, SolveError, nominal_mu};
 
 /// Output components per evaluation point (relative to the nominal seating, SI).
 pub const COMPONENTS: [&str; 5] = ["x_m", "y_m", "z_m", "phi_x_rad", "phi_y_rad"];
+
+/// Bounds of a randomly drawn start pose of the moving half (dynamic solver).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StartBounds {
+    /// Half-widths of x and y, and the largest height z above the seat [m].
+    pub offset: Vector3<f64>,
+    /// Half-widths of the tilt about x, y, z [rad].
+    pub tilt: Vector3<f64>,
+}
+
+/// What a study varies from sample to sample.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Variation {
+    /// The six static friction coefficients (the paper's study).
+    pub friction: bool,
+    /// The start pose (needs the dynamic solver).
+    pub start: Option<StartBounds>,
+}
+
+impl Default for Variation {
+    fn default() -> Self {
+        Variation {
+            friction: true,
+            start: None,
+        }
+    }
+}
+
+impl Variation {
+    /// Names of the design dimensions, in row order.
+    pub fn input_names(&self, contacts: usize) -> Vec<String> {
+        let mut v: Vec<String> = Vec::new();
+        if self.friction {
+            v.extend((1..=contacts).map(|k| format!("mu_{k}")));
+        }
+        if self.start.is_some() {
+            v.extend(
+                [
+                    "offset_x_m",
+                    "offset_y_m",
+                    "offset_z_m",
+                    "tilt_x_rad",
+                    "tilt_y_rad",
+                    "tilt_z_rad",
+                ]
+                .map(String::from),
+            );
+        }
+        v
+    }
+
+    /// Static coefficients and start pose of one design row (of
+    /// `input_names().len()` coordinates).
+    pub fn map(&self, coupling: &Coupling, row: &[f64]) -> (Vec<f64>, StartPose) {
+        let n = coupling.contacts.len();
+        let (mu, rest) = if self.friction {
+            (mu_of_row(coupling, &row[..n]), &row[n..])
+        } else {
+            (nominal_mu(coupling), row)
+        };
+        let start = match self.start {
+            Some(b) => {
+                let tilted = StartPose {
+                    offset: Vector3::new(
+                        b.offset.x * (2.0 * rest[0] - 1.0),
+                        b.offset.y * (2.0 * rest[1] - 1.0),
+                        0.0,
+                    ),
+                    tilt: Vector3::new(
+                        b.tilt.x * (2.0 * rest[3] - 1.0),
+                        b.tilt.y * (2.0 * rest[4] - 1.0),
+                        b.tilt.z * (2.0 * rest[5] - 1.0),
+                    ),
+                };
+                let mut s = lifted_clear(coupling, tilted);
+                s.offset.z += b.offset.z * rest[2];
+                s
+            }
+            None => StartPose::touching(),
+        };
+        (mu, start)
+    }
+}
+
+/// Gap every ball keeps from its surfaces when a start pose is lifted clear [m].
+pub const START_CLEARANCE: f64 = 1e-9;
+
+/// `start` raised along z just enough that every ball clears its surfaces by
+/// [`START_CLEARANCE`] (the height of first contact for that lateral offset
+/// and tilt): a drawn start height then counts from there, so that every
+/// drawn start lies above the seat.
+pub fn lifted_clear(coupling: &Coupling, mut start: StartPose) -> StartPose {
+    for _ in 0..50 {
+        let pose = coupling.touching_pose.moved(&start.offset, &start.tilt);
+        let (i, gap) = (0..coupling.contacts.len())
+            .map(|i| (i, coupling.geometry(i, &pose).gap))
+            .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+        if gap >= START_CLEARANCE * (1.0 - 1e-6) {
+            break;
+        }
+        let nz = coupling.geometry(i, &pose).normal.z.max(1e-3);
+        start.offset.z += (START_CLEARANCE - gap) / nz;
+    }
+    start
+}
 
 /// How to run a study; `None` takes the scene's study settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -27,7 +137,8 @@ pub struct StudyOptions {
     pub samples: Option<usize>,
     pub seed: Option<u64>,
     pub shard: Shard,
-    pub solver: SolverOptions,
+    pub method: Method,
+    pub variation: Variation,
 }
 
 impl Default for StudyOptions {
@@ -37,7 +148,8 @@ impl Default for StudyOptions {
             samples: None,
             seed: None,
             shard: Shard::whole(),
-            solver: SolverOptions::default(),
+            method: Method::default(),
+            variation: Variation::default(),
         }
     }
 }
@@ -51,6 +163,8 @@ pub enum RunError {
         #[source]
         source: StudyError,
     },
+    #[error("{file}: {reason}")]
+    Options { file: String, reason: String },
     #[error("{file}: sample {index} (mu_s = {mu:?}): {source}")]
     Seating {
         file: String,
@@ -79,12 +193,8 @@ pub fn design_for(coupling: &Coupling, opts: &StudyOptions) -> Result<DesignSpec
         Sampler::Corners => None,
         _ => Some(opts.samples.unwrap_or(st.samples)),
     };
-    DesignSpec::new(
-        sampler,
-        coupling.contacts.len(),
-        n,
-        opts.seed.unwrap_or(st.seed),
-    )
+    let dims = opts.variation.input_names(coupling.contacts.len()).len();
+    DesignSpec::new(sampler, dims, n, opts.seed.unwrap_or(st.seed))
 }
 
 /// Static coefficients of one design row.
@@ -116,6 +226,18 @@ pub fn run_variant(
         file: file.clone(),
         source,
     };
+    if !opts.variation.friction && opts.variation.start.is_none() {
+        return Err(RunError::Options {
+            file,
+            reason: "the study varies nothing: vary friction, the start pose, or both".into(),
+        });
+    }
+    if opts.variation.start.is_some() && !matches!(opts.method, Method::Dynamic(_)) {
+        return Err(RunError::Options {
+            file,
+            reason: "a varied start pose needs the dynamic solver (--solver dynamic)".into(),
+        });
+    }
     let design = design_for(coupling, opts).map_err(design_err)?;
     let range = opts.shard.range(design.n).map_err(design_err)?;
     let rows = design.range(range.clone()).map_err(design_err)?;
@@ -126,7 +248,10 @@ pub fn run_variant(
         source,
     };
     let nominal_mu = nominal_mu(coupling);
-    let nominal = seat(coupling, &nominal_mu, &opts.solver)
+    // The reference: nominal friction, from the touching pose, same solver.
+    let nominal = opts
+        .method
+        .seat(coupling, &nominal_mu, &StartPose::touching())
         .map_err(|e| seat_err(usize::MAX, &nominal_mu, e))?;
     let points: Vec<_> = coupling
         .scene
@@ -138,8 +263,11 @@ pub fn run_variant(
         .into_par_iter()
         .zip(rows.into_par_iter())
         .map(|(index, row)| {
-            let mu = mu_of_row(coupling, &row);
-            let s = seat(coupling, &mu, &opts.solver).map_err(|e| seat_err(index, &mu, e))?;
+            let (mu, start) = opts.variation.map(coupling, &row);
+            let s = opts
+                .method
+                .seat(coupling, &mu, &start)
+                .map_err(|e| seat_err(index, &mu, e))?;
             let outputs = points
                 .iter()
                 .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).evaluated())
