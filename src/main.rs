@@ -134,6 +134,22 @@ enum Command {
         #[arg(long, value_enum, default_value_t = Format::Json)]
         format: Format,
     },
+    /// Check the Hertz law of every distinct contact pair of the scenes with
+    /// the mini FE solver, at the load the nominal seating reaches.
+    ValidateHertz {
+        /// Scene files (default: the seven bundled paper variants).
+        scenes: Vec<PathBuf>,
+        /// Mesh: default (meets 2 % in approach) or coarse (seconds).
+        #[arg(long, value_enum, default_value_t = MeshKind::Default)]
+        mesh: MeshKind,
+        /// Also run a mesh convergence study at these element sizes (element
+        /// size / contact semi-axis, e.g. 0.45,0.3,0.23,0.18).
+        #[arg(long, value_delimiter = ',')]
+        convergence: Option<Vec<f64>>,
+        /// Print a JSON array (SI units) instead of a table.
+        #[arg(long)]
+        json: bool,
+    },
     /// Print the explicit form of a scene (loads back to the same coupling).
     Expand {
         /// Scene file (TOML).
@@ -159,6 +175,44 @@ fn print_study(report: &StudyReport, format: Format) -> Result<(), String> {
     }
     Ok(())
 }
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum MeshKind {
+    Default,
+    Coarse,
+}
+
+/// The seven paper variants, built in so `validate-hertz` works anywhere.
+const BUNDLED: [(&str, &str); 7] = [
+    (
+        "scenes/01_maxwell_vgroove_steel.toml",
+        include_str!("../scenes/01_maxwell_vgroove_steel.toml"),
+    ),
+    (
+        "scenes/02_maxwell_pins_steel.toml",
+        include_str!("../scenes/02_maxwell_pins_steel.toml"),
+    ),
+    (
+        "scenes/03_maxwell_pins_sic.toml",
+        include_str!("../scenes/03_maxwell_pins_sic.toml"),
+    ),
+    (
+        "scenes/04_maxwell_balls_steel.toml",
+        include_str!("../scenes/04_maxwell_balls_steel.toml"),
+    ),
+    (
+        "scenes/05_maxwell_balls_sic.toml",
+        include_str!("../scenes/05_maxwell_balls_sic.toml"),
+    ),
+    (
+        "scenes/06_kelvin_steel.toml",
+        include_str!("../scenes/06_kelvin_steel.toml"),
+    ),
+    (
+        "scenes/07_kelvin_sic.toml",
+        include_str!("../scenes/07_kelvin_sic.toml"),
+    ),
+];
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum VaryKind {
@@ -443,6 +497,67 @@ fn run(cli: Cli) -> Result<(), String> {
                 .collect::<Result<Vec<_>, _>>()?;
             let merged = StudyReport::merge(docs).map_err(|e| format!("merge: {e}"))?;
             print_study(&merged, format)
+        }
+        Command::ValidateHertz {
+            scenes,
+            mesh,
+            convergence,
+            json,
+        } => {
+            let couplings = if scenes.is_empty() {
+                BUNDLED
+                    .iter()
+                    .map(|(file, text)| {
+                        let s =
+                            kinrepro::scene::Scene::parse(text, file).map_err(|e| e.to_string())?;
+                        kinrepro::assembly::Coupling::new(&s).map_err(|e| format!("{file}: {e}"))
+                    })
+                    .collect::<Result<Vec<_>, String>>()?
+            } else {
+                scenes
+                    .iter()
+                    .map(|p| kinrepro::error::load_coupling(p).map_err(|e| e.to_string()))
+                    .collect::<Result<Vec<_>, String>>()?
+            };
+            let cases = kinrepro::fe::pairs::distinct_pairs(&couplings)
+                .map_err(|(f, e)| format!("{f}: {e}"))?;
+            let mesh = match mesh {
+                MeshKind::Default => kinrepro::fe::MeshOptions::default(),
+                MeshKind::Coarse => kinrepro::fe::MeshOptions::coarse(),
+            };
+            let levels = convergence.unwrap_or_default();
+            if levels.iter().any(|l| !(l.is_finite() && *l > 0.0)) {
+                return Err("--convergence: element sizes must be positive numbers".into());
+            }
+            let mut rows = Vec::new();
+            for case in &cases {
+                eprintln!(
+                    "validating {} {}/{} at {:.4} N ...",
+                    case.pair.shape.name(),
+                    case.pair.material1.name,
+                    case.pair.material2.name,
+                    case.load
+                );
+                rows.push(
+                    kinrepro::fe::pairs::validate_pair(case, &mesh, &levels).map_err(|e| {
+                        format!(
+                            "{} {}/{}: {e}",
+                            case.pair.shape.name(),
+                            case.pair.material1.name,
+                            case.pair.material2.name
+                        )
+                    })?,
+                );
+            }
+            if json {
+                println!(
+                    "{}",
+                    serde_json::to_string_pretty(&rows).map_err(|e| e.to_string())?
+                );
+            } else {
+                print!("{}", kinrepro::report::validate_hertz::table(&rows));
+            }
+            Ok(())
         }
         Command::Expand { scene } => {
             let file = scene.display().to_string();

@@ -19,6 +19,7 @@ pub mod contact;
 pub mod elasticity;
 pub mod hertz_ref;
 pub mod mesh;
+pub mod pairs;
 pub mod validate;
 
 pub use hertz_ref::{HertzSolution, hertz};
@@ -164,7 +165,7 @@ pub fn solve_case(case: &FeCase, mesh: &MeshOptions) -> Result<FeResult, FeError
 }
 
 /// One level of a mesh-convergence study. Errors are signed, `FE/Hertz - 1`.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ConvergenceRow {
     /// Element size at the contact across the smaller semi-axis (m).
     pub element_size: f64,

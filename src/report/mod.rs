@@ -6,3 +6,4 @@ pub mod contact;
 pub mod run;
 pub mod study;
 pub mod trace;
+pub mod validate_hertz;

@@ -1,0 +1,129 @@
+//! Validation of the contact pairs of real scenes: each distinct pair (shape,
+//! radii, materials) at the largest normal load its contacts reach in the
+//! nominal seating, FE against kinrepro's Hertz law.
+
+use serde::Serialize;
+
+use super::{ConvergenceRow, FeCase, FeError, MeshOptions, convergence_study, hertz, solve_case};
+use crate::assembly::Coupling;
+use crate::contact::{ContactPair, ContactShape};
+use crate::solve::quasistatic::seat;
+use crate::solve::{SolveError, SolverOptions, nominal_mu};
+
+/// A distinct contact pair and the load to check it at.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PairCase {
+    pub pair: ContactPair,
+    /// Largest normal force of this pair in the nominal seatings [N].
+    pub load: f64,
+    /// Scenes it occurs in.
+    pub scenes: Vec<String>,
+}
+
+/// FE against Hertz for one pair (SI units; the keys of `validate-hertz --json`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PairValidation {
+    pub shape: ContactShape,
+    /// [ball radius, fixed element radius (null for a plane)].
+    pub radii_m: [Option<f64>; 2],
+    pub materials: [String; 2],
+    pub scenes: Vec<String>,
+    pub load_n: f64,
+    pub fe_approach_m: f64,
+    pub hertz_approach_m: f64,
+    pub approach_error_rel: f64,
+    /// Semi-axes along the profile's x (radius Rx) and y (radius Ry).
+    pub fe_semi_axes_m: [f64; 2],
+    pub hertz_semi_axes_m: [f64; 2],
+    pub semi_axes_error_rel: [f64; 2],
+    pub fe_peak_pressure_pa: f64,
+    pub hertz_peak_pressure_pa: f64,
+    /// FE force-approach curve [(approach m, force N)].
+    pub fe_curve: Vec<(f64, f64)>,
+    pub element_size_m: f64,
+    pub dofs: usize,
+    pub seconds: f64,
+    /// Mesh convergence table, when asked for.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub convergence: Vec<ConvergenceRow>,
+}
+
+/// The distinct pairs of the couplings, with the largest load each reaches
+/// in the nominal quasi-static seating.
+pub fn distinct_pairs(couplings: &[Coupling]) -> Result<Vec<PairCase>, (String, SolveError)> {
+    let mut out: Vec<PairCase> = Vec::new();
+    for c in couplings {
+        let s = seat(c, &nominal_mu(c), &SolverOptions::default())
+            .map_err(|e| (c.scene.file.clone(), e))?;
+        for (k, r) in c.contacts.iter().zip(&s.contacts) {
+            match out.iter_mut().find(|p| p.pair == k.pair) {
+                Some(p) => {
+                    p.load = p.load.max(r.normal_force_n);
+                    if !p.scenes.contains(&c.scene.file) {
+                        p.scenes.push(c.scene.file.clone());
+                    }
+                }
+                None => out.push(PairCase {
+                    pair: k.pair.clone(),
+                    load: r.normal_force_n,
+                    scenes: vec![c.scene.file.clone()],
+                }),
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Run the FE check of one pair; `levels` (element size / semi-axis) adds a
+/// convergence table.
+pub fn validate_pair(
+    case: &PairCase,
+    mesh: &MeshOptions,
+    levels: &[f64],
+) -> Result<PairValidation, FeError> {
+    let law = case
+        .pair
+        .law()
+        .map_err(|e| FeError::InvalidInput(e.to_string()))?;
+    let [rx, ry] = law.hertz.radii;
+    let fe_case = FeCase {
+        rx,
+        ry,
+        e_star: law.hertz.e_star,
+        load: case.load,
+    };
+    let fe = solve_case(&fe_case, mesh)?;
+    let hz = hertz(rx, ry, law.hertz.e_star, case.load)?;
+    let rel = |a: f64, b: f64| a / b - 1.0;
+    let convergence = if levels.is_empty() {
+        Vec::new()
+    } else {
+        convergence_study(&fe_case, levels)?
+    };
+    Ok(PairValidation {
+        shape: case.pair.shape,
+        radii_m: [Some(case.pair.radius1), case.pair.radius2],
+        materials: [
+            case.pair.material1.name.clone(),
+            case.pair.material2.name.clone(),
+        ],
+        scenes: case.scenes.clone(),
+        load_n: case.load,
+        fe_approach_m: fe.approach,
+        hertz_approach_m: hz.approach,
+        approach_error_rel: rel(fe.approach, hz.approach),
+        fe_semi_axes_m: fe.semi_axes,
+        hertz_semi_axes_m: hz.semi_axes,
+        semi_axes_error_rel: [
+            rel(fe.semi_axes[0], hz.semi_axes[0]),
+            rel(fe.semi_axes[1], hz.semi_axes[1]),
+        ],
+        fe_peak_pressure_pa: fe.peak_pressure,
+        hertz_peak_pressure_pa: hz.peak_pressure,
+        fe_curve: fe.curve,
+        element_size_m: fe.element_size,
+        dofs: fe.dofs,
+        seconds: fe.seconds,
+        convergence,
+    })
+}
