@@ -59,7 +59,7 @@ pub fn table(rows: &[PairValidation]) -> String {
             let _ = writeln!(
                 s,
                 "    mesh convergence: {:>10} {:>10} {:>9} {:>12} {:>16} {:>7}",
-                "h [um]", "a/h", "DOFs", "approach [%]", "semi-axes [%]", "t [s]"
+                "h [um]", "b/h", "DOFs", "approach [%]", "semi-axes [%]", "t [s]"
             );
             for c in &r.convergence {
                 let _ = writeln!(
