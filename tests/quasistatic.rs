@@ -298,3 +298,41 @@ fn bad_mu_vectors_are_errors() {
     .unwrap_err();
     assert!(e.to_string().contains("outside"));
 }
+
+#[test]
+fn failures_are_clear_errors_not_poses() {
+    // Newton limited to one iteration cannot meet 1e-10 of the preload.
+    let c = load("01_maxwell_vgroove_steel.toml");
+    let opts = SolverOptions {
+        max_newton: 1,
+        max_splits: 2,
+        ..Default::default()
+    };
+    let e = seat(&c, &[0.5; 6], &opts).unwrap_err();
+    assert!(e.to_string().contains("did not converge"), "{e}");
+    // A preload pulling sideways-up cannot seat the coupling: refused at assembly.
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/01_maxwell_vgroove_steel.toml"),
+    )
+    .unwrap()
+    .replace("force = 20.0", "force = 20.0\ndirection = [1.0, 0.0, 0.2]");
+    let s = kinrepro::scene::Scene::parse(&text, "lift.toml").unwrap();
+    let err = Coupling::new(&s).unwrap_err().to_string();
+    assert!(
+        err.contains("preload cannot seat") && err.contains("pulling force"),
+        "{err}"
+    );
+    // A preload far outside the ball circle tips the half off a groove.
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/01_maxwell_vgroove_steel.toml"),
+    )
+    .unwrap()
+    .replace("force = 20.0", "force = 20.0\npoint = [0.0, 0.5, 0.0]");
+    let s = kinrepro::scene::Scene::parse(&text, "tip.toml").unwrap();
+    assert!(
+        Coupling::new(&s)
+            .unwrap_err()
+            .to_string()
+            .contains("preload cannot seat")
+    );
+}
