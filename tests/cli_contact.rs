@@ -1,19 +1,8 @@
 //! `kinrepro contact`: JSON keys against the closed form, and bad input gets
 //! a clear message and a non-zero exit code.
 
-use std::process::Command;
-
-fn kinrepro(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+mod common;
+use common::kinrepro;
 
 #[test]
 fn json_output_has_the_documented_keys_and_hertz_values() {

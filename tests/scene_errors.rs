@@ -70,7 +70,7 @@ fn each_kind_of_bad_scene_is_named_with_file_line_field_and_reason() {
             base.replace("ball_diameter = 0.010", "ball_diameter = -0.010"),
             "ball_diameter".into(),
             "coupling.ball_diameter",
-            "must be a positive length",
+            "must be positive (a length in m)",
         ),
         (
             base.replace("force = 20.0", "force = 0.0"),

@@ -1,30 +1,13 @@
 //! Studies: determinism, sharding, symmetry of the Maxwell scatter and a
 //! mean near zero, through the library and the CLI.
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+mod common;
+use common::kinrepro;
+use common::scene;
 
 use kinrepro::report::study::{StudyReport, VariantReport};
 use kinrepro::study::runner::{StudyOptions, run_variant};
 use kinrepro::study::{Sampler, Shard};
-
-fn scene(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenes")
-        .join(name)
-}
-
-fn kinrepro(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 #[test]
 fn same_seed_same_json_bytes_and_four_shards_merge_to_one_run() {

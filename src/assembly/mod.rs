@@ -186,6 +186,25 @@ impl Coupling {
         Ok(coupling)
     }
 
+    /// The coupling radius: the largest distance of a ball centre from the
+    /// origin of the touching pose, the length scale of moments [m].
+    pub fn length_scale(&self) -> f64 {
+        let t = &self.touching_pose;
+        self.balls
+            .iter()
+            .map(|b| (t.apply(&b.centre) - t.translation).norm())
+            .fold(0.0, f64::max)
+    }
+
+    /// The slide-away bound of the solvers: 5 % of the smallest ball radius [m].
+    pub fn slide_away_travel(&self) -> f64 {
+        0.05 * self
+            .balls
+            .iter()
+            .map(|b| b.radius)
+            .fold(f64::INFINITY, f64::min)
+    }
+
     /// Geometry of contact `i` with the moving half at `pose`.
     pub fn geometry(&self, i: usize, pose: &BodyPose) -> ContactGeometry {
         let c = &self.contacts[i];

@@ -613,14 +613,7 @@ mod tests {
                 }
             }
             // consistent nodal loads of the uniform pressure = -p × tributary area
-            let trib = mesh.top_tributary_areas();
-            let mut loads = vec![0.0; 3 * nn];
-            let [nx, ny, nz] = mesh.dims;
-            for j in 0..ny {
-                for i in 0..nx {
-                    loads[3 * mesh.node_index(i, j, nz - 1) + 2] = -p * trib[i + nx * j];
-                }
-            }
+            let loads = top_pressure_loads(&mesh, p);
             let u = solve_with_bc(&mesh, &mat, &fixed, &vec![0.0; 3 * nn], &loads);
             for (a, x) in mesh.nodes.iter().enumerate() {
                 let uz = -p * (x[2] + lz) / mat.e;
@@ -628,6 +621,20 @@ mod tests {
                 assert_relative_eq!(u[3 * a], mat.nu * p * x[0] / mat.e, epsilon = 1e-12);
             }
         }
+    }
+
+    /// Consistent nodal loads of a uniform pressure p on the top face:
+    /// -p times each top node's tributary area.
+    fn top_pressure_loads(mesh: &HexMesh, p: f64) -> Vec<f64> {
+        let trib = mesh.top_tributary_areas();
+        let mut loads = vec![0.0; 3 * mesh.nodes.len()];
+        let [nx, ny, nz] = mesh.dims;
+        for j in 0..ny {
+            for i in 0..nx {
+                loads[3 * mesh.node_index(i, j, nz - 1) + 2] = -p * trib[i + nx * j];
+            }
+        }
+        loads
     }
 
     /// Uniaxial strain (laterally constrained block):
@@ -647,18 +654,11 @@ mod tests {
                 fixed[3 * a + 2] = true;
             }
         }
-        let trib = mesh.top_tributary_areas();
-        let mut loads = vec![0.0; 3 * nn];
-        let [nx, ny, nz] = mesh.dims;
-        for j in 0..ny {
-            for i in 0..nx {
-                loads[3 * mesh.node_index(i, j, nz - 1) + 2] = -p * trib[i + nx * j];
-            }
-        }
+        let loads = top_pressure_loads(&mesh, p);
         let u = solve_with_bc(&mesh, &mat, &fixed, &vec![0.0; 3 * nn], &loads);
         let nu = mat.nu;
         let expect = -p * lz * (1.0 + nu) * (1.0 - 2.0 * nu) / (mat.e * (1.0 - nu));
-        let top = mesh.node_index(0, 0, nz - 1);
+        let top = mesh.node_index(0, 0, mesh.dims[2] - 1);
         assert_relative_eq!(u[3 * top + 2], expect, max_relative = 1e-10);
     }
 }

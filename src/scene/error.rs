@@ -48,6 +48,25 @@ impl ErrorContext<'_> {
         Some(self.source[..start].bytes().filter(|&b| b == b'\n').count() + 1)
     }
 
+    /// A value that must be positive and finite, in `unit`.
+    pub fn positive(
+        &self,
+        v: &toml::Spanned<f64>,
+        field: &str,
+        unit: &str,
+    ) -> Result<f64, SceneError> {
+        let x = *v.get_ref();
+        if x.is_finite() && x > 0.0 {
+            Ok(x)
+        } else {
+            Err(self.error(
+                Some(&v.span()),
+                field,
+                format!("{x} must be positive ({unit})"),
+            ))
+        }
+    }
+
     pub fn error(
         &self,
         span: Option<&std::ops::Range<usize>>,

@@ -40,18 +40,7 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
             "give either the high-level [coupling] table or explicit [[balls]] and [[surfaces]], not both",
         ));
     }
-    let positive = |v: &Spanned<f64>, field: &str| -> Result<f64, SceneError> {
-        let x = *v.get_ref();
-        if x.is_finite() && x > 0.0 {
-            Ok(x)
-        } else {
-            Err(ctx.error(
-                Some(&v.span()),
-                field,
-                format!("{x} must be a positive length in metres"),
-            ))
-        }
-    };
+    let positive = |v: &Spanned<f64>, field: &str| ctx.positive(v, field, "a length in m");
     // Materials are checked here so that errors name the high-level field.
     for (m, field) in [
         (&c.ball_material, "coupling.ball_material"),

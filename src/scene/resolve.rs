@@ -25,18 +25,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         }
         Material::builtin(n).map_err(|e| ctx.error(Some(&name.span()), field, e.to_string()))
     };
-    let positive = |v: &Spanned<f64>, field: &str, unit: &str| -> Result<f64, SceneError> {
-        let x = *v.get_ref();
-        if x.is_finite() && x > 0.0 {
-            Ok(x)
-        } else {
-            Err(ctx.error(
-                Some(&v.span()),
-                field,
-                format!("{x} must be positive ({unit})"),
-            ))
-        }
-    };
+    let positive = |v: &Spanned<f64>, field: &str, unit: &str| ctx.positive(v, field, unit);
     let finite = |v: &Spanned<[f64; 3]>, field: &str| -> Result<Vector3<f64>, SceneError> {
         let a = v.get_ref();
         if a.iter().all(|x| x.is_finite()) {

@@ -54,12 +54,7 @@ enum Step {
 impl<'a> Solver<'a> {
     fn new(coupling: &'a Coupling, friction: Vec<Friction>, opts: SolverOptions) -> Self {
         let touching = coupling.touching_pose;
-        let origin = touching.translation;
-        let length = coupling
-            .balls
-            .iter()
-            .map(|b| (touching.apply(&b.centre) - origin).norm())
-            .fold(0.0, f64::max);
+        let length = coupling.length_scale();
         let rows = coupling.constraint_rows(&touching);
         let w = Matrix6::from_fn(|r, c| rows[r][c]);
         let f = frictionless_preload_forces(coupling);
@@ -67,18 +62,13 @@ impl<'a> Solver<'a> {
             -(f[i].max(0.0) / coupling.contacts[i].law.hertz.hertz_constant).powf(2.0 / 3.0)
         });
         let x1 = w.lu().solve(&rhs).unwrap_or_else(Vector6::zeros);
-        let min_radius = coupling
-            .balls
-            .iter()
-            .map(|b| b.radius)
-            .fold(f64::INFINITY, f64::min);
         Solver {
             coupling,
             friction,
             opts,
             length,
             x1,
-            max_travel: 0.05 * min_radius,
+            max_travel: coupling.slide_away_travel(),
         }
     }
 

@@ -378,19 +378,10 @@ impl<'a> Simulation<'a> {
         }
         let dt = freq.shortest_period() / opts.steps_per_period;
         let (world, body) = world::build(coupling, &mass, &start, dt);
-        let origin = touching.translation;
-        let length = coupling
-            .balls
-            .iter()
-            .map(|b| (touching.apply(&b.centre) - origin).norm())
-            .fold(0.0, f64::max);
-        let min_radius = coupling
-            .balls
-            .iter()
-            .map(|b| b.radius)
-            .fold(f64::INFINITY, f64::min);
-        let max_travel =
-            0.05 * min_radius + opts.start.offset.norm() + opts.start.tilt.norm() * 2.0 * length;
+        let length = coupling.length_scale();
+        let max_travel = coupling.slide_away_travel()
+            + opts.start.offset.norm()
+            + opts.start.tilt.norm() * 2.0 * length;
         Ok(Simulation {
             coupling,
             friction,
