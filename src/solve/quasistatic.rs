@@ -105,10 +105,19 @@ impl<'a> Solver<'a> {
                 }
                 Step::Converged(new_pose, new_evals, its) => {
                     iterations += its;
+                    // A change of a contact that carried load is located by
+                    // halving; from zero load it is not: Hertz force, Mindlin
+                    // stiffness and the Coulomb limit all scale with the same
+                    // power of the approach along a proportional path, so a
+                    // fresh contact sticks or slips from the first load on.
                     let changed = new_evals
                         .iter()
                         .zip(&states)
-                        .any(|(e, st)| (e.slip() == SlipState::Slip) != st.sliding);
+                        .enumerate()
+                        .any(|(i, (e, st))| {
+                            (e.slip() == SlipState::Slip) != st.sliding
+                                && evals.get(i).is_some_and(|old| old.normal_force > 0.0)
+                        });
                     if changed && h > h_min * 1.5 {
                         h *= 0.5;
                         continue;
