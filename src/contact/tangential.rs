@@ -83,6 +83,9 @@ pub struct TangentialState {
     pub since_reversal: Vector3<f64>,
     /// Cattaneo-Mindlin: Masing factor, 1 on the virgin curve, 2 after a reversal.
     pub masing: f64,
+    /// Normal force when this state was committed [N] (the solvers integrate
+    /// k_t at the mean normal force of an increment, see `solve::contact_layer`).
+    pub normal_force: f64,
 }
 
 /// What the law returns for a trial increment: the new force, the state to
@@ -127,6 +130,7 @@ impl TangentialState {
             reversal_force: Vector3::zeros(),
             since_reversal: Vector3::zeros(),
             masing: 1.0,
+            normal_force: 0.0,
         }
     }
 

@@ -8,6 +8,11 @@
 //! surface does not move). The force on the moving body is
 //! F = F_n n - F_t (F_t the law's force, see `contact::tangential`), applied
 //! at p.
+//!
+//! Mindlin's stiffness follows the normal load (k_t ~ F_n^(1/3)), so an
+//! increment integrates dF_t = k_t(F_n) du with k_t at the mean normal force
+//! of the increment, (F_n,committed + F_n)/2 (midpoint rule: second order in
+//! the increment, where k_t at the end force would be first order).
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -54,7 +59,10 @@ pub fn evaluate(
     let kn = hertz.stiffness(approach);
     let body_point = pose.rotation.inverse() * (g.point - pose.translation);
     let du = g.point - committed_pose.apply(&body_point);
-    let (kt, dkt) = contact.law.tangential_stiffness(fn_);
+    let f_mid = 0.5 * (committed.normal_force + fn_);
+    let (kt, dkt_mid) = contact.law.tangential_stiffness(f_mid);
+    let dkt = 0.5 * dkt_mid;
+    // Cattaneo-Mindlin's secant branch uses the current contact radius.
     let [a, b] = hertz.semi_axes(fn_);
     let input = TangentialInput {
         normal: g.normal,
@@ -66,7 +74,8 @@ pub fn evaluate(
         g_star: contact.law.g_star,
         friction,
     };
-    let tangential = committed.update(coupling.scene.friction.tangential_law, &input);
+    let mut tangential = committed.update(coupling.scene.friction.tangential_law, &input);
+    tangential.state.normal_force = fn_;
     let n = g.normal;
     // d(approach) = -n . dp, so d(F_n n) = -k_n n n^T dp and
     // d(F_t) = T dp + (dF_t/dF_n)(-k_n n^T dp); the force on the body is F_n n - F_t.
