@@ -358,7 +358,7 @@ fn off_centre_preload_shifts_the_frictionless_forces_as_statics_says() {
 
 #[test]
 fn hertz_subsurface_shear_matches_johnson_and_a_brute_force_scan() {
-    // Johnson (1985) §3.9: tau_max = 0.31 p0 at z = 0.48 a for nu = 0.3.
+    // Johnson (1985): tau_max = 0.31 p0 at z = 0.48 a for nu = 0.3.
     let (ratio, depth) = circular_max_shear(0.3);
     assert!((ratio - 0.31).abs() < 0.005, "{ratio}");
     assert!((depth - 0.48).abs() < 0.01, "{depth}");

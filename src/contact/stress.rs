@@ -11,13 +11,13 @@
 //! ```
 //!
 //! maximised over zeta (golden section to 1e-12; the maximum lies on the
-//! axis): tau_max = 0.310 p0 at z = 0.48 a for nu = 0.3 (Johnson §3.9).
+//! axis): tau_max = 0.31 p0 at z = 0.48 a for nu = 0.3, as Johnson quotes.
 //! It depends on the Poisson ratio of the body, so each of the two bodies
 //! gets its own value.
 //!
 //! Elliptical contact (the crossed sphere-pin contacts): tau_max/p0 lies
 //! between the circle's value and the line contact's 0.300 (at z = 0.786 b,
-//! independent of nu; Johnson §4.3, Fig. 4.5 and eq. 4.47 ff.). kinrepro uses
+//! independent of nu; Johnson 1985, ch. 4). kinrepro uses
 //! the larger of the two, an upper bound whose error is at most
 //! |circle - 0.300| / max(circle, 0.300) (3.2 % for nu = 0.3); the depth is
 //! not reported for an ellipse.
