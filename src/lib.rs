@@ -5,6 +5,7 @@
 //! The compliant contact laws ([`contact`]) and the materials ([`material`])
 //! sit under everything; the CLI (`src/main.rs`) holds no physics.
 
+pub mod analysis;
 pub mod assembly;
 pub mod contact;
 pub mod error;

@@ -80,6 +80,42 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Stiffness of the seated coupling: 6x6 matrix, compliance and principal
+    /// stiffnesses at a point (contacts at rest: static friction sticks).
+    Stiffness {
+        /// Scene file (TOML).
+        scene: PathBuf,
+        /// Point of the moving half x,y,z [m] (default: the scene's evaluation points).
+        #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+        at: Option<Vec<f64>>,
+        /// Static friction coefficients, one per contact (default: nominal).
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        mu: Option<Vec<f64>>,
+        /// Print one JSON object (SI units) instead of a table.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Apply a force (and moment) after seating, preload held: deflection,
+    /// contact forces and the safe load envelope (first separation or slip).
+    Load {
+        /// Scene file (TOML).
+        scene: PathBuf,
+        /// Force fx,fy,fz [N] (fixed direction).
+        #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+        force: Vec<f64>,
+        /// Point of application x,y,z in the moving half [m].
+        #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+        at: Vec<f64>,
+        /// Moment mx,my,mz [N m] (default 0).
+        #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+        moment: Option<Vec<f64>>,
+        /// Static friction coefficients, one per contact (default: nominal).
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        mu: Option<Vec<f64>>,
+        /// Print one JSON object (SI units) instead of a table.
+        #[arg(long)]
+        json: bool,
+    },
     /// Reproducibility study: seat each scene once per friction sample and
     /// report the scatter of the pose (Table 2 of the paper).
     Study {
@@ -241,6 +277,27 @@ fn vector3(name: &str, v: Option<Vec<f64>>) -> Result<nalgebra::Vector3<f64>, St
     }
 }
 
+/// A finite three-vector option (None -> zero).
+fn finite3(name: &str, v: Option<Vec<f64>>) -> Result<nalgebra::Vector3<f64>, String> {
+    let x = vector3(name, v)?;
+    if x.iter().all(|c| c.is_finite()) {
+        Ok(x)
+    } else {
+        Err(format!(
+            "--{name} needs three finite numbers, got ({}, {}, {})",
+            x.x, x.y, x.z
+        ))
+    }
+}
+
+fn print_json<T: serde::Serialize>(v: &T) -> Result<(), String> {
+    println!(
+        "{}",
+        serde_json::to_string_pretty(v).map_err(|e| e.to_string())?
+    );
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
@@ -383,6 +440,87 @@ fn run(cli: Cli) -> Result<(), String> {
                 print!("{}", report.table());
             }
             Ok(())
+        }
+        Command::Stiffness {
+            scene,
+            at,
+            mu,
+            json,
+        } => {
+            let coupling = kinrepro::error::load_coupling(&scene).map_err(|e| e.to_string())?;
+            let points = match at {
+                Some(_) => vec![("--at".to_string(), finite3("at", at)?)],
+                None => coupling
+                    .scene
+                    .evaluation_points
+                    .iter()
+                    .map(|p| (p.name.clone(), p.position))
+                    .collect(),
+            };
+            let mu = mu.unwrap_or_else(|| kinrepro::solve::nominal_mu(&coupling));
+            let file = coupling.scene.file.clone();
+            let seating = kinrepro::solve::quasistatic::seat(&coupling, &mu, &Default::default())
+                .map_err(|e| format!("{file}: {e}"))?;
+            let k = kinrepro::analysis::stiffness::CouplingStiffness::new(&coupling, &seating, &mu)
+                .map_err(|e| format!("{file}: {e}"))?;
+            let report = kinrepro::report::analysis::StiffnessReport::new(
+                &coupling, &mu, &seating, &k, &points,
+            )
+            .map_err(|e| format!("{file}: {e}"))?;
+            if json {
+                print_json(&report)
+            } else {
+                print!("{}", report.table());
+                Ok(())
+            }
+        }
+        Command::Load {
+            scene,
+            force,
+            at,
+            moment,
+            mu,
+            json,
+        } => {
+            let force = finite3("force", Some(force))?;
+            let point = finite3("at", Some(at))?;
+            let moment = finite3("moment", moment)?;
+            if force.norm() == 0.0 && moment.norm() == 0.0 {
+                return Err("--force and --moment are both zero: there is no load to apply".into());
+            }
+            let coupling = kinrepro::error::load_coupling(&scene).map_err(|e| e.to_string())?;
+            let mu = mu.unwrap_or_else(|| kinrepro::solve::nominal_mu(&coupling));
+            let file = coupling.scene.file.clone();
+            let opts = kinrepro::solve::SolverOptions::default();
+            let seating = kinrepro::solve::quasistatic::seat(&coupling, &mu, &opts)
+                .map_err(|e| format!("{file}: {e}"))?;
+            let load = kinrepro::solve::quasistatic::ExternalLoad {
+                force,
+                point,
+                moment,
+            };
+            let path =
+                kinrepro::analysis::load::load_path(&coupling, &mu, &seating, &load, 1.0, &opts)
+                    .map_err(|e| format!("{file}: the load path failed: {e}"))?;
+            let envelope =
+                kinrepro::analysis::load::envelope(&coupling, &mu, &seating, &load, &opts)
+                    .map_err(|e| format!("{file}: the envelope search failed: {e}"))?;
+            let mut points: Vec<(String, nalgebra::Vector3<f64>)> = coupling
+                .scene
+                .evaluation_points
+                .iter()
+                .map(|p| (p.name.clone(), p.position))
+                .collect();
+            points.push(("load point".to_string(), point));
+            let report = kinrepro::report::analysis::LoadReport::new(
+                &coupling, &mu, &seating, &load, &path, &envelope, &points,
+            );
+            if json {
+                print_json(&report)
+            } else {
+                print!("{}", report.table());
+                Ok(())
+            }
         }
         Command::Study {
             scenes,

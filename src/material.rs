@@ -24,6 +24,9 @@ pub struct Material {
     /// Allowable peak Hertz contact pressure [Pa], if known.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub allowable_pressure: Option<f64>,
+    /// Allowable maximum (subsurface) shear stress [Pa], if known.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub allowable_shear_stress: Option<f64>,
 }
 
 /// A material was unknown or its constants are not physical.
@@ -60,6 +63,8 @@ pub enum MaterialError {
 ///
 /// The ceramics carry no allowable pressure: their contact strength depends on
 /// grade and surface finish; give `allowable_pressure` in the scene file.
+/// No built-in material carries an allowable shear stress (no cited value is
+/// at hand); give `allowable_shear_stress` in the scene file.
 const BUILTIN: &[(&str, f64, f64, Option<f64>)] = &[
     ("steel", 210e9, 0.30, Some(4.2e9)),
     ("silicon-carbide", 410e9, 0.14, None),
@@ -82,6 +87,17 @@ impl Material {
             youngs_modulus,
             poisson_ratio,
             allowable_pressure,
+            allowable_shear_stress: None,
+        };
+        m.validate()?;
+        Ok(m)
+    }
+
+    /// This material with an allowable maximum shear stress [Pa], validated.
+    pub fn with_allowable_shear_stress(self, tau: Option<f64>) -> Result<Self, MaterialError> {
+        let m = Material {
+            allowable_shear_stress: tau,
+            ..self
         };
         m.validate()?;
         Ok(m)
@@ -97,6 +113,7 @@ impl Material {
                 youngs_modulus: e,
                 poisson_ratio: v,
                 allowable_pressure: p,
+                allowable_shear_stress: None,
             })
             .ok_or_else(|| MaterialError::Unknown {
                 name: name.to_string(),
@@ -132,6 +149,15 @@ impl Material {
             return Err(bad(
                 "allowable_pressure",
                 p,
+                "must be a positive number of pascals",
+            ));
+        }
+        if let Some(t) = self.allowable_shear_stress
+            && !(t.is_finite() && t > 0.0)
+        {
+            return Err(bad(
+                "allowable_shear_stress",
+                t,
                 "must be a positive number of pascals",
             ));
         }
@@ -188,6 +214,14 @@ mod tests {
         assert!(Material::new("x", 1e9, 0.5, None).is_err());
         assert!(Material::new("x", 1e9, 0.3, Some(0.0)).is_err());
         assert!(Material::new("x", f64::NAN, 0.3, None).is_err());
+        let ok = Material::new("x", 1e9, 0.3, None).unwrap();
+        assert!(ok.clone().with_allowable_shear_stress(Some(-1.0)).is_err());
+        assert!(
+            ok.clone()
+                .with_allowable_shear_stress(Some(f64::NAN))
+                .is_err()
+        );
+        assert!(ok.with_allowable_shear_stress(Some(1e9)).is_ok());
         for n in builtin_names() {
             Material::builtin(n).unwrap().validate().unwrap();
         }

@@ -11,6 +11,7 @@
 pub mod cattaneo;
 pub mod elliptic;
 pub mod hertz;
+pub mod stress;
 pub mod tangential;
 
 use serde::{Deserialize, Serialize};

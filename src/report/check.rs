@@ -4,6 +4,8 @@ use std::fmt::Write;
 
 use crate::assembly::Coupling;
 use crate::assembly::constraint::{analyse, friction_limit, frictionless_preload_forces};
+use crate::contact::stress::contact_stress;
+use crate::report::run::factor;
 
 /// Summary of one assembled scene: contacts, constraint status, friction limit.
 pub fn check_summary(c: &Coupling) -> String {
@@ -49,7 +51,7 @@ pub fn check_summary(c: &Coupling) -> String {
     let forces = frictionless_preload_forces(c);
     let _ = writeln!(
         out,
-        "  {:>2} {:>4}  {:<16} {:>24}  {:>15}  {:>8} {:>8}  {:>10}",
+        "  {:>2} {:>4}  {:<16} {:>24}  {:>15}  {:>8} {:>8}  {:>10} {:>9} {:>13} {:>6} {:>6} {:>6}",
         "#",
         "ball",
         "pair",
@@ -57,14 +59,20 @@ pub fn check_summary(c: &Coupling) -> String {
         "Rx, Ry [mm]",
         "E* [GPa]",
         "G* [GPa]",
-        "F_n(mu=0) [N]"
+        "F_n(mu=0) [N]",
+        "p0 [MPa]",
+        "tau_max [MPa]",
+        "SF_p",
+        "SF_tau",
+        "SF"
     );
     for (i, k) in c.contacts.iter().enumerate() {
         let g = c.geometry(i, &c.touching_pose);
         let h = &k.law.hertz;
+        let st = contact_stress(&k.pair, h, forces[i]);
         let _ = writeln!(
             out,
-            "  {:>2} {:>4}  {:<16} ({:>6.3}, {:>6.3}, {:>6.3})  {:>6.3}, {:>6.3}  {:>8.2} {:>8.2}  {:>10.4}",
+            "  {:>2} {:>4}  {:<16} ({:>6.3}, {:>6.3}, {:>6.3})  {:>6.3}, {:>6.3}  {:>8.2} {:>8.2}  {:>13.4} {:>9.2} {:>13.2} {:>6} {:>6} {:>6}",
             i + 1,
             k.ball + 1,
             k.shape.name(),
@@ -75,8 +83,17 @@ pub fn check_summary(c: &Coupling) -> String {
             h.radii[1] * 1e3,
             h.e_star / 1e9,
             k.law.g_star / 1e9,
-            forces[i]
+            forces[i],
+            st.max_pressure_pa / 1e6,
+            st.max_shear_stress_pa[0].max(st.max_shear_stress_pa[1]) / 1e6,
+            factor(st.pressure_safety_factor),
+            factor(st.shear_safety_factor),
+            factor(st.safety_factor)
         );
     }
+    let _ = writeln!(
+        out,
+        "  p0, tau_max (subsurface shear; exact for circles, upper bound for ellipses) and safety factors SF = allowable / actual at the frictionless preload forces; \"-\": no allowable given"
+    );
     out
 }

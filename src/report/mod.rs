@@ -1,6 +1,7 @@
 //! Human-facing text: tables with labelled units. Every number comes from
 //! the library's result types; nothing here computes physics.
 
+pub mod analysis;
 pub mod check;
 pub mod contact;
 pub mod run;

@@ -126,7 +126,7 @@ impl RunReport {
         let _ = writeln!(s);
         let _ = writeln!(
             s,
-            "{:>2} {:>7} {:>7} {:>10} {:>10} {:>9} {:>6} {:>11} {:>9}",
+            "{:>2} {:>7} {:>7} {:>10} {:>10} {:>9} {:>6} {:>11} {:>9} {:>13} {:>8} {:>8} {:>8}",
             "#",
             "mu_s",
             "mu_d",
@@ -135,16 +135,16 @@ impl RunReport {
             "|F_t|/F_n",
             "state",
             "approach[nm]",
-            "p0 [MPa]"
+            "p0 [MPa]",
+            "tau_max [MPa]",
+            "SF_p",
+            "SF_tau",
+            "SF"
         );
         for (i, c) in self.contacts.iter().enumerate() {
-            let ratio = c
-                .pressure_ratio
-                .map(|r| format!(" ({:.0} % of allowable)", 100.0 * r))
-                .unwrap_or_default();
             let _ = writeln!(
                 s,
-                "{:>2} {:>7.4} {:>7.4} {:>10.6} {:>10.6} {:>9.6} {:>6} {:>11.4} {:>9.2}{}",
+                "{:>2} {:>7.4} {:>7.4} {:>10.6} {:>10.6} {:>9.6} {:>6} {:>11.4} {:>9.2} {:>13.2} {:>8} {:>8} {:>8}",
                 i + 1,
                 c.mu_static,
                 c.mu_dynamic,
@@ -157,9 +157,22 @@ impl RunReport {
                 },
                 c.approach_m * 1e9,
                 c.max_pressure_pa / 1e6,
-                ratio
+                c.max_shear_stress_pa / 1e6,
+                factor(c.pressure_safety_factor),
+                factor(c.shear_safety_factor),
+                factor(c.safety_factor)
             );
         }
+        let _ = writeln!(
+            s,
+            "tau_max: maximum subsurface shear stress (exact for circular contacts, an upper bound for elliptical ones); SF = allowable / actual, \"-\" where the materials give no allowable"
+        );
         s
     }
+}
+
+/// A safety factor for a table, "-" where no allowable is known.
+pub fn factor(f: Option<f64>) -> String {
+    f.map(|f| format!("{f:.2}"))
+        .unwrap_or_else(|| "-".to_string())
 }

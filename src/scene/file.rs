@@ -56,6 +56,9 @@ pub struct MaterialFile {
     /// Allowable peak contact pressure [Pa].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub allowable_pressure: Option<Spanned<f64>>,
+    /// Allowable maximum (subsurface) shear stress [Pa].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub allowable_shear_stress: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]

@@ -295,6 +295,11 @@ fn user_materials(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, Sc
                 *m.poisson_ratio.get_ref(),
                 m.allowable_pressure.as_ref().map(|p| *p.get_ref()),
             )
+            .and_then(|mat| {
+                mat.with_allowable_shear_stress(
+                    m.allowable_shear_stress.as_ref().map(|t| *t.get_ref()),
+                )
+            })
             .map_err(|e| {
                 let span = match &e {
                     MaterialError::Invalid {
@@ -312,6 +317,14 @@ fn user_materials(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, Sc
                         .allowable_pressure
                         .as_ref()
                         .map(|p| p.span())
+                        .unwrap_or_else(|| m.name.span()),
+                    MaterialError::Invalid {
+                        field: "allowable_shear_stress",
+                        ..
+                    } => m
+                        .allowable_shear_stress
+                        .as_ref()
+                        .map(|t| t.span())
                         .unwrap_or_else(|| m.name.span()),
                     _ => m.name.span(),
                 };

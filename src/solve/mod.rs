@@ -14,6 +14,7 @@ use serde::Serialize;
 use thiserror::Error;
 
 use crate::assembly::{BodyPose, Coupling};
+use crate::contact::stress::contact_stress;
 use crate::contact::{Friction, SlipState};
 use crate::scene::resolve::MU_MAX;
 use contact_layer::ContactEval;
@@ -122,6 +123,16 @@ pub struct ContactResult {
     pub max_pressure_pa: f64,
     /// Peak pressure / allowable pressure of the weaker material, where known.
     pub pressure_ratio: Option<f64>,
+    /// Maximum (subsurface) shear stress, the larger of the two bodies [Pa]
+    /// (`contact::stress`: exact for circles, an upper bound for ellipses).
+    pub max_shear_stress_pa: f64,
+    /// Depth of the maximum shear stress [m] (circular contacts).
+    pub max_shear_depth_m: Option<f64>,
+    /// Allowable / actual for the pressure, the shear stress, and the smaller
+    /// of the two; `None` where no allowable is known.
+    pub pressure_safety_factor: Option<f64>,
+    pub shear_safety_factor: Option<f64>,
+    pub safety_factor: Option<f64>,
     pub point_m: [f64; 3],
     pub normal: [f64; 3],
 }
@@ -137,6 +148,7 @@ impl ContactResult {
             .filter_map(|m| m.allowable_pressure)
             .fold(f64::INFINITY, f64::min);
         let ft = -e.tangential.force;
+        let stress = contact_stress(&contact.pair, &contact.law.hertz, e.normal_force);
         ContactResult {
             normal_force_n: e.normal_force,
             tangential_force: [ft.x, ft.y, ft.z],
@@ -147,6 +159,11 @@ impl ContactResult {
             mu_dynamic: friction.mu_d,
             max_pressure_pa: p0,
             pressure_ratio: allow.is_finite().then(|| p0 / allow),
+            max_shear_stress_pa: stress.max_shear_stress_pa[0].max(stress.max_shear_stress_pa[1]),
+            max_shear_depth_m: stress.max_shear_depth_m,
+            pressure_safety_factor: stress.pressure_safety_factor,
+            shear_safety_factor: stress.shear_safety_factor,
+            safety_factor: stress.safety_factor,
             point_m: [e.geometry.point.x, e.geometry.point.y, e.geometry.point.z],
             normal: [
                 e.geometry.normal.x,

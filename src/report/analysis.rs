@@ -1,0 +1,396 @@
+//! Output of `kinrepro stiffness` and `kinrepro load`: tables (N/um,
+//! N m/urad, nm, nrad) and JSON (SI).
+
+use std::fmt::Write;
+
+use nalgebra::Vector3;
+use serde::Serialize;
+
+use crate::analysis::load::Envelope;
+use crate::analysis::stiffness::CouplingStiffness;
+use crate::assembly::Coupling;
+use crate::solve::quasistatic::{ExternalLoad, LoadEvent, LoadPath};
+use crate::solve::{ContactResult, PointPose, Seating};
+
+/// A principal stiffness and its direction.
+#[derive(Debug, Clone, Serialize)]
+pub struct PrincipalReport {
+    /// [N/m] (translational) or [N m/rad] (rotational).
+    pub stiffness: f64,
+    pub direction: [f64; 3],
+}
+
+/// The stiffness at one point.
+#[derive(Debug, Clone, Serialize)]
+pub struct StiffnessPoint {
+    pub name: String,
+    /// Point in the moving half, scene coordinates [m].
+    pub position_m: [f64; 3],
+    /// 6x6 stiffness for (u, phi) at the point -> (F, M about it), SI, row-major.
+    pub matrix: [[f64; 6]; 6],
+    /// Its inverse: (F, M) at the point -> (u [m], phi [rad]).
+    pub compliance: [[f64; 6]; 6],
+    /// Ascending: pure force at the point, rotation free [N/m].
+    pub translational: Vec<PrincipalReport>,
+    /// Ascending: pure moment, translation free [N m/rad].
+    pub rotational: Vec<PrincipalReport>,
+}
+
+/// One contact spring.
+#[derive(Debug, Clone, Serialize)]
+pub struct SpringReport {
+    pub normal_force_n: f64,
+    pub normal_stiffness_n_per_m: f64,
+    pub tangential_stiffness_n_per_m: f64,
+}
+
+/// Everything `kinrepro stiffness` reports.
+#[derive(Debug, Clone, Serialize)]
+pub struct StiffnessReport {
+    pub scene: String,
+    pub name: String,
+    pub mu_static: Vec<f64>,
+    pub points: Vec<StiffnessPoint>,
+    pub contacts: Vec<SpringReport>,
+}
+
+fn rows(m: &nalgebra::Matrix6<f64>) -> [[f64; 6]; 6] {
+    let mut out = [[0.0; 6]; 6];
+    for (r, row) in out.iter_mut().enumerate() {
+        for (c, v) in row.iter_mut().enumerate() {
+            *v = m[(r, c)];
+        }
+    }
+    out
+}
+
+impl StiffnessReport {
+    /// `points`: (name, body point); the matrix is taken at the seated position.
+    pub fn new(
+        coupling: &Coupling,
+        mu: &[f64],
+        seating: &Seating,
+        k: &CouplingStiffness,
+        points: &[(String, Vector3<f64>)],
+    ) -> Result<Self, String> {
+        let pts = points
+            .iter()
+            .map(|(name, p)| {
+                let q = seating.pose.apply(p);
+                let m = k.matrix_at(&q);
+                let c = k
+                    .compliance_at(&q)
+                    .ok_or("the stiffness matrix is not positive definite")?;
+                let pr = k
+                    .principal_at(&q)
+                    .ok_or("the stiffness matrix is not positive definite")?;
+                let conv = |v: &[(f64, Vector3<f64>); 3]| {
+                    v.iter()
+                        .map(|(s, d)| PrincipalReport {
+                            stiffness: *s,
+                            direction: [d.x, d.y, d.z],
+                        })
+                        .collect()
+                };
+                Ok(StiffnessPoint {
+                    name: name.clone(),
+                    position_m: [p.x, p.y, p.z],
+                    matrix: rows(&m),
+                    compliance: rows(&c),
+                    translational: conv(&pr.translational),
+                    rotational: conv(&pr.rotational),
+                })
+            })
+            .collect::<Result<Vec<_>, String>>()?;
+        Ok(StiffnessReport {
+            scene: coupling.scene.file.clone(),
+            name: coupling.scene.name.clone(),
+            mu_static: mu.to_vec(),
+            points: pts,
+            contacts: k
+                .springs
+                .iter()
+                .map(|s| SpringReport {
+                    normal_force_n: s.normal_force,
+                    normal_stiffness_n_per_m: s.normal_stiffness,
+                    tangential_stiffness_n_per_m: s.tangential_stiffness,
+                })
+                .collect(),
+        })
+    }
+
+    pub fn table(&self) -> String {
+        let mut s = String::new();
+        let _ = writeln!(s, "{}  ({})", self.scene, self.name);
+        let mu: Vec<String> = self.mu_static.iter().map(|m| format!("{m:.4}")).collect();
+        let _ = writeln!(
+            s,
+            "stiffness of the seated coupling at rest (sticking contacts, Mindlin k_t; frictionless: normal only); mu_s = [{}]",
+            mu.join(", ")
+        );
+        let _ = writeln!(s);
+        let _ = writeln!(
+            s,
+            "{:>2} {:>10} {:>14} {:>14}",
+            "#", "F_n [N]", "k_n [N/um]", "k_t [N/um]"
+        );
+        for (i, c) in self.contacts.iter().enumerate() {
+            let _ = writeln!(
+                s,
+                "{:>2} {:>10.5} {:>14.4} {:>14.4}",
+                i + 1,
+                c.normal_force_n,
+                c.normal_stiffness_n_per_m * 1e-6,
+                c.tangential_stiffness_n_per_m * 1e-6
+            );
+        }
+        for p in &self.points {
+            let _ = writeln!(s);
+            let _ = writeln!(
+                s,
+                "point {} at ({:.4}, {:.4}, {:.4}) m",
+                p.name, p.position_m[0], p.position_m[1], p.position_m[2]
+            );
+            let _ = writeln!(
+                s,
+                "  stiffness matrix (u [m], phi [rad]) -> (F [N], M [N m]), SI:"
+            );
+            for row in &p.matrix {
+                let cells: Vec<String> = row.iter().map(|v| format!("{v:>12.4e}")).collect();
+                let _ = writeln!(s, "   {}", cells.join(" "));
+            }
+            let _ = writeln!(
+                s,
+                "  principal translational stiffness (pure force at the point, rotation free):"
+            );
+            for r in &p.translational {
+                let _ = writeln!(
+                    s,
+                    "    {:>12.4} N/um      along ({:>7.4}, {:>7.4}, {:>7.4})",
+                    r.stiffness * 1e-6,
+                    r.direction[0],
+                    r.direction[1],
+                    r.direction[2]
+                );
+            }
+            let _ = writeln!(
+                s,
+                "  principal rotational stiffness (pure moment, translation free):"
+            );
+            for r in &p.rotational {
+                let _ = writeln!(
+                    s,
+                    "    {:>12.4} N m/urad  about ({:>7.4}, {:>7.4}, {:>7.4})",
+                    r.stiffness * 1e-6,
+                    r.direction[0],
+                    r.direction[1],
+                    r.direction[2]
+                );
+            }
+        }
+        s
+    }
+}
+
+/// The deflection of one point under the load.
+#[derive(Debug, Clone, Serialize)]
+pub struct DeflectionReport {
+    pub name: String,
+    pub position_m: [f64; 3],
+    /// Relative to the seated pose.
+    pub deflection: PointPose,
+}
+
+/// The envelope as reported.
+#[derive(Debug, Clone, Serialize)]
+pub struct EnvelopeReport {
+    /// The first event: contact, kind and bracket of factors; null if none
+    /// up to `searched_to`.
+    pub event: Option<LoadEvent>,
+    /// The critical load factor (middle of the bracket).
+    pub factor: Option<f64>,
+    pub searched_to: f64,
+}
+
+/// Everything `kinrepro load` reports.
+#[derive(Debug, Clone, Serialize)]
+pub struct LoadReport {
+    pub scene: String,
+    pub name: String,
+    pub mu_static: Vec<f64>,
+    pub force_n: [f64; 3],
+    pub point_m: [f64; 3],
+    pub moment_n_m: [f64; 3],
+    /// Load factor reached (1 unless the load separates the coupling first).
+    pub factor_reached: f64,
+    /// Why the path ended early, if it did.
+    pub stopped: Option<String>,
+    pub points: Vec<DeflectionReport>,
+    pub contacts: Vec<ContactResult>,
+    pub seated_contacts: Vec<ContactResult>,
+    pub envelope: EnvelopeReport,
+}
+
+impl LoadReport {
+    pub fn new(
+        coupling: &Coupling,
+        mu: &[f64],
+        seating: &Seating,
+        load: &ExternalLoad,
+        path: &LoadPath,
+        envelope: &Envelope,
+        points: &[(String, Vector3<f64>)],
+    ) -> Self {
+        let v = |x: &Vector3<f64>| [x.x, x.y, x.z];
+        LoadReport {
+            scene: coupling.scene.file.clone(),
+            name: coupling.scene.name.clone(),
+            mu_static: mu.to_vec(),
+            force_n: v(&load.force),
+            point_m: v(&load.point),
+            moment_n_m: v(&load.moment),
+            factor_reached: path.factor,
+            stopped: path.stopped.as_ref().map(|e| e.to_string()),
+            points: points
+                .iter()
+                .map(|(name, p)| DeflectionReport {
+                    name: name.clone(),
+                    position_m: v(p),
+                    deflection: PointPose::between(&seating.pose, &path.pose, p),
+                })
+                .collect(),
+            contacts: path.contacts.clone(),
+            seated_contacts: seating.contacts.clone(),
+            envelope: EnvelopeReport {
+                event: envelope.event,
+                factor: envelope.factor(),
+                searched_to: envelope.searched_to,
+            },
+        }
+    }
+
+    pub fn table(&self) -> String {
+        let mut s = String::new();
+        let _ = writeln!(s, "{}  ({})", self.scene, self.name);
+        let mu: Vec<String> = self.mu_static.iter().map(|m| format!("{m:.4}")).collect();
+        let f = self.force_n;
+        let p = self.point_m;
+        let m = self.moment_n_m;
+        let _ = writeln!(
+            s,
+            "load after seating (preload held): F = ({}, {}, {}) N at ({}, {}, {}) m, M = ({}, {}, {}) N m; mu_s = [{}]",
+            f[0],
+            f[1],
+            f[2],
+            p[0],
+            p[1],
+            p[2],
+            m[0],
+            m[1],
+            m[2],
+            mu.join(", ")
+        );
+        if self.factor_reached < 1.0 {
+            let _ = writeln!(
+                s,
+                "WARNING: the load path ended at load factor {:.6}{}",
+                self.factor_reached,
+                self.stopped
+                    .as_ref()
+                    .map(|e| format!(": {e}"))
+                    .unwrap_or_else(|| ": the coupling lifts off its seat".to_string())
+            );
+        }
+        let _ = writeln!(s);
+        let _ = writeln!(
+            s,
+            "{:<16} {:>10} {:>10} {:>10} {:>11} {:>11} {:>11}",
+            "deflection", "x [nm]", "y [nm]", "z [nm]", "phi_x[nrad]", "phi_y[nrad]", "phi_z[nrad]"
+        );
+        for q in &self.points {
+            let d = &q.deflection;
+            let _ = writeln!(
+                s,
+                "{:<16} {:>10.4} {:>10.4} {:>10.4} {:>11.3} {:>11.3} {:>11.3}",
+                q.name,
+                d.x_m * 1e9,
+                d.y_m * 1e9,
+                d.z_m * 1e9,
+                d.phi_x_rad * 1e9,
+                d.phi_y_rad * 1e9,
+                d.phi_z_rad * 1e9
+            );
+        }
+        let _ = writeln!(s);
+        let _ = writeln!(
+            s,
+            "{:>2} {:>11} {:>11} {:>10} {:>10} {:>13} {:>6}",
+            "#", "F_n0 [N]", "F_n [N]", "|F_t| [N]", "|F_t|/F_n", "|F_t|/mu_sF_n", "state"
+        );
+        for (i, (c, c0)) in self.contacts.iter().zip(&self.seated_contacts).enumerate() {
+            let use_ratio = if c.mu_static > 0.0 && c.normal_force_n > 0.0 {
+                format!(
+                    "{:.4}",
+                    c.tangential_force_n / (c.mu_static * c.normal_force_n)
+                )
+            } else {
+                "-".to_string()
+            };
+            let _ = writeln!(
+                s,
+                "{:>2} {:>11.6} {:>11.6} {:>10.6} {:>10.6} {:>13} {:>6}",
+                i + 1,
+                c0.normal_force_n,
+                c.normal_force_n,
+                c.tangential_force_n,
+                if c.normal_force_n > 0.0 {
+                    c.tangential_force_n / c.normal_force_n
+                } else {
+                    0.0
+                },
+                use_ratio,
+                match c.state {
+                    crate::contact::SlipState::Stick => "stick",
+                    crate::contact::SlipState::Slip => "slip",
+                }
+            );
+        }
+        let _ = writeln!(s);
+        match (&self.envelope.event, self.envelope.factor) {
+            (Some(e), Some(f)) => {
+                let _ = writeln!(
+                    s,
+                    "safe load envelope: contact {} {} at load factor {:.5} (bracket [{:.6}, {:.6}]) = F ({:.5}, {:.5}, {:.5}) N, M ({:.5}, {:.5}, {:.5}) N m",
+                    e.contact,
+                    e.kind.name(),
+                    f,
+                    e.previous,
+                    e.factor,
+                    f * self.force_n[0],
+                    f * self.force_n[1],
+                    f * self.force_n[2],
+                    f * self.moment_n_m[0],
+                    f * self.moment_n_m[1],
+                    f * self.moment_n_m[2]
+                );
+                let _ = writeln!(
+                    s,
+                    "  {}",
+                    if f > 1.0 {
+                        format!("the given load is inside it (margin {f:.3}x)")
+                    } else {
+                        "WARNING: the given load is outside it: the coupling loses or changes its seat".to_string()
+                    }
+                );
+            }
+            _ => {
+                let _ = writeln!(
+                    s,
+                    "safe load envelope: no contact separates or slips up to load factor {:.4e}",
+                    self.envelope.searched_to
+                );
+            }
+        }
+        s
+    }
+}
