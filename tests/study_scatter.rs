@@ -223,12 +223,11 @@ fn src_of_a_synthetic_linear_response_equals_the_known_shares() {
         .collect();
     let s = src(&x, &y).unwrap();
     assert!((s.r_squared - 1.0).abs() < 1e-12);
-    for j in 0..4 {
-        let exact = a[j] * a[j] / total;
+    for (j, (share, a)) in s.share.iter().zip(a).enumerate() {
+        let exact = a * a / total;
         assert!(
-            (s.share[j] - exact).abs() < 0.02,
-            "input {j}: {} vs {exact}",
-            s.share[j]
+            (share - exact).abs() < 0.02,
+            "input {j}: {share} vs {exact}"
         );
     }
     // A non-linear response is flagged by a low R^2.

@@ -365,16 +365,16 @@ impl StudyReport {
             "kinrepro study: sampler {sampler}, seed {seed}, shard {}",
             self.shard
         );
-        let _ = writeln!(
-            s,
-            "Standard deviation (n-1) of the seated pose relative to the nominal-mu pose; below each row the bootstrap 90 % interval of sigma."
-        );
-        let _ = writeln!(s);
         if self
             .variants
             .iter()
             .any(|v| v.partial || !v.points.is_empty())
         {
+            let _ = writeln!(
+                s,
+                "Standard deviation (n-1) of the seated pose relative to the nominal-mu pose; below each row the bootstrap 90 % interval of sigma."
+            );
+            let _ = writeln!(s);
             sigma_table(&mut s, &self.variants, |v| &v.points);
         }
         if self
@@ -382,7 +382,9 @@ impl StudyReport {
             .iter()
             .any(|v| !v.interchangeability.is_empty())
         {
-            let _ = writeln!(s);
+            if self.variants.iter().any(|v| !v.points.is_empty()) {
+                let _ = writeln!(s);
+            }
             let _ = writeln!(
                 s,
                 "Interchangeability (manufacturing tolerances): standard deviation (n-1) of the seated pose of each perturbed coupling at nominal friction and preload, relative to the nominal geometry's seating."
