@@ -150,8 +150,11 @@ enum Command {
         /// Seating solver.
         #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
         solver: SolverKind,
-        /// What varies from sample to sample: friction, start (a random start
-        /// pose above the seat; needs --solver dynamic), or both (friction,start).
+        /// What varies from sample to sample, comma-separated: friction,
+        /// preload (point offset and direction tilt, bounds from the scene's
+        /// [variation] table), tolerances (manufacturing errors from
+        /// [variation], reported separately as interchangeability), start (a
+        /// random start pose above the seat; needs --solver dynamic).
         #[arg(long, value_delimiter = ',', default_value = "friction")]
         vary: Vec<VaryKind>,
         /// Start variation: half-widths of the x and y offset and the largest
@@ -161,6 +164,10 @@ enum Command {
         /// Start variation: half-widths of the tilt about x, y, z [rad].
         #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
         tilt_bounds: Option<Vec<f64>>,
+        /// Also print (and add to the JSON) the share of each DOF's variance
+        /// due to each input (standardized regression coefficients, R^2).
+        #[arg(long)]
+        sensitivity: bool,
     },
     /// Merge the JSON outputs of sharded studies into the result of one run.
     Merge {
@@ -256,6 +263,10 @@ enum VaryKind {
     Friction,
     /// The start pose of the moving half (dynamic solver).
     Start,
+    /// The preload point and direction (scene [variation] bounds).
+    Preload,
+    /// Manufacturing tolerances (scene [variation] bounds): interchangeability.
+    Tolerances,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -536,6 +547,7 @@ fn run(cli: Cli) -> Result<(), String> {
             vary,
             offset_bounds,
             tilt_bounds,
+            sensitivity,
         } => {
             if let Some(j) = jobs {
                 rayon::ThreadPoolBuilder::new()
@@ -557,8 +569,11 @@ fn run(cli: Cli) -> Result<(), String> {
                     }
                     SolverKind::Dynamic => kinrepro::solve::Method::Dynamic(Default::default()),
                 },
+                sensitivity,
                 variation: Variation {
                     friction: vary.contains(&VaryKind::Friction),
+                    preload: vary.contains(&VaryKind::Preload),
+                    tolerances: vary.contains(&VaryKind::Tolerances),
                     start: if vary.contains(&VaryKind::Start) {
                         let bounds = |name: &str, v: Option<Vec<f64>>| -> Result<_, String> {
                             let v = vector3(name, v)?;
@@ -587,6 +602,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 .collect::<Result<Vec<_>, _>>()?;
             let mut total = 0;
             for c in &couplings {
+                kinrepro::study::runner::check_options(c, &opts).map_err(|e| e.to_string())?;
                 let d = design_for(c, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?;
                 total += opts
                     .shard

@@ -201,6 +201,7 @@ fn dynamic_studies_with_random_start_poses() {
     let variation = Variation {
         friction: false,
         start: Some(bounds),
+        ..Default::default()
     };
     // Every drawn start lies above the seat: clear of all surfaces, within the bounds.
     for row in kinrepro::study::design(Sampler::Lhs, 6, 12, 3).unwrap() {
@@ -251,6 +252,7 @@ fn dynamic_studies_with_random_start_poses() {
         variation: Variation {
             friction: false,
             start: None,
+            ..Default::default()
         },
         ..Default::default()
     };

@@ -7,11 +7,15 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use crate::assembly::Coupling;
+use crate::scene::VariationBounds;
 use crate::study::plot::{
     ConvergenceSeries, Dof, VariantScatter, VariantSigma, plot_convergence, plot_sigma_bars,
     plot_xy_scatter,
 };
-use crate::study::runner::{COMPONENTS, StartBounds, StudyOptions, VariantRun, Variation};
+use crate::study::runner::{
+    COMPONENTS, INTERCHANGE_PREFIX, StartBounds, StudyOptions, VariantRun, Variation,
+};
+use crate::study::sensitivity::{self, SensitivityBlock};
 use crate::study::stats::{
     BootstrapConfig, SampleRecord, ShardFile, Summary, merge, sigma_convergence, summarize_outputs,
     verify_inputs,
@@ -88,10 +92,23 @@ pub struct VariantReport {
     /// height) [m] and tilt half-widths [rad].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub start_bounds: Option<[[f64; 3]; 2]>,
+    /// The scene's `[variation]` bounds when preload or tolerances varied.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub variation_bounds: Option<VariationBounds>,
     /// True for one shard of several: statistics wait for `kinrepro merge`.
     pub partial: bool,
-    /// Statistics per evaluation point, the centre of the moving half first.
+    /// Re-seating scatter of one pair of halves: statistics per evaluation
+    /// point, the centre of the moving half first (empty when only
+    /// tolerances vary).
     pub points: Vec<PointStats>,
+    /// Interchangeability (tolerances varied): statistics of the seated pose
+    /// of each perturbed coupling at nominal friction and preload, relative
+    /// to the nominal geometry's seating, per evaluation point.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub interchangeability: Vec<PointStats>,
+    /// `--sensitivity`: SRC tables of the first evaluation point's DOFs.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sensitivity: Option<Vec<SensitivityBlock>>,
     pub design: DesignSpec,
     pub shard: Shard,
     pub output_names: Vec<String>,
@@ -118,6 +135,83 @@ fn point_names(output_names: &[String]) -> Vec<String> {
                 .map_or(c[0].clone(), |(p, _)| p.to_string())
         })
         .collect()
+}
+
+/// Statistics of the re-seating and of the interchangeability outputs.
+fn split_stats(
+    output_names: &[String],
+    records: &[SampleRecord],
+) -> Result<(Vec<PointStats>, Vec<PointStats>), StudyError> {
+    let k = output_names
+        .iter()
+        .position(|n| n.starts_with(INTERCHANGE_PREFIX))
+        .unwrap_or(output_names.len());
+    let part =
+        |range: std::ops::Range<usize>, strip: bool| -> Result<Vec<PointStats>, StudyError> {
+            if range.is_empty() {
+                return Ok(Vec::new());
+            }
+            let names: Vec<String> = output_names[range.clone()]
+                .iter()
+                .map(|n| {
+                    if strip {
+                        n.trim_start_matches(INTERCHANGE_PREFIX).to_string()
+                    } else {
+                        n.clone()
+                    }
+                })
+                .collect();
+            let recs: Vec<SampleRecord> = records
+                .iter()
+                .map(|r| SampleRecord {
+                    index: r.index,
+                    inputs: Vec::new(),
+                    outputs: r.outputs[range.clone()].to_vec(),
+                })
+                .collect();
+            point_stats(&names, &recs)
+        };
+    Ok((part(0..k, false)?, part(k..output_names.len(), true)?))
+}
+
+/// True for the names of tolerance inputs.
+fn is_tolerance_input(name: &str) -> bool {
+    ["ball_", "surface_", "groove_"]
+        .iter()
+        .any(|p| name.starts_with(p))
+}
+
+/// SRC tables of the first evaluation point: re-seating outputs on the
+/// friction, preload and start inputs; interchangeability outputs on the
+/// tolerance inputs.
+pub fn sensitivity_blocks(v: &VariantReport) -> Vec<SensitivityBlock> {
+    let samples: Vec<(&[f64], &[f64])> = v
+        .records
+        .iter()
+        .map(|r| (r.inputs.as_slice(), r.outputs.as_slice()))
+        .collect();
+    let mut blocks = Vec::new();
+    for (kind, tolerance) in [("reseating", false), ("interchangeability", true)] {
+        let inputs: Vec<(usize, String)> = v
+            .inputs
+            .iter()
+            .enumerate()
+            .filter(|(_, n)| is_tolerance_input(n) == tolerance)
+            .map(|(j, n)| (j, n.clone()))
+            .collect();
+        let first = v
+            .output_names
+            .iter()
+            .position(|n| n.starts_with(INTERCHANGE_PREFIX) == tolerance);
+        let (Some(first), false) = (first, inputs.is_empty()) else {
+            continue;
+        };
+        let outputs: Vec<(usize, String)> = (first..first + COMPONENTS.len())
+            .map(|k| (k, v.output_names[k].clone()))
+            .collect();
+        blocks.push(sensitivity::block(kind, &inputs, &outputs, &samples));
+    }
+    blocks
 }
 
 fn point_stats(
@@ -170,27 +264,41 @@ impl VariantReport {
             spread: f.spread,
             dynamic_ratio: f.dynamic_ratio,
             solver: opts.method.name().to_string(),
-            inputs: var.input_names(coupling.contacts.len()),
+            inputs: var.input_names(coupling),
             start_bounds: var.start.map(|b| [b.offset.into(), b.tilt.into()]),
+            variation_bounds: (var.preload || var.tolerances).then_some(coupling.scene.variation),
             partial: run.shard.count > 1,
             points: Vec::new(),
+            interchangeability: Vec::new(),
+            sensitivity: opts.sensitivity.then(Vec::new),
             design: run.design,
             shard: run.shard,
             output_names: run.output_names,
             records: run.records,
         };
         if !v.partial {
-            v.points = point_stats(&v.output_names, &v.records)?;
+            v.finish()?;
         }
         Ok(v)
     }
 }
 
 impl VariantReport {
+    /// Statistics (and sensitivity, if asked for) from the records.
+    fn finish(&mut self) -> Result<(), StudyError> {
+        (self.points, self.interchangeability) = split_stats(&self.output_names, &self.records)?;
+        if self.sensitivity.is_some() {
+            self.sensitivity = Some(sensitivity_blocks(self));
+        }
+        Ok(())
+    }
+
     /// The variation this study used (to map design rows to inputs).
     pub fn variation(&self) -> Variation {
         Variation {
-            friction: self.inputs.first().is_some_and(|n| n.starts_with("mu_")),
+            friction: self.inputs.iter().any(|n| n.starts_with("mu_")),
+            preload: self.inputs.iter().any(|n| n.starts_with("preload_")),
+            tolerances: self.inputs.iter().any(|n| is_tolerance_input(n)),
             start: self.start_bounds.map(|[o, t]| StartBounds {
                 offset: o.into(),
                 tilt: t.into(),
@@ -238,7 +346,7 @@ impl StudyReport {
             v.partial = false;
             v.shard = Shard::whole();
             v.records = merged.records;
-            v.points = point_stats(&v.output_names, &v.records)?;
+            v.finish()?;
             variants.push(v);
         }
         Ok(StudyReport::new(variants, Shard::whole()))
@@ -257,61 +365,32 @@ impl StudyReport {
             "kinrepro study: sampler {sampler}, seed {seed}, shard {}",
             self.shard
         );
-        let _ = writeln!(
-            s,
-            "Standard deviation (n-1) of the seated pose relative to the nominal-mu pose; below each row the bootstrap 90 % interval of sigma."
-        );
-        let _ = writeln!(s);
-        let _ = writeln!(
-            s,
-            "{:<4}{:<46}{:<16}{:>5} {:>13} {:>13} {:>13} {:>17} {:>17}",
-            "#",
-            "variant",
-            "point",
-            "n",
-            "sigma_x [nm]",
-            "sigma_y [nm]",
-            "sigma_z [nm]",
-            "sigma_phi_x[nrad]",
-            "sigma_phi_y[nrad]"
-        );
-        for (i, v) in self.variants.iter().enumerate() {
-            if v.partial {
-                let _ = writeln!(
-                    s,
-                    "{:<4}{:<46}(shard {} of {} samples: run `kinrepro merge` for statistics)",
-                    i + 1,
-                    v.name,
-                    v.shard,
-                    v.samples
-                );
-                continue;
+        if self
+            .variants
+            .iter()
+            .any(|v| v.partial || !v.points.is_empty())
+        {
+            let _ = writeln!(
+                s,
+                "Standard deviation (n-1) of the seated pose relative to the nominal-mu pose; below each row the bootstrap 90 % interval of sigma."
+            );
+            let _ = writeln!(s);
+            sigma_table(&mut s, &self.variants, |v| &v.points);
+        }
+        if self
+            .variants
+            .iter()
+            .any(|v| !v.interchangeability.is_empty())
+        {
+            if self.variants.iter().any(|v| !v.points.is_empty()) {
+                let _ = writeln!(s);
             }
-            for p in &v.points {
-                let sg = p.sigma.values();
-                let lo = p.sigma_ci90_low.values();
-                let hi = p.sigma_ci90_high.values();
-                let _ = writeln!(
-                    s,
-                    "{:<4}{:<46}{:<16}{:>5} {:>13.3} {:>13.3} {:>13.3} {:>17.2} {:>17.2}",
-                    i + 1,
-                    truncate(&v.name, 45),
-                    p.name,
-                    p.n,
-                    sg[0],
-                    sg[1],
-                    sg[2],
-                    sg[3],
-                    sg[4]
-                );
-                let ci: Vec<String> = (0..5)
-                    .map(|k| {
-                        let w = if k < 3 { 13 } else { 17 };
-                        format!("{:>w$}", format!("[{:.2}, {:.2}]", lo[k], hi[k]))
-                    })
-                    .collect();
-                let _ = writeln!(s, "{:<71}{}", "", ci.join(" "));
-            }
+            let _ = writeln!(
+                s,
+                "Interchangeability (manufacturing tolerances): standard deviation (n-1) of the seated pose of each perturbed coupling at nominal friction and preload, relative to the nominal geometry's seating."
+            );
+            let _ = writeln!(s);
+            sigma_table(&mut s, &self.variants, |v| &v.interchangeability);
         }
         for v in self.variants.iter().filter(|v| !v.partial) {
             let _ = writeln!(s);
@@ -327,31 +406,24 @@ impl StudyReport {
                 v.spread,
                 v.dynamic_ratio
             );
-            for p in &v.points {
+            let _ = writeln!(s, "  varied: {}", varied(v));
+            if let Some(b) = &v.variation_bounds {
+                let _ = writeln!(s, "  [variation] bounds: {}", bounds_text(b));
+            }
+            if !v.points.is_empty() {
+                let _ = writeln!(s, "  re-seating scatter (one pair of halves):");
+                detail(&mut s, &v.points);
+            }
+            if !v.interchangeability.is_empty() {
                 let _ = writeln!(
                     s,
-                    "  {:<16} {:<10} {:>12} {:>12} {:>12} {:>12} {:>12}",
-                    p.name, "", "mean", "min", "max", "sigma", "+-3 sigma"
+                    "  interchangeability (tolerances; nominal friction and preload):"
                 );
-                let rows = [
-                    ("x [nm]", 0),
-                    ("y [nm]", 1),
-                    ("z [nm]", 2),
-                    ("phi_x [nrad]", 3),
-                    ("phi_y [nrad]", 4),
-                ];
-                for (label, k) in rows {
-                    let _ = writeln!(
-                        s,
-                        "  {:<16} {:<10} {:>12.3} {:>12.3} {:>12.3} {:>12.3} {:>12.3}",
-                        "",
-                        label,
-                        p.mean.values()[k],
-                        p.min.values()[k],
-                        p.max.values()[k],
-                        p.sigma.values()[k],
-                        p.three_sigma.values()[k]
-                    );
+                detail(&mut s, &v.interchangeability);
+            }
+            if let Some(blocks) = &v.sensitivity {
+                for b in blocks {
+                    sensitivity_table(&mut s, b);
                 }
             }
         }
@@ -364,7 +436,13 @@ impl StudyReport {
             "scene,name,point,dof,unit,n,mean,min,max,sigma,three_sigma,sigma_ci90_low,sigma_ci90_high\n",
         );
         for v in self.variants.iter().filter(|v| !v.partial) {
-            for p in &v.points {
+            let interchange = v.interchangeability.iter().map(|p| {
+                let mut p = p.clone();
+                p.name = format!("{INTERCHANGE_PREFIX}{}", p.name);
+                p
+            });
+            for p in v.points.iter().cloned().chain(interchange) {
+                let p = &p;
                 for (k, comp) in COMPONENTS.iter().enumerate() {
                     let (dof, unit) = comp.rsplit_once('_').unwrap_or((comp, ""));
                     let si = |d: &Dofs| d.values()[k] * 1e-9;
@@ -414,15 +492,7 @@ impl StudyReport {
             t.push('\n');
             for r in &v.records {
                 let _ = write!(t, "{}", r.index);
-                let (mu, start) = v.variation().map(c, &r.inputs);
-                let mut values: Vec<f64> = Vec::new();
-                if v.inputs.first().is_some_and(|n| n.starts_with("mu_")) {
-                    values.extend(mu);
-                }
-                if v.start_bounds.is_some() {
-                    values.extend(start.offset.iter().chain(start.tilt.iter()));
-                }
-                for m in values {
+                for m in v.variation().sample(c, &r.inputs).physical {
                     let _ = write!(t, ",{m:e}");
                 }
                 for o in &r.outputs {
@@ -432,7 +502,11 @@ impl StudyReport {
             }
             write(format!("samples_{:02}_{stem}.csv", i + 1), t)?;
         }
-        let full: Vec<&VariantReport> = self.variants.iter().filter(|v| !v.partial).collect();
+        let full: Vec<&VariantReport> = self
+            .variants
+            .iter()
+            .filter(|v| !v.partial && !v.points.is_empty())
+            .collect();
         if full.is_empty() {
             return Ok(written);
         }
@@ -495,6 +569,222 @@ impl StudyReport {
             written.push(dir.join(name).display().to_string());
         }
         Ok(written)
+    }
+}
+
+/// The Table 2 style sigma table of `points(v)` for every variant.
+fn sigma_table(
+    s: &mut String,
+    variants: &[VariantReport],
+    points: impl Fn(&VariantReport) -> &Vec<PointStats>,
+) {
+    let _ = writeln!(
+        s,
+        "{:<4}{:<46}{:<16}{:>5} {:>13} {:>13} {:>13} {:>17} {:>17}",
+        "#",
+        "variant",
+        "point",
+        "n",
+        "sigma_x [nm]",
+        "sigma_y [nm]",
+        "sigma_z [nm]",
+        "sigma_phi_x[nrad]",
+        "sigma_phi_y[nrad]"
+    );
+    for (i, v) in variants.iter().enumerate() {
+        if v.partial {
+            let _ = writeln!(
+                s,
+                "{:<4}{:<46}(shard {} of {} samples: run `kinrepro merge` for statistics)",
+                i + 1,
+                v.name,
+                v.shard,
+                v.samples
+            );
+            continue;
+        }
+        for p in points(v) {
+            let sg = p.sigma.values();
+            let lo = p.sigma_ci90_low.values();
+            let hi = p.sigma_ci90_high.values();
+            let _ = writeln!(
+                s,
+                "{:<4}{:<46}{:<16}{:>5} {:>13.3} {:>13.3} {:>13.3} {:>17.2} {:>17.2}",
+                i + 1,
+                truncate(&v.name, 45),
+                p.name,
+                p.n,
+                sg[0],
+                sg[1],
+                sg[2],
+                sg[3],
+                sg[4]
+            );
+            let ci: Vec<String> = (0..5)
+                .map(|k| {
+                    let w = if k < 3 { 13 } else { 17 };
+                    format!("{:>w$}", format!("[{:.2}, {:.2}]", lo[k], hi[k]))
+                })
+                .collect();
+            let _ = writeln!(s, "{:<71}{}", "", ci.join(" "));
+        }
+    }
+}
+
+/// Mean, min, max, sigma and 3 sigma of every DOF of each point.
+fn detail(s: &mut String, points: &[PointStats]) {
+    for p in points {
+        let _ = writeln!(
+            s,
+            "  {:<16} {:<10} {:>12} {:>12} {:>12} {:>12} {:>12}",
+            p.name, "", "mean", "min", "max", "sigma", "+-3 sigma"
+        );
+        let rows = [
+            ("x [nm]", 0),
+            ("y [nm]", 1),
+            ("z [nm]", 2),
+            ("phi_x [nrad]", 3),
+            ("phi_y [nrad]", 4),
+        ];
+        for (label, k) in rows {
+            let _ = writeln!(
+                s,
+                "  {:<16} {:<10} {:>12.3} {:>12.3} {:>12.3} {:>12.3} {:>12.3}",
+                "",
+                label,
+                p.mean.values()[k],
+                p.min.values()[k],
+                p.max.values()[k],
+                p.sigma.values()[k],
+                p.three_sigma.values()[k]
+            );
+        }
+    }
+}
+
+/// What varied, in words.
+fn varied(v: &VariantReport) -> String {
+    let var = v.variation();
+    let mut parts = Vec::new();
+    if var.friction {
+        parts.push("friction");
+    }
+    if var.preload {
+        parts.push("preload");
+    }
+    if var.start.is_some() {
+        parts.push("start pose");
+    }
+    if var.tolerances {
+        parts.push("tolerances");
+    }
+    format!("{} ({} inputs)", parts.join(", "), v.inputs.len())
+}
+
+/// The non-zero `[variation]` bounds, in um and mrad.
+fn bounds_text(b: &VariationBounds) -> String {
+    let um = |x: f64| format!("{}", x * 1e6);
+    let mut parts = Vec::new();
+    if b.preload_offset_m.iter().any(|x| *x > 0.0) {
+        parts.push(format!(
+            "preload offset +-{}, +-{} um",
+            um(b.preload_offset_m[0]),
+            um(b.preload_offset_m[1])
+        ));
+    }
+    if b.preload_tilt_rad > 0.0 {
+        parts.push(format!(
+            "preload tilt +-{} mrad per axis",
+            b.preload_tilt_rad * 1e3
+        ));
+    }
+    if b.ball_diameter_m > 0.0 {
+        parts.push(format!("ball diameter +-{} um", um(b.ball_diameter_m)));
+    }
+    if b.ball_position_m.iter().any(|x| *x > 0.0) {
+        let p = b.ball_position_m;
+        parts.push(format!(
+            "ball position +-{}, +-{}, +-{} um",
+            um(p[0]),
+            um(p[1]),
+            um(p[2])
+        ));
+    }
+    if b.surface_normal_m > 0.0 {
+        parts.push(format!("surface normal +-{} um", um(b.surface_normal_m)));
+    }
+    if b.surface_tilt_rad > 0.0 {
+        parts.push(format!("surface tilt +-{} mrad", b.surface_tilt_rad * 1e3));
+    }
+    if b.groove_position_m.iter().any(|x| *x > 0.0) {
+        parts.push(format!(
+            "groove position +-{}, +-{} um",
+            um(b.groove_position_m[0]),
+            um(b.groove_position_m[1])
+        ));
+    }
+    if parts.is_empty() {
+        "none".to_string()
+    } else {
+        parts.join("; ")
+    }
+}
+
+/// One SRC table: inputs down, DOFs across.
+fn sensitivity_table(s: &mut String, b: &SensitivityBlock) {
+    let point = b
+        .dofs
+        .first()
+        .and_then(|d| {
+            d.output
+                .trim_start_matches(INTERCHANGE_PREFIX)
+                .rsplit_once('/')
+        })
+        .map_or(String::new(), |(p, _)| p.to_string());
+    let _ = writeln!(
+        s,
+        "  sensitivity of the {} scatter at {point}: share of each DOF's variance per input (normalised SRC^2: R^2 SRC_j^2 / sum SRC^2; R^2 of the linear fit)",
+        b.kind
+    );
+    let _ = writeln!(
+        s,
+        "  {:<22} {:>9} {:>9} {:>9} {:>9} {:>9}",
+        "input", "x", "y", "z", "phi_x", "phi_y"
+    );
+    let cell = |d: &sensitivity::DofSensitivity, j: usize| {
+        d.share
+            .get(j)
+            .map_or(format!("{:>9}", "-"), |v| format!("{v:>9.3}"))
+    };
+    for (j, name) in b.inputs.iter().enumerate() {
+        let cells: Vec<String> = b.dofs.iter().map(|d| cell(d, j)).collect();
+        let _ = writeln!(s, "  {:<22} {}", name, cells.join(" "));
+    }
+    let sums: Vec<String> = b
+        .dofs
+        .iter()
+        .map(|d| {
+            if d.share.is_empty() {
+                format!("{:>9}", "-")
+            } else {
+                format!("{:>9.3}", d.share.iter().sum::<f64>())
+            }
+        })
+        .collect();
+    let _ = writeln!(s, "  {:<22} {}", "sum of shares", sums.join(" "));
+    let r2: Vec<String> = b
+        .dofs
+        .iter()
+        .map(|d| {
+            d.r_squared
+                .map_or(format!("{:>9}", "-"), |r| format!("{r:>9.3}"))
+        })
+        .collect();
+    let _ = writeln!(s, "  {:<22} {}", "R^2", r2.join(" "));
+    for d in &b.dofs {
+        if let Some(n) = &d.note {
+            let _ = writeln!(s, "  note, {}: {n}", d.output);
+        }
     }
 }
 

@@ -193,6 +193,7 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
         study: raw.study.clone(),
         evaluation_points,
         dynamics: raw.dynamics.clone(),
+        variation: raw.variation.clone(),
     })
 }
 

@@ -43,6 +43,10 @@ pub struct SceneFile {
     /// default: three balls plus a plate, see `solve::dynamic::mass`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub dynamics: Option<DynamicsFile>,
+    /// Bounds of the further sources of scatter a study may vary
+    /// (`--vary preload`, `--vary tolerances`); every bound defaults to 0.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub variation: Option<VariationFile>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -247,4 +251,37 @@ pub struct DynamicsFile {
     /// Centre of mass in the moving half [m] (default: the origin).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub centre_of_mass: Option<Spanned<[f64; 3]>>,
+}
+
+/// `[variation]`: half-widths of the uniform distributions a study draws
+/// when it varies the preload (re-seating scatter, every cycle) or the
+/// manufacturing tolerances (interchangeability of coupling halves). All
+/// optional, default 0 (not varied), never negative.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VariationFile {
+    /// Offset of the preload point from its nominal position, x and y [m].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub preload_offset: Option<Spanned<[f64; 2]>>,
+    /// Tilt of the preload direction: each of the two tilt components
+    /// (rotation about x and about y) uniform in +-this [rad].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub preload_tilt: Option<Spanned<f64>>,
+    /// Diameter error of each moving ball [m].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ball_diameter: Option<Spanned<f64>>,
+    /// Position error of each moving ball's centre in the moving half, x, y, z [m].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ball_position: Option<Spanned<[f64; 3]>>,
+    /// Position error of each fixed surface along its nominal contact normal [m].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub surface_normal: Option<Spanned<f64>>,
+    /// Angle error of each fixed surface: rotation about the horizontal axis
+    /// through its nominal contact point, perpendicular to the contact normal [rad].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub surface_tilt: Option<Spanned<f64>>,
+    /// Position error of each groove (all surfaces serving one ball, moved
+    /// together), x and y [m].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub groove_position: Option<Spanned<[f64; 2]>>,
 }

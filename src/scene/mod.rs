@@ -14,6 +14,7 @@ pub mod resolve;
 use std::path::Path;
 
 use nalgebra::Vector3;
+use serde::{Deserialize, Serialize};
 
 use crate::contact::TangentialLaw;
 use crate::material::Material;
@@ -122,6 +123,45 @@ pub struct Scene {
     pub evaluation_points: Vec<EvaluationPoint>,
     /// Mass properties for the dynamic solver; `None`: the default model.
     pub dynamics: Option<DynamicsSettings>,
+    /// Bounds of the preload and tolerance variation (`[variation]`; 0: not varied).
+    pub variation: VariationBounds,
+}
+
+/// Half-widths of the uniform distributions of `[variation]` (SI units;
+/// 0 = not varied). See docs/scenes.md for exactly what each one moves.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct VariationBounds {
+    /// Preload point offset, x and y [m].
+    pub preload_offset_m: [f64; 2],
+    /// Each tilt component of the preload direction (about x, about y) [rad].
+    pub preload_tilt_rad: f64,
+    /// Diameter error of each moving ball [m].
+    pub ball_diameter_m: f64,
+    /// Centre position error of each moving ball, x, y, z [m].
+    pub ball_position_m: [f64; 3],
+    /// Shift of each fixed surface along its nominal contact normal [m].
+    pub surface_normal_m: f64,
+    /// Rotation of each fixed surface about the horizontal axis through its
+    /// nominal contact point perpendicular to the contact normal [rad].
+    pub surface_tilt_rad: f64,
+    /// Shift of each groove (the surfaces of one ball together), x and y [m].
+    pub groove_position_m: [f64; 2],
+}
+
+impl VariationBounds {
+    /// True if any preload bound is non-zero.
+    pub fn preload_varies(&self) -> bool {
+        self.preload_offset_m.iter().any(|b| *b > 0.0) || self.preload_tilt_rad > 0.0
+    }
+
+    /// True if any tolerance bound is non-zero.
+    pub fn tolerances_vary(&self) -> bool {
+        self.ball_diameter_m > 0.0
+            || self.ball_position_m.iter().any(|b| *b > 0.0)
+            || self.surface_normal_m > 0.0
+            || self.surface_tilt_rad > 0.0
+            || self.groove_position_m.iter().any(|b| *b > 0.0)
+    }
 }
 
 impl Scene {

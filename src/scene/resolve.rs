@@ -5,10 +5,10 @@ use nalgebra::Vector3;
 use toml::Spanned;
 
 use super::error::{ErrorContext, SceneError};
-use super::file::{SceneFile, SurfaceFile, SurfaceKind};
+use super::file::{SceneFile, SurfaceFile, SurfaceKind, VariationFile};
 use super::{
     Ball, DynamicsSettings, EvaluationPoint, FrictionSettings, Preload, Scene, StudySettings,
-    Surface, SurfaceGeometry,
+    Surface, SurfaceGeometry, VariationBounds,
 };
 use crate::material::{Material, MaterialError};
 use crate::study::Sampler;
@@ -249,6 +249,11 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         }
     };
 
+    let variation = match &f.variation {
+        None => VariationBounds::default(),
+        Some(v) => variation_bounds(v, ctx)?,
+    };
+
     Ok(Scene {
         file: ctx.file.to_string(),
         name: f.name.clone().unwrap_or_else(|| ctx.file.to_string()),
@@ -268,6 +273,46 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         },
         evaluation_points,
         dynamics,
+        variation,
+    })
+}
+
+/// `[variation]`: every bound finite and >= 0.
+fn variation_bounds(v: &VariationFile, ctx: &ErrorContext) -> Result<VariationBounds, SceneError> {
+    fn check<const N: usize>(
+        ctx: &ErrorContext,
+        v: &Option<Spanned<[f64; N]>>,
+        key: &str,
+        unit: &str,
+    ) -> Result<[f64; N], SceneError> {
+        let Some(s) = v else {
+            return Ok([0.0; N]);
+        };
+        let a = *s.get_ref();
+        if let Some(x) = a.iter().find(|x| !(x.is_finite() && **x >= 0.0)) {
+            return Err(ctx.error(
+                Some(&s.span()),
+                format!("variation.{key}"),
+                format!(
+                    "{x}: a tolerance or variation bound is a half-width and must be finite \
+                     and >= 0 ({unit})"
+                ),
+            ));
+        }
+        Ok(a)
+    }
+    let scalar = |v: &Option<Spanned<f64>>, key: &str, unit: &str| -> Result<f64, SceneError> {
+        let arr = v.as_ref().map(|s| Spanned::new(s.span(), [*s.get_ref()]));
+        Ok(check(ctx, &arr, key, unit)?[0])
+    };
+    Ok(VariationBounds {
+        preload_offset_m: check(ctx, &v.preload_offset, "preload_offset", "m")?,
+        preload_tilt_rad: scalar(&v.preload_tilt, "preload_tilt", "rad")?,
+        ball_diameter_m: scalar(&v.ball_diameter, "ball_diameter", "m")?,
+        ball_position_m: check(ctx, &v.ball_position, "ball_position", "m")?,
+        surface_normal_m: scalar(&v.surface_normal, "surface_normal", "m")?,
+        surface_tilt_rad: scalar(&v.surface_tilt, "surface_tilt", "rad")?,
+        groove_position_m: check(ctx, &v.groove_position, "groove_position", "m")?,
     })
 }
 

@@ -39,6 +39,7 @@ pub mod plot;
 mod rng;
 pub mod runner;
 pub mod sampling;
+pub mod sensitivity;
 pub mod stats;
 
 pub use error::{Result, StudyError};
