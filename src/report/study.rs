@@ -372,7 +372,7 @@ impl StudyReport {
         {
             let _ = writeln!(
                 s,
-                "Standard deviation (n-1) of the seated pose relative to the nominal-mu pose; below each row the bootstrap 90 % interval of sigma."
+                "Standard deviation (n-1) of the seated pose relative to the nominal seating (nominal friction and preload, touching start); below each row the bootstrap 90 % interval of sigma."
             );
             let _ = writeln!(s);
             sigma_table(&mut s, &self.variants, |v| &v.points);
