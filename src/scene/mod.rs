@@ -6,6 +6,7 @@
 //! the fixed to the moving half, balls 1, 2, 3 at azimuths 90, 210 and 330
 //! degrees; contacts are numbered ball by ball, which is the order of `--mu`.
 
+pub mod bundled;
 pub mod error;
 pub mod expand;
 pub mod file;

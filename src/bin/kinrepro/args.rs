@@ -1,0 +1,257 @@
+//! Command-line arguments (clap derive): one struct per verb.
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use kinrepro::contact::ContactShape;
+use kinrepro::study::{Sampler, Shard};
+
+#[derive(Parser)]
+#[command(
+    name = "kinrepro",
+    version,
+    about = "Re-seating reproducibility of kinematic couplings"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand)]
+pub enum Command {
+    /// Evaluate one contact pair (Hertz normal law and Mindlin stiffness) at a load.
+    Contact(ContactArgs),
+    /// Load and validate scenes; print contacts, constraint status and friction limit.
+    Check(CheckArgs),
+    /// Seat the coupling once and print pose and contact states.
+    Run(RunArgs),
+    /// Stiffness of the seated coupling: 6x6 matrix, compliance and principal
+    /// stiffnesses at a point (contacts at rest: static friction sticks).
+    Stiffness(StiffnessArgs),
+    /// Apply a force (and moment) after seating, preload held: deflection,
+    /// contact forces and the safe load envelope (first separation or slip).
+    Load(LoadArgs),
+    /// Reproducibility study: seat each scene once per friction sample and
+    /// report the scatter of the pose (Table 2 of the paper).
+    Study(StudyArgs),
+    /// Merge the JSON outputs of sharded studies into the result of one run.
+    Merge(MergeArgs),
+    /// Check the Hertz law of every distinct contact pair of the scenes with
+    /// the mini FE solver, at the load the nominal seating reaches.
+    ValidateHertz(ValidateHertzArgs),
+    /// Print the explicit form of a scene (loads back to the same coupling).
+    Expand(ExpandArgs),
+}
+
+#[derive(Args)]
+pub struct ContactArgs {
+    /// sphere-plane | sphere-sphere | sphere-seat | sphere-cylinder
+    #[arg(long)]
+    pub shape: ContactShape,
+    /// Radius of the moving ball [m].
+    #[arg(long, allow_hyphen_values = true)]
+    pub radius1: f64,
+    /// Radius of the fixed sphere, seat or cylinder [m].
+    #[arg(long, allow_hyphen_values = true)]
+    pub radius2: Option<f64>,
+    /// Material of the ball (built-in name, e.g. steel).
+    #[arg(long)]
+    pub material1: String,
+    /// Material of the fixed element.
+    #[arg(long)]
+    pub material2: String,
+    /// Normal load [N].
+    #[arg(long, allow_hyphen_values = true)]
+    pub load: f64,
+    /// Print one JSON object instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args)]
+pub struct CheckArgs {
+    /// Scene files (TOML).
+    #[arg(required = true)]
+    pub scenes: Vec<PathBuf>,
+}
+
+#[derive(Args)]
+pub struct RunArgs {
+    /// Scene file (TOML).
+    pub scene: PathBuf,
+    /// Static friction coefficients, one per contact in contact order
+    /// (default: the scene's nominal mu_static everywhere).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub mu: Option<Vec<f64>>,
+    /// Nominal number of load increments (quasi-static solver).
+    #[arg(long, default_value_t = 20)]
+    pub increments: usize,
+    /// Seating solver.
+    #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
+    pub solver: SolverKind,
+    /// Dynamic solver: write the time history (CSV, SI units) to this file.
+    #[arg(long)]
+    pub trace: Option<PathBuf>,
+    /// Dynamic solver: start offset x,y,z of the moving half from the touching pose [m].
+    #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+    pub offset: Option<Vec<f64>>,
+    /// Dynamic solver: start tilt phi_x,phi_y,phi_z (rotation vector about the origin) [rad].
+    #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+    pub tilt: Option<Vec<f64>>,
+    /// Print one JSON object (SI units) instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args)]
+pub struct StiffnessArgs {
+    /// Scene file (TOML).
+    pub scene: PathBuf,
+    /// Point of the moving half x,y,z [m] (default: the scene's evaluation points).
+    #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+    pub at: Option<Vec<f64>>,
+    /// Static friction coefficients, one per contact (default: nominal).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub mu: Option<Vec<f64>>,
+    /// Print one JSON object (SI units) instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args)]
+pub struct LoadArgs {
+    /// Scene file (TOML).
+    pub scene: PathBuf,
+    /// Force fx,fy,fz [N] (fixed direction).
+    #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+    pub force: Vec<f64>,
+    /// Point of application x,y,z in the moving half [m].
+    #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+    pub at: Vec<f64>,
+    /// Moment mx,my,mz [N m] (default 0).
+    #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
+    pub moment: Option<Vec<f64>>,
+    /// Static friction coefficients, one per contact (default: nominal).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub mu: Option<Vec<f64>>,
+    /// Print one JSON object (SI units) instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args)]
+pub struct StudyArgs {
+    /// Scene files (TOML); the variants are reported side by side.
+    #[arg(required = true)]
+    pub scenes: Vec<PathBuf>,
+    /// Samples per scene (default: the scene's [study] samples; corners: 2^6).
+    #[arg(long)]
+    pub samples: Option<usize>,
+    /// lhs (space-filling Latin hypercube) | mc (Monte Carlo) | corners (all 2^6 extremes).
+    #[arg(long)]
+    pub sampler: Option<Sampler>,
+    /// Seed of the design (default: the scene's [study] seed).
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// Output: table (nm, nrad) | csv (SI) | json (statistics in nm/nrad, samples in SI).
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+    /// Also write per-sample CSV files and SVG plots into this directory.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Run only shard I of N of the samples (1-based, e.g. 3/16); merge the
+    /// JSON outputs with `kinrepro merge`.
+    #[arg(long)]
+    pub shard: Option<Shard>,
+    /// Nominal number of load increments per seating (quasi-static solver).
+    #[arg(long, default_value_t = 20)]
+    pub increments: usize,
+    /// Seating solver.
+    #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
+    pub solver: SolverKind,
+    /// What varies from sample to sample, comma-separated: friction,
+    /// preload (point offset and direction tilt, bounds from the scene's
+    /// [variation] table), tolerances (manufacturing errors from
+    /// [variation], reported separately as interchangeability), start (a
+    /// random start pose above the seat; needs --solver dynamic).
+    #[arg(long, value_delimiter = ',', default_value = "friction")]
+    pub vary: Vec<VaryKind>,
+    /// Start variation: half-widths of the x and y offset and the largest
+    /// height z above the seat [m].
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub offset_bounds: Option<Vec<f64>>,
+    /// Start variation: half-widths of the tilt about x, y, z [rad].
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub tilt_bounds: Option<Vec<f64>>,
+    /// Also print (and add to the JSON) the share of each DOF's variance
+    /// due to each input (standardized regression coefficients, R^2).
+    #[arg(long)]
+    pub sensitivity: bool,
+}
+
+#[derive(Args)]
+pub struct MergeArgs {
+    /// JSON files written by `kinrepro study --shard I/N --format json`.
+    #[arg(required = true)]
+    pub parts: Vec<PathBuf>,
+    #[arg(long, value_enum, default_value_t = Format::Json)]
+    pub format: Format,
+}
+
+#[derive(Args)]
+pub struct ValidateHertzArgs {
+    /// Scene files (default: the seven bundled paper variants).
+    pub scenes: Vec<PathBuf>,
+    /// Mesh: default (meets 2 % in approach) or coarse (seconds).
+    #[arg(long, value_enum, default_value_t = MeshKind::Default)]
+    pub mesh: MeshKind,
+    /// Also run a mesh convergence study at these element sizes (element
+    /// size / contact semi-axis, e.g. 0.45,0.3,0.23,0.18).
+    #[arg(long, value_delimiter = ',')]
+    pub convergence: Option<Vec<f64>>,
+    /// Print a JSON array (SI units) instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args)]
+pub struct ExpandArgs {
+    /// Scene file (TOML).
+    pub scene: PathBuf,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    Table,
+    Csv,
+    Json,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MeshKind {
+    Default,
+    Coarse,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum VaryKind {
+    /// The six static friction coefficients.
+    Friction,
+    /// The start pose of the moving half (dynamic solver).
+    Start,
+    /// The preload point and direction (scene [variation] bounds).
+    Preload,
+    /// Manufacturing tolerances (scene [variation] bounds): interchangeability.
+    Tolerances,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SolverKind {
+    /// Quasi-static path following (Newton per load increment).
+    QuasiStatic,
+    /// Seating dynamics with rapier3d-f64 and the compliant contact layer.
+    Dynamic,
+}

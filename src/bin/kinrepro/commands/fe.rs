@@ -1,0 +1,65 @@
+//! `kinrepro validate-hertz`: the FE check of the Hertz law.
+
+use crate::args::*;
+
+pub fn validate_hertz(args: ValidateHertzArgs) -> Result<(), String> {
+    let ValidateHertzArgs {
+        scenes,
+        mesh,
+        convergence,
+        json,
+    } = args;
+    let couplings = if scenes.is_empty() {
+        kinrepro::scene::bundled::PAPER_SCENES
+            .iter()
+            .map(|(file, text)| {
+                let s = kinrepro::scene::Scene::parse(text, file).map_err(|e| e.to_string())?;
+                kinrepro::assembly::Coupling::new(&s).map_err(|e| format!("{file}: {e}"))
+            })
+            .collect::<Result<Vec<_>, String>>()?
+    } else {
+        scenes
+            .iter()
+            .map(|p| kinrepro::error::load_coupling(p).map_err(|e| e.to_string()))
+            .collect::<Result<Vec<_>, String>>()?
+    };
+    let cases =
+        kinrepro::fe::pairs::distinct_pairs(&couplings).map_err(|(f, e)| format!("{f}: {e}"))?;
+    let mesh = match mesh {
+        MeshKind::Default => kinrepro::fe::MeshOptions::default(),
+        MeshKind::Coarse => kinrepro::fe::MeshOptions::coarse(),
+    };
+    let levels = convergence.unwrap_or_default();
+    if levels.iter().any(|l| !(l.is_finite() && *l > 0.0)) {
+        return Err("--convergence: element sizes must be positive numbers".into());
+    }
+    let mut rows = Vec::new();
+    for case in &cases {
+        eprintln!(
+            "validating {} {}/{} at {:.4} N ...",
+            case.pair.shape.name(),
+            case.pair.material1.name,
+            case.pair.material2.name,
+            case.load
+        );
+        rows.push(
+            kinrepro::fe::pairs::validate_pair(case, &mesh, &levels).map_err(|e| {
+                format!(
+                    "{} {}/{}: {e}",
+                    case.pair.shape.name(),
+                    case.pair.material1.name,
+                    case.pair.material2.name
+                )
+            })?,
+        );
+    }
+    if json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&rows).map_err(|e| e.to_string())?
+        );
+    } else {
+        print!("{}", kinrepro::report::validate_hertz::table(&rows));
+    }
+    Ok(())
+}

@@ -1,0 +1,86 @@
+//! `kinrepro run`: one seating.
+
+use super::*;
+use crate::args::*;
+
+pub fn run(args: RunArgs) -> Result<(), String> {
+    let RunArgs {
+        scene,
+        mu,
+        increments,
+        solver,
+        trace,
+        offset,
+        tilt,
+        json,
+    } = args;
+    use kinrepro::solve::dynamic::{DynamicOptions, StartPose, seat_traced};
+    let coupling = kinrepro::error::load_coupling(&scene).map_err(|e| e.to_string())?;
+    if solver == SolverKind::QuasiStatic && (trace.is_some() || offset.is_some() || tilt.is_some())
+    {
+        return Err("--trace, --offset and --tilt need --solver dynamic".to_string());
+    }
+    let opts = kinrepro::solve::SolverOptions {
+        increments: increments.max(1),
+        ..Default::default()
+    };
+    let dyn_opts = DynamicOptions {
+        start: StartPose {
+            offset: vector3("offset", offset)?,
+            tilt: vector3("tilt", tilt)?,
+        },
+        ..Default::default()
+    };
+    let nominal_mu = kinrepro::solve::nominal_mu(&coupling);
+    let mu = mu.unwrap_or_else(|| nominal_mu.clone());
+    let file = coupling.scene.file.clone();
+    let seat = |m: &[f64]| {
+        match solver {
+            SolverKind::QuasiStatic => kinrepro::solve::quasistatic::seat(&coupling, m, &opts),
+            SolverKind::Dynamic => kinrepro::solve::dynamic::seat(&coupling, m, &dyn_opts),
+        }
+        .map_err(|e| format!("{file}: {e}"))
+    };
+    let seating = match (&trace, solver) {
+        (Some(path), SolverKind::Dynamic) => {
+            let name = path.display().to_string();
+            let f = std::fs::File::create(path)
+                .map_err(|e| format!("{name}: cannot create the trace file: {e}"))?;
+            let mut w =
+                kinrepro::report::trace::TraceWriter::new(std::io::BufWriter::new(f), &coupling)
+                    .map_err(|e| format!("{name}: {e}"))?;
+            let mut io_err = None;
+            let result = seat_traced(&coupling, &mu, &dyn_opts, &mut |s| {
+                if io_err.is_none() {
+                    io_err = w.write(s).err();
+                }
+            });
+            if let Some(e) = io_err {
+                return Err(format!("{name}: writing the trace failed: {e}"));
+            }
+            w.finish().map_err(|e| format!("{name}: {e}"))?;
+            result.map_err(|e| format!("{file}: {e} (trace written to {name})"))?
+        }
+        _ => seat(&mu)?,
+    };
+    let nominal = seat(&nominal_mu)?;
+    let report = kinrepro::report::run::RunReport::new(
+        &coupling,
+        &mu,
+        &seating,
+        &nominal,
+        match solver {
+            SolverKind::QuasiStatic => "quasi-static",
+            SolverKind::Dynamic => "dynamic",
+        },
+    );
+    if json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
+        );
+    } else {
+        print!("{}", report.table());
+    }
+    Ok(())
+}
