@@ -7,6 +7,7 @@ pub mod geometry;
 use nalgebra::{Matrix6, UnitQuaternion, Vector3, Vector6};
 use thiserror::Error;
 
+use crate::contact::stress::ShearRatios;
 use crate::contact::{ContactError, ContactLaw, ContactPair, ContactShape};
 use crate::material::Material;
 use crate::scene::{Scene, SurfaceGeometry};
@@ -54,6 +55,8 @@ pub struct Contact {
     pub shape: ContactShape,
     pub pair: ContactPair,
     pub law: ContactLaw,
+    /// tau_max/p0 of the two bodies (for the stress check).
+    pub shear: ShearRatios,
     pub fixed: FixedShape,
 }
 
@@ -175,6 +178,7 @@ impl Coupling {
                 ball: s.ball,
                 surface: s.geometry,
                 shape,
+                shear: ShearRatios::new(&pair, &law.hertz),
                 pair,
                 law,
                 fixed: FixedShape::new(&s.geometry, half_length),

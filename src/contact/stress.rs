@@ -48,12 +48,13 @@ pub fn circular_max_shear(nu: f64) -> (f64, f64) {
     // The axis shear rises from (1 - 2 nu)/4 at the surface to one maximum
     // and decays; bracket it on a coarse grid, then golden section.
     let f = |z: f64| circular_axis_shear(nu, z);
-    let grid: Vec<f64> = (1..=300).map(|k| k as f64 * 0.01).collect();
-    let best = grid
-        .iter()
-        .copied()
-        .max_by(|a, b| f(*a).total_cmp(&f(*b)))
-        .unwrap_or(0.5);
+    let best = (1..=300)
+        .map(|k| {
+            let z = k as f64 * 0.01;
+            (z, f(z))
+        })
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .map_or(0.5, |(z, _)| z);
     let (mut lo, mut hi) = ((best - 0.01).max(1e-6), best + 0.01);
     let g = 0.5 * (5f64.sqrt() - 1.0);
     while hi - lo > 1e-12 {
@@ -98,22 +99,46 @@ pub struct ContactStress {
     pub safety_factor: Option<f64>,
 }
 
-/// Contact stresses of `pair` (with its Hertz law `hertz`) at normal load `load`.
-pub fn contact_stress(pair: &ContactPair, hertz: &HertzLaw, load: f64) -> ContactStress {
+/// tau_max/p0 of the two bodies of a pair and the depth z/a of the maximum,
+/// fixed by the Poisson ratios and the ellipse shape: computed once per pair
+/// (it takes a few hundred evaluations of the axis stresses).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShearRatios {
+    pub ratio: [f64; 2],
+    /// z/a of the maximum in each body (circular contacts).
+    pub depth_rel: [f64; 2],
+    /// Exact (circle) or the elliptical upper bound.
+    pub exact: bool,
+}
+
+impl ShearRatios {
+    pub fn new(pair: &ContactPair, hertz: &HertzLaw) -> Self {
+        let nu = [pair.material1.poisson_ratio, pair.material2.poisson_ratio];
+        let r = nu.map(|n| max_shear_ratio(n, hertz.axis_ratio));
+        ShearRatios {
+            ratio: [r[0].0, r[1].0],
+            depth_rel: nu.map(|n| circular_max_shear(n).1),
+            exact: r[0].1 && r[1].1,
+        }
+    }
+}
+
+/// Contact stresses of `pair` (with its Hertz law and shear ratios) at normal
+/// load `load`.
+pub fn contact_stress(
+    pair: &ContactPair,
+    hertz: &HertzLaw,
+    ratios: &ShearRatios,
+    load: f64,
+) -> ContactStress {
     let p0 = hertz.max_pressure(load);
     let materials: [&Material; 2] = [&pair.material1, &pair.material2];
-    let mut shear = [0.0; 2];
-    let mut exact = true;
-    for (k, m) in materials.iter().enumerate() {
-        let (ratio, ex) = max_shear_ratio(m.poisson_ratio, hertz.axis_ratio);
-        shear[k] = ratio * p0;
-        exact &= ex;
-    }
+    let shear = ratios.ratio.map(|r| r * p0);
+    let exact = ratios.exact;
     let depth = if exact && load > 0.0 {
-        // The deeper of the two bodies' maxima would differ only through nu;
-        // report the depth in the body with the larger tau.
+        // Report the depth in the body with the larger tau.
         let k = if shear[0] >= shear[1] { 0 } else { 1 };
-        Some(circular_max_shear(materials[k].poisson_ratio).1 * hertz.semi_axes(load)[0])
+        Some(ratios.depth_rel[k] * hertz.semi_axes(load)[0])
     } else {
         None
     };

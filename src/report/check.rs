@@ -69,7 +69,7 @@ pub fn check_summary(c: &Coupling) -> String {
     for (i, k) in c.contacts.iter().enumerate() {
         let g = c.geometry(i, &c.touching_pose);
         let h = &k.law.hertz;
-        let st = contact_stress(&k.pair, h, forces[i]);
+        let st = contact_stress(&k.pair, h, &k.shear, forces[i]);
         let _ = writeln!(
             out,
             "  {:>2} {:>4}  {:<16} ({:>6.3}, {:>6.3}, {:>6.3})  {:>6.3}, {:>6.3}  {:>8.2} {:>8.2}  {:>13.4} {:>9.2} {:>13.2} {:>6} {:>6} {:>6}",

@@ -148,7 +148,12 @@ impl ContactResult {
             .filter_map(|m| m.allowable_pressure)
             .fold(f64::INFINITY, f64::min);
         let ft = -e.tangential.force;
-        let stress = contact_stress(&contact.pair, &contact.law.hertz, e.normal_force);
+        let stress = contact_stress(
+            &contact.pair,
+            &contact.law.hertz,
+            &contact.shear,
+            e.normal_force,
+        );
         ContactResult {
             normal_force_n: e.normal_force,
             tangential_force: [ft.x, ft.y, ft.z],
