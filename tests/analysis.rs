@@ -5,6 +5,8 @@
 //! slip envelope bracketed by full load paths, the statics of an off-centre
 //! preload, and the Hertz subsurface shear stress against a brute-force scan.
 
+mod common;
+use common::load;
 use std::path::Path;
 
 use kinrepro::analysis::load::{envelope, load_path};
@@ -16,15 +18,6 @@ use kinrepro::contact::stress::{
 use kinrepro::solve::quasistatic::{ExternalLoad, LoadEventKind, seat};
 use kinrepro::solve::{PointPose, SolverOptions, nominal_mu};
 use nalgebra::{Matrix6, Vector3, Vector6};
-
-fn load(name: &str) -> Coupling {
-    kinrepro::error::load_coupling(
-        &Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("scenes")
-            .join(name),
-    )
-    .unwrap()
-}
 
 const ALL_SCENES: [&str; 8] = [
     "01_maxwell_vgroove_steel.toml",

@@ -3,6 +3,8 @@
 //! forces, a history-free all-sliding solve, increment halving and mirror
 //! symmetry.
 
+mod common;
+use common::load;
 use std::path::Path;
 
 use kinrepro::assembly::geometry::closed_form;
@@ -11,15 +13,6 @@ use kinrepro::contact::SlipState;
 use kinrepro::solve::quasistatic::seat;
 use kinrepro::solve::{PointPose, Seating, SolverOptions};
 use nalgebra::{Matrix6, UnitQuaternion, Vector3, Vector6};
-
-fn load(name: &str) -> Coupling {
-    kinrepro::error::load_coupling(
-        &Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("scenes")
-            .join(name),
-    )
-    .unwrap()
-}
 
 const MAXWELL: [&str; 5] = [
     "01_maxwell_vgroove_steel.toml",

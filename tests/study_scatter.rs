@@ -3,8 +3,8 @@
 //! solve, the closed-form rise of a ball in a 45-degree V, a synthetic
 //! linear response with known variance shares, the symmetry of scene 01.
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+mod common;
+use common::{kinrepro, scene};
 
 use kinrepro::assembly::Coupling;
 use kinrepro::report::study::VariantReport;
@@ -13,24 +13,6 @@ use kinrepro::study::runner::{StudyOptions, Tolerances, Variation, run_variant};
 use kinrepro::study::sensitivity::src;
 use kinrepro::study::{Sampler, design};
 use nalgebra::{Matrix6, Vector3, Vector6};
-
-fn scene(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenes")
-        .join(name)
-}
-
-fn kinrepro(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 /// Scene 01 with a `[variation]` table appended.
 fn scene01_with(variation: &str) -> Coupling {

@@ -328,13 +328,8 @@ impl<'a> Solver<'a> {
                             ));
                         }
                         let err = self.failure(lambda.max(extra), residual, &pose, &start);
-                        if event.is_some() {
-                            let mut end =
-                                self.end(pose, &evals, states, s, event, accepted, iterations);
-                            end.stopped = Some(err);
-                            return Ok(end);
-                        }
-                        return Err(err);
+                        return self
+                            .stop(err, pose, &evals, states, s, event, accepted, iterations);
                     }
                     h *= 0.5;
                 }
@@ -380,13 +375,8 @@ impl<'a> Solver<'a> {
                             percent: 100.0 * lambda.max(extra),
                             displacement_m: travel,
                         };
-                        if event.is_some() {
-                            let mut end =
-                                self.end(pose, &evals, states, s, event, accepted, iterations);
-                            end.stopped = Some(err);
-                            return Ok(end);
-                        }
-                        return Err(err);
+                        return self
+                            .stop(err, pose, &evals, states, s, event, accepted, iterations);
                     }
                     states = new_evals.iter().map(|e| e.tangential.state).collect();
                     last_step = Some((twist_between(&pose, &new_pose), s_next - s));
@@ -401,6 +391,37 @@ impl<'a> Solver<'a> {
             }
         }
         Ok(self.end(pose, &evals, states, s, event, accepted, iterations))
+    }
+
+    /// A path that cannot go on: after a load event it ends there (the
+    /// event is the answer, the error says why it stopped); before one, the
+    /// error is the result.
+    #[allow(clippy::too_many_arguments)]
+    fn stop(
+        &self,
+        err: SolveError,
+        pose: BodyPose,
+        evals: &[ContactEval],
+        states: Vec<TangentialState>,
+        reached: f64,
+        event: Option<LoadEvent>,
+        increments: usize,
+        newton_iterations: usize,
+    ) -> Result<End, SolveError> {
+        if event.is_none() {
+            return Err(err);
+        }
+        let mut end = self.end(
+            pose,
+            evals,
+            states,
+            reached,
+            event,
+            increments,
+            newton_iterations,
+        );
+        end.stopped = Some(err);
+        Ok(end)
     }
 
     #[allow(clippy::too_many_arguments)]

@@ -24,3 +24,8 @@ pub fn scene(name: &str) -> PathBuf {
         .join("scenes")
         .join(name)
 }
+
+/// Load and assemble a bundled scene.
+pub fn load(name: &str) -> kinrepro::assembly::Coupling {
+    kinrepro::error::load_coupling(&scene(name)).unwrap()
+}
