@@ -30,6 +30,12 @@ pub fn study(args: StudyArgs) -> Result<(), String> {
             .build_global()
             .map_err(|e| format!("--jobs: {e}"))?;
     }
+    if sampler == Some(kinrepro::study::Sampler::Corners) && samples.is_some() {
+        return Err(
+            "--samples does not apply to --sampler corners: the corner design has all 2^d extremes"
+                .into(),
+        );
+    }
     let opts = StudyOptions {
         sampler,
         samples,
