@@ -30,6 +30,9 @@ pub struct RunReport {
     pub contacts: Vec<ContactResult>,
     pub increments: usize,
     pub newton_iterations: usize,
+    /// Pose components reported but not evaluated for reproducibility
+    /// (MODEL.md §1: rotation about z).
+    pub not_evaluated: Vec<&'static str>,
 }
 
 impl RunReport {
@@ -62,6 +65,7 @@ impl RunReport {
             contacts: seating.contacts.clone(),
             increments: seating.increments,
             newton_iterations: seating.newton_iterations,
+            not_evaluated: vec!["phi_z_rad"],
         }
     }
 
