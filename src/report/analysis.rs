@@ -159,33 +159,29 @@ impl StiffnessReport {
                 let cells: Vec<String> = row.iter().map(|v| format!("{v:>12.4e}")).collect();
                 let _ = writeln!(s, "   {}", cells.join(" "));
             }
-            let _ = writeln!(
-                s,
-                "  principal translational stiffness (pure force at the point, rotation free):"
-            );
-            for r in &p.translational {
-                let _ = writeln!(
-                    s,
-                    "    {:>12.4} N/um      along ({:>7.4}, {:>7.4}, {:>7.4})",
-                    r.stiffness * 1e-6,
-                    r.direction[0],
-                    r.direction[1],
-                    r.direction[2]
-                );
-            }
-            let _ = writeln!(
-                s,
-                "  principal rotational stiffness (pure moment, translation free):"
-            );
-            for r in &p.rotational {
-                let _ = writeln!(
-                    s,
-                    "    {:>12.4} N m/urad  about ({:>7.4}, {:>7.4}, {:>7.4})",
-                    r.stiffness * 1e-6,
-                    r.direction[0],
-                    r.direction[1],
-                    r.direction[2]
-                );
+            for (title, rows, unit) in [
+                (
+                    "principal translational stiffness (pure force at the point, rotation free):",
+                    &p.translational,
+                    "N/um      along",
+                ),
+                (
+                    "principal rotational stiffness (pure moment, translation free):",
+                    &p.rotational,
+                    "N m/urad  about",
+                ),
+            ] {
+                let _ = writeln!(s, "  {title}");
+                for r in rows {
+                    let _ = writeln!(
+                        s,
+                        "    {:>12.4} {unit} ({:>7.4}, {:>7.4}, {:>7.4})",
+                        r.stiffness * 1e-6,
+                        r.direction[0],
+                        r.direction[1],
+                        r.direction[2]
+                    );
+                }
             }
         }
         s

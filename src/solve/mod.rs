@@ -142,11 +142,6 @@ impl ContactResult {
     /// layer (shared by both solvers).
     pub fn from_eval(coupling: &Coupling, i: usize, e: &ContactEval, friction: Friction) -> Self {
         let contact = &coupling.contacts[i];
-        let p0 = contact.law.hertz.max_pressure(e.normal_force);
-        let allow = [&contact.pair.material1, &contact.pair.material2]
-            .iter()
-            .filter_map(|m| m.allowable_pressure)
-            .fold(f64::INFINITY, f64::min);
         let ft = -e.tangential.force;
         let stress = contact_stress(
             &contact.pair,
@@ -162,8 +157,9 @@ impl ContactResult {
             state: e.slip(),
             mu_static: friction.mu_s,
             mu_dynamic: friction.mu_d,
-            max_pressure_pa: p0,
-            pressure_ratio: allow.is_finite().then(|| p0 / allow),
+            max_pressure_pa: stress.max_pressure_pa,
+            // p0 / allowable is the inverse of the pressure safety factor.
+            pressure_ratio: stress.pressure_safety_factor.map(|sf| 1.0 / sf),
             max_shear_stress_pa: stress.max_shear_stress_pa[0].max(stress.max_shear_stress_pa[1]),
             max_shear_depth_m: stress.max_shear_depth_m,
             pressure_safety_factor: stress.pressure_safety_factor,
