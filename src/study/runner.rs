@@ -622,10 +622,32 @@ pub fn run_variant(
         source,
     };
     check_options(coupling, opts)?;
-    let var = opts.variation;
     let design = design_for(coupling, opts).map_err(design_err)?;
     let range = opts.shard.range(design.n).map_err(design_err)?;
     let rows = design.range(range.clone()).map_err(design_err)?;
+    let records = evaluate_rows(coupling, opts, range.zip(rows).collect(), tick)?;
+    Ok(VariantRun {
+        design,
+        shard: opts.shard,
+        output_names: recorded_output_names(coupling, &opts.variation),
+        records,
+    })
+}
+
+/// Seat the coupling once per `(index, design row)` (rayon across rows)
+/// and record the outputs named by [`recorded_output_names`], relative to
+/// the nominal seating (nominal friction and preload, touching start, same
+/// solver). Any design over `opts.variation`'s inputs may be passed (a
+/// study's design, or e.g. the matrices of a variance-based sensitivity
+/// analysis). `tick` is called once per finished row.
+pub fn evaluate_rows(
+    coupling: &Coupling,
+    opts: &StudyOptions,
+    rows: Vec<(usize, Vec<f64>)>,
+    tick: &(dyn Fn() + Sync),
+) -> Result<Vec<SampleRecord>, RunError> {
+    let file = coupling.scene.file.clone();
+    let var = opts.variation;
     let seat_err = |index: usize, mu: &[f64], source| RunError::Seating {
         file: file.clone(),
         index,
@@ -644,9 +666,7 @@ pub fn run_variant(
         .iter()
         .map(|p| p.position)
         .collect();
-    let records = range
-        .into_par_iter()
-        .zip(rows.into_par_iter())
+    rows.into_par_iter()
         .map(|(index, row)| {
             let sample = var.sample(coupling, &row);
             let mut outputs: Vec<f64> = Vec::new();
@@ -693,11 +713,5 @@ pub fn run_variant(
                 outputs,
             })
         })
-        .collect::<Result<Vec<_>, RunError>>()?;
-    Ok(VariantRun {
-        design,
-        shard: opts.shard,
-        output_names: recorded_output_names(coupling, &var),
-        records,
-    })
+        .collect::<Result<Vec<_>, RunError>>()
 }
