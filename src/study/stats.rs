@@ -15,6 +15,7 @@
 
 pub mod bootstrap;
 pub mod convergence;
+pub mod moments;
 pub mod records;
 
 use serde::{Deserialize, Serialize};
@@ -22,6 +23,7 @@ use serde::{Deserialize, Serialize};
 use super::error::{Result, StudyError};
 pub use bootstrap::{BOOTSTRAP_SEED, BootstrapConfig, Interval, bootstrap_sigma};
 pub use convergence::{ConvergencePoint, sigma_convergence};
+pub use moments::Moments;
 pub use records::{MergedStudy, SampleRecord, ShardFile, merge, verify_inputs};
 
 /// Statistics of one output quantity.
