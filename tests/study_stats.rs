@@ -2,14 +2,14 @@
 
 use approx::assert_relative_eq;
 use kinrepro::study::stats::{
-    BootstrapConfig, MergedStudy, SampleRecord, ShardFile, bootstrap_sigma, mean_sigma, merge,
-    sigma_convergence, summarize, summarize_outputs, verify_inputs,
+    BootstrapConfig, MergedStudy, SampleRecord, ShardFile, SigmaMethod, bootstrap_sigma,
+    mean_sigma, merge, sigma_convergence, summarize, summarize_outputs, verify_inputs,
 };
 use kinrepro::study::{DesignSpec, Sampler, Shard, StudyError};
 
 #[test]
 fn summary_of_one_to_five() {
-    let s = summarize(&[1.0, 2.0, 3.0, 4.0, 5.0], &BootstrapConfig::default()).unwrap();
+    let s = summarize(&[1.0, 2.0, 3.0, 4.0, 5.0], SigmaMethod::Iid).unwrap();
     assert_eq!(s.n, 5);
     assert_eq!(s.mean, 3.0);
     assert_eq!((s.min, s.max), (1.0, 5.0));
@@ -46,15 +46,15 @@ fn sigma_hand_values_and_large_offset() {
 fn too_few_or_non_finite_samples_are_errors() {
     let b = BootstrapConfig::default();
     assert!(matches!(
-        summarize(&[], &b),
+        summarize(&[], SigmaMethod::Iid),
         Err(StudyError::TooFewSamples { n: 0 })
     ));
     assert!(matches!(
-        summarize(&[1.0], &b),
+        summarize(&[1.0], SigmaMethod::Iid),
         Err(StudyError::TooFewSamples { n: 1 })
     ));
     assert!(matches!(
-        summarize(&[1.0, f64::NAN], &b),
+        summarize(&[1.0, f64::NAN], SigmaMethod::Iid),
         Err(StudyError::NonFinite { .. })
     ));
     assert!(sigma_convergence(&[1.0]).is_err());
@@ -158,7 +158,11 @@ fn shards(spec: DesignSpec, count: usize) -> Vec<ShardFile> {
 #[test]
 fn merge_of_four_shards_equals_one_run_bit_for_bit() {
     for sampler in [Sampler::Lhs, Sampler::MonteCarlo] {
-        let spec = DesignSpec::new(sampler, 6, Some(25), 77).unwrap();
+        let r = if sampler == Sampler::Lhs { 5 } else { 1 };
+        let spec = DesignSpec::new(sampler, 6, Some(25), 77)
+            .unwrap()
+            .with_replicates(r)
+            .unwrap();
         let single = merge([run_shard(spec, Shard::whole())]).unwrap();
         let mut parts = shards(spec, 4);
         parts.reverse();
@@ -169,9 +173,9 @@ fn merge_of_four_shards_equals_one_run_bit_for_bit() {
             .collect();
         let merged = merge(parts).unwrap();
         assert_eq!(merged, single);
-        let b = BootstrapConfig::default();
-        let s1 = summarize_outputs(&single.records, &b).unwrap();
-        let s2 = summarize_outputs(&merged.records, &b).unwrap();
+        let method = SigmaMethod::for_design(&spec);
+        let s1 = summarize_outputs(&single.records, method).unwrap();
+        let s2 = summarize_outputs(&merged.records, method).unwrap();
         assert_eq!(s1.len(), 5);
         for (a, c) in s1.iter().zip(&s2) {
             assert_eq!(a.sigma.to_bits(), c.sigma.to_bits());
