@@ -2,11 +2,18 @@
 //! from Saltelli et al., "Global Sensitivity Analysis: The Primer", 2008, §3.6 / Sobol' &
 //! Levitan 1999), implemented here independently of the estimator.
 
+mod common;
+
 use std::f64::consts::PI;
 
+use kinrepro::report::sensitivity::attach_sobol;
+use kinrepro::report::study::VariantReport;
+use kinrepro::study::Sampler;
+use kinrepro::study::runner::{StudyOptions, run_variant};
 use kinrepro::study::sensitivity::sobol::{
     DEFAULT_BASE_SAMPLES, saltelli_rows, sobol_bootstrap, sobol_indices,
 };
+use kinrepro::study::sensitivity::sobol_run::run_sobol;
 
 const A: f64 = 7.0;
 const B: f64 = 0.1;
@@ -102,4 +109,63 @@ fn saltelli_rows_layout() {
     assert_eq!(rows, saltelli_rows(d, n, 9).unwrap());
     assert_ne!(rows, saltelli_rows(d, n, 10).unwrap());
     assert!(sobol_indices(&[1.0; 6 * 16], d, n, &sobol_bootstrap()).is_err());
+}
+
+#[test]
+fn scene_01_indices_are_consistent_and_match_the_linear_shares() {
+    // Scene 01 (six friction coefficients): the first-order indices of x sum to at most 1 and
+    // every total index is at least its first-order index, both within the 90 % intervals; the
+    // response is near-linear (R^2 > 0.99), so the first-order indices must also equal the
+    // regression shares of an independent 2000-sample Monte Carlo study.
+    let c = common::load("01_maxwell_vgroove_steel.toml");
+    let opts = StudyOptions {
+        sampler: Some(Sampler::MonteCarlo),
+        samples: Some(2000),
+        seed: Some(11),
+        sensitivity: true,
+        ..Default::default()
+    };
+    let mut v = VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap(), &opts).unwrap();
+    let run = run_sobol(&c, &opts, 2048, &|| {}).unwrap();
+    attach_sobol(&mut v, &run);
+    let block = &v.sensitivity.as_ref().unwrap()[0];
+    let sob = block.sobol.as_ref().unwrap();
+    assert_eq!(sob.base_samples, 2048);
+    assert_eq!(sob.evaluations, 2048 * 8);
+    assert_eq!(block.inputs.len(), 6);
+    for (k, d) in sob.dofs.iter().enumerate() {
+        let x = d.indices.as_ref().unwrap();
+        let lows: f64 = x.first_ci90_low.iter().sum();
+        assert!(lows <= 1.0, "{}: sum of first-order lower bounds {lows}", d.output);
+        for i in 0..6 {
+            assert!(
+                x.total_ci90_high[i] >= x.first_ci90_low[i],
+                "{} input {i}: ST {:?} < S {:?}",
+                d.output,
+                (x.total_ci90_low[i], x.total_ci90_high[i]),
+                (x.first_ci90_low[i], x.first_ci90_high[i])
+            );
+            assert!(x.first_ci90_low[i] <= x.first[i] && x.first[i] <= x.first_ci90_high[i]);
+        }
+        let src = &block.dofs[k];
+        assert!(src.r_squared.unwrap() > 0.99);
+        for i in 0..6 {
+            assert!(
+                (x.first[i] - src.share[i]).abs() < 0.05,
+                "{} input {i}: S {} vs SRC share {}",
+                d.output,
+                x.first[i],
+                src.share[i]
+            );
+        }
+    }
+    // x is driven by the two flanks of the V-groove on the x axis (contacts 1, 2).
+    let x = sob.dofs[0].indices.as_ref().unwrap();
+    assert!(x.first[0] > 0.25 && x.first[1] > 0.25, "{:?}", x.first);
+    // The JSON carries the indices under the variant's sensitivity, SRC fields kept.
+    let json = serde_json::to_value(&v).unwrap();
+    let b = &json["sensitivity"][0];
+    assert!(b["dofs"][0]["share"].is_array());
+    assert_eq!(b["sobol"]["base_samples"], 2048);
+    assert!(b["sobol"]["dofs"][0]["indices"]["total_ci90_high"].is_array());
 }
