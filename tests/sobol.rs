@@ -136,7 +136,11 @@ fn scene_01_indices_are_consistent_and_match_the_linear_shares() {
     for (k, d) in sob.dofs.iter().enumerate() {
         let x = d.indices.as_ref().unwrap();
         let lows: f64 = x.first_ci90_low.iter().sum();
-        assert!(lows <= 1.0, "{}: sum of first-order lower bounds {lows}", d.output);
+        assert!(
+            lows <= 1.0,
+            "{}: sum of first-order lower bounds {lows}",
+            d.output
+        );
         for i in 0..6 {
             assert!(
                 x.total_ci90_high[i] >= x.first_ci90_low[i],

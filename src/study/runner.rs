@@ -542,7 +542,7 @@ fn replicated(spec: DesignSpec, replicates: Option<usize>) -> Result<DesignSpec,
         (Sampler::Lhs, None) => match default_replicates(spec.n) {
             Some(r) => spec.with_replicates(r),
             None => Err(StudyError::InvalidParameter(format!(
-                "an LHS of {} samples cannot be split into {DEFAULT_LHS_REPLICATES} or fewer                  replicates of at least 2 points (needed for its interval of sigma): give                  --samples divisible by {DEFAULT_LHS_REPLICATES}, or --replicates 1 for a single                  LHS without an interval",
+                "an LHS of {} samples cannot be split into {DEFAULT_LHS_REPLICATES} or fewer replicates of at least 2 points (needed for its interval of sigma): give --samples divisible by {DEFAULT_LHS_REPLICATES}, or --replicates 1 for a single LHS without an interval",
                 spec.n
             ))),
         },

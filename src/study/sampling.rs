@@ -152,7 +152,7 @@ impl DesignSpec {
         }
         Err(StudyError::InvalidParameter(match self.sampler {
             Sampler::Lhs => format!(
-                "--replicates {r}: an LHS of {n} samples needs a replicate count that divides                  {n} and leaves at least 2 points per replicate (1 = a single LHS, no interval)"
+                "--replicates {r}: an LHS of {n} samples needs a replicate count that divides {n} and leaves at least 2 points per replicate (1 = a single LHS, no interval)"
             ),
             s => format!("--replicates {r}: only an LHS is replicated, not {s}"),
         }))
