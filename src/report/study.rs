@@ -404,7 +404,7 @@ impl StudyReport {
             }
             let _ = writeln!(
                 s,
-                "Interchangeability (manufacturing tolerances): standard deviation (n-1) of the seated pose of each perturbed coupling at nominal friction and preload, relative to the nominal geometry's seating."
+                "Interchangeability (manufacturing tolerances): standard deviation (and its interval) as above, of the seated pose of each perturbed coupling at nominal friction and preload, relative to the nominal geometry's seating."
             );
             let _ = writeln!(s);
             sigma_table(&mut s, &self.variants, |v| &v.interchangeability);
