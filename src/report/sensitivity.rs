@@ -47,6 +47,12 @@ fn dof_label(output: &str) -> String {
 /// total index, each with its 90 % interval below.
 pub fn sobol_table(s: &mut String, b: &SensitivityBlock) {
     let Some(sob) = &b.sobol else {
+        let _ = writeln!(
+            s,
+            "  Sobol indices of the {} scatter: not computed (a sharded or merged study: they \
+             need the whole Saltelli matrices in one run without --shard)",
+            b.kind
+        );
         return;
     };
     let _ = writeln!(

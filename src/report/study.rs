@@ -67,6 +67,7 @@ pub struct PointStats {
     pub sigma_ci90_low: Option<Dofs>,
     pub sigma_ci90_high: Option<Dofs>,
     /// How sigma and its interval were computed, valid for the design.
+    #[serde(default)]
     pub sigma_interval_method: String,
     /// Reproducibility +- 3 sigma.
     pub three_sigma: Dofs,
