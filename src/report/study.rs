@@ -17,7 +17,7 @@ use crate::study::runner::{
 };
 use crate::study::sensitivity::{self, SensitivityBlock};
 use crate::study::stats::{
-    BootstrapConfig, SampleRecord, ShardFile, Summary, merge, sigma_convergence, summarize_outputs,
+    SampleRecord, ShardFile, SigmaMethod, Summary, merge, sigma_convergence, summarize_outputs,
     verify_inputs,
 };
 use crate::study::{DesignSpec, Sampler, Shard, StudyError};
@@ -62,9 +62,13 @@ pub struct PointStats {
     pub name: String,
     pub n: usize,
     pub sigma: Dofs,
-    /// Bootstrap 90 % percentile interval of sigma.
-    pub sigma_ci90_low: Dofs,
-    pub sigma_ci90_high: Dofs,
+    /// 90 % interval of sigma by `sigma_interval_method` (null where the
+    /// design admits none: corners, a single LHS).
+    pub sigma_ci90_low: Option<Dofs>,
+    pub sigma_ci90_high: Option<Dofs>,
+    /// How sigma and its interval were computed, valid for the design.
+    #[serde(default)]
+    pub sigma_interval_method: String,
     /// Reproducibility +- 3 sigma.
     pub three_sigma: Dofs,
     pub mean: Dofs,
@@ -141,6 +145,7 @@ fn point_names(output_names: &[String]) -> Vec<String> {
 fn split_stats(
     output_names: &[String],
     records: &[SampleRecord],
+    method: SigmaMethod,
 ) -> Result<(Vec<PointStats>, Vec<PointStats>), StudyError> {
     let k = output_names
         .iter()
@@ -169,7 +174,7 @@ fn split_stats(
                     outputs: r.outputs[range.clone()].to_vec(),
                 })
                 .collect();
-            point_stats(&names, &recs)
+            point_stats(&names, &recs, method)
         };
     Ok((part(0..k, false)?, part(k..output_names.len(), true)?))
 }
@@ -214,11 +219,14 @@ pub fn sensitivity_blocks(v: &VariantReport) -> Vec<SensitivityBlock> {
     blocks
 }
 
+/// Statistics per evaluation point; sigma and its interval by the method
+/// valid for the design (`method`, [`SigmaMethod::for_design`]).
 fn point_stats(
     output_names: &[String],
     records: &[SampleRecord],
+    method: SigmaMethod,
 ) -> Result<Vec<PointStats>, StudyError> {
-    let summaries = summarize_outputs(records, &BootstrapConfig::default())?;
+    let summaries = summarize_outputs(records, method)?;
     let pick = |chunk: &[Summary], f: &dyn Fn(&Summary) -> f64| {
         Dofs::from_si([
             f(&chunk[0]),
@@ -235,8 +243,15 @@ fn point_stats(
             name,
             n: c[0].n,
             sigma: pick(c, &|s| s.sigma),
-            sigma_ci90_low: pick(c, &|s| s.sigma_interval.lower),
-            sigma_ci90_high: pick(c, &|s| s.sigma_interval.upper),
+            sigma_ci90_low: c
+                .iter()
+                .all(|s| s.sigma_interval.is_some())
+                .then(|| pick(c, &|s| s.sigma_interval.map_or(f64::NAN, |i| i.lower))),
+            sigma_ci90_high: c
+                .iter()
+                .all(|s| s.sigma_interval.is_some())
+                .then(|| pick(c, &|s| s.sigma_interval.map_or(f64::NAN, |i| i.upper))),
+            sigma_interval_method: c[0].sigma_interval_method.clone(),
             three_sigma: pick(c, &|s| s.three_sigma),
             mean: pick(c, &|s| s.mean),
             min: pick(c, &|s| s.min),
@@ -286,7 +301,9 @@ impl VariantReport {
 impl VariantReport {
     /// Statistics (and sensitivity, if asked for) from the records.
     fn finish(&mut self) -> Result<(), StudyError> {
-        (self.points, self.interchangeability) = split_stats(&self.output_names, &self.records)?;
+        let method = SigmaMethod::for_design(&self.design);
+        (self.points, self.interchangeability) =
+            split_stats(&self.output_names, &self.records, method)?;
         if self.sensitivity.is_some() {
             self.sensitivity = Some(sensitivity_blocks(self));
         }
@@ -372,7 +389,8 @@ impl StudyReport {
         {
             let _ = writeln!(
                 s,
-                "Standard deviation (n-1) of the seated pose relative to the nominal seating (nominal friction and preload, touching start); below each row the bootstrap 90 % interval of sigma."
+                "Standard deviation of the seated pose relative to the nominal seating (nominal friction and preload, touching start; divisor n-1, for a replicated LHS the unbiased replicate estimate); below each row the 90 % interval of sigma, by a method valid for the design: {}.",
+                interval_methods(&self.variants)
             );
             let _ = writeln!(s);
             sigma_table(&mut s, &self.variants, |v| &v.points);
@@ -387,7 +405,7 @@ impl StudyReport {
             }
             let _ = writeln!(
                 s,
-                "Interchangeability (manufacturing tolerances): standard deviation (n-1) of the seated pose of each perturbed coupling at nominal friction and preload, relative to the nominal geometry's seating."
+                "Interchangeability (manufacturing tolerances): standard deviation (and its interval) as above, of the seated pose of each perturbed coupling at nominal friction and preload, relative to the nominal geometry's seating."
             );
             let _ = writeln!(s);
             sigma_table(&mut s, &self.variants, |v| &v.interchangeability);
@@ -424,6 +442,7 @@ impl StudyReport {
             if let Some(blocks) = &v.sensitivity {
                 for b in blocks {
                     sensitivity_table(&mut s, b);
+                    super::sensitivity::sobol_table(&mut s, b);
                 }
             }
         }
@@ -446,9 +465,13 @@ impl StudyReport {
                 for (k, comp) in COMPONENTS.iter().enumerate() {
                     let (dof, unit) = comp.rsplit_once('_').unwrap_or((comp, ""));
                     let si = |d: &Dofs| d.values()[k] * 1e-9;
+                    // No interval (corners, single LHS): an empty field.
+                    let ci = |d: &Option<Dofs>| {
+                        d.as_ref().map_or(String::new(), |d| format!("{:e}", si(d)))
+                    };
                     let _ = writeln!(
                         s,
-                        "{},{},{},{dof},{unit},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
+                        "{},{},{},{dof},{unit},{},{:e},{:e},{:e},{:e},{:e},{},{}",
                         csv_field(&v.scene),
                         csv_field(&v.name),
                         csv_field(&p.name),
@@ -458,8 +481,8 @@ impl StudyReport {
                         si(&p.max),
                         si(&p.sigma),
                         si(&p.three_sigma),
-                        si(&p.sigma_ci90_low),
-                        si(&p.sigma_ci90_high)
+                        ci(&p.sigma_ci90_low),
+                        ci(&p.sigma_ci90_high)
                     );
                 }
             }
@@ -605,8 +628,6 @@ fn sigma_table(
         }
         for p in points(v) {
             let sg = p.sigma.values();
-            let lo = p.sigma_ci90_low.values();
-            let hi = p.sigma_ci90_high.values();
             let _ = writeln!(
                 s,
                 "{:<4}{:<46}{:<16}{:>5} {:>13.3} {:>13.3} {:>13.3} {:>17.2} {:>17.2}",
@@ -620,6 +641,11 @@ fn sigma_table(
                 sg[3],
                 sg[4]
             );
+            let (Some(lo), Some(hi)) = (&p.sigma_ci90_low, &p.sigma_ci90_high) else {
+                let _ = writeln!(s, "{:<71}(no interval: {})", "", p.sigma_interval_method);
+                continue;
+            };
+            let (lo, hi) = (lo.values(), hi.values());
             let ci: Vec<String> = (0..5)
                 .map(|k| {
                     let w = if k < 3 { 13 } else { 17 };
@@ -628,6 +654,21 @@ fn sigma_table(
                 .collect();
             let _ = writeln!(s, "{:<71}{}", "", ci.join(" "));
         }
+    }
+}
+
+/// The distinct interval methods of the variants' points, in order.
+fn interval_methods(variants: &[VariantReport]) -> String {
+    let mut methods: Vec<&str> = Vec::new();
+    for p in variants.iter().flat_map(|v| &v.points) {
+        if !methods.contains(&p.sigma_interval_method.as_str()) {
+            methods.push(&p.sigma_interval_method);
+        }
+    }
+    if methods.is_empty() {
+        "per variant, after merging".to_string()
+    } else {
+        methods.join("; ")
     }
 }
 

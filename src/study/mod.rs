@@ -1,10 +1,15 @@
 //! Statistics part of `kinrepro`: sampling designs over the per-contact friction coefficients,
 //! descriptive statistics of the re-seating scatter, merging of sharded runs and SVG plots.
 //!
-//! * [`sampling`]: optimised Latin hypercube, plain Monte Carlo and full-factorial corners over
-//!   [0, 1]^d, each a pure function of `(sampler, dims, n, seed)`; shard ranges.
-//! * [`stats`]: mean, min, max, sigma (n - 1), 3 sigma, bootstrap interval of sigma,
-//!   convergence of sigma, per-sample records and shard merging.
+//! * [`sampling`]: optimised Latin hypercube (replicated: r independent LHS of n/r points),
+//!   plain Monte Carlo and full-factorial corners over [0, 1]^d, each a pure function of
+//!   `(sampler, dims, n, seed, replicates)`; shard ranges.
+//! * [`stats`]: mean, min, max, sigma, 3 sigma, an interval of sigma valid for the design
+//!   (replicated LHS: t on the replicates; Monte Carlo: Bonett's kurtosis-adjusted interval,
+//!   also from streamed moments; corners: none), convergence of sigma, per-sample records and
+//!   shard merging.
+//! * [`sensitivity`]: SRC shares (linear regression) and first-order and total Sobol indices
+//!   (Saltelli matrices seated with [`runner::evaluate_rows`]) with bootstrap intervals.
 //! * [`plot`]: sigma per variant and DOF, x-y scatter, convergence of sigma (SVG, plotters).
 //!
 //! # Scaling out with shards

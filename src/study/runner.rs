@@ -460,6 +460,8 @@ pub struct StudyOptions {
     pub variation: Variation,
     /// Also compute the sensitivity (SRC) tables of the report.
     pub sensitivity: bool,
+    /// LHS replicates (`--replicates`; None: [`crate::study::sampling::default_replicates`]).
+    pub replicates: Option<usize>,
 }
 
 impl Default for StudyOptions {
@@ -472,6 +474,7 @@ impl Default for StudyOptions {
             method: Method::default(),
             variation: Variation::default(),
             sensitivity: false,
+            replicates: None,
         }
     }
 }
@@ -526,7 +529,25 @@ pub fn design_for(coupling: &Coupling, opts: &StudyOptions) -> Result<DesignSpec
         _ => Some(opts.samples.unwrap_or(st.samples)),
     };
     let dims = opts.variation.inputs(coupling).len();
-    DesignSpec::new(sampler, dims, n, opts.seed.unwrap_or(st.seed))
+    let spec = DesignSpec::new(sampler, dims, n, opts.seed.unwrap_or(st.seed))?;
+    replicated(spec, opts.replicates)
+}
+
+/// An LHS split into `replicates` (default: 5, or the largest divisor of n
+/// in 2..=5) so that its interval of sigma is valid; other designs as they are.
+fn replicated(spec: DesignSpec, replicates: Option<usize>) -> Result<DesignSpec, StudyError> {
+    use crate::study::sampling::{DEFAULT_LHS_REPLICATES, default_replicates};
+    match (spec.sampler, replicates) {
+        (_, Some(r)) => spec.with_replicates(r),
+        (Sampler::Lhs, None) => match default_replicates(spec.n) {
+            Some(r) => spec.with_replicates(r),
+            None => Err(StudyError::InvalidParameter(format!(
+                "an LHS of {} samples cannot be split into {DEFAULT_LHS_REPLICATES} or fewer replicates of at least 2 points (needed for its interval of sigma): give --samples divisible by {DEFAULT_LHS_REPLICATES}, or --replicates 1 for a single LHS without an interval",
+                spec.n
+            ))),
+        },
+        _ => Ok(spec),
+    }
 }
 
 /// Static coefficients of one design row.

@@ -9,8 +9,15 @@
 //!   `(seed, i)` — see [`monte_carlo`].
 //! * [`Sampler::Corners`]: the 2^d full-factorial extremes — see [`corners`].
 //!
-//! Every design is a pure function of `(sampler, dims, n, seed)`, captured by [`DesignSpec`],
-//! which shard files carry so that [`super::stats::merge`] can check that they belong together.
+//! Every design is a pure function of `(sampler, dims, n, seed, replicates)`, captured by
+//! [`DesignSpec`], which shard files carry so that [`super::stats::merge`] can check that they
+//! belong together.
+//!
+//! Replicated LHS ([`DesignSpec::replicates`] = r > 1): the n rows are r independent optimised
+//! Latin hypercubes of m = n / r points each, replicate j being rows `j m .. (j+1) m`, drawn
+//! with the seed [`replicate_seed`]`(seed, j)`. The spread between replicates gives a valid
+//! sampling interval of sigma ([`super::stats::interval`]); a single LHS has none (resampling
+//! its rows breaks the stratification).
 
 pub mod corners;
 pub mod ese;
@@ -25,6 +32,7 @@ use std::str::FromStr;
 use serde::{Deserialize, Serialize};
 
 use super::error::{Result, StudyError};
+use super::rng::{DOMAIN_REPLICATE, splitmix64};
 
 /// Which design to draw. Serialised (and parsed by [`FromStr`]) as `lhs`, `mc`, `corners`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -78,6 +86,33 @@ pub struct DesignSpec {
     pub dims: usize,
     pub n: usize,
     pub seed: u64,
+    /// Number of independent LHS replicates the n rows consist of (1: a single design; always 1
+    /// for Monte Carlo and corners). Files without the field are single designs.
+    #[serde(default = "one")]
+    pub replicates: usize,
+}
+
+fn one() -> usize {
+    1
+}
+
+/// Default number of LHS replicates: 5 (the largest divisor of n in 2..=5 leaving at least 2
+/// points per replicate, when 5 does not divide n).
+pub const DEFAULT_LHS_REPLICATES: usize = 5;
+
+/// The default replicate count of an LHS of `n` points, if n has a divisor in 2..=5 that leaves
+/// at least 2 points per replicate.
+pub fn default_replicates(n: usize) -> Option<usize> {
+    (2..=DEFAULT_LHS_REPLICATES)
+        .rev()
+        .find(|&r| n.is_multiple_of(r) && n / r >= 2)
+}
+
+/// Seed of LHS replicate `j` of a design with seed `seed` (SplitMix64 of both; replicate 0 of
+/// a single design uses `seed` itself, see [`DesignSpec::rows`]).
+pub fn replicate_seed(seed: u64, j: usize) -> u64 {
+    let mut state = seed ^ DOMAIN_REPLICATE.wrapping_add(j as u64);
+    splitmix64(&mut state)
 }
 
 impl DesignSpec {
@@ -94,17 +129,68 @@ impl DesignSpec {
             dims,
             n,
             seed,
+            replicates: 1,
         })
+    }
+
+    /// The same design split into `replicates` independent LHS (LHS only; `replicates` must
+    /// divide n and leave at least 2 points each; 1 is a single design).
+    pub fn with_replicates(self, replicates: usize) -> Result<Self> {
+        let spec = DesignSpec { replicates, ..self };
+        spec.check_replicates()?;
+        Ok(spec)
+    }
+
+    fn check_replicates(&self) -> Result<()> {
+        let (r, n) = (self.replicates, self.n);
+        let ok = match self.sampler {
+            Sampler::Lhs => r == 1 || (r >= 2 && n.is_multiple_of(r) && n / r >= 2),
+            _ => r == 1,
+        };
+        if ok {
+            return Ok(());
+        }
+        Err(StudyError::InvalidParameter(match self.sampler {
+            Sampler::Lhs => format!(
+                "--replicates {r}: an LHS of {n} samples needs a replicate count that divides {n} and leaves at least 2 points per replicate (1 = a single LHS, no interval)"
+            ),
+            s => format!("--replicates {r}: only an LHS is replicated, not {s}"),
+        }))
     }
 
     /// The whole design, `n` rows of `dims` coordinates.
     pub fn rows(&self) -> Result<Vec<Vec<f64>>> {
-        design(self.sampler, self.dims, self.n, self.seed)
+        self.range(0..self.n)
     }
 
     /// Rows `range` of the design.
     pub fn range(&self, range: Range<usize>) -> Result<Vec<Vec<f64>>> {
-        sample_range(self.sampler, self.dims, self.n, self.seed, range)
+        self.check_replicates()?;
+        if self.replicates == 1 {
+            return sample_range(self.sampler, self.dims, self.n, self.seed, range);
+        }
+        validate(self.sampler, self.dims, self.n)?;
+        if range.start > range.end || range.end > self.n {
+            return Err(StudyError::RangeOutOfBounds {
+                start: range.start,
+                end: range.end,
+                n: self.n,
+            });
+        }
+        let m = self.n / self.replicates;
+        let mut rows = Vec::with_capacity(self.n);
+        for j in 0..self.replicates {
+            let seed = replicate_seed(self.seed, j);
+            rows.extend(lhs::optimised_lhs(
+                self.dims,
+                m,
+                seed,
+                &ese::EseParams::default(),
+            )?);
+        }
+        rows.truncate(range.end);
+        rows.drain(..range.start);
+        Ok(rows)
     }
 }
 

@@ -21,6 +21,9 @@
 //! regression needs n >= d + 2 samples; the sampling error of a share is
 //! of the order of 1 / sqrt(n).
 
+pub mod sobol;
+pub mod sobol_run;
+
 use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 
@@ -126,6 +129,10 @@ pub struct SensitivityBlock {
     pub inputs: Vec<String>,
     /// One entry per output (x, y, z, phi_x, phi_y of the first evaluation point).
     pub dofs: Vec<DofSensitivity>,
+    /// First-order and total Sobol indices of the same outputs on the same
+    /// inputs (absent for a sharded study, or before they are attached).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sobol: Option<sobol::SobolBlock>,
 }
 
 /// The SRC of the outputs `outputs` (column indices, with names) on the
@@ -173,5 +180,6 @@ pub fn block(
         kind: kind.to_string(),
         inputs: inputs.iter().map(|(_, n)| n.clone()).collect(),
         dofs,
+        sobol: None,
     }
 }

@@ -1,8 +1,11 @@
 //! Descriptive statistics of the output quantities of a study.
 //!
-//! Per output quantity over the samples: n, mean, min, max, the sample standard deviation
-//! (divisor n - 1), the 3-sigma value and band, and a bootstrap percentile interval of sigma
-//! ([`bootstrap`]) that shows the sampling error of a small study (e.g. 25 runs).
+//! Per output quantity over the samples: n, mean, min, max, the standard deviation, the
+//! 3-sigma value and band, and a 90 % interval of sigma by a method valid for the design
+//! ([`SigmaMethod`], [`interval`]): Bonett's kurtosis-adjusted interval for Monte Carlo, the
+//! replicate t interval for a replicated LHS, none for corners or a single LHS. Sigma is the
+//! sample standard deviation (divisor n - 1), except for a replicated LHS, where it is the
+//! unbiased replicated estimate of [`interval::sigma_replicated`].
 //!
 //! Mean and variance use the corrected two-pass algorithm (Chan, Golub & LeVeque 1983, eq. 1.7):
 //! `mean = sum(x)/n`, `var = (sum((x-mean)^2) - (sum(x-mean))^2/n) / (n-1)`, which is accurate
@@ -15,16 +18,63 @@
 
 pub mod bootstrap;
 pub mod convergence;
+pub mod interval;
 pub mod moments;
+pub mod quantile;
 pub mod records;
 
 use serde::{Deserialize, Serialize};
 
 use super::error::{Result, StudyError};
-pub use bootstrap::{BOOTSTRAP_SEED, BootstrapConfig, Interval, bootstrap_sigma};
+use super::sampling::{DesignSpec, Sampler};
+pub use bootstrap::{BOOTSTRAP_SEED, BootstrapConfig, bootstrap_sigma};
 pub use convergence::{ConvergencePoint, sigma_convergence};
+pub use interval::{Interval, sigma_interval_from_moments, sigma_interval_iid, sigma_replicated};
 pub use moments::Moments;
 pub use records::{MergedStudy, SampleRecord, ShardFile, merge, verify_inputs};
+
+/// How the interval of sigma is computed: chosen from the design that produced the samples.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SigmaMethod {
+    /// Independent samples (Monte Carlo): Bonett (2006).
+    Iid,
+    /// A replicated LHS of this many replicates (rows in replicate order).
+    Replicated(usize),
+    /// No valid interval: a corner design (deterministic).
+    Corners,
+    /// No valid interval: a single (unreplicated) LHS.
+    SingleLhs,
+}
+
+impl SigmaMethod {
+    /// The method valid for `design`.
+    pub fn for_design(design: &DesignSpec) -> Self {
+        match (design.sampler, design.replicates) {
+            (Sampler::MonteCarlo, _) => SigmaMethod::Iid,
+            (Sampler::Corners, _) => SigmaMethod::Corners,
+            (Sampler::Lhs, r) if r >= 2 => SigmaMethod::Replicated(r),
+            (Sampler::Lhs, _) => SigmaMethod::SingleLhs,
+        }
+    }
+
+    /// The method in words, as written into every output (`sigma_interval_method`).
+    pub fn describe(&self) -> String {
+        match self {
+            SigmaMethod::Iid => interval::METHOD_BONETT.to_string(),
+            SigmaMethod::Replicated(r) => {
+                format!(
+                    "{} ({r} replicates, {} df)",
+                    interval::METHOD_REPLICATED_LHS,
+                    r - 1
+                )
+            }
+            SigmaMethod::Corners => interval::METHOD_NONE_CORNERS.to_string(),
+            SigmaMethod::SingleLhs => {
+                "none (single LHS: resampling breaks its strata; use --replicates)".to_string()
+            }
+        }
+    }
+}
 
 /// Statistics of one output quantity.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -34,7 +84,7 @@ pub struct Summary {
     pub mean: f64,
     pub min: f64,
     pub max: f64,
-    /// Sample standard deviation (divisor n - 1).
+    /// Standard deviation: divisor n - 1, or the replicated-LHS estimate.
     pub sigma: f64,
     /// 3 * sigma.
     pub three_sigma: f64,
@@ -42,8 +92,10 @@ pub struct Summary {
     pub lower_3sigma: f64,
     /// mean + 3 sigma.
     pub upper_3sigma: f64,
-    /// Bootstrap percentile interval of sigma.
-    pub sigma_interval: Interval,
+    /// Interval of sigma (None where the design admits none).
+    pub sigma_interval: Option<Interval>,
+    /// How `sigma` and its interval were computed ([`SigmaMethod::describe`]).
+    pub sigma_interval_method: String,
 }
 
 /// Mean and sample standard deviation (corrected two-pass). Needs n >= 2 finite values.
@@ -78,9 +130,36 @@ pub(crate) fn mean_sigma_unchecked(values: &[f64]) -> (f64, f64) {
     (mean, var.sqrt())
 }
 
-/// Full summary of one quantity, bootstrap interval included.
-pub fn summarize(values: &[f64], boot: &BootstrapConfig) -> Result<Summary> {
+/// Full summary of one quantity (values in design order), with the interval of `method`.
+pub fn summarize(values: &[f64], method: SigmaMethod) -> Result<Summary> {
     let (mean, sigma) = mean_sigma(values)?;
+    if method == SigmaMethod::Iid && values.len() < 3 {
+        return summary(
+            values,
+            mean,
+            sigma,
+            None,
+            "none (fewer than 3 samples)".into(),
+        );
+    }
+    let (sigma, sigma_interval) = match method {
+        SigmaMethod::Iid => (sigma, Some(sigma_interval_iid(values, interval::LEVEL)?)),
+        SigmaMethod::Replicated(r) => {
+            let (s, i) = sigma_replicated(values, r, interval::LEVEL)?;
+            (s, Some(i))
+        }
+        SigmaMethod::Corners | SigmaMethod::SingleLhs => (sigma, None),
+    };
+    summary(values, mean, sigma, sigma_interval, method.describe())
+}
+
+fn summary(
+    values: &[f64],
+    mean: f64,
+    sigma: f64,
+    sigma_interval: Option<Interval>,
+    sigma_interval_method: String,
+) -> Result<Summary> {
     if !(mean.is_finite() && sigma.is_finite()) {
         return Err(StudyError::NonFinite {
             what: "mean or sigma (overflow)".into(),
@@ -88,7 +167,6 @@ pub fn summarize(values: &[f64], boot: &BootstrapConfig) -> Result<Summary> {
     }
     let min = values.iter().copied().fold(f64::INFINITY, f64::min);
     let max = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let sigma_interval = bootstrap_sigma(values, boot)?;
     Ok(Summary {
         n: values.len(),
         mean,
@@ -99,12 +177,13 @@ pub fn summarize(values: &[f64], boot: &BootstrapConfig) -> Result<Summary> {
         lower_3sigma: mean - 3.0 * sigma,
         upper_3sigma: mean + 3.0 * sigma,
         sigma_interval,
+        sigma_interval_method,
     })
 }
 
 /// One [`Summary`] per output quantity (column `j` of every record's `outputs`), taking the
 /// records in the given order (sort them by index first; [`merge`] does).
-pub fn summarize_outputs(records: &[SampleRecord], boot: &BootstrapConfig) -> Result<Vec<Summary>> {
+pub fn summarize_outputs(records: &[SampleRecord], method: SigmaMethod) -> Result<Vec<Summary>> {
     let width = records.first().map_or(0, |r| r.outputs.len());
     if records.len() < 2 {
         return Err(StudyError::TooFewSamples { n: records.len() });
@@ -118,7 +197,7 @@ pub fn summarize_outputs(records: &[SampleRecord], boot: &BootstrapConfig) -> Re
     (0..width)
         .map(|j| {
             let column: Vec<f64> = records.iter().map(|r| r.outputs[j]).collect();
-            summarize(&column, boot)
+            summarize(&column, method)
         })
         .collect()
 }

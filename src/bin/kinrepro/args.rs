@@ -187,9 +187,19 @@ pub struct StudyArgs {
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub tilt_bounds: Option<Vec<f64>>,
     /// Also print (and add to the JSON) the share of each DOF's variance
-    /// due to each input (standardized regression coefficients, R^2).
+    /// due to each input (standardized regression coefficients, R^2) and
+    /// the first-order and total Sobol indices with their 90 % intervals.
     #[arg(long)]
     pub sensitivity: bool,
+    /// Sobol indices: base sample size N of the Saltelli matrices (N (d + 2)
+    /// extra seatings for d inputs).
+    #[arg(long, default_value_t = kinrepro::study::sensitivity::sobol::DEFAULT_BASE_SAMPLES)]
+    pub sobol_samples: usize,
+    /// LHS: number of independent replicates the samples are split into
+    /// (default 5, or the largest divisor of the samples in 2..=5); the
+    /// interval of sigma comes from their spread. 1: a single LHS, no interval.
+    #[arg(long)]
+    pub replicates: Option<usize>,
 }
 
 #[derive(Args)]

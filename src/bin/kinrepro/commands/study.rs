@@ -23,6 +23,8 @@ pub fn study(args: StudyArgs) -> Result<(), String> {
         offset_bounds,
         tilt_bounds,
         sensitivity,
+        sobol_samples,
+        replicates,
     } = args;
     if let Some(j) = jobs {
         rayon::ThreadPoolBuilder::new()
@@ -51,6 +53,7 @@ pub fn study(args: StudyArgs) -> Result<(), String> {
             SolverKind::Dynamic => kinrepro::solve::Method::Dynamic(Default::default()),
         },
         sensitivity,
+        replicates,
         variation: Variation {
             friction: vary.contains(&VaryKind::Friction),
             preload: vary.contains(&VaryKind::Preload),
@@ -79,6 +82,11 @@ pub fn study(args: StudyArgs) -> Result<(), String> {
         .iter()
         .map(|p| kinrepro::error::load_coupling(p).map_err(|e| e.to_string()))
         .collect::<Result<Vec<_>, _>>()?;
+    if sensitivity && sobol_samples < 2 {
+        return Err("--sobol-samples: the base sample size must be at least 2".into());
+    }
+    // Sobol indices need the whole design in one run (not per shard).
+    let sobol = sensitivity && opts.shard.count == 1;
     let mut total = 0;
     for c in &couplings {
         kinrepro::study::runner::check_options(c, &opts).map_err(|e| e.to_string())?;
@@ -88,6 +96,9 @@ pub fn study(args: StudyArgs) -> Result<(), String> {
             .range(d.n)
             .map_err(|e| format!("--shard: {e}"))?
             .len();
+        if sobol {
+            total += sobol_samples * (d.dims + 2);
+        }
     }
     let bar = if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
         let b = indicatif::ProgressBar::new(total as u64);
@@ -104,8 +115,19 @@ pub fn study(args: StudyArgs) -> Result<(), String> {
     let mut variants = Vec::new();
     for c in &couplings {
         let run = run_variant(c, &opts, &|| bar.inc(1)).map_err(|e| e.to_string())?;
-        variants
-            .push(VariantReport::new(c, run, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?);
+        let mut v =
+            VariantReport::new(c, run, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?;
+        if sobol {
+            let r = kinrepro::study::sensitivity::sobol_run::run_sobol(
+                c,
+                &opts,
+                sobol_samples,
+                &|| bar.inc(1),
+            )
+            .map_err(|e| e.to_string())?;
+            kinrepro::report::sensitivity::attach_sobol(&mut v, &r);
+        }
+        variants.push(v);
     }
     bar.finish_and_clear();
     let report = StudyReport::new(variants, opts.shard);

@@ -1,0 +1,114 @@
+//! `kinrepro study`: the interval method in every output, `--replicates`, corners without an
+//! interval, and `--sensitivity` with Sobol indices.
+
+mod common;
+use common::{kinrepro, scene};
+
+fn s1() -> String {
+    scene("01_maxwell_vgroove_steel.toml").display().to_string()
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let (ok, out, err) = kinrepro(args);
+    assert!(ok, "{err}");
+    serde_json::from_str(&out).unwrap()
+}
+
+#[test]
+fn default_lhs_is_replicated_and_says_so() {
+    let d = json(&["study", &s1(), "--format", "json"]);
+    let v = &d["variants"][0];
+    assert_eq!(v["design"]["replicates"], 5);
+    let p = &v["points"][0];
+    let method = p["sigma_interval_method"].as_str().unwrap();
+    assert!(
+        method.contains("replicated-lhs") && method.contains("5 replicates"),
+        "{method}"
+    );
+    let (lo, s, hi) = (
+        p["sigma_ci90_low"]["x_nm"].as_f64().unwrap(),
+        p["sigma"]["x_nm"].as_f64().unwrap(),
+        p["sigma_ci90_high"]["x_nm"].as_f64().unwrap(),
+    );
+    assert!(lo < s && s < hi, "{lo} {s} {hi}");
+    let (ok, table, _) = kinrepro(&["study", &s1()]);
+    assert!(
+        ok && table
+            .contains("90 % interval of sigma, by a method valid for the design: replicated-lhs")
+    );
+}
+
+#[test]
+fn replicates_that_do_not_fit_are_one_clear_error() {
+    for args in [
+        vec!["--samples", "23"],
+        vec!["--samples", "25", "--replicates", "4"],
+        vec!["--sampler", "mc", "--replicates", "5"],
+    ] {
+        let mut a = vec!["study".to_string(), s1()];
+        a.extend(args.iter().map(|s| s.to_string()));
+        let a: Vec<&str> = a.iter().map(String::as_str).collect();
+        let (ok, out, err) = kinrepro(&a);
+        assert!(!ok && out.is_empty(), "{args:?}");
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(
+            err.contains("--replicates") && err.contains("01_maxwell"),
+            "{err}"
+        );
+    }
+    // --replicates 1: a single LHS, printed without an interval.
+    let d = json(&[
+        "study",
+        &s1(),
+        "--samples",
+        "23",
+        "--replicates",
+        "1",
+        "--format",
+        "json",
+    ]);
+    assert!(d["variants"][0]["points"][0]["sigma_ci90_low"].is_null());
+}
+
+#[test]
+fn corners_have_no_interval() {
+    let d = json(&["study", &s1(), "--sampler", "corners", "--format", "json"]);
+    let p = &d["variants"][0]["points"][0];
+    assert!(p["sigma_ci90_low"].is_null() && p["sigma_ci90_high"].is_null());
+    assert!(
+        p["sigma_interval_method"]
+            .as_str()
+            .unwrap()
+            .contains("deterministic")
+    );
+    let (ok, table, _) = kinrepro(&["study", &s1(), "--sampler", "corners"]);
+    assert!(ok && table.contains("(no interval: none (corner design"));
+    let (ok, csv, _) = kinrepro(&["study", &s1(), "--sampler", "corners", "--format", "csv"]);
+    assert!(ok && csv.lines().nth(1).unwrap().ends_with(",,"), "{csv}");
+}
+
+#[test]
+fn sensitivity_prints_sobol_indices_with_their_base_size() {
+    let (ok, table, err) = kinrepro(&[
+        "study",
+        &s1(),
+        "--sampler",
+        "mc",
+        "--samples",
+        "100",
+        "--sensitivity",
+        "--sobol-samples",
+        "256",
+    ]);
+    assert!(ok, "{err}");
+    assert!(
+        table.contains("Sobol indices of the reseating scatter"),
+        "{table}"
+    );
+    assert!(
+        table.contains("base sample size N = 256, 2048 seatings"),
+        "{table}"
+    );
+    let (ok, _, err) = kinrepro(&["study", &s1(), "--sensitivity", "--sobol-samples", "1"]);
+    assert!(!ok && err.contains("--sobol-samples"), "{err}");
+}
