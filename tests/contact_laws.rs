@@ -392,3 +392,56 @@ proptest! {
         }
     }
 }
+
+/// sigma_z/p0 on the axis of an elliptical Hertz contact, closed form:
+/// -a b / sqrt((a^2 + z^2)(b^2 + z^2)) (Johnson 1985, §3.7, from the
+/// ellipsoidal potential; the circle gives -1/(1 + (z/a)^2), Johnson eq. 3.45,
+/// and the line contact -b/sqrt(b^2 + z^2), Johnson eq. 2.44).
+fn sigma_z_closed_form(kp: f64, zeta_b: f64) -> f64 {
+    let (a, b, z) = (1.0 / kp, 1.0, zeta_b);
+    -a * b / ((a * a + z * z) * (b * b + z * z)).sqrt()
+}
+
+#[test]
+fn elliptical_tau_max_matches_published_values() {
+    use kinrepro::contact::stress::{
+        circular_axis_shear, elliptical_axis_shear, elliptical_axis_stresses, max_shear_ratio,
+    };
+    // The quadrature on a circle against Johnson's closed form (eq. 3.45).
+    for nu in [0.2, 0.3, 0.45] {
+        for zeta in [0.2, 0.48, 1.0, 2.0] {
+            let q = elliptical_axis_shear(nu, 1.0, zeta);
+            let c = circular_axis_shear(nu, zeta);
+            assert!((q - c).abs() < 1e-9, "nu {nu} z {zeta}: {q} vs {c}");
+        }
+    }
+    // sigma_z against its closed form for several shapes and depths.
+    for kp in [1.0, 0.7, 0.436, 0.2, 0.05, 0.002] {
+        for zeta in [0.3, 0.654, 1.5] {
+            let s = elliptical_axis_stresses(0.3, kp, zeta)[2];
+            let c = sigma_z_closed_form(kp, zeta);
+            let tol = if kp < 0.01 { 1e-5 } else { 1e-8 };
+            assert!(rel(s, c) < tol, "b/a {kp} z {zeta}: {s} vs {c}");
+        }
+    }
+    // Published values: b/a = 1, nu = 0.3: 0.31 p0 at z = 0.48 a (Johnson
+    // 1985, §3.4); b/a -> 0: the line contact's 0.300 p0 at z = 0.786 b
+    // (Johnson §4.3; the in-plane pair, independent of nu; for nu < 0.25 the
+    // out-of-plane pair exceeds it near the surface: (1 - 2 nu)/2 at z = 0);
+    // b/a = 0.436 (the 5 mm ball on the 2 mm
+    // steel pin): 0.325 p0 at z = 0.654 b (issue 13).
+    let (t, z) = max_shear_ratio(0.3, 1.0);
+    assert!(rel(t, 0.31) < 5e-3 && rel(z, 0.48) < 5e-3, "{t} at {z}");
+    for nu in [0.27, 0.3, 0.45] {
+        let (t, z) = max_shear_ratio(nu, 0.002);
+        assert!(
+            rel(t, 0.300) < 5e-3 && rel(z, 0.786) < 5e-3,
+            "nu {nu}: {t} at {z}"
+        );
+    }
+    let (t, _) = max_shear_ratio(0.1, 0.002);
+    assert!(t > 0.4, "nu 0.1: the out-of-plane pair governs: {t}");
+    let (t, z) = max_shear_ratio(0.3, 0.436);
+    assert!(rel(t, 0.325) < 5e-3 && rel(z, 0.654) < 5e-3, "{t} at {z}");
+    println!("tau_max/p0 at b/a = 0.436: {t:.5} at z = {z:.4} b");
+}

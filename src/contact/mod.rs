@@ -11,6 +11,7 @@
 pub mod cattaneo;
 pub mod elliptic;
 pub mod hertz;
+pub mod quadrature;
 pub mod stress;
 pub mod tangential;
 
