@@ -10,7 +10,7 @@ use kinrepro::contact::{
     TangentialState,
 };
 use kinrepro::material::{Material, builtin_names, effective_modulus};
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 use proptest::prelude::*;
 
 fn steel() -> Material {
@@ -157,7 +157,7 @@ fn no_force_in_tension() {
     assert_eq!(law.force(-1e-9), 0.0);
     assert_eq!(law.force(0.0), 0.0);
     let st = TangentialState::new(Vector3::z());
-    for tl in [TangentialLaw::Coulomb, TangentialLaw::CattaneoMindlin] {
+    for tl in TangentialLaw::ALL {
         let r = st.update(tl, &input(-1.0, Vector3::new(1e-6, 0.0, 0.0), 0.5, 0.4));
         assert_eq!(r.force, Vector3::zeros());
     }
@@ -165,14 +165,16 @@ fn no_force_in_tension() {
 
 /// A contact with 10 N normal load, k_t = 1e7 N/m, contact radius 50 um.
 fn input(fn_: f64, du: Vector3<f64>, mu_s: f64, mu_d: f64) -> TangentialInput {
+    let plane = Matrix3::identity() - Vector3::z() * Vector3::z().transpose();
     TangentialInput {
         normal: Vector3::z(),
         du,
         normal_force: fn_,
-        stiffness: 8.0 * 25e9 * 50e-6,
-        d_stiffness_d_fn: 0.0,
+        stiffness: 8.0 * 25e9 * 50e-6 * plane,
+        d_stiffness_d_fn: Matrix3::zeros(),
         contact_radius: 50e-6,
         g_star: 25e9,
+        mindlin_shape: plane,
         friction: Friction { mu_s, mu_d },
     }
 }
@@ -242,41 +244,6 @@ fn coulomb_cycle_dissipates_the_closed_form_energy() {
 }
 
 #[test]
-fn cattaneo_mindlin_follows_the_virgin_curve_and_mindlin_deresiewicz_loop() {
-    let (fn_, mu) = (10.0, 0.5);
-    let (g, a) = (25e9, 50e-6);
-    let delta_star = 3.0 * mu * fn_ / (16.0 * g * a);
-    let steps = 20000;
-    let q_star: f64 = 0.6; // amplitude Q*/(mu P)
-    let amp = delta_star * (1.0 - (1.0 - q_star).powf(2.0 / 3.0));
-    let hist = drive(
-        TangentialLaw::CattaneoMindlin,
-        &cycle_path(amp, steps, 2),
-        fn_,
-        mu,
-        0.8 * mu,
-    );
-    // Virgin curve: Q = mu P (1 - (1 - s/delta*)^1.5) (Johnson eq. 7.48).
-    for &(u, q) in &hist[1..=steps] {
-        let expect = mu * fn_ * (1.0 - (1.0 - u / delta_star).powf(1.5));
-        assert!((q - expect).abs() < 1e-12 * mu * fn_);
-    }
-    assert!(rel(hist[steps].1, q_star * mu * fn_) < 1e-12);
-    // Initial slope = Mindlin 8 G* a.
-    let slope0 = hist[1].1 / hist[1].0;
-    assert!(rel(slope0, 8.0 * g * a) < 1e-3);
-    // Loop energy (Mindlin & Deresiewicz 1953; Johnson eq. 7.60):
-    // W = 9 mu^2 P^2/(10 a G*) [1 - (1-q)^(5/3) - 5q/6 (1 + (1-q)^(2/3))].
-    let q = q_star;
-    let expect = 9.0 * mu * mu * fn_ * fn_ / (10.0 * a * g)
-        * (1.0 - (1.0 - q).powf(5.0 / 3.0) - 5.0 * q / 6.0 * (1.0 + (1.0 - q).powf(2.0 / 3.0)));
-    let w = last_cycle_work(&hist, steps);
-    assert!(rel(w, expect) < 1e-4, "W {w:e} vs {expect:e}");
-    // The loop closes (Masing): back at +amp the force is Q* again.
-    assert!(rel(hist.last().unwrap().1, q_star * mu * fn_) < 1e-9);
-}
-
-#[test]
 fn consistent_tangents_match_finite_differences() {
     let old_slip = {
         let mut st = TangentialState::new(Vector3::z());
@@ -289,17 +256,22 @@ fn consistent_tangents_match_finite_differences() {
         st
     };
     let old_stick = TangentialState::new(Vector3::z());
-    for law in [TangentialLaw::Coulomb, TangentialLaw::CattaneoMindlin] {
+    for law in TangentialLaw::ALL {
         for (old, du) in [
             (old_stick, Vector3::new(1e-7, 3e-8, 0.0)),  // stick
-            (old_stick, Vector3::new(2e-7, -4e-7, 0.0)), // partial slip (CM)
+            (old_stick, Vector3::new(2e-7, -4e-7, 0.0)), // partial slip (MD)
             (old_slip, Vector3::new(2e-6, 1e-6, 0.0)),   // slip
         ] {
             let mut inp = input(10.0, du, 0.5, 0.4);
             inp.d_stiffness_d_fn = inp.stiffness / 30.0;
+            // Mindlin-Deresiewicz starts a fresh row at this load.
+            let old = &TangentialState {
+                normal_force: 10.0,
+                ..old
+            };
             let r = old.update(law, &inp);
             for j in 0..2 {
-                let h = 1e-12;
+                let h = 1e-13;
                 let mut ip = inp;
                 ip.du[j] += h;
                 let mut im = inp;
@@ -444,4 +416,160 @@ fn elliptical_tau_max_matches_published_values() {
     let (t, z) = max_shear_ratio(0.3, 0.436);
     assert!(rel(t, 0.325) < 5e-3 && rel(z, 0.654) < 5e-3, "{t} at {z}");
     println!("tau_max/p0 at b/a = 0.436: {t:.5} at z = {z:.4} b");
+}
+
+// ---- Mindlin-Deresiewicz (method of dimensionality reduction) under force
+// control, through `contact::history::drive`, against closed forms. ----
+
+use kinrepro::contact::history::{LoadStep, drive as drive_history};
+
+/// 5 mm steel ball on a steel plane: a circular contact.
+fn steel_ball_on_plane() -> kinrepro::contact::ContactLaw {
+    ContactPair {
+        shape: ContactShape::SpherePlane,
+        radius1: 5e-3,
+        radius2: None,
+        material1: steel(),
+        material2: steel(),
+    }
+    .law()
+    .unwrap()
+}
+
+/// Hertz radius a = (3 P R / (4 E*))^(1/3) and G* = 1 / sum((2 - nu)/G),
+/// computed here from the material constants (Johnson eqs. 4.22, 7.40).
+fn circle_constants(p: f64) -> (f64, f64) {
+    let (e, nu) = (210e9_f64, 0.3_f64);
+    let e_star = 1.0 / (2.0 * (1.0 - nu * nu) / e);
+    let g = e / (2.0 * (1.0 + nu));
+    let g_star = 1.0 / (2.0 * (2.0 - nu) / g);
+    ((3.0 * p * 5e-3 / (4.0 * e_star)).cbrt(), g_star)
+}
+
+fn steps(rows: &[(f64, f64)]) -> Vec<LoadStep> {
+    rows.iter()
+        .map(|&(p, q)| LoadStep {
+            normal_force: p,
+            tangential_force: [q, 0.0],
+        })
+        .collect()
+}
+
+const MU: Friction = Friction {
+    mu_s: 0.5,
+    mu_d: 0.4,
+};
+
+#[test]
+fn cattaneo_ramp_matches_the_closed_form_at_every_step() {
+    let law = steel_ball_on_plane();
+    let p = 10.0;
+    let (a, g) = circle_constants(p);
+    let n = 200;
+    // Row 0 applies P; then Q ramps at constant P.
+    let rows: Vec<(f64, f64)> = (0..=n)
+        .map(|i| (p, 0.9 * MU.mu_s * p * i as f64 / n as f64))
+        .collect();
+    let out = drive_history(&law, TangentialLaw::MindlinDeresiewicz, MU, &steps(&rows)).unwrap();
+    // Cattaneo (1938), Mindlin (1949); Johnson eq. 7.49:
+    // s = 3 mu P / (16 G* a) [1 - (1 - Q/(mu P))^(2/3)].
+    let mut worst: f64 = 0.0;
+    for st in &out[1..] {
+        let q = st.load.tangential_force[0] / (MU.mu_s * p);
+        let s = 3.0 * MU.mu_s * p / (16.0 * g * a) * (1.0 - (1.0 - q).powf(2.0 / 3.0));
+        worst = worst.max(rel(st.displacement[0], s));
+        if std::env::var("DBG").is_ok() {
+            println!("q {q:.4} err {:.3e}", st.displacement[0] / s - 1.0);
+        }
+        assert_eq!(st.displacement[1], 0.0);
+        assert_eq!(st.slip, SlipState::Stick);
+    }
+    assert!(worst < 5e-3, "worst relative error {worst:e}");
+    println!("Cattaneo ramp: worst relative error {worst:.2e}");
+}
+
+/// Work of Q over the closed load path, trapezoidal in s.
+fn loop_work(out: &[kinrepro::contact::history::HistoryStep]) -> f64 {
+    out.windows(2)
+        .map(|w| {
+            0.5 * (w[0].load.tangential_force[0] + w[1].load.tangential_force[0])
+                * (w[1].displacement[0] - w[0].displacement[0])
+        })
+        .sum::<f64>()
+        .abs()
+}
+
+#[test]
+fn masing_loop_dissipates_the_mindlin_deresiewicz_energy() {
+    let law = steel_ball_on_plane();
+    let p = 10.0;
+    let (a, g) = circle_constants(p);
+    let n = 400;
+    for q_star in [0.3, 0.6, 0.9] {
+        let qs = q_star * MU.mu_s * p;
+        let mut rows: Vec<(f64, f64)> = (0..=n).map(|i| (p, qs * i as f64 / n as f64)).collect();
+        let cycle: Vec<(f64, f64)> = (1..=2 * n)
+            .map(|i| (p, qs * (1.0 - i as f64 / n as f64)))
+            .chain((1..=2 * n).map(|i| (p, qs * (-1.0 + i as f64 / n as f64))))
+            .collect();
+        rows.extend(&cycle);
+        rows.extend(&cycle);
+        let out =
+            drive_history(&law, TangentialLaw::MindlinDeresiewicz, MU, &steps(&rows)).unwrap();
+        let last = &out[out.len() - 4 * n - 1..];
+        // Mindlin & Deresiewicz (1953); Johnson eq. 7.60:
+        // W = 9 mu^2 P^2/(10 a G*) [1 - (1-q)^(5/3) - 5q/6 (1 + (1-q)^(2/3))].
+        let (mu, q) = (MU.mu_s, q_star);
+        let expect = 9.0 * mu * mu * p * p / (10.0 * a * g)
+            * (1.0 - (1.0 - q).powf(5.0 / 3.0) - 5.0 * q / 6.0 * (1.0 + (1.0 - q).powf(2.0 / 3.0)));
+        let w = loop_work(last);
+        assert!(rel(w, expect) < 1e-2, "Q*/muP {q}: W {w:e} vs {expect:e}");
+        println!(
+            "Masing loop Q*/muP = {q}: W/W_MD - 1 = {:.2e}",
+            w / expect - 1.0
+        );
+        // The loop closes (Masing): the second cycle ends where the first did.
+        let s1 = out[out.len() - 4 * n - 1].displacement[0];
+        let s2 = out.last().unwrap().displacement[0];
+        assert!((s2 - s1).abs() < 1e-3 * s1.abs(), "{s1:e} {s2:e}");
+    }
+}
+
+#[test]
+fn proportional_loading_has_the_mindlin_deresiewicz_compliance() {
+    let law = steel_ball_on_plane();
+    let p_max = 20.0;
+    // Geometric load steps from 1e-6 P_max: the first step (P, then Q) is a
+    // Cattaneo loading whose error decays as (P_1/P)^(2/3), below 1e-3 from
+    // P = 1e-2 P_max on, where the check starts.
+    let n = 900;
+    for lambda in [0.1, 0.4] {
+        let rows: Vec<(f64, f64)> = (0..=n)
+            .map(|i| p_max * 1e-6_f64.powf(1.0 - i as f64 / n as f64))
+            .map(|p| (p, lambda * p))
+            .collect();
+        let out =
+            drive_history(&law, TangentialLaw::MindlinDeresiewicz, MU, &steps(&rows)).unwrap();
+        let mut worst: f64 = 0.0;
+        for st in out.iter().filter(|st| st.load.normal_force >= 1e-2 * p_max) {
+            let (p, q) = (st.load.normal_force, st.load.tangential_force[0]);
+            let (a, g) = circle_constants(p);
+            // Mindlin & Deresiewicz (1953); Johnson §7.3: dQ/dP = lambda < mu
+            // from zero: no slip, s = 1.5 Q / (8 G* a).
+            let md = 1.5 * q / (8.0 * g * a);
+            worst = worst.max(rel(st.displacement[0], md));
+            // The old law: Cattaneo's curve with the current P on the total s,
+            // s = 3 mu P/(16 G* a) [1 - (1 - lambda/mu)^(2/3)], 1/1.5 of it at small lambda.
+            let old = 3.0 * MU.mu_s * p / (16.0 * g * a)
+                * (1.0 - (1.0 - lambda / MU.mu_s).powf(2.0 / 3.0));
+            assert!(
+                st.displacement[0] / old > 1.2,
+                "{} vs old {old}",
+                st.displacement[0]
+            );
+            assert_eq!(st.slip, SlipState::Stick);
+        }
+        assert!(worst < 1e-2, "lambda {lambda}: worst {worst:e}");
+        println!("proportional loading lambda = {lambda}: worst relative error {worst:.2e}");
+    }
 }

@@ -1,23 +1,18 @@
-//! Tangential contact: Mindlin's elastic stiffness and the history-dependent
-//! Coulomb stick/slip law (return mapping with its consistent tangent).
+//! Tangential contact: the types shared by the tangential laws, the
+//! dispatcher, and the history-dependent Coulomb stick/slip law (return
+//! mapping with its consistent tangent). The Mindlin-Deresiewicz partial-slip
+//! law lives in `mindlin_deresiewicz` and shares only the types.
 //!
-//! Mindlin (1949); Johnson, *Contact Mechanics* (1985), §7.2:
-//! ```text
-//! k_t = 8 G* a                      (circle, radius a, no slip)
-//! k_t = 8 G* sqrt(a b)              (ellipse: equivalent circle of equal area)
-//! ```
-//! For an ellipse the exact Mindlin compliance depends on the direction of
-//! the load (it differs by at most ~15 % between the axes for the pin
-//! contacts of the bundled scenes); kinrepro uses the isotropic
-//! equal-area circle so that the stick/slip law stays isotropic. Every
-//! elliptical contact of the bundled scenes slides during seating, where k_t
-//! does not enter the result (MODEL.md §3).
+//! Elastic stiffness: Mindlin's exact 2x2 tangential stiffness of the contact
+//! ellipse (`contact::mindlin`), as the 3x3 tensor
+//! K_t = k_major e1 e1^T + k_minor e2 e2^T in the tangent plane (e1 the major
+//! axis; K_t = 8 G* a (I - n n^T) for a circle).
 //!
 //! Coulomb return mapping (Simo & Hughes, *Computational Inelasticity*,
 //! 1998, §2.2 applied to the tangential force; Wriggers, *Computational
 //! Contact Mechanics*, 2006, §5.2):
 //! ```text
-//! F_trial = R F_old + k_t du_t           (R rotates the old force into the new tangent plane)
+//! F_trial = R F_old + K_t du_t           (R rotates the old force into the new tangent plane)
 //! stick  if |F_trial| <= mu F_n,   mu = mu_s (was sticking) or mu_d (was sliding)
 //! slip   otherwise: F = mu_d F_n F_trial / |F_trial|
 //! ```
@@ -32,23 +27,58 @@
 use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
 
-use super::cattaneo;
+use super::mindlin_deresiewicz::{self, SpringRow};
 
-/// Mindlin's tangential stiffness k_t = 8 G* sqrt(a b) [N/m].
-pub fn mindlin_stiffness(g_star: f64, semi_axes: [f64; 2]) -> f64 {
-    8.0 * g_star * (semi_axes[0] * semi_axes[1]).sqrt()
-}
-
-/// Which tangential law a contact follows.
+/// Which tangential law a contact follows (scene key `tangential_law`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
+#[serde(rename_all = "kebab-case", try_from = "String")]
 pub enum TangentialLaw {
     /// Linear Mindlin spring with Coulomb stick/slip (the paper's model).
     #[default]
     Coulomb,
-    /// Cattaneo-Mindlin partial slip (stick core, slip annulus) with
-    /// Masing unloading, and Coulomb gross slip.
-    CattaneoMindlin,
+    /// Mindlin-Deresiewicz partial slip for any P-Q history (stick core,
+    /// slip annulus, Masing unloading), by the method of dimensionality
+    /// reduction; Coulomb gross slip with the same static-to-dynamic switch.
+    MindlinDeresiewicz,
+}
+
+impl TangentialLaw {
+    pub const ALL: [TangentialLaw; 2] = [TangentialLaw::Coulomb, TangentialLaw::MindlinDeresiewicz];
+
+    /// Kebab-case name, as in scene files and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            TangentialLaw::Coulomb => "coulomb",
+            TangentialLaw::MindlinDeresiewicz => "mindlin-deresiewicz",
+        }
+    }
+}
+
+impl std::str::FromStr for TangentialLaw {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        if s == "cattaneo-mindlin" {
+            return Err(
+                "tangential law `cattaneo-mindlin` was removed (it applied the \
+                 constant-load Cattaneo curve to a changing normal load, 1.5x too stiff \
+                 under proportional loading): use `mindlin-deresiewicz`"
+                    .to_string(),
+            );
+        }
+        TangentialLaw::ALL
+            .into_iter()
+            .find(|l| l.name() == s)
+            .ok_or_else(|| {
+                format!("unknown tangential law `{s}` (expected coulomb or mindlin-deresiewicz)")
+            })
+    }
+}
+
+impl TryFrom<String> for TangentialLaw {
+    type Error = String;
+    fn try_from(s: String) -> Result<Self, String> {
+        s.parse()
+    }
 }
 
 /// Static and dynamic friction coefficients of one contact.
@@ -77,12 +107,8 @@ pub struct TangentialState {
     pub force: Vector3<f64>,
     /// Gross sliding at the end of the last step.
     pub sliding: bool,
-    /// Cattaneo-Mindlin: force at the last load reversal [N].
-    pub reversal_force: Vector3<f64>,
-    /// Cattaneo-Mindlin: tangential displacement since the last reversal [m].
-    pub since_reversal: Vector3<f64>,
-    /// Cattaneo-Mindlin: Masing factor, 1 on the virgin curve, 2 after a reversal.
-    pub masing: f64,
+    /// Mindlin-Deresiewicz: the row of springs (empty for Coulomb).
+    pub row: SpringRow,
     /// Normal force when this state was committed [N] (the solvers integrate
     /// k_t at the mean normal force of an increment, see `solve::contact_layer`).
     pub normal_force: f64,
@@ -111,12 +137,16 @@ pub struct TangentialInput {
     pub du: Vector3<f64>,
     /// Current normal force [N].
     pub normal_force: f64,
-    /// Current Mindlin stiffness k_t [N/m] and its derivative dk_t/dF_n [1/m].
-    pub stiffness: f64,
-    pub d_stiffness_d_fn: f64,
-    /// Current semi-axes (Cattaneo-Mindlin uses sqrt(a b)) and G* [Pa].
+    /// Mindlin's tangential stiffness tensor K_t [N/m] (in the tangent
+    /// plane) and its derivative dK_t/dF_n [1/m].
+    pub stiffness: Matrix3<f64>,
+    pub d_stiffness_d_fn: Matrix3<f64>,
+    /// Mindlin-Deresiewicz: equal-area radius sqrt(a b) at `normal_force`
+    /// [m], G* [Pa] and the shape C = K_t / (8 G* sqrt(a b)) (I - n n^T
+    /// for a circle).
     pub contact_radius: f64,
     pub g_star: f64,
+    pub mindlin_shape: Matrix3<f64>,
     pub friction: Friction,
 }
 
@@ -127,9 +157,7 @@ impl TangentialState {
             normal,
             force: Vector3::zeros(),
             sliding: false,
-            reversal_force: Vector3::zeros(),
-            since_reversal: Vector3::zeros(),
-            masing: 1.0,
+            row: SpringRow::default(),
             normal_force: 0.0,
         }
     }
@@ -145,8 +173,10 @@ impl TangentialState {
         TangentialState {
             normal: *normal,
             force: rot.apply(&self.force),
-            reversal_force: rot.apply(&self.reversal_force),
-            since_reversal: rot.apply(&self.since_reversal),
+            row: SpringRow {
+                frame: rot.apply(&self.row.frame),
+                ..self.row
+            },
             ..*self
         }
     }
@@ -169,7 +199,9 @@ impl TangentialState {
         let du = proj * input.du;
         match law {
             TangentialLaw::Coulomb => coulomb(&old, &proj, &du, input),
-            TangentialLaw::CattaneoMindlin => cattaneo::update(&old, &proj, &du, input),
+            TangentialLaw::MindlinDeresiewicz => {
+                mindlin_deresiewicz::update(&old, &proj, &du, input)
+            }
         }
     }
 }
@@ -195,21 +227,21 @@ fn coulomb(
                 ..*old
             },
             slip: SlipState::Stick,
-            d_force_d_du: input.stiffness * proj,
+            d_force_d_du: input.stiffness,
             d_force_d_fn: input.d_stiffness_d_fn * du,
         }
     } else {
-        slide_response(old, proj, &trial, input.stiffness, du, input)
+        slide_response(old, proj, &trial, &input.stiffness, du, input)
     }
 }
 
 /// Gross sliding: F = mu_d F_n t, t = F_trial/|F_trial|, with the tangent
-/// dF/d(du) = mu_d F_n k / |F_trial| (P - t t^T), k the trial stiffness.
-pub(super) fn slide_response(
+/// dF/d(du) = mu_d F_n / |F_trial| (P - t t^T) K, K the trial stiffness.
+fn slide_response(
     old: &TangentialState,
     proj: &Matrix3<f64>,
     trial: &Vector3<f64>,
-    k: f64,
+    k: &Matrix3<f64>,
     du: &Vector3<f64>,
     input: &TangentialInput,
 ) -> TangentialResponse {
@@ -224,13 +256,10 @@ pub(super) fn slide_response(
         state: TangentialState {
             force,
             sliding: true,
-            reversal_force: force,
-            since_reversal: Vector3::zeros(),
-            masing: 2.0,
             ..*old
         },
         slip: SlipState::Slip,
-        d_force_d_du: mu_d * fn_ * k * dir_tangent,
+        d_force_d_du: mu_d * fn_ * dir_tangent * k,
         d_force_d_fn: mu_d * t + mu_d * fn_ * (dir_tangent * (input.d_stiffness_d_fn * du)),
     }
 }
