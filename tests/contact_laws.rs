@@ -573,3 +573,202 @@ fn proportional_loading_has_the_mindlin_deresiewicz_compliance() {
         println!("proportional loading lambda = {lambda}: worst relative error {worst:.2e}");
     }
 }
+
+/// Mindlin's compliance along (`along_major`) or across the major axis of an
+/// ellipse with semi-axes a = 1 >= b = kp, per body, by the trapezoidal rule
+/// (periodic integrand: spectral convergence) over the Cerruti kernel:
+/// C = 1/(8 pi a b G) int_0^2pi R(theta) [(1 - nu) + nu cos^2(theta)] dtheta
+/// (sin^2 across), R(theta) = a b / sqrt(b^2 cos^2 + a^2 sin^2) (MODEL.md §2;
+/// Johnson 1985 §7.2 with Cerruti's point-force displacement, eq. 3.86a).
+fn cerruti_compliance(m: &Material, kp: f64, along_major: bool) -> f64 {
+    let (a, b) = (1.0, kp);
+    let g = m.youngs_modulus / (2.0 * (1.0 + m.poisson_ratio));
+    let nu = m.poisson_ratio;
+    let n = 20_000;
+    let sum: f64 = (0..n)
+        .map(|i| {
+            let th = 2.0 * PI * i as f64 / n as f64;
+            let (s, c) = th.sin_cos();
+            let r = a * b / (b * b * c * c + a * a * s * s).sqrt();
+            let dir = if along_major { c * c } else { s * s };
+            r * ((1.0 - nu) + nu * dir)
+        })
+        .sum();
+    sum * (2.0 * PI / n as f64) / (8.0 * PI * a * b * g)
+}
+
+#[test]
+fn elliptical_tangential_stiffness_matches_cerruti_quadrature() {
+    use kinrepro::contact::mindlin_axis_coefficients;
+    let sic = Material::builtin("silicon-carbide").unwrap();
+    for (m1, m2) in [(steel(), steel()), (steel(), sic.clone())] {
+        for kp in [1.0, 0.7, 0.436, 0.2] {
+            let k = mindlin_axis_coefficients(&m1, &m2, kp); // a = 1
+            for (axis, along) in [(0, true), (1, false)] {
+                let c = cerruti_compliance(&m1, kp, along) + cerruti_compliance(&m2, kp, along);
+                assert!(
+                    rel(k[axis], 1.0 / c) < 5e-3,
+                    "b/a {kp} axis {axis}: {} vs {}",
+                    k[axis],
+                    1.0 / c
+                );
+                assert!(
+                    rel(k[axis], 1.0 / c) < 1e-9,
+                    "b/a {kp}: closed form vs quadrature"
+                );
+            }
+            if kp == 1.0 {
+                // Circle: 8 G* a, 1/G* = sum (2 - nu)/G (Mindlin 1949).
+                let cg = |m: &Material| {
+                    (2.0 - m.poisson_ratio) * 2.0 * (1.0 + m.poisson_ratio) / m.youngs_modulus
+                };
+                let k8 = 8.0 / (cg(&m1) + cg(&m2));
+                assert!(rel(k[0], k8) < 1e-12 && rel(k[1], k8) < 1e-12);
+            }
+        }
+    }
+    // The steel pin contact (5 mm ball, 2 mm pin): across the pin (minor
+    // axis) about 8 % and along it about 0.8 % stiffer than 8 G* sqrt(a b).
+    let e = ContactPair {
+        shape: ContactShape::SphereCylinder,
+        radius1: 5e-3,
+        radius2: Some(2e-3),
+        material1: steel(),
+        material2: steel(),
+    }
+    .evaluate(6.5)
+    .unwrap();
+    let [a, b] = e.semi_axes_m;
+    let k_eq = 8.0 * e.effective_shear_modulus_pa * (a * b).sqrt();
+    let (major, minor) = (
+        e.tangential_stiffness_major_n_per_m / k_eq,
+        e.tangential_stiffness_minor_n_per_m / k_eq,
+    );
+    assert!((1.075..1.09).contains(&minor), "{minor}");
+    assert!((1.004..1.012).contains(&major), "{major}");
+    println!("steel pin: k_minor/k_eq = {minor:.4}, k_major/k_eq = {major:.4}");
+}
+
+/// A second, independent MDR for a circle and a tangential load of fixed
+/// direction: 4000 scalar springs on a fixed grid up to the largest contact
+/// radius, 4 sub-steps per row (P and Q linear in between), each a normal
+/// update (springs leaving the contact lose their displacement, springs over
+/// their limit slide to it) and a bisection on the rigid displacement for
+/// the prescribed Q (Popov & Hess 2015, §7.2).
+fn reference_mdr(rows: &[(f64, f64)], mu: f64) -> Vec<f64> {
+    let p_max = rows.iter().map(|r| r.0).fold(0.0, f64::max);
+    let (a_max, _) = circle_constants(p_max);
+    let m = 4000;
+    let dx = 1.0001 * a_max / m as f64;
+    let mut u = vec![0.0_f64; m];
+    let mut s = 0.0;
+    let mut prev = (rows[0].0, 0.0);
+    let mut out = Vec::new();
+    for &row in rows {
+        for k in 1..=4 {
+            let f = k as f64 / 4.0;
+            let (p, q) = (prev.0 + f * (row.0 - prev.0), prev.1 + f * (row.1 - prev.1));
+            let (a, g) = circle_constants(p);
+            let delta_star = 3.0 * mu * p / (16.0 * g * a);
+            let lim: Vec<f64> = (0..m)
+                .map(|i| {
+                    let x = (i as f64 + 0.5) * dx;
+                    if x < a {
+                        delta_star * (1.0 - x * x / (a * a))
+                    } else {
+                        -1.0
+                    }
+                })
+                .collect();
+            for i in 0..m {
+                u[i] = if lim[i] < 0.0 {
+                    0.0
+                } else {
+                    u[i].clamp(-lim[i], lim[i])
+                };
+            }
+            let force = |ds: f64| -> f64 {
+                8.0 * g
+                    * dx
+                    * (0..m)
+                        .filter(|&i| lim[i] >= 0.0)
+                        .map(|i| (u[i] + ds).clamp(-lim[i], lim[i]))
+                        .sum::<f64>()
+            };
+            let (mut lo, mut hi) = (-4.0 * delta_star, 4.0 * delta_star);
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if force(mid) < q { lo = mid } else { hi = mid }
+            }
+            let ds = 0.5 * (lo + hi);
+            for i in 0..m {
+                if lim[i] >= 0.0 {
+                    u[i] = (u[i] + ds).clamp(-lim[i], lim[i]);
+                }
+            }
+            s += ds;
+        }
+        prev = row;
+        out.push(s);
+    }
+    out
+}
+
+#[test]
+fn growing_and_shrinking_contact_agrees_with_a_fine_mdr_reference() {
+    let law = steel_ball_on_plane();
+    let seg = |from: (f64, f64), to: (f64, f64), n: usize| -> Vec<(f64, f64)> {
+        (1..=n)
+            .map(|i| {
+                let f = i as f64 / n as f64;
+                (from.0 + f * (to.0 - from.0), from.1 + f * (to.1 - from.1))
+            })
+            .collect()
+    };
+    // P first, then: Q grows with P (a grows), Q to 0.8 mu P at constant P,
+    // P falls with Q (a shrinks, the edge slips), Q reverses, P and Q grow again.
+    let mut rows = vec![(0.5, 0.0)];
+    let pts = [
+        (0.5, 0.0),
+        (10.0, 2.0),
+        (10.0, 4.0),
+        (6.0, 2.0),
+        (6.0, -2.2),
+        (12.0, 3.0),
+    ];
+    for w in pts.windows(2) {
+        rows.extend(seg(w[0], w[1], 100));
+    }
+    let out = drive_history(&law, TangentialLaw::MindlinDeresiewicz, MU, &steps(&rows)).unwrap();
+    let reference = reference_mdr(&rows, MU.mu_s);
+    let scale = reference.iter().fold(0.0_f64, |m, s| m.max(s.abs()));
+    let worst = out
+        .iter()
+        .zip(&reference)
+        .map(|(o, r)| (o.displacement[0] - r).abs() / scale)
+        .fold(0.0, f64::max);
+    assert!(worst < 1e-2, "worst |s - s_ref| / max|s_ref| = {worst:e}");
+    println!("growing/shrinking history: worst |s - s_ref| / max|s_ref| = {worst:.2e}");
+}
+
+#[test]
+fn the_removed_cattaneo_mindlin_law_is_a_clear_scene_error() {
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("scenes/01_maxwell_vgroove_steel.toml"),
+    )
+    .unwrap()
+    .replace(
+        "tangential_law = \"coulomb\"",
+        "tangential_law = \"cattaneo-mindlin\"",
+    );
+    let e = kinrepro::scene::Scene::parse(&text, "test.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("test.toml") && e.contains("mindlin-deresiewicz"),
+        "{e}"
+    );
+    let ok = text.replace("\"cattaneo-mindlin\"", "\"mindlin-deresiewicz\"");
+    assert!(kinrepro::scene::Scene::parse(&ok, "test.toml").is_ok());
+}

@@ -164,3 +164,76 @@ fn solve_step(
     }
     Err(residual)
 }
+
+/// The header a history file must start with.
+pub const HISTORY_HEADER: [&str; 3] = ["P_N", "Qx_N", "Qy_N"];
+
+/// One parsed history row and the file line it came from (1-based).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HistoryRow {
+    pub line: usize,
+    pub load: LoadStep,
+}
+
+/// Parse a history CSV: the header `P_N,Qx_N,Qy_N`, then one row per step
+/// (P > 0 and Q finite, in N); blank lines and lines starting with `#` are
+/// skipped. Errors name `file`, the line and the column.
+pub fn parse_history_csv(text: &str, file: &str) -> Result<Vec<HistoryRow>, String> {
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l.trim()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
+    let Some((hline, header)) = lines.next() else {
+        return Err(format!(
+            "{file}: empty history (expected the header `{}`)",
+            HISTORY_HEADER.join(",")
+        ));
+    };
+    let cols: Vec<&str> = header.split(',').map(str::trim).collect();
+    if cols != HISTORY_HEADER {
+        return Err(format!(
+            "{file}:{hline}: header `{header}` must be `{}`",
+            HISTORY_HEADER.join(",")
+        ));
+    }
+    let mut rows = Vec::new();
+    for (line, l) in lines {
+        let fields: Vec<&str> = l.split(',').map(str::trim).collect();
+        if fields.len() != 3 {
+            return Err(format!(
+                "{file}:{line}: {} fields, expected 3 ({})",
+                fields.len(),
+                HISTORY_HEADER.join(",")
+            ));
+        }
+        let mut v = [0.0; 3];
+        for (k, f) in fields.iter().enumerate() {
+            let col = HISTORY_HEADER[k];
+            v[k] = f
+                .parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| {
+                    format!("{file}:{line}: column {col}: `{f}` is not a finite number")
+                })?;
+        }
+        if v[0] <= 0.0 {
+            return Err(format!(
+                "{file}:{line}: column P_N: {} N: the normal load must be positive",
+                v[0]
+            ));
+        }
+        rows.push(HistoryRow {
+            line,
+            load: LoadStep {
+                normal_force: v[0],
+                tangential_force: [v[1], v[2]],
+            },
+        });
+    }
+    if rows.is_empty() {
+        return Err(format!("{file}: no rows after the header"));
+    }
+    Ok(rows)
+}

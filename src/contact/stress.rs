@@ -98,7 +98,8 @@ pub fn elliptical_axis_stresses(nu: f64, kp: f64, zeta: f64) -> [f64; 3] {
     let two_pi = 2.0 * PI;
     let mut panels = Vec::new();
     let mut lo = 0.0;
-    let mut hi = 0.5 * kp.atan();
+    // (t1 >= 1e-4: at most ~10 panels; past a/b ~ 5000 the rule is coarser.)
+    let mut hi = (0.5 * kp.atan()).max(1e-4);
     while lo < 0.5 * PI {
         panels.push((lo, hi.min(0.5 * PI)));
         lo = hi;
@@ -155,6 +156,22 @@ pub fn max_shear_ratio(nu: f64, axis_ratio: f64) -> (f64, f64) {
     if axis_ratio >= 1.0 - 1e-12 {
         return circular_max_shear(nu);
     }
+    // A coupling repeats the same pair: remember results per (nu, b/a).
+    thread_local! {
+        static DONE: std::cell::RefCell<std::collections::HashMap<(u64, u64), (f64, f64)>> =
+            Default::default();
+    }
+    let key = (nu.to_bits(), axis_ratio.to_bits());
+    if let Some(r) = DONE.with(|d| d.borrow().get(&key).copied()) {
+        return r;
+    }
+    let r = elliptical_max_shear(nu, axis_ratio);
+    DONE.with(|d| d.borrow_mut().insert(key, r));
+    r
+}
+
+/// The search of [`max_shear_ratio`] for an ellipse.
+fn elliptical_max_shear(nu: f64, axis_ratio: f64) -> (f64, f64) {
     let f = |z: f64| elliptical_axis_shear(nu, axis_ratio, z);
     // For nu >= 0.25 the maximum lies between the circle's 0.48 b and the
     // line's 0.786 b; for small nu and long ellipses the (sigma_x, sigma_z)
