@@ -772,3 +772,29 @@ fn the_removed_cattaneo_mindlin_law_is_a_clear_scene_error() {
     let ok = text.replace("\"cattaneo-mindlin\"", "\"mindlin-deresiewicz\"");
     assert!(kinrepro::scene::Scene::parse(&ok, "test.toml").is_ok());
 }
+
+#[test]
+fn a_sliding_contact_under_growing_load_carries_mu_d_p_in_both_laws() {
+    // As in a V groove during seating: P grows while the ball slides. Coulomb
+    // (and Mindlin-Deresiewicz in gross slip): |F_t| = mu_d P at the end load.
+    for law in TangentialLaw::ALL {
+        let mut st = TangentialState {
+            normal_force: 9.0,
+            ..TangentialState::new(Vector3::z())
+        };
+        for k in 0..5 {
+            let p = 10.0 + k as f64;
+            let r = st.update(law, &input(p, Vector3::new(2e-6, 0.0, 0.0), 0.5, 0.4));
+            st = r.state;
+            st.normal_force = p;
+            if k > 0 {
+                assert_eq!(r.slip, SlipState::Slip, "{law:?}");
+                assert!(
+                    rel(r.force.norm(), 0.4 * p) < 1e-12,
+                    "{law:?}: {}",
+                    r.force.norm()
+                );
+            }
+        }
+    }
+}
