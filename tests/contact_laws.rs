@@ -798,3 +798,78 @@ fn a_sliding_contact_under_growing_load_carries_mu_d_p_in_both_laws() {
         }
     }
 }
+
+#[test]
+fn anisotropic_slip_return_is_associated_and_its_tangent_is_consistent() {
+    use kinrepro::contact::mindlin::project_on_circle;
+    use nalgebra::{Matrix2, Vector2};
+    let k = [1.0e7, 1.08e7];
+    let limit = 2.0;
+    for (i, trial) in [(3.0, 0.5), (-1.0, 2.5), (0.3, -4.0), (2.0, 2.0)]
+        .iter()
+        .enumerate()
+    {
+        let tr = Vector2::new(trial.0, trial.1);
+        let (f, d_trial, d_limit) = project_on_circle(k, &tr, limit);
+        // On the circle, and the slip K^-1 (F_trial - F) is along F, positive
+        // (associated Coulomb slip: the friction force opposes the slip).
+        assert!(rel(f.norm(), limit) < 1e-13, "case {i}");
+        let slip = Vector2::new((tr.x - f.x) / k[0], (tr.y - f.y) / k[1]);
+        assert!((slip.x * f.y - slip.y * f.x).abs() < 1e-12 * slip.norm() * f.norm());
+        assert!(slip.dot(&f) > 0.0);
+        // Equal stiffnesses: the radial return.
+        let (fr, _, _) = project_on_circle([k[0], k[0]], &tr, limit);
+        assert!((fr - tr * (limit / tr.norm())).norm() < 1e-13 * limit);
+        // Derivatives against central differences.
+        let h = 1e-6;
+        let mut fd = Matrix2::zeros();
+        for j in 0..2 {
+            let mut e = Vector2::zeros();
+            e[j] = h;
+            let col = (project_on_circle(k, &(tr + e), limit).0
+                - project_on_circle(k, &(tr - e), limit).0)
+                / (2.0 * h);
+            fd.set_column(j, &col);
+        }
+        assert!((fd - d_trial).norm() < 1e-7, "case {i}: {fd} vs {d_trial}");
+        let fl = (project_on_circle(k, &tr, limit + h).0 - project_on_circle(k, &tr, limit - h).0)
+            / (2.0 * h);
+        assert!((fl - d_limit).norm() < 1e-7);
+    }
+    // Both laws with an elliptical K_t: tangent of the whole update against
+    // finite differences, in stick, partial slip and gross slip.
+    let n = Vector3::z();
+    let (e1, e2) = (Vector3::new(0.6, 0.8, 0.0), Vector3::new(-0.8, 0.6, 0.0));
+    let kt = 1e7 * e1 * e1.transpose() + 1.08e7 * e2 * e2.transpose();
+    for law in TangentialLaw::ALL {
+        for du in [
+            Vector3::new(1e-7, 3e-8, 0.0),
+            Vector3::new(2e-7, -4e-7, 0.0),
+            Vector3::new(2e-6, 1e-6, 0.0),
+        ] {
+            let inp = TangentialInput {
+                stiffness: kt,
+                mindlin_shape: kt / 1e7,
+                ..input(10.0, du, 0.5, 0.4)
+            };
+            let old = TangentialState {
+                normal_force: 10.0,
+                ..TangentialState::new(n)
+            };
+            let r = old.update(law, &inp);
+            for j in 0..2 {
+                let h = 1e-13;
+                let (mut ip, mut im) = (inp, inp);
+                ip.du[j] += h;
+                im.du[j] -= h;
+                let fd = (old.update(law, &ip).force - old.update(law, &im).force) / (2.0 * h);
+                let an = r.d_force_d_du.column(j).into_owned();
+                assert!(
+                    (fd - an).norm() <= 1e-5 * r.d_force_d_du.norm() + 1e-9,
+                    "{law:?} {:?} col {j}: fd {fd:?} an {an:?}",
+                    r.slip
+                );
+            }
+        }
+    }
+}

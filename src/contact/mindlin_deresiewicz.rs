@@ -23,7 +23,8 @@
 //!
 //! Approximations, stated:
 //! - Direction: each spring carries a 2-D displacement with a circular
-//!   Coulomb limit (radial return). For a tangential load that changes
+//!   Coulomb limit (closest-point return in the energy norm of its
+//!   stiffness: radial for a circle). For a tangential load that changes
 //!   direction this is the MDR's usual extension, not an exact solution.
 //! - Ellipse: the row keeps the equal-area radius a = sqrt(a b) (so the
 //!   limits sum to mu P exactly) and its springs get the anisotropic
@@ -54,6 +55,7 @@
 
 use nalgebra::{Matrix2, Matrix3, Matrix3x2, Vector2, Vector3};
 
+use super::mindlin::{project_on_circle, symmetric_eigen2};
 use super::tangential::{SlipState, TangentialInput, TangentialResponse, TangentialState};
 
 /// Springs in the row (0 <= x <= a): 128 (96 to 128 carry a contact at
@@ -98,6 +100,9 @@ struct Row {
     /// Current friction coefficient.
     mu: f64,
     g_star: f64,
+    /// Principal values and axes (columns) of the shape C in the frame.
+    c: [f64; 2],
+    axes: Matrix2<f64>,
 }
 
 impl Row {
@@ -118,16 +123,23 @@ impl Row {
         3.0 * self.mu * p / (16.0 * self.g_star * a) * integral / self.h
     }
 
-    /// Cap cell j at `limit` by radial return, chaining the derivative.
+    /// Cap cell j at `limit`, chaining the derivative: the closest point in
+    /// the energy norm of C (`mindlin::project_on_circle`; radial for a
+    /// circle), so that a spring slides opposite to its force.
     fn cap(&mut self, j: usize, limit: f64) -> bool {
         let norm = self.q[j].norm();
         if norm <= limit {
             return false;
         }
-        let t = self.q[j] / norm;
-        let proj = Matrix2::identity() - t * t.transpose();
-        self.d[j] = proj * self.d[j] * (limit / norm);
-        self.q[j] = t * limit;
+        if limit <= 0.0 {
+            self.q[j] = Vector2::zeros();
+            self.d[j] = Matrix2::zeros();
+            return true;
+        }
+        let r = self.axes;
+        let (f, m, _) = project_on_circle(self.c, &(r.transpose() * self.q[j]), limit);
+        self.q[j] = r * f;
+        self.d[j] = r * m * r.transpose() * self.d[j];
         true
     }
 
@@ -237,6 +249,7 @@ pub(super) fn update(
     let t1 = tangent_frame(&n, &st.frame);
     let basis = Matrix3x2::from_columns(&[t1, n.cross(&t1)]);
     let c = basis.transpose() * input.mindlin_shape * basis;
+    let (c_principal, c_axes) = symmetric_eigen2(&c);
     let du2 = basis.transpose() * du;
     let friction = input.friction;
     let mut row = Row {
@@ -250,6 +263,8 @@ pub(super) fn update(
             friction.mu_s
         },
         g_star: input.g_star,
+        c: c_principal,
+        axes: c_axes,
     };
     if old.row.h == 0.0 && old.force.norm() > 0.0 {
         rebuild(&mut row, &(basis.transpose() * old.force), old.normal_force);

@@ -14,7 +14,8 @@
 //! ```text
 //! F_trial = R F_old + K_t du_t           (R rotates the old force into the new tangent plane)
 //! stick  if |F_trial| <= mu F_n,   mu = mu_s (was sticking) or mu_d (was sliding)
-//! slip   otherwise: F = mu_d F_n F_trial / |F_trial|
+//! slip   otherwise: F = the point of |F| = mu_d F_n closest to F_trial in the
+//!        energy norm of K_t (mu_d F_n F_trial/|F_trial| for a circle)
 //! ```
 //! The change from mu_s to mu_d is sudden, as in the paper's FE model.
 //!
@@ -27,6 +28,7 @@
 use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
 
+use super::mindlin::project_tangential;
 use super::mindlin_deresiewicz::{self, SpringRow};
 
 /// Which tangential law a contact follows (scene key `tangential_law`).
@@ -198,7 +200,7 @@ impl TangentialState {
         let proj = Matrix3::identity() - n * n.transpose();
         let du = proj * input.du;
         match law {
-            TangentialLaw::Coulomb => coulomb(&old, &proj, &du, input),
+            TangentialLaw::Coulomb => coulomb(&old, &du, input),
             TangentialLaw::MindlinDeresiewicz => {
                 mindlin_deresiewicz::update(&old, &proj, &du, input)
             }
@@ -209,7 +211,6 @@ impl TangentialState {
 /// Coulomb return mapping with the sudden static-to-dynamic switch.
 fn coulomb(
     old: &TangentialState,
-    proj: &Matrix3<f64>,
     du: &Vector3<f64>,
     input: &TangentialInput,
 ) -> TangentialResponse {
@@ -231,15 +232,17 @@ fn coulomb(
             d_force_d_fn: input.d_stiffness_d_fn * du,
         }
     } else {
-        slide_response(old, proj, &trial, &input.stiffness, du, input)
+        slide_response(old, &trial, &input.stiffness, du, input)
     }
 }
 
-/// Gross sliding: F = mu_d F_n t, t = F_trial/|F_trial|, with the tangent
-/// dF/d(du) = mu_d F_n / |F_trial| (P - t t^T) K, K the trial stiffness.
+/// Gross sliding: F on the circle |F| = mu_d F_n closest to F_trial in the
+/// complementary-energy norm of K (`mindlin::project_tangential`; the radial return
+/// F = mu_d F_n F_trial/|F_trial| for a circular contact), so that the
+/// friction force opposes the slip also for an elliptical K. Tangent:
+/// dF/d(du) = (dF/dF_trial) K, dF/dF_n = mu_d dF/dL + (dF/dF_trial) (dK/dF_n) du.
 fn slide_response(
     old: &TangentialState,
-    proj: &Matrix3<f64>,
     trial: &Vector3<f64>,
     k: &Matrix3<f64>,
     du: &Vector3<f64>,
@@ -247,10 +250,7 @@ fn slide_response(
 ) -> TangentialResponse {
     let fn_ = input.normal_force;
     let mu_d = input.friction.mu_d;
-    let norm = trial.norm();
-    let t = trial / norm;
-    let dir_tangent = (proj - t * t.transpose()) / norm;
-    let force = mu_d * fn_ * t;
+    let (force, d_trial, d_limit) = project_tangential(k, &input.normal, trial, mu_d * fn_);
     TangentialResponse {
         force,
         state: TangentialState {
@@ -259,8 +259,8 @@ fn slide_response(
             ..*old
         },
         slip: SlipState::Slip,
-        d_force_d_du: mu_d * fn_ * dir_tangent * k,
-        d_force_d_fn: mu_d * t + mu_d * fn_ * (dir_tangent * (input.d_stiffness_d_fn * du)),
+        d_force_d_du: d_trial * k,
+        d_force_d_fn: mu_d * d_limit + d_trial * (input.d_stiffness_d_fn * du),
     }
 }
 
