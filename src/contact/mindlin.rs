@@ -84,7 +84,7 @@ pub fn symmetric_eigen2(m: &Matrix2<f64>) -> ([f64; 2], Matrix2<f64>) {
 /// ```
 ///
 /// For equal k_i it is the radial return F = L F_trial/|F_trial|. Requires
-/// |F_trial| > L > 0. g by Newton from (|F_trial|/L - 1)/k_max, a lower
+/// |F_trial| > L >= 0 (L = 0: F = 0). g by Newton from (|F_trial|/L - 1)/k_max, a lower
 /// bound from which the convex, decreasing |F(g)|^2 - L^2 converges
 /// monotonically. Returns (F, dF/dF_trial, dF/dL).
 pub fn project_on_circle(
@@ -92,6 +92,11 @@ pub fn project_on_circle(
     trial: &Vector2<f64>,
     limit: f64,
 ) -> (Vector2<f64>, Matrix2<f64>, Vector2<f64>) {
+    if limit <= 0.0 {
+        // Frictionless: F = 0, and dF/dL along K^-1 F_trial (the limit g -> inf).
+        let dir = Vector2::new(trial.x / k[0], trial.y / k[1]).normalize();
+        return (Vector2::zeros(), Matrix2::zeros(), dir);
+    }
     let k_max = k[0].max(k[1]);
     let mut g = (trial.norm() / limit - 1.0) / k_max;
     for _ in 0..60 {

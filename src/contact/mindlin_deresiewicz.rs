@@ -23,7 +23,7 @@
 //!
 //! Approximations, stated:
 //! - Direction: each spring carries a 2-D displacement with a circular
-//!   Coulomb limit (closest-point return in the energy norm of its
+//!   Coulomb limit (closest-point return in the complementary-energy norm of its
 //!   stiffness: radial for a circle). For a tangential load that changes
 //!   direction this is the MDR's usual extension, not an exact solution.
 //! - Ellipse: the row keeps the equal-area radius a = sqrt(a b) (so the
@@ -124,7 +124,7 @@ impl Row {
     }
 
     /// Cap cell j at `limit`, chaining the derivative: the closest point in
-    /// the energy norm of C (`mindlin::project_on_circle`; radial for a
+    /// the complementary-energy norm of C (`mindlin::project_on_circle`; radial for a
     /// circle), so that a spring slides opposite to its force.
     fn cap(&mut self, j: usize, limit: f64) -> bool {
         let norm = self.q[j].norm();

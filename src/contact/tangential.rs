@@ -15,7 +15,7 @@
 //! F_trial = R F_old + K_t du_t           (R rotates the old force into the new tangent plane)
 //! stick  if |F_trial| <= mu F_n,   mu = mu_s (was sticking) or mu_d (was sliding)
 //! slip   otherwise: F = the point of |F| = mu_d F_n closest to F_trial in the
-//!        energy norm of K_t (mu_d F_n F_trial/|F_trial| for a circle)
+//!        complementary-energy norm of K_t (mu_d F_n F_trial/|F_trial| for a circle)
 //! ```
 //! The change from mu_s to mu_d is sudden, as in the paper's FE model.
 //!
