@@ -186,15 +186,15 @@ impl TangentialState {
     /// Evaluate the chosen law for a trial increment. Pure: `self` is not changed.
     pub fn update(&self, law: TangentialLaw, input: &TangentialInput) -> TangentialResponse {
         let n = input.normal;
-        let open = TangentialResponse {
-            force: Vector3::zeros(),
-            state: TangentialState::new(n),
-            slip: SlipState::Stick,
-            d_force_d_du: Matrix3::zeros(),
-            d_force_d_fn: Vector3::zeros(),
-        };
         if input.normal_force <= 0.0 {
-            return open; // no normal force, no friction; history is lost when a contact opens
+            // No normal force, no friction; history is lost when a contact opens.
+            return TangentialResponse {
+                force: Vector3::zeros(),
+                state: TangentialState::new(n),
+                slip: SlipState::Stick,
+                d_force_d_du: Matrix3::zeros(),
+                d_force_d_fn: Vector3::zeros(),
+            };
         }
         let old = self.rotated_to(&n);
         let proj = Matrix3::identity() - n * n.transpose();
