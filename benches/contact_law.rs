@@ -1,10 +1,12 @@
-//! One Hertz + Coulomb stick/slip update per iteration, for each contact shape.
+//! One Hertz + tangential update per iteration, for each contact shape and
+//! both tangential laws (Coulomb; Mindlin-Deresiewicz with its 128 springs).
 
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::contact::{
     ContactPair, ContactShape, Friction, TangentialInput, TangentialLaw, TangentialState,
+    tangential_tensor,
 };
 use kinrepro::material::Material;
 use nalgebra::Vector3;
@@ -25,31 +27,45 @@ fn contact_update(c: &mut Criterion) {
         }
         .law()
         .unwrap();
-        let state = TangentialState::new(Vector3::z());
         let normal = Vector3::new(0.0, 1.0, 1.0).normalize();
-        c.bench_function(&format!("hertz+coulomb update/{}", shape.name()), |b| {
-            b.iter(|| {
-                let delta = black_box(5e-7);
-                let fn_ = law.hertz.force(delta);
-                let [a, bb] = law.hertz.semi_axes(fn_);
-                let kt = kinrepro::contact::mindlin_stiffness(law.g_star, [a, bb]);
-                let dkt = kt / (3.0 * fn_);
-                let input = TangentialInput {
-                    normal: black_box(normal),
-                    du: black_box(Vector3::new(1e-8, 2e-9, -3e-9)),
-                    normal_force: fn_,
-                    stiffness: kt,
-                    d_stiffness_d_fn: dkt,
-                    contact_radius: (a * bb).sqrt(),
-                    g_star: law.g_star,
-                    friction: Friction {
-                        mu_s: 0.5,
-                        mu_d: 0.4,
-                    },
-                };
-                black_box(state.update(TangentialLaw::Coulomb, &input))
-            })
-        });
+        for tl in TangentialLaw::ALL {
+            let fn0 = law.hertz.force(4.9e-7);
+            let state = TangentialState {
+                normal_force: fn0,
+                ..TangentialState::new(normal)
+            };
+            let name = format!("hertz+{} update/{}", tl.name(), shape.name());
+            c.bench_function(&name, |b| {
+                b.iter(|| {
+                    let delta = black_box(5e-7);
+                    let fn_ = law.hertz.force(delta);
+                    let [a, bb] = law.hertz.semi_axes(fn_);
+                    let kt = tangential_tensor(
+                        law.tangential_stiffness_axes(fn_),
+                        &normal,
+                        &Vector3::x(),
+                    );
+                    let shape = law
+                        .mindlin
+                        .map(|c| c / (8.0 * law.g_star * law.hertz.axis_ratio.sqrt()));
+                    let input = TangentialInput {
+                        normal: black_box(normal),
+                        du: black_box(Vector3::new(1e-8, 2e-9, -3e-9)),
+                        normal_force: fn_,
+                        stiffness: kt,
+                        d_stiffness_d_fn: kt / (3.0 * fn_),
+                        contact_radius: (a * bb).sqrt(),
+                        g_star: law.g_star,
+                        mindlin_shape: tangential_tensor(shape, &normal, &Vector3::x()),
+                        friction: Friction {
+                            mu_s: 0.5,
+                            mu_d: 0.4,
+                        },
+                    };
+                    black_box(state.update(tl, &input))
+                })
+            });
+        }
     }
 }
 

@@ -8,9 +8,12 @@
 //! | sphere-seat (ball in a concave spherical seat, R2 > R1) | 1/R = 1/R1 - 1/R2 |
 //! | sphere-cylinder (crossed) | 1/Rx = 1/R1 + 1/R2 (across the pin), Ry = R1 (along it) |
 
-pub mod cattaneo;
 pub mod elliptic;
 pub mod hertz;
+pub mod history;
+pub mod mindlin;
+pub mod mindlin_deresiewicz;
+pub mod quadrature;
 pub mod stress;
 pub mod tangential;
 
@@ -19,9 +22,9 @@ use thiserror::Error;
 
 use crate::material::{Material, effective_modulus, effective_shear_modulus};
 pub use hertz::HertzLaw;
+pub use mindlin::{mindlin_axis_coefficients, tangential_tensor};
 pub use tangential::{
     Friction, SlipState, TangentialInput, TangentialLaw, TangentialResponse, TangentialState,
-    mindlin_stiffness,
 };
 
 /// The geometric type of a contact pair: a moving ball against a fixed element.
@@ -105,6 +108,9 @@ pub struct ContactLaw {
     pub hertz: HertzLaw,
     /// Effective tangential modulus G* [Pa].
     pub g_star: f64,
+    /// Mindlin's k_t / a along the major and the minor axis of the contact
+    /// ellipse [N/m^2] (`mindlin`), a the major semi-axis.
+    pub mindlin: [f64; 2],
 }
 
 /// Everything a contact gives at one normal load (SI units).
@@ -122,7 +128,16 @@ pub struct ContactEvaluation {
     pub semi_axes_m: [f64; 2],
     pub max_pressure_pa: f64,
     pub normal_stiffness_n_per_m: f64,
+    /// Geometric mean of the two below (8 G* a for a circle).
     pub tangential_stiffness_n_per_m: f64,
+    /// Mindlin's k_t along the major axis a (along the pin for sphere-cylinder).
+    pub tangential_stiffness_major_n_per_m: f64,
+    /// Mindlin's k_t along the minor axis b (across the pin).
+    pub tangential_stiffness_minor_n_per_m: f64,
+    /// Maximum subsurface shear stress (the body with the larger value) [Pa].
+    pub max_shear_stress_pa: f64,
+    /// Its depth below the surface [m].
+    pub max_shear_depth_m: f64,
 }
 
 fn check_radius(field: &'static str, value: f64) -> Result<f64, ContactError> {
@@ -168,53 +183,64 @@ impl ContactPair {
     pub fn law(&self) -> Result<ContactLaw, ContactError> {
         let [rx, ry] = self.relative_radii()?;
         let e_star = effective_modulus(&self.material1, &self.material2);
+        let hertz = HertzLaw::elliptical(rx, ry, e_star);
         Ok(ContactLaw {
-            hertz: HertzLaw::elliptical(rx, ry, e_star),
+            hertz,
             g_star: effective_shear_modulus(&self.material1, &self.material2),
+            mindlin: mindlin_axis_coefficients(&self.material1, &self.material2, hertz.axis_ratio),
         })
     }
 
-    /// Evaluate the pair at a normal load.
+    /// Evaluate the pair at a normal load F > 0: Hertz, Mindlin and the
+    /// subsurface shear stress.
     pub fn evaluate(&self, load: f64) -> Result<ContactEvaluation, ContactError> {
         let law = self.law()?;
-        law.evaluate(self.shape, load)
-    }
-}
-
-impl ContactLaw {
-    /// Mindlin stiffness k_t at normal load F, and dk_t/dF = k_t / (3 F)
-    /// (k_t ~ a ~ F^(1/3)).
-    pub fn tangential_stiffness(&self, load: f64) -> (f64, f64) {
-        if load <= 0.0 {
-            return (0.0, 0.0);
-        }
-        let kt = mindlin_stiffness(self.g_star, self.hertz.semi_axes(load));
-        (kt, kt / (3.0 * load))
-    }
-
-    /// All outputs at a normal load F > 0.
-    pub fn evaluate(
-        &self,
-        shape: ContactShape,
-        load: f64,
-    ) -> Result<ContactEvaluation, ContactError> {
         if !(load.is_finite() && load > 0.0) {
             return Err(ContactError::BadLoad(load));
         }
-        let h = &self.hertz;
+        let h = &law.hertz;
         let approach = h.approach(load);
+        let ratios = stress::ShearRatios::new(self, h);
+        let st = stress::contact_stress(self, h, &ratios, load);
+        let [k_major, k_minor] = law.tangential_stiffness_axes(load);
         Ok(ContactEvaluation {
-            shape,
+            shape: self.shape,
             load_n: load,
             effective_modulus_pa: h.e_star,
-            effective_shear_modulus_pa: self.g_star,
+            effective_shear_modulus_pa: law.g_star,
             relative_radii_m: h.radii,
             hertz_constant: h.hertz_constant,
             approach_m: approach,
             semi_axes_m: h.semi_axes(load),
             max_pressure_pa: h.max_pressure(load),
             normal_stiffness_n_per_m: h.stiffness(approach),
-            tangential_stiffness_n_per_m: self.tangential_stiffness(load).0,
+            tangential_stiffness_n_per_m: law.tangential_stiffness(load).0,
+            tangential_stiffness_major_n_per_m: k_major,
+            tangential_stiffness_minor_n_per_m: k_minor,
+            max_shear_stress_pa: st.max_shear_stress_pa[0].max(st.max_shear_stress_pa[1]),
+            max_shear_depth_m: st.max_shear_depth_m.unwrap_or(0.0),
         })
+    }
+}
+
+impl ContactLaw {
+    /// Mindlin's k_t along the major and the minor axis at normal load F
+    /// (k_t ~ a ~ F^(1/3), so dk/dF = k / (3 F)); zero when unloaded.
+    pub fn tangential_stiffness_axes(&self, load: f64) -> [f64; 2] {
+        let a = self.hertz.semi_axes(load)[0];
+        self.mindlin.map(|c| c * a)
+    }
+
+    /// A scalar k_t at normal load F: the geometric mean of the two axes
+    /// (8 G* a for a circle), and dk_t/dF = k_t / (3 F). For uses that need
+    /// one number (damping, frequency estimates); the contact laws use the
+    /// 2x2 stiffness of [`ContactLaw::tangential_stiffness_axes`].
+    pub fn tangential_stiffness(&self, load: f64) -> (f64, f64) {
+        if load <= 0.0 {
+            return (0.0, 0.0);
+        }
+        let [k1, k2] = self.tangential_stiffness_axes(load);
+        let kt = (k1 * k2).sqrt();
+        (kt, kt / (3.0 * load))
     }
 }

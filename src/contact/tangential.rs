@@ -1,25 +1,21 @@
-//! Tangential contact: Mindlin's elastic stiffness and the history-dependent
-//! Coulomb stick/slip law (return mapping with its consistent tangent).
+//! Tangential contact: the types shared by the tangential laws, the
+//! dispatcher, and the history-dependent Coulomb stick/slip law (return
+//! mapping with its consistent tangent). The Mindlin-Deresiewicz partial-slip
+//! law lives in `mindlin_deresiewicz` and shares only the types.
 //!
-//! Mindlin (1949); Johnson, *Contact Mechanics* (1985), §7.2:
-//! ```text
-//! k_t = 8 G* a                      (circle, radius a, no slip)
-//! k_t = 8 G* sqrt(a b)              (ellipse: equivalent circle of equal area)
-//! ```
-//! For an ellipse the exact Mindlin compliance depends on the direction of
-//! the load (it differs by at most ~15 % between the axes for the pin
-//! contacts of the bundled scenes); kinrepro uses the isotropic
-//! equal-area circle so that the stick/slip law stays isotropic. Every
-//! elliptical contact of the bundled scenes slides during seating, where k_t
-//! does not enter the result (MODEL.md §3).
+//! Elastic stiffness: Mindlin's exact 2x2 tangential stiffness of the contact
+//! ellipse (`contact::mindlin`), as the 3x3 tensor
+//! K_t = k_major e1 e1^T + k_minor e2 e2^T in the tangent plane (e1 the major
+//! axis; K_t = 8 G* a (I - n n^T) for a circle).
 //!
 //! Coulomb return mapping (Simo & Hughes, *Computational Inelasticity*,
 //! 1998, §2.2 applied to the tangential force; Wriggers, *Computational
 //! Contact Mechanics*, 2006, §5.2):
 //! ```text
-//! F_trial = R F_old + k_t du_t           (R rotates the old force into the new tangent plane)
+//! F_trial = R F_old + K_t du_t           (R rotates the old force into the new tangent plane)
 //! stick  if |F_trial| <= mu F_n,   mu = mu_s (was sticking) or mu_d (was sliding)
-//! slip   otherwise: F = mu_d F_n F_trial / |F_trial|
+//! slip   otherwise: F = the point of |F| = mu_d F_n closest to F_trial in the
+//!        complementary-energy norm of K_t (mu_d F_n F_trial/|F_trial| for a circle)
 //! ```
 //! The change from mu_s to mu_d is sudden, as in the paper's FE model.
 //!
@@ -32,23 +28,59 @@
 use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
 
-use super::cattaneo;
+use super::mindlin::project_tangential;
+use super::mindlin_deresiewicz::{self, SpringRow};
 
-/// Mindlin's tangential stiffness k_t = 8 G* sqrt(a b) [N/m].
-pub fn mindlin_stiffness(g_star: f64, semi_axes: [f64; 2]) -> f64 {
-    8.0 * g_star * (semi_axes[0] * semi_axes[1]).sqrt()
-}
-
-/// Which tangential law a contact follows.
+/// Which tangential law a contact follows (scene key `tangential_law`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "kebab-case")]
+#[serde(rename_all = "kebab-case", try_from = "String")]
 pub enum TangentialLaw {
     /// Linear Mindlin spring with Coulomb stick/slip (the paper's model).
     #[default]
     Coulomb,
-    /// Cattaneo-Mindlin partial slip (stick core, slip annulus) with
-    /// Masing unloading, and Coulomb gross slip.
-    CattaneoMindlin,
+    /// Mindlin-Deresiewicz partial slip for any P-Q history (stick core,
+    /// slip annulus, Masing unloading), by the method of dimensionality
+    /// reduction; Coulomb gross slip with the same static-to-dynamic switch.
+    MindlinDeresiewicz,
+}
+
+impl TangentialLaw {
+    pub const ALL: [TangentialLaw; 2] = [TangentialLaw::Coulomb, TangentialLaw::MindlinDeresiewicz];
+
+    /// Kebab-case name, as in scene files and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            TangentialLaw::Coulomb => "coulomb",
+            TangentialLaw::MindlinDeresiewicz => "mindlin-deresiewicz",
+        }
+    }
+}
+
+impl std::str::FromStr for TangentialLaw {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        if s == "cattaneo-mindlin" {
+            return Err(
+                "tangential law `cattaneo-mindlin` was removed (it applied the \
+                 constant-load Cattaneo curve to a changing normal load, 1.5x too stiff \
+                 under proportional loading): use `mindlin-deresiewicz`"
+                    .to_string(),
+            );
+        }
+        TangentialLaw::ALL
+            .into_iter()
+            .find(|l| l.name() == s)
+            .ok_or_else(|| {
+                format!("unknown tangential law `{s}` (expected coulomb or mindlin-deresiewicz)")
+            })
+    }
+}
+
+impl TryFrom<String> for TangentialLaw {
+    type Error = String;
+    fn try_from(s: String) -> Result<Self, String> {
+        s.parse()
+    }
 }
 
 /// Static and dynamic friction coefficients of one contact.
@@ -77,12 +109,8 @@ pub struct TangentialState {
     pub force: Vector3<f64>,
     /// Gross sliding at the end of the last step.
     pub sliding: bool,
-    /// Cattaneo-Mindlin: force at the last load reversal [N].
-    pub reversal_force: Vector3<f64>,
-    /// Cattaneo-Mindlin: tangential displacement since the last reversal [m].
-    pub since_reversal: Vector3<f64>,
-    /// Cattaneo-Mindlin: Masing factor, 1 on the virgin curve, 2 after a reversal.
-    pub masing: f64,
+    /// Mindlin-Deresiewicz: the row of springs (empty for Coulomb).
+    pub row: SpringRow,
     /// Normal force when this state was committed [N] (the solvers integrate
     /// k_t at the mean normal force of an increment, see `solve::contact_layer`).
     pub normal_force: f64,
@@ -111,12 +139,16 @@ pub struct TangentialInput {
     pub du: Vector3<f64>,
     /// Current normal force [N].
     pub normal_force: f64,
-    /// Current Mindlin stiffness k_t [N/m] and its derivative dk_t/dF_n [1/m].
-    pub stiffness: f64,
-    pub d_stiffness_d_fn: f64,
-    /// Current semi-axes (Cattaneo-Mindlin uses sqrt(a b)) and G* [Pa].
+    /// Mindlin's tangential stiffness tensor K_t [N/m] (in the tangent
+    /// plane) and its derivative dK_t/dF_n [1/m].
+    pub stiffness: Matrix3<f64>,
+    pub d_stiffness_d_fn: Matrix3<f64>,
+    /// Mindlin-Deresiewicz: equal-area radius sqrt(a b) at `normal_force`
+    /// [m], G* [Pa] and the shape C = K_t / (8 G* sqrt(a b)) (I - n n^T
+    /// for a circle).
     pub contact_radius: f64,
     pub g_star: f64,
+    pub mindlin_shape: Matrix3<f64>,
     pub friction: Friction,
 }
 
@@ -127,9 +159,7 @@ impl TangentialState {
             normal,
             force: Vector3::zeros(),
             sliding: false,
-            reversal_force: Vector3::zeros(),
-            since_reversal: Vector3::zeros(),
-            masing: 1.0,
+            row: SpringRow::default(),
             normal_force: 0.0,
         }
     }
@@ -145,8 +175,10 @@ impl TangentialState {
         TangentialState {
             normal: *normal,
             force: rot.apply(&self.force),
-            reversal_force: rot.apply(&self.reversal_force),
-            since_reversal: rot.apply(&self.since_reversal),
+            row: SpringRow {
+                frame: rot.apply(&self.row.frame),
+                ..self.row
+            },
             ..*self
         }
     }
@@ -154,22 +186,24 @@ impl TangentialState {
     /// Evaluate the chosen law for a trial increment. Pure: `self` is not changed.
     pub fn update(&self, law: TangentialLaw, input: &TangentialInput) -> TangentialResponse {
         let n = input.normal;
-        let open = TangentialResponse {
-            force: Vector3::zeros(),
-            state: TangentialState::new(n),
-            slip: SlipState::Stick,
-            d_force_d_du: Matrix3::zeros(),
-            d_force_d_fn: Vector3::zeros(),
-        };
         if input.normal_force <= 0.0 {
-            return open; // no normal force, no friction; history is lost when a contact opens
+            // No normal force, no friction; history is lost when a contact opens.
+            return TangentialResponse {
+                force: Vector3::zeros(),
+                state: TangentialState::new(n),
+                slip: SlipState::Stick,
+                d_force_d_du: Matrix3::zeros(),
+                d_force_d_fn: Vector3::zeros(),
+            };
         }
         let old = self.rotated_to(&n);
         let proj = Matrix3::identity() - n * n.transpose();
         let du = proj * input.du;
         match law {
-            TangentialLaw::Coulomb => coulomb(&old, &proj, &du, input),
-            TangentialLaw::CattaneoMindlin => cattaneo::update(&old, &proj, &du, input),
+            TangentialLaw::Coulomb => coulomb(&old, &du, input),
+            TangentialLaw::MindlinDeresiewicz => {
+                mindlin_deresiewicz::update(&old, &proj, &du, input)
+            }
         }
     }
 }
@@ -177,7 +211,6 @@ impl TangentialState {
 /// Coulomb return mapping with the sudden static-to-dynamic switch.
 fn coulomb(
     old: &TangentialState,
-    proj: &Matrix3<f64>,
     du: &Vector3<f64>,
     input: &TangentialInput,
 ) -> TangentialResponse {
@@ -195,43 +228,39 @@ fn coulomb(
                 ..*old
             },
             slip: SlipState::Stick,
-            d_force_d_du: input.stiffness * proj,
+            d_force_d_du: input.stiffness,
             d_force_d_fn: input.d_stiffness_d_fn * du,
         }
     } else {
-        slide_response(old, proj, &trial, input.stiffness, du, input)
+        slide_response(old, &trial, &input.stiffness, du, input)
     }
 }
 
-/// Gross sliding: F = mu_d F_n t, t = F_trial/|F_trial|, with the tangent
-/// dF/d(du) = mu_d F_n k / |F_trial| (P - t t^T), k the trial stiffness.
-pub(super) fn slide_response(
+/// Gross sliding: F on the circle |F| = mu_d F_n closest to F_trial in the
+/// complementary-energy norm of K (`mindlin::project_tangential`; the radial return
+/// F = mu_d F_n F_trial/|F_trial| for a circular contact), so that the
+/// friction force opposes the slip also for an elliptical K. Tangent:
+/// dF/d(du) = (dF/dF_trial) K, dF/dF_n = mu_d dF/dL + (dF/dF_trial) (dK/dF_n) du.
+fn slide_response(
     old: &TangentialState,
-    proj: &Matrix3<f64>,
     trial: &Vector3<f64>,
-    k: f64,
+    k: &Matrix3<f64>,
     du: &Vector3<f64>,
     input: &TangentialInput,
 ) -> TangentialResponse {
     let fn_ = input.normal_force;
     let mu_d = input.friction.mu_d;
-    let norm = trial.norm();
-    let t = trial / norm;
-    let dir_tangent = (proj - t * t.transpose()) / norm;
-    let force = mu_d * fn_ * t;
+    let (force, d_trial, d_limit) = project_tangential(k, &input.normal, trial, mu_d * fn_);
     TangentialResponse {
         force,
         state: TangentialState {
             force,
             sliding: true,
-            reversal_force: force,
-            since_reversal: Vector3::zeros(),
-            masing: 2.0,
             ..*old
         },
         slip: SlipState::Slip,
-        d_force_d_du: mu_d * fn_ * k * dir_tangent,
-        d_force_d_fn: mu_d * t + mu_d * fn_ * (dir_tangent * (input.d_stiffness_d_fn * du)),
+        d_force_d_du: d_trial * k,
+        d_force_d_fn: mu_d * d_limit + d_trial * (input.d_stiffness_d_fn * du),
     }
 }
 

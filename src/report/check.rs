@@ -93,7 +93,7 @@ pub fn check_summary(c: &Coupling) -> String {
     }
     let _ = writeln!(
         out,
-        "  p0, tau_max (subsurface shear; exact for circles, upper bound for ellipses) and safety factors SF = allowable / actual at the frictionless preload forces; \"-\": no allowable given"
+        "  p0, tau_max (subsurface shear on the contact axis: closed form for circles, quadrature for ellipses) and safety factors SF = allowable / actual at the frictionless preload forces; \"-\": no allowable given"
     );
     out
 }

@@ -2,12 +2,13 @@
 
 use std::fmt::Write;
 
-use crate::contact::ContactEvaluation;
+use crate::contact::history::HistoryStep;
+use crate::contact::{ContactEvaluation, SlipState};
 
 /// A readable table of one contact evaluation (SI values with engineering units).
 pub fn contact_table(e: &ContactEvaluation) -> String {
     let mut s = String::new();
-    let rows: [(&str, String); 11] = [
+    let rows: [(&str, String); 14] = [
         ("shape", e.shape.name().to_string()),
         ("normal load", format!("{:.6} N", e.load_n)),
         (
@@ -49,11 +50,84 @@ pub fn contact_table(e: &ContactEvaluation) -> String {
         ),
         (
             "tangential stiffness k_t",
-            format!("{:.6e} N/m", e.tangential_stiffness_n_per_m),
+            format!(
+                "{:.6e} N/m (geometric mean)",
+                e.tangential_stiffness_n_per_m
+            ),
+        ),
+        (
+            "k_t along a, along b (Mindlin)",
+            format!(
+                "{:.6e}, {:.6e} N/m",
+                e.tangential_stiffness_major_n_per_m, e.tangential_stiffness_minor_n_per_m
+            ),
+        ),
+        (
+            "max subsurface shear tau_max",
+            format!("{:.4} MPa", e.max_shear_stress_pa / 1e6),
+        ),
+        (
+            "depth of tau_max",
+            format!("{:.4} um", e.max_shear_depth_m * 1e6),
         ),
     ];
     for (k, v) in rows {
         let _ = writeln!(s, "{k:<32} {v}");
+    }
+    s
+}
+
+/// What produced a history table (written as `#` lines before the CSV).
+pub struct HistoryProvenance<'a> {
+    pub shape: &'a str,
+    pub radii_m: (f64, Option<f64>),
+    pub materials: (&'a str, &'a str),
+    pub law: &'a str,
+    pub mu_static: f64,
+    pub mu_dynamic: f64,
+    pub history_file: &'a str,
+}
+
+/// The CSV of `kinrepro contact --history`: `#` provenance lines, then the
+/// header `step,P_N,Qx_N,Qy_N,sx_m,sy_m,slip` and one row per step (SI
+/// units; x along the major axis of the contact ellipse, s the tangential
+/// displacement of the ball relative to the fixed body).
+pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
+    let mut s = String::new();
+    let r2 = p.radii_m.1.map_or("-".to_string(), |r| format!("{r:e}"));
+    let _ = writeln!(
+        s,
+        "# kinrepro {} contact --history {}: {} radius1 {:e} m radius2 {r2} m, {} on {}, tangential law {}, mu_s {}, mu_d {}",
+        env!("CARGO_PKG_VERSION"),
+        p.history_file,
+        p.shape,
+        p.radii_m.0,
+        p.materials.0,
+        p.materials.1,
+        p.law,
+        p.mu_static,
+        p.mu_dynamic
+    );
+    let _ = writeln!(
+        s,
+        "# force control, one step per row from the unloaded state; x = major axis of the contact ellipse (along the pin), SI units"
+    );
+    s.push_str("step,P_N,Qx_N,Qy_N,sx_m,sy_m,slip\n");
+    for (i, st) in steps.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "{},{:e},{:e},{:e},{:e},{:e},{}",
+            i + 1,
+            st.load.normal_force,
+            st.load.tangential_force[0],
+            st.load.tangential_force[1],
+            st.displacement[0],
+            st.displacement[1],
+            match st.slip {
+                SlipState::Stick => "stick",
+                SlipState::Slip => "slip",
+            }
+        );
     }
     s
 }

@@ -169,7 +169,7 @@ impl RunReport {
         }
         let _ = writeln!(
             s,
-            "tau_max: maximum subsurface shear stress (exact for circular contacts, an upper bound for elliptical ones); SF = allowable / actual, \"-\" where the materials give no allowable"
+            "tau_max: maximum subsurface shear stress on the contact axis (closed form for circles, Boussinesq quadrature for ellipses); SF = allowable / actual, \"-\" where the materials give no allowable"
         );
         s
     }

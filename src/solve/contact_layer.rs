@@ -9,15 +9,20 @@
 //! F = F_n n - F_t (F_t the law's force, see `contact::tangential`), applied
 //! at p.
 //!
-//! Mindlin's stiffness follows the normal load (k_t ~ F_n^(1/3)), so an
-//! increment integrates dF_t = k_t(F_n) du with k_t at the mean normal force
+//! Mindlin's stiffness follows the normal load (K_t ~ F_n^(1/3)), so an
+//! increment integrates dF_t = K_t(F_n) du with K_t at the mean normal force
 //! of the increment, (F_n,committed + F_n)/2 (midpoint rule: second order in
-//! the increment, where k_t at the end force would be first order).
+//! the increment, where K_t at the end force would be first order). K_t is
+//! Mindlin's 2x2 elliptical stiffness in the tangent plane, its major axis
+//! along the pin for a sphere-cylinder contact (`contact::mindlin`).
 
 use nalgebra::{Matrix3, Vector3};
 
 use crate::assembly::{BodyPose, ContactGeometry, Coupling};
-use crate::contact::{Friction, SlipState, TangentialInput, TangentialResponse, TangentialState};
+use crate::contact::{
+    Friction, SlipState, TangentialInput, TangentialResponse, TangentialState, tangential_tensor,
+};
+use crate::scene::SurfaceGeometry;
 
 /// One contact evaluated at a trial pose.
 #[derive(Debug, Clone, Copy)]
@@ -60,10 +65,23 @@ pub fn evaluate(
     let body_point = pose.rotation.inverse() * (g.point - pose.translation);
     let du = g.point - committed_pose.apply(&body_point);
     let f_mid = 0.5 * (committed.normal_force + fn_);
-    let (kt, dkt_mid) = contact.law.tangential_stiffness(f_mid);
-    let dkt = 0.5 * dkt_mid;
-    // Cattaneo-Mindlin's secant branch uses the current contact radius.
+    let major_axis = match contact.surface {
+        SurfaceGeometry::Cylinder { direction, .. } => direction,
+        _ => Vector3::zeros(), // circular: K_t is isotropic
+    };
+    let law = &contact.law;
+    let kt = tangential_tensor(law.tangential_stiffness_axes(f_mid), &g.normal, &major_axis);
+    // dK_t/dF_n = K_t / (3 F_mid) d(F_mid)/dF_n, with d(F_mid)/dF_n = 1/2.
+    let dkt = if f_mid > 0.0 {
+        kt / (6.0 * f_mid)
+    } else {
+        Matrix3::zeros()
+    };
+    // Mindlin-Deresiewicz: the equal-area radius and the shape K_t / (8 G* sqrt(ab)).
     let [a, b] = hertz.semi_axes(fn_);
+    let shape = law
+        .mindlin
+        .map(|c| c / (8.0 * law.g_star * hertz.axis_ratio.sqrt()));
     let input = TangentialInput {
         normal: g.normal,
         du,
@@ -71,7 +89,8 @@ pub fn evaluate(
         stiffness: kt,
         d_stiffness_d_fn: dkt,
         contact_radius: (a * b).sqrt(),
-        g_star: contact.law.g_star,
+        g_star: law.g_star,
+        mindlin_shape: tangential_tensor(shape, &g.normal, &major_axis),
         friction,
     };
     let mut tangential = committed.update(coupling.scene.friction.tangential_law, &input);

@@ -124,7 +124,7 @@ pub struct ContactResult {
     /// Peak pressure / allowable pressure of the weaker material, where known.
     pub pressure_ratio: Option<f64>,
     /// Maximum (subsurface) shear stress, the larger of the two bodies [Pa]
-    /// (`contact::stress`: exact for circles, an upper bound for ellipses).
+    /// (`contact::stress`: closed form for circles, quadrature for ellipses).
     pub max_shear_stress_pa: f64,
     /// Depth of the maximum shear stress [m] (circular contacts).
     pub max_shear_depth_m: Option<f64>,

@@ -120,8 +120,8 @@ pub struct LoadPath {
 /// The at-rest contact states after a seating: each contact keeps its
 /// tangential force, and static friction governs again (a contact that was
 /// sliding sticks until |F_t| reaches mu_s F_n). A frictionless contact
-/// stays sliding (it carries no tangential force). For the Cattaneo-Mindlin
-/// law the end of seating starts a new (Masing) branch at the current force.
+/// stays sliding (it carries no tangential force). The Mindlin-Deresiewicz
+/// law rebuilds its springs as a virgin loading to that force.
 pub fn at_rest_states(seating: &Seating) -> Vec<TangentialState> {
     seating
         .contacts
@@ -133,9 +133,6 @@ pub fn at_rest_states(seating: &Seating) -> Vec<TangentialState> {
             TangentialState {
                 force,
                 sliding: c.mu_static == 0.0,
-                reversal_force: force,
-                since_reversal: Vector3::zeros(),
-                masing: 2.0,
                 normal_force: c.normal_force_n,
                 ..TangentialState::new(n)
             }

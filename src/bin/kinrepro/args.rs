@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use kinrepro::contact::ContactShape;
+use kinrepro::contact::{ContactShape, TangentialLaw};
 use kinrepro::study::{Sampler, Shard};
 
 #[derive(Parser)]
@@ -19,7 +19,8 @@ pub struct Cli {
 
 #[derive(Subcommand)]
 pub enum Command {
-    /// Evaluate one contact pair (Hertz normal law and Mindlin stiffness) at a load.
+    /// Evaluate one contact pair (Hertz, Mindlin, tau_max) at a load, or drive
+    /// it through a load history (--history).
     Contact(ContactArgs),
     /// Load and validate scenes; print contacts, constraint status and friction limit.
     Check(CheckArgs),
@@ -64,8 +65,21 @@ pub struct ContactArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub load: f64,
     /// Print one JSON object instead of a table.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "history")]
     pub json: bool,
+    /// Drive the contact through the load history in this CSV (header
+    /// P_N,Qx_N,Qy_N) and print step,P_N,Qx_N,Qy_N,sx_m,sy_m,slip.
+    #[arg(long, requires = "mu")]
+    pub history: Option<PathBuf>,
+    /// Static friction coefficient mu_s (with --history).
+    #[arg(long, allow_hyphen_values = true)]
+    pub mu: Option<f64>,
+    /// mu_d = ratio * mu_s, in (0, 1] (with --history).
+    #[arg(long, default_value_t = 0.8, allow_hyphen_values = true)]
+    pub dynamic_ratio: f64,
+    /// coulomb | mindlin-deresiewicz (with --history).
+    #[arg(long, default_value = "coulomb")]
+    pub tangential_law: TangentialLaw,
 }
 
 #[derive(Args)]

@@ -1,35 +1,76 @@
-//! `kinrepro contact`: one contact pair by hand.
+//! `kinrepro contact`: one contact pair by hand, at a load or through a
+//! load history.
 
-use kinrepro::contact::ContactPair;
+use std::path::Path;
+
+use kinrepro::contact::history::{HistoryError, LoadStep, drive, parse_history_csv};
+use kinrepro::contact::{ContactPair, Friction};
 use kinrepro::material::Material;
+use kinrepro::report::contact::{HistoryProvenance, contact_table, history_csv};
 
 use crate::args::*;
 
 pub fn contact(args: ContactArgs) -> Result<(), String> {
-    let ContactArgs {
-        shape,
-        radius1,
-        radius2,
-        material1,
-        material2,
-        load,
-        json,
-    } = args;
     let pair = ContactPair {
-        shape,
-        radius1,
-        radius2,
-        material1: Material::builtin(&material1).map_err(|e| format!("--material1: {e}"))?,
-        material2: Material::builtin(&material2).map_err(|e| format!("--material2: {e}"))?,
+        shape: args.shape,
+        radius1: args.radius1,
+        radius2: args.radius2,
+        material1: Material::builtin(&args.material1).map_err(|e| format!("--material1: {e}"))?,
+        material2: Material::builtin(&args.material2).map_err(|e| format!("--material2: {e}"))?,
     };
-    let eval = pair.evaluate(load).map_err(|e| e.to_string())?;
-    if json {
+    let eval = pair.evaluate(args.load).map_err(|e| e.to_string())?;
+    if let Some(path) = &args.history {
+        return history(&args, &pair, path);
+    }
+    if args.json {
         println!(
             "{}",
             serde_json::to_string_pretty(&eval).map_err(|e| e.to_string())?
         );
     } else {
-        print!("{}", kinrepro::report::contact::contact_table(&eval));
+        print!("{}", contact_table(&eval));
     }
+    Ok(())
+}
+
+fn history(args: &ContactArgs, pair: &ContactPair, path: &Path) -> Result<(), String> {
+    let mu = args.mu.unwrap_or(f64::NAN);
+    if !(mu.is_finite() && mu > 0.0) {
+        return Err(format!(
+            "--mu {mu}: the friction coefficient must be positive and finite"
+        ));
+    }
+    let ratio = args.dynamic_ratio;
+    if !(ratio > 0.0 && ratio <= 1.0) {
+        return Err(format!("--dynamic-ratio {ratio}: must lie in (0, 1]"));
+    }
+    let file = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{file}: {e}"))?;
+    let rows = parse_history_csv(&text, &file)?;
+    let loads: Vec<LoadStep> = rows.iter().map(|r| r.load).collect();
+    let friction = Friction {
+        mu_s: mu,
+        mu_d: ratio * mu,
+    };
+    let law = pair.law().map_err(|e| e.to_string())?;
+    let steps = drive(&law, args.tangential_law, friction, &loads).map_err(|e| {
+        let step = match &e {
+            HistoryError::BadNormal { step, .. }
+            | HistoryError::BadTangential { step, .. }
+            | HistoryError::Slides { step, .. }
+            | HistoryError::NoConvergence { step, .. } => *step,
+        };
+        format!("{file}:{}: {e}", rows[step - 1].line)
+    })?;
+    let prov = HistoryProvenance {
+        shape: pair.shape.name(),
+        radii_m: (pair.radius1, pair.radius2),
+        materials: (&args.material1, &args.material2),
+        law: args.tangential_law.name(),
+        mu_static: friction.mu_s,
+        mu_dynamic: friction.mu_d,
+        history_file: &file,
+    };
+    print!("{}", history_csv(&prov, &steps));
     Ok(())
 }

@@ -1,0 +1,239 @@
+//! One contact driven through a prescribed history of normal and tangential
+//! load (force control), as `kinrepro contact --history` does it.
+//!
+//! Frame: the contact normal is z, x the major axis of the contact ellipse
+//! (along the pin for sphere-cylinder), y the minor axis; Q = (Qx, Qy) is
+//! the tangential force the ball exerts on the fixed body and s = (sx, sy)
+//! the tangential displacement of the ball relative to the fixed body. Each
+//! step solves F_t(s) = Q for the increment of s by Newton's method with the
+//! law's consistent tangent, starting from the committed state (the laws are
+//! displacement driven). The solvers' contact layer makes the same choices
+//! (K_t at the step's mean normal force; `solve::contact_layer`).
+//!
+//! Convergence: on a partial-slip branch Q(s) is concave along the motion,
+//! so Newton from the elastic predictor approaches the root from below; a
+//! step is converged when |F_t - Q| <= 1e-12 max(|Q|, mu P).
+
+use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
+use thiserror::Error;
+
+use super::{
+    ContactLaw, Friction, SlipState, TangentialInput, TangentialLaw, TangentialState,
+    tangential_tensor,
+};
+
+/// One row of a load history: P [N] and Q = (Qx, Qy) [N].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadStep {
+    pub normal_force: f64,
+    pub tangential_force: [f64; 2],
+}
+
+/// The state after one step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HistoryStep {
+    pub load: LoadStep,
+    /// Tangential displacement (sx, sy) [m].
+    pub displacement: [f64; 2],
+    pub slip: SlipState,
+}
+
+/// Why a history cannot be followed. `step` counts from 1.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum HistoryError {
+    #[error("step {step}: P_N = {value} N is invalid: the normal load must be positive and finite")]
+    BadNormal { step: usize, value: f64 },
+    #[error("step {step}: Q_N = {value} N is not finite")]
+    BadTangential { step: usize, value: f64 },
+    #[error(
+        "step {step}: |Q| = {q} N reaches the friction limit {mu} P = {limit} N; under force control the contact would slide without bound"
+    )]
+    Slides {
+        step: usize,
+        q: f64,
+        mu: f64,
+        limit: f64,
+    },
+    #[error("step {step}: the tangential displacement did not converge (residual {residual} N)")]
+    NoConvergence { step: usize, residual: f64 },
+}
+
+/// Drive one contact with Hertz/Mindlin law `law`, tangential law
+/// `tangential` and friction `friction` through `history`, from the unloaded
+/// state.
+pub fn drive(
+    law: &ContactLaw,
+    tangential: TangentialLaw,
+    friction: Friction,
+    history: &[LoadStep],
+) -> Result<Vec<HistoryStep>, HistoryError> {
+    let n = Vector3::z();
+    let mut state = TangentialState::new(n);
+    let mut s = Vector3::zeros();
+    let mut out = Vec::with_capacity(history.len());
+    for (k, load) in history.iter().enumerate() {
+        let step = k + 1;
+        let p = load.normal_force;
+        if !(p.is_finite() && p > 0.0) {
+            return Err(HistoryError::BadNormal { step, value: p });
+        }
+        if let Some(&value) = load.tangential_force.iter().find(|q| !q.is_finite()) {
+            return Err(HistoryError::BadTangential { step, value });
+        }
+        let q = Vector3::new(load.tangential_force[0], load.tangential_force[1], 0.0);
+        let mu = if state.sliding {
+            friction.mu_d
+        } else {
+            friction.mu_s
+        };
+        if q.norm() >= mu * p {
+            return Err(HistoryError::Slides {
+                step,
+                q: q.norm(),
+                mu,
+                limit: mu * p,
+            });
+        }
+        let input = step_input(law, &state, p, friction);
+        let (du, response) = solve_step(&state, tangential, &input, &q, mu * p)
+            .map_err(|residual| HistoryError::NoConvergence { step, residual })?;
+        state = response.state;
+        state.normal_force = p;
+        s += du;
+        out.push(HistoryStep {
+            load: *load,
+            displacement: [s.x, s.y],
+            slip: response.slip,
+        });
+    }
+    Ok(out)
+}
+
+/// The law's input at load `p` from `state` (zero increment).
+fn step_input(
+    law: &ContactLaw,
+    state: &TangentialState,
+    p: f64,
+    friction: Friction,
+) -> TangentialInput {
+    let n = Vector3::z();
+    let x = Vector3::x();
+    let f_mid = 0.5 * (state.normal_force + p);
+    let kt = tangential_tensor(law.tangential_stiffness_axes(f_mid), &n, &x);
+    let [a, b] = law.hertz.semi_axes(p);
+    let shape = law
+        .mindlin
+        .map(|c| c / (8.0 * law.g_star * law.hertz.axis_ratio.sqrt()));
+    TangentialInput {
+        normal: n,
+        du: Vector3::zeros(),
+        normal_force: p,
+        stiffness: kt,
+        d_stiffness_d_fn: kt / (6.0 * f_mid),
+        contact_radius: (a * b).sqrt(),
+        g_star: law.g_star,
+        mindlin_shape: tangential_tensor(shape, &n, &x),
+        friction,
+    }
+}
+
+/// Newton on the in-plane increment du with F_t(du) = q.
+fn solve_step(
+    state: &TangentialState,
+    law: TangentialLaw,
+    input: &TangentialInput,
+    q: &Vector3<f64>,
+    limit: f64,
+) -> Result<(Vector3<f64>, super::TangentialResponse), f64> {
+    let tol = 1e-12 * q.norm().max(limit);
+    let plane = |m: &Matrix3<f64>| Matrix2::new(m[(0, 0)], m[(0, 1)], m[(1, 0)], m[(1, 1)]);
+    let mut du = Vector3::zeros();
+    let mut residual = f64::INFINITY;
+    for _ in 0..200 {
+        let r = state.update(law, &TangentialInput { du, ..*input });
+        let res = q - r.force;
+        residual = res.norm();
+        if residual <= tol {
+            return Ok((du, r));
+        }
+        let k = plane(&r.d_force_d_du);
+        let Some(step) = k.try_inverse().map(|ki| ki * Vector2::new(res.x, res.y)) else {
+            break;
+        };
+        du += Vector3::new(step.x, step.y, 0.0);
+    }
+    Err(residual)
+}
+
+/// The header a history file must start with.
+pub const HISTORY_HEADER: [&str; 3] = ["P_N", "Qx_N", "Qy_N"];
+
+/// One parsed history row and the file line it came from (1-based).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HistoryRow {
+    pub line: usize,
+    pub load: LoadStep,
+}
+
+/// Parse a history CSV: the header `P_N,Qx_N,Qy_N`, then one row per step
+/// (P > 0 and Q finite, in N); blank lines and lines starting with `#` are
+/// skipped. Errors name `file`, the line and the column.
+pub fn parse_history_csv(text: &str, file: &str) -> Result<Vec<HistoryRow>, String> {
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l.trim()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
+    let Some((hline, header)) = lines.next() else {
+        return Err(format!(
+            "{file}: empty history (expected the header `{}`)",
+            HISTORY_HEADER.join(",")
+        ));
+    };
+    let cols: Vec<&str> = header.split(',').map(str::trim).collect();
+    if cols != HISTORY_HEADER {
+        return Err(format!(
+            "{file}:{hline}: header `{header}` must be `{}`",
+            HISTORY_HEADER.join(",")
+        ));
+    }
+    let mut rows = Vec::new();
+    for (line, l) in lines {
+        let fields: Vec<&str> = l.split(',').map(str::trim).collect();
+        if fields.len() != 3 {
+            return Err(format!(
+                "{file}:{line}: {} fields, expected 3 ({})",
+                fields.len(),
+                HISTORY_HEADER.join(",")
+            ));
+        }
+        let mut v = [0.0; 3];
+        for (k, f) in fields.iter().enumerate() {
+            let col = HISTORY_HEADER[k];
+            v[k] = f
+                .parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| {
+                    format!("{file}:{line}: column {col}: `{f}` is not a finite number")
+                })?;
+        }
+        if v[0] <= 0.0 {
+            return Err(format!(
+                "{file}:{line}: column P_N: {} N: the normal load must be positive",
+                v[0]
+            ));
+        }
+        rows.push(HistoryRow {
+            line,
+            load: LoadStep {
+                normal_force: v[0],
+                tangential_force: [v[1], v[2]],
+            },
+        });
+    }
+    if rows.is_empty() {
+        return Err(format!("{file}: no rows after the header"));
+    }
+    Ok(rows)
+}

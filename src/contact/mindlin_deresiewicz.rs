@@ -1,0 +1,371 @@
+//! Mindlin-Deresiewicz partial slip for any history of normal and tangential
+//! load, by the method of dimensionality reduction (MDR).
+//!
+//! Popov & Hess, *Method of Dimensionality Reduction in Contact Mechanics and
+//! Friction* (Springer 2015), ch. 3 and 7; Mindlin & Deresiewicz (1953);
+//! Johnson, *Contact Mechanics* (1985), §7.3-7.4. An axisymmetric contact
+//! of radius a is mapped to a row of independent springs on the 1-D profile
+//! g(x) = x^2 / R, each with its own Coulomb limit. With 1/G* = sum (2 - nu)/G
+//! (so that k_t = 8 G* a) and the row's normal line load of a Hertz contact,
+//!
+//! ```text
+//! tangential line stiffness 4 G*,   line load p(x) = 3 P / (4 a) (1 - x^2/a^2)
+//! |u(x)| <= mu p(x) / (4 G*) = delta* (1 - x^2/a^2),   delta* = 3 mu P / (16 G* a)
+//! Q = 4 G* int_-a^a u(x) dx
+//! ```
+//!
+//! A spring entering the contact (a grows) starts with u = 0; one leaving it
+//! (a shrinks) loses its displacement; a spring whose limit falls below |u|
+//! slides to the limit. This is exact for axisymmetric contacts under
+//! arbitrary P-Q histories of fixed direction (Popov & Hess 2015, §7.2),
+//! and reproduces Cattaneo's curve, the Masing loop of Mindlin & Deresiewicz
+//! and s = 1.5 Q / (8 G* a) for proportional loading from zero.
+//!
+//! Approximations, stated:
+//! - Direction: each spring carries a 2-D displacement with a circular
+//!   Coulomb limit (closest-point return in the complementary-energy norm of its
+//!   stiffness: radial for a circle). For a tangential load that changes
+//!   direction this is the MDR's usual extension, not an exact solution.
+//! - Ellipse: the row keeps the equal-area radius a = sqrt(a b) (so the
+//!   limits sum to mu P exactly) and its springs get the anisotropic
+//!   stiffness 4 G* C, C = K_t / (8 G* sqrt(a b)) from Mindlin's exact 2x2
+//!   elliptical stiffness K_t (`contact::mindlin`); the friction limit stays
+//!   circular. For a circle C = I and the law is the MDR exactly.
+//! - Space: the row on 0 <= x <= a (the problem is symmetric in x) is cut
+//!   into `SPRINGS` equal cells of width h, each a spring at its cell
+//!   average of u, weighted by the fraction of the cell in contact, with its
+//!   limit integrated exactly over that fraction. h is fixed at first
+//!   contact so that a fills 3/4 of the row; when a outgrows the row, cells
+//!   are merged in pairs (which keeps Q exactly). So N/2 to N springs carry
+//!   a loaded contact (fewer after a large unloading). The error is that of
+//!   lumping each cell's slip: largest when the slip annulus is about one
+//!   cell wide (tests/contact_laws.rs prints the measured errors).
+//! - Time: a step from P_old to P with increment du is split as
+//!   normal(P_old -> P), then tangential(du) at P: first order in the step
+//!   for a sticking contact under a changing load (k_t of the end radius;
+//!   measured 3.1e-3 in the proportional-loading test with 1.5 % load
+//!   steps), exact for a sliding one (Q = mu P at the end of the step). A
+//!   split with the tangential stage at the mid load is second order but
+//!   leaves a spring that slid at the mid load below its end limit
+//!   (Q = mu (P - dP/2) in a sliding V groove), and pinning it there makes
+//!   the law discontinuous for Newton's method.
+//! - Static to dynamic: the limits use mu_s until every spring slides in
+//!   the tangential stage of a step (gross slip), then mu_d (the sudden
+//!   switch of the Coulomb law), and mu_s again once a spring sticks.
+
+use nalgebra::{Matrix2, Matrix3, Matrix3x2, Vector2, Vector3};
+
+use super::mindlin::{project_on_circle, symmetric_eigen2};
+use super::tangential::{SlipState, TangentialInput, TangentialResponse, TangentialState};
+
+/// Springs in the row (0 <= x <= a): 128 (96 to 128 carry a contact at
+/// constant load, 64 to 128 while it grows) keep Cattaneo's curve within
+/// 2.3e-3 at every step (tests/contact_laws.rs).
+pub const SPRINGS: usize = 128;
+
+/// The fraction of the row that the contact fills at first contact.
+const FIRST_FILL: f64 = 0.75;
+
+/// The MDR row of one contact: cell width and each cell's 2-D value
+/// q = C u (u the cell average displacement times the fraction in contact),
+/// in the frame (t1, n x t1) of the tangent plane.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpringRow {
+    /// First tangent direction of the frame (zero until first contact).
+    pub frame: Vector3<f64>,
+    /// Cell width h [m] (0 until first contact).
+    pub h: f64,
+    /// q per cell [m].
+    pub q: [[f64; 2]; SPRINGS],
+}
+
+impl Default for SpringRow {
+    fn default() -> Self {
+        SpringRow {
+            frame: Vector3::zeros(),
+            h: 0.0,
+            q: [[0.0; 2]; SPRINGS],
+        }
+    }
+}
+
+/// The contact during one update: its constants and the row being updated
+/// with the derivative of each cell's q by the tangential increment.
+struct Row {
+    q: [Vector2<f64>; SPRINGS],
+    d: [Matrix2<f64>; SPRINGS],
+    h: f64,
+    /// Equal-area radius at the current stage [m].
+    a: f64,
+    /// Current friction coefficient.
+    mu: f64,
+    g_star: f64,
+    /// Principal values and axes (columns) of the shape C in the frame.
+    c: [f64; 2],
+    axes: Matrix2<f64>,
+}
+
+impl Row {
+    /// Fraction of cell j inside 0 <= x <= a.
+    fn weight(&self, j: usize, a: f64) -> f64 {
+        ((a - j as f64 * self.h) / self.h).clamp(0.0, 1.0)
+    }
+
+    /// Cell j's limit of |q| at load p and radius a: delta* times the cell
+    /// average of (1 - x^2/a^2) over its part in contact.
+    fn limit(&self, j: usize, p: f64, a: f64) -> f64 {
+        let x0 = j as f64 * self.h;
+        let x1 = ((j + 1) as f64 * self.h).min(a);
+        if x1 <= x0 {
+            return 0.0;
+        }
+        let integral = (x1 - x0) - (x1.powi(3) - x0.powi(3)) / (3.0 * a * a);
+        3.0 * self.mu * p / (16.0 * self.g_star * a) * integral / self.h
+    }
+
+    /// Cap cell j at `limit`, chaining the derivative: the closest point in
+    /// the complementary-energy norm of C (`mindlin::project_on_circle`; radial for a
+    /// circle), so that a spring slides opposite to its force.
+    fn cap(&mut self, j: usize, limit: f64) -> bool {
+        let norm = self.q[j].norm();
+        if norm <= limit {
+            return false;
+        }
+        if limit <= 0.0 {
+            self.q[j] = Vector2::zeros();
+            self.d[j] = Matrix2::zeros();
+            return true;
+        }
+        let r = self.axes;
+        let (f, m, _) = project_on_circle(self.c, &(r.transpose() * self.q[j]), limit);
+        self.q[j] = r * f;
+        self.d[j] = r * m * r.transpose() * self.d[j];
+        true
+    }
+
+    /// Merge cells in pairs until the row (width SPRINGS h) holds radius a.
+    fn fit(&mut self, a: f64) {
+        while a > SPRINGS as f64 * self.h {
+            for j in 0..SPRINGS {
+                let (q, d) = if 2 * j + 1 < SPRINGS {
+                    (
+                        0.5 * (self.q[2 * j] + self.q[2 * j + 1]),
+                        0.5 * (self.d[2 * j] + self.d[2 * j + 1]),
+                    )
+                } else {
+                    (Vector2::zeros(), Matrix2::zeros())
+                };
+                self.q[j] = q;
+                self.d[j] = d;
+            }
+            self.h *= 2.0;
+        }
+    }
+
+    /// Normal stage: the radius goes from `self.a` to `a` at load `p`.
+    fn normal(&mut self, p: f64, a: f64) {
+        self.fit(a);
+        for j in 0..SPRINGS {
+            let (w_old, w_new) = (self.weight(j, self.a), self.weight(j, a));
+            if w_new == 0.0 {
+                self.q[j] = Vector2::zeros();
+                self.d[j] = Matrix2::zeros();
+                continue;
+            }
+            if w_new < w_old {
+                // The part leaving the contact takes its share of u along.
+                let s = w_new / w_old;
+                self.q[j] *= s;
+                self.d[j] *= s;
+            }
+            let l = self.limit(j, p, a);
+            self.cap(j, l);
+        }
+        self.a = a;
+    }
+
+    /// Tangential stage: every cell in contact moves by w C du. Returns
+    /// whether every cell in contact is then at its limit (gross slip).
+    fn tangential(&mut self, p: f64, c: &Matrix2<f64>, du: &Vector2<f64>) -> bool {
+        let mut all_capped = true;
+        for j in 0..SPRINGS {
+            let w = self.weight(j, self.a);
+            if w == 0.0 {
+                continue;
+            }
+            self.q[j] += w * c * du;
+            self.d[j] += w * c;
+            let l = self.limit(j, p, self.a);
+            all_capped &= self.cap(j, l) || self.q[j].norm() >= l * (1.0 - 1e-12);
+        }
+        all_capped
+    }
+
+    /// Q in the frame: 8 G* h sum q, and its derivative by du.
+    fn force(&self) -> (Vector2<f64>, Matrix2<f64>) {
+        let k = 8.0 * self.g_star * self.h;
+        let q: Vector2<f64> = self.q.iter().sum();
+        let d: Matrix2<f64> = self.d.iter().sum();
+        (k * q, k * d)
+    }
+}
+
+/// A unit vector perpendicular to `n`, preferring `hint` projected.
+fn tangent_frame(n: &Vector3<f64>, hint: &Vector3<f64>) -> Vector3<f64> {
+    let p = hint - n * n.dot(hint);
+    if p.norm() > 1e-9 * hint.norm() && hint.norm() > 0.0 {
+        return p.normalize();
+    }
+    let e = if n.x.abs() < 0.9 {
+        Vector3::x()
+    } else {
+        Vector3::y()
+    };
+    (e - n * n.dot(&e)).normalize()
+}
+
+pub(super) fn update(
+    old: &TangentialState,
+    proj: &Matrix3<f64>,
+    du: &Vector3<f64>,
+    input: &TangentialInput,
+) -> TangentialResponse {
+    let n = input.normal;
+    let p = input.normal_force;
+    let a_now = input.contact_radius;
+    let radius_at = |load: f64| a_now * (load.max(0.0) / p).cbrt();
+    let mut st = old.row;
+    if st.h == 0.0 {
+        st.frame = tangent_frame(
+            &n,
+            &if old.force.norm() > 0.0 {
+                old.force
+            } else {
+                *du
+            },
+        );
+        st.h = a_now / (FIRST_FILL * SPRINGS as f64);
+    }
+    let t1 = tangent_frame(&n, &st.frame);
+    let basis = Matrix3x2::from_columns(&[t1, n.cross(&t1)]);
+    let c = basis.transpose() * input.mindlin_shape * basis;
+    let (c_principal, c_axes) = symmetric_eigen2(&c);
+    let du2 = basis.transpose() * du;
+    let friction = input.friction;
+    let mut row = Row {
+        q: st.q.map(|q| Vector2::new(q[0], q[1])),
+        d: [Matrix2::zeros(); SPRINGS],
+        h: st.h,
+        a: radius_at(old.normal_force),
+        mu: if old.sliding {
+            friction.mu_d
+        } else {
+            friction.mu_s
+        },
+        g_star: input.g_star,
+        c: c_principal,
+        axes: c_axes,
+    };
+    if old.row.h == 0.0 && old.force.norm() > 0.0 {
+        rebuild(&mut row, &(basis.transpose() * old.force), old.normal_force);
+    }
+    // The normal load first, then the tangential increment at the end load
+    // (so a sliding spring ends exactly at its limit mu p(x)).
+    row.normal(p, a_now);
+    let gross = row.tangential(p, &c, &du2);
+    if gross && !old.sliding && friction.mu_d < friction.mu_s {
+        // Sudden static-to-dynamic switch: every spring drops to mu_d.
+        let s = friction.mu_d / friction.mu_s;
+        row.q.iter_mut().for_each(|q| *q *= s);
+        row.d.iter_mut().for_each(|d| *d *= s);
+        row.mu = friction.mu_d;
+    }
+    let (f2, d2) = row.force();
+    let force = basis * f2;
+    let d_fn = d_force_d_load(&row, p, &basis);
+    let mut q = [[0.0; 2]; SPRINGS];
+    for (dst, src) in q.iter_mut().zip(&row.q) {
+        *dst = [src.x, src.y];
+    }
+    TangentialResponse {
+        force,
+        state: TangentialState {
+            force,
+            sliding: gross,
+            row: SpringRow {
+                frame: t1,
+                h: row.h,
+                q,
+            },
+            normal_force: p,
+            ..TangentialState::new(n)
+        },
+        slip: if gross {
+            SlipState::Slip
+        } else {
+            SlipState::Stick
+        },
+        d_force_d_du: basis * d2 * basis.transpose() * proj,
+        d_force_d_fn: d_fn,
+    }
+}
+
+/// dQ/dP at fixed displacement from the springs at their limit at the end
+/// of the step (their limit grows with P; the others do not depend on P to
+/// first order). Central difference of the closed-form cell limit.
+fn d_force_d_load(row: &Row, p: f64, basis: &Matrix3x2<f64>) -> Vector3<f64> {
+    let eps = 1e-6 * p;
+    let (a_p, a_m) = (
+        row.a * ((p + eps) / p).cbrt(),
+        row.a * ((p - eps) / p).cbrt(),
+    );
+    let mut sum = Vector2::zeros();
+    for j in 0..SPRINGS {
+        let l = row.limit(j, p, row.a);
+        let norm = row.q[j].norm();
+        if l > 0.0 && norm >= l * (1.0 - 1e-12) {
+            let dl = (row.limit(j, p + eps, a_p) - row.limit(j, p - eps, a_m)) / (2.0 * eps);
+            sum += row.q[j] / norm * dl;
+        }
+    }
+    basis * (8.0 * row.g_star * row.h * sum)
+}
+
+/// A row that carries `force` (in the frame) with no recorded history: the
+/// state after a virgin (Cattaneo) loading at constant load `p` to that
+/// force, found by bisection on the sticking displacement u (cell j carries
+/// min(w_j u, L_j)); a force at or above the friction limit puts every cell
+/// at its limit, scaled to the force.
+fn rebuild(row: &mut Row, force: &Vector2<f64>, p: f64) {
+    let q_total = force.norm();
+    if p <= 0.0 || q_total == 0.0 {
+        return;
+    }
+    let k = 8.0 * row.g_star * row.h;
+    let cells: Vec<(f64, f64)> = (0..SPRINGS)
+        .map(|j| (row.weight(j, row.a), row.limit(j, p, row.a)))
+        .filter(|&(w, _)| w > 0.0)
+        .collect();
+    let carried = |u: f64| k * cells.iter().map(|&(w, l)| (w * u).min(l)).sum::<f64>();
+    let u_all = cells.iter().map(|&(w, l)| l / w).fold(0.0, f64::max);
+    let full = carried(u_all);
+    let (u, scale) = if q_total >= full {
+        (u_all, q_total / full)
+    } else {
+        let (mut lo, mut hi) = (0.0, u_all);
+        for _ in 0..100 {
+            let mid = 0.5 * (lo + hi);
+            if carried(mid) < q_total {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        (0.5 * (lo + hi), 1.0)
+    };
+    let dir = force / q_total;
+    for j in 0..SPRINGS {
+        let (w, l) = (row.weight(j, row.a), row.limit(j, p, row.a));
+        row.q[j] = dir * ((w * u).min(l) * scale);
+    }
+}
