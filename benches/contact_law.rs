@@ -42,10 +42,7 @@ fn contact_update(c: &mut Criterion) {
                     d_stiffness_d_fn: dkt,
                     contact_radius: (a * bb).sqrt(),
                     g_star: law.g_star,
-                    friction: Friction {
-                        mu_s: 0.5,
-                        mu_d: 0.4,
-                    },
+                    friction: Friction::switch(0.5, 0.4),
                 };
                 black_box(state.update(TangentialLaw::Coulomb, &input))
             })

@@ -173,7 +173,7 @@ fn input(fn_: f64, du: Vector3<f64>, mu_s: f64, mu_d: f64) -> TangentialInput {
         d_stiffness_d_fn: 0.0,
         contact_radius: 50e-6,
         g_star: 25e9,
-        friction: Friction { mu_s, mu_d },
+        friction: Friction::switch(mu_s, mu_d),
     }
 }
 

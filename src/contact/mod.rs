@@ -10,6 +10,7 @@
 
 pub mod cattaneo;
 pub mod elliptic;
+pub mod friction;
 pub mod hertz;
 pub mod stress;
 pub mod tangential;
@@ -18,6 +19,7 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use crate::material::{Material, effective_modulus, effective_shear_modulus};
+pub use friction::FrictionLaw;
 pub use hertz::HertzLaw;
 pub use tangential::{
     Friction, SlipState, TangentialInput, TangentialLaw, TangentialResponse, TangentialState,

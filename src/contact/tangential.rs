@@ -21,7 +21,9 @@
 //! stick  if |F_trial| <= mu F_n,   mu = mu_s (was sticking) or mu_d (was sliding)
 //! slip   otherwise: F = mu_d F_n F_trial / |F_trial|
 //! ```
-//! The change from mu_s to mu_d is sudden, as in the paper's FE model.
+//! The change from mu_s to mu_d is sudden, as in the paper's FE model
+//! (`law = "switch"`); `law = "decay"` makes the sliding coefficient depend
+//! on the slip velocity of the increment ([`super::friction`]).
 //!
 //! Sign convention: `du` is the tangential displacement of the moving body
 //! relative to the fixed surface at the contact, and the law's force is the
@@ -33,6 +35,7 @@ use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
 
 use super::cattaneo;
+use super::friction::{FrictionLaw, SlideInput, Sliding};
 
 /// Mindlin's tangential stiffness k_t = 8 G* sqrt(a b) [N/m].
 pub fn mindlin_stiffness(g_star: f64, semi_axes: [f64; 2]) -> f64 {
@@ -51,11 +54,33 @@ pub enum TangentialLaw {
     CattaneoMindlin,
 }
 
-/// Static and dynamic friction coefficients of one contact.
+/// Static and dynamic friction coefficients of one contact, the law between
+/// them, and the duration of the current increment (the time base of the
+/// slip velocity; only the decay law uses it).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Friction {
     pub mu_s: f64,
     pub mu_d: f64,
+    pub law: FrictionLaw,
+    /// Duration of the increment [s].
+    pub duration: f64,
+}
+
+impl Friction {
+    /// The paper's sudden switch from `mu_s` to `mu_d`.
+    pub fn switch(mu_s: f64, mu_d: f64) -> Self {
+        Friction {
+            mu_s,
+            mu_d,
+            law: FrictionLaw::Switch,
+            duration: 1.0,
+        }
+    }
+
+    /// The same friction over an increment lasting `duration` [s].
+    pub fn during(self, duration: f64) -> Self {
+        Friction { duration, ..self }
+    }
 }
 
 /// Stick or slip at the end of an update.
@@ -174,20 +199,28 @@ impl TangentialState {
     }
 }
 
-/// Coulomb return mapping with the sudden static-to-dynamic switch.
+/// Coulomb return mapping; the sliding coefficient comes from the friction
+/// law ([`super::friction::slide`]: the sudden switch, or the decay law).
 fn coulomb(
     old: &TangentialState,
     proj: &Matrix3<f64>,
     du: &Vector3<f64>,
     input: &TangentialInput,
 ) -> TangentialResponse {
-    let fn_ = input.normal_force;
-    let Friction { mu_s, mu_d } = input.friction;
+    let fr = input.friction;
     let trial = old.force + input.stiffness * du;
-    let limit = if old.sliding { mu_d } else { mu_s } * fn_;
-    let norm = trial.norm();
-    if norm <= limit {
-        TangentialResponse {
+    let sliding = super::friction::slide(&SlideInput {
+        mu_s: fr.mu_s,
+        mu_d: fr.mu_d,
+        law: fr.law,
+        duration: fr.duration,
+        trial: trial.norm(),
+        normal_force: input.normal_force,
+        stiffness: input.stiffness,
+        was_sliding: old.sliding,
+    });
+    match sliding {
+        None => TangentialResponse {
             force: trial,
             state: TangentialState {
                 force: trial,
@@ -197,14 +230,12 @@ fn coulomb(
             slip: SlipState::Stick,
             d_force_d_du: input.stiffness * proj,
             d_force_d_fn: input.d_stiffness_d_fn * du,
-        }
-    } else {
-        slide_response(old, proj, &trial, input.stiffness, du, input)
+        },
+        Some(s) => slide_with(old, proj, &trial, input.stiffness, du, input, &s),
     }
 }
 
-/// Gross sliding: F = mu_d F_n t, t = F_trial/|F_trial|, with the tangent
-/// dF/d(du) = mu_d F_n k / |F_trial| (P - t t^T), k the trial stiffness.
+/// Gross sliding at the constant coefficient mu_d (see [`slide_with`]).
 pub(super) fn slide_response(
     old: &TangentialState,
     proj: &Matrix3<f64>,
@@ -213,12 +244,32 @@ pub(super) fn slide_response(
     du: &Vector3<f64>,
     input: &TangentialInput,
 ) -> TangentialResponse {
+    let s = Sliding::constant(input.friction.mu_d);
+    slide_with(old, proj, trial, k, du, input, &s)
+}
+
+/// Gross sliding: F = mu F_n t, t = F_trial/|F_trial| (T = |F_trial|), with
+/// the tangent dF/d(du) = F_n k [dmu/dT t t^T + mu (P - t t^T) / T] (k the
+/// trial stiffness) and dF/dF_n = (mu + F_n dmu/dF_n) t + mu F_n (P - t t^T)
+/// k' du / T, where dmu/dF_n is total: through T (dT/dF_n = k' t.du), F_n
+/// and k (k' = dk/dF_n). For the switch law mu = mu_d and its derivatives vanish.
+fn slide_with(
+    old: &TangentialState,
+    proj: &Matrix3<f64>,
+    trial: &Vector3<f64>,
+    k: f64,
+    du: &Vector3<f64>,
+    input: &TangentialInput,
+    s: &Sliding,
+) -> TangentialResponse {
     let fn_ = input.normal_force;
-    let mu_d = input.friction.mu_d;
+    let dk = input.d_stiffness_d_fn;
+    let mu = s.mu;
     let norm = trial.norm();
     let t = trial / norm;
     let dir_tangent = (proj - t * t.transpose()) / norm;
-    let force = mu_d * fn_ * t;
+    let force = mu * fn_ * t;
+    let dmu_dfn = s.d_mu_d_trial * dk * t.dot(du) + s.d_mu_d_fn + s.d_mu_d_k * dk;
     TangentialResponse {
         force,
         state: TangentialState {
@@ -230,8 +281,8 @@ pub(super) fn slide_response(
             ..*old
         },
         slip: SlipState::Slip,
-        d_force_d_du: mu_d * fn_ * k * dir_tangent,
-        d_force_d_fn: mu_d * t + mu_d * fn_ * (dir_tangent * (input.d_stiffness_d_fn * du)),
+        d_force_d_du: fn_ * k * (s.d_mu_d_trial * t * t.transpose() + mu * dir_tangent),
+        d_force_d_fn: (mu + fn_ * dmu_dfn) * t + mu * fn_ * (dir_tangent * (dk * du)),
     }
 }
 

@@ -165,6 +165,10 @@ pub struct PreloadFile {
     /// Direction (default [0, 0, -1]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub direction: Option<Spanned<[f64; 3]>>,
+    /// Duration of the ramp from 0 to the full preload [s] (default 1 s):
+    /// the time base of the slip velocity of the quasi-static solver.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ramp_time: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -190,6 +194,22 @@ pub struct FrictionFile {
     pub dynamic_ratio: Spanned<f64>,
     #[serde(default)]
     pub tangential_law: TangentialLaw,
+    /// switch (default) | decay: which coefficient acts while sliding.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub law: Option<Spanned<FrictionLawName>>,
+    /// c in mu(v) = mu_d + (mu_s - mu_d) exp(-c v) [s/m] (law = "decay").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub decay_coefficient: Option<Spanned<f64>>,
+}
+
+/// `[friction] law`: the sliding coefficient (contact::friction).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FrictionLawName {
+    /// Sudden switch to mu_d = dynamic_ratio * mu_s.
+    Switch,
+    /// Exponential decay from mu_s to mu_d with the slip velocity.
+    Decay,
 }
 
 fn zero() -> Spanned<f64> {

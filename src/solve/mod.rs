@@ -220,7 +220,8 @@ impl PointPose {
     }
 }
 
-/// Static coefficients -> per-contact friction (mu_d = ratio mu_s), checked.
+/// Static coefficients -> per-contact friction (mu_d = ratio mu_s, the
+/// scene's friction law), checked. The solver sets each increment's duration.
 pub fn frictions(coupling: &Coupling, mu_s: &[f64]) -> Result<Vec<Friction>, SolveError> {
     if mu_s.len() != coupling.contacts.len() {
         return Err(SolveError::MuCount {
@@ -229,13 +230,14 @@ pub fn frictions(coupling: &Coupling, mu_s: &[f64]) -> Result<Vec<Friction>, Sol
         });
     }
     let ratio = coupling.scene.friction.dynamic_ratio;
+    let law = coupling.scene.friction.law;
     mu_s.iter()
         .enumerate()
         .map(|(i, &m)| {
             if (0.0..=MU_MAX).contains(&m) {
                 Ok(Friction {
-                    mu_s: m,
-                    mu_d: ratio * m,
+                    law,
+                    ..Friction::switch(m, ratio * m)
                 })
             } else {
                 Err(SolveError::MuRange {
