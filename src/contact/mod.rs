@@ -12,6 +12,7 @@ pub mod cattaneo;
 pub mod elliptic;
 pub mod friction;
 pub mod hertz;
+pub mod series;
 pub mod stress;
 pub mod tangential;
 
@@ -21,6 +22,7 @@ use thiserror::Error;
 use crate::material::{Material, effective_modulus, effective_shear_modulus};
 pub use friction::FrictionLaw;
 pub use hertz::HertzLaw;
+pub use series::SeriesNormal;
 pub use tangential::{
     Friction, SlipState, TangentialInput, TangentialLaw, TangentialResponse, TangentialState,
     mindlin_stiffness,

@@ -104,6 +104,9 @@ pub struct CouplingFile {
     /// Angle between the two flanks of a groove [deg].
     #[serde(default = "default_opening_angle")]
     pub opening_angle_deg: Spanned<f64>,
+    /// Support compliance in series with every contact, normal direction [m/N].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub support_compliance: Option<Spanned<f64>>,
 }
 
 fn default_opening_angle() -> Spanned<f64> {
@@ -152,6 +155,9 @@ pub struct SurfaceFile {
     pub centre: Option<Spanned<[f64; 3]>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub radius: Option<Spanned<f64>>,
+    /// Support compliance in series with this contact, normal direction [m/N].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub support_compliance: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

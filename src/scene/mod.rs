@@ -61,6 +61,8 @@ pub struct Surface {
     /// Index of the moving ball (0-based).
     pub ball: usize,
     pub line: Option<usize>,
+    /// Support compliance in series with the contact, normal direction [m/N].
+    pub support_compliance: f64,
 }
 
 /// The preload on the moving half.

@@ -111,6 +111,10 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
             material: material(&s.material, &field("material"))?,
             ball: ball as usize - 1,
             line: ctx.line_of(&s.kind.span()),
+            support_compliance: match &s.support_compliance {
+                Some(v) => compliance(ctx, v, &field("support_compliance"))?,
+                None => 0.0,
+            },
         });
     }
     // Contacts are numbered ball by ball (the order of --mu).
@@ -320,6 +324,20 @@ fn friction_law(fr: &FrictionFile, ctx: &ErrorContext) -> Result<FrictionLaw, Sc
             }
             Ok(FrictionLaw::Decay { coefficient: v })
         }
+    }
+}
+
+/// A support compliance [m/N]: finite and >= 0.
+pub fn compliance(ctx: &ErrorContext, v: &Spanned<f64>, field: &str) -> Result<f64, SceneError> {
+    let x = *v.get_ref();
+    if x.is_finite() && x >= 0.0 {
+        Ok(x)
+    } else {
+        Err(ctx.error(
+            Some(&v.span()),
+            field,
+            format!("{x} must be finite and >= 0 (a compliance in m/N)"),
+        ))
     }
 }
 

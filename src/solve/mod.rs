@@ -116,6 +116,12 @@ pub struct ContactResult {
     pub tangential_force: [f64; 3],
     pub tangential_force_n: f64,
     pub approach_m: f64,
+    /// The approach split into the Hertz part (F/K)^(2/3) and the part c F
+    /// of the series support compliance c (`contact::series`) [m].
+    pub hertz_approach_m: f64,
+    pub support_approach_m: f64,
+    /// Support compliance c [m/N] (0: none).
+    pub support_compliance_m_per_n: f64,
     pub state: SlipState,
     /// Static and dynamic coefficient used.
     pub mu_static: f64,
@@ -154,6 +160,9 @@ impl ContactResult {
             tangential_force: [ft.x, ft.y, ft.z],
             tangential_force_n: ft.norm(),
             approach_m: e.approach,
+            hertz_approach_m: contact.normal.hertz_approach(e.normal_force),
+            support_approach_m: contact.normal.support_approach(e.normal_force),
+            support_compliance_m_per_n: contact.normal.compliance,
             state: e.slip(),
             mu_static: friction.mu_s,
             mu_dynamic: friction.mu_d,

@@ -5,8 +5,9 @@
 //! - Load schedule: lambda = s^(3/2) with s in uniform steps, so that every
 //!   increment adds about the same Hertz approach (delta ~ F^(2/3)).
 //! - Predictor: the linearised frictionless solution, x(lambda) = s x_1,
-//!   where W x_1 = -(f_i / K_i)^(2/3) (W the constraint rows, f_i the
-//!   frictionless contact forces at full preload).
+//!   where W x_1 = -(f_i / K_i)^(2/3) - c_i f_i (W the constraint rows, f_i
+//!   the frictionless contact forces at full preload, c_i the support
+//!   compliances).
 //! - Corrector: Newton on R(x) = sum_i [F_i; p_i x F_i] + [P; p_P x P] = 0
 //!   with the consistent tangent of the contact layer plus the geometric
 //!   terms of moving points; finite rotations (quaternions), contact points
@@ -250,9 +251,7 @@ impl<'a> Solver<'a> {
         let rows = coupling.constraint_rows(&touching);
         let w = Matrix6::from_fn(|r, c| rows[r][c]);
         let f = frictionless_preload_forces(coupling);
-        let rhs = Vector6::from_fn(|i, _| {
-            -(f[i].max(0.0) / coupling.contacts[i].law.hertz.hertz_constant).powf(2.0 / 3.0)
-        });
+        let rhs = Vector6::from_fn(|i, _| -coupling.contacts[i].normal.approach(f[i].max(0.0)));
         let x1 = w.lu().solve(&rhs).unwrap_or_else(Vector6::zeros);
         let preload = coupling.scene.preload.force;
         let force_scale = match program {

@@ -528,9 +528,7 @@ impl<'a> Simulation<'a> {
             max_speed = max_speed
                 .max(motion.velocity_at(&centre).norm())
                 .max(motion.velocity_at(&e.geometry.point).norm());
-            if e.approach > 0.0 {
-                hertz += 0.4 * c.contacts[i].law.hertz.hertz_constant * e.approach.powf(2.5);
-            }
+            hertz += c.contacts[i].normal.energy(e.approach);
         }
         let residual = (rf.norm() / p.force).max(rm.norm() / (p.force * self.length));
         let kinetic_before = self.kinetic(&linvel, &angvel, &rot);
