@@ -111,6 +111,9 @@ pub struct TangentialState {
     /// Normal force when this state was committed [N] (the solvers integrate
     /// k_t at the mean normal force of an increment, see `solve::contact_layer`).
     pub normal_force: f64,
+    /// Slip velocity of the committed increment [m/s] (0 while sticking; the
+    /// decay friction law's velocity, `contact::friction`).
+    pub slip_velocity: f64,
 }
 
 /// What the law returns for a trial increment: the new force, the state to
@@ -156,6 +159,7 @@ impl TangentialState {
             since_reversal: Vector3::zeros(),
             masing: 1.0,
             normal_force: 0.0,
+            slip_velocity: 0.0,
         }
     }
 
@@ -218,6 +222,7 @@ fn coulomb(
         normal_force: input.normal_force,
         stiffness: input.stiffness,
         was_sliding: old.sliding,
+        previous_velocity: old.slip_velocity,
     });
     match sliding {
         None => TangentialResponse {
@@ -225,6 +230,7 @@ fn coulomb(
             state: TangentialState {
                 force: trial,
                 sliding: false,
+                slip_velocity: 0.0,
                 ..*old
             },
             slip: SlipState::Stick,
@@ -278,6 +284,7 @@ fn slide_with(
             reversal_force: force,
             since_reversal: Vector3::zeros(),
             masing: 2.0,
+            slip_velocity: s.slip / input.friction.duration,
             ..*old
         },
         slip: SlipState::Slip,

@@ -19,7 +19,7 @@
 //!    x_(n+1) = x_n + dt v_(n+1) (symplectic Euler, see [`world`]).
 //!
 //! Friction: the decay law (`contact::friction`) sees the actual slip
-//! velocity, the slip of a step over dt. The seating here is far faster
+//! velocity, the slip of a step over dt (of the last step while sliding). The seating here is far faster
 //! than a real one (T_r below, not `[preload] ramp_time`), so with a finite
 //! decay_coefficient its slip speeds, and with them mu, differ from the
 //! quasi-static solver's; the two limits (coefficient 0 or very large) do not
