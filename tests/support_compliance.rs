@@ -212,3 +212,34 @@ fn scene_01_scatter_rises_by_the_linearised_compliance_factor() {
         );
     }
 }
+
+#[test]
+fn run_reports_the_approach_split_into_hertz_and_support() {
+    let c = 2.0e-8;
+    let text = std::fs::read_to_string(common::scene("01_maxwell_vgroove_steel.toml")).unwrap();
+    let text = text.replacen(
+        "groove_material = \"steel\"",
+        &format!("groove_material = \"steel\"\nsupport_compliance = {c:e}"),
+        1,
+    );
+    let path = std::env::temp_dir().join(format!("kinrepro-support-{}.toml", std::process::id()));
+    std::fs::write(&path, text).unwrap();
+    let p = path.to_str().unwrap();
+    let (ok, out, err) = common::kinrepro(&["run", p, "--json"]);
+    let (ok_t, table, _) = common::kinrepro(&["run", p]);
+    std::fs::remove_file(&path).unwrap();
+    assert!(ok && ok_t, "{err}");
+    assert!(table.contains("approach = Hertz + support"), "{table}");
+    let json: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let k = steel_k();
+    for contact in json["contacts"].as_array().unwrap() {
+        let get = |key: &str| contact[key].as_f64().unwrap();
+        let f = get("normal_force_n");
+        // Independent closed forms: Hertz (F/K)^(2/3), support c F, and their sum.
+        assert!((get("hertz_approach_m") / (f / k).powf(2.0 / 3.0) - 1.0).abs() < 1e-12);
+        assert!((get("support_approach_m") / (c * f) - 1.0).abs() < 1e-12);
+        assert_eq!(get("support_compliance_m_per_n"), c);
+        let total = get("approach_m");
+        assert!(((f / k).powf(2.0 / 3.0) + c * f - total).abs() < 1e-9 * total);
+    }
+}
