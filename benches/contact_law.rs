@@ -57,10 +57,7 @@ fn contact_update(c: &mut Criterion) {
                         contact_radius: (a * bb).sqrt(),
                         g_star: law.g_star,
                         mindlin_shape: tangential_tensor(shape, &normal, &Vector3::x()),
-                        friction: Friction {
-                            mu_s: 0.5,
-                            mu_d: 0.4,
-                        },
+                        friction: Friction::switch(0.5, 0.4),
                     };
                     black_box(state.update(tl, &input))
                 })

@@ -175,7 +175,7 @@ fn input(fn_: f64, du: Vector3<f64>, mu_s: f64, mu_d: f64) -> TangentialInput {
         contact_radius: 50e-6,
         g_star: 25e9,
         mindlin_shape: plane,
-        friction: Friction { mu_s, mu_d },
+        friction: Friction::switch(mu_s, mu_d),
     }
 }
 
@@ -455,10 +455,7 @@ fn steps(rows: &[(f64, f64)]) -> Vec<LoadStep> {
         .collect()
 }
 
-const MU: Friction = Friction {
-    mu_s: 0.5,
-    mu_d: 0.4,
-};
+const MU: Friction = Friction::switch(0.5, 0.4);
 
 #[test]
 fn cattaneo_ramp_matches_the_closed_form_at_every_step() {

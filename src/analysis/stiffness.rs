@@ -48,7 +48,7 @@ pub struct ContactSpring {
     pub point: Vector3<f64>,
     pub normal: Vector3<f64>,
     pub normal_force: f64,
-    /// Hertz normal stiffness k_n [N/m].
+    /// Normal stiffness k_n [N/m] (Hertz, in series with the support compliance).
     pub normal_stiffness: f64,
     /// Mindlin tangential stiffness k_t [N/m] (0 for a frictionless contact).
     pub tangential_stiffness: f64,

@@ -8,7 +8,7 @@ use nalgebra::{Matrix6, UnitQuaternion, Vector3, Vector6};
 use thiserror::Error;
 
 use crate::contact::stress::ShearRatios;
-use crate::contact::{ContactError, ContactLaw, ContactPair, ContactShape};
+use crate::contact::{ContactError, ContactLaw, ContactPair, ContactShape, SeriesNormal};
 use crate::material::Material;
 use crate::scene::{Scene, SurfaceGeometry};
 pub use constraint::{ConstraintReport, FrictionLimit};
@@ -55,6 +55,8 @@ pub struct Contact {
     pub shape: ContactShape,
     pub pair: ContactPair,
     pub law: ContactLaw,
+    /// The normal law: Hertz in series with the surface's support compliance.
+    pub normal: SeriesNormal,
     /// tau_max/p0 of the two bodies (for the stress check).
     pub shear: ShearRatios,
     pub fixed: FixedShape,
@@ -179,6 +181,7 @@ impl Coupling {
                 surface: s.geometry,
                 shape,
                 shear: ShearRatios::new(&pair, &law.hertz),
+                normal: SeriesNormal::new(law.hertz, s.support_compliance),
                 pair,
                 law,
                 fixed: FixedShape::new(&s.geometry, half_length),

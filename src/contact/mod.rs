@@ -9,11 +9,13 @@
 //! | sphere-cylinder (crossed) | 1/Rx = 1/R1 + 1/R2 (across the pin), Ry = R1 (along it) |
 
 pub mod elliptic;
+pub mod friction;
 pub mod hertz;
 pub mod history;
 pub mod mindlin;
 pub mod mindlin_deresiewicz;
 pub mod quadrature;
+pub mod series;
 pub mod stress;
 pub mod tangential;
 
@@ -21,8 +23,10 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use crate::material::{Material, effective_modulus, effective_shear_modulus};
+pub use friction::FrictionLaw;
 pub use hertz::HertzLaw;
 pub use mindlin::{mindlin_axis_coefficients, tangential_tensor};
+pub use series::SeriesNormal;
 pub use tangential::{
     Friction, SlipState, TangentialInput, TangentialLaw, TangentialResponse, TangentialState,
 };

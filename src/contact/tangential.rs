@@ -17,7 +17,9 @@
 //! slip   otherwise: F = the point of |F| = mu_d F_n closest to F_trial in the
 //!        complementary-energy norm of K_t (mu_d F_n F_trial/|F_trial| for a circle)
 //! ```
-//! The change from mu_s to mu_d is sudden, as in the paper's FE model.
+//! The change from mu_s to mu_d is sudden, as in the paper's FE model
+//! (`law = "switch"`); `law = "decay"` makes the sliding coefficient depend
+//! on the slip velocity of the increment ([`super::friction`]).
 //!
 //! Sign convention: `du` is the tangential displacement of the moving body
 //! relative to the fixed surface at the contact, and the law's force is the
@@ -28,6 +30,7 @@
 use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
 
+use super::friction::{FrictionLaw, SlideInput, Sliding};
 use super::mindlin::project_tangential;
 use super::mindlin_deresiewicz::{self, SpringRow};
 
@@ -83,11 +86,33 @@ impl TryFrom<String> for TangentialLaw {
     }
 }
 
-/// Static and dynamic friction coefficients of one contact.
+/// Static and dynamic friction coefficients of one contact, the law between
+/// them, and the duration of the current increment (the time base of the
+/// slip velocity; only the decay law uses it).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Friction {
     pub mu_s: f64,
     pub mu_d: f64,
+    pub law: FrictionLaw,
+    /// Duration of the increment [s].
+    pub duration: f64,
+}
+
+impl Friction {
+    /// The paper's sudden switch from `mu_s` to `mu_d`.
+    pub const fn switch(mu_s: f64, mu_d: f64) -> Self {
+        Friction {
+            mu_s,
+            mu_d,
+            law: FrictionLaw::Switch,
+            duration: 1.0,
+        }
+    }
+
+    /// The same friction over an increment lasting `duration` [s].
+    pub fn during(self, duration: f64) -> Self {
+        Friction { duration, ..self }
+    }
 }
 
 /// Stick or slip at the end of an update.
@@ -114,6 +139,9 @@ pub struct TangentialState {
     /// Normal force when this state was committed [N] (the solvers integrate
     /// k_t at the mean normal force of an increment, see `solve::contact_layer`).
     pub normal_force: f64,
+    /// Slip velocity of the committed increment [m/s] (0 while sticking; the
+    /// decay friction law's velocity, `contact::friction`).
+    pub slip_velocity: f64,
 }
 
 /// What the law returns for a trial increment: the new force, the state to
@@ -161,6 +189,7 @@ impl TangentialState {
             sliding: false,
             row: SpringRow::default(),
             normal_force: 0.0,
+            slip_velocity: 0.0,
         }
     }
 
@@ -208,59 +237,84 @@ impl TangentialState {
     }
 }
 
-/// Coulomb return mapping with the sudden static-to-dynamic switch.
+/// Coulomb return mapping; the sliding coefficient comes from the friction
+/// law ([`super::friction::slide`]: the sudden switch, or the decay law).
+/// The decay law's slip increment uses the stiffness along the trial force,
+/// k = t^T K_t t (t = F_trial/|F_trial|): exact for a circular contact, the
+/// stiffness of the load direction for an elliptical one.
 fn coulomb(
     old: &TangentialState,
     du: &Vector3<f64>,
     input: &TangentialInput,
 ) -> TangentialResponse {
-    let fn_ = input.normal_force;
-    let Friction { mu_s, mu_d } = input.friction;
+    let fr = input.friction;
     let trial = old.force + input.stiffness * du;
-    let limit = if old.sliding { mu_d } else { mu_s } * fn_;
     let norm = trial.norm();
-    if norm <= limit {
-        TangentialResponse {
+    let t = if norm > 0.0 { trial / norm } else { trial };
+    let k_along = t.dot(&(input.stiffness * t));
+    let sliding = super::friction::slide(&SlideInput {
+        mu_s: fr.mu_s,
+        mu_d: fr.mu_d,
+        law: fr.law,
+        duration: fr.duration,
+        trial: norm,
+        normal_force: input.normal_force,
+        stiffness: k_along,
+        was_sliding: old.sliding,
+        previous_velocity: old.slip_velocity,
+    });
+    match sliding {
+        None => TangentialResponse {
             force: trial,
             state: TangentialState {
                 force: trial,
                 sliding: false,
+                slip_velocity: 0.0,
                 ..*old
             },
             slip: SlipState::Stick,
             d_force_d_du: input.stiffness,
             d_force_d_fn: input.d_stiffness_d_fn * du,
-        }
-    } else {
-        slide_response(old, &trial, &input.stiffness, du, input)
+        },
+        Some(s) => slide_response(old, &trial, &input.stiffness, du, input, &s),
     }
 }
 
-/// Gross sliding: F on the circle |F| = mu_d F_n closest to F_trial in the
-/// complementary-energy norm of K (`mindlin::project_tangential`; the radial return
-/// F = mu_d F_n F_trial/|F_trial| for a circular contact), so that the
-/// friction force opposes the slip also for an elliptical K. Tangent:
-/// dF/d(du) = (dF/dF_trial) K, dF/dF_n = mu_d dF/dL + (dF/dF_trial) (dK/dF_n) du.
+/// Gross sliding: F on the circle |F| = mu F_n closest to F_trial in the
+/// complementary-energy norm of K (`mindlin::project_tangential`; the radial
+/// return F = mu F_n F_trial/|F_trial| for a circular contact), so that the
+/// friction force opposes the slip also for an elliptical K; mu from the
+/// friction law (`s`; constant mu_d for the switch law). Tangent, with
+/// T = |F_trial|, t = F_trial/T and L = mu F_n the limit:
+/// dF/d(du) = (dF/dF_trial) K + (dF/dL) F_n (dmu/dT) t^T K,
+/// dF/dF_n = (dF/dL) (mu + F_n dmu/dF_n) + (dF/dF_trial) (dK/dF_n) du,
+/// dmu/dF_n total through T (dT/dF_n = t . K' du), F_n and k (dk/dF_n = t^T K' t).
 fn slide_response(
     old: &TangentialState,
     trial: &Vector3<f64>,
     k: &Matrix3<f64>,
     du: &Vector3<f64>,
     input: &TangentialInput,
+    s: &Sliding,
 ) -> TangentialResponse {
     let fn_ = input.normal_force;
-    let mu_d = input.friction.mu_d;
-    let (force, d_trial, d_limit) = project_tangential(k, &input.normal, trial, mu_d * fn_);
+    let dk = &input.d_stiffness_d_fn;
+    let mu = s.mu;
+    let (force, d_trial, d_limit) = project_tangential(k, &input.normal, trial, mu * fn_);
+    let t = trial.normalize();
+    let dmu_dfn = s.d_mu_d_trial * t.dot(&(dk * du)) + s.d_mu_d_fn + s.d_mu_d_k * t.dot(&(dk * t));
+    let dt_ddu = k.transpose() * t; // dT/d(du) as a column
     TangentialResponse {
         force,
         state: TangentialState {
             force,
             sliding: true,
+            slip_velocity: s.slip / input.friction.duration,
             ..*old
         },
         slip: SlipState::Slip,
-        d_force_d_du: d_trial * k,
-        d_force_d_fn: mu_d * d_limit + d_trial * (input.d_stiffness_d_fn * du),
+        d_force_d_du: d_trial * k + (d_limit * (fn_ * s.d_mu_d_trial)) * dt_ddu.transpose(),
+        d_force_d_fn: (mu + fn_ * dmu_dfn) * d_limit + d_trial * (dk * du),
     }
 }
 

@@ -167,11 +167,36 @@ impl RunReport {
                 factor(c.safety_factor)
             );
         }
+        support_split(&mut s, &self.contacts);
         let _ = writeln!(
             s,
             "tau_max: maximum subsurface shear stress on the contact axis (closed form for circles, Boussinesq quadrature for ellipses); SF = allowable / actual, \"-\" where the materials give no allowable"
         );
         s
+    }
+}
+
+/// With a series support compliance (`support_compliance`): each contact's
+/// approach split into its Hertz and support parts.
+fn support_split(s: &mut String, contacts: &[ContactResult]) {
+    if contacts.iter().all(|c| c.support_compliance_m_per_n == 0.0) {
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "approach = Hertz + support (series support compliance c):\n{:>2} {:>12} {:>12} {:>12} {:>12}",
+        "#", "c [m/N]", "Hertz [nm]", "support [nm]", "total [nm]"
+    );
+    for (i, c) in contacts.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "{:>2} {:>12.4e} {:>12.4} {:>12.4} {:>12.4}",
+            i + 1,
+            c.support_compliance_m_per_n,
+            c.hertz_approach_m * 1e9,
+            c.support_approach_m * 1e9,
+            c.approach_m * 1e9
+        );
     }
 }
 

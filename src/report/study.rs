@@ -7,7 +7,8 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use crate::assembly::Coupling;
-use crate::scene::VariationBounds;
+use crate::contact::FrictionLaw;
+use crate::scene::{DEFAULT_RAMP_TIME, VariationBounds};
 use crate::study::plot::{
     ConvergenceSeries, Dof, VariantScatter, VariantSigma, plot_convergence, plot_sigma_bars,
     plot_xy_scatter,
@@ -88,6 +89,13 @@ pub struct VariantReport {
     pub mu_static: f64,
     pub spread: f64,
     pub dynamic_ratio: f64,
+    /// Sliding coefficient: the sudden switch or the decay law
+    /// (`{"law": "switch"}` or `{"law": "decay", "coefficient": c}`, c in s/m).
+    #[serde(default)]
+    pub friction_law: FrictionLaw,
+    /// Preload ramp duration [s] (the time base of the decay law's slip velocity).
+    #[serde(default = "default_ramp_time")]
+    pub ramp_time_s: f64,
     /// The seating solver.
     pub solver: String,
     /// What varied: the names of the design dimensions, in row order.
@@ -278,6 +286,8 @@ impl VariantReport {
             mu_static: f.mu_static,
             spread: f.spread,
             dynamic_ratio: f.dynamic_ratio,
+            friction_law: f.law,
+            ramp_time_s: coupling.scene.preload.ramp_time,
             solver: opts.method.name().to_string(),
             inputs: var.input_names(coupling),
             start_bounds: var.start.map(|b| [b.offset.into(), b.tilt.into()]),
@@ -414,7 +424,7 @@ impl StudyReport {
             let _ = writeln!(s);
             let _ = writeln!(
                 s,
-                "{} ({}): {} samples, {} seed {}, mu_s = {} +- {} uniform, mu_d = {} mu_s",
+                "{} ({}): {} samples, {} seed {}, mu_s = {} +- {} uniform, mu_d = {} mu_s, {}",
                 v.name,
                 v.scene,
                 v.samples,
@@ -422,7 +432,8 @@ impl StudyReport {
                 v.seed,
                 v.mu_static,
                 v.spread,
-                v.dynamic_ratio
+                v.dynamic_ratio,
+                friction_law_text(&v.friction_law, v.ramp_time_s)
             );
             let _ = writeln!(s, "  varied: {}", varied(v));
             if let Some(b) = &v.variation_bounds {
@@ -842,5 +853,19 @@ fn csv_field(s: &str) -> String {
         format!("\"{}\"", s.replace('"', "\"\""))
     } else {
         s.to_string()
+    }
+}
+
+fn default_ramp_time() -> f64 {
+    DEFAULT_RAMP_TIME
+}
+
+/// The friction reading in words, for the study header.
+fn friction_law_text(law: &FrictionLaw, ramp_time: f64) -> String {
+    match law {
+        FrictionLaw::Switch => "sudden switch".to_string(),
+        FrictionLaw::Decay { coefficient } => format!(
+            "decay mu = mu_d + (mu_s - mu_d) exp(-{coefficient} s/m * v_slip), ramp {ramp_time} s"
+        ),
     }
 }

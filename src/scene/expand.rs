@@ -52,6 +52,9 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
                 .map_err(|e| ctx.error(Some(&m.span()), field, e.to_string()))?;
         }
     }
+    if let Some(v) = &c.support_compliance {
+        super::resolve::compliance(ctx, v, "coupling.support_compliance")?;
+    }
     let diameter = positive(&c.diameter, "coupling.diameter")?;
     let r_ball = positive(&c.ball_diameter, "coupling.ball_diameter")? / 2.0;
     let r_elem = match (c.groove, &c.groove_element_diameter) {
@@ -146,6 +149,7 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
                 direction: None,
                 centre: None,
                 radius: None,
+                support_compliance: c.support_compliance.clone(),
             };
             match (c.groove, flat) {
                 (GrooveKind::Planes, _) | (_, true) => {

@@ -104,6 +104,9 @@ pub struct CouplingFile {
     /// Angle between the two flanks of a groove [deg].
     #[serde(default = "default_opening_angle")]
     pub opening_angle_deg: Spanned<f64>,
+    /// Support compliance in series with every contact, normal direction [m/N].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub support_compliance: Option<Spanned<f64>>,
 }
 
 fn default_opening_angle() -> Spanned<f64> {
@@ -152,6 +155,9 @@ pub struct SurfaceFile {
     pub centre: Option<Spanned<[f64; 3]>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub radius: Option<Spanned<f64>>,
+    /// Support compliance in series with this contact, normal direction [m/N].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub support_compliance: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -165,6 +171,10 @@ pub struct PreloadFile {
     /// Direction (default [0, 0, -1]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub direction: Option<Spanned<[f64; 3]>>,
+    /// Duration of the ramp from 0 to the full preload [s] (default 1 s):
+    /// the time base of the slip velocity of the quasi-static solver.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ramp_time: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -190,6 +200,22 @@ pub struct FrictionFile {
     pub dynamic_ratio: Spanned<f64>,
     #[serde(default)]
     pub tangential_law: TangentialLaw,
+    /// switch (default) | decay: which coefficient acts while sliding.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub law: Option<Spanned<FrictionLawName>>,
+    /// c in mu(v) = mu_d + (mu_s - mu_d) exp(-c v) [s/m] (law = "decay").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub decay_coefficient: Option<Spanned<f64>>,
+}
+
+/// `[friction] law`: the sliding coefficient (contact::friction).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FrictionLawName {
+    /// Sudden switch to mu_d = dynamic_ratio * mu_s.
+    Switch,
+    /// Exponential decay from mu_s to mu_d with the slip velocity.
+    Decay,
 }
 
 fn zero() -> Spanned<f64> {

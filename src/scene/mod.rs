@@ -17,7 +17,7 @@ use std::path::Path;
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
-use crate::contact::TangentialLaw;
+use crate::contact::{FrictionLaw, TangentialLaw};
 use crate::material::Material;
 use crate::study::Sampler;
 use error::ErrorContext;
@@ -61,6 +61,8 @@ pub struct Surface {
     /// Index of the moving ball (0-based).
     pub ball: usize,
     pub line: Option<usize>,
+    /// Support compliance in series with the contact, normal direction [m/N].
+    pub support_compliance: f64,
 }
 
 /// The preload on the moving half.
@@ -72,15 +74,23 @@ pub struct Preload {
     pub point: Vector3<f64>,
     /// Unit direction.
     pub direction: Vector3<f64>,
+    /// Duration of the ramp from 0 to `force` [s] (`[preload] ramp_time`).
+    pub ramp_time: f64,
 }
 
-/// Friction settings: mu_s in mu0 +- spread (uniform), mu_d = ratio mu_s.
+/// Default `[preload] ramp_time` [s]: the end time of a static load step in
+/// FE codes (ANSYS), so that slip velocities mean the same in both.
+pub const DEFAULT_RAMP_TIME: f64 = 1.0;
+
+/// Friction settings: mu_s in mu0 +- spread (uniform), mu_d = ratio mu_s,
+/// and the law of the sliding coefficient (switch or decay).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FrictionSettings {
     pub mu_static: f64,
     pub spread: f64,
     pub dynamic_ratio: f64,
     pub tangential_law: TangentialLaw,
+    pub law: FrictionLaw,
 }
 
 /// Study defaults of a scene.

@@ -5,11 +5,14 @@ use nalgebra::Vector3;
 use toml::Spanned;
 
 use super::error::{ErrorContext, SceneError};
-use super::file::{SceneFile, SurfaceFile, SurfaceKind, VariationFile};
-use super::{
-    Ball, DynamicsSettings, EvaluationPoint, FrictionSettings, Preload, Scene, StudySettings,
-    Surface, SurfaceGeometry, VariationBounds,
+use super::file::{
+    FrictionFile, FrictionLawName, SceneFile, SurfaceFile, SurfaceKind, VariationFile,
 };
+use super::{
+    Ball, DEFAULT_RAMP_TIME, DynamicsSettings, EvaluationPoint, FrictionSettings, Preload, Scene,
+    StudySettings, Surface, SurfaceGeometry, VariationBounds,
+};
+use crate::contact::{FrictionLaw, TangentialLaw};
 use crate::material::{Material, MaterialError};
 use crate::study::Sampler;
 
@@ -108,6 +111,10 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
             material: material(&s.material, &field("material"))?,
             ball: ball as usize - 1,
             line: ctx.line_of(&s.kind.span()),
+            support_compliance: match &s.support_compliance {
+                Some(v) => compliance(ctx, v, &field("support_compliance"))?,
+                None => 0.0,
+            },
         });
     }
     // Contacts are numbered ball by ball (the order of --mu).
@@ -135,6 +142,10 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         direction: match &p.direction {
             Some(v) => unit(v, "preload.direction")?,
             None => -Vector3::z(),
+        },
+        ramp_time: match &p.ramp_time {
+            Some(v) => positive(v, "preload.ramp_time", "s")?,
+            None => DEFAULT_RAMP_TIME,
         },
     };
 
@@ -170,6 +181,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
             format!("{ratio} must lie in (0, 1]: mu_d = ratio * mu_s"),
         ));
     }
+    let law = friction_law(fr, ctx)?;
 
     let st = &f.study;
     let samples = *st.samples.get_ref();
@@ -265,6 +277,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
             spread,
             dynamic_ratio: ratio,
             tangential_law: fr.tangential_law,
+            law,
         },
         study: StudySettings {
             samples: samples as usize,
@@ -275,6 +288,57 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         dynamics,
         variation,
     })
+}
+
+/// `[friction] law` and `decay_coefficient`: the decay law needs a finite
+/// coefficient >= 0 [s/m] and the Coulomb tangential law; the switch law takes none.
+fn friction_law(fr: &FrictionFile, ctx: &ErrorContext) -> Result<FrictionLaw, SceneError> {
+    let name = fr.law.as_ref().map(|l| *l.get_ref());
+    match (name, &fr.decay_coefficient) {
+        (None | Some(FrictionLawName::Switch), None) => Ok(FrictionLaw::Switch),
+        (None | Some(FrictionLawName::Switch), Some(c)) => Err(ctx.error(
+            Some(&c.span()),
+            "friction.decay_coefficient",
+            "only the decay law uses it: set law = \"decay\" or remove it",
+        )),
+        (Some(FrictionLawName::Decay), None) => Err(ctx.error(
+            fr.law.as_ref().map(|l| l.span()).as_ref(),
+            "friction.decay_coefficient",
+            "missing: law = \"decay\" needs decay_coefficient [s/m]",
+        )),
+        (Some(FrictionLawName::Decay), Some(c)) => {
+            let v = *c.get_ref();
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(ctx.error(
+                    Some(&c.span()),
+                    "friction.decay_coefficient",
+                    format!("{v} must be finite and >= 0 (s/m)"),
+                ));
+            }
+            if fr.tangential_law != TangentialLaw::Coulomb {
+                return Err(ctx.error(
+                    fr.law.as_ref().map(|l| l.span()).as_ref(),
+                    "friction.law",
+                    "law = \"decay\" works with tangential_law = \"coulomb\" only",
+                ));
+            }
+            Ok(FrictionLaw::Decay { coefficient: v })
+        }
+    }
+}
+
+/// A support compliance [m/N]: finite and >= 0.
+pub fn compliance(ctx: &ErrorContext, v: &Spanned<f64>, field: &str) -> Result<f64, SceneError> {
+    let x = *v.get_ref();
+    if x.is_finite() && x >= 0.0 {
+        Ok(x)
+    } else {
+        Err(ctx.error(
+            Some(&v.span()),
+            field,
+            format!("{x} must be finite and >= 0 (a compliance in m/N)"),
+        ))
+    }
 }
 
 /// `[variation]`: every bound finite and >= 0.

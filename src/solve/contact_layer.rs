@@ -60,8 +60,8 @@ pub fn evaluate(
     let g = coupling.geometry(i, pose);
     let approach = -g.gap;
     let hertz = &contact.law.hertz;
-    let fn_ = hertz.force(approach);
-    let kn = hertz.stiffness(approach);
+    // Hertz in series with the support compliance (`contact::series`).
+    let (fn_, kn) = contact.normal.force_and_stiffness(approach);
     let body_point = pose.rotation.inverse() * (g.point - pose.translation);
     let du = g.point - committed_pose.apply(&body_point);
     let f_mid = 0.5 * (committed.normal_force + fn_);

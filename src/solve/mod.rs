@@ -116,6 +116,12 @@ pub struct ContactResult {
     pub tangential_force: [f64; 3],
     pub tangential_force_n: f64,
     pub approach_m: f64,
+    /// The approach split into the Hertz part (F/K)^(2/3) and the part c F
+    /// of the series support compliance c (`contact::series`) [m].
+    pub hertz_approach_m: f64,
+    pub support_approach_m: f64,
+    /// Support compliance c [m/N] (0: none).
+    pub support_compliance_m_per_n: f64,
     pub state: SlipState,
     /// Static and dynamic coefficient used.
     pub mu_static: f64,
@@ -154,6 +160,9 @@ impl ContactResult {
             tangential_force: [ft.x, ft.y, ft.z],
             tangential_force_n: ft.norm(),
             approach_m: e.approach,
+            hertz_approach_m: contact.normal.hertz_approach(e.normal_force),
+            support_approach_m: contact.normal.support_approach(e.normal_force),
+            support_compliance_m_per_n: contact.normal.compliance,
             state: e.slip(),
             mu_static: friction.mu_s,
             mu_dynamic: friction.mu_d,
@@ -220,7 +229,8 @@ impl PointPose {
     }
 }
 
-/// Static coefficients -> per-contact friction (mu_d = ratio mu_s), checked.
+/// Static coefficients -> per-contact friction (mu_d = ratio mu_s, the
+/// scene's friction law), checked. The solver sets each increment's duration.
 pub fn frictions(coupling: &Coupling, mu_s: &[f64]) -> Result<Vec<Friction>, SolveError> {
     if mu_s.len() != coupling.contacts.len() {
         return Err(SolveError::MuCount {
@@ -229,13 +239,14 @@ pub fn frictions(coupling: &Coupling, mu_s: &[f64]) -> Result<Vec<Friction>, Sol
         });
     }
     let ratio = coupling.scene.friction.dynamic_ratio;
+    let law = coupling.scene.friction.law;
     mu_s.iter()
         .enumerate()
         .map(|(i, &m)| {
             if (0.0..=MU_MAX).contains(&m) {
                 Ok(Friction {
-                    mu_s: m,
-                    mu_d: ratio * m,
+                    law,
+                    ..Friction::switch(m, ratio * m)
                 })
             } else {
                 Err(SolveError::MuRange {

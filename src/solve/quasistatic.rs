@@ -5,13 +5,19 @@
 //! - Load schedule: lambda = s^(3/2) with s in uniform steps, so that every
 //!   increment adds about the same Hertz approach (delta ~ F^(2/3)).
 //! - Predictor: the linearised frictionless solution, x(lambda) = s x_1,
-//!   where W x_1 = -(f_i / K_i)^(2/3) (W the constraint rows, f_i the
-//!   frictionless contact forces at full preload).
+//!   where W x_1 = -(f_i / K_i)^(2/3) - c_i f_i (W the constraint rows, f_i
+//!   the frictionless contact forces at full preload, c_i the support
+//!   compliances).
 //! - Corrector: Newton on R(x) = sum_i [F_i; p_i x F_i] + [P; p_P x P] = 0
 //!   with the consistent tangent of the contact layer plus the geometric
 //!   terms of moving points; finite rotations (quaternions), contact points
 //!   and normals from parry at the current pose. Converged when
 //!   |R_F| < tol F_p and |R_M| < tol F_p L (L the coupling radius).
+//! - Time: the path parameter s runs from 0 to 1 in `[preload] ramp_time`
+//!   T (t = s T, so lambda = (t/T)^(3/2): a uniform rate of Hertz
+//!   approach); an increment from s to s' lasts (s' - s) T, the time base
+//!   of the slip velocity of the decay friction law (`contact::friction`).
+//!   A load path after seating ramps its load in the same time T.
 //! - Adaptivity: an increment is halved when Newton fails, and when a
 //!   contact changes between stick and slip, until that change is located
 //!   within 2^-max_splits of a nominal increment.
@@ -221,6 +227,8 @@ struct Solver<'a> {
     x1: Vector6<f64>,
     /// Slide-away bound on the translation [m].
     max_travel: f64,
+    /// Duration of the whole path, s from 0 to 1 (`[preload] ramp_time`) [s].
+    ramp_time: f64,
 }
 
 enum Step {
@@ -240,9 +248,7 @@ impl<'a> Solver<'a> {
         let rows = coupling.constraint_rows(&touching);
         let w = Matrix6::from_fn(|r, c| rows[r][c]);
         let f = frictionless_preload_forces(coupling);
-        let rhs = Vector6::from_fn(|i, _| {
-            -(f[i].max(0.0) / coupling.contacts[i].law.hertz.hertz_constant).powf(2.0 / 3.0)
-        });
+        let rhs = Vector6::from_fn(|i, _| -coupling.contacts[i].normal.approach(f[i].max(0.0)));
         let x1 = w.lu().solve(&rhs).unwrap_or_else(Vector6::zeros);
         let preload = coupling.scene.preload.force;
         let force_scale = match program {
@@ -263,6 +269,7 @@ impl<'a> Solver<'a> {
             length,
             x1,
             max_travel: coupling.slide_away_travel(),
+            ramp_time: coupling.scene.preload.ramp_time,
         }
     }
 
@@ -284,7 +291,7 @@ impl<'a> Solver<'a> {
         let mut evals: Vec<ContactEval> = if seating {
             Vec::new()
         } else {
-            self.evaluate_all(&pose, &pose, &states)
+            self.evaluate_all(&pose, &pose, &states, self.ramp_time)
         };
         let start_fn: Vec<f64> = evals.iter().map(|e| e.normal_force).collect();
         let (mut accepted, mut iterations) = (0, 0);
@@ -307,7 +314,10 @@ impl<'a> Solver<'a> {
             };
             let predictor =
                 pose.moved(&dx.fixed_rows::<3>(0).into(), &dx.fixed_rows::<3>(3).into());
-            match self.newton(&pose, &states, predictor, lambda, extra) {
+            // The increment's duration on the ramp (t = s T_ramp): the time
+            // base of the slip velocity of the decay friction law.
+            let duration = (s_next - s) * self.ramp_time;
+            match self.newton(&pose, &states, predictor, lambda, extra, duration) {
                 Step::Failed(residual) => {
                     if h <= h_min * 1.5 {
                         if !seating
@@ -509,6 +519,7 @@ impl<'a> Solver<'a> {
         pose: &BodyPose,
         committed_pose: &BodyPose,
         states: &[TangentialState],
+        duration: f64,
     ) -> Vec<ContactEval> {
         (0..self.coupling.contacts.len())
             .map(|i| {
@@ -518,7 +529,7 @@ impl<'a> Solver<'a> {
                     pose,
                     committed_pose,
                     &states[i],
-                    self.friction[i],
+                    self.friction[i].during(duration),
                 )
             })
             .collect()
@@ -570,11 +581,12 @@ impl<'a> Solver<'a> {
         start: BodyPose,
         lambda: f64,
         extra: f64,
+        duration: f64,
     ) -> Step {
         let mut pose = start;
         let mut last = f64::INFINITY;
         for it in 0..self.opts.max_newton {
-            let evals = self.evaluate_all(&pose, committed_pose, states);
+            let evals = self.evaluate_all(&pose, committed_pose, states, duration);
             let (r, loads) = self.residual(&pose, &evals, lambda, extra);
             let rel = self.relative(&r);
             if !rel.is_finite() {

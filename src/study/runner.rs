@@ -397,6 +397,7 @@ impl Variation {
             force: nominal.force,
             point: nominal.point + offset,
             direction: UnitQuaternion::from_scaled_axis(tilt) * nominal.direction,
+            ramp_time: nominal.ramp_time,
         };
         Sample {
             mu,

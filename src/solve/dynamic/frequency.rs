@@ -54,7 +54,8 @@ pub fn seated_frequencies(coupling: &Coupling, mass: &MassModel) -> Option<Frequ
             return None;
         }
         let law = &coupling.contacts[i].law;
-        let kn = law.hertz.stiffness(law.hertz.approach(f));
+        let normal = &coupling.contacts[i].normal;
+        let (_, kn) = normal.force_and_stiffness(normal.approach(f));
         let (kt, _) = law.tangential_stiffness(f);
         let g = coupling.geometry(i, &pose);
         let n = g.normal;

@@ -18,6 +18,13 @@
 //!    rapier advances one step: v_(n+1) = v_n + dt M^-1 F_n,
 //!    x_(n+1) = x_n + dt v_(n+1) (symplectic Euler, see [`world`]).
 //!
+//! Friction: the decay law (`contact::friction`) sees the actual slip
+//! velocity, the slip of a step over dt (of the last step while sliding). The seating here is far faster
+//! than a real one (T_r below, not `[preload] ramp_time`), so with a finite
+//! decay_coefficient its slip speeds, and with them mu, differ from the
+//! quasi-static solver's; the two limits (coefficient 0 or very large) do not
+//! depend on the speed.
+//!
 //! Load: lambda(t) = (t / T_r)^(3/2) for t < T_r, then 1 (the quasi-static
 //! solver's schedule lambda = s^(3/2) with s = t / T_r, i.e. a uniform rate
 //! of Hertz approach). T_r = `ramp_periods` periods of the fundamental mode.
@@ -500,7 +507,7 @@ impl<'a> Simulation<'a> {
                     &motion,
                     &self.committed_pose,
                     &self.states[i],
-                    self.friction[i],
+                    self.friction[i].during(self.dt),
                     self.opts.damping,
                 )
             })
@@ -521,9 +528,7 @@ impl<'a> Simulation<'a> {
             max_speed = max_speed
                 .max(motion.velocity_at(&centre).norm())
                 .max(motion.velocity_at(&e.geometry.point).norm());
-            if e.approach > 0.0 {
-                hertz += 0.4 * c.contacts[i].law.hertz.hertz_constant * e.approach.powf(2.5);
-            }
+            hertz += c.contacts[i].normal.energy(e.approach);
         }
         let residual = (rf.norm() / p.force).max(rm.norm() / (p.force * self.length));
         let kinetic_before = self.kinetic(&linvel, &angvel, &rot);

@@ -48,10 +48,7 @@ fn history(args: &ContactArgs, pair: &ContactPair, path: &Path) -> Result<(), St
     let text = std::fs::read_to_string(path).map_err(|e| format!("{file}: {e}"))?;
     let rows = parse_history_csv(&text, &file)?;
     let loads: Vec<LoadStep> = rows.iter().map(|r| r.load).collect();
-    let friction = Friction {
-        mu_s: mu,
-        mu_d: ratio * mu,
-    };
+    let friction = Friction::switch(mu, ratio * mu);
     let law = pair.law().map_err(|e| e.to_string())?;
     let steps = drive(&law, args.tangential_law, friction, &loads).map_err(|e| {
         let step = match &e {

@@ -1,0 +1,273 @@
+//! Friction readings: which coefficient acts while a contact slides.
+//!
+//! Two laws (`[friction] law` in a scene, MODEL.md §2):
+//! - **switch** (the paper's written set-up): static mu_s while sticking, a
+//!   sudden switch to mu_d = dynamic_ratio * mu_s once the contact slides.
+//! - **decay** (the exponential law of FE codes: ANSYS's FACT/DC, LS-DYNA's
+//!   FS/FD/DC, COMSOL's exponential dynamic Coulomb):
+//!   ```text
+//!   mu(v) = mu_d + (mu_s - mu_d) exp(-c v),   c = decay_coefficient [s/m]
+//!   ```
+//!   with v the slip velocity. In ANSYS's terms mu = MU (1 + (FACT - 1)
+//!   exp(-DC v)), so MU = mu_d, FACT = mu_s / mu_d, DC = c.
+//!
+//! Return mapping with the decay law (one increment of duration dt, trial
+//! force magnitude T = |F_old + k du|, tangential stiffness k, normal force
+//! F_n, slip increment gamma >= 0, slip velocity v = gamma / dt):
+//!
+//! - A contact that slid in the last increment slides on with the
+//!   coefficient of the last increment's slip velocity v_prev (explicit in
+//!   the velocity): mu = mu(v_prev), sliding while T > mu F_n, slip
+//!   gamma = (T - mu F_n)/k. Within the increment the law is then the plain
+//!   Coulomb map |F| = min(T, mu F_n), continuous in T. (Solved implicitly,
+//!   a velocity-weakening coefficient has a fold: below some T its sliding
+//!   branch vanishes and |F| jumps up to T, and since beta = c/dt grows as
+//!   an increment is halved, the quasi-static path may then have no
+//!   solution: measured, scene 02 at c = 2e6 s/m.) The lag is one increment.
+//! - A contact that starts to slide (it stuck, and T > mu_s F_n = mu(0) F_n)
+//!   has no previous velocity: its slip is solved implicitly,
+//!   ```text
+//!   |F| = T - k gamma = mu(gamma / dt) F_n
+//!   g(gamma) = k gamma + F_n (mu_s - mu_d) exp(-beta gamma) - (T - mu_d F_n) = 0,  beta = c / dt
+//!   ```
+//!   g is convex in gamma with g(0) < 0, its root lies in
+//!   [(T - mu_s F_n)/k, (T - mu_d F_n)/k] and g >= 0 at the upper end, so
+//!   Newton from the upper end descends monotonically onto it (Fourier's
+//!   condition for a convex function).
+//!
+//! The limits are exact: c = 0 gives mu = mu_s (the switch law with ratio
+//! 1); c -> infinity gives exp(-c v) = 0 for any slip, i.e. mu = mu_d from
+//! the first sliding increment on and the switch law's hysteresis (slide on
+//! while T > mu_d F_n).
+//!
+//! Derivatives of the onset coefficient at the root, for the consistent
+//! tangent (implicit function theorem on g, s = exp(-beta gamma)):
+//! ```text
+//! g_gamma = k - beta F_n (mu_s - mu_d) s > 0
+//! dmu/dT = -beta (mu_s - mu_d) s / g_gamma,   dmu/dF_n = +beta (mu_s - mu_d) s mu / g_gamma,
+//! dmu/dk = +beta (mu_s - mu_d) s gamma / g_gamma      (T, F_n, k as independent inputs)
+//! ```
+//! With the lagged velocity mu is constant within the increment.
+
+use serde::{Deserialize, Serialize};
+
+/// Which coefficient acts while a contact slides.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case", tag = "law")]
+pub enum FrictionLaw {
+    /// Sudden switch from mu_s to mu_d = ratio * mu_s (the paper's text).
+    #[default]
+    Switch,
+    /// mu(v) = mu_d + (mu_s - mu_d) exp(-coefficient * v) [coefficient in s/m].
+    Decay { coefficient: f64 },
+}
+
+impl FrictionLaw {
+    /// The name as in scene files.
+    pub fn name(&self) -> &'static str {
+        match self {
+            FrictionLaw::Switch => "switch",
+            FrictionLaw::Decay { .. } => "decay",
+        }
+    }
+}
+
+/// mu(v) = mu_d + (mu_s - mu_d) exp(-c v) and dmu/dv, for v >= 0.
+pub fn decay_coefficient(mu_s: f64, mu_d: f64, c: f64, v: f64) -> (f64, f64) {
+    let s = (-c * v).exp();
+    (mu_d + (mu_s - mu_d) * s, -c * (mu_s - mu_d) * s)
+}
+
+/// The sliding coefficient of one return-mapping increment and its partial
+/// derivatives with respect to the trial force magnitude T, the normal
+/// force F_n and the tangential stiffness k (each the others held fixed).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sliding {
+    pub mu: f64,
+    /// Slip increment gamma [m] (0 for the switch law, which does not need it).
+    pub slip: f64,
+    pub d_mu_d_trial: f64,
+    pub d_mu_d_fn: f64,
+    pub d_mu_d_k: f64,
+}
+
+impl Sliding {
+    /// A constant sliding coefficient (the switch law's mu_d).
+    pub fn constant(mu: f64) -> Self {
+        Sliding {
+            mu,
+            slip: 0.0,
+            d_mu_d_trial: 0.0,
+            d_mu_d_fn: 0.0,
+            d_mu_d_k: 0.0,
+        }
+    }
+}
+
+/// The inputs of one sliding decision.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlideInput {
+    pub mu_s: f64,
+    pub mu_d: f64,
+    pub law: FrictionLaw,
+    /// Duration of the increment [s] (slip velocity = slip / duration).
+    pub duration: f64,
+    /// |trial force| [N], normal force [N], tangential stiffness [N/m].
+    pub trial: f64,
+    pub normal_force: f64,
+    pub stiffness: f64,
+    /// Whether the contact was sliding at the end of the last increment.
+    pub was_sliding: bool,
+    /// Slip velocity of the last increment [m/s] (0 if it stuck).
+    pub previous_velocity: f64,
+}
+
+/// Stick (`None`) or slide with the returned coefficient.
+pub fn slide(x: &SlideInput) -> Option<Sliding> {
+    match x.law {
+        FrictionLaw::Switch => {
+            let limit = if x.was_sliding { x.mu_d } else { x.mu_s } * x.normal_force;
+            (x.trial > limit).then(|| Sliding::constant(x.mu_d))
+        }
+        FrictionLaw::Decay { coefficient } => decay_slide(x, coefficient),
+    }
+}
+
+/// The decay law's return mapping (module docs).
+fn decay_slide(x: &SlideInput, c: f64) -> Option<Sliding> {
+    let (k, fn_, t) = (x.stiffness, x.normal_force, x.trial);
+    if x.was_sliding {
+        let (mu, _) = decay_coefficient(x.mu_s, x.mu_d, c, x.previous_velocity);
+        return (t > mu * fn_ && k > 0.0).then(|| Sliding {
+            slip: (t - mu * fn_) / k,
+            ..Sliding::constant(mu)
+        });
+    }
+    if t <= x.mu_s * fn_ {
+        return None;
+    }
+    let a = fn_ * (x.mu_s - x.mu_d);
+    let b = t - x.mu_d * fn_;
+    if b <= 0.0 || k <= 0.0 {
+        return None;
+    }
+    let beta = if x.duration > 0.0 {
+        c / x.duration
+    } else {
+        f64::INFINITY
+    };
+    // g(gamma) and g'(gamma); beta gamma is never inf * 0 since gamma > 0 here.
+    let g = |gamma: f64| {
+        let s = if a == 0.0 { 0.0 } else { (-beta * gamma).exp() };
+        (k * gamma + a * s - b, k - beta * a * s, s)
+    };
+    let mut gamma = b / k;
+    let (mut gv, mut gd, mut s) = g(gamma);
+    for _ in 0..200 {
+        if gv <= 0.0 || gd <= 0.0 {
+            break;
+        }
+        let next = gamma - gv / gd;
+        if next.is_nan() || next <= 0.0 || next >= gamma {
+            break;
+        }
+        gamma = next;
+        (gv, gd, s) = g(gamma);
+    }
+    // A root exists (g(0) < 0 <= g(b/k)); reject only a failed iteration.
+    if gd <= 0.0 || gv > 1e-12 * b.max(a) || gamma.is_nan() || gamma <= 0.0 {
+        return None;
+    }
+    let mu = x.mu_d + (x.mu_s - x.mu_d) * s;
+    let w = beta * (x.mu_s - x.mu_d) * s / gd;
+    let w = if w.is_finite() { w } else { 0.0 };
+    Some(Sliding {
+        mu,
+        slip: gamma,
+        d_mu_d_trial: -w,
+        d_mu_d_fn: w * mu,
+        d_mu_d_k: w * gamma,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn input(law: FrictionLaw, trial: f64, was_sliding: bool) -> SlideInput {
+        SlideInput {
+            mu_s: 0.5,
+            mu_d: 0.4,
+            law,
+            duration: 0.05,
+            trial,
+            normal_force: 10.0,
+            stiffness: 1e7,
+            was_sliding,
+            previous_velocity: if was_sliding { 1e-7 } else { 0.0 },
+        }
+    }
+
+    #[test]
+    fn onset_root_lies_on_the_rate_dependent_limit() {
+        // Independent check: the returned force T - k gamma equals mu(v) F_n
+        // with v = gamma / dt evaluated from the closed-form law. (1e7, 5.1):
+        // beta F_n (mu_s - mu_d) > k, the root far from gamma = 0.
+        for (c, trial) in [(1e3, 5.2), (1e5, 6.0), (1e7, 5.1), (0.0, 5.5)] {
+            let x = input(FrictionLaw::Decay { coefficient: c }, trial, false);
+            let s = slide(&x).expect("slides");
+            let (mu_v, _) = decay_coefficient(0.5, 0.4, c, s.slip / 0.05);
+            assert!((s.mu - mu_v).abs() < 1e-14);
+            assert!(((trial - 1e7 * s.slip) / (mu_v * 10.0) - 1.0).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn onset_derivatives_match_finite_differences() {
+        let c = 3e4;
+        let base = input(FrictionLaw::Decay { coefficient: c }, 5.3, false);
+        let s0 = slide(&base).unwrap();
+        let fd = |f: &dyn Fn(&mut SlideInput, f64), h: f64| {
+            let (mut p, mut m) = (base, base);
+            f(&mut p, h);
+            f(&mut m, -h);
+            (slide(&p).unwrap().mu - slide(&m).unwrap().mu) / (2.0 * h)
+        };
+        let d_t = fd(&|x, h| x.trial += h, 1e-6);
+        let d_fn = fd(&|x, h| x.normal_force += h, 1e-6);
+        let d_k = fd(&|x, h| x.stiffness += h, 1.0);
+        assert!((d_t / s0.d_mu_d_trial - 1.0).abs() < 1e-5, "{d_t} {s0:?}");
+        assert!((d_fn / s0.d_mu_d_fn - 1.0).abs() < 1e-5, "{d_fn} {s0:?}");
+        assert!((d_k / s0.d_mu_d_k - 1.0).abs() < 1e-4, "{d_k} {s0:?}");
+    }
+
+    #[test]
+    fn a_sliding_contact_uses_the_last_increments_velocity() {
+        // mu(1e-7 m/s) with c = 1e6 s/m: 0.4 + 0.1 exp(-0.1).
+        let law = FrictionLaw::Decay { coefficient: 1e6 };
+        let mu = 0.4 + 0.1 * (-0.1_f64).exp();
+        assert!(slide(&input(law, 0.999 * mu * 10.0, true)).is_none());
+        let s = slide(&input(law, 5.0, true)).unwrap();
+        assert!((s.mu - mu).abs() < 1e-15);
+        assert!((s.slip - (5.0 - mu * 10.0) / 1e7).abs() < 1e-20);
+        assert_eq!((s.d_mu_d_trial, s.d_mu_d_fn, s.d_mu_d_k), (0.0, 0.0, 0.0));
+    }
+
+    #[test]
+    fn decay_limits_are_the_switch_law() {
+        // c = 0: mu = mu_s whenever sliding, and a sliding contact sticks below mu_s F_n.
+        let zero = FrictionLaw::Decay { coefficient: 0.0 };
+        assert!((slide(&input(zero, 5.5, false)).unwrap().mu - 0.5).abs() < 1e-15);
+        assert!((slide(&input(zero, 5.01, true)).unwrap().mu - 0.5).abs() < 1e-15);
+        assert!(slide(&input(zero, 4.9, true)).is_none());
+        // c huge: mu = mu_d exactly, sliding on above mu_d F_n, as the switch law.
+        let huge = FrictionLaw::Decay { coefficient: 1e30 };
+        for (trial, sliding) in [(5.5, false), (4.5, true), (4.01, true)] {
+            let d = slide(&input(huge, trial, sliding)).unwrap();
+            let s = slide(&input(FrictionLaw::Switch, trial, sliding)).unwrap();
+            assert_eq!(d.mu, s.mu);
+        }
+        assert!(slide(&input(huge, 3.99, true)).is_none());
+        assert!(slide(&input(huge, 4.99, false)).is_none());
+    }
+}

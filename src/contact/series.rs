@@ -1,0 +1,83 @@
+//! A support compliance in series with the Hertz contact (normal direction):
+//! the bulk of the two halves, the bending of a pin on its supports, the
+//! mounting of a fixed ball, as one linear spring of compliance c [m/N].
+//!
+//! The approach of the rigid bodies (the closure of their gap) is shared:
+//! ```text
+//! delta(F) = delta_H(F) + c F,      delta_H(F) = (F / K)^(2/3)        (Hertz, Johnson eq. 4.23)
+//! d delta / dF = 2 / (3 K^(2/3) F^(1/3)) + c = 1 / k_H + c            (springs in series)
+//! ```
+//! F(delta) from t = F^(1/3), q = K^(-2/3): h(t) = c t^3 + q t^2 - delta = 0.
+//! h is increasing and convex for t > 0, and t0 = min(sqrt(delta/q),
+//! cbrt(delta/c)) is an upper bound of the root (either term alone reaches
+//! delta there), so Newton from t0 descends monotonically onto the root
+//! (quadratic convergence; a handful of steps). With c = 0 the Hertz law
+//! is used as it is (bit-identical results).
+
+use super::hertz::HertzLaw;
+
+/// The normal law of one contact: Hertz plus a series support compliance.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SeriesNormal {
+    pub hertz: HertzLaw,
+    /// Support compliance c >= 0 [m/N].
+    pub compliance: f64,
+}
+
+impl SeriesNormal {
+    pub fn new(hertz: HertzLaw, compliance: f64) -> Self {
+        SeriesNormal { hertz, compliance }
+    }
+
+    /// Total approach delta(F) = (F/K)^(2/3) + c F for a load F >= 0.
+    pub fn approach(&self, load: f64) -> f64 {
+        self.hertz_approach(load) + self.support_approach(load)
+    }
+
+    /// The Hertz part (F/K)^(2/3) of the approach.
+    pub fn hertz_approach(&self, load: f64) -> f64 {
+        self.hertz.approach(load)
+    }
+
+    /// The support part c F of the approach.
+    pub fn support_approach(&self, load: f64) -> f64 {
+        self.compliance * load.max(0.0)
+    }
+
+    /// Normal force F(delta) (0 for delta <= 0) and stiffness dF/d delta.
+    pub fn force_and_stiffness(&self, approach: f64) -> (f64, f64) {
+        let h = &self.hertz;
+        let c = self.compliance;
+        if c == 0.0 || approach <= 0.0 {
+            return (h.force(approach), h.stiffness(approach));
+        }
+        let q = h.hertz_constant.powf(-2.0 / 3.0);
+        let mut t = (approach / q).sqrt().min((approach / c).cbrt());
+        for _ in 0..100 {
+            let r = c * t * t * t + q * t * t - approach;
+            let step = r / (3.0 * c * t * t + 2.0 * q * t);
+            if step.is_nan() || step <= 0.0 {
+                break;
+            }
+            t -= step;
+            if step <= 1e-16 * t {
+                break;
+            }
+        }
+        let f = t * t * t;
+        // k_H = dF/d delta_H = 3 t / (2 q); in series with 1/c.
+        let k_hertz = 1.5 * t / q;
+        (f, k_hertz / (1.0 + c * k_hertz))
+    }
+
+    /// Elastic energy stored at approach delta: the Hertz part
+    /// 2/5 K delta_H^(5/2) plus the spring's c F^2 / 2.
+    pub fn energy(&self, approach: f64) -> f64 {
+        let (f, _) = self.force_and_stiffness(approach);
+        if f <= 0.0 {
+            return 0.0;
+        }
+        let dh = self.hertz_approach(f);
+        0.4 * self.hertz.hertz_constant * dh * dh * dh.sqrt() + 0.5 * self.compliance * f * f
+    }
+}
