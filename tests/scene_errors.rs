@@ -380,3 +380,100 @@ proptest! {
         try_load(&out.join("\n"));
     }
 }
+
+/// Issue 12, case 7: an array longer or shorter than its field needs, or with
+/// an element that is not a number, is an error naming the file, the line,
+/// the field and the reason; nothing is cut off (today the extra elements
+/// were dropped and the scene accepted).
+#[test]
+fn arrays_of_the_wrong_length_or_type_are_errors() {
+    let explicit = scene_text("custom_kelvin_explicit.toml");
+    let tol = scene_text("tolerances_maxwell_vgroove.toml");
+    let cases: Vec<(String, &str, &str, &str)> = vec![
+        // (text, new line, field, reason fragment)
+        (
+            explicit.replacen("point = [0.0, 0.0, 0.0]", "point = [0, 0, 0, 0.01]", 1),
+            "point = [0, 0, 0, 0.01]",
+            "preload.point",
+            "expected an array of 3 numbers [x, y, z], found 4 elements",
+        ),
+        (
+            explicit.replacen(
+                "direction = [0.0, 0.0, -1.0]",
+                "direction = [0, 0, 1, \"junk\"]",
+                1,
+            ),
+            "\"junk\"",
+            "preload.direction",
+            "found 4 elements",
+        ),
+        (
+            explicit.replacen(
+                "direction = [0.0, 0.0, -1.0]",
+                "direction = [0, 0, \"down\"]",
+                1,
+            ),
+            "\"down\"",
+            "preload.direction",
+            "element 3 (\"down\") is not a number",
+        ),
+        (
+            explicit.replacen("centre = [0.0, 0.025, 0.0]", "centre = [0.0, 0.025]", 1),
+            "centre = [0.0, 0.025]",
+            "balls[1].centre",
+            "found 2 elements",
+        ),
+        (
+            explicit.replacen(
+                "normal = [0.0, 0.707106781187, 0.707106781187]",
+                "normal = [0.0, 0.707106781187, 0.707106781187, 0.0]",
+                1,
+            ),
+            "0.707106781187, 0.0]",
+            "surfaces[1].normal",
+            "found 4 elements",
+        ),
+        (
+            explicit.replacen(
+                "position = [0.0, 0.0, 0.012]",
+                "position = [0.0, 0.0, 0.012, 1.0]",
+                1,
+            ),
+            "0.012, 1.0]",
+            "evaluation_points[2].position",
+            "found 4 elements",
+        ),
+        (
+            tol.replacen(
+                "preload_offset = [1.0e-3, 1.0e-3]",
+                "preload_offset = [1.0e-3, 1.0e-3, 5.0]",
+                1,
+            ),
+            "preload_offset",
+            "variation.preload_offset",
+            "expected an array of 2 numbers [x, y], found 3 elements",
+        ),
+        (
+            tol.replacen(
+                "ball_position = [10e-6, 10e-6, 5e-6]",
+                "ball_position = [10e-6, 10e-6]",
+                1,
+            ),
+            "ball_position",
+            "variation.ball_position",
+            "found 2 elements",
+        ),
+    ];
+    for (text, needle, field, reason) in cases {
+        let err = load_err(&text);
+        let line = line_of(&text, needle);
+        assert!(
+            err.starts_with(&format!("bad.toml:{line}: {field}: ")),
+            "line {line}, field {field}: {err}"
+        );
+        assert!(err.contains(reason), "reason {reason}: {err}");
+    }
+    // Integers are numbers: the same scene with integral coordinates loads.
+    let t = explicit.replacen("point = [0.0, 0.0, 0.0]", "point = [0, 0, 0]", 1);
+    Coupling::new(&Scene::parse(&t, "ok.toml").unwrap()).unwrap();
+}

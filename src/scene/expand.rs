@@ -22,7 +22,8 @@ use toml::Spanned;
 
 use super::error::{ErrorContext, SceneError};
 use super::file::{
-    Arrangement, BallFile, EvaluationPointFile, GrooveKind, SceneFile, SurfaceFile, SurfaceKind,
+    Arrangement, BallFile, EvaluationPointFile, GrooveKind, Numbers, SceneFile, SurfaceFile,
+    SurfaceKind,
 };
 
 /// Azimuths of balls 1, 2, 3 [deg].
@@ -126,12 +127,12 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
     let balls = centres
         .iter()
         .map(|ck| BallFile {
-            centre: Spanned::new(0..0, [ck.x, ck.y, ck.z]),
+            centre: Spanned::new(0..0, Numbers::of(&[ck.x, ck.y, ck.z])),
             radius: Spanned::new(0..0, r_ball),
             material: ball_material.clone(),
         })
         .collect();
-    let arr = |v: Vector3<f64>| Some(Spanned::new(0..0, [v.x, v.y, v.z]));
+    let arr = |v: Vector3<f64>| Some(Spanned::new(0..0, Numbers::of(&[v.x, v.y, v.z])));
     let surfaces = contacts
         .into_iter()
         .map(|(k, n, axis, flat)| {
@@ -172,13 +173,13 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
     if evaluation_points.is_empty() {
         evaluation_points.push(EvaluationPointFile {
             name: "centre".to_string(),
-            position: [0.0; 3],
+            position: Spanned::new(0..0, Numbers::of(&[0.0; 3])),
         });
         if c.arrangement == Arrangement::Kelvin {
             let c1 = centres[0];
             evaluation_points.push(EvaluationPointFile {
                 name: "trihedral ball".to_string(),
-                position: [c1.x, c1.y, c1.z],
+                position: Spanned::new(0..0, Numbers::of(&[c1.x, c1.y, c1.z])),
             });
         }
     }

@@ -11,6 +11,21 @@ use toml::Spanned;
 
 use crate::contact::TangentialLaw;
 
+/// A numeric array as written (a point, a direction, a pair of bounds).
+/// Its length and element types are checked when the scene is resolved,
+/// where the error can name the field: an array of the wrong length or with
+/// an element that is not a number is an error, never cut to size.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(transparent)]
+pub struct Numbers(pub Vec<toml::Value>);
+
+impl Numbers {
+    /// The array of these values (as `expand` writes it).
+    pub fn of(values: &[f64]) -> Self {
+        Numbers(values.iter().map(|v| toml::Value::Float(*v)).collect())
+    }
+}
+
 /// A scene file as written.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -114,7 +129,7 @@ fn default_opening_angle() -> Spanned<f64> {
 #[serde(deny_unknown_fields)]
 pub struct BallFile {
     /// Centre [m].
-    pub centre: Spanned<[f64; 3]>,
+    pub centre: Spanned<Numbers>,
     /// Radius [m].
     pub radius: Spanned<f64>,
     pub material: Spanned<String>,
@@ -140,16 +155,16 @@ pub struct SurfaceFile {
     pub ball: Spanned<i64>,
     pub material: Spanned<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub point: Option<Spanned<[f64; 3]>>,
+    pub point: Option<Spanned<Numbers>>,
     /// Outward normal of a plane (towards the ball).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub normal: Option<Spanned<[f64; 3]>>,
+    pub normal: Option<Spanned<Numbers>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub axis_point: Option<Spanned<[f64; 3]>>,
+    pub axis_point: Option<Spanned<Numbers>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub direction: Option<Spanned<[f64; 3]>>,
+    pub direction: Option<Spanned<Numbers>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub centre: Option<Spanned<[f64; 3]>>,
+    pub centre: Option<Spanned<Numbers>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub radius: Option<Spanned<f64>>,
 }
@@ -161,10 +176,10 @@ pub struct PreloadFile {
     pub force: Spanned<f64>,
     /// Point of application in the moving half [m] (default: the centre).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub point: Option<Spanned<[f64; 3]>>,
+    pub point: Option<Spanned<Numbers>>,
     /// Direction (default [0, 0, -1]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub direction: Option<Spanned<[f64; 3]>>,
+    pub direction: Option<Spanned<Numbers>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -235,7 +250,7 @@ impl Default for StudyFile {
 pub struct EvaluationPointFile {
     pub name: String,
     /// Position in the moving half [m] (world frame in the touching pose).
-    pub position: [f64; 3],
+    pub position: Spanned<Numbers>,
 }
 
 /// `[dynamics]`: mass properties of the moving half (dynamic solver only;
@@ -247,10 +262,10 @@ pub struct DynamicsFile {
     pub mass: Spanned<f64>,
     /// Principal moments of inertia about the centre of mass, along the
     /// scene axes x, y, z [kg m^2].
-    pub inertia: Spanned<[f64; 3]>,
+    pub inertia: Spanned<Numbers>,
     /// Centre of mass in the moving half [m] (default: the origin).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub centre_of_mass: Option<Spanned<[f64; 3]>>,
+    pub centre_of_mass: Option<Spanned<Numbers>>,
 }
 
 /// `[variation]`: half-widths of the uniform distributions a study draws
@@ -262,7 +277,7 @@ pub struct DynamicsFile {
 pub struct VariationFile {
     /// Offset of the preload point from its nominal position, x and y [m].
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub preload_offset: Option<Spanned<[f64; 2]>>,
+    pub preload_offset: Option<Spanned<Numbers>>,
     /// Tilt of the preload direction: each of the two tilt components
     /// (rotation about x and about y) uniform in +-this [rad].
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -272,7 +287,7 @@ pub struct VariationFile {
     pub ball_diameter: Option<Spanned<f64>>,
     /// Position error of each moving ball's centre in the moving half, x, y, z [m].
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub ball_position: Option<Spanned<[f64; 3]>>,
+    pub ball_position: Option<Spanned<Numbers>>,
     /// Position error of each fixed surface along its nominal contact normal [m].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub surface_normal: Option<Spanned<f64>>,
@@ -283,5 +298,5 @@ pub struct VariationFile {
     /// Position error of each groove (all surfaces serving one ball, moved
     /// together), x and y [m].
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub groove_position: Option<Spanned<[f64; 2]>>,
+    pub groove_position: Option<Spanned<Numbers>>,
 }

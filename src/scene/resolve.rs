@@ -5,7 +5,7 @@ use nalgebra::Vector3;
 use toml::Spanned;
 
 use super::error::{ErrorContext, SceneError};
-use super::file::{SceneFile, SurfaceFile, SurfaceKind, VariationFile};
+use super::file::{Numbers, SceneFile, SurfaceFile, SurfaceKind, VariationFile};
 use super::{
     Ball, DynamicsSettings, EvaluationPoint, FrictionSettings, Preload, Scene, StudySettings,
     Surface, SurfaceGeometry, VariationBounds,
@@ -26,15 +26,15 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         Material::builtin(n).map_err(|e| ctx.error(Some(&name.span()), field, e.to_string()))
     };
     let positive = |v: &Spanned<f64>, field: &str, unit: &str| ctx.positive(v, field, unit);
-    let finite = |v: &Spanned<[f64; 3]>, field: &str| -> Result<Vector3<f64>, SceneError> {
-        let a = v.get_ref();
+    let finite = |v: &Spanned<Numbers>, field: &str| -> Result<Vector3<f64>, SceneError> {
+        let a: [f64; 3] = ctx.numbers(v, field, "[x, y, z]")?;
         if a.iter().all(|x| x.is_finite()) {
             Ok(Vector3::new(a[0], a[1], a[2]))
         } else {
             Err(ctx.error(Some(&v.span()), field, "coordinates must be finite numbers"))
         }
     };
-    let unit = |v: &Spanned<[f64; 3]>, field: &str| -> Result<Vector3<f64>, SceneError> {
+    let unit = |v: &Spanned<Numbers>, field: &str| -> Result<Vector3<f64>, SceneError> {
         let x = finite(v, field)?;
         let n = x.norm();
         if n > 0.0 {
@@ -78,7 +78,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
             ));
         }
         let need =
-            |v: &Option<Spanned<[f64; 3]>>, k: &str| -> Result<Spanned<[f64; 3]>, SceneError> {
+            |v: &Option<Spanned<Numbers>>, k: &str| -> Result<Spanned<Numbers>, SceneError> {
                 v.clone().ok_or_else(|| missing(s, ctx, &field(k), k))
             };
         let radius = |s: &SurfaceFile| -> Result<f64, SceneError> {
@@ -186,23 +186,15 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         .parse()
         .map_err(|e| ctx.error(Some(&st.sampler.span()), "study.sampler", format!("{e}")))?;
 
-    let mut evaluation_points: Vec<EvaluationPoint> = f
-        .evaluation_points
-        .iter()
-        .map(|e| EvaluationPoint {
+    let mut evaluation_points = Vec::new();
+    for (i, e) in f.evaluation_points.iter().enumerate() {
+        evaluation_points.push(EvaluationPoint {
             name: e.name.clone(),
-            position: Vector3::new(e.position[0], e.position[1], e.position[2]),
-        })
-        .collect();
-    if evaluation_points
-        .iter()
-        .any(|e| !e.position.iter().all(|x| x.is_finite()))
-    {
-        return Err(ctx.error(
-            None,
-            "evaluation_points",
-            "positions must be finite numbers",
-        ));
+            position: finite(
+                &e.position,
+                &format!("evaluation_points[{}].position", i + 1),
+            )?,
+        });
     }
     if evaluation_points.is_empty() {
         evaluation_points.push(EvaluationPoint {
@@ -281,14 +273,15 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
 fn variation_bounds(v: &VariationFile, ctx: &ErrorContext) -> Result<VariationBounds, SceneError> {
     fn check<const N: usize>(
         ctx: &ErrorContext,
-        v: &Option<Spanned<[f64; N]>>,
+        v: &Option<Spanned<Numbers>>,
         key: &str,
         unit: &str,
     ) -> Result<[f64; N], SceneError> {
         let Some(s) = v else {
             return Ok([0.0; N]);
         };
-        let a = *s.get_ref();
+        let what = if N == 2 { "[x, y]" } else { "[x, y, z]" };
+        let a: [f64; N] = ctx.numbers(s, &format!("variation.{key}"), what)?;
         if let Some(x) = a.iter().find(|x| !(x.is_finite() && **x >= 0.0)) {
             return Err(ctx.error(
                 Some(&s.span()),
@@ -302,8 +295,10 @@ fn variation_bounds(v: &VariationFile, ctx: &ErrorContext) -> Result<VariationBo
         Ok(a)
     }
     let scalar = |v: &Option<Spanned<f64>>, key: &str, unit: &str| -> Result<f64, SceneError> {
-        let arr = v.as_ref().map(|s| Spanned::new(s.span(), [*s.get_ref()]));
-        Ok(check(ctx, &arr, key, unit)?[0])
+        let arr = v
+            .as_ref()
+            .map(|s| Spanned::new(s.span(), Numbers::of(&[*s.get_ref()])));
+        Ok(check::<1>(ctx, &arr, key, unit)?[0])
     };
     Ok(VariationBounds {
         preload_offset_m: check(ctx, &v.preload_offset, "preload_offset", "m")?,
