@@ -477,3 +477,71 @@ fn arrays_of_the_wrong_length_or_type_are_errors() {
     let t = explicit.replacen("point = [0.0, 0.0, 0.0]", "point = [0, 0, 0]", 1);
     Coupling::new(&Scene::parse(&t, "ok.toml").unwrap()).unwrap();
 }
+
+/// Issue 12, case 7: a `[[materials]]` entry that reuses a built-in name or
+/// an earlier entry's name is an error unless it says `override = true`;
+/// `override = true` on a name that replaces nothing is an error too. With
+/// the key, the last definition is the one used.
+#[test]
+fn material_redefinitions_need_override() {
+    let base = scene_text("01_maxwell_vgroove_steel.toml");
+    let entry = |name: &str, e: &str, extra: &str| {
+        format!(
+            "\n[[materials]]\nname = \"{name}\"\nyoungs_modulus = {e}\npoisson_ratio = 0.3\n{extra}"
+        )
+    };
+    let groove = |name: &str| {
+        base.replace(
+            "groove_material = \"steel\"",
+            &format!("groove_material = \"{name}\""),
+        )
+    };
+    // A built-in name, silently replacing steel today.
+    let t = base.clone() + &entry("steel", "100e9", "");
+    let err = load_err(&t);
+    let line = line_of(&t, "name = \"steel\"");
+    assert!(
+        err.starts_with(&format!("bad.toml:{line}: materials[1].name: ")),
+        "{err}"
+    );
+    assert!(
+        err.contains("`steel` is a built-in material") && err.contains("override = true"),
+        "{err}"
+    );
+    // Two entries of one name: the second is named, with the first.
+    let t = groove("my-steel") + &entry("my-steel", "100e9", "") + &entry("my-steel", "300e9", "");
+    let err = load_err(&t);
+    let second = t.rfind("name = \"my-steel\"").unwrap();
+    let line = t[..second].lines().count() + 1;
+    assert!(
+        err.starts_with(&format!("bad.toml:{line}: materials[2].name: ")),
+        "{err}"
+    );
+    assert!(err.contains("already defined in materials[1]"), "{err}");
+    // `override = true` on a name that replaces nothing.
+    let t = groove("my-steel") + &entry("my-steel", "100e9", "override = true\n");
+    let err = load_err(&t);
+    let line = line_of(&t, "override = true");
+    assert!(
+        err.starts_with(&format!("bad.toml:{line}: materials[1].override: ")),
+        "{err}"
+    );
+    assert!(err.contains("nothing to override"), "{err}");
+
+    // Intended overrides load, and the last definition is used: compare E*
+    // with the closed form 1/E* = (1 - v1^2)/E1 + (1 - v2^2)/E2.
+    let e_star = |e1: f64, e2: f64| 1.0 / ((1.0 - 0.09) / e1 + (1.0 - 0.09) / e2);
+    let t = base.clone() + &entry("steel", "100e9", "override = true\n");
+    let c = Coupling::new(&Scene::parse(&t, "ok.toml").unwrap()).unwrap();
+    let got = c.contacts[0].law.hertz.e_star;
+    assert!((got / e_star(100e9, 100e9) - 1.0).abs() < 1e-12, "{got}");
+    let t = groove("my-steel")
+        + &entry("my-steel", "100e9", "")
+        + &entry("my-steel", "300e9", "override = true\n");
+    let c = Coupling::new(&Scene::parse(&t, "ok.toml").unwrap()).unwrap();
+    let got = c.contacts[0].law.hertz.e_star;
+    assert!((got / e_star(210e9, 300e9) - 1.0).abs() < 1e-12, "{got}");
+    // `override = false` is the same as leaving the key out.
+    let t = base + &entry("steel", "100e9", "override = false\n");
+    assert!(load_err(&t).contains("is a built-in material"));
+}

@@ -33,7 +33,7 @@ pub struct SceneFile {
     /// Optional display name.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
-    /// User-defined materials (they may shadow built-in names).
+    /// User-defined materials (a built-in or earlier name only with `override = true`).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub materials: Vec<MaterialFile>,
     /// High-level form.
@@ -78,6 +78,11 @@ pub struct MaterialFile {
     /// Allowable maximum (subsurface) shear stress [Pa].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub allowable_shear_stress: Option<Spanned<f64>>,
+    /// `override = true`: this entry intentionally replaces the built-in
+    /// material or the earlier entry of the same name. Without it a reused
+    /// name is an error; with it, a name that replaces nothing is one.
+    #[serde(default, rename = "override", skip_serializing_if = "Option::is_none")]
+    pub replaces: Option<Spanned<bool>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]

@@ -324,7 +324,69 @@ fn missing(s: &SurfaceFile, ctx: &ErrorContext, field: &str, key: &str) -> Scene
     )
 }
 
+/// The `[[materials]]` entries, in order; a later entry replaces an earlier
+/// one of the same name. Reusing a built-in or an earlier name is an error
+/// unless the entry says `override = true`, and `override = true` on a name
+/// that replaces nothing is one too (a misspelt name would otherwise define
+/// a new material silently).
 fn user_materials(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, SceneError> {
+    let mut out: Vec<Material> = Vec::new();
+    for (i, (m, mat)) in f
+        .materials
+        .iter()
+        .zip(material_entries(f, ctx)?)
+        .enumerate()
+    {
+        let name = m.name.get_ref();
+        let field = format!("materials[{}]", i + 1);
+        let earlier = out.iter().position(|u| &u.name == name);
+        let builtin = Material::builtin(name).is_ok();
+        let replaces = m.replaces.as_ref().is_some_and(|r| *r.get_ref());
+        let first = f.materials[..i]
+            .iter()
+            .position(|u| u.name.get_ref() == name);
+        let what = match (first, builtin) {
+            (Some(j), _) => Some(format!(
+                "`{name}` is already defined in materials[{}]",
+                j + 1
+            )),
+            (None, true) => Some(format!("`{name}` is a built-in material")),
+            (None, false) => None,
+        };
+        match (what, replaces) {
+            (Some(what), false) => {
+                return Err(ctx.error(
+                    Some(&m.name.span()),
+                    format!("{field}.name"),
+                    format!(
+                        "{what}: give the material another name, or add `override = true` \
+                         to this entry if it is meant to replace the other definition"
+                    ),
+                ));
+            }
+            (None, true) => {
+                let span = m.replaces.as_ref().map(|r| r.span());
+                return Err(ctx.error(
+                    span.as_ref(),
+                    format!("{field}.override"),
+                    format!(
+                        "`{name}` is neither a built-in material nor defined earlier, so \
+                         there is nothing to override (misspelt name?)"
+                    ),
+                ));
+            }
+            _ => {}
+        }
+        match earlier {
+            Some(k) => out[k] = mat,
+            None => out.push(mat),
+        }
+    }
+    Ok(out)
+}
+
+/// Each `[[materials]]` entry validated on its own.
+fn material_entries(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, SceneError> {
     f.materials
         .iter()
         .enumerate()
