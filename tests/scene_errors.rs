@@ -545,3 +545,114 @@ fn material_redefinitions_need_override() {
     let t = base + &entry("steel", "100e9", "override = false\n");
     assert!(load_err(&t).contains("is a built-in material"));
 }
+
+/// Issue 12, case 7: magnitudes that look like millimetres in an SI file are
+/// an error with the hint, naming file, line and field; the top-level key
+/// `allow_large_values = true` accepts them.
+#[test]
+fn millimetre_looking_values_are_errors_unless_allowed() {
+    let s01 = scene_text("01_maxwell_vgroove_steel.toml");
+    let s02 = scene_text("02_maxwell_pins_steel.toml");
+    let explicit = scene_text("custom_kelvin_explicit.toml");
+    let cases: Vec<(String, &str, &str)> = vec![
+        // (text, new line = field value, field)
+        (
+            s01.replace("diameter = 0.080 ", "diameter = 80 "),
+            "diameter = 80 ",
+            "coupling.diameter",
+        ),
+        (
+            s01.replace("ball_diameter = 0.010", "ball_diameter = 10"),
+            "ball_diameter = 10",
+            "coupling.ball_diameter",
+        ),
+        (
+            s02.replace(
+                "groove_element_diameter = 0.004",
+                "groove_element_diameter = 4",
+            ),
+            "groove_element_diameter = 4",
+            "coupling.groove_element_diameter",
+        ),
+        (
+            s01.replace("force = 20.0", "force = 2.0e6"),
+            "force = 2.0e6",
+            "preload.force",
+        ),
+        (
+            explicit.replacen("radius = 0.003175", "radius = 3.175", 1),
+            "radius = 3.175",
+            "balls[1].radius",
+        ),
+        (
+            explicit.replacen("centre = [0.0, 0.025, 0.0]", "centre = [0.0, 25, 0.0]", 1),
+            "centre = [0.0, 25, 0.0]",
+            "balls[1].centre",
+        ),
+        (
+            explicit.replacen("radius = 0.0015", "radius = 1.5", 1),
+            "radius = 1.5",
+            "surfaces[4].radius",
+        ),
+    ];
+    for (text, needle, field) in cases {
+        assert_ne!(text, s01);
+        let err = load_err(&text);
+        let line = line_of(&text, needle);
+        assert!(
+            err.starts_with(&format!("bad.toml:{line}: {field}: ")),
+            "line {line}, field {field}: {err}"
+        );
+        assert!(
+            err.contains("did you give millimetres? scene files are in SI")
+                && err.contains("allow_large_values = true"),
+            "{err}"
+        );
+        // With the key, the magnitude check is off: the scene fails later
+        // for its geometry, or loads, but never for looking like millimetres.
+        let allowed = format!("allow_large_values = true\n{text}");
+        if let Err(e) = Scene::parse(&allowed, "big.toml").map(|s| Coupling::new(&s)) {
+            assert!(!e.to_string().contains("millimetres"), "{e}");
+        }
+    }
+    // Scene 01 with both lengths in millimetres (an 80 m circle of 10 m
+    // balls) is a consistent coupling: with the key it loads.
+    let big = format!(
+        "allow_large_values = true\n{}",
+        s01.replace("diameter = 0.080 ", "diameter = 80 ")
+            .replace("ball_diameter = 0.010", "ball_diameter = 10")
+    );
+    let c = Coupling::new(&Scene::parse(&big, "big.toml").unwrap()).unwrap();
+    assert_eq!(c.contacts.len(), 6);
+    // expand keeps the key, so the explicit form loads back.
+    let text = Scene::expand_text(&big, "big.toml").unwrap();
+    assert!(text.contains("allow_large_values = true"), "{text}");
+    Scene::parse(&text, "big.toml").unwrap();
+}
+
+/// `kinrepro check` on scene 01 with `diameter = 80` (80 mm typed as metres)
+/// exits non-zero with the hint (rc 0 today).
+#[test]
+fn check_rejects_a_millimetre_diameter_with_the_hint() {
+    let dir = std::env::temp_dir().join(format!("kinrepro-mm-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("mm_scene.toml");
+    std::fs::write(
+        &bad,
+        scene_text("01_maxwell_vgroove_steel.toml").replace("diameter = 0.080 ", "diameter = 80 "),
+    )
+    .unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_kinrepro"))
+        .arg("check")
+        .arg(&bad)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("mm_scene.toml:9: coupling.diameter: 80 m is implausibly large")
+            && err.contains("did you give millimetres?"),
+        "{err}"
+    );
+    assert!(!err.contains("panicked"));
+}

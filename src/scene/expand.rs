@@ -25,6 +25,7 @@ use super::file::{
     Arrangement, BallFile, EvaluationPointFile, GrooveKind, Numbers, SceneFile, SurfaceFile,
     SurfaceKind,
 };
+use super::plausible;
 
 /// Azimuths of balls 1, 2, 3 [deg].
 pub const BALL_AZIMUTHS_DEG: [f64; 3] = [90.0, 210.0, 330.0];
@@ -54,6 +55,7 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
         }
     }
     let diameter = positive(&c.diameter, "coupling.diameter")?;
+    plausible::check_coupling(c, raw.allow_large_values, ctx)?;
     let r_ball = positive(&c.ball_diameter, "coupling.ball_diameter")? / 2.0;
     let r_elem = match (c.groove, &c.groove_element_diameter) {
         (GrooveKind::Planes, _) => 0.0,
@@ -185,6 +187,7 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
     }
     Ok(SceneFile {
         name: raw.name.clone(),
+        allow_large_values: raw.allow_large_values,
         materials: raw.materials.clone(),
         coupling: None,
         balls,

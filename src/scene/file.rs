@@ -33,6 +33,10 @@ pub struct SceneFile {
     /// Optional display name.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
+    /// Accept magnitudes beyond the plausibility bounds of `scene::plausible`
+    /// (a ball above 0.5 m, a circle of balls above 5 m, a preload above 1 MN).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub allow_large_values: bool,
     /// User-defined materials (a built-in or earlier name only with `override = true`).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub materials: Vec<MaterialFile>,

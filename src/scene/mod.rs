@@ -10,6 +10,7 @@ pub mod bundled;
 pub mod error;
 pub mod expand;
 pub mod file;
+pub mod plausible;
 pub mod resolve;
 
 use std::path::Path;

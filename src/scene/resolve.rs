@@ -6,6 +6,7 @@ use toml::Spanned;
 
 use super::error::{ErrorContext, SceneError};
 use super::file::{Numbers, SceneFile, SurfaceFile, SurfaceKind, VariationFile};
+use super::plausible;
 use super::{
     Ball, DynamicsSettings, EvaluationPoint, FrictionSettings, Preload, Scene, StudySettings,
     Surface, SurfaceGeometry, VariationBounds,
@@ -67,6 +68,9 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     }
 
     let mut surfaces = Vec::new();
+    // Radii are checked positive below; first the magnitudes (millimetres?).
+    let centres: Vec<Vector3<f64>> = balls.iter().map(|b| b.centre).collect();
+    plausible::check_explicit(f, &centres, ctx)?;
     for (i, s) in f.surfaces.iter().enumerate() {
         let field = |k: &str| format!("surfaces[{}].{k}", i + 1);
         let ball = *s.ball.get_ref();
