@@ -211,3 +211,113 @@ fn friction_limit_is_scale_free_and_grows_with_groove_steepness() {
     assert!(limit(&steep) > l0 && l0 > limit(&flat));
     assert!(l0 > 0.0 && l0 < 1.0);
 }
+
+/// Rank by singular values (a second method: the analysis decomposes A^T A).
+fn svd_rank(a: &nalgebra::DMatrix<f64>) -> usize {
+    let s = a.clone().svd(false, false).singular_values;
+    let smax = s.max();
+    s.iter().filter(|&&x| x > 1e-6 * smax).count()
+}
+
+/// The redundancy analysis against brute force: the number of redundant
+/// constraints is m - rank (rank-nullity), and contact i takes part in a
+/// self-stress exactly when removing its row leaves the rank unchanged.
+#[test]
+fn redundant_contacts_match_brute_force_rank_tests() {
+    let c01 = kinrepro::error::load_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
+    let c06 = kinrepro::error::load_coupling(&scene_path("06_kelvin_steel.toml")).unwrap();
+    let with = |base: &Coupling, extra: &[(usize, usize)]| {
+        // (copy of contact, assigned to ball)
+        let mut c = base.clone();
+        for &(k, ball) in extra {
+            let mut e = c.contacts[k].clone();
+            e.ball = ball;
+            c.contacts.push(e);
+        }
+        c
+    };
+    let cases = [
+        (with(&c01, &[(0, 0)]), vec![1, 7]),
+        (with(&c01, &[(0, 0), (3, 1)]), vec![1, 4, 7, 8]),
+        // A fourth surface on the trihedral ball: its normal passes through
+        // the ball centre like the other three, so all four fight.
+        (with(&c06, &[(3, 0)]), vec![1, 2, 3, 7]),
+        (
+            with(&c06, &[(5, 2), (0, 0), (1, 0)]),
+            vec![1, 2, 6, 7, 8, 9],
+        ),
+    ];
+    for (c, expect) in cases {
+        let a = constraint::constraint_matrix(&c);
+        let m = a.nrows();
+        let rank = svd_rank(&a);
+        let brute: Vec<usize> = (0..m)
+            .filter(|&i| svd_rank(&a.clone().remove_row(i)) == rank)
+            .map(|i| i + 1)
+            .collect();
+        assert_eq!(brute, expect, "brute force");
+        let r = constraint::analyse(&c);
+        assert_eq!(r.rank, rank);
+        assert_eq!(r.redundant_constraints, m - rank);
+        assert_eq!(r.redundant_contacts, brute);
+        assert!(!r.exactly_constrained);
+        assert!(
+            r.describe().contains("over-constrained"),
+            "{}",
+            r.describe()
+        );
+    }
+}
+
+/// Issue 12, case 8: the analysis of many surfaces is one compact sentence
+/// (today: one sentence per self-stress state, each listing every contact,
+/// so the text and the m x m eigen-decomposition behind it grow as m^2 and
+/// m^3; 3000 surfaces took 24 s). Timing is in benches/check.rs.
+#[test]
+fn a_thousand_surfaces_are_described_in_one_sentence() {
+    let c01 = kinrepro::error::load_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
+    let mut c = c01.clone();
+    for _ in 0..994 {
+        c.contacts.push(c01.contacts[0].clone());
+    }
+    let r = constraint::analyse(&c);
+    assert_eq!(
+        (r.contacts, r.rank, r.redundant_constraints),
+        (1000, 6, 994)
+    );
+    let mut expect = vec![1];
+    expect.extend(7..=1000);
+    assert_eq!(r.redundant_contacts, expect);
+    let text = r.describe();
+    assert_eq!(
+        text,
+        "1000 contacts, rank 6; over-constrained, 994 redundant constraints: contacts 1, 7-1000 \
+         fight each other"
+    );
+}
+
+/// Line numbers stay exact deep in a large file (they are found by binary
+/// search over the line starts).
+#[test]
+fn errors_deep_in_a_large_scene_name_the_right_line() {
+    let text = kinrepro::scene::Scene::expand_text(
+        &std::fs::read_to_string(scene_path("01_maxwell_vgroove_steel.toml")).unwrap(),
+        "01.toml",
+    )
+    .unwrap();
+    let i = text.find("[[surfaces]]").unwrap();
+    let j = text[i + 1..].find("[[surfaces]]").unwrap() + i + 1;
+    let mut big = text.clone();
+    for _ in 0..2000 {
+        big.push_str(&text[i..j]);
+    }
+    big.push_str(&text[i..j].replace("ball = 1", "ball = 9"));
+    let err = Scene::parse(&big, "big.toml").unwrap_err().to_string();
+    let line = big.lines().position(|l| l == "ball = 9").unwrap() + 1;
+    assert!(
+        err.starts_with(&format!(
+            "big.toml:{line}: surfaces[2007].ball: 9 names no moving ball"
+        )),
+        "{err}"
+    );
+}

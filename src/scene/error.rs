@@ -40,16 +40,40 @@ impl std::error::Error for SceneError {}
 pub struct ErrorContext<'a> {
     pub file: &'a str,
     pub source: &'a str,
+    /// Byte offsets of the line starts, found on first use: a line lookup
+    /// is then a binary search, so that naming the line of every ball and
+    /// surface stays linear in the file's size.
+    line_starts: std::sync::OnceLock<Vec<usize>>,
 }
 
-impl ErrorContext<'_> {
+impl<'a> ErrorContext<'a> {
+    pub fn new(file: &'a str, source: &'a str) -> Self {
+        ErrorContext {
+            file,
+            source,
+            line_starts: std::sync::OnceLock::new(),
+        }
+    }
+
     /// 1-based line of a byte offset; None for the empty span of a default value.
     pub fn line_of(&self, span: &std::ops::Range<usize>) -> Option<usize> {
         if span.start == 0 && span.end == 0 {
             return None;
         }
+        let starts = self.line_starts.get_or_init(|| {
+            std::iter::once(0)
+                .chain(
+                    self.source
+                        .bytes()
+                        .enumerate()
+                        .filter(|(_, b)| *b == b'\n')
+                        .map(|(i, _)| i + 1),
+                )
+                .collect()
+        });
         let start = span.start.min(self.source.len());
-        Some(self.source[..start].bytes().filter(|&b| b == b'\n').count() + 1)
+        // The number of line starts at or before `start` is its line.
+        Some(starts.partition_point(|&s| s <= start))
     }
 
     /// A value that must be positive and finite, in `unit`.

@@ -1,6 +1,8 @@
 //! Validation of an explicit scene file into a [`Scene`]: materials resolved,
 //! every number checked for range, every surface complete.
 
+use std::collections::HashMap;
+
 use nalgebra::Vector3;
 use toml::Spanned;
 
@@ -21,7 +23,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     let materials = user_materials(f, ctx)?;
     let material = |name: &Spanned<String>, field: &str| -> Result<Material, SceneError> {
         let n = name.get_ref();
-        if let Some(m) = materials.iter().find(|m| &m.name == n) {
+        if let Some(m) = materials.get(n) {
             return Ok(m.clone());
         }
         Material::builtin(n).map_err(|e| ctx.error(Some(&name.span()), field, e.to_string()))
@@ -116,8 +118,10 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     }
     // Contacts are numbered ball by ball (the order of --mu).
     surfaces.sort_by_key(|s| s.ball);
+    let mut served = vec![false; balls.len()];
+    surfaces.iter().for_each(|s| served[s.ball] = true);
     for (k, b) in balls.iter().enumerate() {
-        if !surfaces.iter().any(|s| s.ball == k) {
+        if !served[k] {
             return Err(SceneError {
                 file: ctx.file.to_string(),
                 line: b.line,
@@ -333,8 +337,12 @@ fn missing(s: &SurfaceFile, ctx: &ErrorContext, field: &str, key: &str) -> Scene
 /// unless the entry says `override = true`, and `override = true` on a name
 /// that replaces nothing is one too (a misspelt name would otherwise define
 /// a new material silently).
-fn user_materials(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, SceneError> {
-    let mut out: Vec<Material> = Vec::new();
+fn user_materials(
+    f: &SceneFile,
+    ctx: &ErrorContext,
+) -> Result<HashMap<String, Material>, SceneError> {
+    // name -> (the material, the 1-based entry that first defined it)
+    let mut out: HashMap<String, (Material, usize)> = HashMap::new();
     for (i, (m, mat)) in f
         .materials
         .iter()
@@ -343,17 +351,11 @@ fn user_materials(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, Sc
     {
         let name = m.name.get_ref();
         let field = format!("materials[{}]", i + 1);
-        let earlier = out.iter().position(|u| &u.name == name);
         let builtin = Material::builtin(name).is_ok();
         let replaces = m.replaces.as_ref().is_some_and(|r| *r.get_ref());
-        let first = f.materials[..i]
-            .iter()
-            .position(|u| u.name.get_ref() == name);
+        let first = out.get(name).map(|(_, j)| *j);
         let what = match (first, builtin) {
-            (Some(j), _) => Some(format!(
-                "`{name}` is already defined in materials[{}]",
-                j + 1
-            )),
+            (Some(j), _) => Some(format!("`{name}` is already defined in materials[{j}]")),
             (None, true) => Some(format!("`{name}` is a built-in material")),
             (None, false) => None,
         };
@@ -381,12 +383,9 @@ fn user_materials(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, Sc
             }
             _ => {}
         }
-        match earlier {
-            Some(k) => out[k] = mat,
-            None => out.push(mat),
-        }
+        out.insert(name.clone(), (mat, first.unwrap_or(i + 1)));
     }
-    Ok(out)
+    Ok(out.into_iter().map(|(k, (m, _))| (k, m)).collect())
 }
 
 /// Each `[[materials]]` entry validated on its own.
