@@ -171,6 +171,13 @@ impl RunReport {
             s,
             "tau_max: maximum subsurface shear stress (exact for circular contacts, an upper bound for elliptical ones); SF = allowable / actual, \"-\" where the materials give no allowable"
         );
+        let left_out = self
+            .contacts
+            .iter()
+            .map(|c| c.safety_factor_left_out.as_slice());
+        for note in crate::report::safety::left_out_notes(left_out) {
+            let _ = writeln!(s, "{note}");
+        }
         s
     }
 }
