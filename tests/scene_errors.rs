@@ -380,3 +380,279 @@ proptest! {
         try_load(&out.join("\n"));
     }
 }
+
+/// Issue 12, case 7: an array longer or shorter than its field needs, or with
+/// an element that is not a number, is an error naming the file, the line,
+/// the field and the reason; nothing is cut off (today the extra elements
+/// were dropped and the scene accepted).
+#[test]
+fn arrays_of_the_wrong_length_or_type_are_errors() {
+    let explicit = scene_text("custom_kelvin_explicit.toml");
+    let tol = scene_text("tolerances_maxwell_vgroove.toml");
+    let cases: Vec<(String, &str, &str, &str)> = vec![
+        // (text, new line, field, reason fragment)
+        (
+            explicit.replacen("point = [0.0, 0.0, 0.0]", "point = [0, 0, 0, 0.01]", 1),
+            "point = [0, 0, 0, 0.01]",
+            "preload.point",
+            "expected an array of 3 numbers [x, y, z], found 4 elements",
+        ),
+        (
+            explicit.replacen(
+                "direction = [0.0, 0.0, -1.0]",
+                "direction = [0, 0, 1, \"junk\"]",
+                1,
+            ),
+            "\"junk\"",
+            "preload.direction",
+            "found 4 elements",
+        ),
+        (
+            explicit.replacen(
+                "direction = [0.0, 0.0, -1.0]",
+                "direction = [0, 0, \"down\"]",
+                1,
+            ),
+            "\"down\"",
+            "preload.direction",
+            "element 3 (\"down\") is not a number",
+        ),
+        (
+            explicit.replacen("centre = [0.0, 0.025, 0.0]", "centre = [0.0, 0.025]", 1),
+            "centre = [0.0, 0.025]",
+            "balls[1].centre",
+            "found 2 elements",
+        ),
+        (
+            explicit.replacen(
+                "normal = [0.0, 0.707106781187, 0.707106781187]",
+                "normal = [0.0, 0.707106781187, 0.707106781187, 0.0]",
+                1,
+            ),
+            "0.707106781187, 0.0]",
+            "surfaces[1].normal",
+            "found 4 elements",
+        ),
+        (
+            explicit.replacen(
+                "position = [0.0, 0.0, 0.012]",
+                "position = [0.0, 0.0, 0.012, 1.0]",
+                1,
+            ),
+            "0.012, 1.0]",
+            "evaluation_points[2].position",
+            "found 4 elements",
+        ),
+        (
+            tol.replacen(
+                "preload_offset = [1.0e-3, 1.0e-3]",
+                "preload_offset = [1.0e-3, 1.0e-3, 5.0]",
+                1,
+            ),
+            "preload_offset",
+            "variation.preload_offset",
+            "expected an array of 2 numbers [x, y], found 3 elements",
+        ),
+        (
+            tol.replacen(
+                "ball_position = [10e-6, 10e-6, 5e-6]",
+                "ball_position = [10e-6, 10e-6]",
+                1,
+            ),
+            "ball_position",
+            "variation.ball_position",
+            "found 2 elements",
+        ),
+    ];
+    for (text, needle, field, reason) in cases {
+        let err = load_err(&text);
+        let line = line_of(&text, needle);
+        assert!(
+            err.starts_with(&format!("bad.toml:{line}: {field}: ")),
+            "line {line}, field {field}: {err}"
+        );
+        assert!(err.contains(reason), "reason {reason}: {err}");
+    }
+    // Integers are numbers: the same scene with integral coordinates loads.
+    let t = explicit.replacen("point = [0.0, 0.0, 0.0]", "point = [0, 0, 0]", 1);
+    Coupling::new(&Scene::parse(&t, "ok.toml").unwrap()).unwrap();
+}
+
+/// Issue 12, case 7: a `[[materials]]` entry that reuses a built-in name or
+/// an earlier entry's name is an error unless it says `override = true`;
+/// `override = true` on a name that replaces nothing is an error too. With
+/// the key, the last definition is the one used.
+#[test]
+fn material_redefinitions_need_override() {
+    let base = scene_text("01_maxwell_vgroove_steel.toml");
+    let entry = |name: &str, e: &str, extra: &str| {
+        format!(
+            "\n[[materials]]\nname = \"{name}\"\nyoungs_modulus = {e}\npoisson_ratio = 0.3\n{extra}"
+        )
+    };
+    let groove = |name: &str| {
+        base.replace(
+            "groove_material = \"steel\"",
+            &format!("groove_material = \"{name}\""),
+        )
+    };
+    // A built-in name, silently replacing steel today.
+    let t = base.clone() + &entry("steel", "100e9", "");
+    let err = load_err(&t);
+    let line = line_of(&t, "name = \"steel\"");
+    assert!(
+        err.starts_with(&format!("bad.toml:{line}: materials[1].name: ")),
+        "{err}"
+    );
+    assert!(
+        err.contains("`steel` is a built-in material") && err.contains("override = true"),
+        "{err}"
+    );
+    // Two entries of one name: the second is named, with the first.
+    let t = groove("my-steel") + &entry("my-steel", "100e9", "") + &entry("my-steel", "300e9", "");
+    let err = load_err(&t);
+    let second = t.rfind("name = \"my-steel\"").unwrap();
+    let line = t[..second].lines().count() + 1;
+    assert!(
+        err.starts_with(&format!("bad.toml:{line}: materials[2].name: ")),
+        "{err}"
+    );
+    assert!(err.contains("already defined in materials[1]"), "{err}");
+    // `override = true` on a name that replaces nothing.
+    let t = groove("my-steel") + &entry("my-steel", "100e9", "override = true\n");
+    let err = load_err(&t);
+    let line = line_of(&t, "override = true");
+    assert!(
+        err.starts_with(&format!("bad.toml:{line}: materials[1].override: ")),
+        "{err}"
+    );
+    assert!(err.contains("nothing to override"), "{err}");
+
+    // Intended overrides load, and the last definition is used: compare E*
+    // with the closed form 1/E* = (1 - v1^2)/E1 + (1 - v2^2)/E2.
+    let e_star = |e1: f64, e2: f64| 1.0 / ((1.0 - 0.09) / e1 + (1.0 - 0.09) / e2);
+    let t = base.clone() + &entry("steel", "100e9", "override = true\n");
+    let c = Coupling::new(&Scene::parse(&t, "ok.toml").unwrap()).unwrap();
+    let got = c.contacts[0].law.hertz.e_star;
+    assert!((got / e_star(100e9, 100e9) - 1.0).abs() < 1e-12, "{got}");
+    let t = groove("my-steel")
+        + &entry("my-steel", "100e9", "")
+        + &entry("my-steel", "300e9", "override = true\n");
+    let c = Coupling::new(&Scene::parse(&t, "ok.toml").unwrap()).unwrap();
+    let got = c.contacts[0].law.hertz.e_star;
+    assert!((got / e_star(210e9, 300e9) - 1.0).abs() < 1e-12, "{got}");
+    // `override = false` is the same as leaving the key out.
+    let t = base + &entry("steel", "100e9", "override = false\n");
+    assert!(load_err(&t).contains("is a built-in material"));
+}
+
+/// Issue 12, case 7: magnitudes that look like millimetres in an SI file are
+/// an error with the hint, naming file, line and field; the top-level key
+/// `allow_large_values = true` accepts them.
+#[test]
+fn millimetre_looking_values_are_errors_unless_allowed() {
+    let s01 = scene_text("01_maxwell_vgroove_steel.toml");
+    let s02 = scene_text("02_maxwell_pins_steel.toml");
+    let explicit = scene_text("custom_kelvin_explicit.toml");
+    let cases: Vec<(String, &str, &str)> = vec![
+        // (text, new line = field value, field)
+        (
+            s01.replace("diameter = 0.080 ", "diameter = 80 "),
+            "diameter = 80 ",
+            "coupling.diameter",
+        ),
+        (
+            s01.replace("ball_diameter = 0.010", "ball_diameter = 10"),
+            "ball_diameter = 10",
+            "coupling.ball_diameter",
+        ),
+        (
+            s02.replace(
+                "groove_element_diameter = 0.004",
+                "groove_element_diameter = 4",
+            ),
+            "groove_element_diameter = 4",
+            "coupling.groove_element_diameter",
+        ),
+        (
+            s01.replace("force = 20.0", "force = 2.0e6"),
+            "force = 2.0e6",
+            "preload.force",
+        ),
+        (
+            explicit.replacen("radius = 0.003175", "radius = 3.175", 1),
+            "radius = 3.175",
+            "balls[1].radius",
+        ),
+        (
+            explicit.replacen("centre = [0.0, 0.025, 0.0]", "centre = [0.0, 25, 0.0]", 1),
+            "centre = [0.0, 25, 0.0]",
+            "balls[1].centre",
+        ),
+        (
+            explicit.replacen("radius = 0.0015", "radius = 1.5", 1),
+            "radius = 1.5",
+            "surfaces[4].radius",
+        ),
+    ];
+    for (text, needle, field) in cases {
+        assert_ne!(text, s01);
+        let err = load_err(&text);
+        let line = line_of(&text, needle);
+        assert!(
+            err.starts_with(&format!("bad.toml:{line}: {field}: ")),
+            "line {line}, field {field}: {err}"
+        );
+        assert!(
+            err.contains("did you give millimetres? scene files are in SI")
+                && err.contains("allow_large_values = true"),
+            "{err}"
+        );
+        // With the key, the magnitude check is off: the scene fails later
+        // for its geometry, or loads, but never for looking like millimetres.
+        let allowed = format!("allow_large_values = true\n{text}");
+        if let Err(e) = Scene::parse(&allowed, "big.toml").map(|s| Coupling::new(&s)) {
+            assert!(!e.to_string().contains("millimetres"), "{e}");
+        }
+    }
+    // Scene 01 with both lengths in millimetres (an 80 m circle of 10 m
+    // balls) is a consistent coupling: with the key it loads.
+    let big = format!(
+        "allow_large_values = true\n{}",
+        s01.replace("diameter = 0.080 ", "diameter = 80 ")
+            .replace("ball_diameter = 0.010", "ball_diameter = 10")
+    );
+    let c = Coupling::new(&Scene::parse(&big, "big.toml").unwrap()).unwrap();
+    assert_eq!(c.contacts.len(), 6);
+    // expand keeps the key, so the explicit form loads back.
+    let text = Scene::expand_text(&big, "big.toml").unwrap();
+    assert!(text.contains("allow_large_values = true"), "{text}");
+    Scene::parse(&text, "big.toml").unwrap();
+}
+
+/// `kinrepro check` on scene 01 with `diameter = 80` (80 mm typed as metres)
+/// exits non-zero with the hint (rc 0 today).
+#[test]
+fn check_rejects_a_millimetre_diameter_with_the_hint() {
+    let dir = std::env::temp_dir().join(format!("kinrepro-mm-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("mm_scene.toml");
+    std::fs::write(
+        &bad,
+        scene_text("01_maxwell_vgroove_steel.toml").replace("diameter = 0.080 ", "diameter = 80 "),
+    )
+    .unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_kinrepro"))
+        .arg("check")
+        .arg(&bad)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("mm_scene.toml:9: coupling.diameter: 80 m is implausibly large")
+            && err.contains("did you give millimetres?"),
+        "{err}"
+    );
+    assert!(!err.contains("panicked"));
+}

@@ -211,3 +211,257 @@ fn friction_limit_is_scale_free_and_grows_with_groove_steepness() {
     assert!(limit(&steep) > l0 && l0 > limit(&flat));
     assert!(l0 > 0.0 && l0 < 1.0);
 }
+
+/// Rank by singular values (a second method: the analysis decomposes A^T A).
+fn svd_rank(a: &nalgebra::DMatrix<f64>) -> usize {
+    let s = a.clone().svd(false, false).singular_values;
+    let smax = s.max();
+    s.iter().filter(|&&x| x > 1e-6 * smax).count()
+}
+
+/// The redundancy analysis against brute force: the number of redundant
+/// constraints is m - rank (rank-nullity), and contact i takes part in a
+/// self-stress exactly when removing its row leaves the rank unchanged.
+#[test]
+fn redundant_contacts_match_brute_force_rank_tests() {
+    let c01 = kinrepro::error::load_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
+    let c06 = kinrepro::error::load_coupling(&scene_path("06_kelvin_steel.toml")).unwrap();
+    let with = |base: &Coupling, extra: &[(usize, usize)]| {
+        // (copy of contact, assigned to ball)
+        let mut c = base.clone();
+        for &(k, ball) in extra {
+            let mut e = c.contacts[k].clone();
+            e.ball = ball;
+            c.contacts.push(e);
+        }
+        c
+    };
+    let cases = [
+        (with(&c01, &[(0, 0)]), vec![1, 7]),
+        (with(&c01, &[(0, 0), (3, 1)]), vec![1, 4, 7, 8]),
+        // A fourth surface on the trihedral ball: its normal passes through
+        // the ball centre like the other three, so all four fight.
+        (with(&c06, &[(3, 0)]), vec![1, 2, 3, 7]),
+        (
+            with(&c06, &[(5, 2), (0, 0), (1, 0)]),
+            vec![1, 2, 6, 7, 8, 9],
+        ),
+    ];
+    for (c, expect) in cases {
+        let a = constraint::constraint_matrix(&c);
+        let m = a.nrows();
+        let rank = svd_rank(&a);
+        let brute: Vec<usize> = (0..m)
+            .filter(|&i| svd_rank(&a.clone().remove_row(i)) == rank)
+            .map(|i| i + 1)
+            .collect();
+        assert_eq!(brute, expect, "brute force");
+        let r = constraint::analyse(&c);
+        assert_eq!(r.rank, rank);
+        assert_eq!(r.redundant_constraints, m - rank);
+        assert_eq!(r.redundant_contacts, brute);
+        assert!(!r.exactly_constrained);
+        assert!(
+            r.describe().contains("over-constrained"),
+            "{}",
+            r.describe()
+        );
+    }
+}
+
+/// Issue 12, case 8: the analysis of many surfaces is one compact sentence
+/// (today: one sentence per self-stress state, each listing every contact,
+/// so the text and the m x m eigen-decomposition behind it grow as m^2 and
+/// m^3; 3000 surfaces took 24 s). Timing is in benches/check.rs.
+#[test]
+fn a_thousand_surfaces_are_described_in_one_sentence() {
+    let c01 = kinrepro::error::load_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
+    let mut c = c01.clone();
+    for _ in 0..994 {
+        c.contacts.push(c01.contacts[0].clone());
+    }
+    let r = constraint::analyse(&c);
+    assert_eq!(
+        (r.contacts, r.rank, r.redundant_constraints),
+        (1000, 6, 994)
+    );
+    let mut expect = vec![1];
+    expect.extend(7..=1000);
+    assert_eq!(r.redundant_contacts, expect);
+    let text = r.describe();
+    assert_eq!(
+        text,
+        "1000 contacts, rank 6; over-constrained, 994 redundant constraints: contacts 1, 7-1000 \
+         fight each other"
+    );
+}
+
+/// Line numbers stay exact deep in a large file (they are found by binary
+/// search over the line starts).
+#[test]
+fn errors_deep_in_a_large_scene_name_the_right_line() {
+    let text = kinrepro::scene::Scene::expand_text(
+        &std::fs::read_to_string(scene_path("01_maxwell_vgroove_steel.toml")).unwrap(),
+        "01.toml",
+    )
+    .unwrap();
+    let i = text.find("[[surfaces]]").unwrap();
+    let j = text[i + 1..].find("[[surfaces]]").unwrap() + i + 1;
+    let mut big = text.clone();
+    for _ in 0..2000 {
+        big.push_str(&text[i..j]);
+    }
+    big.push_str(&text[i..j].replace("ball = 1", "ball = 9"));
+    let err = Scene::parse(&big, "big.toml").unwrap_err().to_string();
+    let line = big.lines().position(|l| l == "ball = 9").unwrap() + 1;
+    assert!(
+        err.starts_with(&format!(
+            "big.toml:{line}: surfaces[2007].ball: 9 names no moving ball"
+        )),
+        "{err}"
+    );
+}
+
+/// Scene 01 with grooves of a user material `zerodur` (Schott: E 90.3 GPa,
+/// v 0.243), with or without an allowable pressure.
+fn zerodur_scene(allowable: &str) -> String {
+    std::fs::read_to_string(scene_path("01_maxwell_vgroove_steel.toml"))
+        .unwrap()
+        .replace(
+            "groove_material = \"steel\"",
+            "groove_material = \"zerodur\"",
+        )
+        + &format!(
+            "\n[[materials]]\nname = \"zerodur\"\nyoungs_modulus = 90.3e9\npoisson_ratio = 0.243\n{allowable}"
+        )
+}
+
+/// Issue 12, case 7: a zerodur flat without `allowable_pressure` showed
+/// SF 7.62 from steel alone, silently. The factor is still steel's (checked
+/// against Johnson's p0 = (6 F E*^2 / (pi^3 R^2))^(1/3), eq. 4.24), and it
+/// now names the material it leaves out; with an allowable for zerodur it
+/// covers both bodies and names none.
+#[test]
+fn a_safety_factor_names_the_material_it_leaves_out() {
+    use kinrepro::contact::stress::LeftOut;
+    use kinrepro::solve::SolverOptions;
+    use kinrepro::solve::quasistatic::seat;
+    let e_star = 1.0 / ((1.0 - 0.09) / 210e9 + (1.0 - 0.243f64.powi(2)) / 90.3e9);
+    let p0 = |f: f64| {
+        (6.0 * f * e_star * e_star / (std::f64::consts::PI.powi(3) * 0.005f64.powi(2))).cbrt()
+    };
+    let scene = Scene::parse(&zerodur_scene(""), "z.toml").unwrap();
+    let c = Coupling::new(&scene).unwrap();
+    let s = seat(&c, &[0.5; 6], &SolverOptions::default()).unwrap();
+    for r in &s.contacts {
+        let sf = 4.2e9 / p0(r.normal_force_n);
+        assert!((r.pressure_safety_factor.unwrap() / sf - 1.0).abs() < 1e-9);
+        assert_eq!(
+            r.safety_factor_left_out,
+            vec![LeftOut {
+                material: "zerodur".into(),
+                missing: "allowable_pressure"
+            }]
+        );
+    }
+    // With zerodur's own allowable (below steel's) the factor is zerodur's.
+    let scene = Scene::parse(&zerodur_scene("allowable_pressure = 0.5e9\n"), "z.toml").unwrap();
+    let c = Coupling::new(&scene).unwrap();
+    let s = seat(&c, &[0.5; 6], &SolverOptions::default()).unwrap();
+    for r in &s.contacts {
+        let sf = 0.5e9 / p0(r.normal_force_n);
+        assert!((r.safety_factor.unwrap() / sf - 1.0).abs() < 1e-9);
+        assert!(r.safety_factor_left_out.is_empty());
+    }
+    // Steel on steel: nothing is left out; ceramics grooves (scene 05,
+    // silicon-carbide balls without an allowable) are.
+    let c = kinrepro::error::load_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
+    let s = seat(&c, &[0.5; 6], &SolverOptions::default()).unwrap();
+    assert!(
+        s.contacts
+            .iter()
+            .all(|r| r.safety_factor_left_out.is_empty())
+    );
+    let c = kinrepro::error::load_coupling(&scene_path("05_maxwell_balls_sic.toml")).unwrap();
+    let s = seat(&c, &[0.6; 6], &SolverOptions::default()).unwrap();
+    for r in &s.contacts {
+        assert_eq!(r.safety_factor_left_out.len(), 1);
+        assert_eq!(r.safety_factor_left_out[0].material, "silicon-carbide");
+    }
+}
+
+/// `run` (table and JSON) and `check` say which material the safety factor
+/// leaves out.
+#[test]
+fn run_and_check_print_the_left_out_material() {
+    let dir = std::env::temp_dir().join(format!("kinrepro-sf-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("zerodur.toml");
+    std::fs::write(&path, zerodur_scene("")).unwrap();
+    let cli = |args: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_kinrepro"))
+            .args(args)
+            .arg(&path)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    for cmd in ["run", "check"] {
+        let text = cli(&[cmd]);
+        assert!(
+            text.contains(
+                "NOTE: contacts 1, 2, 3, 4, 5, 6: SF_p and SF leave out `zerodur`, which has no \
+                 `allowable_pressure`"
+            ),
+            "{cmd}: {text}"
+        );
+    }
+    let json: serde_json::Value = serde_json::from_str(&cli(&["run", "--json"])).unwrap();
+    for c in json["contacts"].as_array().unwrap() {
+        assert_eq!(
+            c["safety_factor_left_out"],
+            serde_json::json!([{"material": "zerodur", "missing": "allowable_pressure"}])
+        );
+    }
+}
+
+/// The shear factor too: balls of a steel with only an allowable shear
+/// stress on built-in steel grooves (pressure allowable only). Each factor
+/// leaves out the body that lacks its allowable.
+#[test]
+fn shear_and_pressure_factors_each_name_what_they_leave_out() {
+    use kinrepro::contact::stress::LeftOut;
+    let text = std::fs::read_to_string(scene_path("01_maxwell_vgroove_steel.toml"))
+        .unwrap()
+        .replace(
+            "ball_material = \"steel\"",
+            "ball_material = \"hard-steel\"",
+        )
+        + "\n[[materials]]\nname = \"hard-steel\"\nyoungs_modulus = 210e9\npoisson_ratio = 0.3\nallowable_shear_stress = 1.0e9\n";
+    let c = Coupling::new(&Scene::parse(&text, "h.toml").unwrap()).unwrap();
+    let s = kinrepro::solve::quasistatic::seat(
+        &c,
+        &[0.5; 6],
+        &kinrepro::solve::SolverOptions::default(),
+    )
+    .unwrap();
+    let expect = vec![
+        LeftOut {
+            material: "hard-steel".into(),
+            missing: "allowable_pressure",
+        },
+        LeftOut {
+            material: "steel".into(),
+            missing: "allowable_shear_stress",
+        },
+    ];
+    for r in &s.contacts {
+        assert!(r.pressure_safety_factor.is_some() && r.shear_safety_factor.is_some());
+        assert_eq!(r.safety_factor_left_out, expect);
+    }
+}

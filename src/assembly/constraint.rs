@@ -34,8 +34,12 @@ pub struct ConstraintReport {
     pub condition_number: f64,
     /// Free motions (null space), described in words.
     pub free_motions: Vec<String>,
-    /// Redundant constraints (self-stress states), described in words.
-    pub redundant: Vec<String>,
+    /// Number of redundant constraints: contacts - rank, the dimension of
+    /// the self-stress states (null space of A^T).
+    pub redundant_constraints: usize,
+    /// The contacts (1-based) that take part in a self-stress state, i.e.
+    /// fight the others when the preload presses them all.
+    pub redundant_contacts: Vec<usize>,
 }
 
 impl ConstraintReport {
@@ -54,14 +58,35 @@ impl ConstraintReport {
                 self.free_motions.join("; ")
             ));
         }
-        if !self.redundant.is_empty() {
+        if self.redundant_constraints > 0 {
+            let k = self.redundant_constraints;
             parts.push(format!(
-                "over-constrained, redundant: {}",
-                self.redundant.join("; ")
+                "over-constrained, {k} redundant constraint{}: contacts {} fight each other",
+                if k == 1 { "" } else { "s" },
+                ranges(&self.redundant_contacts)
             ));
         }
         parts.join("; ")
     }
+}
+
+/// Sorted 1-based indices as a compact list: `1, 3-7, 9`.
+fn ranges(v: &[usize]) -> String {
+    let mut out: Vec<String> = Vec::new();
+    let mut i = 0;
+    while i < v.len() {
+        let mut j = i;
+        while j + 1 < v.len() && v[j + 1] == v[j] + 1 {
+            j += 1;
+        }
+        out.push(if j > i {
+            format!("{}-{}", v[i], v[j])
+        } else {
+            v[i].to_string()
+        });
+        i = j + 1;
+    }
+    out.join(", ")
 }
 
 fn reference(coupling: &Coupling) -> (Vector3<f64>, f64) {
@@ -99,19 +124,30 @@ pub fn constraint_matrix(coupling: &Coupling) -> DMatrix<f64> {
     a
 }
 
-/// Analyse the constraint matrix.
+/// Leverage below which a contact counts as taking part in a self-stress.
+const LEVERAGE_TOL: f64 = 1e-6;
+
+/// Analyse the constraint matrix A (m x 6), in time linear in m: only the
+/// 6 x 6 matrix A^T A is decomposed.
+///
+/// Free motions: eigenvectors of A^T A with (relatively) zero eigenvalue.
+/// Redundancy: the self-stress states y (A^T y = 0) span a space of
+/// dimension m - rank. Contact i takes part in one iff e_i is not in the
+/// column space of A, i.e. iff its leverage h_i = a_i^T (A^T A)^+ a_i (the
+/// diagonal of the projector A (A^T A)^+ A^T onto that space) is below 1
+/// (Hoaglin & Welsch, Am. Stat. 32 (1978) 17): its row lies in the span of
+/// the other rows, so removing it leaves the rank unchanged.
 pub fn analyse(coupling: &Coupling) -> ConstraintReport {
     let a = constraint_matrix(coupling);
     let m = a.nrows();
     let (o, l) = reference(coupling);
-    // Twist space: eigen-decomposition of A^T A (6 x 6).
     let eig = (a.transpose() * &a).symmetric_eigen();
     let lmax = eig.eigenvalues.max().max(f64::MIN_POSITIVE);
     let mut free_motions = Vec::new();
-    let mut rank = 0;
+    let mut kept = Vec::new();
     for k in 0..6 {
         if eig.eigenvalues[k] > EIGEN_RANK_TOL * lmax {
-            rank += 1;
+            kept.push(k);
         } else {
             let v = eig.eigenvectors.column(k);
             free_motions.push(describe_twist(
@@ -122,21 +158,24 @@ pub fn analyse(coupling: &Coupling) -> ConstraintReport {
             ));
         }
     }
-    // Constraint space: null space of A^T (m x m), the self-stress states.
-    let mut redundant = Vec::new();
-    if m > 0 {
-        let eig_c = (&a * a.transpose()).symmetric_eigen();
-        for k in 0..m {
-            if eig_c.eigenvalues[k] <= EIGEN_RANK_TOL * lmax {
-                let v = eig_c.eigenvectors.column(k);
-                let involved: Vec<String> = (0..m)
-                    .filter(|&i| v[i].abs() > 1e-6)
-                    .map(|i| (i + 1).to_string())
-                    .collect();
-                redundant.push(format!("contacts {} fight each other", involved.join(", ")));
-            }
-        }
-    }
+    let rank = kept.len();
+    let redundant_contacts: Vec<usize> = if m > rank {
+        (0..m)
+            .filter(|&i| {
+                let h: f64 = kept
+                    .iter()
+                    .map(|&k| {
+                        let d = a.row(i).dot(&eig.eigenvectors.column(k).transpose());
+                        d * d / eig.eigenvalues[k]
+                    })
+                    .sum();
+                h < 1.0 - LEVERAGE_TOL
+            })
+            .map(|i| i + 1)
+            .collect()
+    } else {
+        Vec::new()
+    };
     let exactly = m == 6 && rank == 6;
     let lmin = eig.eigenvalues.min();
     ConstraintReport {
@@ -149,7 +188,8 @@ pub fn analyse(coupling: &Coupling) -> ConstraintReport {
             f64::INFINITY
         },
         free_motions,
-        redundant,
+        redundant_constraints: m - rank,
+        redundant_contacts,
     }
 }
 

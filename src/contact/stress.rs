@@ -39,6 +39,10 @@
 //! Safety factor: allowable / actual, for the peak pressure (allowable
 //! pressure of the weaker material) and for the shear stress of each body
 //! that has an allowable shear stress; the smallest of those that exist.
+//! A factor that exists for one body of a pair but not the other (e.g. a
+//! steel ball on a flat without `allowable_pressure`) covers that body only:
+//! the other material is carried in `left_out`, so that every output can
+//! say which material the factor does not cover.
 
 use serde::Serialize;
 
@@ -185,8 +189,19 @@ fn elliptical_max_shear(nu: f64, axis_ratio: f64) -> (f64, f64) {
     (t, z)
 }
 
+/// A material that a safety factor of its pair had to leave out: the other
+/// body has the allowable, this one has not, so the factor is the other
+/// body's alone.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct LeftOut {
+    pub material: String,
+    /// The key it lacks: `allowable_pressure` (SF_p) or
+    /// `allowable_shear_stress` (SF_tau).
+    pub missing: &'static str,
+}
+
 /// The stress state of one contact at a normal load, and its safety factors.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ContactStress {
     pub max_pressure_pa: f64,
     /// Maximum shear stress [Pa] in the ball (body 1) and the fixed element (body 2).
@@ -199,6 +214,8 @@ pub struct ContactStress {
     pub shear_safety_factor: Option<f64>,
     /// The smaller of the two factors that exist.
     pub safety_factor: Option<f64>,
+    /// Materials a factor that exists had to leave out (no allowable given).
+    pub left_out: Vec<LeftOut>,
 }
 
 /// tau_max/p0 of the two bodies of a pair and the depth z/b of the maximum,
@@ -257,6 +274,7 @@ pub fn contact_stress(
         .zip(shear)
         .filter_map(|(m, t)| m.allowable_shear_stress.map(|a| safety(a, t)))
         .reduce(f64::min);
+    let left_out = left_out(materials, pressure_sf.is_some(), shear_sf.is_some());
     let safety_factor = match (pressure_sf, shear_sf) {
         (Some(a), Some(b)) => Some(a.min(b)),
         (a, b) => a.or(b),
@@ -268,5 +286,34 @@ pub fn contact_stress(
         pressure_safety_factor: pressure_sf,
         shear_safety_factor: shear_sf,
         safety_factor,
+        left_out,
     }
+}
+
+/// The bodies without an allowable for a factor that exists (from the
+/// other body's allowable).
+fn left_out(materials: [&Material; 2], pressure: bool, shear: bool) -> Vec<LeftOut> {
+    let mut out = Vec::new();
+    for m in materials {
+        let lacks = [
+            (
+                pressure && m.allowable_pressure.is_none(),
+                "allowable_pressure",
+            ),
+            (
+                shear && m.allowable_shear_stress.is_none(),
+                "allowable_shear_stress",
+            ),
+        ];
+        for (_, missing) in lacks.into_iter().filter(|(lacks, _)| *lacks) {
+            let entry = LeftOut {
+                material: m.name.clone(),
+                missing,
+            };
+            if !out.contains(&entry) {
+                out.push(entry);
+            }
+        }
+    }
+    out
 }

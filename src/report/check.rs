@@ -66,6 +66,7 @@ pub fn check_summary(c: &Coupling) -> String {
         "SF_tau",
         "SF"
     );
+    let mut left_out = Vec::new();
     for (i, k) in c.contacts.iter().enumerate() {
         let g = c.geometry(i, &c.touching_pose);
         let h = &k.law.hertz;
@@ -90,10 +91,14 @@ pub fn check_summary(c: &Coupling) -> String {
             factor(st.shear_safety_factor),
             factor(st.safety_factor)
         );
+        left_out.push(st.left_out);
     }
     let _ = writeln!(
         out,
         "  p0, tau_max (subsurface shear on the contact axis: closed form for circles, quadrature for ellipses) and safety factors SF = allowable / actual at the frictionless preload forces; \"-\": no allowable given"
     );
+    for note in crate::report::safety::left_out_notes(left_out.iter().map(Vec::as_slice)) {
+        let _ = writeln!(out, "  {note}");
+    }
     out
 }

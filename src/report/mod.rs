@@ -5,6 +5,7 @@ pub mod analysis;
 pub mod check;
 pub mod contact;
 pub mod run;
+pub mod safety;
 pub mod sensitivity;
 pub mod study;
 pub mod trace;

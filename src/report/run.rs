@@ -172,6 +172,13 @@ impl RunReport {
             s,
             "tau_max: maximum subsurface shear stress on the contact axis (closed form for circles, Boussinesq quadrature for ellipses); SF = allowable / actual, \"-\" where the materials give no allowable"
         );
+        let left_out = self
+            .contacts
+            .iter()
+            .map(|c| c.safety_factor_left_out.as_slice());
+        for note in crate::report::safety::left_out_notes(left_out) {
+            let _ = writeln!(s, "{note}");
+        }
         s
     }
 }

@@ -22,8 +22,10 @@ use toml::Spanned;
 
 use super::error::{ErrorContext, SceneError};
 use super::file::{
-    Arrangement, BallFile, EvaluationPointFile, GrooveKind, SceneFile, SurfaceFile, SurfaceKind,
+    Arrangement, BallFile, EvaluationPointFile, GrooveKind, Numbers, SceneFile, SurfaceFile,
+    SurfaceKind,
 };
+use super::plausible;
 
 /// Azimuths of balls 1, 2, 3 [deg].
 pub const BALL_AZIMUTHS_DEG: [f64; 3] = [90.0, 210.0, 330.0];
@@ -56,6 +58,7 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
         super::resolve::compliance(ctx, v, "coupling.support_compliance")?;
     }
     let diameter = positive(&c.diameter, "coupling.diameter")?;
+    plausible::check_coupling(c, raw.allow_large_values, ctx)?;
     let r_ball = positive(&c.ball_diameter, "coupling.ball_diameter")? / 2.0;
     let r_elem = match (c.groove, &c.groove_element_diameter) {
         (GrooveKind::Planes, _) => 0.0,
@@ -129,12 +132,12 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
     let balls = centres
         .iter()
         .map(|ck| BallFile {
-            centre: Spanned::new(0..0, [ck.x, ck.y, ck.z]),
+            centre: Spanned::new(0..0, Numbers::of(&[ck.x, ck.y, ck.z])),
             radius: Spanned::new(0..0, r_ball),
             material: ball_material.clone(),
         })
         .collect();
-    let arr = |v: Vector3<f64>| Some(Spanned::new(0..0, [v.x, v.y, v.z]));
+    let arr = |v: Vector3<f64>| Some(Spanned::new(0..0, Numbers::of(&[v.x, v.y, v.z])));
     let surfaces = contacts
         .into_iter()
         .map(|(k, n, axis, flat)| {
@@ -176,18 +179,19 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
     if evaluation_points.is_empty() {
         evaluation_points.push(EvaluationPointFile {
             name: "centre".to_string(),
-            position: [0.0; 3],
+            position: Spanned::new(0..0, Numbers::of(&[0.0; 3])),
         });
         if c.arrangement == Arrangement::Kelvin {
             let c1 = centres[0];
             evaluation_points.push(EvaluationPointFile {
                 name: "trihedral ball".to_string(),
-                position: [c1.x, c1.y, c1.z],
+                position: Spanned::new(0..0, Numbers::of(&[c1.x, c1.y, c1.z])),
             });
         }
     }
     Ok(SceneFile {
         name: raw.name.clone(),
+        allow_large_values: raw.allow_large_values,
         materials: raw.materials.clone(),
         coupling: None,
         balls,

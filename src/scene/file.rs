@@ -11,6 +11,21 @@ use toml::Spanned;
 
 use crate::contact::TangentialLaw;
 
+/// A numeric array as written (a point, a direction, a pair of bounds).
+/// Its length and element types are checked when the scene is resolved,
+/// where the error can name the field: an array of the wrong length or with
+/// an element that is not a number is an error, never cut to size.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(transparent)]
+pub struct Numbers(pub Vec<toml::Value>);
+
+impl Numbers {
+    /// The array of these values (as `expand` writes it).
+    pub fn of(values: &[f64]) -> Self {
+        Numbers(values.iter().map(|v| toml::Value::Float(*v)).collect())
+    }
+}
+
 /// A scene file as written.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -18,7 +33,11 @@ pub struct SceneFile {
     /// Optional display name.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
-    /// User-defined materials (they may shadow built-in names).
+    /// Accept magnitudes beyond the plausibility bounds of `scene::plausible`
+    /// (a ball above 0.5 m, a circle of balls above 5 m, a preload above 1 MN).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub allow_large_values: bool,
+    /// User-defined materials (a built-in or earlier name only with `override = true`).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub materials: Vec<MaterialFile>,
     /// High-level form.
@@ -63,6 +82,11 @@ pub struct MaterialFile {
     /// Allowable maximum (subsurface) shear stress [Pa].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub allowable_shear_stress: Option<Spanned<f64>>,
+    /// `override = true`: this entry intentionally replaces the built-in
+    /// material or the earlier entry of the same name. Without it a reused
+    /// name is an error; with it, a name that replaces nothing is one.
+    #[serde(default, rename = "override", skip_serializing_if = "Option::is_none")]
+    pub replaces: Option<Spanned<bool>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -117,7 +141,7 @@ fn default_opening_angle() -> Spanned<f64> {
 #[serde(deny_unknown_fields)]
 pub struct BallFile {
     /// Centre [m].
-    pub centre: Spanned<[f64; 3]>,
+    pub centre: Spanned<Numbers>,
     /// Radius [m].
     pub radius: Spanned<f64>,
     pub material: Spanned<String>,
@@ -143,16 +167,16 @@ pub struct SurfaceFile {
     pub ball: Spanned<i64>,
     pub material: Spanned<String>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub point: Option<Spanned<[f64; 3]>>,
+    pub point: Option<Spanned<Numbers>>,
     /// Outward normal of a plane (towards the ball).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub normal: Option<Spanned<[f64; 3]>>,
+    pub normal: Option<Spanned<Numbers>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub axis_point: Option<Spanned<[f64; 3]>>,
+    pub axis_point: Option<Spanned<Numbers>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub direction: Option<Spanned<[f64; 3]>>,
+    pub direction: Option<Spanned<Numbers>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub centre: Option<Spanned<[f64; 3]>>,
+    pub centre: Option<Spanned<Numbers>>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub radius: Option<Spanned<f64>>,
     /// Support compliance in series with this contact, normal direction [m/N].
@@ -167,10 +191,10 @@ pub struct PreloadFile {
     pub force: Spanned<f64>,
     /// Point of application in the moving half [m] (default: the centre).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub point: Option<Spanned<[f64; 3]>>,
+    pub point: Option<Spanned<Numbers>>,
     /// Direction (default [0, 0, -1]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub direction: Option<Spanned<[f64; 3]>>,
+    pub direction: Option<Spanned<Numbers>>,
     /// Duration of the ramp from 0 to the full preload [s] (default 1 s):
     /// the time base of the slip velocity of the quasi-static solver.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -261,7 +285,7 @@ impl Default for StudyFile {
 pub struct EvaluationPointFile {
     pub name: String,
     /// Position in the moving half [m] (world frame in the touching pose).
-    pub position: [f64; 3],
+    pub position: Spanned<Numbers>,
 }
 
 /// `[dynamics]`: mass properties of the moving half (dynamic solver only;
@@ -273,10 +297,10 @@ pub struct DynamicsFile {
     pub mass: Spanned<f64>,
     /// Principal moments of inertia about the centre of mass, along the
     /// scene axes x, y, z [kg m^2].
-    pub inertia: Spanned<[f64; 3]>,
+    pub inertia: Spanned<Numbers>,
     /// Centre of mass in the moving half [m] (default: the origin).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub centre_of_mass: Option<Spanned<[f64; 3]>>,
+    pub centre_of_mass: Option<Spanned<Numbers>>,
 }
 
 /// `[variation]`: half-widths of the uniform distributions a study draws
@@ -288,7 +312,7 @@ pub struct DynamicsFile {
 pub struct VariationFile {
     /// Offset of the preload point from its nominal position, x and y [m].
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub preload_offset: Option<Spanned<[f64; 2]>>,
+    pub preload_offset: Option<Spanned<Numbers>>,
     /// Tilt of the preload direction: each of the two tilt components
     /// (rotation about x and about y) uniform in +-this [rad].
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -298,7 +322,7 @@ pub struct VariationFile {
     pub ball_diameter: Option<Spanned<f64>>,
     /// Position error of each moving ball's centre in the moving half, x, y, z [m].
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub ball_position: Option<Spanned<[f64; 3]>>,
+    pub ball_position: Option<Spanned<Numbers>>,
     /// Position error of each fixed surface along its nominal contact normal [m].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub surface_normal: Option<Spanned<f64>>,
@@ -309,5 +333,5 @@ pub struct VariationFile {
     /// Position error of each groove (all surfaces serving one ball, moved
     /// together), x and y [m].
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub groove_position: Option<Spanned<[f64; 2]>>,
+    pub groove_position: Option<Spanned<Numbers>>,
 }

@@ -10,6 +10,7 @@ pub mod bundled;
 pub mod error;
 pub mod expand;
 pub mod file;
+pub mod plausible;
 pub mod resolve;
 
 use std::path::Path;
@@ -190,7 +191,7 @@ impl Scene {
 
     /// Parse and validate scene text; `file` names it in errors.
     pub fn parse(source: &str, file: &str) -> Result<Scene, SceneError> {
-        let ctx = ErrorContext { file, source };
+        let ctx = ErrorContext::new(file, source);
         let raw = parse_file(source, &ctx)?;
         let explicit = expand::to_explicit(&raw, &ctx)?;
         resolve::resolve(&explicit, &ctx)
@@ -198,7 +199,7 @@ impl Scene {
 
     /// The explicit TOML of a scene file (`kinrepro expand`).
     pub fn expand_text(source: &str, file: &str) -> Result<String, SceneError> {
-        let ctx = ErrorContext { file, source };
+        let ctx = ErrorContext::new(file, source);
         let raw = parse_file(source, &ctx)?;
         let explicit = expand::to_explicit(&raw, &ctx)?;
         // Validate before printing, so that expand never prints a bad scene.

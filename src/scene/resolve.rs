@@ -1,13 +1,16 @@
 //! Validation of an explicit scene file into a [`Scene`]: materials resolved,
 //! every number checked for range, every surface complete.
 
+use std::collections::HashMap;
+
 use nalgebra::Vector3;
 use toml::Spanned;
 
 use super::error::{ErrorContext, SceneError};
 use super::file::{
-    FrictionFile, FrictionLawName, SceneFile, SurfaceFile, SurfaceKind, VariationFile,
+    FrictionFile, FrictionLawName, Numbers, SceneFile, SurfaceFile, SurfaceKind, VariationFile,
 };
+use super::plausible;
 use super::{
     Ball, DEFAULT_RAMP_TIME, DynamicsSettings, EvaluationPoint, FrictionSettings, Preload, Scene,
     StudySettings, Surface, SurfaceGeometry, VariationBounds,
@@ -23,21 +26,21 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     let materials = user_materials(f, ctx)?;
     let material = |name: &Spanned<String>, field: &str| -> Result<Material, SceneError> {
         let n = name.get_ref();
-        if let Some(m) = materials.iter().find(|m| &m.name == n) {
+        if let Some(m) = materials.get(n) {
             return Ok(m.clone());
         }
         Material::builtin(n).map_err(|e| ctx.error(Some(&name.span()), field, e.to_string()))
     };
     let positive = |v: &Spanned<f64>, field: &str, unit: &str| ctx.positive(v, field, unit);
-    let finite = |v: &Spanned<[f64; 3]>, field: &str| -> Result<Vector3<f64>, SceneError> {
-        let a = v.get_ref();
+    let finite = |v: &Spanned<Numbers>, field: &str| -> Result<Vector3<f64>, SceneError> {
+        let a: [f64; 3] = ctx.numbers(v, field, "[x, y, z]")?;
         if a.iter().all(|x| x.is_finite()) {
             Ok(Vector3::new(a[0], a[1], a[2]))
         } else {
             Err(ctx.error(Some(&v.span()), field, "coordinates must be finite numbers"))
         }
     };
-    let unit = |v: &Spanned<[f64; 3]>, field: &str| -> Result<Vector3<f64>, SceneError> {
+    let unit = |v: &Spanned<Numbers>, field: &str| -> Result<Vector3<f64>, SceneError> {
         let x = finite(v, field)?;
         let n = x.norm();
         if n > 0.0 {
@@ -70,6 +73,9 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     }
 
     let mut surfaces = Vec::new();
+    // Radii are checked positive below; first the magnitudes (millimetres?).
+    let centres: Vec<Vector3<f64>> = balls.iter().map(|b| b.centre).collect();
+    plausible::check_explicit(f, &centres, ctx)?;
     for (i, s) in f.surfaces.iter().enumerate() {
         let field = |k: &str| format!("surfaces[{}].{k}", i + 1);
         let ball = *s.ball.get_ref();
@@ -81,7 +87,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
             ));
         }
         let need =
-            |v: &Option<Spanned<[f64; 3]>>, k: &str| -> Result<Spanned<[f64; 3]>, SceneError> {
+            |v: &Option<Spanned<Numbers>>, k: &str| -> Result<Spanned<Numbers>, SceneError> {
                 v.clone().ok_or_else(|| missing(s, ctx, &field(k), k))
             };
         let radius = |s: &SurfaceFile| -> Result<f64, SceneError> {
@@ -119,8 +125,10 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     }
     // Contacts are numbered ball by ball (the order of --mu).
     surfaces.sort_by_key(|s| s.ball);
+    let mut served = vec![false; balls.len()];
+    surfaces.iter().for_each(|s| served[s.ball] = true);
     for (k, b) in balls.iter().enumerate() {
-        if !surfaces.iter().any(|s| s.ball == k) {
+        if !served[k] {
             return Err(SceneError {
                 file: ctx.file.to_string(),
                 line: b.line,
@@ -198,23 +206,15 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         .parse()
         .map_err(|e| ctx.error(Some(&st.sampler.span()), "study.sampler", format!("{e}")))?;
 
-    let mut evaluation_points: Vec<EvaluationPoint> = f
-        .evaluation_points
-        .iter()
-        .map(|e| EvaluationPoint {
+    let mut evaluation_points = Vec::new();
+    for (i, e) in f.evaluation_points.iter().enumerate() {
+        evaluation_points.push(EvaluationPoint {
             name: e.name.clone(),
-            position: Vector3::new(e.position[0], e.position[1], e.position[2]),
-        })
-        .collect();
-    if evaluation_points
-        .iter()
-        .any(|e| !e.position.iter().all(|x| x.is_finite()))
-    {
-        return Err(ctx.error(
-            None,
-            "evaluation_points",
-            "positions must be finite numbers",
-        ));
+            position: finite(
+                &e.position,
+                &format!("evaluation_points[{}].position", i + 1),
+            )?,
+        });
     }
     if evaluation_points.is_empty() {
         evaluation_points.push(EvaluationPoint {
@@ -345,14 +345,15 @@ pub fn compliance(ctx: &ErrorContext, v: &Spanned<f64>, field: &str) -> Result<f
 fn variation_bounds(v: &VariationFile, ctx: &ErrorContext) -> Result<VariationBounds, SceneError> {
     fn check<const N: usize>(
         ctx: &ErrorContext,
-        v: &Option<Spanned<[f64; N]>>,
+        v: &Option<Spanned<Numbers>>,
         key: &str,
         unit: &str,
     ) -> Result<[f64; N], SceneError> {
         let Some(s) = v else {
             return Ok([0.0; N]);
         };
-        let a = *s.get_ref();
+        let what = if N == 2 { "[x, y]" } else { "[x, y, z]" };
+        let a: [f64; N] = ctx.numbers(s, &format!("variation.{key}"), what)?;
         if let Some(x) = a.iter().find(|x| !(x.is_finite() && **x >= 0.0)) {
             return Err(ctx.error(
                 Some(&s.span()),
@@ -366,8 +367,10 @@ fn variation_bounds(v: &VariationFile, ctx: &ErrorContext) -> Result<VariationBo
         Ok(a)
     }
     let scalar = |v: &Option<Spanned<f64>>, key: &str, unit: &str| -> Result<f64, SceneError> {
-        let arr = v.as_ref().map(|s| Spanned::new(s.span(), [*s.get_ref()]));
-        Ok(check(ctx, &arr, key, unit)?[0])
+        let arr = v
+            .as_ref()
+            .map(|s| Spanned::new(s.span(), Numbers::of(&[*s.get_ref()])));
+        Ok(check::<1>(ctx, &arr, key, unit)?[0])
     };
     Ok(VariationBounds {
         preload_offset_m: check(ctx, &v.preload_offset, "preload_offset", "m")?,
@@ -393,7 +396,64 @@ fn missing(s: &SurfaceFile, ctx: &ErrorContext, field: &str, key: &str) -> Scene
     )
 }
 
-fn user_materials(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, SceneError> {
+/// The `[[materials]]` entries, in order; a later entry replaces an earlier
+/// one of the same name. Reusing a built-in or an earlier name is an error
+/// unless the entry says `override = true`, and `override = true` on a name
+/// that replaces nothing is one too (a misspelt name would otherwise define
+/// a new material silently).
+fn user_materials(
+    f: &SceneFile,
+    ctx: &ErrorContext,
+) -> Result<HashMap<String, Material>, SceneError> {
+    // name -> (the material, the 1-based entry that first defined it)
+    let mut out: HashMap<String, (Material, usize)> = HashMap::new();
+    for (i, (m, mat)) in f
+        .materials
+        .iter()
+        .zip(material_entries(f, ctx)?)
+        .enumerate()
+    {
+        let name = m.name.get_ref();
+        let field = format!("materials[{}]", i + 1);
+        let builtin = Material::builtin(name).is_ok();
+        let replaces = m.replaces.as_ref().is_some_and(|r| *r.get_ref());
+        let first = out.get(name).map(|(_, j)| *j);
+        let what = match (first, builtin) {
+            (Some(j), _) => Some(format!("`{name}` is already defined in materials[{j}]")),
+            (None, true) => Some(format!("`{name}` is a built-in material")),
+            (None, false) => None,
+        };
+        match (what, replaces) {
+            (Some(what), false) => {
+                return Err(ctx.error(
+                    Some(&m.name.span()),
+                    format!("{field}.name"),
+                    format!(
+                        "{what}: give the material another name, or add `override = true` \
+                         to this entry if it is meant to replace the other definition"
+                    ),
+                ));
+            }
+            (None, true) => {
+                let span = m.replaces.as_ref().map(|r| r.span());
+                return Err(ctx.error(
+                    span.as_ref(),
+                    format!("{field}.override"),
+                    format!(
+                        "`{name}` is neither a built-in material nor defined earlier, so \
+                         there is nothing to override (misspelt name?)"
+                    ),
+                ));
+            }
+            _ => {}
+        }
+        out.insert(name.clone(), (mat, first.unwrap_or(i + 1)));
+    }
+    Ok(out.into_iter().map(|(k, (m, _))| (k, m)).collect())
+}
+
+/// Each `[[materials]]` entry validated on its own.
+fn material_entries(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, SceneError> {
     f.materials
         .iter()
         .enumerate()

@@ -14,7 +14,7 @@ use serde::Serialize;
 use thiserror::Error;
 
 use crate::assembly::{BodyPose, Coupling};
-use crate::contact::stress::contact_stress;
+use crate::contact::stress::{LeftOut, contact_stress};
 use crate::contact::{Friction, SlipState};
 use crate::scene::resolve::MU_MAX;
 use contact_layer::ContactEval;
@@ -139,6 +139,9 @@ pub struct ContactResult {
     pub pressure_safety_factor: Option<f64>,
     pub shear_safety_factor: Option<f64>,
     pub safety_factor: Option<f64>,
+    /// Materials a safety factor had to leave out: they lack the allowable
+    /// the other body has (`contact::stress`), so the factor does not cover them.
+    pub safety_factor_left_out: Vec<LeftOut>,
     pub point_m: [f64; 3],
     pub normal: [f64; 3],
 }
@@ -174,6 +177,7 @@ impl ContactResult {
             pressure_safety_factor: stress.pressure_safety_factor,
             shear_safety_factor: stress.shear_safety_factor,
             safety_factor: stress.safety_factor,
+            safety_factor_left_out: stress.left_out,
             point_m: [e.geometry.point.x, e.geometry.point.y, e.geometry.point.z],
             normal: [
                 e.geometry.normal.x,
