@@ -2,27 +2,22 @@
 //! the Table 2 style text table, CSV, shard merging and the files of `--out`.
 
 use std::fmt::Write;
-use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
 use crate::assembly::Coupling;
+use crate::report::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, produced_by};
+use crate::report::study_stream::{StreamStats, check_record, split_moment_stats, streams};
 use crate::scene::VariationBounds;
-use crate::study::plot::{
-    ConvergenceSeries, Dof, VariantScatter, VariantSigma, plot_convergence, plot_sigma_bars,
-    plot_xy_scatter,
-};
 use crate::study::runner::{
     COMPONENTS, INTERCHANGE_PREFIX, StartBounds, StudyOptions, VariantRun, Variation,
 };
 use crate::study::sensitivity::{self, SensitivityBlock};
-use crate::study::stats::{
-    BootstrapConfig, SampleRecord, ShardFile, Summary, merge, sigma_convergence, summarize_outputs,
-    verify_inputs,
-};
+use crate::study::stats::{BootstrapConfig, SampleRecord, Summary, summarize_outputs};
 use crate::study::{DesignSpec, Sampler, Shard, StudyError};
 
-/// Five DOFs in human units: x, y, z [nm], phi_x, phi_y [nrad].
+/// Six DOFs in human units: x, y, z [nm], phi_x, phi_y, phi_z [nrad]
+/// (phi_z: clocking about z).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Dofs {
     pub x_nm: f64,
@@ -30,27 +25,31 @@ pub struct Dofs {
     pub z_nm: f64,
     pub phi_x_nrad: f64,
     pub phi_y_nrad: f64,
+    pub phi_z_nrad: f64,
 }
 
 impl Dofs {
-    /// From five SI values (m, m, m, rad, rad).
-    fn from_si(v: [f64; 5]) -> Self {
+    /// From six SI values (m, m, m, rad, rad, rad).
+    pub fn from_si(v: [f64; 6]) -> Self {
         Dofs {
             x_nm: v[0] * 1e9,
             y_nm: v[1] * 1e9,
             z_nm: v[2] * 1e9,
             phi_x_nrad: v[3] * 1e9,
             phi_y_nrad: v[4] * 1e9,
+            phi_z_nrad: v[5] * 1e9,
         }
     }
 
-    pub fn values(&self) -> [f64; 5] {
+    /// The six values in nm and nrad, in the order of `COMPONENTS`.
+    pub fn values(&self) -> [f64; 6] {
         [
             self.x_nm,
             self.y_nm,
             self.z_nm,
             self.phi_x_nrad,
             self.phi_y_nrad,
+            self.phi_z_nrad,
         ]
     }
 }
@@ -72,9 +71,43 @@ pub struct PointStats {
     pub max: Dofs,
 }
 
+/// One sample of a study as written to JSON: the physical values of the
+/// varied inputs (SI), the design coordinates in [0, 1] and the outputs (SI).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StudyRecord {
+    /// Row of the design, 0-based.
+    pub index: usize,
+    /// Physical input values in the order of the variant's `inputs`: mu_s
+    /// per contact (dimensionless), offsets [m], tilts [rad].
+    #[serde(rename = "inputs_si")]
+    pub physical: Vec<f64>,
+    /// Design coordinates of this row (unit hypercube, before mapping).
+    #[serde(rename = "design_u")]
+    pub inputs: Vec<f64>,
+    /// One value per `output_names` entry [m or rad].
+    #[serde(rename = "outputs_si")]
+    pub outputs: Vec<f64>,
+}
+
+impl StudyRecord {
+    /// The statistics' view of this record (design coordinates and outputs).
+    pub fn sample(&self) -> SampleRecord {
+        SampleRecord {
+            index: self.index,
+            inputs: self.inputs.clone(),
+            outputs: self.outputs.clone(),
+        }
+    }
+}
+
 /// One scene's study.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct VariantReport {
+    /// The settings this variant's numbers depend on (`merge` compares them).
+    pub fingerprint: Fingerprint,
+    /// Set when the coupling could not seat (nothing slid): the reason.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cannot_seat: Option<String>,
     pub scene: String,
     pub name: String,
     /// Samples in the whole design.
@@ -111,17 +144,33 @@ pub struct VariantReport {
     pub sensitivity: Option<Vec<SensitivityBlock>>,
     pub design: DesignSpec,
     pub shard: Shard,
+    /// `point/component` of every output, unit as suffix (`_m`, `_rad`).
     pub output_names: Vec<String>,
-    /// Per sample: index, design row in [0, 1]^6, outputs in SI (see output_names).
-    pub records: Vec<SampleRecord>,
+    /// Per sample: index, physical inputs (SI), design row, outputs (SI).
+    pub records: Vec<StudyRecord>,
 }
 
 /// The whole study document (`--format json`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct StudyReport {
-    /// The seed and sampler of every variant (null if the variants differ).
+    /// Version of this document's layout (docs/output.md); 0: written before
+    /// schema versions existed.
+    #[serde(default)]
+    pub schema_version: u32,
+    /// The kinrepro that wrote it.
+    #[serde(default)]
+    pub kinrepro_version: String,
+    /// Solver, seed, sampler and sample count of every variant (null if the
+    /// variants differ).
+    #[serde(default)]
+    pub solver: Option<String>,
     pub seed: Option<u64>,
     pub sampler: Option<Sampler>,
+    #[serde(default)]
+    pub samples: Option<usize>,
+    /// What varied (friction, preload, start, tolerances).
+    #[serde(default)]
+    pub vary: Vec<String>,
     pub shard: Shard,
     pub variants: Vec<VariantReport>,
 }
@@ -140,7 +189,7 @@ fn point_names(output_names: &[String]) -> Vec<String> {
 /// Statistics of the re-seating and of the interchangeability outputs.
 fn split_stats(
     output_names: &[String],
-    records: &[SampleRecord],
+    records: &[StudyRecord],
 ) -> Result<(Vec<PointStats>, Vec<PointStats>), StudyError> {
     let k = output_names
         .iter()
@@ -172,6 +221,46 @@ fn split_stats(
             point_stats(&names, &recs)
         };
     Ok((part(0..k, false)?, part(k..output_names.len(), true)?))
+}
+
+/// Every output finite, and no column so large that its sum of squares
+/// overflows (that would make sigma NaN): otherwise an error naming the
+/// sample.
+fn check_finite_records(records: &[StudyRecord], names: &[String]) -> Result<(), StudyError> {
+    for r in records {
+        check_record(r.index, &r.outputs, names)?;
+    }
+    let n = records.len() as f64;
+    for (k, name) in names.iter().enumerate() {
+        let worst = records
+            .iter()
+            .max_by(|a, b| a.outputs[k].abs().total_cmp(&b.outputs[k].abs()));
+        if let Some(r) = worst
+            && !(r.outputs[k] * r.outputs[k] * n).is_finite()
+        {
+            return Err(StudyError::NonFinite {
+                what: format!(
+                    "sample {}: output {} = {:e} overflows the variance",
+                    r.index, name, r.outputs[k]
+                ),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The reason a study's coupling did not seat: every re-seating sigma is
+/// exactly zero, i.e. every sample stopped at the nominal pose and nothing
+/// slid (above the friction limit every contact sticks from the first
+/// load increment).
+fn zero_scatter(points: &[PointStats]) -> Option<String> {
+    let zero = !points.is_empty()
+        && points
+            .iter()
+            .all(|p| p.sigma.values().iter().all(|s| *s == 0.0));
+    zero.then(|| {
+        "zero scatter: every sample seated at exactly the nominal pose, nothing slid; the coupling cannot seat (friction at or above its seating limit, see `kinrepro check`)".to_string()
+    })
 }
 
 /// True for the names of tolerance inputs.
@@ -220,13 +309,7 @@ fn point_stats(
 ) -> Result<Vec<PointStats>, StudyError> {
     let summaries = summarize_outputs(records, &BootstrapConfig::default())?;
     let pick = |chunk: &[Summary], f: &dyn Fn(&Summary) -> f64| {
-        Dofs::from_si([
-            f(&chunk[0]),
-            f(&chunk[1]),
-            f(&chunk[2]),
-            f(&chunk[3]),
-            f(&chunk[4]),
-        ])
+        Dofs::from_si(std::array::from_fn(|k| f(&chunk[k])))
     };
     Ok(point_names(output_names)
         .into_iter()
@@ -252,9 +335,31 @@ impl VariantReport {
         run: VariantRun,
         opts: &StudyOptions,
     ) -> Result<Self, StudyError> {
+        let mut v = Self::unfinished(coupling, run, opts);
+        if !v.partial {
+            v.finish()?;
+        }
+        Ok(v)
+    }
+
+    /// The report of a run without its statistics (a streamed study sets
+    /// them with [`VariantReport::set_moment_stats`]).
+    pub fn unfinished(coupling: &Coupling, run: VariantRun, opts: &StudyOptions) -> Self {
         let f = &coupling.scene.friction;
         let var = &opts.variation;
-        let mut v = VariantReport {
+        let records = run
+            .records
+            .into_iter()
+            .map(|r| StudyRecord {
+                index: r.index,
+                physical: var.sample(coupling, &r.inputs).physical,
+                inputs: r.inputs,
+                outputs: r.outputs,
+            })
+            .collect();
+        VariantReport {
+            fingerprint: Fingerprint::new(coupling, opts, &run.design),
+            cannot_seat: None,
             scene: coupling.scene.file.clone(),
             name: coupling.scene.name.clone(),
             samples: run.design.n,
@@ -274,22 +379,37 @@ impl VariantReport {
             design: run.design,
             shard: run.shard,
             output_names: run.output_names,
-            records: run.records,
-        };
-        if !v.partial {
-            v.finish()?;
+            records,
         }
-        Ok(v)
     }
 }
 
 impl VariantReport {
     /// Statistics (and sensitivity, if asked for) from the records.
-    fn finish(&mut self) -> Result<(), StudyError> {
-        (self.points, self.interchangeability) = split_stats(&self.output_names, &self.records)?;
+    pub(crate) fn finish(&mut self) -> Result<(), StudyError> {
+        check_finite_records(&self.records, &self.output_names)?;
+        if streams(&self.design) {
+            let mut st = StreamStats::new(self.output_names.len());
+            for r in &self.records {
+                st.push(std::slice::from_ref(&r.sample()), &self.output_names)?;
+            }
+            self.set_moment_stats(&st)?;
+        } else {
+            (self.points, self.interchangeability) =
+                split_stats(&self.output_names, &self.records)?;
+            self.cannot_seat = zero_scatter(&self.points);
+        }
         if self.sensitivity.is_some() {
             self.sensitivity = Some(sensitivity_blocks(self));
         }
+        Ok(())
+    }
+
+    /// Statistics of a streamed study from its moments.
+    pub fn set_moment_stats(&mut self, st: &StreamStats) -> Result<(), StudyError> {
+        (self.points, self.interchangeability) =
+            split_moment_stats(&self.output_names, &st.moments)?;
+        self.cannot_seat = zero_scatter(&self.points);
         Ok(())
     }
 
@@ -309,62 +429,64 @@ impl VariantReport {
 
 impl StudyReport {
     pub fn new(variants: Vec<VariantReport>, shard: Shard) -> Self {
-        let same = |f: &dyn Fn(&VariantReport) -> String| {
-            variants.windows(2).all(|w| f(&w[0]) == f(&w[1]))
+        let common = |f: &dyn Fn(&VariantReport) -> String| {
+            let first = variants.first().map(f)?;
+            variants.iter().all(|v| f(v) == first).then_some(())
         };
-        let seed =
-            (!variants.is_empty() && same(&|v| v.seed.to_string())).then(|| variants[0].seed);
-        let sampler =
-            (!variants.is_empty() && same(&|v| v.sampler.to_string())).then(|| variants[0].sampler);
+        let v0 = variants.first();
+        let seed = common(&|v| v.seed.to_string()).and(v0.map(|v| v.seed));
+        let sampler = common(&|v| v.sampler.to_string()).and(v0.map(|v| v.sampler));
+        let solver = common(&|v| v.solver.clone()).and(v0.map(|v| v.solver.clone()));
+        let samples = common(&|v| v.samples.to_string()).and(v0.map(|v| v.samples));
+        let mut vary: Vec<String> = Vec::new();
+        for v in &variants {
+            for k in varied_kinds(&v.variation()) {
+                if !vary.iter().any(|x| x == k) {
+                    vary.push(k.to_string());
+                }
+            }
+        }
         StudyReport {
+            schema_version: SCHEMA_VERSION,
+            kinrepro_version: VERSION.to_string(),
+            solver,
             seed,
             sampler,
+            samples,
+            vary,
             shard,
             variants,
         }
     }
 
-    /// Merge shard documents (any order) into the document of one full run.
-    pub fn merge(parts: Vec<StudyReport>) -> Result<StudyReport, StudyError> {
-        let first = parts.first().ok_or(StudyError::EmptyMerge)?;
-        let mut variants = Vec::new();
-        for proto in &first.variants {
-            let files: Vec<ShardFile> = parts
-                .iter()
-                .flat_map(|p| p.variants.iter())
-                .filter(|v| v.scene == proto.scene && v.design == proto.design)
-                .map(|v| ShardFile {
-                    design: v.design,
-                    shard: v.shard,
-                    output_names: v.output_names.clone(),
-                    records: v.records.clone(),
-                })
-                .collect();
-            let merged = merge(files)?;
-            verify_inputs(&merged)?;
-            let mut v = proto.clone();
-            v.partial = false;
-            v.shard = Shard::whole();
-            v.records = merged.records;
-            v.finish()?;
-            variants.push(v);
-        }
-        Ok(StudyReport::new(variants, Shard::whole()))
+    /// The line naming what produced this document.
+    pub fn produced_by(&self) -> String {
+        let or_scene = |x: Option<String>| x.unwrap_or_else(|| "per scene".to_string());
+        produced_by(
+            &or_scene(self.solver.clone()),
+            &or_scene(self.sampler.map(|x| x.to_string())),
+            &or_scene(self.seed.map(|x| x.to_string())),
+            &or_scene(self.samples.map(|x| x.to_string())),
+            &self.vary.join("+"),
+        )
+    }
+
+    /// Variants whose coupling could not seat, with the reason.
+    pub fn cannot_seat(&self) -> Vec<String> {
+        self.variants
+            .iter()
+            .filter_map(|v| v.cannot_seat.as_ref().map(|r| format!("{}: {r}", v.scene)))
+            .collect()
     }
 
     /// The text table: the variants side by side as in the paper's Table 2,
     /// then the full statistics of each variant.
     pub fn table(&self) -> String {
         let mut s = String::new();
-        let sampler = self
-            .sampler
-            .map_or("per scene".to_string(), |x| x.to_string());
-        let seed = self.seed.map_or("per scene".to_string(), |x| x.to_string());
-        let _ = writeln!(
-            s,
-            "kinrepro study: sampler {sampler}, seed {seed}, shard {}",
-            self.shard
-        );
+        let _ = writeln!(s, "{}, shard {}", self.produced_by(), self.shard);
+        for w in self.cannot_seat() {
+            let _ = writeln!(s, "CANNOT SEAT: {w}");
+        }
         if self
             .variants
             .iter()
@@ -429,147 +551,6 @@ impl StudyReport {
         }
         s
     }
-
-    /// Summary statistics as CSV, one row per variant, point and DOF (SI units).
-    pub fn csv(&self) -> String {
-        let mut s = String::from(
-            "scene,name,point,dof,unit,n,mean,min,max,sigma,three_sigma,sigma_ci90_low,sigma_ci90_high\n",
-        );
-        for v in self.variants.iter().filter(|v| !v.partial) {
-            let interchange = v.interchangeability.iter().map(|p| {
-                let mut p = p.clone();
-                p.name = format!("{INTERCHANGE_PREFIX}{}", p.name);
-                p
-            });
-            for p in v.points.iter().cloned().chain(interchange) {
-                let p = &p;
-                for (k, comp) in COMPONENTS.iter().enumerate() {
-                    let (dof, unit) = comp.rsplit_once('_').unwrap_or((comp, ""));
-                    let si = |d: &Dofs| d.values()[k] * 1e-9;
-                    let _ = writeln!(
-                        s,
-                        "{},{},{},{dof},{unit},{},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
-                        csv_field(&v.scene),
-                        csv_field(&v.name),
-                        csv_field(&p.name),
-                        p.n,
-                        si(&p.mean),
-                        si(&p.min),
-                        si(&p.max),
-                        si(&p.sigma),
-                        si(&p.three_sigma),
-                        si(&p.sigma_ci90_low),
-                        si(&p.sigma_ci90_high)
-                    );
-                }
-            }
-        }
-        s
-    }
-
-    /// Write per-sample CSV files and the SVG plots into `dir`.
-    pub fn write_files(&self, dir: &Path, couplings: &[Coupling]) -> Result<Vec<String>, String> {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
-        let mut written = Vec::new();
-        let mut write = |name: String, text: String| -> Result<(), String> {
-            let path = dir.join(&name);
-            std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
-            written.push(path.display().to_string());
-            Ok(())
-        };
-        for (i, (v, c)) in self.variants.iter().zip(couplings).enumerate() {
-            let stem = Path::new(&v.scene)
-                .file_stem()
-                .map_or("scene".into(), |s| s.to_string_lossy().into_owned());
-            let mut t = String::from("index");
-            for name in &v.inputs {
-                let _ = write!(t, ",{name}");
-            }
-            for n in &v.output_names {
-                let _ = write!(t, ",{}", csv_field(n));
-            }
-            t.push('\n');
-            for r in &v.records {
-                let _ = write!(t, "{}", r.index);
-                for m in v.variation().sample(c, &r.inputs).physical {
-                    let _ = write!(t, ",{m:e}");
-                }
-                for o in &r.outputs {
-                    let _ = write!(t, ",{o:e}");
-                }
-                t.push('\n');
-            }
-            write(format!("samples_{:02}_{stem}.csv", i + 1), t)?;
-        }
-        let full: Vec<&VariantReport> = self
-            .variants
-            .iter()
-            .filter(|v| !v.partial && !v.points.is_empty())
-            .collect();
-        if full.is_empty() {
-            return Ok(written);
-        }
-        // Scene file stems are short and tell the variants apart.
-        let label = |_: usize, v: &VariantReport| {
-            Path::new(&v.scene).file_stem().map_or_else(
-                || truncate(&v.name, 30),
-                |s| s.to_string_lossy().into_owned(),
-            )
-        };
-        let sigmas: Vec<VariantSigma> = full
-            .iter()
-            .enumerate()
-            .map(|(i, v)| VariantSigma {
-                variant: label(i, v),
-                sigma: v.points[0].sigma.values(),
-            })
-            .collect();
-        let scatter: Vec<VariantScatter> = full
-            .iter()
-            .enumerate()
-            .map(|(i, v)| VariantScatter {
-                variant: label(i, v),
-                xy: v
-                    .records
-                    .iter()
-                    .map(|r| (r.outputs[0] * 1e9, r.outputs[1] * 1e9))
-                    .collect(),
-            })
-            .collect();
-        let mut conv = Vec::new();
-        for (i, v) in full.iter().enumerate() {
-            // One translation and one rotation per variant keeps the legend
-            // readable; x and phi_x stand for the others (the per-sample CSV
-            // has all five).
-            for (k, dof) in [(0, &Dof::X), (3, &Dof::PhiX)] {
-                let values: Vec<f64> = v.records.iter().map(|r| r.outputs[k] * 1e9).collect();
-                conv.push(ConvergenceSeries {
-                    variant: label(i, v),
-                    dof: *dof,
-                    points: sigma_convergence(&values).map_err(|e| e.to_string())?,
-                });
-            }
-        }
-        for (name, result) in [
-            (
-                "sigma_bars.svg",
-                plot_sigma_bars(&dir.join("sigma_bars.svg"), &sigmas),
-            ),
-            (
-                "scatter_xy.svg",
-                plot_xy_scatter(&dir.join("scatter_xy.svg"), &scatter),
-            ),
-            (
-                "sigma_convergence.svg",
-                plot_convergence(&dir.join("sigma_convergence.svg"), &conv),
-            ),
-        ] {
-            result.map_err(|e| format!("{}: {e}", dir.join(name).display()))?;
-            written.push(dir.join(name).display().to_string());
-        }
-        Ok(written)
-    }
 }
 
 /// The Table 2 style sigma table of `points(v)` for every variant.
@@ -580,7 +561,7 @@ fn sigma_table(
 ) {
     let _ = writeln!(
         s,
-        "{:<4}{:<46}{:<16}{:>5} {:>13} {:>13} {:>13} {:>17} {:>17}",
+        "{:<4}{:<46}{:<16}{:>5} {:>13} {:>13} {:>13} {:>17} {:>17} {:>17}",
         "#",
         "variant",
         "point",
@@ -589,7 +570,8 @@ fn sigma_table(
         "sigma_y [nm]",
         "sigma_z [nm]",
         "sigma_phi_x[nrad]",
-        "sigma_phi_y[nrad]"
+        "sigma_phi_y[nrad]",
+        "sigma_phi_z[nrad]"
     );
     for (i, v) in variants.iter().enumerate() {
         if v.partial {
@@ -609,7 +591,7 @@ fn sigma_table(
             let hi = p.sigma_ci90_high.values();
             let _ = writeln!(
                 s,
-                "{:<4}{:<46}{:<16}{:>5} {:>13.3} {:>13.3} {:>13.3} {:>17.2} {:>17.2}",
+                "{:<4}{:<46}{:<16}{:>5} {:>13.3} {:>13.3} {:>13.3} {:>17.2} {:>17.2} {:>17.2}",
                 i + 1,
                 truncate(&v.name, 45),
                 p.name,
@@ -618,9 +600,10 @@ fn sigma_table(
                 sg[1],
                 sg[2],
                 sg[3],
-                sg[4]
+                sg[4],
+                sg[5]
             );
-            let ci: Vec<String> = (0..5)
+            let ci: Vec<String> = (0..6)
                 .map(|k| {
                     let w = if k < 3 { 13 } else { 17 };
                     format!("{:>w$}", format!("[{:.2}, {:.2}]", lo[k], hi[k]))
@@ -645,6 +628,7 @@ fn detail(s: &mut String, points: &[PointStats]) {
             ("z [nm]", 2),
             ("phi_x [nrad]", 3),
             ("phi_y [nrad]", 4),
+            ("phi_z [nrad]", 5),
         ];
         for (label, k) in rows {
             let _ = writeln!(
@@ -662,9 +646,8 @@ fn detail(s: &mut String, points: &[PointStats]) {
     }
 }
 
-/// What varied, in words.
-fn varied(v: &VariantReport) -> String {
-    let var = v.variation();
+/// The `--vary` names of what a variation varies.
+pub fn varied_kinds(var: &Variation) -> Vec<&'static str> {
     let mut parts = Vec::new();
     if var.friction {
         parts.push("friction");
@@ -673,11 +656,17 @@ fn varied(v: &VariantReport) -> String {
         parts.push("preload");
     }
     if var.start.is_some() {
-        parts.push("start pose");
+        parts.push("start");
     }
     if var.tolerances {
         parts.push("tolerances");
     }
+    parts
+}
+
+/// What varied, in words.
+fn varied(v: &VariantReport) -> String {
+    let parts = varied_kinds(&v.variation());
     format!("{} ({} inputs)", parts.join(", "), v.inputs.len())
 }
 
@@ -748,8 +737,8 @@ fn sensitivity_table(s: &mut String, b: &SensitivityBlock) {
     );
     let _ = writeln!(
         s,
-        "  {:<22} {:>9} {:>9} {:>9} {:>9} {:>9}",
-        "input", "x", "y", "z", "phi_x", "phi_y"
+        "  {:<22} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
+        "input", "x", "y", "z", "phi_x", "phi_y", "phi_z"
     );
     let cell = |d: &sensitivity::DofSensitivity, j: usize| {
         d.share
@@ -788,7 +777,7 @@ fn sensitivity_table(s: &mut String, b: &SensitivityBlock) {
     }
 }
 
-fn truncate(s: &str, n: usize) -> String {
+pub(crate) fn truncate(s: &str, n: usize) -> String {
     if s.chars().count() <= n {
         s.to_string()
     } else {
@@ -796,7 +785,7 @@ fn truncate(s: &str, n: usize) -> String {
     }
 }
 
-fn csv_field(s: &str) -> String {
+pub(crate) fn csv_field(s: &str) -> String {
     if s.contains([',', '"', '\n']) {
         format!("\"{}\"", s.replace('"', "\"\""))
     } else {

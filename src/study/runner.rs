@@ -31,8 +31,11 @@ use nalgebra::{UnitQuaternion, Vector3};
 use crate::solve::dynamic::StartPose;
 use crate::solve::{Method, PointPose, SolveError, nominal_mu};
 
-/// Output components per evaluation point (relative to the nominal seating, SI).
-pub const COMPONENTS: [&str; 5] = ["x_m", "y_m", "z_m", "phi_x_rad", "phi_y_rad"];
+/// Output components per evaluation point (relative to the nominal seating,
+/// SI): translation of the point and rotation vector, phi_z being the
+/// clocking about z (evaluated since output schema 2; MODEL.md §2's "not
+/// evaluated" is superseded).
+pub const COMPONENTS: [&str; 6] = ["x_m", "y_m", "z_m", "phi_x_rad", "phi_y_rad", "phi_z_rad"];
 
 /// Bounds of a randomly drawn start pose of the moving half (dynamic solver).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -497,6 +500,15 @@ pub enum RunError {
         #[source]
         source: AssemblyError,
     },
+    #[error(
+        "{file}: the nominal seating (the reference of every sample; mu_s = {mu:?}, touching start) failed: {source}"
+    )]
+    Nominal {
+        file: String,
+        mu: Vec<f64>,
+        #[source]
+        source: SolveError,
+    },
     #[error("{file}: sample {index} (mu_s = {mu:?}): {source}")]
     Seating {
         file: String,
@@ -634,6 +646,72 @@ pub fn run_variant(
     })
 }
 
+/// True if friction moves the seated pose: the coupling seated from the
+/// touching pose with every mu_s at mu0 - spread and at mu0 + spread (and
+/// mu0 +- 10 % for a scene without spread) ends in different poses. False
+/// means every contact stuck from the first load increment: the coupling
+/// cannot seat, and a friction study gives zero scatter.
+pub fn friction_moves_pose(coupling: &Coupling, method: &Method) -> Result<bool, RunError> {
+    let f = &coupling.scene.friction;
+    let d = if f.spread > 0.0 {
+        f.spread
+    } else {
+        0.1 * f.mu_static
+    };
+    let n = coupling.contacts.len();
+    let mut poses = Vec::new();
+    for mu in [(f.mu_static - d).max(0.0), f.mu_static + d] {
+        let m = vec![mu; n];
+        let s = method
+            .seat(coupling, &m, &StartPose::touching())
+            .map_err(|source| RunError::Nominal {
+                file: coupling.scene.file.clone(),
+                mu: m,
+                source,
+            })?;
+        poses.push(s.pose);
+    }
+    let p = &coupling.scene.evaluation_points[0].position;
+    Ok(PointPose::between(&poses[0], &poses[1], p)
+        .components()
+        .iter()
+        .any(|c| *c != 0.0))
+}
+
+/// Run this shard's samples in chunks of `chunk` rows (rayon within a
+/// chunk), handing each chunk's records to `sink` in sample-index order:
+/// bounded memory for any sample count, and results that do not depend on
+/// the number of threads. Returns the design.
+pub fn run_chunked(
+    coupling: &Coupling,
+    opts: &StudyOptions,
+    chunk: usize,
+    tick: &(dyn Fn() + Sync),
+    sink: &mut dyn FnMut(Vec<SampleRecord>) -> Result<(), RunError>,
+) -> Result<DesignSpec, RunError> {
+    let file = coupling.scene.file.clone();
+    let design_err = |source| RunError::Design {
+        file: file.clone(),
+        source,
+    };
+    check_options(coupling, opts)?;
+    let design = design_for(coupling, opts).map_err(design_err)?;
+    let range = opts.shard.range(design.n).map_err(design_err)?;
+    let mut start = range.start;
+    while start < range.end {
+        let end = (start + chunk.max(1)).min(range.end);
+        let rows = design.range(start..end).map_err(design_err)?;
+        sink(evaluate_rows(
+            coupling,
+            opts,
+            (start..end).zip(rows).collect(),
+            tick,
+        )?)?;
+        start = end;
+    }
+    Ok(design)
+}
+
 /// Seat the coupling once per `(index, design row)` (rayon across rows)
 /// and record the outputs named by [`recorded_output_names`], relative to
 /// the nominal seating (nominal friction and preload, touching start, same
@@ -659,7 +737,11 @@ pub fn evaluate_rows(
     let nominal = opts
         .method
         .seat(coupling, &nominal_mu, &StartPose::touching())
-        .map_err(|e| seat_err(usize::MAX, &nominal_mu, e))?;
+        .map_err(|source| RunError::Nominal {
+            file: file.clone(),
+            mu: nominal_mu.clone(),
+            source,
+        })?;
     let points: Vec<_> = coupling
         .scene
         .evaluation_points
@@ -687,7 +769,7 @@ pub fn evaluate_rows(
                 outputs.extend(
                     points
                         .iter()
-                        .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).evaluated()),
+                        .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).components()),
                 );
             }
             if let Some(t) = &sample.tolerances {
@@ -703,7 +785,7 @@ pub fn evaluate_rows(
                 outputs.extend(
                     points
                         .iter()
-                        .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).evaluated()),
+                        .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).components()),
                 );
             }
             tick();
