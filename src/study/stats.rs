@@ -15,14 +15,17 @@
 
 pub mod bootstrap;
 pub mod convergence;
+pub mod interval;
 pub mod moments;
+pub mod quantile;
 pub mod records;
 
 use serde::{Deserialize, Serialize};
 
 use super::error::{Result, StudyError};
-pub use bootstrap::{BOOTSTRAP_SEED, BootstrapConfig, Interval, bootstrap_sigma};
+pub use bootstrap::{BOOTSTRAP_SEED, BootstrapConfig, bootstrap_sigma};
 pub use convergence::{ConvergencePoint, sigma_convergence};
+pub use interval::{Interval, sigma_interval_from_moments, sigma_interval_iid, sigma_replicated};
 pub use moments::Moments;
 pub use records::{MergedStudy, SampleRecord, ShardFile, merge, verify_inputs};
 
