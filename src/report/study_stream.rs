@@ -12,22 +12,12 @@
 
 use crate::report::study::{Dofs, PointStats};
 use crate::study::runner::{COMPONENTS, INTERCHANGE_PREFIX};
-use crate::study::stats::{Interval, Moments, SampleRecord};
+use crate::study::stats::{Moments, SampleRecord, sigma_interval_from_moments};
 use crate::study::{DesignSpec, Sampler, StudyError};
 
 /// Monte Carlo studies of more samples than this are summarised from
 /// streaming moments and keep no records in memory.
 pub const STREAM_ABOVE: usize = 100_000;
-
-/// Bonett's interval of sigma from the moments: provided by
-/// `study::stats::sigma_interval_from_moments` (branch `stats`); until that
-/// is merged a streamed study stops with this error rather than print an
-/// interval it cannot justify.
-fn sigma_interval_from_moments(_m: &Moments, _level: f64) -> Result<Interval, StudyError> {
-    Err(StudyError::InvalidParameter(
-        "the interval of sigma of a streamed study needs study::stats::sigma_interval_from_moments (not merged yet)".into(),
-    ))
-}
 
 /// Level of the printed interval of sigma.
 const LEVEL: f64 = 0.90;
