@@ -105,6 +105,10 @@ impl StudyRecord {
 pub struct VariantReport {
     /// The settings this variant's numbers depend on (`merge` compares them).
     pub fingerprint: Fingerprint,
+    /// True if the statistics come from streaming moments (Monte Carlo above
+    /// `study_stream::STREAM_ABOVE` samples; see docs/output.md).
+    #[serde(default)]
+    pub streamed: bool,
     /// Set when the coupling could not seat (nothing slid): the reason.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cannot_seat: Option<String>,
@@ -359,6 +363,7 @@ impl VariantReport {
             .collect();
         VariantReport {
             fingerprint: Fingerprint::new(coupling, opts, &run.design),
+            streamed: false,
             cannot_seat: None,
             scene: coupling.scene.file.clone(),
             name: coupling.scene.name.clone(),
@@ -409,6 +414,7 @@ impl VariantReport {
     pub fn set_moment_stats(&mut self, st: &StreamStats) -> Result<(), StudyError> {
         (self.points, self.interchangeability) =
             split_moment_stats(&self.output_names, &st.moments)?;
+        self.streamed = true;
         self.cannot_seat = zero_scatter(&self.points);
         Ok(())
     }
@@ -529,6 +535,13 @@ impl StudyReport {
                 v.dynamic_ratio
             );
             let _ = writeln!(s, "  varied: {}", varied(v));
+            if v.streamed {
+                let _ = writeln!(
+                    s,
+                    "  streamed: statistics from one-pass moments in sample order (no records kept); interval of sigma: {}",
+                    crate::study::stats::interval::METHOD_BONETT
+                );
+            }
             if let Some(b) = &v.variation_bounds {
                 let _ = writeln!(s, "  [variation] bounds: {}", bounds_text(b));
             }
