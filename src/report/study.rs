@@ -1,5 +1,7 @@
-//! Study results: the JSON document (SI records plus nm/nrad statistics),
-//! the Table 2 style text table, CSV, shard merging and the files of `--out`.
+//! Study results: the JSON document (SI records plus nm/nrad statistics,
+//! docs/output.md) and the Table 2 style text table. The CSV and the files
+//! of `--out` are in `study_files`, shard merging in `merge`, table helpers
+//! in `study_text`, result checks in `study_checks`.
 
 use std::fmt::Write;
 
@@ -7,7 +9,12 @@ use serde::{Deserialize, Serialize};
 
 use crate::assembly::Coupling;
 use crate::report::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, produced_by};
-use crate::report::study_stream::{StreamStats, check_record, split_moment_stats, streams};
+use crate::report::study_checks::{check_finite_records, zero_scatter};
+pub use crate::report::study_record::{Dofs, StudyRecord};
+use crate::report::study_stream::{StreamStats, split_moment_stats, streams};
+pub use crate::report::study_text::varied_kinds;
+use crate::report::study_text::{bounds_text, detail, sigma_table, varied};
+pub(crate) use crate::report::study_text::{csv_field, truncate};
 use crate::scene::VariationBounds;
 use crate::study::runner::{
     COMPONENTS, INTERCHANGE_PREFIX, StartBounds, StudyOptions, VariantRun, Variation,
@@ -15,44 +22,6 @@ use crate::study::runner::{
 use crate::study::sensitivity::{self, SensitivityBlock};
 use crate::study::stats::{BootstrapConfig, SampleRecord, Summary, summarize_outputs};
 use crate::study::{DesignSpec, Sampler, Shard, StudyError};
-
-/// Six DOFs in human units: x, y, z [nm], phi_x, phi_y, phi_z [nrad]
-/// (phi_z: clocking about z).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct Dofs {
-    pub x_nm: f64,
-    pub y_nm: f64,
-    pub z_nm: f64,
-    pub phi_x_nrad: f64,
-    pub phi_y_nrad: f64,
-    pub phi_z_nrad: f64,
-}
-
-impl Dofs {
-    /// From six SI values (m, m, m, rad, rad, rad).
-    pub fn from_si(v: [f64; 6]) -> Self {
-        Dofs {
-            x_nm: v[0] * 1e9,
-            y_nm: v[1] * 1e9,
-            z_nm: v[2] * 1e9,
-            phi_x_nrad: v[3] * 1e9,
-            phi_y_nrad: v[4] * 1e9,
-            phi_z_nrad: v[5] * 1e9,
-        }
-    }
-
-    /// The six values in nm and nrad, in the order of `COMPONENTS`.
-    pub fn values(&self) -> [f64; 6] {
-        [
-            self.x_nm,
-            self.y_nm,
-            self.z_nm,
-            self.phi_x_nrad,
-            self.phi_y_nrad,
-            self.phi_z_nrad,
-        ]
-    }
-}
 
 /// Statistics of one evaluation point over the samples (relative to the
 /// nominal-mu pose; sigma with divisor n - 1).
@@ -69,35 +38,6 @@ pub struct PointStats {
     pub mean: Dofs,
     pub min: Dofs,
     pub max: Dofs,
-}
-
-/// One sample of a study as written to JSON: the physical values of the
-/// varied inputs (SI), the design coordinates in [0, 1] and the outputs (SI).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct StudyRecord {
-    /// Row of the design, 0-based.
-    pub index: usize,
-    /// Physical input values in the order of the variant's `inputs`: mu_s
-    /// per contact (dimensionless), offsets [m], tilts [rad].
-    #[serde(rename = "inputs_si")]
-    pub physical: Vec<f64>,
-    /// Design coordinates of this row (unit hypercube, before mapping).
-    #[serde(rename = "design_u")]
-    pub inputs: Vec<f64>,
-    /// One value per `output_names` entry [m or rad].
-    #[serde(rename = "outputs_si")]
-    pub outputs: Vec<f64>,
-}
-
-impl StudyRecord {
-    /// The statistics' view of this record (design coordinates and outputs).
-    pub fn sample(&self) -> SampleRecord {
-        SampleRecord {
-            index: self.index,
-            inputs: self.inputs.clone(),
-            outputs: self.outputs.clone(),
-        }
-    }
 }
 
 /// One scene's study.
@@ -225,46 +165,6 @@ fn split_stats(
             point_stats(&names, &recs)
         };
     Ok((part(0..k, false)?, part(k..output_names.len(), true)?))
-}
-
-/// Every output finite, and no column so large that its sum of squares
-/// overflows (that would make sigma NaN): otherwise an error naming the
-/// sample.
-fn check_finite_records(records: &[StudyRecord], names: &[String]) -> Result<(), StudyError> {
-    for r in records {
-        check_record(r.index, &r.outputs, names)?;
-    }
-    let n = records.len() as f64;
-    for (k, name) in names.iter().enumerate() {
-        let worst = records
-            .iter()
-            .max_by(|a, b| a.outputs[k].abs().total_cmp(&b.outputs[k].abs()));
-        if let Some(r) = worst
-            && !(r.outputs[k] * r.outputs[k] * n).is_finite()
-        {
-            return Err(StudyError::NonFinite {
-                what: format!(
-                    "sample {}: output {} = {:e} overflows the variance",
-                    r.index, name, r.outputs[k]
-                ),
-            });
-        }
-    }
-    Ok(())
-}
-
-/// The reason a study's coupling did not seat: every re-seating sigma is
-/// exactly zero, i.e. every sample stopped at the nominal pose and nothing
-/// slid (above the friction limit every contact sticks from the first
-/// load increment).
-fn zero_scatter(points: &[PointStats]) -> Option<String> {
-    let zero = !points.is_empty()
-        && points
-            .iter()
-            .all(|p| p.sigma.values().iter().all(|s| *s == 0.0));
-    zero.then(|| {
-        "zero scatter: every sample seated at exactly the nominal pose, nothing slid; the coupling cannot seat (friction at or above its seating limit, see `kinrepro check`)".to_string()
-    })
 }
 
 /// True for the names of tolerance inputs.
@@ -402,7 +302,7 @@ impl VariantReport {
         } else {
             (self.points, self.interchangeability) =
                 split_stats(&self.output_names, &self.records)?;
-            self.cannot_seat = zero_scatter(&self.points);
+            self.cannot_seat = self.zero_scatter();
         }
         if self.sensitivity.is_some() {
             self.sensitivity = Some(sensitivity_blocks(self));
@@ -415,8 +315,21 @@ impl VariantReport {
         (self.points, self.interchangeability) =
             split_moment_stats(&self.output_names, &st.moments)?;
         self.streamed = true;
-        self.cannot_seat = zero_scatter(&self.points);
+        self.cannot_seat = self.zero_scatter();
         Ok(())
+    }
+
+    /// The reason the coupling did not seat, if every re-seating sigma is
+    /// exactly zero although the inputs vary (friction with a spread, or
+    /// anything else): every sample stopped at the nominal pose.
+    fn zero_scatter(&self) -> Option<String> {
+        let var = self.variation();
+        let varies = (var.friction && self.spread > 0.0) || var.preload || var.start.is_some();
+        if varies {
+            zero_scatter(&self.points)
+        } else {
+            None
+        }
     }
 
     /// The variation this study used (to map design rows to inputs).
@@ -566,172 +479,6 @@ impl StudyReport {
     }
 }
 
-/// The Table 2 style sigma table of `points(v)` for every variant.
-fn sigma_table(
-    s: &mut String,
-    variants: &[VariantReport],
-    points: impl Fn(&VariantReport) -> &Vec<PointStats>,
-) {
-    let _ = writeln!(
-        s,
-        "{:<4}{:<46}{:<16}{:>5} {:>13} {:>13} {:>13} {:>17} {:>17} {:>17}",
-        "#",
-        "variant",
-        "point",
-        "n",
-        "sigma_x [nm]",
-        "sigma_y [nm]",
-        "sigma_z [nm]",
-        "sigma_phi_x[nrad]",
-        "sigma_phi_y[nrad]",
-        "sigma_phi_z[nrad]"
-    );
-    for (i, v) in variants.iter().enumerate() {
-        if v.partial {
-            let _ = writeln!(
-                s,
-                "{:<4}{:<46}(shard {} of {} samples: run `kinrepro merge` for statistics)",
-                i + 1,
-                v.name,
-                v.shard,
-                v.samples
-            );
-            continue;
-        }
-        for p in points(v) {
-            let sg = p.sigma.values();
-            let lo = p.sigma_ci90_low.values();
-            let hi = p.sigma_ci90_high.values();
-            let _ = writeln!(
-                s,
-                "{:<4}{:<46}{:<16}{:>5} {:>13.3} {:>13.3} {:>13.3} {:>17.2} {:>17.2} {:>17.2}",
-                i + 1,
-                truncate(&v.name, 45),
-                p.name,
-                p.n,
-                sg[0],
-                sg[1],
-                sg[2],
-                sg[3],
-                sg[4],
-                sg[5]
-            );
-            let ci: Vec<String> = (0..6)
-                .map(|k| {
-                    let w = if k < 3 { 13 } else { 17 };
-                    format!("{:>w$}", format!("[{:.2}, {:.2}]", lo[k], hi[k]))
-                })
-                .collect();
-            let _ = writeln!(s, "{:<71}{}", "", ci.join(" "));
-        }
-    }
-}
-
-/// Mean, min, max, sigma and 3 sigma of every DOF of each point.
-fn detail(s: &mut String, points: &[PointStats]) {
-    for p in points {
-        let _ = writeln!(
-            s,
-            "  {:<16} {:<10} {:>12} {:>12} {:>12} {:>12} {:>12}",
-            p.name, "", "mean", "min", "max", "sigma", "+-3 sigma"
-        );
-        let rows = [
-            ("x [nm]", 0),
-            ("y [nm]", 1),
-            ("z [nm]", 2),
-            ("phi_x [nrad]", 3),
-            ("phi_y [nrad]", 4),
-            ("phi_z [nrad]", 5),
-        ];
-        for (label, k) in rows {
-            let _ = writeln!(
-                s,
-                "  {:<16} {:<10} {:>12.3} {:>12.3} {:>12.3} {:>12.3} {:>12.3}",
-                "",
-                label,
-                p.mean.values()[k],
-                p.min.values()[k],
-                p.max.values()[k],
-                p.sigma.values()[k],
-                p.three_sigma.values()[k]
-            );
-        }
-    }
-}
-
-/// The `--vary` names of what a variation varies.
-pub fn varied_kinds(var: &Variation) -> Vec<&'static str> {
-    let mut parts = Vec::new();
-    if var.friction {
-        parts.push("friction");
-    }
-    if var.preload {
-        parts.push("preload");
-    }
-    if var.start.is_some() {
-        parts.push("start");
-    }
-    if var.tolerances {
-        parts.push("tolerances");
-    }
-    parts
-}
-
-/// What varied, in words.
-fn varied(v: &VariantReport) -> String {
-    let parts = varied_kinds(&v.variation());
-    format!("{} ({} inputs)", parts.join(", "), v.inputs.len())
-}
-
-/// The non-zero `[variation]` bounds, in um and mrad.
-fn bounds_text(b: &VariationBounds) -> String {
-    let um = |x: f64| format!("{}", x * 1e6);
-    let mut parts = Vec::new();
-    if b.preload_offset_m.iter().any(|x| *x > 0.0) {
-        parts.push(format!(
-            "preload offset +-{}, +-{} um",
-            um(b.preload_offset_m[0]),
-            um(b.preload_offset_m[1])
-        ));
-    }
-    if b.preload_tilt_rad > 0.0 {
-        parts.push(format!(
-            "preload tilt +-{} mrad per axis",
-            b.preload_tilt_rad * 1e3
-        ));
-    }
-    if b.ball_diameter_m > 0.0 {
-        parts.push(format!("ball diameter +-{} um", um(b.ball_diameter_m)));
-    }
-    if b.ball_position_m.iter().any(|x| *x > 0.0) {
-        let p = b.ball_position_m;
-        parts.push(format!(
-            "ball position +-{}, +-{}, +-{} um",
-            um(p[0]),
-            um(p[1]),
-            um(p[2])
-        ));
-    }
-    if b.surface_normal_m > 0.0 {
-        parts.push(format!("surface normal +-{} um", um(b.surface_normal_m)));
-    }
-    if b.surface_tilt_rad > 0.0 {
-        parts.push(format!("surface tilt +-{} mrad", b.surface_tilt_rad * 1e3));
-    }
-    if b.groove_position_m.iter().any(|x| *x > 0.0) {
-        parts.push(format!(
-            "groove position +-{}, +-{} um",
-            um(b.groove_position_m[0]),
-            um(b.groove_position_m[1])
-        ));
-    }
-    if parts.is_empty() {
-        "none".to_string()
-    } else {
-        parts.join("; ")
-    }
-}
-
 /// One SRC table: inputs down, DOFs across.
 fn sensitivity_table(s: &mut String, b: &SensitivityBlock) {
     let point = b
@@ -787,21 +534,5 @@ fn sensitivity_table(s: &mut String, b: &SensitivityBlock) {
         if let Some(n) = &d.note {
             let _ = writeln!(s, "  note, {}: {n}", d.output);
         }
-    }
-}
-
-pub(crate) fn truncate(s: &str, n: usize) -> String {
-    if s.chars().count() <= n {
-        s.to_string()
-    } else {
-        s.chars().take(n - 1).collect::<String>() + "…"
-    }
-}
-
-pub(crate) fn csv_field(s: &str) -> String {
-    if s.contains([',', '"', '\n']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
     }
 }
