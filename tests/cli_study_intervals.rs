@@ -84,7 +84,20 @@ fn corners_have_no_interval() {
     let (ok, table, _) = kinrepro(&["study", &s1(), "--sampler", "corners"]);
     assert!(ok && table.contains("(no interval: none (corner design"));
     let (ok, csv, _) = kinrepro(&["study", &s1(), "--sampler", "corners", "--format", "csv"]);
-    assert!(ok && csv.lines().nth(1).unwrap().ends_with(",,"), "{csv}");
+    // The two interval columns (the last but one and two) are empty; the
+    // method column says why.
+    assert!(ok, "{csv}");
+    assert!(
+        csv.lines()
+            .next()
+            .unwrap()
+            .ends_with("sigma_ci90_low,sigma_ci90_high,sigma_interval_method")
+    );
+    let row = csv.lines().nth(1).unwrap();
+    assert!(
+        row.ends_with(",,,\"none (corner design: deterministic, not a sample)\""),
+        "{row}"
+    );
 }
 
 #[test]

@@ -27,15 +27,15 @@ fn variants() -> Vec<VariantSigma> {
     vec![
         VariantSigma {
             variant: "three-groove".into(),
-            sigma: [12.0, 9.5, 3.1, 40.0, 35.0],
+            sigma: [12.0, 9.5, 3.1, 40.0, 35.0, 20.0],
         },
         VariantSigma {
             variant: "tetrahedron-groove-flat".into(),
-            sigma: [20.0, 14.0, 5.0, 55.0, 61.0],
+            sigma: [20.0, 14.0, 5.0, 55.0, 61.0, 30.0],
         },
         VariantSigma {
             variant: "coated".into(),
-            sigma: [4.0, 3.0, 1.0, 12.0, 10.0],
+            sigma: [4.0, 3.0, 1.0, 12.0, 10.0, 5.0],
         },
     ]
 }

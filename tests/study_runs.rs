@@ -152,8 +152,16 @@ fn table_csv_and_plots_are_written() {
     }
     let samples =
         std::fs::read_to_string(dir.join("samples_01_01_maxwell_vgroove_steel.csv")).unwrap();
-    assert_eq!(samples.lines().count(), 26);
-    assert!(samples.starts_with("index,mu_1,mu_2,mu_3,mu_4,mu_5,mu_6,centre/x_m"));
+    // A provenance comment line, the header, 25 samples.
+    assert_eq!(samples.lines().count(), 27);
+    assert!(samples.starts_with("# kinrepro "));
+    assert!(
+        samples
+            .lines()
+            .nth(1)
+            .unwrap()
+            .starts_with("index,mu_1,mu_2,mu_3,mu_4,mu_5,mu_6,centre/x_m")
+    );
     let (ok, csv, _) = kinrepro(&[
         "study",
         s1.to_str().unwrap(),
@@ -163,7 +171,7 @@ fn table_csv_and_plots_are_written() {
         "8",
     ]);
     assert!(ok);
-    assert_eq!(csv.lines().count(), 1 + 5);
+    assert_eq!(csv.lines().count(), 1 + 6);
     // The corners design has 2^6 samples, each mu at mu0 +- spread.
     let (ok, json, _) = kinrepro(&[
         "study",

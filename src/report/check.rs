@@ -7,6 +7,27 @@ use crate::assembly::constraint::{analyse, friction_limit, frictionless_preload_
 use crate::contact::stress::contact_stress;
 use crate::report::run::factor;
 
+/// What the friction limit means for this scene, given whether friction
+/// moves the seated pose from the touching pose (`friction_moves`, see
+/// `study::runner::friction_moves_pose`); empty below the limit.
+pub fn seating_note(c: &Coupling, friction_moves: bool) -> String {
+    let f = &c.scene.friction;
+    let mu_max = f.mu_static + f.spread;
+    let limit = friction_limit(c).mu_limit;
+    if !friction_moves {
+        return format!(
+            "  CANNOT SEAT: with mu_s = {} +- {} every contact sticks from the first load increment: the seated pose does not depend on friction, the coupling does not centre, and a study reports zero scatter (and exits non-zero)\n",
+            f.mu_static, f.spread
+        );
+    }
+    if mu_max < limit {
+        return String::new();
+    }
+    format!(
+        "  WARNING: mu_static + spread = {mu_max:.3} is above the friction limit {limit:.4}: seating from the touching pose (as `study` does) is unaffected, but a half that arrives off-centre (one contact still open) may stick off its seat instead of centring\n"
+    )
+}
+
 /// Summary of one assembled scene: contacts, constraint status, friction limit.
 pub fn check_summary(c: &Coupling) -> String {
     let s = &c.scene;
@@ -15,7 +36,6 @@ pub fn check_summary(c: &Coupling) -> String {
     let report = analyse(c);
     let _ = writeln!(out, "  constraint: {}", report.describe());
     let limit = friction_limit(c);
-    let mu_max = s.friction.mu_static + s.friction.spread;
     let limit_text = if limit.mu_limit.is_finite() {
         format!(
             "mu < {:.4} (contact {} is the first that can stay open; polyhedral cone: true limit within -{:.2} %)",
@@ -27,12 +47,6 @@ pub fn check_summary(c: &Coupling) -> String {
         "none below mu = 10".to_string()
     };
     let _ = writeln!(out, "  friction limit for seating: {limit_text}");
-    if mu_max >= limit.mu_limit {
-        let _ = writeln!(
-            out,
-            "  WARNING: mu_static + spread = {mu_max:.3} reaches the friction limit: the preload may not centre the coupling"
-        );
-    }
     let _ = writeln!(
         out,
         "  preload: {:.4} N along ({:.3}, {:.3}, {:.3}) at ({:.4}, {:.4}, {:.4}) m; mu_s = {} +- {} (uniform), mu_d/mu_s = {}, {:?} tangential law",

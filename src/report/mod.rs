@@ -2,11 +2,19 @@
 //! the library's result types; nothing here computes physics.
 
 pub mod analysis;
+pub mod atomic;
 pub mod check;
 pub mod contact;
+pub mod merge;
+pub mod provenance;
 pub mod run;
 pub mod safety;
 pub mod sensitivity;
 pub mod study;
+pub mod study_checks;
+pub mod study_files;
+pub mod study_record;
+pub mod study_stream;
+pub mod study_text;
 pub mod trace;
 pub mod validate_hertz;

@@ -1,60 +1,28 @@
-//! Study results: the JSON document (SI records plus nm/nrad statistics),
-//! the Table 2 style text table, CSV, shard merging and the files of `--out`.
+//! Study results: the JSON document (SI records plus nm/nrad statistics,
+//! docs/output.md) and the Table 2 style text table. The CSV and the files
+//! of `--out` are in `study_files`, shard merging in `merge`, table helpers
+//! in `study_text`, result checks in `study_checks`.
 
 use std::fmt::Write;
-use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
 use crate::assembly::Coupling;
 use crate::contact::FrictionLaw;
+use crate::report::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, produced_by};
+use crate::report::study_checks::{check_finite_records, zero_scatter};
+pub use crate::report::study_record::{Dofs, StudyRecord};
+use crate::report::study_stream::{StreamStats, split_moment_stats, streams};
+pub use crate::report::study_text::varied_kinds;
+use crate::report::study_text::{bounds_text, detail, sigma_table, varied};
+pub(crate) use crate::report::study_text::{csv_field, truncate};
 use crate::scene::{DEFAULT_RAMP_TIME, VariationBounds};
-use crate::study::plot::{
-    ConvergenceSeries, Dof, VariantScatter, VariantSigma, plot_convergence, plot_sigma_bars,
-    plot_xy_scatter,
-};
 use crate::study::runner::{
     COMPONENTS, INTERCHANGE_PREFIX, StartBounds, StudyOptions, VariantRun, Variation,
 };
 use crate::study::sensitivity::{self, SensitivityBlock};
-use crate::study::stats::{
-    SampleRecord, ShardFile, SigmaMethod, Summary, merge, sigma_convergence, summarize_outputs,
-    verify_inputs,
-};
+use crate::study::stats::{SampleRecord, SigmaMethod, Summary, summarize_outputs};
 use crate::study::{DesignSpec, Sampler, Shard, StudyError};
-
-/// Five DOFs in human units: x, y, z [nm], phi_x, phi_y [nrad].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct Dofs {
-    pub x_nm: f64,
-    pub y_nm: f64,
-    pub z_nm: f64,
-    pub phi_x_nrad: f64,
-    pub phi_y_nrad: f64,
-}
-
-impl Dofs {
-    /// From five SI values (m, m, m, rad, rad).
-    fn from_si(v: [f64; 5]) -> Self {
-        Dofs {
-            x_nm: v[0] * 1e9,
-            y_nm: v[1] * 1e9,
-            z_nm: v[2] * 1e9,
-            phi_x_nrad: v[3] * 1e9,
-            phi_y_nrad: v[4] * 1e9,
-        }
-    }
-
-    pub fn values(&self) -> [f64; 5] {
-        [
-            self.x_nm,
-            self.y_nm,
-            self.z_nm,
-            self.phi_x_nrad,
-            self.phi_y_nrad,
-        ]
-    }
-}
 
 /// Statistics of one evaluation point over the samples (relative to the
 /// nominal-mu pose; sigma with divisor n - 1).
@@ -80,6 +48,15 @@ pub struct PointStats {
 /// One scene's study.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct VariantReport {
+    /// The settings this variant's numbers depend on (`merge` compares them).
+    pub fingerprint: Fingerprint,
+    /// True if the statistics come from streaming moments (Monte Carlo above
+    /// `study_stream::STREAM_ABOVE` samples; see docs/output.md).
+    #[serde(default)]
+    pub streamed: bool,
+    /// Set when the coupling could not seat (nothing slid): the reason.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cannot_seat: Option<String>,
     pub scene: String,
     pub name: String,
     /// Samples in the whole design.
@@ -123,17 +100,33 @@ pub struct VariantReport {
     pub sensitivity: Option<Vec<SensitivityBlock>>,
     pub design: DesignSpec,
     pub shard: Shard,
+    /// `point/component` of every output, unit as suffix (`_m`, `_rad`).
     pub output_names: Vec<String>,
-    /// Per sample: index, design row in [0, 1]^6, outputs in SI (see output_names).
-    pub records: Vec<SampleRecord>,
+    /// Per sample: index, physical inputs (SI), design row, outputs (SI).
+    pub records: Vec<StudyRecord>,
 }
 
 /// The whole study document (`--format json`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct StudyReport {
-    /// The seed and sampler of every variant (null if the variants differ).
+    /// Version of this document's layout (docs/output.md); 0: written before
+    /// schema versions existed.
+    #[serde(default)]
+    pub schema_version: u32,
+    /// The kinrepro that wrote it.
+    #[serde(default)]
+    pub kinrepro_version: String,
+    /// Solver, seed, sampler and sample count of every variant (null if the
+    /// variants differ).
+    #[serde(default)]
+    pub solver: Option<String>,
     pub seed: Option<u64>,
     pub sampler: Option<Sampler>,
+    #[serde(default)]
+    pub samples: Option<usize>,
+    /// What varied (friction, preload, start, tolerances).
+    #[serde(default)]
+    pub vary: Vec<String>,
     pub shard: Shard,
     pub variants: Vec<VariantReport>,
 }
@@ -152,7 +145,7 @@ fn point_names(output_names: &[String]) -> Vec<String> {
 /// Statistics of the re-seating and of the interchangeability outputs.
 fn split_stats(
     output_names: &[String],
-    records: &[SampleRecord],
+    records: &[StudyRecord],
     method: SigmaMethod,
 ) -> Result<(Vec<PointStats>, Vec<PointStats>), StudyError> {
     let k = output_names
@@ -236,13 +229,7 @@ fn point_stats(
 ) -> Result<Vec<PointStats>, StudyError> {
     let summaries = summarize_outputs(records, method)?;
     let pick = |chunk: &[Summary], f: &dyn Fn(&Summary) -> f64| {
-        Dofs::from_si([
-            f(&chunk[0]),
-            f(&chunk[1]),
-            f(&chunk[2]),
-            f(&chunk[3]),
-            f(&chunk[4]),
-        ])
+        Dofs::from_si(std::array::from_fn(|k| f(&chunk[k])))
     };
     Ok(point_names(output_names)
         .into_iter()
@@ -275,9 +262,32 @@ impl VariantReport {
         run: VariantRun,
         opts: &StudyOptions,
     ) -> Result<Self, StudyError> {
+        let mut v = Self::unfinished(coupling, run, opts);
+        if !v.partial {
+            v.finish()?;
+        }
+        Ok(v)
+    }
+
+    /// The report of a run without its statistics (a streamed study sets
+    /// them with [`VariantReport::set_moment_stats`]).
+    pub fn unfinished(coupling: &Coupling, run: VariantRun, opts: &StudyOptions) -> Self {
         let f = &coupling.scene.friction;
         let var = &opts.variation;
-        let mut v = VariantReport {
+        let records = run
+            .records
+            .into_iter()
+            .map(|r| StudyRecord {
+                index: r.index,
+                physical: var.sample(coupling, &r.inputs).physical,
+                inputs: r.inputs,
+                outputs: r.outputs,
+            })
+            .collect();
+        VariantReport {
+            fingerprint: Fingerprint::new(coupling, opts, &run.design),
+            streamed: false,
+            cannot_seat: None,
             scene: coupling.scene.file.clone(),
             name: coupling.scene.name.clone(),
             samples: run.design.n,
@@ -299,25 +309,53 @@ impl VariantReport {
             design: run.design,
             shard: run.shard,
             output_names: run.output_names,
-            records: run.records,
-        };
-        if !v.partial {
-            v.finish()?;
+            records,
         }
-        Ok(v)
     }
 }
 
 impl VariantReport {
     /// Statistics (and sensitivity, if asked for) from the records.
-    fn finish(&mut self) -> Result<(), StudyError> {
-        let method = SigmaMethod::for_design(&self.design);
-        (self.points, self.interchangeability) =
-            split_stats(&self.output_names, &self.records, method)?;
+    pub(crate) fn finish(&mut self) -> Result<(), StudyError> {
+        check_finite_records(&self.records, &self.output_names)?;
+        if streams(&self.design) {
+            let mut st = StreamStats::new(self.output_names.len());
+            for r in &self.records {
+                st.push(std::slice::from_ref(&r.sample()), &self.output_names)?;
+            }
+            self.set_moment_stats(&st)?;
+        } else {
+            let method = SigmaMethod::for_design(&self.design);
+            (self.points, self.interchangeability) =
+                split_stats(&self.output_names, &self.records, method)?;
+            self.cannot_seat = self.zero_scatter();
+        }
         if self.sensitivity.is_some() {
             self.sensitivity = Some(sensitivity_blocks(self));
         }
         Ok(())
+    }
+
+    /// Statistics of a streamed study from its moments.
+    pub fn set_moment_stats(&mut self, st: &StreamStats) -> Result<(), StudyError> {
+        (self.points, self.interchangeability) =
+            split_moment_stats(&self.output_names, &st.moments)?;
+        self.streamed = true;
+        self.cannot_seat = self.zero_scatter();
+        Ok(())
+    }
+
+    /// The reason the coupling did not seat, if every re-seating sigma is
+    /// exactly zero although the inputs vary (friction with a spread, or
+    /// anything else): every sample stopped at the nominal pose.
+    fn zero_scatter(&self) -> Option<String> {
+        let var = self.variation();
+        let varies = (var.friction && self.spread > 0.0) || var.preload || var.start.is_some();
+        if varies {
+            zero_scatter(&self.points)
+        } else {
+            None
+        }
     }
 
     /// The variation this study used (to map design rows to inputs).
@@ -336,62 +374,64 @@ impl VariantReport {
 
 impl StudyReport {
     pub fn new(variants: Vec<VariantReport>, shard: Shard) -> Self {
-        let same = |f: &dyn Fn(&VariantReport) -> String| {
-            variants.windows(2).all(|w| f(&w[0]) == f(&w[1]))
+        let common = |f: &dyn Fn(&VariantReport) -> String| {
+            let first = variants.first().map(f)?;
+            variants.iter().all(|v| f(v) == first).then_some(())
         };
-        let seed =
-            (!variants.is_empty() && same(&|v| v.seed.to_string())).then(|| variants[0].seed);
-        let sampler =
-            (!variants.is_empty() && same(&|v| v.sampler.to_string())).then(|| variants[0].sampler);
+        let v0 = variants.first();
+        let seed = common(&|v| v.seed.to_string()).and(v0.map(|v| v.seed));
+        let sampler = common(&|v| v.sampler.to_string()).and(v0.map(|v| v.sampler));
+        let solver = common(&|v| v.solver.clone()).and(v0.map(|v| v.solver.clone()));
+        let samples = common(&|v| v.samples.to_string()).and(v0.map(|v| v.samples));
+        let mut vary: Vec<String> = Vec::new();
+        for v in &variants {
+            for k in varied_kinds(&v.variation()) {
+                if !vary.iter().any(|x| x == k) {
+                    vary.push(k.to_string());
+                }
+            }
+        }
         StudyReport {
+            schema_version: SCHEMA_VERSION,
+            kinrepro_version: VERSION.to_string(),
+            solver,
             seed,
             sampler,
+            samples,
+            vary,
             shard,
             variants,
         }
     }
 
-    /// Merge shard documents (any order) into the document of one full run.
-    pub fn merge(parts: Vec<StudyReport>) -> Result<StudyReport, StudyError> {
-        let first = parts.first().ok_or(StudyError::EmptyMerge)?;
-        let mut variants = Vec::new();
-        for proto in &first.variants {
-            let files: Vec<ShardFile> = parts
-                .iter()
-                .flat_map(|p| p.variants.iter())
-                .filter(|v| v.scene == proto.scene && v.design == proto.design)
-                .map(|v| ShardFile {
-                    design: v.design,
-                    shard: v.shard,
-                    output_names: v.output_names.clone(),
-                    records: v.records.clone(),
-                })
-                .collect();
-            let merged = merge(files)?;
-            verify_inputs(&merged)?;
-            let mut v = proto.clone();
-            v.partial = false;
-            v.shard = Shard::whole();
-            v.records = merged.records;
-            v.finish()?;
-            variants.push(v);
-        }
-        Ok(StudyReport::new(variants, Shard::whole()))
+    /// The line naming what produced this document.
+    pub fn produced_by(&self) -> String {
+        let or_scene = |x: Option<String>| x.unwrap_or_else(|| "per scene".to_string());
+        produced_by(
+            &or_scene(self.solver.clone()),
+            &or_scene(self.sampler.map(|x| x.to_string())),
+            &or_scene(self.seed.map(|x| x.to_string())),
+            &or_scene(self.samples.map(|x| x.to_string())),
+            &self.vary.join("+"),
+        )
+    }
+
+    /// Variants whose coupling could not seat, with the reason.
+    pub fn cannot_seat(&self) -> Vec<String> {
+        self.variants
+            .iter()
+            .filter_map(|v| v.cannot_seat.as_ref().map(|r| format!("{}: {r}", v.scene)))
+            .collect()
     }
 
     /// The text table: the variants side by side as in the paper's Table 2,
     /// then the full statistics of each variant.
     pub fn table(&self) -> String {
         let mut s = String::new();
-        let sampler = self
-            .sampler
-            .map_or("per scene".to_string(), |x| x.to_string());
-        let seed = self.seed.map_or("per scene".to_string(), |x| x.to_string());
-        let _ = writeln!(
-            s,
-            "kinrepro study: sampler {sampler}, seed {seed}, shard {}",
-            self.shard
-        );
+        let _ = writeln!(s, "{}, shard {}", self.produced_by(), self.shard);
+        for w in self.cannot_seat() {
+            let _ = writeln!(s, "CANNOT SEAT: {w}");
+        }
         if self
             .variants
             .iter()
@@ -436,6 +476,13 @@ impl StudyReport {
                 friction_law_text(&v.friction_law, v.ramp_time_s)
             );
             let _ = writeln!(s, "  varied: {}", varied(v));
+            if v.streamed {
+                let _ = writeln!(
+                    s,
+                    "  streamed: statistics from one-pass moments in sample order (no records kept); interval of sigma: {}",
+                    crate::study::stats::interval::METHOD_BONETT
+                );
+            }
             if let Some(b) = &v.variation_bounds {
                 let _ = writeln!(s, "  [variation] bounds: {}", bounds_text(b));
             }
@@ -459,327 +506,6 @@ impl StudyReport {
         }
         s
     }
-
-    /// Summary statistics as CSV, one row per variant, point and DOF (SI units).
-    pub fn csv(&self) -> String {
-        let mut s = String::from(
-            "scene,name,point,dof,unit,n,mean,min,max,sigma,three_sigma,sigma_ci90_low,sigma_ci90_high\n",
-        );
-        for v in self.variants.iter().filter(|v| !v.partial) {
-            let interchange = v.interchangeability.iter().map(|p| {
-                let mut p = p.clone();
-                p.name = format!("{INTERCHANGE_PREFIX}{}", p.name);
-                p
-            });
-            for p in v.points.iter().cloned().chain(interchange) {
-                let p = &p;
-                for (k, comp) in COMPONENTS.iter().enumerate() {
-                    let (dof, unit) = comp.rsplit_once('_').unwrap_or((comp, ""));
-                    let si = |d: &Dofs| d.values()[k] * 1e-9;
-                    // No interval (corners, single LHS): an empty field.
-                    let ci = |d: &Option<Dofs>| {
-                        d.as_ref().map_or(String::new(), |d| format!("{:e}", si(d)))
-                    };
-                    let _ = writeln!(
-                        s,
-                        "{},{},{},{dof},{unit},{},{:e},{:e},{:e},{:e},{:e},{},{}",
-                        csv_field(&v.scene),
-                        csv_field(&v.name),
-                        csv_field(&p.name),
-                        p.n,
-                        si(&p.mean),
-                        si(&p.min),
-                        si(&p.max),
-                        si(&p.sigma),
-                        si(&p.three_sigma),
-                        ci(&p.sigma_ci90_low),
-                        ci(&p.sigma_ci90_high)
-                    );
-                }
-            }
-        }
-        s
-    }
-
-    /// Write per-sample CSV files and the SVG plots into `dir`.
-    pub fn write_files(&self, dir: &Path, couplings: &[Coupling]) -> Result<Vec<String>, String> {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
-        let mut written = Vec::new();
-        let mut write = |name: String, text: String| -> Result<(), String> {
-            let path = dir.join(&name);
-            std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
-            written.push(path.display().to_string());
-            Ok(())
-        };
-        for (i, (v, c)) in self.variants.iter().zip(couplings).enumerate() {
-            let stem = Path::new(&v.scene)
-                .file_stem()
-                .map_or("scene".into(), |s| s.to_string_lossy().into_owned());
-            let mut t = String::from("index");
-            for name in &v.inputs {
-                let _ = write!(t, ",{name}");
-            }
-            for n in &v.output_names {
-                let _ = write!(t, ",{}", csv_field(n));
-            }
-            t.push('\n');
-            for r in &v.records {
-                let _ = write!(t, "{}", r.index);
-                for m in v.variation().sample(c, &r.inputs).physical {
-                    let _ = write!(t, ",{m:e}");
-                }
-                for o in &r.outputs {
-                    let _ = write!(t, ",{o:e}");
-                }
-                t.push('\n');
-            }
-            write(format!("samples_{:02}_{stem}.csv", i + 1), t)?;
-        }
-        let full: Vec<&VariantReport> = self
-            .variants
-            .iter()
-            .filter(|v| !v.partial && !v.points.is_empty())
-            .collect();
-        if full.is_empty() {
-            return Ok(written);
-        }
-        // Scene file stems are short and tell the variants apart.
-        let label = |_: usize, v: &VariantReport| {
-            Path::new(&v.scene).file_stem().map_or_else(
-                || truncate(&v.name, 30),
-                |s| s.to_string_lossy().into_owned(),
-            )
-        };
-        let sigmas: Vec<VariantSigma> = full
-            .iter()
-            .enumerate()
-            .map(|(i, v)| VariantSigma {
-                variant: label(i, v),
-                sigma: v.points[0].sigma.values(),
-            })
-            .collect();
-        let scatter: Vec<VariantScatter> = full
-            .iter()
-            .enumerate()
-            .map(|(i, v)| VariantScatter {
-                variant: label(i, v),
-                xy: v
-                    .records
-                    .iter()
-                    .map(|r| (r.outputs[0] * 1e9, r.outputs[1] * 1e9))
-                    .collect(),
-            })
-            .collect();
-        let mut conv = Vec::new();
-        for (i, v) in full.iter().enumerate() {
-            // One translation and one rotation per variant keeps the legend
-            // readable; x and phi_x stand for the others (the per-sample CSV
-            // has all five).
-            for (k, dof) in [(0, &Dof::X), (3, &Dof::PhiX)] {
-                let values: Vec<f64> = v.records.iter().map(|r| r.outputs[k] * 1e9).collect();
-                conv.push(ConvergenceSeries {
-                    variant: label(i, v),
-                    dof: *dof,
-                    points: sigma_convergence(&values).map_err(|e| e.to_string())?,
-                });
-            }
-        }
-        for (name, result) in [
-            (
-                "sigma_bars.svg",
-                plot_sigma_bars(&dir.join("sigma_bars.svg"), &sigmas),
-            ),
-            (
-                "scatter_xy.svg",
-                plot_xy_scatter(&dir.join("scatter_xy.svg"), &scatter),
-            ),
-            (
-                "sigma_convergence.svg",
-                plot_convergence(&dir.join("sigma_convergence.svg"), &conv),
-            ),
-        ] {
-            result.map_err(|e| format!("{}: {e}", dir.join(name).display()))?;
-            written.push(dir.join(name).display().to_string());
-        }
-        Ok(written)
-    }
-}
-
-/// The Table 2 style sigma table of `points(v)` for every variant.
-fn sigma_table(
-    s: &mut String,
-    variants: &[VariantReport],
-    points: impl Fn(&VariantReport) -> &Vec<PointStats>,
-) {
-    let _ = writeln!(
-        s,
-        "{:<4}{:<46}{:<16}{:>5} {:>13} {:>13} {:>13} {:>17} {:>17}",
-        "#",
-        "variant",
-        "point",
-        "n",
-        "sigma_x [nm]",
-        "sigma_y [nm]",
-        "sigma_z [nm]",
-        "sigma_phi_x[nrad]",
-        "sigma_phi_y[nrad]"
-    );
-    for (i, v) in variants.iter().enumerate() {
-        if v.partial {
-            let _ = writeln!(
-                s,
-                "{:<4}{:<46}(shard {} of {} samples: run `kinrepro merge` for statistics)",
-                i + 1,
-                v.name,
-                v.shard,
-                v.samples
-            );
-            continue;
-        }
-        for p in points(v) {
-            let sg = p.sigma.values();
-            let _ = writeln!(
-                s,
-                "{:<4}{:<46}{:<16}{:>5} {:>13.3} {:>13.3} {:>13.3} {:>17.2} {:>17.2}",
-                i + 1,
-                truncate(&v.name, 45),
-                p.name,
-                p.n,
-                sg[0],
-                sg[1],
-                sg[2],
-                sg[3],
-                sg[4]
-            );
-            let (Some(lo), Some(hi)) = (&p.sigma_ci90_low, &p.sigma_ci90_high) else {
-                let _ = writeln!(s, "{:<71}(no interval: {})", "", p.sigma_interval_method);
-                continue;
-            };
-            let (lo, hi) = (lo.values(), hi.values());
-            let ci: Vec<String> = (0..5)
-                .map(|k| {
-                    let w = if k < 3 { 13 } else { 17 };
-                    format!("{:>w$}", format!("[{:.2}, {:.2}]", lo[k], hi[k]))
-                })
-                .collect();
-            let _ = writeln!(s, "{:<71}{}", "", ci.join(" "));
-        }
-    }
-}
-
-/// The distinct interval methods of the variants' points, in order.
-fn interval_methods(variants: &[VariantReport]) -> String {
-    let mut methods: Vec<&str> = Vec::new();
-    for p in variants.iter().flat_map(|v| &v.points) {
-        if !methods.contains(&p.sigma_interval_method.as_str()) {
-            methods.push(&p.sigma_interval_method);
-        }
-    }
-    if methods.is_empty() {
-        "per variant, after merging".to_string()
-    } else {
-        methods.join("; ")
-    }
-}
-
-/// Mean, min, max, sigma and 3 sigma of every DOF of each point.
-fn detail(s: &mut String, points: &[PointStats]) {
-    for p in points {
-        let _ = writeln!(
-            s,
-            "  {:<16} {:<10} {:>12} {:>12} {:>12} {:>12} {:>12}",
-            p.name, "", "mean", "min", "max", "sigma", "+-3 sigma"
-        );
-        let rows = [
-            ("x [nm]", 0),
-            ("y [nm]", 1),
-            ("z [nm]", 2),
-            ("phi_x [nrad]", 3),
-            ("phi_y [nrad]", 4),
-        ];
-        for (label, k) in rows {
-            let _ = writeln!(
-                s,
-                "  {:<16} {:<10} {:>12.3} {:>12.3} {:>12.3} {:>12.3} {:>12.3}",
-                "",
-                label,
-                p.mean.values()[k],
-                p.min.values()[k],
-                p.max.values()[k],
-                p.sigma.values()[k],
-                p.three_sigma.values()[k]
-            );
-        }
-    }
-}
-
-/// What varied, in words.
-fn varied(v: &VariantReport) -> String {
-    let var = v.variation();
-    let mut parts = Vec::new();
-    if var.friction {
-        parts.push("friction");
-    }
-    if var.preload {
-        parts.push("preload");
-    }
-    if var.start.is_some() {
-        parts.push("start pose");
-    }
-    if var.tolerances {
-        parts.push("tolerances");
-    }
-    format!("{} ({} inputs)", parts.join(", "), v.inputs.len())
-}
-
-/// The non-zero `[variation]` bounds, in um and mrad.
-fn bounds_text(b: &VariationBounds) -> String {
-    let um = |x: f64| format!("{}", x * 1e6);
-    let mut parts = Vec::new();
-    if b.preload_offset_m.iter().any(|x| *x > 0.0) {
-        parts.push(format!(
-            "preload offset +-{}, +-{} um",
-            um(b.preload_offset_m[0]),
-            um(b.preload_offset_m[1])
-        ));
-    }
-    if b.preload_tilt_rad > 0.0 {
-        parts.push(format!(
-            "preload tilt +-{} mrad per axis",
-            b.preload_tilt_rad * 1e3
-        ));
-    }
-    if b.ball_diameter_m > 0.0 {
-        parts.push(format!("ball diameter +-{} um", um(b.ball_diameter_m)));
-    }
-    if b.ball_position_m.iter().any(|x| *x > 0.0) {
-        let p = b.ball_position_m;
-        parts.push(format!(
-            "ball position +-{}, +-{}, +-{} um",
-            um(p[0]),
-            um(p[1]),
-            um(p[2])
-        ));
-    }
-    if b.surface_normal_m > 0.0 {
-        parts.push(format!("surface normal +-{} um", um(b.surface_normal_m)));
-    }
-    if b.surface_tilt_rad > 0.0 {
-        parts.push(format!("surface tilt +-{} mrad", b.surface_tilt_rad * 1e3));
-    }
-    if b.groove_position_m.iter().any(|x| *x > 0.0) {
-        parts.push(format!(
-            "groove position +-{}, +-{} um",
-            um(b.groove_position_m[0]),
-            um(b.groove_position_m[1])
-        ));
-    }
-    if parts.is_empty() {
-        "none".to_string()
-    } else {
-        parts.join("; ")
-    }
 }
 
 /// One SRC table: inputs down, DOFs across.
@@ -800,8 +526,8 @@ fn sensitivity_table(s: &mut String, b: &SensitivityBlock) {
     );
     let _ = writeln!(
         s,
-        "  {:<22} {:>9} {:>9} {:>9} {:>9} {:>9}",
-        "input", "x", "y", "z", "phi_x", "phi_y"
+        "  {:<22} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
+        "input", "x", "y", "z", "phi_x", "phi_y", "phi_z"
     );
     let cell = |d: &sensitivity::DofSensitivity, j: usize| {
         d.share
@@ -840,22 +566,6 @@ fn sensitivity_table(s: &mut String, b: &SensitivityBlock) {
     }
 }
 
-fn truncate(s: &str, n: usize) -> String {
-    if s.chars().count() <= n {
-        s.to_string()
-    } else {
-        s.chars().take(n - 1).collect::<String>() + "…"
-    }
-}
-
-fn csv_field(s: &str) -> String {
-    if s.contains([',', '"', '\n']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
-}
-
 fn default_ramp_time() -> f64 {
     DEFAULT_RAMP_TIME
 }
@@ -867,5 +577,20 @@ fn friction_law_text(law: &FrictionLaw, ramp_time: f64) -> String {
         FrictionLaw::Decay { coefficient } => format!(
             "decay mu = mu_d + (mu_s - mu_d) exp(-{coefficient} s/m * v_slip), ramp {ramp_time} s"
         ),
+    }
+}
+
+/// The distinct interval methods of the variants' points, in order.
+fn interval_methods(variants: &[VariantReport]) -> String {
+    let mut methods: Vec<&str> = Vec::new();
+    for p in variants.iter().flat_map(|v| &v.points) {
+        if !methods.contains(&p.sigma_interval_method.as_str()) {
+            methods.push(&p.sigma_interval_method);
+        }
+    }
+    if methods.is_empty() {
+        "per variant, after merging".to_string()
+    } else {
+        methods.join("; ")
     }
 }

@@ -200,8 +200,9 @@ pub struct Seating {
 }
 
 /// Pose of an evaluation point relative to a reference pose: translation of
-/// the point and the rotation vector of R R_ref^-1 (finite rotation; phi_z
-/// is reported but not evaluated for reproducibility).
+/// the point and the rotation vector of R R_ref^-1 (finite rotation). All
+/// six components enter a study ([`PointPose::components`]); phi_z is the
+/// clocking about the coupling axis.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct PointPose {
     pub x_m: f64,
@@ -227,9 +228,22 @@ impl PointPose {
         }
     }
 
-    /// The five evaluated components [x, y, z, phi_x, phi_y].
+    /// The five components [x, y, z, phi_x, phi_y] of the paper's Table 2.
     pub fn evaluated(&self) -> [f64; 5] {
         [self.x_m, self.y_m, self.z_m, self.phi_x_rad, self.phi_y_rad]
+    }
+
+    /// All six components [x, y, z, phi_x, phi_y, phi_z] (m, rad), the
+    /// order of `study::runner::COMPONENTS`.
+    pub fn components(&self) -> [f64; 6] {
+        [
+            self.x_m,
+            self.y_m,
+            self.z_m,
+            self.phi_x_rad,
+            self.phi_y_rad,
+            self.phi_z_rad,
+        ]
     }
 }
 

@@ -40,12 +40,14 @@
 //! `src/study/` of the kinrepro crate unchanged (this file becoming `src/study/mod.rs`).
 
 pub mod error;
+pub mod inputs;
 pub mod plot;
 mod rng;
 pub mod runner;
 pub mod sampling;
 pub mod sensitivity;
 pub mod stats;
+pub mod variation;
 
 pub use error::{Result, StudyError};
 pub use sampling::shard::{Shard, shard_range};

@@ -35,11 +35,12 @@ pub enum Dof {
     Z,
     PhiX,
     PhiY,
+    PhiZ,
 }
 
 impl Dof {
     /// All DOFs, in the order of [`VariantSigma::sigma`].
-    pub const ALL: [Dof; 5] = [Dof::X, Dof::Y, Dof::Z, Dof::PhiX, Dof::PhiY];
+    pub const ALL: [Dof; 6] = [Dof::X, Dof::Y, Dof::Z, Dof::PhiX, Dof::PhiY, Dof::PhiZ];
 
     /// Short label used on axes and in legends.
     pub fn label(self) -> &'static str {
@@ -49,6 +50,7 @@ impl Dof {
             Dof::Z => "z",
             Dof::PhiX => "φx",
             Dof::PhiY => "φy",
+            Dof::PhiZ => "φz",
         }
     }
 
@@ -58,15 +60,15 @@ impl Dof {
     }
 
     pub fn is_rotation(self) -> bool {
-        matches!(self, Dof::PhiX | Dof::PhiY)
+        matches!(self, Dof::PhiX | Dof::PhiY | Dof::PhiZ)
     }
 }
 
-/// Sigma of one variant, per DOF in the order of [`Dof::ALL`]: x, y, z \[nm\], phi_x, phi_y \[nrad\].
+/// Sigma of one variant, per DOF in the order of [`Dof::ALL`]: x, y, z \[nm\], phi_x, phi_y, phi_z \[nrad\].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct VariantSigma {
     pub variant: String,
-    pub sigma: [f64; 5],
+    pub sigma: [f64; 6],
 }
 
 /// The x-y re-seating errors \[nm\] of every sample of one variant.

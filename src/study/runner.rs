@@ -22,433 +22,20 @@ use rayon::prelude::*;
 use thiserror::Error;
 
 use super::StudyError;
+pub use super::inputs::{Input, Tolerances};
 use super::stats::SampleRecord;
+pub use super::variation::{START_CLEARANCE, Sample, StartBounds, Variation, lifted_clear};
 use super::{DesignSpec, Sampler, Shard};
 use crate::assembly::{AssemblyError, Coupling};
-use crate::scene::{Preload, Scene, SurfaceGeometry};
-use nalgebra::{UnitQuaternion, Vector3};
 
 use crate::solve::dynamic::StartPose;
 use crate::solve::{Method, PointPose, SolveError, nominal_mu};
 
-/// Output components per evaluation point (relative to the nominal seating, SI).
-pub const COMPONENTS: [&str; 5] = ["x_m", "y_m", "z_m", "phi_x_rad", "phi_y_rad"];
-
-/// Bounds of a randomly drawn start pose of the moving half (dynamic solver).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct StartBounds {
-    /// Half-widths of x and y, and the largest height z above the seat [m].
-    pub offset: Vector3<f64>,
-    /// Half-widths of the tilt about x, y, z [rad].
-    pub tilt: Vector3<f64>,
-}
-
-/// What a study varies from sample to sample.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Variation {
-    /// The six static friction coefficients (the paper's study).
-    pub friction: bool,
-    /// The preload point and direction, within the scene's `[variation]`
-    /// bounds (re-seating scatter: it changes every cycle).
-    pub preload: bool,
-    /// Manufacturing tolerances of balls and surfaces within the scene's
-    /// `[variation]` bounds (interchangeability: reported separately, each
-    /// sample a perturbed coupling seated at nominal friction and preload).
-    pub tolerances: bool,
-    /// The start pose (needs the dynamic solver).
-    pub start: Option<StartBounds>,
-}
-
-impl Default for Variation {
-    fn default() -> Self {
-        Variation {
-            friction: true,
-            preload: false,
-            tolerances: false,
-            start: None,
-        }
-    }
-}
-
-/// One varied quantity: a column of the design.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Input {
-    /// Static coefficient of contact k (0-based).
-    Mu(usize),
-    /// Preload point offset along x (0) or y (1).
-    PreloadOffset(usize),
-    /// Preload direction tilt about x (0) or y (1).
-    PreloadTilt(usize),
-    /// Start pose: offset x, y, z (0-2), tilt x, y, z (3-5).
-    Start(usize),
-    /// Diameter error of ball b.
-    BallDiameter(usize),
-    /// Centre error of ball b along axis a.
-    BallPosition(usize, usize),
-    /// Shift of surface s along its nominal contact normal.
-    SurfaceNormal(usize),
-    /// Rotation of surface s about its horizontal axis through the contact point.
-    SurfaceTilt(usize),
-    /// Shift of the groove of ball b along x (0) or y (1).
-    GroovePosition(usize, usize),
-}
-
-impl Input {
-    /// True for the manufacturing tolerances (interchangeability inputs).
-    pub fn is_tolerance(&self) -> bool {
-        matches!(
-            self,
-            Input::BallDiameter(_)
-                | Input::BallPosition(..)
-                | Input::SurfaceNormal(_)
-                | Input::SurfaceTilt(_)
-                | Input::GroovePosition(..)
-        )
-    }
-
-    /// The column name (SI unit as suffix).
-    pub fn name(&self) -> String {
-        const XYZ: [&str; 3] = ["x", "y", "z"];
-        match *self {
-            Input::Mu(k) => format!("mu_{}", k + 1),
-            Input::PreloadOffset(a) => format!("preload_{}_m", XYZ[a]),
-            Input::PreloadTilt(a) => format!("preload_tilt_{}_rad", XYZ[a]),
-            Input::Start(j) => [
-                "offset_x_m",
-                "offset_y_m",
-                "offset_z_m",
-                "tilt_x_rad",
-                "tilt_y_rad",
-                "tilt_z_rad",
-            ][j]
-                .to_string(),
-            Input::BallDiameter(b) => format!("ball_{}_diameter_m", b + 1),
-            Input::BallPosition(b, a) => format!("ball_{}_{}_m", b + 1, XYZ[a]),
-            Input::SurfaceNormal(s) => format!("surface_{}_normal_m", s + 1),
-            Input::SurfaceTilt(s) => format!("surface_{}_tilt_rad", s + 1),
-            Input::GroovePosition(b, a) => format!("groove_{}_{}_m", b + 1, XYZ[a]),
-        }
-    }
-}
-
-/// Manufacturing errors of one sample: each value drawn within the
-/// scene's `[variation]` bounds.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Tolerances {
-    /// Diameter error per ball [m].
-    pub ball_diameter: Vec<f64>,
-    /// Centre error per ball [m].
-    pub ball_position: Vec<Vector3<f64>>,
-    /// Shift of each surface along its nominal contact normal [m].
-    pub surface_normal: Vec<f64>,
-    /// Rotation of each surface about its tilt axis [rad].
-    pub surface_tilt: Vec<f64>,
-    /// Shift of each ball's groove, x and y (z = 0) [m].
-    pub groove_position: Vec<Vector3<f64>>,
-}
-
-impl Tolerances {
-    /// No error anywhere.
-    pub fn zero(coupling: &Coupling) -> Self {
-        let (b, s) = (coupling.balls.len(), coupling.contacts.len());
-        Tolerances {
-            ball_diameter: vec![0.0; b],
-            ball_position: vec![Vector3::zeros(); b],
-            surface_normal: vec![0.0; s],
-            surface_tilt: vec![0.0; s],
-            groove_position: vec![Vector3::zeros(); b],
-        }
-    }
-
-    /// The scene with these errors applied (explicit geometry). Surface i
-    /// with nominal contact point p_i and normal n_i (at the touching
-    /// pose) is rotated by its tilt about the axis t_i = n_i x e_z
-    /// (normalised; e_x for a normal along z) through p_i — a positive
-    /// tilt turns the normal towards +z, i.e. flattens a flank, so equal
-    /// tilts of both flanks of a V widen its opening angle by twice the
-    /// tilt — then shifted by its normal error along n_i and by its
-    /// groove's x, y error. Ball k's centre moves by its position error and
-    /// its radius grows by half its diameter error.
-    pub fn apply(&self, coupling: &Coupling) -> Scene {
-        let mut scene = coupling.scene.clone();
-        for (k, b) in scene.balls.iter_mut().enumerate() {
-            b.centre += self.ball_position[k];
-            b.radius += 0.5 * self.ball_diameter[k];
-        }
-        for (i, s) in scene.surfaces.iter_mut().enumerate() {
-            let g = coupling.geometry(i, &coupling.touching_pose);
-            let n = g.normal;
-            let axis = n.cross(&Vector3::z());
-            let axis = if axis.norm() < 1e-9 {
-                Vector3::x()
-            } else {
-                axis.normalize()
-            };
-            let r = UnitQuaternion::from_scaled_axis(axis * self.surface_tilt[i]);
-            let shift = n * self.surface_normal[i] + self.groove_position[s.ball];
-            let moved = |x: Vector3<f64>| r * (x - g.point) + g.point + shift;
-            s.geometry = match s.geometry {
-                SurfaceGeometry::Plane { point, normal } => SurfaceGeometry::Plane {
-                    point: moved(point),
-                    normal: r * normal,
-                },
-                SurfaceGeometry::Cylinder {
-                    axis_point,
-                    direction,
-                    radius,
-                } => SurfaceGeometry::Cylinder {
-                    axis_point: moved(axis_point),
-                    direction: r * direction,
-                    radius,
-                },
-                SurfaceGeometry::Sphere { centre, radius } => SurfaceGeometry::Sphere {
-                    centre: moved(centre),
-                    radius,
-                },
-            };
-        }
-        scene
-    }
-
-    /// A bound on how far the perturbed balls may miss their surfaces at
-    /// the scene's pose (for [`Coupling::new_perturbed`]).
-    pub fn max_gap(&self, coupling: &Coupling) -> f64 {
-        let amax = |v: &[f64]| v.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
-        let vmax = |v: &[Vector3<f64>]| v.iter().fold(0.0_f64, |a, x| a.max(x.norm()));
-        let r = coupling.balls.iter().fold(0.0_f64, |a, b| a.max(b.radius));
-        1e-6 + 2.0
-            * (0.5 * amax(&self.ball_diameter)
-                + vmax(&self.ball_position)
-                + amax(&self.surface_normal)
-                + vmax(&self.groove_position)
-                + r * amax(&self.surface_tilt))
-    }
-
-    /// The perturbed coupling (touching pose solved for the perturbed geometry).
-    pub fn coupling(&self, coupling: &Coupling) -> Result<Coupling, AssemblyError> {
-        Coupling::new_perturbed(&self.apply(coupling), self.max_gap(coupling))
-    }
-}
-
-/// Everything one design row sets.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Sample {
-    /// Static coefficients, one per contact.
-    pub mu: Vec<f64>,
-    /// Start pose (dynamic solver).
-    pub start: StartPose,
-    /// Preload of this cycle.
-    pub preload: Preload,
-    /// Manufacturing errors (when tolerances vary).
-    pub tolerances: Option<Tolerances>,
-    /// Each design column in SI units (mu, m, rad), in row order.
-    pub physical: Vec<f64>,
-}
-
-impl Variation {
-    /// The design columns, in row order: friction, preload, start,
-    /// tolerances. Preload and tolerance columns appear only for non-zero
-    /// bounds of the scene's `[variation]` table.
-    pub fn inputs(&self, coupling: &Coupling) -> Vec<Input> {
-        let b = &coupling.scene.variation;
-        let mut v = Vec::new();
-        if self.friction {
-            v.extend((0..coupling.contacts.len()).map(Input::Mu));
-        }
-        if self.preload {
-            for a in 0..2 {
-                if b.preload_offset_m[a] > 0.0 {
-                    v.push(Input::PreloadOffset(a));
-                }
-            }
-            if b.preload_tilt_rad > 0.0 {
-                v.extend([Input::PreloadTilt(0), Input::PreloadTilt(1)]);
-            }
-        }
-        if self.start.is_some() {
-            v.extend((0..6).map(Input::Start));
-        }
-        if self.tolerances {
-            let balls = coupling.balls.len();
-            let surfaces = coupling.contacts.len();
-            if b.ball_diameter_m > 0.0 {
-                v.extend((0..balls).map(Input::BallDiameter));
-            }
-            for k in 0..balls {
-                for a in 0..3 {
-                    if b.ball_position_m[a] > 0.0 {
-                        v.push(Input::BallPosition(k, a));
-                    }
-                }
-            }
-            if b.surface_normal_m > 0.0 {
-                v.extend((0..surfaces).map(Input::SurfaceNormal));
-            }
-            if b.surface_tilt_rad > 0.0 {
-                v.extend((0..surfaces).map(Input::SurfaceTilt));
-            }
-            for k in 0..balls {
-                for a in 0..2 {
-                    if b.groove_position_m[a] > 0.0 {
-                        v.push(Input::GroovePosition(k, a));
-                    }
-                }
-            }
-        }
-        v
-    }
-
-    /// Names of the design dimensions, in row order.
-    pub fn input_names(&self, coupling: &Coupling) -> Vec<String> {
-        self.inputs(coupling).iter().map(Input::name).collect()
-    }
-
-    /// True if one pair of halves re-seats differently from sample to
-    /// sample (friction, preload or start varied).
-    pub fn reseating(&self) -> bool {
-        self.friction || self.preload || self.start.is_some()
-    }
-
-    /// Static coefficients and start pose of one design row (of
-    /// `input_names().len()` coordinates).
-    pub fn map(&self, coupling: &Coupling, row: &[f64]) -> (Vec<f64>, StartPose) {
-        let s = self.sample(coupling, row);
-        (s.mu, s.start)
-    }
-
-    /// Everything one design row sets. Each column u in [0, 1] maps to
-    /// b (2u - 1), uniform in +-b (mu: mu0 + spread (2u - 1)); the start
-    /// pose as described in the module documentation.
-    pub fn sample(&self, coupling: &Coupling, row: &[f64]) -> Sample {
-        let inputs = self.inputs(coupling);
-        let b = coupling.scene.variation;
-        let f = &coupling.scene.friction;
-        let nominal = coupling.scene.preload;
-        let mut mu = nominal_mu(coupling);
-        let mut start_u = [0.5; 6];
-        let mut offset = Vector3::zeros();
-        let mut tilt = Vector3::zeros();
-        let mut tol = self.tolerances.then(|| Tolerances::zero(coupling));
-        let mut physical = Vec::with_capacity(inputs.len());
-        for (input, &u) in inputs.iter().zip(row) {
-            let c = 2.0 * u - 1.0;
-            let t = tol.as_mut();
-            let value = match (*input, t) {
-                (Input::Mu(k), _) => {
-                    mu[k] = f.mu_static + f.spread * c;
-                    mu[k]
-                }
-                (Input::PreloadOffset(a), _) => {
-                    offset[a] = b.preload_offset_m[a] * c;
-                    offset[a]
-                }
-                (Input::PreloadTilt(a), _) => {
-                    tilt[a] = b.preload_tilt_rad * c;
-                    tilt[a]
-                }
-                (Input::Start(j), _) => {
-                    start_u[j] = u;
-                    f64::NAN
-                }
-                (Input::BallDiameter(k), Some(t)) => {
-                    t.ball_diameter[k] = b.ball_diameter_m * c;
-                    t.ball_diameter[k]
-                }
-                (Input::BallPosition(k, a), Some(t)) => {
-                    t.ball_position[k][a] = b.ball_position_m[a] * c;
-                    t.ball_position[k][a]
-                }
-                (Input::SurfaceNormal(i), Some(t)) => {
-                    t.surface_normal[i] = b.surface_normal_m * c;
-                    t.surface_normal[i]
-                }
-                (Input::SurfaceTilt(i), Some(t)) => {
-                    t.surface_tilt[i] = b.surface_tilt_rad * c;
-                    t.surface_tilt[i]
-                }
-                (Input::GroovePosition(k, a), Some(t)) => {
-                    t.groove_position[k][a] = b.groove_position_m[a] * c;
-                    t.groove_position[k][a]
-                }
-                (_, None) => f64::NAN,
-            };
-            physical.push(value);
-        }
-        let start = match self.start {
-            Some(bounds) => start_pose(coupling, &bounds, &start_u),
-            None => StartPose::touching(),
-        };
-        if self.start.is_some() {
-            let values = [
-                start.offset.x,
-                start.offset.y,
-                start.offset.z,
-                start.tilt.x,
-                start.tilt.y,
-                start.tilt.z,
-            ];
-            for (input, v) in inputs.iter().zip(physical.iter_mut()) {
-                if let Input::Start(j) = input {
-                    *v = values[*j];
-                }
-            }
-        }
-        let preload = Preload {
-            force: nominal.force,
-            point: nominal.point + offset,
-            direction: UnitQuaternion::from_scaled_axis(tilt) * nominal.direction,
-            ramp_time: nominal.ramp_time,
-        };
-        Sample {
-            mu,
-            start,
-            preload,
-            tolerances: tol,
-            physical,
-        }
-    }
-}
-
-/// The start pose of design coordinates `u` (offset x, y, z, tilt x, y, z).
-fn start_pose(coupling: &Coupling, b: &StartBounds, u: &[f64; 6]) -> StartPose {
-    let tilted = StartPose {
-        offset: Vector3::new(
-            b.offset.x * (2.0 * u[0] - 1.0),
-            b.offset.y * (2.0 * u[1] - 1.0),
-            0.0,
-        ),
-        tilt: Vector3::new(
-            b.tilt.x * (2.0 * u[3] - 1.0),
-            b.tilt.y * (2.0 * u[4] - 1.0),
-            b.tilt.z * (2.0 * u[5] - 1.0),
-        ),
-    };
-    let mut s = lifted_clear(coupling, tilted);
-    s.offset.z += b.offset.z * u[2];
-    s
-}
-
-/// Gap every ball keeps from its surfaces when a start pose is lifted clear [m].
-pub const START_CLEARANCE: f64 = 1e-9;
-
-/// `start` raised along z just enough that every ball clears its surfaces by
-/// [`START_CLEARANCE`] (the height of first contact for that lateral offset
-/// and tilt): a drawn start height then counts from there, so that every
-/// drawn start lies above the seat.
-pub fn lifted_clear(coupling: &Coupling, mut start: StartPose) -> StartPose {
-    for _ in 0..50 {
-        let pose = coupling.touching_pose.moved(&start.offset, &start.tilt);
-        let (i, gap) = (0..coupling.contacts.len())
-            .map(|i| (i, coupling.geometry(i, &pose).gap))
-            .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
-        if gap >= START_CLEARANCE * (1.0 - 1e-6) {
-            break;
-        }
-        let nz = coupling.geometry(i, &pose).normal.z.max(1e-3);
-        start.offset.z += (START_CLEARANCE - gap) / nz;
-    }
-    start
-}
+/// Output components per evaluation point (relative to the nominal seating,
+/// SI): translation of the point and rotation vector, phi_z being the
+/// clocking about z (evaluated since output schema 2; MODEL.md §2's "not
+/// evaluated" is superseded).
+pub const COMPONENTS: [&str; 6] = ["x_m", "y_m", "z_m", "phi_x_rad", "phi_y_rad", "phi_z_rad"];
 
 /// How to run a study; `None` takes the scene's study settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -500,6 +87,15 @@ pub enum RunError {
         index: usize,
         #[source]
         source: AssemblyError,
+    },
+    #[error(
+        "{file}: the nominal seating (the reference of every sample; mu_s = {mu:?}, touching start) failed: {source}"
+    )]
+    Nominal {
+        file: String,
+        mu: Vec<f64>,
+        #[source]
+        source: SolveError,
     },
     #[error("{file}: sample {index} (mu_s = {mu:?}): {source}")]
     Seating {
@@ -656,6 +252,72 @@ pub fn run_variant(
     })
 }
 
+/// True if friction moves the seated pose: the coupling seated from the
+/// touching pose with every mu_s at mu0 - spread and at mu0 + spread (and
+/// mu0 +- 10 % for a scene without spread) ends in different poses. False
+/// means every contact stuck from the first load increment: the coupling
+/// cannot seat, and a friction study gives zero scatter.
+pub fn friction_moves_pose(coupling: &Coupling, method: &Method) -> Result<bool, RunError> {
+    let f = &coupling.scene.friction;
+    let d = if f.spread > 0.0 {
+        f.spread
+    } else {
+        0.1 * f.mu_static
+    };
+    let n = coupling.contacts.len();
+    let mut poses = Vec::new();
+    for mu in [(f.mu_static - d).max(0.0), f.mu_static + d] {
+        let m = vec![mu; n];
+        let s = method
+            .seat(coupling, &m, &StartPose::touching())
+            .map_err(|source| RunError::Nominal {
+                file: coupling.scene.file.clone(),
+                mu: m,
+                source,
+            })?;
+        poses.push(s.pose);
+    }
+    let p = &coupling.scene.evaluation_points[0].position;
+    Ok(PointPose::between(&poses[0], &poses[1], p)
+        .components()
+        .iter()
+        .any(|c| *c != 0.0))
+}
+
+/// Run this shard's samples in chunks of `chunk` rows (rayon within a
+/// chunk), handing each chunk's records to `sink` in sample-index order:
+/// bounded memory for any sample count, and results that do not depend on
+/// the number of threads. Returns the design.
+pub fn run_chunked(
+    coupling: &Coupling,
+    opts: &StudyOptions,
+    chunk: usize,
+    tick: &(dyn Fn() + Sync),
+    sink: &mut dyn FnMut(Vec<SampleRecord>) -> Result<(), RunError>,
+) -> Result<DesignSpec, RunError> {
+    let file = coupling.scene.file.clone();
+    let design_err = |source| RunError::Design {
+        file: file.clone(),
+        source,
+    };
+    check_options(coupling, opts)?;
+    let design = design_for(coupling, opts).map_err(design_err)?;
+    let range = opts.shard.range(design.n).map_err(design_err)?;
+    let mut start = range.start;
+    while start < range.end {
+        let end = (start + chunk.max(1)).min(range.end);
+        let rows = design.range(start..end).map_err(design_err)?;
+        sink(evaluate_rows(
+            coupling,
+            opts,
+            (start..end).zip(rows).collect(),
+            tick,
+        )?)?;
+        start = end;
+    }
+    Ok(design)
+}
+
 /// Seat the coupling once per `(index, design row)` (rayon across rows)
 /// and record the outputs named by [`recorded_output_names`], relative to
 /// the nominal seating (nominal friction and preload, touching start, same
@@ -681,7 +343,11 @@ pub fn evaluate_rows(
     let nominal = opts
         .method
         .seat(coupling, &nominal_mu, &StartPose::touching())
-        .map_err(|e| seat_err(usize::MAX, &nominal_mu, e))?;
+        .map_err(|source| RunError::Nominal {
+            file: file.clone(),
+            mu: nominal_mu.clone(),
+            source,
+        })?;
     let points: Vec<_> = coupling
         .scene
         .evaluation_points
@@ -709,7 +375,7 @@ pub fn evaluate_rows(
                 outputs.extend(
                     points
                         .iter()
-                        .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).evaluated()),
+                        .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).components()),
                 );
             }
             if let Some(t) = &sample.tolerances {
@@ -725,7 +391,7 @@ pub fn evaluate_rows(
                 outputs.extend(
                     points
                         .iter()
-                        .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).evaluated()),
+                        .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).components()),
                 );
             }
             tick();

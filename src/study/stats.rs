@@ -126,7 +126,10 @@ pub(crate) fn mean_sigma_unchecked(values: &[f64]) -> (f64, f64) {
         ss += dv * dv;
         comp += dv;
     }
-    let var = ((ss - comp * comp / n) / (n - 1.0)).max(0.0);
+    // Clamp rounding below zero, but keep a NaN (overflow) visible: f64::max
+    // would turn it into 0 (sigma = 0 from a part holding 1e308).
+    let var = (ss - comp * comp / n) / (n - 1.0);
+    let var = if var < 0.0 { 0.0 } else { var };
     (mean, var.sqrt())
 }
 

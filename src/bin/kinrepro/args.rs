@@ -97,15 +97,19 @@ pub struct RunArgs {
     /// (default: the scene's nominal mu_static everywhere).
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub mu: Option<Vec<f64>>,
-    /// Nominal number of load increments (quasi-static solver).
+    /// Nominal number of load increments (quasi-static solver), 1..=100000.
     #[arg(long, default_value_t = 20)]
     pub increments: usize,
     /// Seating solver.
     #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
     pub solver: SolverKind,
-    /// Dynamic solver: write the time history (CSV, SI units) to this file.
+    /// Dynamic solver: write the time history (CSV, SI units) to this file
+    /// (refused if it exists, unless --force).
     #[arg(long)]
     pub trace: Option<PathBuf>,
+    /// Replace an existing --trace file.
+    #[arg(long)]
+    pub force: bool,
     /// Dynamic solver: start offset x,y,z of the moving half from the touching pose [m].
     #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
     pub offset: Option<Vec<f64>>,
@@ -167,20 +171,30 @@ pub struct StudyArgs {
     /// Seed of the design (default: the scene's [study] seed).
     #[arg(long)]
     pub seed: Option<u64>,
-    /// Worker threads (default: all cores).
+    /// Worker threads (default: all cores; capped at 4 per core and at the
+    /// number of samples).
     #[arg(long)]
     pub jobs: Option<usize>,
     /// Output: table (nm, nrad) | csv (SI) | json (statistics in nm/nrad, samples in SI).
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
-    /// Also write per-sample CSV files and SVG plots into this directory.
+    /// Also write per-sample CSV files and SVG plots into this directory
+    /// (existing files are refused, unless --force).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Replace existing files of --out.
+    #[arg(long)]
+    pub force: bool,
+    /// Exit 0 even if a coupling cannot seat (zero scatter: nothing slid);
+    /// the result still says so.
+    #[arg(long)]
+    pub allow_unseated: bool,
     /// Run only shard I of N of the samples (1-based, e.g. 3/16); merge the
     /// JSON outputs with `kinrepro merge`.
     #[arg(long)]
     pub shard: Option<Shard>,
-    /// Nominal number of load increments per seating (quasi-static solver).
+    /// Nominal number of load increments per seating (quasi-static
+    /// solver), 1..=100000.
     #[arg(long, default_value_t = 20)]
     pub increments: usize,
     /// Seating solver.

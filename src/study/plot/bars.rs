@@ -19,9 +19,15 @@ pub fn plot_sigma_bars(path: &Path, data: &[VariantSigma]) -> Result<()> {
     }
     let root = SVGBackend::new(path, (1100, 480)).into_drawing_area();
     root.fill(&WHITE).map_err(plot_err)?;
-    let (left, right) = root.split_horizontally(640);
+    let (left, right) = root.split_horizontally(550);
     panel(&left, data, &[Dof::X, Dof::Y, Dof::Z], "translations", true)?;
-    panel(&right, data, &[Dof::PhiX, Dof::PhiY], "rotations", false)?;
+    panel(
+        &right,
+        data,
+        &[Dof::PhiX, Dof::PhiY, Dof::PhiZ],
+        "rotations",
+        false,
+    )?;
     root.present().map_err(plot_err)
 }
 

@@ -32,8 +32,7 @@ pub fn stiffness(args: StiffnessArgs) -> Result<(), String> {
     if json {
         print_json(&report)
     } else {
-        print!("{}", report.table());
-        Ok(())
+        emit(&report.table())
     }
 }
 
@@ -80,7 +79,6 @@ pub fn load(args: LoadArgs) -> Result<(), String> {
     if json {
         print_json(&report)
     } else {
-        print!("{}", report.table());
-        Ok(())
+        emit(&report.table())
     }
 }

@@ -1,5 +1,6 @@
 //! `kinrepro validate-hertz`: the FE check of the Hertz law.
 
+use super::{emit, print_json};
 use crate::args::*;
 
 pub fn validate_hertz(args: ValidateHertzArgs) -> Result<(), String> {
@@ -54,12 +55,8 @@ pub fn validate_hertz(args: ValidateHertzArgs) -> Result<(), String> {
         );
     }
     if json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&rows).map_err(|e| e.to_string())?
-        );
+        print_json(&rows)
     } else {
-        print!("{}", kinrepro::report::validate_hertz::table(&rows));
+        emit(&kinrepro::report::validate_hertz::table(&rows))
     }
-    Ok(())
 }

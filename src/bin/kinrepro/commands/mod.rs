@@ -27,14 +27,66 @@ pub fn dispatch(command: Command) -> Result<(), String> {
 
 pub fn print_study(report: &StudyReport, format: Format) -> Result<(), String> {
     match format {
-        Format::Table => print!("{}", report.table()),
-        Format::Csv => print!("{}", report.csv()),
-        Format::Json => println!(
-            "{}",
+        Format::Table => emit(&report.table()),
+        Format::Csv => emit(&report.csv()),
+        Format::Json => emit(&format!(
+            "{}\n",
             serde_json::to_string_pretty(report).map_err(|e| e.to_string())?
-        ),
+        )),
     }
-    Ok(())
+}
+
+/// Write `text` to stdout. A closed pipe (`| head`) is not an error: the
+/// reader has what it wanted, so the rest is dropped quietly as Unix tools
+/// do; any other failure (a full disk) is one clear error.
+pub fn emit(text: &str) -> Result<(), String> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        Err(e) => Err(format!("stdout: cannot write the results: {e}")),
+    }
+}
+
+/// Most worker threads per core that `--jobs` may ask for.
+pub const JOBS_PER_CORE: usize = 4;
+
+/// Build the global thread pool for `--jobs`, capped at the number of
+/// samples and at [`JOBS_PER_CORE`] per core (said on stderr when capped).
+pub fn set_jobs(jobs: Option<usize>, samples: usize) -> Result<(), String> {
+    let Some(asked) = jobs else { return Ok(()) };
+    if asked == 0 {
+        return Err("--jobs 0: need at least 1 worker thread".into());
+    }
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let cap = (JOBS_PER_CORE * cores).min(samples.max(1));
+    let j = asked.min(cap);
+    if j < asked {
+        eprintln!(
+            "note: --jobs {asked} capped to {j} (at most {JOBS_PER_CORE} per core on {cores} core(s), and no more than the {samples} sample(s))"
+        );
+    }
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(j)
+        .build_global()
+        .map_err(|e| format!("--jobs: {e}"))
+}
+
+/// Documented range of `--increments`.
+pub const INCREMENTS: std::ops::RangeInclusive<usize> = 1..=100_000;
+
+/// `--increments` inside [`INCREMENTS`].
+pub fn check_increments(n: usize) -> Result<(), String> {
+    if INCREMENTS.contains(&n) {
+        Ok(())
+    } else {
+        Err(format!(
+            "--increments {n}: out of range, need {}..={} load increments",
+            INCREMENTS.start(),
+            INCREMENTS.end()
+        ))
+    }
 }
 
 pub fn vector3(name: &str, v: Option<Vec<f64>>) -> Result<nalgebra::Vector3<f64>, String> {
@@ -62,9 +114,8 @@ pub fn finite3(name: &str, v: Option<Vec<f64>>) -> Result<nalgebra::Vector3<f64>
 }
 
 pub fn print_json<T: serde::Serialize>(v: &T) -> Result<(), String> {
-    println!(
-        "{}",
+    emit(&format!(
+        "{}\n",
         serde_json::to_string_pretty(v).map_err(|e| e.to_string())?
-    );
-    Ok(())
+    ))
 }

@@ -7,7 +7,13 @@ pub fn check(args: CheckArgs) -> Result<(), String> {
     let mut failed = 0;
     for path in &scenes {
         match kinrepro::error::load_coupling(path) {
-            Ok(c) => println!("{}", kinrepro::report::check::check_summary(&c)),
+            Ok(c) => {
+                let moves = kinrepro::study::runner::friction_moves_pose(&c, &Default::default())
+                    .map_err(|e| e.to_string())?;
+                let note = kinrepro::report::check::seating_note(&c, moves);
+                let summary = kinrepro::report::check::check_summary(&c);
+                super::emit(&format!("{summary}{note}\n"))?
+            }
             Err(e) => {
                 eprintln!("error: {e}");
                 failed += 1;
@@ -29,6 +35,5 @@ pub fn expand(args: ExpandArgs) -> Result<(), String> {
     // The explicit form must assemble too.
     let explicit = kinrepro::scene::Scene::parse(&text, &file).map_err(|e| e.to_string())?;
     kinrepro::assembly::Coupling::new(&explicit).map_err(|e| format!("{file}: {e}"))?;
-    print!("{text}");
-    Ok(())
+    super::emit(&text)
 }

@@ -10,6 +10,7 @@ pub fn run(args: RunArgs) -> Result<(), String> {
         increments,
         solver,
         trace,
+        force,
         offset,
         tilt,
         json,
@@ -20,8 +21,9 @@ pub fn run(args: RunArgs) -> Result<(), String> {
     {
         return Err("--trace, --offset and --tilt need --solver dynamic".to_string());
     }
+    check_increments(increments)?;
     let opts = kinrepro::solve::SolverOptions {
-        increments: increments.max(1),
+        increments,
         ..Default::default()
     };
     let dyn_opts = DynamicOptions {
@@ -44,11 +46,10 @@ pub fn run(args: RunArgs) -> Result<(), String> {
     let seating = match (&trace, solver) {
         (Some(path), SolverKind::Dynamic) => {
             let name = path.display().to_string();
-            let f = std::fs::File::create(path)
-                .map_err(|e| format!("{name}: cannot create the trace file: {e}"))?;
-            let mut w =
-                kinrepro::report::trace::TraceWriter::new(std::io::BufWriter::new(f), &coupling)
-                    .map_err(|e| format!("{name}: {e}"))?;
+            let mut trace_file = kinrepro::report::atomic::AtomicFile::create(path, force)
+                .map_err(|e| format!("--trace: {e}"))?;
+            let mut w = kinrepro::report::trace::TraceWriter::new(trace_file.writer(), &coupling)
+                .map_err(|e| format!("{name}: {e}"))?;
             let mut io_err = None;
             let result = seat_traced(&coupling, &mu, &dyn_opts, &mut |s| {
                 if io_err.is_none() {
@@ -59,6 +60,7 @@ pub fn run(args: RunArgs) -> Result<(), String> {
                 return Err(format!("{name}: writing the trace failed: {e}"));
             }
             w.finish().map_err(|e| format!("{name}: {e}"))?;
+            trace_file.commit().map_err(|e| e.to_string())?;
             result.map_err(|e| format!("{file}: {e} (trace written to {name})"))?
         }
         _ => seat(&mu)?,
@@ -75,12 +77,8 @@ pub fn run(args: RunArgs) -> Result<(), String> {
         },
     );
     if json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
-        );
+        print_json(&report)
     } else {
-        print!("{}", report.table());
+        emit(&report.table())
     }
-    Ok(())
 }

@@ -1,59 +1,203 @@
 //! `kinrepro study` and `kinrepro merge`: reproducibility studies.
 
+use kinrepro::assembly::Coupling;
 use kinrepro::report::study::{StudyReport, VariantReport};
+use kinrepro::report::study_files::{SamplesCsv, samples_file_name};
+use kinrepro::report::study_stream::{STREAM_ABOVE, StreamStats, streams};
 use kinrepro::study::Shard;
-use kinrepro::study::runner::{StartBounds, StudyOptions, Variation, design_for, run_variant};
+use kinrepro::study::runner::{
+    StartBounds, StudyOptions, VariantRun, Variation, design_for, recorded_output_names,
+    run_chunked, run_variant,
+};
 
 use super::*;
 use crate::args::*;
 
+/// Rows seated per chunk of a streamed study.
+const CHUNK: usize = 8192;
+
 pub fn study(args: StudyArgs) -> Result<(), String> {
-    let StudyArgs {
-        scenes,
-        samples,
-        sampler,
-        seed,
-        jobs,
-        format,
-        out,
-        shard,
-        increments,
-        solver,
-        vary,
-        offset_bounds,
-        tilt_bounds,
-        sensitivity,
-        sobol_samples,
-        replicates,
-    } = args;
-    if let Some(j) = jobs {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(j.max(1))
-            .build_global()
-            .map_err(|e| format!("--jobs: {e}"))?;
+    let opts = options(&args)?;
+    let couplings = args
+        .scenes
+        .iter()
+        .map(|p| kinrepro::error::load_coupling(p).map_err(|e| e.to_string()))
+        .collect::<Result<Vec<_>, _>>()?;
+    if args.sensitivity && args.sobol_samples < 2 {
+        return Err("--sobol-samples: the base sample size must be at least 2".into());
     }
-    if sampler == Some(kinrepro::study::Sampler::Corners) && samples.is_some() {
+    // Sobol indices need the whole design in one run (not per shard).
+    let sobol = args.sensitivity && opts.shard.count == 1;
+    let mut total = 0;
+    let mut streamed = false;
+    for c in &couplings {
+        kinrepro::study::runner::check_options(c, &opts).map_err(|e| e.to_string())?;
+        let d = design_for(c, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?;
+        total += opts
+            .shard
+            .range(d.n)
+            .map_err(|e| format!("--shard: {e}"))?
+            .len();
+        streamed |= streams(&d) && opts.shard.count == 1;
+        if sobol {
+            total += args.sobol_samples * (d.dims + 2);
+        }
+    }
+    if streamed && opts.sensitivity {
+        return Err(format!(
+            "--sensitivity keeps every sample in memory: not available for Monte Carlo studies above {STREAM_ABOVE} samples"
+        ));
+    }
+    set_jobs(args.jobs, total)?;
+    let bar = progress(total)?;
+    let mut variants = Vec::new();
+    let mut pending_csv = Vec::new();
+    for (i, c) in couplings.iter().enumerate() {
+        let d = design_for(c, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?;
+        if streams(&d) && opts.shard.count == 1 {
+            let (v, csv) = streamed_variant(i, c, &opts, &args, &|| bar.inc(1))?;
+            variants.push(v);
+            pending_csv.extend(csv);
+        } else {
+            let run = run_variant(c, &opts, &|| bar.inc(1)).map_err(|e| e.to_string())?;
+            let mut v =
+                VariantReport::new(c, run, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?;
+            if sobol {
+                let r = kinrepro::study::sensitivity::sobol_run::run_sobol(
+                    c,
+                    &opts,
+                    args.sobol_samples,
+                    &|| bar.inc(1),
+                )
+                .map_err(|e| e.to_string())?;
+                kinrepro::report::sensitivity::attach_sobol(&mut v, &r);
+            }
+            variants.push(v);
+        }
+    }
+    bar.finish_and_clear();
+    let report = StudyReport::new(variants, opts.shard);
+    // Results first: a failed file write must not lose them.
+    print_study(&report, args.format)?;
+    for csv in pending_csv {
+        csv.commit().map_err(|e| e.to_string())?;
+    }
+    if let Some(dir) = &args.out {
+        for f in report
+            .write_files(dir, args.force, streamed)
+            .map_err(|e| e.to_string())?
+        {
+            eprintln!("wrote {f}");
+        }
+    }
+    refuse_unseated(&report, args.allow_unseated)
+}
+
+/// A study whose coupling cannot seat fails unless `--allow-unseated`.
+fn refuse_unseated(report: &StudyReport, allow: bool) -> Result<(), String> {
+    let bad = report.cannot_seat();
+    if bad.is_empty() {
+        return Ok(());
+    }
+    if allow {
+        for b in &bad {
+            eprintln!("warning: cannot seat: {b}");
+        }
+        return Ok(());
+    }
+    Err(format!(
+        "cannot seat: {} (pass --allow-unseated to accept this result)",
+        bad.join("; ")
+    ))
+}
+
+/// One scene's Monte Carlo study streamed in chunks: moments in sample
+/// order, the per-sample CSV (if `--out`) written as it goes.
+fn streamed_variant(
+    i: usize,
+    c: &Coupling,
+    opts: &StudyOptions,
+    args: &StudyArgs,
+    tick: &(dyn Fn() + Sync),
+) -> Result<(VariantReport, Option<SamplesCsv>), String> {
+    let file = &c.scene.file;
+    let d = design_for(c, opts).map_err(|e| format!("{file}: {e}"))?;
+    let names = recorded_output_names(c, &opts.variation);
+    let shell = VariantRun {
+        design: d,
+        shard: opts.shard,
+        output_names: names.clone(),
+        records: Vec::new(),
+    };
+    let mut v = VariantReport::unfinished(c, shell, opts);
+    let mut csv = match &args.out {
+        Some(dir) => {
+            std::fs::create_dir_all(dir)
+                .map_err(|e| format!("{}: cannot create the folder: {e}", dir.display()))?;
+            let path = dir.join(samples_file_name(i, &v));
+            Some(SamplesCsv::create(&path, &v, args.force).map_err(|e| e.to_string())?)
+        }
+        None => None,
+    };
+    let mut st = StreamStats::new(names.len());
+    let mut failure: Option<String> = None;
+    run_chunked(c, opts, CHUNK, tick, &mut |records| {
+        let step = st
+            .push(&records, &names)
+            .map_err(|e| format!("{file}: {e}"))
+            .and_then(|()| match csv.as_mut() {
+                Some(w) => records.iter().try_for_each(|r| {
+                    w.push(&kinrepro::report::study::StudyRecord {
+                        index: r.index,
+                        physical: opts.variation.sample(c, &r.inputs).physical,
+                        inputs: r.inputs.clone(),
+                        outputs: r.outputs.clone(),
+                    })
+                    .map_err(|e| e.to_string())
+                }),
+                None => Ok(()),
+            });
+        if let Err(e) = step {
+            failure = Some(e);
+            return Err(kinrepro::study::runner::RunError::Options {
+                file: file.clone(),
+                reason: "stopped".into(),
+            });
+        }
+        Ok(())
+    })
+    .map_err(|e| failure.clone().unwrap_or_else(|| e.to_string()))?;
+    v.set_moment_stats(&st)
+        .map_err(|e| format!("{file}: {e}"))?;
+    Ok((v, csv))
+}
+
+/// The study options from the command line.
+fn options(args: &StudyArgs) -> Result<StudyOptions, String> {
+    if args.sampler == Some(kinrepro::study::Sampler::Corners) && args.samples.is_some() {
         return Err(
             "--samples does not apply to --sampler corners: the corner design has all 2^d extremes"
                 .into(),
         );
     }
-    let opts = StudyOptions {
-        sampler,
-        samples,
-        seed,
-        shard: shard.unwrap_or_else(Shard::whole),
-        method: match solver {
+    check_increments(args.increments)?;
+    let vary = &args.vary;
+    Ok(StudyOptions {
+        sampler: args.sampler,
+        samples: args.samples,
+        seed: args.seed,
+        shard: args.shard.unwrap_or_else(Shard::whole),
+        method: match args.solver {
             SolverKind::QuasiStatic => {
                 kinrepro::solve::Method::QuasiStatic(kinrepro::solve::SolverOptions {
-                    increments: increments.max(1),
+                    increments: args.increments,
                     ..Default::default()
                 })
             }
             SolverKind::Dynamic => kinrepro::solve::Method::Dynamic(Default::default()),
         },
-        sensitivity,
-        replicates,
+        sensitivity: args.sensitivity,
+        replicates: args.replicates,
         variation: Variation {
             friction: vary.contains(&VaryKind::Friction),
             preload: vary.contains(&VaryKind::Preload),
@@ -67,76 +211,32 @@ pub fn study(args: StudyArgs) -> Result<(), String> {
                     Ok(v)
                 };
                 Some(StartBounds {
-                    offset: bounds("offset-bounds", offset_bounds)?,
-                    tilt: bounds("tilt-bounds", tilt_bounds)?,
+                    offset: bounds("offset-bounds", args.offset_bounds.clone())?,
+                    tilt: bounds("tilt-bounds", args.tilt_bounds.clone())?,
                 })
             } else {
-                if offset_bounds.is_some() || tilt_bounds.is_some() {
+                if args.offset_bounds.is_some() || args.tilt_bounds.is_some() {
                     return Err("--offset-bounds and --tilt-bounds need --vary start".into());
                 }
                 None
             },
         },
-    };
-    let couplings = scenes
-        .iter()
-        .map(|p| kinrepro::error::load_coupling(p).map_err(|e| e.to_string()))
-        .collect::<Result<Vec<_>, _>>()?;
-    if sensitivity && sobol_samples < 2 {
-        return Err("--sobol-samples: the base sample size must be at least 2".into());
+    })
+}
+
+/// The progress bar (on a terminal only).
+fn progress(total: usize) -> Result<indicatif::ProgressBar, String> {
+    if !std::io::IsTerminal::is_terminal(&std::io::stderr()) {
+        return Ok(indicatif::ProgressBar::hidden());
     }
-    // Sobol indices need the whole design in one run (not per shard).
-    let sobol = sensitivity && opts.shard.count == 1;
-    let mut total = 0;
-    for c in &couplings {
-        kinrepro::study::runner::check_options(c, &opts).map_err(|e| e.to_string())?;
-        let d = design_for(c, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?;
-        total += opts
-            .shard
-            .range(d.n)
-            .map_err(|e| format!("--shard: {e}"))?
-            .len();
-        if sobol {
-            total += sobol_samples * (d.dims + 2);
-        }
-    }
-    let bar = if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
-        let b = indicatif::ProgressBar::new(total as u64);
-        b.set_style(
-            indicatif::ProgressStyle::with_template(
-                "{elapsed_precise} [{bar:40}] {pos}/{len} seatings ({eta})",
-            )
-            .map_err(|e| e.to_string())?,
-        );
-        b
-    } else {
-        indicatif::ProgressBar::hidden()
-    };
-    let mut variants = Vec::new();
-    for c in &couplings {
-        let run = run_variant(c, &opts, &|| bar.inc(1)).map_err(|e| e.to_string())?;
-        let mut v =
-            VariantReport::new(c, run, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?;
-        if sobol {
-            let r = kinrepro::study::sensitivity::sobol_run::run_sobol(
-                c,
-                &opts,
-                sobol_samples,
-                &|| bar.inc(1),
-            )
-            .map_err(|e| e.to_string())?;
-            kinrepro::report::sensitivity::attach_sobol(&mut v, &r);
-        }
-        variants.push(v);
-    }
-    bar.finish_and_clear();
-    let report = StudyReport::new(variants, opts.shard);
-    if let Some(dir) = out {
-        for f in report.write_files(&dir, &couplings)? {
-            eprintln!("wrote {f}");
-        }
-    }
-    print_study(&report, format)
+    let b = indicatif::ProgressBar::new(total as u64);
+    b.set_style(
+        indicatif::ProgressStyle::with_template(
+            "{elapsed_precise} [{bar:40}] {pos}/{len} seatings ({eta})",
+        )
+        .map_err(|e| e.to_string())?,
+    );
+    Ok(b)
 }
 
 pub fn merge(args: MergeArgs) -> Result<(), String> {
@@ -146,10 +246,12 @@ pub fn merge(args: MergeArgs) -> Result<(), String> {
         .map(|p| {
             let text = std::fs::read_to_string(p)
                 .map_err(|e| format!("{}: cannot read: {e}", p.display()))?;
-            serde_json::from_str::<StudyReport>(&text)
-                .map_err(|e| format!("{}: not a kinrepro study JSON: {e}", p.display()))
+            let doc = serde_json::from_str::<StudyReport>(&text)
+                .map_err(|e| format!("{}: not a kinrepro study JSON: {e}", p.display()))?;
+            Ok((p.display().to_string(), doc))
         })
-        .collect::<Result<Vec<_>, _>>()?;
-    let merged = StudyReport::merge(docs).map_err(|e| format!("merge: {e}"))?;
-    print_study(&merged, format)
+        .collect::<Result<Vec<_>, String>>()?;
+    let merged = kinrepro::report::merge::merge_parts(docs).map_err(|e| format!("merge: {e}"))?;
+    print_study(&merged, format)?;
+    refuse_unseated(&merged, true)
 }

@@ -1,0 +1,195 @@
+//! `kinrepro merge`: shard parts of one study back into the document of one
+//! run. Parts must carry the current output schema and equal study
+//! fingerprints ([`Fingerprint`]); a refusal names the part and the field
+//! that differs, or the shards (and their sample ranges) that are missing.
+//! The statistics are recomputed from the records sorted by sample index, so
+//! the merged result equals one run bit for bit.
+
+use thiserror::Error;
+
+use crate::report::provenance::{Fingerprint, SCHEMA_VERSION};
+use crate::report::study::{StudyRecord, StudyReport, VariantReport};
+use crate::study::stats::{ShardFile, merge, verify_inputs};
+use crate::study::{Shard, StudyError};
+
+/// Why parts could not be merged (one line each).
+#[derive(Debug, Error)]
+pub enum MergeError {
+    #[error("no parts to merge")]
+    Empty,
+    #[error(
+        "{file}: output schema {found}, this kinrepro reads schema {SCHEMA_VERSION} (re-run the shard with this version)"
+    )]
+    Schema { file: String, found: u32 },
+    #[error("{file}: holds {found} scene(s), {first} holds {expected}: not parts of one study")]
+    VariantCount {
+        file: String,
+        first: String,
+        found: usize,
+        expected: usize,
+    },
+    #[error("{file}: not a part of the study of {first}: {scene}: {field} differs")]
+    Fingerprint {
+        file: String,
+        first: String,
+        scene: String,
+        field: String,
+    },
+    #[error("{file}: shard {shard} of {count} shards, {first} has {expected} shards")]
+    ShardCount {
+        file: String,
+        first: String,
+        shard: Shard,
+        count: usize,
+        expected: usize,
+    },
+    #[error("{file}: shard {shard} is also in {other}")]
+    DuplicateShard {
+        file: String,
+        other: String,
+        shard: Shard,
+    },
+    #[error("{file}: invalid shard {shard}")]
+    BadShard { file: String, shard: Shard },
+    #[error("{0} missing")]
+    MissingShards(String),
+    #[error("{scene}: {source}")]
+    Records {
+        scene: String,
+        #[source]
+        source: StudyError,
+    },
+}
+
+/// Merge named parts (file name, document) in any order.
+pub fn merge_parts(parts: Vec<(String, StudyReport)>) -> Result<StudyReport, MergeError> {
+    let (first_file, first) = parts.first().ok_or(MergeError::Empty)?;
+    for (file, p) in &parts {
+        if p.schema_version != SCHEMA_VERSION {
+            return Err(MergeError::Schema {
+                file: file.clone(),
+                found: p.schema_version,
+            });
+        }
+        check_same_study(first_file, first, file, p)?;
+    }
+    check_shards(&parts)?;
+    let mut variants = Vec::new();
+    for (j, proto) in first.variants.iter().enumerate() {
+        let mine: Vec<&VariantReport> = parts.iter().map(|(_, p)| &p.variants[j]).collect();
+        variants.push(
+            merge_variant(proto, &mine).map_err(|source| MergeError::Records {
+                scene: proto.scene.clone(),
+                source,
+            })?,
+        );
+    }
+    Ok(StudyReport::new(variants, Shard::whole()))
+}
+
+/// Same number of variants and equal fingerprints, variant by variant.
+fn check_same_study(
+    first_file: &str,
+    first: &StudyReport,
+    file: &str,
+    p: &StudyReport,
+) -> Result<(), MergeError> {
+    if p.variants.len() != first.variants.len() {
+        return Err(MergeError::VariantCount {
+            file: file.to_string(),
+            first: first_file.to_string(),
+            found: p.variants.len(),
+            expected: first.variants.len(),
+        });
+    }
+    for (a, b) in first.variants.iter().zip(&p.variants) {
+        let fa: &Fingerprint = &a.fingerprint;
+        if let Some(field) = fa.first_difference(&b.fingerprint) {
+            return Err(MergeError::Fingerprint {
+                file: file.to_string(),
+                first: first_file.to_string(),
+                scene: b.scene.clone(),
+                field,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Every shard 1..=N exactly once, N the same in every part.
+fn check_shards(parts: &[(String, StudyReport)]) -> Result<(), MergeError> {
+    let (first_file, first) = &parts[0];
+    let count = first.shard.count;
+    let mut seen: Vec<Option<&str>> = vec![None; count];
+    for (file, p) in parts {
+        if p.shard.count != count {
+            return Err(MergeError::ShardCount {
+                file: file.clone(),
+                first: first_file.clone(),
+                shard: p.shard,
+                count: p.shard.count,
+                expected: count,
+            });
+        }
+        if p.shard.index == 0 || p.shard.index > count {
+            return Err(MergeError::BadShard {
+                file: file.clone(),
+                shard: p.shard,
+            });
+        }
+        let slot = &mut seen[p.shard.index - 1];
+        if let Some(other) = slot {
+            return Err(MergeError::DuplicateShard {
+                file: file.clone(),
+                other: other.to_string(),
+                shard: p.shard,
+            });
+        }
+        *slot = Some(file);
+    }
+    let n = first.variants.first().map_or(0, |v| v.samples);
+    let missing: Vec<String> = (1..=count)
+        .filter(|i| seen[i - 1].is_none())
+        .map(|i| {
+            let s = Shard { index: i, count };
+            match s.range(n) {
+                Ok(r) if !r.is_empty() => {
+                    format!("shard {s} (samples {}..{})", r.start, r.end - 1)
+                }
+                _ => format!("shard {s} (no samples)"),
+            }
+        })
+        .collect();
+    if missing.is_empty() {
+        Ok(())
+    } else {
+        Err(MergeError::MissingShards(missing.join(", ")))
+    }
+}
+
+/// The records of one variant from every part, checked against the
+/// regenerated design, with the statistics recomputed.
+fn merge_variant(
+    proto: &VariantReport,
+    parts: &[&VariantReport],
+) -> Result<VariantReport, StudyError> {
+    let files: Vec<ShardFile> = parts
+        .iter()
+        .map(|v| ShardFile {
+            design: v.design,
+            shard: v.shard,
+            output_names: v.output_names.clone(),
+            records: v.records.iter().map(StudyRecord::sample).collect(),
+        })
+        .collect();
+    let merged = merge(files)?;
+    verify_inputs(&merged)?;
+    let mut records: Vec<StudyRecord> = parts.iter().flat_map(|v| v.records.clone()).collect();
+    records.sort_by_key(|r| r.index);
+    let mut v = proto.clone();
+    v.partial = false;
+    v.shard = Shard::whole();
+    v.records = records;
+    v.finish()?;
+    Ok(v)
+}

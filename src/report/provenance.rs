@@ -1,0 +1,204 @@
+//! What produced a study's output: kinrepro's version, the output schema,
+//! and the study fingerprint that `merge` compares across shard parts.
+//!
+//! The fingerprint holds every setting a shard's numbers depend on: the
+//! resolved scene (its content, hashed, plus the friction and preload values
+//! named separately so that a refusal can name them), the solver and its
+//! settings, the design (sampler, seed, sample count), the varied inputs and
+//! kinrepro's version. Two parts belong to one study exactly when their
+//! fingerprints are equal.
+
+use serde::{Deserialize, Serialize};
+
+use crate::assembly::Coupling;
+use crate::study::DesignSpec;
+use crate::study::runner::StudyOptions;
+
+/// Version of the output schema (docs/output.md). 2: phi_z evaluated, JSON
+/// records with `inputs_si` and `design_u`, provenance and fingerprint.
+pub const SCHEMA_VERSION: u32 = 2;
+
+/// kinrepro's version (Cargo.toml).
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+/// The settings one study's numbers depend on.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Fingerprint {
+    pub kinrepro_version: String,
+    /// FNV-1a 64 hash (hex) of the resolved scene, file path excluded and the
+    /// `[study]` defaults replaced by the design actually run.
+    pub scene_content: String,
+    pub scene_name: String,
+    pub solver: String,
+    /// The solver's settings (increments, tolerances, ...), as text.
+    pub solver_settings: String,
+    pub sampler: String,
+    pub seed: u64,
+    pub samples: usize,
+    /// Independent LHS replicates of the design (1 for MC, corners, a single LHS).
+    #[serde(default = "one")]
+    pub replicates: usize,
+    /// Names of the varied inputs (design columns), in row order.
+    pub vary: Vec<String>,
+    pub mu_static: f64,
+    pub spread: f64,
+    pub dynamic_ratio: f64,
+    pub tangential_law: String,
+    /// The sliding-coefficient reading (`switch` or `decay` with its coefficient).
+    #[serde(default)]
+    pub friction_law: String,
+    /// Preload force [N].
+    pub preload_n: f64,
+    /// Preload point [m].
+    pub preload_point_m: [f64; 3],
+    /// Preload direction (unit vector).
+    pub preload_direction: [f64; 3],
+    /// Start-pose bounds (offset [m], tilt [rad]) when the start varies.
+    pub start_bounds: Option<[[f64; 3]; 2]>,
+}
+
+impl Fingerprint {
+    /// The fingerprint of one scene's study run with `opts` on `design`.
+    pub fn new(coupling: &Coupling, opts: &StudyOptions, design: &DesignSpec) -> Self {
+        let s = &coupling.scene;
+        let mut resolved = s.clone();
+        resolved.file = String::new();
+        resolved.study.sampler = design.sampler;
+        resolved.study.samples = design.n;
+        resolved.study.seed = design.seed;
+        let p = &s.preload;
+        Fingerprint {
+            kinrepro_version: VERSION.to_string(),
+            scene_content: format!("{:016x}", fnv1a64(format!("{resolved:?}").as_bytes())),
+            scene_name: s.name.clone(),
+            solver: opts.method.name().to_string(),
+            solver_settings: format!("{:?}", opts.method),
+            sampler: design.sampler.to_string(),
+            seed: design.seed,
+            samples: design.n,
+            replicates: design.replicates,
+            vary: opts.variation.input_names(coupling),
+            mu_static: s.friction.mu_static,
+            spread: s.friction.spread,
+            dynamic_ratio: s.friction.dynamic_ratio,
+            tangential_law: format!("{:?}", s.friction.tangential_law),
+            friction_law: format!("{:?}", s.friction.law),
+            preload_n: p.force,
+            preload_point_m: p.point.into(),
+            preload_direction: p.direction.into(),
+            start_bounds: opts
+                .variation
+                .start
+                .map(|b| [b.offset.into(), b.tilt.into()]),
+        }
+    }
+
+    /// The first field in which `other` differs, as `name (this vs other)`;
+    /// the named settings come before the scene content, so that a changed
+    /// friction coefficient is named as such.
+    pub fn first_difference(&self, other: &Fingerprint) -> Option<String> {
+        let fields: [(&str, String, String); 19] = [
+            (
+                "kinrepro_version",
+                q(&self.kinrepro_version),
+                q(&other.kinrepro_version),
+            ),
+            ("solver", q(&self.solver), q(&other.solver)),
+            (
+                "solver_settings",
+                q(&self.solver_settings),
+                q(&other.solver_settings),
+            ),
+            ("sampler", q(&self.sampler), q(&other.sampler)),
+            ("seed", d(&self.seed), d(&other.seed)),
+            ("samples", d(&self.samples), d(&other.samples)),
+            ("replicates", d(&self.replicates), d(&other.replicates)),
+            ("vary", d(&self.vary), d(&other.vary)),
+            ("mu_static", d(&self.mu_static), d(&other.mu_static)),
+            ("spread", d(&self.spread), d(&other.spread)),
+            (
+                "dynamic_ratio",
+                d(&self.dynamic_ratio),
+                d(&other.dynamic_ratio),
+            ),
+            (
+                "tangential_law",
+                q(&self.tangential_law),
+                q(&other.tangential_law),
+            ),
+            (
+                "friction_law",
+                q(&self.friction_law),
+                q(&other.friction_law),
+            ),
+            ("preload force", d(&self.preload_n), d(&other.preload_n)),
+            (
+                "preload point",
+                d(&self.preload_point_m),
+                d(&other.preload_point_m),
+            ),
+            (
+                "preload direction",
+                d(&self.preload_direction),
+                d(&other.preload_direction),
+            ),
+            (
+                "start_bounds",
+                d(&self.start_bounds),
+                d(&other.start_bounds),
+            ),
+            ("scene name", q(&self.scene_name), q(&other.scene_name)),
+            (
+                "scene content",
+                q(&self.scene_content),
+                q(&other.scene_content),
+            ),
+        ];
+        fields
+            .into_iter()
+            .find(|(_, a, b)| a != b)
+            .map(|(name, a, b)| format!("{name} ({a} vs {b})"))
+    }
+}
+
+fn one() -> usize {
+    1
+}
+
+fn q(s: &str) -> String {
+    format!("\"{s}\"")
+}
+
+fn d<T: std::fmt::Debug>(v: &T) -> String {
+    format!("{v:?}")
+}
+
+/// FNV-1a, 64 bit (Fowler, Noll, Vo; offset basis 0xcbf29ce484222325,
+/// prime 0x100000001b3): a stable content hash (std's hasher may change
+/// between Rust releases).
+pub fn fnv1a64(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
+/// One line naming what produced an output: version, schema, solver,
+/// sampler, seed, samples and the varied quantities.
+pub fn produced_by(solver: &str, sampler: &str, seed: &str, samples: &str, vary: &str) -> String {
+    format!(
+        "kinrepro {VERSION} (output schema {SCHEMA_VERSION}), solver {solver}, sampler {sampler}, seed {seed}, samples {samples}, vary {vary}"
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fnv1a64;
+
+    #[test]
+    fn fnv1a64_matches_published_vectors() {
+        // Test vectors of the FNV reference (Noll, "FNV hash", test suite).
+        assert_eq!(fnv1a64(b""), 0xcbf2_9ce4_8422_2325);
+        assert_eq!(fnv1a64(b"a"), 0xaf63_dc4c_8601_ec8c);
+        assert_eq!(fnv1a64(b"foobar"), 0x8594_4171_f739_67e8);
+    }
+}

@@ -1,0 +1,74 @@
+//! The values a study reports per sample and per DOF: [`StudyRecord`] (one
+//! sample: physical inputs, design coordinates, outputs, all SI) and
+//! [`Dofs`] (six DOFs in nm and nrad). Field meanings: docs/output.md.
+
+use serde::{Deserialize, Serialize};
+
+use crate::study::stats::SampleRecord;
+
+/// Six DOFs in human units: x, y, z [nm], phi_x, phi_y, phi_z [nrad]
+/// (phi_z: clocking about z).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Dofs {
+    pub x_nm: f64,
+    pub y_nm: f64,
+    pub z_nm: f64,
+    pub phi_x_nrad: f64,
+    pub phi_y_nrad: f64,
+    pub phi_z_nrad: f64,
+}
+
+impl Dofs {
+    /// From six SI values (m, m, m, rad, rad, rad).
+    pub fn from_si(v: [f64; 6]) -> Self {
+        Dofs {
+            x_nm: v[0] * 1e9,
+            y_nm: v[1] * 1e9,
+            z_nm: v[2] * 1e9,
+            phi_x_nrad: v[3] * 1e9,
+            phi_y_nrad: v[4] * 1e9,
+            phi_z_nrad: v[5] * 1e9,
+        }
+    }
+
+    /// The six values in nm and nrad, in the order of `COMPONENTS`.
+    pub fn values(&self) -> [f64; 6] {
+        [
+            self.x_nm,
+            self.y_nm,
+            self.z_nm,
+            self.phi_x_nrad,
+            self.phi_y_nrad,
+            self.phi_z_nrad,
+        ]
+    }
+}
+
+/// One sample of a study as written to JSON: the physical values of the
+/// varied inputs (SI), the design coordinates in [0, 1] and the outputs (SI).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StudyRecord {
+    /// Row of the design, 0-based.
+    pub index: usize,
+    /// Physical input values in the order of the variant's `inputs`: mu_s
+    /// per contact (dimensionless), offsets [m], tilts [rad].
+    #[serde(rename = "inputs_si")]
+    pub physical: Vec<f64>,
+    /// Design coordinates of this row (unit hypercube, before mapping).
+    #[serde(rename = "design_u")]
+    pub inputs: Vec<f64>,
+    /// One value per `output_names` entry [m or rad].
+    #[serde(rename = "outputs_si")]
+    pub outputs: Vec<f64>,
+}
+
+impl StudyRecord {
+    /// The statistics' view of this record (design coordinates and outputs).
+    pub fn sample(&self) -> SampleRecord {
+        SampleRecord {
+            index: self.index,
+            inputs: self.inputs.clone(),
+            outputs: self.outputs.clone(),
+        }
+    }
+}

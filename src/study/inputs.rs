@@ -1,0 +1,168 @@
+//! The varied quantities of a study ([`Input`], one design column each) and
+//! the manufacturing errors of one sample ([`Tolerances`]); see
+//! `study::runner` for how a design row maps onto them.
+
+use nalgebra::{UnitQuaternion, Vector3};
+
+use crate::assembly::{AssemblyError, Coupling};
+use crate::scene::{Scene, SurfaceGeometry};
+
+/// One varied quantity: a column of the design.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Input {
+    /// Static coefficient of contact k (0-based).
+    Mu(usize),
+    /// Preload point offset along x (0) or y (1).
+    PreloadOffset(usize),
+    /// Preload direction tilt about x (0) or y (1).
+    PreloadTilt(usize),
+    /// Start pose: offset x, y, z (0-2), tilt x, y, z (3-5).
+    Start(usize),
+    /// Diameter error of ball b.
+    BallDiameter(usize),
+    /// Centre error of ball b along axis a.
+    BallPosition(usize, usize),
+    /// Shift of surface s along its nominal contact normal.
+    SurfaceNormal(usize),
+    /// Rotation of surface s about its horizontal axis through the contact point.
+    SurfaceTilt(usize),
+    /// Shift of the groove of ball b along x (0) or y (1).
+    GroovePosition(usize, usize),
+}
+
+impl Input {
+    /// True for the manufacturing tolerances (interchangeability inputs).
+    pub fn is_tolerance(&self) -> bool {
+        matches!(
+            self,
+            Input::BallDiameter(_)
+                | Input::BallPosition(..)
+                | Input::SurfaceNormal(_)
+                | Input::SurfaceTilt(_)
+                | Input::GroovePosition(..)
+        )
+    }
+
+    /// The column name (SI unit as suffix).
+    pub fn name(&self) -> String {
+        const XYZ: [&str; 3] = ["x", "y", "z"];
+        match *self {
+            Input::Mu(k) => format!("mu_{}", k + 1),
+            Input::PreloadOffset(a) => format!("preload_{}_m", XYZ[a]),
+            Input::PreloadTilt(a) => format!("preload_tilt_{}_rad", XYZ[a]),
+            Input::Start(j) => [
+                "offset_x_m",
+                "offset_y_m",
+                "offset_z_m",
+                "tilt_x_rad",
+                "tilt_y_rad",
+                "tilt_z_rad",
+            ][j]
+                .to_string(),
+            Input::BallDiameter(b) => format!("ball_{}_diameter_m", b + 1),
+            Input::BallPosition(b, a) => format!("ball_{}_{}_m", b + 1, XYZ[a]),
+            Input::SurfaceNormal(s) => format!("surface_{}_normal_m", s + 1),
+            Input::SurfaceTilt(s) => format!("surface_{}_tilt_rad", s + 1),
+            Input::GroovePosition(b, a) => format!("groove_{}_{}_m", b + 1, XYZ[a]),
+        }
+    }
+}
+
+/// Manufacturing errors of one sample: each value drawn within the
+/// scene's `[variation]` bounds.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tolerances {
+    /// Diameter error per ball [m].
+    pub ball_diameter: Vec<f64>,
+    /// Centre error per ball [m].
+    pub ball_position: Vec<Vector3<f64>>,
+    /// Shift of each surface along its nominal contact normal [m].
+    pub surface_normal: Vec<f64>,
+    /// Rotation of each surface about its tilt axis [rad].
+    pub surface_tilt: Vec<f64>,
+    /// Shift of each ball's groove, x and y (z = 0) [m].
+    pub groove_position: Vec<Vector3<f64>>,
+}
+
+impl Tolerances {
+    /// No error anywhere.
+    pub fn zero(coupling: &Coupling) -> Self {
+        let (b, s) = (coupling.balls.len(), coupling.contacts.len());
+        Tolerances {
+            ball_diameter: vec![0.0; b],
+            ball_position: vec![Vector3::zeros(); b],
+            surface_normal: vec![0.0; s],
+            surface_tilt: vec![0.0; s],
+            groove_position: vec![Vector3::zeros(); b],
+        }
+    }
+
+    /// The scene with these errors applied (explicit geometry). Surface i
+    /// with nominal contact point p_i and normal n_i (at the touching
+    /// pose) is rotated by its tilt about the axis t_i = n_i x e_z
+    /// (normalised; e_x for a normal along z) through p_i — a positive
+    /// tilt turns the normal towards +z, i.e. flattens a flank, so equal
+    /// tilts of both flanks of a V widen its opening angle by twice the
+    /// tilt — then shifted by its normal error along n_i and by its
+    /// groove's x, y error. Ball k's centre moves by its position error and
+    /// its radius grows by half its diameter error.
+    pub fn apply(&self, coupling: &Coupling) -> Scene {
+        let mut scene = coupling.scene.clone();
+        for (k, b) in scene.balls.iter_mut().enumerate() {
+            b.centre += self.ball_position[k];
+            b.radius += 0.5 * self.ball_diameter[k];
+        }
+        for (i, s) in scene.surfaces.iter_mut().enumerate() {
+            let g = coupling.geometry(i, &coupling.touching_pose);
+            let n = g.normal;
+            let axis = n.cross(&Vector3::z());
+            let axis = if axis.norm() < 1e-9 {
+                Vector3::x()
+            } else {
+                axis.normalize()
+            };
+            let r = UnitQuaternion::from_scaled_axis(axis * self.surface_tilt[i]);
+            let shift = n * self.surface_normal[i] + self.groove_position[s.ball];
+            let moved = |x: Vector3<f64>| r * (x - g.point) + g.point + shift;
+            s.geometry = match s.geometry {
+                SurfaceGeometry::Plane { point, normal } => SurfaceGeometry::Plane {
+                    point: moved(point),
+                    normal: r * normal,
+                },
+                SurfaceGeometry::Cylinder {
+                    axis_point,
+                    direction,
+                    radius,
+                } => SurfaceGeometry::Cylinder {
+                    axis_point: moved(axis_point),
+                    direction: r * direction,
+                    radius,
+                },
+                SurfaceGeometry::Sphere { centre, radius } => SurfaceGeometry::Sphere {
+                    centre: moved(centre),
+                    radius,
+                },
+            };
+        }
+        scene
+    }
+
+    /// A bound on how far the perturbed balls may miss their surfaces at
+    /// the scene's pose (for [`Coupling::new_perturbed`]).
+    pub fn max_gap(&self, coupling: &Coupling) -> f64 {
+        let amax = |v: &[f64]| v.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
+        let vmax = |v: &[Vector3<f64>]| v.iter().fold(0.0_f64, |a, x| a.max(x.norm()));
+        let r = coupling.balls.iter().fold(0.0_f64, |a, b| a.max(b.radius));
+        1e-6 + 2.0
+            * (0.5 * amax(&self.ball_diameter)
+                + vmax(&self.ball_position)
+                + amax(&self.surface_normal)
+                + vmax(&self.groove_position)
+                + r * amax(&self.surface_tilt))
+    }
+
+    /// The perturbed coupling (touching pose solved for the perturbed geometry).
+    pub fn coupling(&self, coupling: &Coupling) -> Result<Coupling, AssemblyError> {
+        Coupling::new_perturbed(&self.apply(coupling), self.max_gap(coupling))
+    }
+}

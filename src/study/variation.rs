@@ -1,0 +1,267 @@
+//! What a study varies ([`Variation`]) and how one design row u in [0, 1]^d
+//! maps onto a [`Sample`]: friction per contact, preload, start pose and
+//! manufacturing tolerances (the mapping is described in `study::runner`).
+
+use nalgebra::{UnitQuaternion, Vector3};
+
+use super::inputs::{Input, Tolerances};
+use crate::assembly::Coupling;
+use crate::scene::Preload;
+use crate::solve::dynamic::StartPose;
+use crate::solve::nominal_mu;
+
+/// Bounds of a randomly drawn start pose of the moving half (dynamic solver).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StartBounds {
+    /// Half-widths of x and y, and the largest height z above the seat [m].
+    pub offset: Vector3<f64>,
+    /// Half-widths of the tilt about x, y, z [rad].
+    pub tilt: Vector3<f64>,
+}
+
+/// What a study varies from sample to sample.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Variation {
+    /// The six static friction coefficients (the paper's study).
+    pub friction: bool,
+    /// The preload point and direction, within the scene's `[variation]`
+    /// bounds (re-seating scatter: it changes every cycle).
+    pub preload: bool,
+    /// Manufacturing tolerances of balls and surfaces within the scene's
+    /// `[variation]` bounds (interchangeability: reported separately, each
+    /// sample a perturbed coupling seated at nominal friction and preload).
+    pub tolerances: bool,
+    /// The start pose (needs the dynamic solver).
+    pub start: Option<StartBounds>,
+}
+
+impl Default for Variation {
+    fn default() -> Self {
+        Variation {
+            friction: true,
+            preload: false,
+            tolerances: false,
+            start: None,
+        }
+    }
+}
+
+/// Everything one design row sets.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sample {
+    /// Static coefficients, one per contact.
+    pub mu: Vec<f64>,
+    /// Start pose (dynamic solver).
+    pub start: StartPose,
+    /// Preload of this cycle.
+    pub preload: Preload,
+    /// Manufacturing errors (when tolerances vary).
+    pub tolerances: Option<Tolerances>,
+    /// Each design column in SI units (mu, m, rad), in row order.
+    pub physical: Vec<f64>,
+}
+
+impl Variation {
+    /// The design columns, in row order: friction, preload, start,
+    /// tolerances. Preload and tolerance columns appear only for non-zero
+    /// bounds of the scene's `[variation]` table.
+    pub fn inputs(&self, coupling: &Coupling) -> Vec<Input> {
+        let b = &coupling.scene.variation;
+        let mut v = Vec::new();
+        if self.friction {
+            v.extend((0..coupling.contacts.len()).map(Input::Mu));
+        }
+        if self.preload {
+            for a in 0..2 {
+                if b.preload_offset_m[a] > 0.0 {
+                    v.push(Input::PreloadOffset(a));
+                }
+            }
+            if b.preload_tilt_rad > 0.0 {
+                v.extend([Input::PreloadTilt(0), Input::PreloadTilt(1)]);
+            }
+        }
+        if self.start.is_some() {
+            v.extend((0..6).map(Input::Start));
+        }
+        if self.tolerances {
+            let balls = coupling.balls.len();
+            let surfaces = coupling.contacts.len();
+            if b.ball_diameter_m > 0.0 {
+                v.extend((0..balls).map(Input::BallDiameter));
+            }
+            for k in 0..balls {
+                for a in 0..3 {
+                    if b.ball_position_m[a] > 0.0 {
+                        v.push(Input::BallPosition(k, a));
+                    }
+                }
+            }
+            if b.surface_normal_m > 0.0 {
+                v.extend((0..surfaces).map(Input::SurfaceNormal));
+            }
+            if b.surface_tilt_rad > 0.0 {
+                v.extend((0..surfaces).map(Input::SurfaceTilt));
+            }
+            for k in 0..balls {
+                for a in 0..2 {
+                    if b.groove_position_m[a] > 0.0 {
+                        v.push(Input::GroovePosition(k, a));
+                    }
+                }
+            }
+        }
+        v
+    }
+
+    /// Names of the design dimensions, in row order.
+    pub fn input_names(&self, coupling: &Coupling) -> Vec<String> {
+        self.inputs(coupling).iter().map(Input::name).collect()
+    }
+
+    /// True if one pair of halves re-seats differently from sample to
+    /// sample (friction, preload or start varied).
+    pub fn reseating(&self) -> bool {
+        self.friction || self.preload || self.start.is_some()
+    }
+
+    /// Static coefficients and start pose of one design row (of
+    /// `input_names().len()` coordinates).
+    pub fn map(&self, coupling: &Coupling, row: &[f64]) -> (Vec<f64>, StartPose) {
+        let s = self.sample(coupling, row);
+        (s.mu, s.start)
+    }
+
+    /// Everything one design row sets. Each column u in [0, 1] maps to
+    /// b (2u - 1), uniform in +-b (mu: mu0 + spread (2u - 1)); the start
+    /// pose as described in the module documentation.
+    pub fn sample(&self, coupling: &Coupling, row: &[f64]) -> Sample {
+        let inputs = self.inputs(coupling);
+        let b = coupling.scene.variation;
+        let f = &coupling.scene.friction;
+        let nominal = coupling.scene.preload;
+        let mut mu = nominal_mu(coupling);
+        let mut start_u = [0.5; 6];
+        let mut offset = Vector3::zeros();
+        let mut tilt = Vector3::zeros();
+        let mut tol = self.tolerances.then(|| Tolerances::zero(coupling));
+        let mut physical = Vec::with_capacity(inputs.len());
+        for (input, &u) in inputs.iter().zip(row) {
+            let c = 2.0 * u - 1.0;
+            let t = tol.as_mut();
+            let value = match (*input, t) {
+                (Input::Mu(k), _) => {
+                    mu[k] = f.mu_static + f.spread * c;
+                    mu[k]
+                }
+                (Input::PreloadOffset(a), _) => {
+                    offset[a] = b.preload_offset_m[a] * c;
+                    offset[a]
+                }
+                (Input::PreloadTilt(a), _) => {
+                    tilt[a] = b.preload_tilt_rad * c;
+                    tilt[a]
+                }
+                (Input::Start(j), _) => {
+                    start_u[j] = u;
+                    f64::NAN
+                }
+                (Input::BallDiameter(k), Some(t)) => {
+                    t.ball_diameter[k] = b.ball_diameter_m * c;
+                    t.ball_diameter[k]
+                }
+                (Input::BallPosition(k, a), Some(t)) => {
+                    t.ball_position[k][a] = b.ball_position_m[a] * c;
+                    t.ball_position[k][a]
+                }
+                (Input::SurfaceNormal(i), Some(t)) => {
+                    t.surface_normal[i] = b.surface_normal_m * c;
+                    t.surface_normal[i]
+                }
+                (Input::SurfaceTilt(i), Some(t)) => {
+                    t.surface_tilt[i] = b.surface_tilt_rad * c;
+                    t.surface_tilt[i]
+                }
+                (Input::GroovePosition(k, a), Some(t)) => {
+                    t.groove_position[k][a] = b.groove_position_m[a] * c;
+                    t.groove_position[k][a]
+                }
+                (_, None) => f64::NAN,
+            };
+            physical.push(value);
+        }
+        let start = match self.start {
+            Some(bounds) => start_pose(coupling, &bounds, &start_u),
+            None => StartPose::touching(),
+        };
+        if self.start.is_some() {
+            let values = [
+                start.offset.x,
+                start.offset.y,
+                start.offset.z,
+                start.tilt.x,
+                start.tilt.y,
+                start.tilt.z,
+            ];
+            for (input, v) in inputs.iter().zip(physical.iter_mut()) {
+                if let Input::Start(j) = input {
+                    *v = values[*j];
+                }
+            }
+        }
+        let preload = Preload {
+            force: nominal.force,
+            point: nominal.point + offset,
+            direction: UnitQuaternion::from_scaled_axis(tilt) * nominal.direction,
+            ramp_time: nominal.ramp_time,
+        };
+        Sample {
+            mu,
+            start,
+            preload,
+            tolerances: tol,
+            physical,
+        }
+    }
+}
+
+/// The start pose of design coordinates `u` (offset x, y, z, tilt x, y, z).
+fn start_pose(coupling: &Coupling, b: &StartBounds, u: &[f64; 6]) -> StartPose {
+    let tilted = StartPose {
+        offset: Vector3::new(
+            b.offset.x * (2.0 * u[0] - 1.0),
+            b.offset.y * (2.0 * u[1] - 1.0),
+            0.0,
+        ),
+        tilt: Vector3::new(
+            b.tilt.x * (2.0 * u[3] - 1.0),
+            b.tilt.y * (2.0 * u[4] - 1.0),
+            b.tilt.z * (2.0 * u[5] - 1.0),
+        ),
+    };
+    let mut s = lifted_clear(coupling, tilted);
+    s.offset.z += b.offset.z * u[2];
+    s
+}
+
+/// Gap every ball keeps from its surfaces when a start pose is lifted clear [m].
+pub const START_CLEARANCE: f64 = 1e-9;
+
+/// `start` raised along z just enough that every ball clears its surfaces by
+/// [`START_CLEARANCE`] (the height of first contact for that lateral offset
+/// and tilt): a drawn start height then counts from there, so that every
+/// drawn start lies above the seat.
+pub fn lifted_clear(coupling: &Coupling, mut start: StartPose) -> StartPose {
+    for _ in 0..50 {
+        let pose = coupling.touching_pose.moved(&start.offset, &start.tilt);
+        let (i, gap) = (0..coupling.contacts.len())
+            .map(|i| (i, coupling.geometry(i, &pose).gap))
+            .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+        if gap >= START_CLEARANCE * (1.0 - 1e-6) {
+            break;
+        }
+        let nz = coupling.geometry(i, &pose).normal.z.max(1e-3);
+        start.offset.z += (START_CLEARANCE - gap) / nz;
+    }
+    start
+}
