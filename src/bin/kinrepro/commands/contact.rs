@@ -8,6 +8,7 @@ use kinrepro::contact::{ContactPair, Friction};
 use kinrepro::material::Material;
 use kinrepro::report::contact::{HistoryProvenance, contact_table, history_csv};
 
+use super::emit;
 use crate::args::*;
 
 pub fn contact(args: ContactArgs) -> Result<(), String> {
@@ -23,14 +24,11 @@ pub fn contact(args: ContactArgs) -> Result<(), String> {
         return history(&args, &pair, path);
     }
     if args.json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&eval).map_err(|e| e.to_string())?
-        );
+        let text = serde_json::to_string_pretty(&eval).map_err(|e| e.to_string())?;
+        emit(&format!("{text}\n"))
     } else {
-        print!("{}", contact_table(&eval));
+        emit(&contact_table(&eval))
     }
-    Ok(())
 }
 
 fn history(args: &ContactArgs, pair: &ContactPair, path: &Path) -> Result<(), String> {
@@ -68,6 +66,5 @@ fn history(args: &ContactArgs, pair: &ContactPair, path: &Path) -> Result<(), St
         mu_dynamic: friction.mu_d,
         history_file: &file,
     };
-    print!("{}", history_csv(&prov, &steps));
-    Ok(())
+    emit(&history_csv(&prov, &steps))
 }
