@@ -258,9 +258,9 @@ fn consistent_tangents_match_finite_differences() {
     let old_stick = TangentialState::new(Vector3::z());
     for law in TangentialLaw::ALL {
         for (old, du) in [
-            (old_stick, Vector3::new(1e-7, 3e-8, 0.0)),  // stick
-            (old_stick, Vector3::new(2e-7, -4e-7, 0.0)), // partial slip (MD)
-            (old_slip, Vector3::new(2e-6, 1e-6, 0.0)),   // slip
+            (old_stick.clone(), Vector3::new(1e-7, 3e-8, 0.0)), // stick
+            (old_stick.clone(), Vector3::new(2e-7, -4e-7, 0.0)), // partial slip (MD)
+            (old_slip.clone(), Vector3::new(2e-6, 1e-6, 0.0)),  // slip
         ] {
             let mut inp = input(10.0, du, 0.5, 0.4);
             inp.d_stiffness_d_fn = inp.stiffness / 30.0;

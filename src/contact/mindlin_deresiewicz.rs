@@ -234,8 +234,9 @@ pub(super) fn update(
     let p = input.normal_force;
     let a_now = input.contact_radius;
     let radius_at = |load: f64| a_now * (load.max(0.0) / p).cbrt();
-    let mut st = old.row;
-    if st.h == 0.0 {
+    let mut st = old.row.as_deref().copied().unwrap_or_default();
+    let fresh = st.h == 0.0;
+    if fresh {
         st.frame = tangent_frame(
             &n,
             &if old.force.norm() > 0.0 {
@@ -266,7 +267,7 @@ pub(super) fn update(
         c: c_principal,
         axes: c_axes,
     };
-    if old.row.h == 0.0 && old.force.norm() > 0.0 {
+    if fresh && old.force.norm() > 0.0 {
         rebuild(&mut row, &(basis.transpose() * old.force), old.normal_force);
     }
     // The normal load first, then the tangential increment at the end load
@@ -292,11 +293,11 @@ pub(super) fn update(
         state: TangentialState {
             force,
             sliding: gross,
-            row: SpringRow {
+            row: Some(Box::new(SpringRow {
                 frame: t1,
                 h: row.h,
                 q,
-            },
+            })),
             normal_force: p,
             ..TangentialState::new(n)
         },

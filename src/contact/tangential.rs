@@ -125,7 +125,11 @@ pub enum SlipState {
 
 /// The tangential history of one contact, owned by the solver and passed
 /// in to each update. All vectors lie in the tangent plane of `normal`.
-#[derive(Debug, Clone, Copy, PartialEq)]
+///
+/// Not `Copy`: the Mindlin-Deresiewicz spring row (about 2 KB) sits behind
+/// a box that the Coulomb law never allocates, so cloning a Coulomb state
+/// costs as little as copying its few vectors.
+#[derive(Debug, Clone, PartialEq)]
 pub struct TangentialState {
     /// Contact normal the vectors below are tangent to.
     pub normal: Vector3<f64>,
@@ -134,8 +138,9 @@ pub struct TangentialState {
     pub force: Vector3<f64>,
     /// Gross sliding at the end of the last step.
     pub sliding: bool,
-    /// Mindlin-Deresiewicz: the row of springs (empty for Coulomb).
-    pub row: SpringRow,
+    /// Mindlin-Deresiewicz: the row of springs (`None` for Coulomb, and
+    /// before a Mindlin-Deresiewicz contact first carries load).
+    pub row: Option<Box<SpringRow>>,
     /// Normal force when this state was committed [N] (the solvers integrate
     /// k_t at the mean normal force of an increment, see `solve::contact_layer`).
     pub normal_force: f64,
@@ -146,7 +151,7 @@ pub struct TangentialState {
 
 /// What the law returns for a trial increment: the new force, the state to
 /// commit if the increment is accepted, and the consistent tangent.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct TangentialResponse {
     pub force: Vector3<f64>,
     pub state: TangentialState,
@@ -187,7 +192,7 @@ impl TangentialState {
             normal,
             force: Vector3::zeros(),
             sliding: false,
-            row: SpringRow::default(),
+            row: None,
             normal_force: 0.0,
             slip_velocity: 0.0,
         }
@@ -198,16 +203,18 @@ impl TangentialState {
     /// (Rodrigues), so magnitudes are kept exactly.
     pub fn rotated_to(&self, normal: &Vector3<f64>) -> Self {
         if *normal == self.normal {
-            return *self;
+            return self.clone();
         }
         let rot = Rotation::between(&self.normal, normal);
         TangentialState {
             normal: *normal,
             force: rot.apply(&self.force),
-            row: SpringRow {
-                frame: rot.apply(&self.row.frame),
-                ..self.row
-            },
+            row: self.row.as_ref().map(|row| {
+                Box::new(SpringRow {
+                    frame: rot.apply(&row.frame),
+                    ..**row
+                })
+            }),
             ..*self
         }
     }
@@ -270,6 +277,7 @@ fn coulomb(
                 force: trial,
                 sliding: false,
                 slip_velocity: 0.0,
+                row: old.row.clone(),
                 ..*old
             },
             slip: SlipState::Stick,
@@ -310,6 +318,7 @@ fn slide_response(
             force,
             sliding: true,
             slip_velocity: s.slip / input.friction.duration,
+            row: old.row.clone(),
             ..*old
         },
         slip: SlipState::Slip,

@@ -25,7 +25,7 @@ use crate::contact::{
 use crate::scene::SurfaceGeometry;
 
 /// One contact evaluated at a trial pose.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct ContactEval {
     pub geometry: ContactGeometry,
     /// Approach delta = -gap [m] (negative: open).

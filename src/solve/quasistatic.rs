@@ -385,7 +385,10 @@ impl<'a> Solver<'a> {
                         return self
                             .stop(err, pose, &evals, states, s, event, accepted, iterations);
                     }
-                    states = new_evals.iter().map(|e| e.tangential.state).collect();
+                    states = new_evals
+                        .iter()
+                        .map(|e| e.tangential.state.clone())
+                        .collect();
                     last_step = Some((twist_between(&pose, &new_pose), s_next - s));
                     pose = new_pose;
                     evals = new_evals;

@@ -56,7 +56,7 @@ pub struct Damping {
 }
 
 /// One contact in one step: the layer's evaluation and the total force.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct StepContact {
     pub eval: ContactEval,
     /// Total force on the moving body, applied at `eval.geometry.point` [N].

@@ -542,7 +542,7 @@ impl<'a> Simulation<'a> {
         rb.add_force_at_point(dvec(&fp), dvec(&pp), false);
         // Commit the tangential history and the pose of this step.
         for (st, sc) in self.states.iter_mut().zip(&contacts) {
-            *st = sc.eval.tangential.state;
+            *st = sc.eval.tangential.state.clone();
         }
         self.committed_pose = pose;
         self.world.step();
