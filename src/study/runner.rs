@@ -234,15 +234,10 @@ pub fn run_variant(
     opts: &StudyOptions,
     tick: &(dyn Fn() + Sync),
 ) -> Result<VariantRun, RunError> {
-    let file = coupling.scene.file.clone();
-    let design_err = |source| RunError::Design {
-        file: file.clone(),
-        source,
-    };
-    check_options(coupling, opts)?;
-    let design = design_for(coupling, opts).map_err(design_err)?;
-    let range = opts.shard.range(design.n).map_err(design_err)?;
-    let rows = design.range(range.clone()).map_err(design_err)?;
+    let (design, range) = shard_design(coupling, opts)?;
+    let rows = design
+        .range(range.clone())
+        .map_err(|source| design_error(coupling, source))?;
     let records = evaluate_rows(coupling, opts, range.zip(rows).collect(), tick)?;
     Ok(VariantRun {
         design,
@@ -250,6 +245,27 @@ pub fn run_variant(
         output_names: recorded_output_names(coupling, &opts.variation),
         records,
     })
+}
+
+/// The checked options' design and this shard's sample range of it.
+fn shard_design(
+    coupling: &Coupling,
+    opts: &StudyOptions,
+) -> Result<(DesignSpec, std::ops::Range<usize>), RunError> {
+    check_options(coupling, opts)?;
+    let design = design_for(coupling, opts).map_err(|e| design_error(coupling, e))?;
+    let range = opts
+        .shard
+        .range(design.n)
+        .map_err(|e| design_error(coupling, e))?;
+    Ok((design, range))
+}
+
+fn design_error(coupling: &Coupling, source: StudyError) -> RunError {
+    RunError::Design {
+        file: coupling.scene.file.clone(),
+        source,
+    }
 }
 
 /// True if friction moves the seated pose: the coupling seated from the
@@ -295,14 +311,8 @@ pub fn run_chunked(
     tick: &(dyn Fn() + Sync),
     sink: &mut dyn FnMut(Vec<SampleRecord>) -> Result<(), RunError>,
 ) -> Result<DesignSpec, RunError> {
-    let file = coupling.scene.file.clone();
-    let design_err = |source| RunError::Design {
-        file: file.clone(),
-        source,
-    };
-    check_options(coupling, opts)?;
-    let design = design_for(coupling, opts).map_err(design_err)?;
-    let range = opts.shard.range(design.n).map_err(design_err)?;
+    let (design, range) = shard_design(coupling, opts)?;
+    let design_err = |source| design_error(coupling, source);
     let mut start = range.start;
     while start < range.end {
         let end = (start + chunk.max(1)).min(range.end);
