@@ -87,9 +87,15 @@ fn maxwell_friction_limit_matches_an_independent_statics_solution() {
     // has the same limit; contact 1 stands for all (checked for contact 4).
     let upper = least_mu(&contacts, 0, k, 1.0);
     let lower = least_mu(&contacts, 0, k, widen);
-    assert!(lower <= upper && upper / lower - 1.0 < 1e-4, "{lower} {upper}");
+    assert!(
+        lower <= upper && upper / lower - 1.0 < 1e-4,
+        "{lower} {upper}"
+    );
     let other = least_mu(&contacts, 3, k, 1.0);
-    assert!(other >= lower - 1e-6 && other * (2.0 - widen) <= upper + 1e-6, "{other}");
+    assert!(
+        other >= lower - 1e-6 && other * (2.0 - widen) <= upper + 1e-6,
+        "{other}"
+    );
 
     let c = common::load("01_maxwell_vgroove_steel.toml");
     let limit = kinrepro::assembly::constraint::friction_limit(&c);
@@ -111,5 +117,8 @@ fn maxwell_friction_limit_matches_an_independent_statics_solution() {
         .nth(1)
         .and_then(|s| s.split_whitespace().next())
         .unwrap();
-    assert!((shown.parse::<f64>().unwrap() - code).abs() <= 5e-5, "{shown} vs {code}");
+    assert!(
+        (shown.parse::<f64>().unwrap() - code).abs() <= 5e-5,
+        "{shown} vs {code}"
+    );
 }

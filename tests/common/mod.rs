@@ -29,3 +29,13 @@ pub fn scene(name: &str) -> PathBuf {
 pub fn load(name: &str) -> kinrepro::assembly::Coupling {
     kinrepro::error::load_coupling(&scene(name)).unwrap()
 }
+
+/// Steel (E = 210 GPa, nu = 0.3) on steel: E* = E / (2 (1 - nu^2)) (Hertz; Johnson 1985, eq. 4.22).
+pub const E_STAR_STEEL: f64 = 210e9 / (2.0 * (1.0 - 0.3 * 0.3));
+
+/// Hertz sphere on a sphere or plane (Johnson 1985, §4.2): contact radius
+/// a = (3 F R / (4 E*))^(1/3) and approach delta = a^2 / R.
+pub fn hertz_circle(force: f64, radius: f64, e_star: f64) -> (f64, f64) {
+    let a = (3.0 * force * radius / (4.0 * e_star)).cbrt();
+    (a, a * a / radius)
+}
