@@ -28,20 +28,13 @@ const ALL_SCENES: [&str; 8] = [
     "custom_kelvin_explicit.toml",
 ];
 
-/// Six contact normals and ball centres of the 90-degree Maxwell V-groove of
-/// scene 01 from MODEL.md 1a, by hand: ball k at azimuth 90, 210, 330 deg on
-/// a circle of radius 40 mm; n = +-sin(a) s + cos(a) e_z, s = e_z x e_r.
+/// (normal, ball centre) of the 90-degree Maxwell V-groove of scene 01
+/// (`common::maxwell_contacts`, from MODEL.md 1a by hand).
 fn maxwell_by_hand(alpha: f64) -> Vec<(Vector3<f64>, Vector3<f64>)> {
-    let mut out = Vec::new();
-    for az in [90.0f64, 210.0, 330.0] {
-        let er = Vector3::new(az.to_radians().cos(), az.to_radians().sin(), 0.0);
-        let s = Vector3::z().cross(&er);
-        for sign in [1.0, -1.0] {
-            let n = s * (sign * alpha.sin()) + Vector3::z() * alpha.cos();
-            out.push((n, er * 0.04));
-        }
-    }
-    out
+    common::maxwell_contacts(alpha)
+        .into_iter()
+        .map(|(c, n)| (n, c))
+        .collect()
 }
 
 /// Frictionless contact forces that balance the wrench (F at point p, M):

@@ -369,7 +369,7 @@ fn default_mass_is_balls_plus_plate() {
 }
 
 fn scene_with(dynamics: &str) -> Result<kinrepro::scene::Scene, kinrepro::scene::SceneError> {
-    let base = std::fs::read_to_string("scenes/01_maxwell_vgroove_steel.toml").unwrap();
+    let base = std::fs::read_to_string(common::scene("01_maxwell_vgroove_steel.toml")).unwrap();
     kinrepro::scene::Scene::parse(&format!("{base}\n{dynamics}"), "test.toml")
 }
 

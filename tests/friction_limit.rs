@@ -16,19 +16,13 @@ mod common;
 use microlp::{ComparisonOp, OptimizationDirection, Problem};
 use nalgebra::Vector3;
 
-/// (contact point, normal into the ball) of the six Maxwell contacts.
-fn maxwell(radius_circle: f64, ball_radius: f64, alpha: f64) -> Vec<(Vector3<f64>, Vector3<f64>)> {
-    let mut out = Vec::new();
-    for az in [90.0f64, 210.0, 330.0] {
-        let er = Vector3::new(az.to_radians().cos(), az.to_radians().sin(), 0.0);
-        let s = Vector3::z().cross(&er);
-        let centre = er * radius_circle;
-        for sign in [1.0, -1.0] {
-            let n = s * (sign * alpha.sin()) + Vector3::z() * alpha.cos();
-            out.push((centre - n * ball_radius, n));
-        }
-    }
-    out
+/// (contact point, normal into the ball) of the six Maxwell contacts: the
+/// contact point lies one ball radius from the centre against the normal.
+fn maxwell(ball_radius: f64, alpha: f64) -> Vec<(Vector3<f64>, Vector3<f64>)> {
+    common::maxwell_contacts(alpha)
+        .into_iter()
+        .map(|(c, n)| (c - n * ball_radius, n))
+        .collect()
 }
 
 /// Can the contacts other than `open` carry a unit upward force through the
@@ -80,7 +74,7 @@ fn least_mu(contacts: &[(Vector3<f64>, Vector3<f64>)], open: usize, k: usize, sc
 
 #[test]
 fn maxwell_friction_limit_matches_an_independent_statics_solution() {
-    let contacts = maxwell(0.04, 0.005, 45f64.to_radians());
+    let contacts = maxwell(0.005, 45f64.to_radians());
     let k = 256;
     let widen = 1.0 / (std::f64::consts::PI / k as f64).cos();
     // By the three-fold rotation and the mirror of each groove, every contact

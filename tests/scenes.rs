@@ -390,8 +390,8 @@ fn a_safety_factor_names_the_material_it_leaves_out() {
 /// leaves out.
 #[test]
 fn run_and_check_print_the_left_out_material() {
-    let dir = std::env::temp_dir().join(format!("kinrepro-sf-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let path = dir.join("zerodur.toml");
     std::fs::write(&path, zerodur_scene("")).unwrap();
     let cli = |args: &[&str]| {
