@@ -230,7 +230,7 @@ fn history_follows_cattaneo_and_prints_the_documented_csv() {
     for i in 0..=n {
         text += &format!("{p},0,{}\n", 0.9 * mu * p * i as f64 / n as f64);
     }
-    let file = write(&dir, "ramp.csv", &text);
+    let file = write(dir, "ramp.csv", &text);
     let (ok, out, err) = kinrepro(&history_args(&file, "mindlin-deresiewicz"));
     assert!(ok, "{err}");
     let mut lines = out.lines().filter(|l| !l.starts_with('#'));
@@ -286,7 +286,7 @@ fn bad_history_is_one_clear_error_naming_file_line_and_column() {
         ),
     ];
     for (i, (text, needles)) in cases.iter().enumerate() {
-        let file = write(&dir, &format!("h{i}.csv"), text);
+        let file = write(dir, &format!("h{i}.csv"), text);
         for law in ["coulomb", "mindlin-deresiewicz"] {
             let (ok, out, err) = kinrepro(&history_args(&file, law));
             assert!(!ok && out.is_empty(), "{text}: should fail");
@@ -299,7 +299,7 @@ fn bad_history_is_one_clear_error_naming_file_line_and_column() {
         }
     }
     // The removed law name explains itself.
-    let file = write(&dir, "ok.csv", "P_N,Qx_N,Qy_N\n10,0,0\n");
+    let file = write(dir, "ok.csv", "P_N,Qx_N,Qy_N\n10,0,0\n");
     let (ok, _, err) = kinrepro(&history_args(&file, "cattaneo-mindlin"));
     assert!(!ok && err.contains("mindlin-deresiewicz"), "{err}");
     // --history needs --mu.
