@@ -28,20 +28,13 @@ const ALL_SCENES: [&str; 8] = [
     "custom_kelvin_explicit.toml",
 ];
 
-/// Six contact normals and ball centres of the 90-degree Maxwell V-groove of
-/// scene 01 from MODEL.md 1a, by hand: ball k at azimuth 90, 210, 330 deg on
-/// a circle of radius 40 mm; n = +-sin(a) s + cos(a) e_z, s = e_z x e_r.
+/// (normal, ball centre) of the 90-degree Maxwell V-groove of scene 01
+/// (`common::maxwell_contacts`, from MODEL.md 1a by hand).
 fn maxwell_by_hand(alpha: f64) -> Vec<(Vector3<f64>, Vector3<f64>)> {
-    let mut out = Vec::new();
-    for az in [90.0f64, 210.0, 330.0] {
-        let er = Vector3::new(az.to_radians().cos(), az.to_radians().sin(), 0.0);
-        let s = Vector3::z().cross(&er);
-        for sign in [1.0, -1.0] {
-            let n = s * (sign * alpha.sin()) + Vector3::z() * alpha.cos();
-            out.push((n, er * 0.04));
-        }
-    }
-    out
+    common::maxwell_contacts(alpha)
+        .into_iter()
+        .map(|(c, n)| (n, c))
+        .collect()
 }
 
 /// Frictionless contact forces that balance the wrench (F at point p, M):
@@ -353,20 +346,28 @@ fn hertz_subsurface_shear_matches_johnson_and_a_brute_force_scan() {
     let (ratio, depth) = circular_max_shear(0.3);
     assert!((ratio - 0.31).abs() < 0.005, "{ratio}");
     assert!((depth - 0.48).abs() < 0.01, "{depth}");
+    // Johnson (1985) eq. 3.45 on the axis, implemented here: with zeta = z/a,
+    // sigma_r/p0 = -(1 + nu)(1 - zeta atan(1/zeta)) + 1/(2 (1 + zeta^2)),
+    // sigma_z/p0 = -1/(1 + zeta^2), tau = |sigma_r - sigma_z| / 2.
+    let johnson = |nu: f64, zeta: f64| {
+        let sr = -(1.0 + nu) * (1.0 - zeta * (1.0 / zeta).atan()) + 0.5 / (1.0 + zeta * zeta);
+        let sz = -1.0 / (1.0 + zeta * zeta);
+        0.5 * (sr - sz).abs()
+    };
     for nu in [0.14, 0.22, 0.27, 0.3, 0.45] {
-        let (r, z) = circular_max_shear(nu);
         let scan = (1..=400_000)
             .map(|k| k as f64 * 1e-5)
-            .map(|z| (circular_axis_shear(nu, z), z))
+            .map(|z| (johnson(nu, z), z))
             .max_by(|a, b| a.0.total_cmp(&b.0))
             .unwrap();
-        assert!(
-            (r - scan.0).abs() < 1e-9 && (z - scan.1).abs() < 1e-4,
-            "nu {nu}: {r} at {z} vs {scan:?}"
-        );
+        for (r, z) in [circular_max_shear(nu), max_shear_ratio(nu, 1.0)] {
+            assert!(
+                (r - scan.0).abs() < 1e-9 && (z - scan.1).abs() < 1e-4,
+                "nu {nu}: {r} at {z} vs {scan:?}"
+            );
+        }
+        assert!((circular_axis_shear(nu, 0.7) - johnson(nu, 0.7)).abs() < 1e-12);
     }
-    // The circle's value is the closed form (ellipses: tests/contact_laws.rs).
-    assert_eq!(max_shear_ratio(0.3, 1.0), (ratio, depth));
     // In a seating: tau_max = ratio p0 and the steel pressure safety factor.
     let c = load("01_maxwell_vgroove_steel.toml");
     let s = seat(&c, &[0.5; 6], &SolverOptions::default()).unwrap();

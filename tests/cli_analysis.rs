@@ -1,22 +1,13 @@
 //! `kinrepro stiffness` and `kinrepro load`: JSON against the library and
 //! statics, and bad input gets a clear message and a non-zero exit code.
 
-use std::process::Command;
+mod common;
+use common::kinrepro;
 
-fn kinrepro(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-const SCENE: &str = "scenes/01_maxwell_vgroove_steel.toml";
+const SCENE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/scenes/01_maxwell_vgroove_steel.toml"
+);
 
 #[test]
 fn stiffness_json_has_the_frictionless_closed_form() {
@@ -25,7 +16,7 @@ fn stiffness_json_has_the_frictionless_closed_form() {
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     // k_z = 6 k_n cos^2 45 = 3 k_n, k_n = 3/2 K^(2/3) F^(1/3), F = 20 / (6 cos 45).
     let f = 20.0 / (6.0 * 45f64.to_radians().cos());
-    let kh = 4.0 / 3.0 * 210e9 / (2.0 * 0.91) * 5e-3f64.sqrt();
+    let kh = 4.0 / 3.0 * common::E_STAR_STEEL * 5e-3f64.sqrt();
     let kn = 1.5 * kh * (f / kh).powf(1.0 / 3.0);
     let kz = v["points"][0]["matrix"][2][2].as_f64().unwrap();
     assert!((kz / (3.0 * kn) - 1.0).abs() < 1e-6, "{kz}");

@@ -23,7 +23,7 @@ fn json_output_has_the_documented_keys_and_hertz_values() {
     assert!(ok);
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     // Closed form: E* = 210e9 / (2 (1 - 0.09)), a = (3 F R / 4 E*)^(1/3), delta = a^2/R.
-    let e_star: f64 = 210e9 / (2.0 * 0.91);
+    let e_star: f64 = common::E_STAR_STEEL;
     let a = (3.0 * 20.0 * 5e-3 / (4.0 * e_star)).cbrt();
     let get = |k: &str| v[k].as_f64().unwrap_or_else(|| panic!("missing {k}"));
     assert!((get("approach_m") / (a * a / 5e-3) - 1.0).abs() < 1e-12);
@@ -193,16 +193,6 @@ fn json_reports_axis_stiffnesses_and_tau_max() {
     assert!((get("max_shear_depth_m") / (depth * a) - 1.0).abs() < 1e-4);
 }
 
-/// A fresh directory for one test's files.
-fn test_dir(name: &str) -> std::path::PathBuf {
-    let d = std::env::temp_dir().join(format!(
-        "kinrepro-cli-contact-{}-{name}",
-        std::process::id()
-    ));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
 fn write(dir: &std::path::Path, name: &str, text: &str) -> String {
     let p = dir.join(name);
     std::fs::write(&p, text).unwrap();
@@ -233,13 +223,14 @@ fn history_args<'a>(file: &'a str, law: &'a str) -> Vec<&'a str> {
 
 #[test]
 fn history_follows_cattaneo_and_prints_the_documented_csv() {
-    let dir = test_dir("ramp");
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let (p, mu, n) = (10.0, 0.5, 100);
     let mut text = String::from("P_N,Qx_N,Qy_N\n");
     for i in 0..=n {
         text += &format!("{p},0,{}\n", 0.9 * mu * p * i as f64 / n as f64);
     }
-    let file = write(&dir, "ramp.csv", &text);
+    let file = write(dir, "ramp.csv", &text);
     let (ok, out, err) = kinrepro(&history_args(&file, "mindlin-deresiewicz"));
     assert!(ok, "{err}");
     let mut lines = out.lines().filter(|l| !l.starts_with('#'));
@@ -277,7 +268,8 @@ fn history_follows_cattaneo_and_prints_the_documented_csv() {
 
 #[test]
 fn bad_history_is_one_clear_error_naming_file_line_and_column() {
-    let dir = test_dir("bad");
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let cases: &[(&str, &[&str])] = &[
         ("P_N,Qx_N,Qy_N\n10,0,0\n10,abc,0\n", &[":3:", "Qx_N", "abc"]),
         (
@@ -294,7 +286,7 @@ fn bad_history_is_one_clear_error_naming_file_line_and_column() {
         ),
     ];
     for (i, (text, needles)) in cases.iter().enumerate() {
-        let file = write(&dir, &format!("h{i}.csv"), text);
+        let file = write(dir, &format!("h{i}.csv"), text);
         for law in ["coulomb", "mindlin-deresiewicz"] {
             let (ok, out, err) = kinrepro(&history_args(&file, law));
             assert!(!ok && out.is_empty(), "{text}: should fail");
@@ -307,7 +299,7 @@ fn bad_history_is_one_clear_error_naming_file_line_and_column() {
         }
     }
     // The removed law name explains itself.
-    let file = write(&dir, "ok.csv", "P_N,Qx_N,Qy_N\n10,0,0\n");
+    let file = write(dir, "ok.csv", "P_N,Qx_N,Qy_N\n10,0,0\n");
     let (ok, _, err) = kinrepro(&history_args(&file, "cattaneo-mindlin"));
     assert!(!ok && err.contains("mindlin-deresiewicz"), "{err}");
     // --history needs --mu.

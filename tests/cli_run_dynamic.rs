@@ -1,21 +1,29 @@
 //! `kinrepro run --solver dynamic`: trace file, offset start, errors.
 
-use std::process::Command;
+mod common;
+use common::kinrepro;
 
-fn kinrepro(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_kinrepro"))
-        .args(args)
-        .output()
-        .unwrap()
+fn scene01() -> String {
+    common::scene("01_maxwell_vgroove_steel.toml")
+        .display()
+        .to_string()
+}
+
+/// The pose's z of a `run --json` output.
+fn z_of(json: &str) -> f64 {
+    let v: serde_json::Value = serde_json::from_str(json).unwrap();
+    v["pose"]["z_m"].as_f64().unwrap()
 }
 
 #[test]
 fn dynamic_run_writes_a_trace() {
-    let trace = std::env::temp_dir().join(format!("kinrepro-trace-{}.csv", std::process::id()));
+    let dir = tempfile::tempdir().unwrap();
+    let trace = dir.path().join("trace.csv");
     let t = trace.to_str().unwrap();
-    let out = kinrepro(&[
+    let s1 = scene01();
+    let (ok, out, err) = kinrepro(&[
         "run",
-        "scenes/01_maxwell_vgroove_steel.toml",
+        &s1,
         "--solver",
         "dynamic",
         "--offset",
@@ -24,17 +32,28 @@ fn dynamic_run_writes_a_trace() {
         t,
         "--json",
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(ok, "{err}");
+    let json: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(json["solver"], "dynamic");
-    let z = json["pose"]["z_m"].as_f64().unwrap();
-    assert!(z < -600e-9 && z > -700e-9, "{z}");
+    // A second solver: the quasi-static seating at the same (nominal) friction.
+    let (ok, qs, err) = kinrepro(&["run", &s1, "--json"]);
+    assert!(ok, "{err}");
+    let (z, z_qs) = (z_of(&out), z_of(&qs));
+    assert!(
+        (z / z_qs - 1.0).abs() < 1e-3,
+        "dynamic {z:e} vs quasi-static {z_qs:e}"
+    );
+    // Friction holds the balls up the flanks: above the frictionless closed form
+    // z = -delta / cos 45, delta = (F_n / K)^(2/3), F_n = 20 N / (6 cos 45),
+    // K = 4/3 E* sqrt(R), E* = 210 GPa / (2 (1 - 0.3^2)), R = 5 mm (-809.8 nm).
+    let c45 = 45f64.to_radians().cos();
+    let k = 4.0 / 3.0 * common::E_STAR_STEEL * 5e-3f64.sqrt();
+    let z_free = -(20.0 / (6.0 * c45) / k).powf(2.0 / 3.0) / c45;
+    assert!(
+        z < 0.0 && z > 0.95 * z_free,
+        "{z:e} vs frictionless {z_free:e}"
+    );
     let csv = std::fs::read_to_string(&trace).unwrap();
-    std::fs::remove_file(&trace).unwrap();
     let mut lines = csv.lines();
     let head: Vec<&str> = lines.next().unwrap().split(',').collect();
     assert_eq!(head.len(), 9 + 4 * 6);
@@ -49,17 +68,13 @@ fn dynamic_run_writes_a_trace() {
 
 #[test]
 fn dynamic_options_need_the_dynamic_solver_and_errors_are_clear() {
-    let out = kinrepro(&[
+    let s1 = scene01();
+    let (ok, _, err) = kinrepro(&["run", &s1, "--offset", "0,0,1e-5"]);
+    assert!(!ok);
+    assert!(err.contains("--solver dynamic"), "{err}");
+    let (ok, _, err) = kinrepro(&[
         "run",
-        "scenes/01_maxwell_vgroove_steel.toml",
-        "--offset",
-        "0,0,1e-5",
-    ]);
-    assert!(!out.status.success());
-    assert!(String::from_utf8_lossy(&out.stderr).contains("--solver dynamic"));
-    let out = kinrepro(&[
-        "run",
-        "scenes/01_maxwell_vgroove_steel.toml",
+        &s1,
         "--solver",
         "dynamic",
         "--offset",
@@ -67,7 +82,6 @@ fn dynamic_options_need_the_dynamic_solver_and_errors_are_clear() {
         "--mu",
         "0.8,0.8,0.8,0.8,0.8,0.8",
     ]);
-    assert!(!out.status.success());
-    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!ok);
     assert!(err.contains("does not centre"), "{err}");
 }

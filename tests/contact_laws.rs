@@ -339,6 +339,12 @@ proptest! {
     ) {
         let shape = ContactShape::ALL[shape_i];
         let r2 = if shape == ContactShape::SphereSeat { r1 * (1.0 + r2 * 10.0) } else { r2 };
+        // Independent moduli (MODEL.md 2; Johnson 1985 eq. 4.22 and 7.18):
+        // 1/E* = sum (1 - v^2)/E, 1/G* = sum (2 - v)/G, G = E / (2 (1 + v)).
+        let e_star = 1.0 / [&m1, &m2].iter().map(|m| (1.0 - m.poisson_ratio.powi(2)) / m.youngs_modulus).sum::<f64>();
+        let g_star = 1.0 / [&m1, &m2].iter()
+            .map(|m| (2.0 - m.poisson_ratio) * 2.0 * (1.0 + m.poisson_ratio) / m.youngs_modulus)
+            .sum::<f64>();
         let pair = ContactPair { shape, radius1: r1, radius2: Some(r2), material1: m1, material2: m2 };
         let e = pair.evaluate(f).unwrap();
         let law = pair.law().unwrap();
@@ -348,19 +354,33 @@ proptest! {
         // a >= b, p0 = 3F/(2 pi a b).
         prop_assert!(e.semi_axes_m[0] >= e.semi_axes_m[1]);
         prop_assert!(rel(e.max_pressure_pa, 3.0 * f / (2.0 * PI * e.semi_axes_m[0] * e.semi_axes_m[1])) < 1e-12);
-        // Circular contacts: Hertz closed forms a = (3FR/4E*)^(1/3), delta = a^2/R.
+        prop_assert!(rel(e.effective_modulus_pa, e_star) < 1e-12);
+        prop_assert!(rel(e.effective_shear_modulus_pa, g_star) < 1e-12);
+        // Relative radii from the shapes (MODEL.md 2): plane R = r1, convex
+        // ball 1/R = 1/r1 + 1/r2, concave seat 1/R = 1/r1 - 1/r2; crossed
+        // cylinder: 1/(1/r1 + 1/r2) across the axis and r1 along it.
+        let across = 1.0 / (1.0 / r1 + 1.0 / r2);
+        let radii = match shape {
+            ContactShape::SpherePlane => [r1, r1],
+            ContactShape::SphereSphere => [across, across],
+            ContactShape::SphereSeat => [1.0 / (1.0 / r1 - 1.0 / r2); 2],
+            ContactShape::SphereCylinder => [across, r1],
+        };
+        let mut got = e.relative_radii_m;
+        got.sort_by(f64::total_cmp);
+        prop_assert!(rel(got[0], radii[0].min(radii[1])) < 1e-12 && rel(got[1], radii[0].max(radii[1])) < 1e-12, "{got:?} vs {radii:?}");
         if shape != ContactShape::SphereCylinder {
-            let r = e.relative_radii_m[0];
-            let a = (3.0 * f * r / (4.0 * e.effective_modulus_pa)).cbrt();
+            // Circular contacts: Hertz closed forms a = (3FR/4E*)^(1/3), delta = a^2/R.
+            let r = radii[0];
+            let a = (3.0 * f * r / (4.0 * e_star)).cbrt();
             prop_assert!(rel(e.semi_axes_m[0], a) < 1e-12);
             prop_assert!(rel(e.approach_m, a * a / r) < 1e-12);
-            prop_assert!(rel(e.tangential_stiffness_n_per_m, 8.0 * e.effective_shear_modulus_pa * a) < 1e-12);
+            prop_assert!(rel(e.tangential_stiffness_n_per_m, 8.0 * g_star * a) < 1e-12);
         } else {
-            // Equal-area circle: k_t = 8 G* sqrt(ab); delta = pi a E*... via stiffness = pi a E* / K(e)
-            // bounded by the circles of radius b and a.
+            // The ellipse's tangential stiffness lies between those of the
+            // circles of radius b and a (Mindlin: k_t = 8 G* a for a circle).
             let kt = e.tangential_stiffness_n_per_m;
-            let g = e.effective_shear_modulus_pa;
-            prop_assert!(kt <= 8.0 * g * e.semi_axes_m[0] && kt >= 8.0 * g * e.semi_axes_m[1]);
+            prop_assert!(kt <= 8.0 * g_star * e.semi_axes_m[0] && kt >= 8.0 * g_star * e.semi_axes_m[1]);
         }
     }
 }

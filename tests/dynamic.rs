@@ -2,7 +2,7 @@
 //! each against an independent value: the quasi-static solver, the
 //! frictionless seating, the friction limit, and conservation of energy.
 
-use std::path::Path;
+mod common;
 
 use kinrepro::assembly::Coupling;
 use kinrepro::assembly::constraint::friction_limit;
@@ -11,7 +11,7 @@ use kinrepro::solve::{PointPose, Seating, SolveError, SolverOptions, quasistatic
 use nalgebra::Vector3;
 
 fn coupling(name: &str) -> Coupling {
-    kinrepro::error::load_coupling(Path::new(&format!("scenes/{name}"))).unwrap()
+    common::load(name)
 }
 
 /// Ten mu_s vectors drawn uniformly in 0.5 +- 0.05 (Python `random`, seed
@@ -89,6 +89,13 @@ fn cross_check_maxwell_vgroove() {
 #[test]
 fn cross_check_kelvin_balls() {
     assert_within_5_percent("06_kelvin_steel.toml");
+}
+
+/// Scene 07 (Kelvin, fixed balls, steel on silicon carbide: a stiffer E*) through
+/// both solvers.
+#[test]
+fn cross_check_kelvin_balls_sic() {
+    assert_within_5_percent("07_kelvin_sic.toml");
 }
 
 /// The remaining difference is a rate effect: while the contacts are
@@ -362,7 +369,7 @@ fn default_mass_is_balls_plus_plate() {
 }
 
 fn scene_with(dynamics: &str) -> Result<kinrepro::scene::Scene, kinrepro::scene::SceneError> {
-    let base = std::fs::read_to_string("scenes/01_maxwell_vgroove_steel.toml").unwrap();
+    let base = std::fs::read_to_string(common::scene("01_maxwell_vgroove_steel.toml")).unwrap();
     kinrepro::scene::Scene::parse(&format!("{base}\n{dynamics}"), "test.toml")
 }
 

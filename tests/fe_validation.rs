@@ -55,6 +55,12 @@ fn check_all(mesh: &MeshOptions, tol_approach: f64, tol_axes: f64) {
             assert!(es < tol_axes, "{name}: semi-axis {d} error {es}");
         }
         assert!(r.dofs > 0 && r.seconds > 0.0 && r.element_size > 0.0);
+        // Signorini: the contact pushes, never pulls (no tensile nodal pressure).
+        assert!(
+            r.min_pressure >= -1e-9 * r.peak_pressure && r.min_pressure <= r.peak_pressure,
+            "{name}: least nodal pressure {} Pa",
+            r.min_pressure
+        );
     }
 }
 

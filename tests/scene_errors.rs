@@ -229,8 +229,8 @@ fn parallel_grooves_are_reported_as_a_free_translation() {
 
 #[test]
 fn check_exits_nonzero_and_names_the_file() {
-    let dir = std::env::temp_dir().join(format!("kinrepro-bad-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let bad = dir.join("bad_scene.toml");
     std::fs::write(
         &bad,
@@ -634,8 +634,8 @@ fn millimetre_looking_values_are_errors_unless_allowed() {
 /// exits non-zero with the hint (rc 0 today).
 #[test]
 fn check_rejects_a_millimetre_diameter_with_the_hint() {
-    let dir = std::env::temp_dir().join(format!("kinrepro-mm-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let bad = dir.join("mm_scene.toml");
     std::fs::write(
         &bad,

@@ -162,17 +162,13 @@ fn parry_contact_matches_closed_form() {
                     let centre = ball.centre + n0 * d + side * lateral;
                     let exact = closed_form(&contact.surface, &centre, ball.radius);
                     let parry = contact.fixed.contact(&centre, ball.radius, 1e-3).unwrap();
+                    // Rounding only: gaps down to 1 nm agree to 1e-16 m.
                     assert!(
-                        (parry.gap - exact.gap).abs() < 1e-12,
+                        (parry.gap - exact.gap).abs() < 1e-16,
                         "{name} contact {}: d {d:e}: parry {:e} vs {:e}",
                         i + 1,
                         parry.gap,
                         exact.gap
-                    );
-                    assert!(
-                        (parry.gap - exact.gap).abs() < 1e-16,
-                        "{name}: {:e}",
-                        parry.gap - exact.gap
                     );
                     assert!((parry.normal - exact.normal).norm() < 1e-12);
                     assert!((parry.point - exact.point).norm() < 1e-12);
@@ -394,8 +390,8 @@ fn a_safety_factor_names_the_material_it_leaves_out() {
 /// leaves out.
 #[test]
 fn run_and_check_print_the_left_out_material() {
-    let dir = std::env::temp_dir().join(format!("kinrepro-sf-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let path = dir.join("zerodur.toml");
     std::fs::write(&path, zerodur_scene("")).unwrap();
     let cli = |args: &[&str]| {

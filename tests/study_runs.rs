@@ -5,14 +5,14 @@ mod common;
 use common::kinrepro;
 use common::scene;
 
-use kinrepro::report::study::{StudyReport, VariantReport};
+use kinrepro::report::study::VariantReport;
 use kinrepro::study::runner::{StudyOptions, run_variant};
 use kinrepro::study::{Sampler, Shard};
 
 #[test]
 fn same_seed_same_json_bytes_and_four_shards_merge_to_one_run() {
-    let dir = std::env::temp_dir().join(format!("kinrepro-shards-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let s1 = scene("01_maxwell_vgroove_steel.toml");
     let s6 = scene("06_kelvin_steel.toml");
     let (s1, s6) = (s1.to_str().unwrap(), s6.to_str().unwrap());
@@ -67,9 +67,14 @@ fn same_seed_same_json_bytes_and_four_shards_merge_to_one_run() {
             merged, one,
             "{sampler}: 4 merged shards differ from one run"
         );
-        // A missing shard is an error, not a smaller study.
+        // A missing shard is an error, not a smaller study: parts hold shards
+        // 3, 1, 4, 2; without the last, shard 2 of 22 samples in 4 (6, 6, 5, 5:
+        // the first 22 mod 4 shards one larger) is samples 6..11.
         let (ok, _, err) = kinrepro(&["merge", &parts[0], &parts[1], &parts[2]]);
-        assert!(!ok && err.contains("merge"), "{err}");
+        assert!(
+            !ok && err.contains("shard 2/4 (samples 6..11) missing"),
+            "{err}"
+        );
     }
 }
 
@@ -127,7 +132,8 @@ fn maxwell_scatter_is_symmetric_in_x_y_and_centred() {
 
 #[test]
 fn table_csv_and_plots_are_written() {
-    let dir = std::env::temp_dir().join(format!("kinrepro-out-{}", std::process::id()));
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let s1 = scene("01_maxwell_vgroove_steel.toml");
     let (ok, table, err) = kinrepro(&[
         "study",
@@ -172,18 +178,37 @@ fn table_csv_and_plots_are_written() {
     ]);
     assert!(ok);
     assert_eq!(csv.lines().count(), 1 + 6);
-    // The corners design has 2^6 samples, each mu at mu0 +- spread.
-    let (ok, json, _) = kinrepro(&[
+    // The corners design has 2^6 samples, each mu at mu0 +- spread (scene 01:
+    // 0.5 +- 0.05), every sign pattern once.
+    let corners = dir.join("corners");
+    let (ok, _, err) = kinrepro(&[
         "study",
         s1.to_str().unwrap(),
         "--sampler",
         "corners",
-        "--format",
-        "json",
+        "--out",
+        corners.to_str().unwrap(),
     ]);
-    assert!(ok);
-    let r: StudyReport = serde_json::from_str(&json).unwrap();
-    assert_eq!(r.variants[0].samples, 64);
+    assert!(ok, "{err}");
+    let samples =
+        std::fs::read_to_string(corners.join("samples_01_01_maxwell_vgroove_steel.csv")).unwrap();
+    let mut patterns = std::collections::BTreeSet::new();
+    for row in samples.lines().skip(2) {
+        let mu: Vec<f64> = row
+            .split(',')
+            .skip(1)
+            .take(6)
+            .map(|v| v.parse().unwrap())
+            .collect();
+        let mut bits = 0u32;
+        for (k, m) in mu.iter().enumerate() {
+            let high = (m - 0.55).abs() < 1e-12;
+            assert!(high || (m - 0.45).abs() < 1e-12, "mu_{} = {m}", k + 1);
+            bits |= u32::from(high) << k;
+        }
+        patterns.insert(bits);
+    }
+    assert_eq!(patterns.len(), 64, "{samples}");
     // Bad input: unknown sampler, bad shard.
     let (ok, _, err) = kinrepro(&["study", s1.to_str().unwrap(), "--sampler", "sobol"]);
     assert!(!ok && err.contains("sobol"));

@@ -23,22 +23,9 @@ fn scene01_with(variation: &str) -> Coupling {
     Coupling::new(&s).unwrap()
 }
 
-/// Ball centres and contact normals of scene 01 from MODEL.md 1a (not from
-/// kinrepro): balls at 90, 210, 330 degrees on radius 40 mm, flank normals
-/// +-sin(45) s + cos(45) e_z with s = e_z x e_r.
+/// Ball centres and contact normals of scene 01 (`common::maxwell_contacts`).
 fn maxwell_geometry() -> Vec<(Vector3<f64>, Vector3<f64>)> {
-    let r = 0.040;
-    let a = std::f64::consts::FRAC_PI_4;
-    let mut v = Vec::new();
-    for deg in [90.0_f64, 210.0, 330.0] {
-        let t = deg.to_radians();
-        let er = Vector3::new(t.cos(), t.sin(), 0.0);
-        let s = Vector3::z().cross(&er);
-        for sign in [1.0, -1.0] {
-            v.push((er * r, s * (sign * a.sin()) + Vector3::z() * a.cos()));
-        }
-    }
-    v
+    common::maxwell_contacts(std::f64::consts::FRAC_PI_4)
 }
 
 #[test]
@@ -291,8 +278,8 @@ fn bad_input_is_a_clear_error() {
         .position(|l| l.starts_with("surface_normal"))
         .unwrap()
         + 1;
-    let dir = std::env::temp_dir().join(format!("kinrepro-neg-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
     let bad = dir.join("negative.toml");
     std::fs::write(&bad, text).unwrap();
     let (ok, _, err) = kinrepro(&["study", bad.to_str().unwrap(), "--vary", "tolerances"]);

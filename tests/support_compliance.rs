@@ -16,7 +16,7 @@ use rand_chacha::ChaCha8Rng;
 
 /// Steel ball R = 5 mm on a steel plane: K = 4/3 E* sqrt(R) (Johnson eq. 4.22).
 fn steel_k() -> f64 {
-    let e_star = 210e9 / (2.0 * (1.0 - 0.3 * 0.3));
+    let e_star = common::E_STAR_STEEL;
     4.0 / 3.0 * e_star * 5e-3_f64.sqrt()
 }
 
@@ -222,12 +222,12 @@ fn run_reports_the_approach_split_into_hertz_and_support() {
         &format!("groove_material = \"steel\"\nsupport_compliance = {c:e}"),
         1,
     );
-    let path = std::env::temp_dir().join(format!("kinrepro-support-{}.toml", std::process::id()));
+    let tmp = tempfile::tempdir().unwrap();
+    let path = tmp.path().join("support.toml");
     std::fs::write(&path, text).unwrap();
     let p = path.to_str().unwrap();
     let (ok, out, err) = common::kinrepro(&["run", p, "--json"]);
     let (ok_t, table, _) = common::kinrepro(&["run", p]);
-    std::fs::remove_file(&path).unwrap();
     assert!(ok && ok_t, "{err}");
     assert!(table.contains("approach = Hertz + support"), "{table}");
     let json: serde_json::Value = serde_json::from_str(&out).unwrap();

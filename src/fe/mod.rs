@@ -151,6 +151,9 @@ pub struct FeResult {
     pub semi_axes: [f64; 2],
     /// Peak pressure (Pa): nodal force / tributary area at the centre node.
     pub peak_pressure: f64,
+    /// Least nodal pressure over the contact candidates (Pa), force / tributary
+    /// area; the Signorini conditions require it to be >= 0.
+    pub min_pressure: f64,
     /// Element size at the contact across the smaller semi-axis (m).
     pub element_size: f64,
     /// Number of free degrees of freedom.

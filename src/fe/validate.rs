@@ -190,11 +190,17 @@ pub fn run_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError> {
         .position(|&(i, j)| i == 0 && j == 0)
         .ok_or(FeError::CandidateZoneTooSmall)?;
     let peak_pressure = st.forces[origin] / trib[0];
+    let min_pressure = cand
+        .iter()
+        .zip(&st.forces)
+        .map(|(&(i, j), f)| f / trib[i + nx * j])
+        .fold(f64::INFINITY, f64::min);
     let result = FeResult {
         curve,
         approach: st.approach,
         semi_axes,
         peak_pressure,
+        min_pressure,
         element_size: rel * amin,
         dofs: sys.n_eq,
         seconds: t0.elapsed().as_secs_f64(),
