@@ -4,9 +4,9 @@
 mod common;
 use common::kinrepro;
 
-#[test]
-fn json_output_has_the_documented_keys_and_hertz_values() {
-    let (ok, out, _) = kinrepro(&[
+/// `contact --json` for a 10 mm steel ball on a steel plane at 20 N.
+fn steel_ball_on_plane_json() -> (bool, String, String) {
+    kinrepro(&[
         "contact",
         "--shape",
         "sphere-plane",
@@ -19,7 +19,12 @@ fn json_output_has_the_documented_keys_and_hertz_values() {
         "--load",
         "20",
         "--json",
-    ]);
+    ])
+}
+
+#[test]
+fn json_output_has_the_documented_keys_and_hertz_values() {
+    let (ok, out, _) = steel_ball_on_plane_json();
     assert!(ok);
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     // Closed form: E* = 210e9 / (2 (1 - 0.09)), a = (3 F R / 4 E*)^(1/3), delta = a^2/R.
@@ -159,20 +164,7 @@ fn circle_tau(nu: f64) -> (f64, f64) {
 
 #[test]
 fn json_reports_axis_stiffnesses_and_tau_max() {
-    let (ok, out, err) = kinrepro(&[
-        "contact",
-        "--shape",
-        "sphere-plane",
-        "--radius1",
-        "5e-3",
-        "--material1",
-        "steel",
-        "--material2",
-        "steel",
-        "--load",
-        "20",
-        "--json",
-    ]);
+    let (ok, out, err) = steel_ball_on_plane_json();
     assert!(ok, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     let get = |k: &str| v[k].as_f64().unwrap_or_else(|| panic!("missing {k}"));

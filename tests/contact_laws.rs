@@ -243,6 +243,25 @@ fn coulomb_cycle_dissipates_the_closed_form_energy() {
     assert!(rel(first_peak, mu_d * fn_) < 1e-12);
 }
 
+/// dF/d(du) of one update against central finite differences in the
+/// contact plane (x, y), to 1e-5 of the tangent's norm.
+fn assert_du_tangent(old: &TangentialState, law: TangentialLaw, inp: &TangentialInput) {
+    let r = old.update(law, inp);
+    for j in 0..2 {
+        let h = 1e-13;
+        let (mut ip, mut im) = (*inp, *inp);
+        ip.du[j] += h;
+        im.du[j] -= h;
+        let fd = (old.update(law, &ip).force - old.update(law, &im).force) / (2.0 * h);
+        let an = r.d_force_d_du.column(j).into_owned();
+        assert!(
+            (fd - an).norm() <= 1e-5 * r.d_force_d_du.norm() + 1e-9,
+            "{law:?} {:?} col {j}: fd {fd:?} an {an:?}",
+            r.slip
+        );
+    }
+}
+
 #[test]
 fn consistent_tangents_match_finite_differences() {
     let old_slip = {
@@ -270,20 +289,7 @@ fn consistent_tangents_match_finite_differences() {
                 ..old
             };
             let r = old.update(law, &inp);
-            for j in 0..2 {
-                let h = 1e-13;
-                let mut ip = inp;
-                ip.du[j] += h;
-                let mut im = inp;
-                im.du[j] -= h;
-                let fd = (old.update(law, &ip).force - old.update(law, &im).force) / (2.0 * h);
-                let an = r.d_force_d_du.column(j).into_owned();
-                assert!(
-                    (fd - an).norm() <= 1e-5 * r.d_force_d_du.norm() + 1e-9,
-                    "{law:?} {:?} col {j}: fd {fd:?} an {an:?}",
-                    r.slip
-                );
-            }
+            assert_du_tangent(old, law, &inp);
             if law == TangentialLaw::Coulomb {
                 let h = 1e-6;
                 let mut ip = inp;
@@ -873,20 +879,7 @@ fn anisotropic_slip_return_is_associated_and_its_tangent_is_consistent() {
                 normal_force: 10.0,
                 ..TangentialState::new(n)
             };
-            let r = old.update(law, &inp);
-            for j in 0..2 {
-                let h = 1e-13;
-                let (mut ip, mut im) = (inp, inp);
-                ip.du[j] += h;
-                im.du[j] -= h;
-                let fd = (old.update(law, &ip).force - old.update(law, &im).force) / (2.0 * h);
-                let an = r.d_force_d_du.column(j).into_owned();
-                assert!(
-                    (fd - an).norm() <= 1e-5 * r.d_force_d_du.norm() + 1e-9,
-                    "{law:?} {:?} col {j}: fd {fd:?} an {an:?}",
-                    r.slip
-                );
-            }
+            assert_du_tangent(&old, law, &inp);
         }
     }
 }

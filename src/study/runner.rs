@@ -97,6 +97,16 @@ pub enum RunError {
         #[source]
         source: SolveError,
     },
+    #[error(
+        "{file}: the seating at mu_s = {mu:?} (touching start) that tells whether friction \
+         moves the pose failed: {source}"
+    )]
+    FrictionProbe {
+        file: String,
+        mu: Vec<f64>,
+        #[source]
+        source: SolveError,
+    },
     #[error("{file}: sample {index} (mu_s = {mu:?}): {source}")]
     Seating {
         file: String,
@@ -286,7 +296,7 @@ pub fn friction_moves_pose(coupling: &Coupling, method: &Method) -> Result<bool,
         let m = vec![mu; n];
         let s = method
             .seat(coupling, &m, &StartPose::touching())
-            .map_err(|source| RunError::Nominal {
+            .map_err(|source| RunError::FrictionProbe {
                 file: coupling.scene.file.clone(),
                 mu: m,
                 source,
