@@ -9,7 +9,7 @@ use kinrepro::solve::dynamic::{DynamicOptions, seat};
 
 fn dynamic_seating(c: &mut Criterion) {
     let coupling =
-        kinrepro::error::load_coupling(Path::new("scenes/01_maxwell_vgroove_steel.toml")).unwrap();
+        kinrepro::error::read_coupling(Path::new("scenes/01_maxwell_vgroove_steel.toml")).unwrap();
     let mu = kinrepro::solve::nominal_mu(&coupling);
     let opts = DynamicOptions::default();
     c.bench_function("dynamic seating, scene 01", |b| {

@@ -1,5 +1,6 @@
-//! The library's top-level error: each layer's error, with the file it
-//! concerns, for the CLI to print before exiting non-zero.
+//! The library's top-level error: reading and assembling a scene file, with
+//! the file it concerns, for the CLI to print before exiting non-zero. Each
+//! layer below has its own typed error; the CLI's `CliError` wraps them all.
 
 use std::path::Path;
 
@@ -18,15 +19,19 @@ pub enum Error {
         #[source]
         source: AssemblyError,
     },
-    #[error("{0}")]
-    Other(String),
 }
 
-/// Load, validate and assemble a scene file.
-pub fn load_coupling(path: &Path) -> Result<Coupling, Error> {
+/// Read a scene file, validate it and assemble the coupling.
+pub fn read_coupling(path: &Path) -> Result<Coupling, Error> {
     let scene = Scene::load(path)?;
     Coupling::new(&scene).map_err(|source| Error::Assembly {
         file: scene.file.clone(),
         source,
     })
 }
+
+/// The name [`read_coupling`] had before (it read like "the load on a
+/// coupling"); kept so that branches written against it still build. New
+/// code calls `read_coupling`; remove once every branch is merged.
+#[doc(hidden)]
+pub use read_coupling as load_coupling;

@@ -64,7 +64,7 @@ fn every_scene_loads_expands_and_loads_back_identically() {
 #[test]
 fn balls_touch_every_surface_at_zero_gap() {
     for path in all_scenes() {
-        let c = kinrepro::error::load_coupling(&path).unwrap();
+        let c = kinrepro::error::read_coupling(&path).unwrap();
         for i in 0..6 {
             let g = c.geometry(i, &c.touching_pose);
             assert!(
@@ -82,7 +82,7 @@ fn contact_normals_follow_the_conventions() {
     let alpha = 45f64.to_radians();
     let ez = Vector3::z();
     for name in PAPER_SCENES {
-        let c = kinrepro::error::load_coupling(&scene_path(name)).unwrap();
+        let c = kinrepro::error::read_coupling(&scene_path(name)).unwrap();
         let centre = |k: usize| c.balls[k].centre;
         // Ball azimuths 90, 210, 330 degrees on the 80 mm circle.
         for (k, az) in [90.0f64, 210.0, 330.0].iter().enumerate() {
@@ -152,7 +152,7 @@ fn parry_contact_matches_closed_form() {
         "02_maxwell_pins_steel.toml",
         "04_maxwell_balls_steel.toml",
     ] {
-        let c = kinrepro::error::load_coupling(&scene_path(name)).unwrap();
+        let c = kinrepro::error::read_coupling(&scene_path(name)).unwrap();
         for (i, contact) in c.contacts.iter().enumerate() {
             let ball = &c.balls[contact.ball];
             let n0 = closed_form(&contact.surface, &ball.centre, ball.radius).normal;
@@ -220,8 +220,8 @@ fn svd_rank(a: &nalgebra::DMatrix<f64>) -> usize {
 /// self-stress exactly when removing its row leaves the rank unchanged.
 #[test]
 fn redundant_contacts_match_brute_force_rank_tests() {
-    let c01 = kinrepro::error::load_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
-    let c06 = kinrepro::error::load_coupling(&scene_path("06_kelvin_steel.toml")).unwrap();
+    let c01 = kinrepro::error::read_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
+    let c06 = kinrepro::error::read_coupling(&scene_path("06_kelvin_steel.toml")).unwrap();
     let with = |base: &Coupling, extra: &[(usize, usize)]| {
         // (copy of contact, assigned to ball)
         let mut c = base.clone();
@@ -271,7 +271,7 @@ fn redundant_contacts_match_brute_force_rank_tests() {
 /// m^3; 3000 surfaces took 24 s). Timing is in benches/check.rs.
 #[test]
 fn a_thousand_surfaces_are_described_in_one_sentence() {
-    let c01 = kinrepro::error::load_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
+    let c01 = kinrepro::error::read_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
     let mut c = c01.clone();
     for _ in 0..994 {
         c.contacts.push(c01.contacts[0].clone());
@@ -371,14 +371,14 @@ fn a_safety_factor_names_the_material_it_leaves_out() {
     }
     // Steel on steel: nothing is left out; ceramics grooves (scene 05,
     // silicon-carbide balls without an allowable) are.
-    let c = kinrepro::error::load_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
+    let c = kinrepro::error::read_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
     let s = seat(&c, &[0.5; 6], &SolverOptions::default()).unwrap();
     assert!(
         s.contacts
             .iter()
             .all(|r| r.safety_factor_left_out.is_empty())
     );
-    let c = kinrepro::error::load_coupling(&scene_path("05_maxwell_balls_sic.toml")).unwrap();
+    let c = kinrepro::error::read_coupling(&scene_path("05_maxwell_balls_sic.toml")).unwrap();
     let s = seat(&c, &[0.6; 6], &SolverOptions::default()).unwrap();
     for r in &s.contacts {
         assert_eq!(r.safety_factor_left_out.len(), 1);

@@ -79,7 +79,7 @@ fn same_seed_same_json_bytes_and_four_shards_merge_to_one_run() {
 }
 
 fn maxwell_mc(name: &str, n: usize) -> VariantReport {
-    let c = kinrepro::error::load_coupling(&scene(name)).unwrap();
+    let c = kinrepro::error::read_coupling(&scene(name)).unwrap();
     let opts = StudyOptions {
         sampler: Some(Sampler::MonteCarlo),
         samples: Some(n),

@@ -150,7 +150,7 @@ fn larger_ball_in_a_45_degree_v_raises_the_half_by_the_closed_form() {
 
 #[test]
 fn study_reports_interchangeability_separately() {
-    let c = kinrepro::error::load_coupling(&scene("tolerances_maxwell_vgroove.toml")).unwrap();
+    let c = kinrepro::error::read_coupling(&scene("tolerances_maxwell_vgroove.toml")).unwrap();
     let opts = StudyOptions {
         samples: Some(12),
         variation: Variation {
@@ -208,7 +208,7 @@ fn src_of_a_synthetic_linear_response_equals_the_known_shares() {
 
 #[test]
 fn scene01_friction_shares_sum_to_one_and_are_symmetric_between_grooves() {
-    let c = kinrepro::error::load_coupling(&scene("01_maxwell_vgroove_steel.toml")).unwrap();
+    let c = kinrepro::error::read_coupling(&scene("01_maxwell_vgroove_steel.toml")).unwrap();
     let opts = StudyOptions {
         sampler: Some(Sampler::Lhs),
         samples: Some(300),

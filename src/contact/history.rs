@@ -175,54 +175,91 @@ pub struct HistoryRow {
     pub load: LoadStep,
 }
 
+/// Why a history file cannot be read; each names the file and, where there
+/// is one, the line and the column.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum HistoryCsvError {
+    #[error("{file}: empty history (expected the header `{}`)", HISTORY_HEADER.join(","))]
+    Empty { file: String },
+    #[error("{file}:{line}: header `{header}` must be `{}`", HISTORY_HEADER.join(","))]
+    Header {
+        file: String,
+        line: usize,
+        header: String,
+    },
+    #[error("{file}:{line}: {count} fields, expected 3 ({})", HISTORY_HEADER.join(","))]
+    FieldCount {
+        file: String,
+        line: usize,
+        count: usize,
+    },
+    #[error("{file}:{line}: column {column}: `{text}` is not a finite number")]
+    NotANumber {
+        file: String,
+        line: usize,
+        column: &'static str,
+        text: String,
+    },
+    #[error("{file}:{line}: column P_N: {value} N: the normal load must be positive")]
+    NormalLoad {
+        file: String,
+        line: usize,
+        value: f64,
+    },
+    #[error("{file}: no rows after the header")]
+    NoRows { file: String },
+}
+
 /// Parse a history CSV: the header `P_N,Qx_N,Qy_N`, then one row per step
 /// (P > 0 and Q finite, in N); blank lines and lines starting with `#` are
 /// skipped. Errors name `file`, the line and the column.
-pub fn parse_history_csv(text: &str, file: &str) -> Result<Vec<HistoryRow>, String> {
+pub fn parse_history_csv(text: &str, file: &str) -> Result<Vec<HistoryRow>, HistoryCsvError> {
+    let file = || file.to_string();
     let mut lines = text
         .lines()
         .enumerate()
         .map(|(i, l)| (i + 1, l.trim()))
         .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
     let Some((hline, header)) = lines.next() else {
-        return Err(format!(
-            "{file}: empty history (expected the header `{}`)",
-            HISTORY_HEADER.join(",")
-        ));
+        return Err(HistoryCsvError::Empty { file: file() });
     };
     let cols: Vec<&str> = header.split(',').map(str::trim).collect();
     if cols != HISTORY_HEADER {
-        return Err(format!(
-            "{file}:{hline}: header `{header}` must be `{}`",
-            HISTORY_HEADER.join(",")
-        ));
+        return Err(HistoryCsvError::Header {
+            file: file(),
+            line: hline,
+            header: header.to_string(),
+        });
     }
     let mut rows = Vec::new();
     for (line, l) in lines {
         let fields: Vec<&str> = l.split(',').map(str::trim).collect();
         if fields.len() != 3 {
-            return Err(format!(
-                "{file}:{line}: {} fields, expected 3 ({})",
-                fields.len(),
-                HISTORY_HEADER.join(",")
-            ));
+            return Err(HistoryCsvError::FieldCount {
+                file: file(),
+                line,
+                count: fields.len(),
+            });
         }
         let mut v = [0.0; 3];
         for (k, f) in fields.iter().enumerate() {
-            let col = HISTORY_HEADER[k];
             v[k] = f
                 .parse::<f64>()
                 .ok()
                 .filter(|x| x.is_finite())
-                .ok_or_else(|| {
-                    format!("{file}:{line}: column {col}: `{f}` is not a finite number")
+                .ok_or_else(|| HistoryCsvError::NotANumber {
+                    file: file(),
+                    line,
+                    column: HISTORY_HEADER[k],
+                    text: f.to_string(),
                 })?;
         }
         if v[0] <= 0.0 {
-            return Err(format!(
-                "{file}:{line}: column P_N: {} N: the normal load must be positive",
-                v[0]
-            ));
+            return Err(HistoryCsvError::NormalLoad {
+                file: file(),
+                line,
+                value: v[0],
+            });
         }
         rows.push(HistoryRow {
             line,
@@ -233,7 +270,7 @@ pub fn parse_history_csv(text: &str, file: &str) -> Result<Vec<HistoryRow>, Stri
         });
     }
     if rows.is_empty() {
-        return Err(format!("{file}: no rows after the header"));
+        return Err(HistoryCsvError::NoRows { file: file() });
     }
     Ok(rows)
 }

@@ -66,19 +66,23 @@ impl ContactShape {
 }
 
 impl std::str::FromStr for ContactShape {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
+    type Err = UnknownShape;
+    fn from_str(s: &str) -> Result<Self, UnknownShape> {
         ContactShape::ALL
             .into_iter()
             .find(|c| c.name() == s)
-            .ok_or_else(|| {
-                let names: Vec<_> = ContactShape::ALL.iter().map(|c| c.name()).collect();
-                format!(
-                    "unknown contact shape `{s}` (expected one of {})",
-                    names.join(", ")
-                )
-            })
+            .ok_or_else(|| UnknownShape(s.to_string()))
     }
+}
+
+/// A contact shape name that is none of [`ContactShape::ALL`].
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error("unknown contact shape `{0}` (expected one of {names})", names = shape_names())]
+pub struct UnknownShape(pub String);
+
+fn shape_names() -> String {
+    let names: Vec<_> = ContactShape::ALL.iter().map(|c| c.name()).collect();
+    names.join(", ")
 }
 
 /// Bad contact input.

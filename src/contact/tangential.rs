@@ -60,30 +60,34 @@ impl TangentialLaw {
 }
 
 impl std::str::FromStr for TangentialLaw {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
+    type Err = UnknownLaw;
+    fn from_str(s: &str) -> Result<Self, UnknownLaw> {
         if s == "cattaneo-mindlin" {
-            return Err(
-                "tangential law `cattaneo-mindlin` was removed (it applied the \
-                 constant-load Cattaneo curve to a changing normal load, 1.5x too stiff \
-                 under proportional loading): use `mindlin-deresiewicz`"
-                    .to_string(),
-            );
+            return Err(UnknownLaw::Removed);
         }
         TangentialLaw::ALL
             .into_iter()
             .find(|l| l.name() == s)
-            .ok_or_else(|| {
-                format!("unknown tangential law `{s}` (expected coulomb or mindlin-deresiewicz)")
-            })
+            .ok_or_else(|| UnknownLaw::Unknown(s.to_string()))
     }
 }
 
 impl TryFrom<String> for TangentialLaw {
-    type Error = String;
-    fn try_from(s: String) -> Result<Self, String> {
+    type Error = UnknownLaw;
+    fn try_from(s: String) -> Result<Self, UnknownLaw> {
         s.parse()
     }
+}
+
+/// A tangential law name that is none of [`TangentialLaw::ALL`].
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum UnknownLaw {
+    #[error(
+        "tangential law `cattaneo-mindlin` was removed (it applied the constant-load Cattaneo curve to a changing normal load, 1.5x too stiff under proportional loading): use `mindlin-deresiewicz`"
+    )]
+    Removed,
+    #[error("unknown tangential law `{0}` (expected coulomb or mindlin-deresiewicz)")]
+    Unknown(String),
 }
 
 /// Static and dynamic friction coefficients of one contact, the law between

@@ -12,6 +12,15 @@ use crate::assembly::Coupling;
 use crate::solve::quasistatic::{ExternalLoad, LoadEvent, LoadPath};
 use crate::solve::{ContactResult, PointPose, Seating};
 
+/// Why a stiffness report cannot be made.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ReportError {
+    /// The compliance (its inverse) and the principal stiffnesses need a
+    /// positive definite matrix.
+    #[error("the stiffness matrix is not positive definite")]
+    NotPositiveDefinite,
+}
+
 /// A principal stiffness and its direction.
 #[derive(Debug, Clone, Serialize)]
 pub struct PrincipalReport {
@@ -72,7 +81,7 @@ impl StiffnessReport {
         seating: &Seating,
         k: &CouplingStiffness,
         points: &[(String, Vector3<f64>)],
-    ) -> Result<Self, String> {
+    ) -> Result<Self, ReportError> {
         let pts = points
             .iter()
             .map(|(name, p)| {
@@ -80,10 +89,8 @@ impl StiffnessReport {
                 let m = k.matrix_at(&q);
                 let c = k
                     .compliance_at(&q)
-                    .ok_or("the stiffness matrix is not positive definite")?;
-                let pr = k
-                    .principal_at(&q)
-                    .ok_or("the stiffness matrix is not positive definite")?;
+                    .ok_or(ReportError::NotPositiveDefinite)?;
+                let pr = k.principal_at(&q).ok_or(ReportError::NotPositiveDefinite)?;
                 let conv = |v: &[(f64, Vector3<f64>); 3]| {
                     v.iter()
                         .map(|(s, d)| PrincipalReport {
@@ -101,7 +108,7 @@ impl StiffnessReport {
                     rotational: conv(&pr.rotational),
                 })
             })
-            .collect::<Result<Vec<_>, String>>()?;
+            .collect::<Result<Vec<_>, ReportError>>()?;
         Ok(StiffnessReport {
             scene: coupling.scene.file.clone(),
             name: coupling.scene.name.clone(),

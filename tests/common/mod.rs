@@ -27,7 +27,7 @@ pub fn scene(name: &str) -> PathBuf {
 
 /// Load and assemble a bundled scene.
 pub fn load(name: &str) -> kinrepro::assembly::Coupling {
-    kinrepro::error::load_coupling(&scene(name)).unwrap()
+    kinrepro::error::read_coupling(&scene(name)).unwrap()
 }
 
 /// Steel (E = 210 GPa, nu = 0.3) on steel: E* = E / (2 (1 - nu^2)) (Hertz; Johnson 1985, eq. 4.22).

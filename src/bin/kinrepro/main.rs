@@ -2,6 +2,7 @@
 
 mod args;
 mod commands;
+mod error;
 
 use std::process::ExitCode;
 

@@ -2,15 +2,16 @@
 
 use super::*;
 use crate::args::*;
+use crate::error::{CliError, Context};
 
-pub fn stiffness(args: StiffnessArgs) -> Result<(), String> {
+pub fn stiffness(args: StiffnessArgs) -> Result<(), CliError> {
     let StiffnessArgs {
         scene,
         at,
         mu,
         json,
     } = args;
-    let coupling = kinrepro::error::load_coupling(&scene).map_err(|e| e.to_string())?;
+    let coupling = kinrepro::error::read_coupling(&scene)?;
     let points = match at {
         Some(_) => vec![("--at".to_string(), finite3("at", at)?)],
         None => coupling
@@ -22,13 +23,13 @@ pub fn stiffness(args: StiffnessArgs) -> Result<(), String> {
     };
     let mu = mu.unwrap_or_else(|| kinrepro::solve::nominal_mu(&coupling));
     let file = coupling.scene.file.clone();
-    let seating = kinrepro::solve::quasistatic::seat(&coupling, &mu, &Default::default())
-        .map_err(|e| format!("{file}: {e}"))?;
+    let seating =
+        kinrepro::solve::quasistatic::seat(&coupling, &mu, &Default::default()).context(&file)?;
     let k = kinrepro::analysis::stiffness::CouplingStiffness::new(&coupling, &seating, &mu)
-        .map_err(|e| format!("{file}: {e}"))?;
+        .context(&file)?;
     let report =
         kinrepro::report::analysis::StiffnessReport::new(&coupling, &mu, &seating, &k, &points)
-            .map_err(|e| format!("{file}: {e}"))?;
+            .context(&file)?;
     if json {
         print_json(&report)
     } else {
@@ -36,7 +37,7 @@ pub fn stiffness(args: StiffnessArgs) -> Result<(), String> {
     }
 }
 
-pub fn load(args: LoadArgs) -> Result<(), String> {
+pub fn load(args: LoadArgs) -> Result<(), CliError> {
     let LoadArgs {
         scene,
         force,
@@ -49,23 +50,24 @@ pub fn load(args: LoadArgs) -> Result<(), String> {
     let point = finite3("at", Some(at))?;
     let moment = finite3("moment", moment)?;
     if force.norm() == 0.0 && moment.norm() == 0.0 {
-        return Err("--force and --moment are both zero: there is no load to apply".into());
+        return Err(CliError::Usage(
+            "--force and --moment are both zero: there is no load to apply".into(),
+        ));
     }
-    let coupling = kinrepro::error::load_coupling(&scene).map_err(|e| e.to_string())?;
+    let coupling = kinrepro::error::read_coupling(&scene)?;
     let mu = mu.unwrap_or_else(|| kinrepro::solve::nominal_mu(&coupling));
     let file = coupling.scene.file.clone();
     let opts = kinrepro::solve::SolverOptions::default();
-    let seating = kinrepro::solve::quasistatic::seat(&coupling, &mu, &opts)
-        .map_err(|e| format!("{file}: {e}"))?;
+    let seating = kinrepro::solve::quasistatic::seat(&coupling, &mu, &opts).context(&file)?;
     let load = kinrepro::solve::quasistatic::ExternalLoad {
         force,
         point,
         moment,
     };
     let path = kinrepro::analysis::load::load_path(&coupling, &mu, &seating, &load, 1.0, &opts)
-        .map_err(|e| format!("{file}: the load path failed: {e}"))?;
+        .context(format!("{file}: the load path failed"))?;
     let envelope = kinrepro::analysis::load::envelope(&coupling, &mu, &seating, &load, &opts)
-        .map_err(|e| format!("{file}: the envelope search failed: {e}"))?;
+        .context(format!("{file}: the envelope search failed"))?;
     let mut points: Vec<(String, nalgebra::Vector3<f64>)> = coupling
         .scene
         .evaluation_points

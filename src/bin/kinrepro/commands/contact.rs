@@ -10,44 +10,47 @@ use kinrepro::report::contact::{HistoryProvenance, contact_table, history_csv};
 
 use super::emit;
 use crate::args::*;
+use crate::error::{CliError, Context};
 
-pub fn contact(args: ContactArgs) -> Result<(), String> {
+pub fn contact(args: ContactArgs) -> Result<(), CliError> {
     let pair = ContactPair {
         shape: args.shape,
         radius1: args.radius1,
         radius2: args.radius2,
-        material1: Material::builtin(&args.material1).map_err(|e| format!("--material1: {e}"))?,
-        material2: Material::builtin(&args.material2).map_err(|e| format!("--material2: {e}"))?,
+        material1: Material::builtin(&args.material1).context("--material1")?,
+        material2: Material::builtin(&args.material2).context("--material2")?,
     };
-    let eval = pair.evaluate(args.load).map_err(|e| e.to_string())?;
+    let eval = pair.evaluate(args.load)?;
     if let Some(path) = &args.history {
         return history(&args, &pair, path);
     }
     if args.json {
-        let text = serde_json::to_string_pretty(&eval).map_err(|e| e.to_string())?;
+        let text = serde_json::to_string_pretty(&eval)?;
         emit(&format!("{text}\n"))
     } else {
         emit(&contact_table(&eval))
     }
 }
 
-fn history(args: &ContactArgs, pair: &ContactPair, path: &Path) -> Result<(), String> {
+fn history(args: &ContactArgs, pair: &ContactPair, path: &Path) -> Result<(), CliError> {
     let mu = args.mu.unwrap_or(f64::NAN);
     if !(mu.is_finite() && mu > 0.0) {
-        return Err(format!(
+        return Err(CliError::Usage(format!(
             "--mu {mu}: the friction coefficient must be positive and finite"
-        ));
+        )));
     }
     let ratio = args.dynamic_ratio;
     if !(ratio > 0.0 && ratio <= 1.0) {
-        return Err(format!("--dynamic-ratio {ratio}: must lie in (0, 1]"));
+        return Err(CliError::Usage(format!(
+            "--dynamic-ratio {ratio}: must lie in (0, 1]"
+        )));
     }
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{file}: {e}"))?;
+    let text = std::fs::read_to_string(path).map_err(|e| CliError::file(&file, "", e))?;
     let rows = parse_history_csv(&text, &file)?;
     let loads: Vec<LoadStep> = rows.iter().map(|r| r.load).collect();
     let friction = Friction::switch(mu, ratio * mu);
-    let law = pair.law().map_err(|e| e.to_string())?;
+    let law = pair.law()?;
     let steps = drive(&law, args.tangential_law, friction, &loads).map_err(|e| {
         let step = match &e {
             HistoryError::BadNormal { step, .. }
@@ -55,7 +58,7 @@ fn history(args: &ContactArgs, pair: &ContactPair, path: &Path) -> Result<(), St
             | HistoryError::Slides { step, .. }
             | HistoryError::NoConvergence { step, .. } => *step,
         };
-        format!("{file}:{}: {e}", rows[step - 1].line)
+        CliError::from(e).in_context(format!("{file}:{}", rows[step - 1].line))
     })?;
     let prov = HistoryProvenance {
         shape: pair.shape.name(),

@@ -2,8 +2,9 @@
 
 use super::{emit, print_json};
 use crate::args::*;
+use crate::error::{CliError, Context};
 
-pub fn validate_hertz(args: ValidateHertzArgs) -> Result<(), String> {
+pub fn validate_hertz(args: ValidateHertzArgs) -> Result<(), CliError> {
     let ValidateHertzArgs {
         scenes,
         mesh,
@@ -14,25 +15,27 @@ pub fn validate_hertz(args: ValidateHertzArgs) -> Result<(), String> {
         kinrepro::scene::bundled::PAPER_SCENES
             .iter()
             .map(|(file, text)| {
-                let s = kinrepro::scene::Scene::parse(text, file).map_err(|e| e.to_string())?;
-                kinrepro::assembly::Coupling::new(&s).map_err(|e| format!("{file}: {e}"))
+                let s = kinrepro::scene::Scene::parse(text, file)?;
+                kinrepro::assembly::Coupling::new(&s).context(file)
             })
-            .collect::<Result<Vec<_>, String>>()?
+            .collect::<Result<Vec<_>, CliError>>()?
     } else {
         scenes
             .iter()
-            .map(|p| kinrepro::error::load_coupling(p).map_err(|e| e.to_string()))
-            .collect::<Result<Vec<_>, String>>()?
+            .map(|p| kinrepro::error::read_coupling(p))
+            .collect::<Result<Vec<_>, _>>()?
     };
-    let cases =
-        kinrepro::fe::pairs::distinct_pairs(&couplings).map_err(|(f, e)| format!("{f}: {e}"))?;
+    let cases = kinrepro::fe::pairs::distinct_pairs(&couplings)
+        .map_err(|(f, e)| CliError::from(e).in_context(f))?;
     let mesh = match mesh {
         MeshKind::Default => kinrepro::fe::MeshOptions::default(),
         MeshKind::Coarse => kinrepro::fe::MeshOptions::coarse(),
     };
     let levels = convergence.unwrap_or_default();
     if levels.iter().any(|l| !(l.is_finite() && *l > 0.0)) {
-        return Err("--convergence: element sizes must be positive numbers".into());
+        return Err(CliError::Usage(
+            "--convergence: element sizes must be positive numbers".into(),
+        ));
     }
     let mut rows = Vec::new();
     for case in &cases {
@@ -44,14 +47,12 @@ pub fn validate_hertz(args: ValidateHertzArgs) -> Result<(), String> {
             case.load
         );
         rows.push(
-            kinrepro::fe::pairs::validate_pair(case, &mesh, &levels).map_err(|e| {
-                format!(
-                    "{} {}/{}: {e}",
-                    case.pair.shape.name(),
-                    case.pair.material1.name,
-                    case.pair.material2.name
-                )
-            })?,
+            kinrepro::fe::pairs::validate_pair(case, &mesh, &levels).context(format!(
+                "{} {}/{}",
+                case.pair.shape.name(),
+                case.pair.material1.name,
+                case.pair.material2.name
+            ))?,
         );
     }
     if json {

@@ -10,8 +10,9 @@ mod study;
 use kinrepro::report::study::StudyReport;
 
 use crate::args::{Command, Format};
+use crate::error::CliError;
 
-pub fn dispatch(command: Command) -> Result<(), String> {
+pub fn dispatch(command: Command) -> Result<(), CliError> {
     match command {
         Command::Contact(a) => contact::contact(a),
         Command::Check(a) => scene::check(a),
@@ -25,27 +26,24 @@ pub fn dispatch(command: Command) -> Result<(), String> {
     }
 }
 
-pub fn print_study(report: &StudyReport, format: Format) -> Result<(), String> {
+pub fn print_study(report: &StudyReport, format: Format) -> Result<(), CliError> {
     match format {
         Format::Table => emit(&report.table()),
         Format::Csv => emit(&report.csv()),
-        Format::Json => emit(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(report).map_err(|e| e.to_string())?
-        )),
+        Format::Json => emit(&format!("{}\n", serde_json::to_string_pretty(report)?)),
     }
 }
 
 /// Write `text` to stdout. A closed pipe (`| head`) is not an error: the
 /// reader has what it wanted, so the rest is dropped quietly as Unix tools
 /// do; any other failure (a full disk) is one clear error.
-pub fn emit(text: &str) -> Result<(), String> {
+pub fn emit(text: &str) -> Result<(), CliError> {
     use std::io::Write;
     let mut out = std::io::stdout().lock();
     match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
         Ok(()) => Ok(()),
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
-        Err(e) => Err(format!("stdout: cannot write the results: {e}")),
+        Err(e) => Err(CliError::Stdout(e)),
     }
 }
 
@@ -54,10 +52,12 @@ pub const JOBS_PER_CORE: usize = 4;
 
 /// Build the global thread pool for `--jobs`, capped at the number of
 /// samples and at [`JOBS_PER_CORE`] per core (said on stderr when capped).
-pub fn set_jobs(jobs: Option<usize>, samples: usize) -> Result<(), String> {
+pub fn set_jobs(jobs: Option<usize>, samples: usize) -> Result<(), CliError> {
     let Some(asked) = jobs else { return Ok(()) };
     if asked == 0 {
-        return Err("--jobs 0: need at least 1 worker thread".into());
+        return Err(CliError::Usage(
+            "--jobs 0: need at least 1 worker thread".into(),
+        ));
     }
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let cap = (JOBS_PER_CORE * cores).min(samples.max(1));
@@ -70,52 +70,49 @@ pub fn set_jobs(jobs: Option<usize>, samples: usize) -> Result<(), String> {
     rayon::ThreadPoolBuilder::new()
         .num_threads(j)
         .build_global()
-        .map_err(|e| format!("--jobs: {e}"))
+        .map_err(CliError::Jobs)
 }
 
 /// Documented range of `--increments`.
 pub const INCREMENTS: std::ops::RangeInclusive<usize> = 1..=100_000;
 
 /// `--increments` inside [`INCREMENTS`].
-pub fn check_increments(n: usize) -> Result<(), String> {
+pub fn check_increments(n: usize) -> Result<(), CliError> {
     if INCREMENTS.contains(&n) {
         Ok(())
     } else {
-        Err(format!(
+        Err(CliError::Usage(format!(
             "--increments {n}: out of range, need {}..={} load increments",
             INCREMENTS.start(),
             INCREMENTS.end()
-        ))
+        )))
     }
 }
 
-pub fn vector3(name: &str, v: Option<Vec<f64>>) -> Result<nalgebra::Vector3<f64>, String> {
+pub fn vector3(name: &str, v: Option<Vec<f64>>) -> Result<nalgebra::Vector3<f64>, CliError> {
     match v {
         None => Ok(nalgebra::Vector3::zeros()),
         Some(v) if v.len() == 3 => Ok(nalgebra::Vector3::new(v[0], v[1], v[2])),
-        Some(v) => Err(format!(
+        Some(v) => Err(CliError::Usage(format!(
             "--{name} needs three comma-separated values, got {}",
             v.len()
-        )),
+        ))),
     }
 }
 
 /// A finite three-vector option (None -> zero).
-pub fn finite3(name: &str, v: Option<Vec<f64>>) -> Result<nalgebra::Vector3<f64>, String> {
+pub fn finite3(name: &str, v: Option<Vec<f64>>) -> Result<nalgebra::Vector3<f64>, CliError> {
     let x = vector3(name, v)?;
     if x.iter().all(|c| c.is_finite()) {
         Ok(x)
     } else {
-        Err(format!(
+        Err(CliError::Usage(format!(
             "--{name} needs three finite numbers, got ({}, {}, {})",
             x.x, x.y, x.z
-        ))
+        )))
     }
 }
 
-pub fn print_json<T: serde::Serialize>(v: &T) -> Result<(), String> {
-    emit(&format!(
-        "{}\n",
-        serde_json::to_string_pretty(v).map_err(|e| e.to_string())?
-    ))
+pub fn print_json<T: serde::Serialize>(v: &T) -> Result<(), CliError> {
+    emit(&format!("{}\n", serde_json::to_string_pretty(v)?))
 }

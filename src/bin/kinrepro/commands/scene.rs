@@ -1,15 +1,15 @@
 //! `kinrepro check` and `kinrepro expand`: scene validation.
 
 use crate::args::*;
+use crate::error::{CliError, Context};
 
-pub fn check(args: CheckArgs) -> Result<(), String> {
+pub fn check(args: CheckArgs) -> Result<(), CliError> {
     let CheckArgs { scenes } = args;
     let mut failed = 0;
     for path in &scenes {
-        match kinrepro::error::load_coupling(path) {
+        match kinrepro::error::read_coupling(path) {
             Ok(c) => {
-                let moves = kinrepro::study::runner::friction_moves_pose(&c, &Default::default())
-                    .map_err(|e| e.to_string())?;
+                let moves = kinrepro::study::runner::friction_moves_pose(&c, &Default::default())?;
                 let note = kinrepro::report::check::seating_note(&c, moves);
                 let summary = kinrepro::report::check::check_summary(&c);
                 super::emit(&format!("{summary}{note}\n"))?
@@ -21,19 +21,22 @@ pub fn check(args: CheckArgs) -> Result<(), String> {
         }
     }
     if failed > 0 {
-        return Err(format!("{failed} of {} scenes are invalid", scenes.len()));
+        return Err(CliError::InvalidScenes {
+            failed,
+            total: scenes.len(),
+        });
     }
     Ok(())
 }
 
-pub fn expand(args: ExpandArgs) -> Result<(), String> {
+pub fn expand(args: ExpandArgs) -> Result<(), CliError> {
     let ExpandArgs { scene } = args;
     let file = scene.display().to_string();
     let source = std::fs::read_to_string(&scene)
-        .map_err(|e| format!("{file}: cannot read the file: {e}"))?;
-    let text = kinrepro::scene::Scene::expand_text(&source, &file).map_err(|e| e.to_string())?;
+        .map_err(|e| CliError::file(&file, "cannot read the file: ", e))?;
+    let text = kinrepro::scene::Scene::expand_text(&source, &file)?;
     // The explicit form must assemble too.
-    let explicit = kinrepro::scene::Scene::parse(&text, &file).map_err(|e| e.to_string())?;
-    kinrepro::assembly::Coupling::new(&explicit).map_err(|e| format!("{file}: {e}"))?;
+    let explicit = kinrepro::scene::Scene::parse(&text, &file)?;
+    kinrepro::assembly::Coupling::new(&explicit).context(&file)?;
     super::emit(&text)
 }

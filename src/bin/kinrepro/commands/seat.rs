@@ -2,8 +2,9 @@
 
 use super::*;
 use crate::args::*;
+use crate::error::{CliError, Context};
 
-pub fn run(args: RunArgs) -> Result<(), String> {
+pub fn run(args: RunArgs) -> Result<(), CliError> {
     let RunArgs {
         scene,
         mu,
@@ -16,10 +17,12 @@ pub fn run(args: RunArgs) -> Result<(), String> {
         json,
     } = args;
     use kinrepro::solve::dynamic::{DynamicOptions, StartPose, seat_traced};
-    let coupling = kinrepro::error::load_coupling(&scene).map_err(|e| e.to_string())?;
+    let coupling = kinrepro::error::read_coupling(&scene)?;
     if solver == SolverKind::QuasiStatic && (trace.is_some() || offset.is_some() || tilt.is_some())
     {
-        return Err("--trace, --offset and --tilt need --solver dynamic".to_string());
+        return Err(CliError::Usage(
+            "--trace, --offset and --tilt need --solver dynamic".to_string(),
+        ));
     }
     check_increments(increments)?;
     let opts = kinrepro::solve::SolverOptions {
@@ -41,15 +44,15 @@ pub fn run(args: RunArgs) -> Result<(), String> {
             SolverKind::QuasiStatic => kinrepro::solve::quasistatic::seat(&coupling, m, &opts),
             SolverKind::Dynamic => kinrepro::solve::dynamic::seat(&coupling, m, &dyn_opts),
         }
-        .map_err(|e| format!("{file}: {e}"))
+        .context(&file)
     };
     let seating = match (&trace, solver) {
         (Some(path), SolverKind::Dynamic) => {
             let name = path.display().to_string();
-            let mut trace_file = kinrepro::report::atomic::AtomicFile::create(path, force)
-                .map_err(|e| format!("--trace: {e}"))?;
+            let mut trace_file =
+                kinrepro::report::atomic::AtomicFile::create(path, force).context("--trace")?;
             let mut w = kinrepro::report::trace::TraceWriter::new(trace_file.writer(), &coupling)
-                .map_err(|e| format!("{name}: {e}"))?;
+                .map_err(|e| CliError::file(&name, "", e))?;
             let mut io_err = None;
             let result = seat_traced(&coupling, &mu, &dyn_opts, &mut |s| {
                 if io_err.is_none() {
@@ -57,11 +60,14 @@ pub fn run(args: RunArgs) -> Result<(), String> {
                 }
             });
             if let Some(e) = io_err {
-                return Err(format!("{name}: writing the trace failed: {e}"));
+                return Err(CliError::file(&name, "writing the trace failed: ", e));
             }
-            w.finish().map_err(|e| format!("{name}: {e}"))?;
-            trace_file.commit().map_err(|e| e.to_string())?;
-            result.map_err(|e| format!("{file}: {e} (trace written to {name})"))?
+            w.finish().map_err(|e| CliError::file(&name, "", e))?;
+            trace_file.commit()?;
+            result.map_err(|e| CliError::Traced {
+                trace: name.clone(),
+                source: Box::new(CliError::from(e).in_context(&file)),
+            })?
         }
         _ => seat(&mu)?,
     };

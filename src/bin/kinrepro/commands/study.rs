@@ -12,64 +12,61 @@ use kinrepro::study::runner::{
 
 use super::*;
 use crate::args::*;
+use crate::error::{CliError, Context};
 
 /// Rows seated per chunk of a streamed study.
 const CHUNK: usize = 8192;
 
-pub fn study(args: StudyArgs) -> Result<(), String> {
+pub fn study(args: StudyArgs) -> Result<(), CliError> {
     let opts = options(&args)?;
     let couplings = args
         .scenes
         .iter()
-        .map(|p| kinrepro::error::load_coupling(p).map_err(|e| e.to_string()))
+        .map(|p| kinrepro::error::read_coupling(p))
         .collect::<Result<Vec<_>, _>>()?;
     if args.sensitivity && args.sobol_samples < 2 {
-        return Err("--sobol-samples: the base sample size must be at least 2".into());
+        return Err(CliError::Usage(
+            "--sobol-samples: the base sample size must be at least 2".into(),
+        ));
     }
     // Sobol indices need the whole design in one run (not per shard).
     let sobol = args.sensitivity && opts.shard.count == 1;
     let mut total = 0;
     let mut streamed = false;
     for c in &couplings {
-        kinrepro::study::runner::check_options(c, &opts).map_err(|e| e.to_string())?;
-        let d = design_for(c, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?;
-        total += opts
-            .shard
-            .range(d.n)
-            .map_err(|e| format!("--shard: {e}"))?
-            .len();
+        kinrepro::study::runner::check_options(c, &opts)?;
+        let d = design_for(c, &opts).context(&c.scene.file)?;
+        total += opts.shard.range(d.n).context("--shard")?.len();
         streamed |= streams(&d) && opts.shard.count == 1;
         if sobol {
             total += args.sobol_samples * (d.dims + 2);
         }
     }
     if streamed && opts.sensitivity {
-        return Err(format!(
+        return Err(CliError::Usage(format!(
             "--sensitivity keeps every sample in memory: not available for Monte Carlo studies above {STREAM_ABOVE} samples"
-        ));
+        )));
     }
     set_jobs(args.jobs, total)?;
     let bar = progress(total)?;
     let mut variants = Vec::new();
     let mut pending_csv = Vec::new();
     for (i, c) in couplings.iter().enumerate() {
-        let d = design_for(c, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?;
+        let d = design_for(c, &opts).context(&c.scene.file)?;
         if streams(&d) && opts.shard.count == 1 {
             let (v, csv) = streamed_variant(i, c, &opts, &args, &|| bar.inc(1))?;
             variants.push(v);
             pending_csv.extend(csv);
         } else {
-            let run = run_variant(c, &opts, &|| bar.inc(1)).map_err(|e| e.to_string())?;
-            let mut v =
-                VariantReport::new(c, run, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?;
+            let run = run_variant(c, &opts, &|| bar.inc(1))?;
+            let mut v = VariantReport::new(c, run, &opts).context(&c.scene.file)?;
             if sobol {
                 let r = kinrepro::study::sensitivity::sobol_run::run_sobol(
                     c,
                     &opts,
                     args.sobol_samples,
                     &|| bar.inc(1),
-                )
-                .map_err(|e| e.to_string())?;
+                )?;
                 kinrepro::report::sensitivity::attach_sobol(&mut v, &r);
             }
             variants.push(v);
@@ -80,13 +77,10 @@ pub fn study(args: StudyArgs) -> Result<(), String> {
     // Results first: a failed file write must not lose them.
     print_study(&report, args.format)?;
     for csv in pending_csv {
-        csv.commit().map_err(|e| e.to_string())?;
+        csv.commit()?;
     }
     if let Some(dir) = &args.out {
-        for f in report
-            .write_files(dir, args.force, streamed)
-            .map_err(|e| e.to_string())?
-        {
+        for f in report.write_files(dir, args.force, streamed)? {
             eprintln!("wrote {f}");
         }
     }
@@ -94,7 +88,7 @@ pub fn study(args: StudyArgs) -> Result<(), String> {
 }
 
 /// A study whose coupling cannot seat fails unless `--allow-unseated`.
-fn refuse_unseated(report: &StudyReport, allow: bool) -> Result<(), String> {
+fn refuse_unseated(report: &StudyReport, allow: bool) -> Result<(), CliError> {
     let bad = report.cannot_seat();
     if bad.is_empty() {
         return Ok(());
@@ -105,10 +99,7 @@ fn refuse_unseated(report: &StudyReport, allow: bool) -> Result<(), String> {
         }
         return Ok(());
     }
-    Err(format!(
-        "cannot seat: {} (pass --allow-unseated to accept this result)",
-        bad.join("; ")
-    ))
+    Err(CliError::CannotSeat(bad.join("; ")))
 }
 
 /// One scene's Monte Carlo study streamed in chunks: moments in sample
@@ -119,9 +110,9 @@ fn streamed_variant(
     opts: &StudyOptions,
     args: &StudyArgs,
     tick: &(dyn Fn() + Sync),
-) -> Result<(VariantReport, Option<SamplesCsv>), String> {
+) -> Result<(VariantReport, Option<SamplesCsv>), CliError> {
     let file = &c.scene.file;
-    let d = design_for(c, opts).map_err(|e| format!("{file}: {e}"))?;
+    let d = design_for(c, opts).context(file)?;
     let names = recorded_output_names(c, &opts.variation);
     let shell = VariantRun {
         design: d,
@@ -133,18 +124,18 @@ fn streamed_variant(
     let mut csv = match &args.out {
         Some(dir) => {
             std::fs::create_dir_all(dir)
-                .map_err(|e| format!("{}: cannot create the folder: {e}", dir.display()))?;
+                .map_err(|e| CliError::file(dir.display(), "cannot create the folder: ", e))?;
             let path = dir.join(samples_file_name(i, &v));
-            Some(SamplesCsv::create(&path, &v, args.force).map_err(|e| e.to_string())?)
+            Some(SamplesCsv::create(&path, &v, args.force)?)
         }
         None => None,
     };
     let mut st = StreamStats::new(names.len());
-    let mut failure: Option<String> = None;
-    run_chunked(c, opts, CHUNK, tick, &mut |records| {
+    let mut failure: Option<CliError> = None;
+    let run = run_chunked(c, opts, CHUNK, tick, &mut |records| {
         let step = st
             .push(&records, &names)
-            .map_err(|e| format!("{file}: {e}"))
+            .context(file)
             .and_then(|()| match csv.as_mut() {
                 Some(w) => records.iter().try_for_each(|r| {
                     w.push(&kinrepro::report::study::StudyRecord {
@@ -153,7 +144,7 @@ fn streamed_variant(
                         inputs: r.inputs.clone(),
                         outputs: r.outputs.clone(),
                     })
-                    .map_err(|e| e.to_string())
+                    .map_err(CliError::from)
                 }),
                 None => Ok(()),
             });
@@ -165,20 +156,21 @@ fn streamed_variant(
             });
         }
         Ok(())
-    })
-    .map_err(|e| failure.clone().unwrap_or_else(|| e.to_string()))?;
-    v.set_moment_stats(&st)
-        .map_err(|e| format!("{file}: {e}"))?;
+    });
+    if let Err(e) = run {
+        return Err(failure.take().unwrap_or_else(|| e.into()));
+    }
+    v.set_moment_stats(&st).context(file)?;
     Ok((v, csv))
 }
 
 /// The study options from the command line.
-fn options(args: &StudyArgs) -> Result<StudyOptions, String> {
+fn options(args: &StudyArgs) -> Result<StudyOptions, CliError> {
     if args.sampler == Some(kinrepro::study::Sampler::Corners) && args.samples.is_some() {
-        return Err(
+        return Err(CliError::Usage(
             "--samples does not apply to --sampler corners: the corner design has all 2^d extremes"
                 .into(),
-        );
+        ));
     }
     check_increments(args.increments)?;
     let vary = &args.vary;
@@ -203,10 +195,12 @@ fn options(args: &StudyArgs) -> Result<StudyOptions, String> {
             preload: vary.contains(&VaryKind::Preload),
             tolerances: vary.contains(&VaryKind::Tolerances),
             start: if vary.contains(&VaryKind::Start) {
-                let bounds = |name: &str, v: Option<Vec<f64>>| -> Result<_, String> {
+                let bounds = |name: &str, v: Option<Vec<f64>>| -> Result<_, CliError> {
                     let v = vector3(name, v)?;
                     if v.iter().any(|x| !x.is_finite() || *x < 0.0) {
-                        return Err(format!("--{name}: bounds must be finite and >= 0"));
+                        return Err(CliError::Usage(format!(
+                            "--{name}: bounds must be finite and >= 0"
+                        )));
                     }
                     Ok(v)
                 };
@@ -216,7 +210,9 @@ fn options(args: &StudyArgs) -> Result<StudyOptions, String> {
                 })
             } else {
                 if args.offset_bounds.is_some() || args.tilt_bounds.is_some() {
-                    return Err("--offset-bounds and --tilt-bounds need --vary start".into());
+                    return Err(CliError::Usage(
+                        "--offset-bounds and --tilt-bounds need --vary start".into(),
+                    ));
                 }
                 None
             },
@@ -225,33 +221,30 @@ fn options(args: &StudyArgs) -> Result<StudyOptions, String> {
 }
 
 /// The progress bar (on a terminal only).
-fn progress(total: usize) -> Result<indicatif::ProgressBar, String> {
+fn progress(total: usize) -> Result<indicatif::ProgressBar, CliError> {
     if !std::io::IsTerminal::is_terminal(&std::io::stderr()) {
         return Ok(indicatif::ProgressBar::hidden());
     }
     let b = indicatif::ProgressBar::new(total as u64);
-    b.set_style(
-        indicatif::ProgressStyle::with_template(
-            "{elapsed_precise} [{bar:40}] {pos}/{len} seatings ({eta})",
-        )
-        .map_err(|e| e.to_string())?,
-    );
+    b.set_style(indicatif::ProgressStyle::with_template(
+        "{elapsed_precise} [{bar:40}] {pos}/{len} seatings ({eta})",
+    )?);
     Ok(b)
 }
 
-pub fn merge(args: MergeArgs) -> Result<(), String> {
+pub fn merge(args: MergeArgs) -> Result<(), CliError> {
     let MergeArgs { parts, format } = args;
     let docs = parts
         .iter()
         .map(|p| {
             let text = std::fs::read_to_string(p)
-                .map_err(|e| format!("{}: cannot read: {e}", p.display()))?;
+                .map_err(|e| CliError::file(p.display(), "cannot read: ", e))?;
             let doc = serde_json::from_str::<StudyReport>(&text)
-                .map_err(|e| format!("{}: not a kinrepro study JSON: {e}", p.display()))?;
+                .context(format!("{}: not a kinrepro study JSON", p.display()))?;
             Ok((p.display().to_string(), doc))
         })
-        .collect::<Result<Vec<_>, String>>()?;
-    let merged = kinrepro::report::merge::merge_parts(docs).map_err(|e| format!("merge: {e}"))?;
+        .collect::<Result<Vec<_>, CliError>>()?;
+    let merged = kinrepro::report::merge::merge_parts(docs)?;
     print_study(&merged, format)?;
     refuse_unseated(&merged, true)
 }
