@@ -10,7 +10,7 @@ use kinrepro::assembly::Coupling;
 use kinrepro::report::study::VariantReport;
 use kinrepro::solve::{PointPose, SolverOptions, quasistatic};
 use kinrepro::study::runner::{StudyOptions, Tolerances, Variation, run_variant};
-use kinrepro::study::sensitivity::src;
+use kinrepro::study::sensitivity::regression;
 use kinrepro::study::{Sampler, design};
 use nalgebra::{Matrix6, Vector3, Vector6};
 
@@ -190,7 +190,7 @@ fn src_of_a_synthetic_linear_response_equals_the_known_shares() {
         .iter()
         .map(|r| r.iter().zip(a).map(|(u, a)| u * a).sum::<f64>() + 7.0)
         .collect();
-    let s = src(&x, &y).unwrap();
+    let s = regression(&x, &y).unwrap();
     assert!((s.r_squared - 1.0).abs() < 1e-12);
     for (j, (share, a)) in s.share.iter().zip(a).enumerate() {
         let exact = a * a / total;
@@ -201,9 +201,9 @@ fn src_of_a_synthetic_linear_response_equals_the_known_shares() {
     }
     // A non-linear response is flagged by a low R^2.
     let y2: Vec<f64> = x.iter().map(|r| ((r[0] - 0.5) * 6.0).cos()).collect();
-    assert!(src(&x, &y2).unwrap().r_squared < 0.2);
+    assert!(regression(&x, &y2).unwrap().r_squared < 0.2);
     // Too few samples for the number of inputs is an error, not a number.
-    assert!(src(&x[..5], &y[..5]).is_err());
+    assert!(regression(&x[..5], &y[..5]).is_err());
 }
 
 #[test]

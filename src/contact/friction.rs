@@ -135,19 +135,19 @@ pub fn slide(x: &SlideInput) -> Option<Sliding> {
 
 /// The decay law's return mapping (module docs).
 fn decay_slide(x: &SlideInput, c: f64) -> Option<Sliding> {
-    let (k, fn_, t) = (x.stiffness, x.normal_force, x.trial);
+    let (k, f_n, t) = (x.stiffness, x.normal_force, x.trial);
     if x.was_sliding {
         let (mu, _) = decay_coefficient(x.mu_s, x.mu_d, c, x.previous_velocity);
-        return (t > mu * fn_ && k > 0.0).then(|| Sliding {
-            slip: (t - mu * fn_) / k,
+        return (t > mu * f_n && k > 0.0).then(|| Sliding {
+            slip: (t - mu * f_n) / k,
             ..Sliding::constant(mu)
         });
     }
-    if t <= x.mu_s * fn_ {
+    if t <= x.mu_s * f_n {
         return None;
     }
-    let a = fn_ * (x.mu_s - x.mu_d);
-    let b = t - x.mu_d * fn_;
+    let a = f_n * (x.mu_s - x.mu_d);
+    let b = t - x.mu_d * f_n;
     if b <= 0.0 || k <= 0.0 {
         return None;
     }

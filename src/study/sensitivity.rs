@@ -32,9 +32,10 @@ use super::error::{Result, StudyError};
 /// Below this R^2 the shares are flagged as describing only the linear part.
 pub const R2_LINEAR: f64 = 0.9;
 
-/// Standardized regression coefficients of one output.
+/// The linear regression of one output: its standardized regression
+/// coefficients and variance shares.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Src {
+pub struct Regression {
     /// SRC_j = b_j s(x_j) / s(y), one per input.
     pub src: Vec<f64>,
     /// S_j = R^2 SRC_j^2 / sum_k SRC_k^2: share of the output variance due
@@ -44,10 +45,10 @@ pub struct Src {
     pub r_squared: f64,
 }
 
-/// SRC of output `y` (one value per sample) on inputs `x` (one row per
-/// sample, d columns). Errors: fewer than d + 2 samples, non-finite
-/// values, an output or an input that does not vary.
-pub fn src(x: &[Vec<f64>], y: &[f64]) -> Result<Src> {
+/// Regression of output `y` (one value per sample) on inputs `x` (one row
+/// per sample, d columns): the SRC and shares. Errors: fewer than d + 2
+/// samples, non-finite values, an output or an input that does not vary.
+pub fn regression(x: &[Vec<f64>], y: &[f64]) -> Result<Regression> {
     let n = y.len();
     let d = x.first().map_or(0, |r| r.len());
     if d == 0 {
@@ -97,7 +98,7 @@ pub fn src(x: &[Vec<f64>], y: &[f64]) -> Result<Src> {
     let ss_tot = b.norm_squared();
     let r_squared = 1.0 - resid.norm_squared() / ss_tot;
     let explained: f64 = coef.iter().map(|c| c * c).sum();
-    Ok(Src {
+    Ok(Regression {
         src: coef.iter().copied().collect(),
         share: coef.iter().map(|c| r_squared * c * c / explained).collect(),
         r_squared,
@@ -152,7 +153,7 @@ pub fn block(
         .iter()
         .map(|(k, name)| {
             let y: Vec<f64> = samples.iter().map(|(_, out)| out[*k]).collect();
-            match src(&x, &y) {
+            match regression(&x, &y) {
                 Ok(s) => DofSensitivity {
                     output: name.clone(),
                     note: (s.r_squared < R2_LINEAR).then(|| {

@@ -119,14 +119,14 @@ pub fn contact_force(
         .pose
         .apply(&coupling.balls[coupling.contacts[i].ball].centre);
     // Normal dashpot (Tsuji et al. 1992).
-    let mut fn_ = fh;
+    let mut f_n = fh;
     if damping.normal > 0.0 {
         let m_eff = motion
             .mass
             .effective_mass(&motion.inv_inertia, &(centre - motion.com), &n);
         let c_n = 2.0 * damping.normal * (m_eff * eval.normal_stiffness).sqrt();
         let approach_rate = -n.dot(&motion.velocity_at(&centre));
-        fn_ = (fh + c_n * approach_rate).max(0.0);
+        f_n = (fh + c_n * approach_rate).max(0.0);
     }
     // Tangential: the law's spring force, plus a dashpot while sticking.
     let mut tangential = -eval.tangential.force;
@@ -151,8 +151,8 @@ pub fn contact_force(
     }
     StepContact {
         eval,
-        force: n * fn_ + tangential,
-        normal_force: fn_,
+        force: n * f_n + tangential,
+        normal_force: f_n,
         tangential_force: tangential.norm(),
     }
 }
