@@ -63,7 +63,7 @@ impl Fingerprint {
         let s = &coupling.scene;
         let mut resolved = s.clone();
         resolved.file = String::new();
-        resolved.study.sampler = design.sampler;
+        resolved.study.sampler = design.sampler.into();
         resolved.study.samples = design.n;
         resolved.study.seed = design.seed;
         let p = &s.preload;

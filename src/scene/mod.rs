@@ -20,7 +20,6 @@ use serde::{Deserialize, Serialize};
 
 use crate::contact::{FrictionLaw, TangentialLaw};
 use crate::material::Material;
-use crate::study::Sampler;
 use error::ErrorContext;
 pub use error::SceneError;
 pub use file::{Arrangement, GrooveKind, SceneFile};
@@ -98,8 +97,30 @@ pub struct FrictionSettings {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StudySettings {
     pub samples: usize,
-    pub sampler: Sampler,
+    pub sampler: SamplerChoice,
     pub seed: u64,
+}
+
+/// The sampler a scene asks for (`[study] sampler`), as plain data: the
+/// scene only checks the name; `study` turns it into its `Sampler` (the
+/// variants match one to one).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SamplerChoice {
+    Lhs,
+    MonteCarlo,
+    Corners,
+}
+
+impl SamplerChoice {
+    /// The scene-file spelling, ASCII case-insensitive and trimmed.
+    pub fn parse(name: &str) -> Option<Self> {
+        match name.trim().to_ascii_lowercase().as_str() {
+            "lhs" => Some(SamplerChoice::Lhs),
+            "mc" => Some(SamplerChoice::MonteCarlo),
+            "corners" => Some(SamplerChoice::Corners),
+            _ => None,
+        }
+    }
 }
 
 /// A point of the moving half whose pose is reported.

@@ -12,12 +12,11 @@ use super::file::{
 };
 use super::plausible;
 use super::{
-    Ball, DEFAULT_RAMP_TIME, DynamicsSettings, EvaluationPoint, FrictionSettings, Preload, Scene,
-    StudySettings, Surface, SurfaceGeometry, VariationBounds,
+    Ball, DEFAULT_RAMP_TIME, DynamicsSettings, EvaluationPoint, FrictionSettings, Preload,
+    SamplerChoice, Scene, StudySettings, Surface, SurfaceGeometry, VariationBounds,
 };
 use crate::contact::{FrictionLaw, TangentialLaw};
 use crate::material::{Material, MaterialError};
-use crate::study::Sampler;
 
 /// Largest friction coefficient accepted in a scene.
 pub const MU_MAX: f64 = 2.0;
@@ -200,11 +199,14 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
             format!("{samples}: a study needs at least 2 samples"),
         ));
     }
-    let sampler: Sampler = st
-        .sampler
-        .get_ref()
-        .parse()
-        .map_err(|e| ctx.error(Some(&st.sampler.span()), "study.sampler", format!("{e}")))?;
+    let name = st.sampler.get_ref();
+    let sampler = SamplerChoice::parse(name).ok_or_else(|| {
+        ctx.error(
+            Some(&st.sampler.span()),
+            "study.sampler",
+            format!("unknown sampler '{name}': expected lhs, mc or corners"),
+        )
+    })?;
 
     let mut evaluation_points = Vec::new();
     for (i, e) in f.evaluation_points.iter().enumerate() {

@@ -130,7 +130,7 @@ pub struct VariantRun {
 /// The design a scene's study uses under `opts`.
 pub fn design_for(coupling: &Coupling, opts: &StudyOptions) -> Result<DesignSpec, StudyError> {
     let st = &coupling.scene.study;
-    let sampler = opts.sampler.unwrap_or(st.sampler);
+    let sampler = opts.sampler.unwrap_or(st.sampler.into());
     let n = match sampler {
         Sampler::Corners => None,
         _ => Some(opts.samples.unwrap_or(st.samples)),

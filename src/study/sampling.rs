@@ -33,6 +33,7 @@ use serde::{Deserialize, Serialize};
 
 use super::error::{Result, StudyError};
 use super::rng::{DOMAIN_REPLICATE, splitmix64};
+use crate::scene::SamplerChoice;
 
 /// Which design to draw. Serialised (and parsed by [`FromStr`]) as `lhs`, `mc`, `corners`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -75,6 +76,28 @@ impl FromStr for Sampler {
             "mc" => Ok(Sampler::MonteCarlo),
             "corners" => Ok(Sampler::Corners),
             _ => Err(StudyError::UnknownSampler(s.to_owned())),
+        }
+    }
+}
+
+/// A scene's sampler setting, interpreted.
+impl From<SamplerChoice> for Sampler {
+    fn from(c: SamplerChoice) -> Self {
+        match c {
+            SamplerChoice::Lhs => Sampler::Lhs,
+            SamplerChoice::MonteCarlo => Sampler::MonteCarlo,
+            SamplerChoice::Corners => Sampler::Corners,
+        }
+    }
+}
+
+/// The scene setting that asks for this sampler.
+impl From<Sampler> for SamplerChoice {
+    fn from(s: Sampler) -> Self {
+        match s {
+            Sampler::Lhs => SamplerChoice::Lhs,
+            Sampler::MonteCarlo => SamplerChoice::MonteCarlo,
+            Sampler::Corners => SamplerChoice::Corners,
         }
     }
 }
