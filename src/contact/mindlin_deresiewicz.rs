@@ -56,38 +56,11 @@
 use nalgebra::{Matrix2, Matrix3, Matrix3x2, Vector2, Vector3};
 
 use super::mindlin::{project_on_circle, symmetric_eigen2};
-use super::tangential::{SlipState, TangentialInput, TangentialResponse, TangentialState};
-
-/// Springs in the row (0 <= x <= a): 128 (96 to 128 carry a contact at
-/// constant load, 64 to 128 while it grows) keep Cattaneo's curve within
-/// 2.3e-3 at every step (tests/contact_laws.rs).
-pub const SPRINGS: usize = 128;
+pub use super::tangential_types::{SPRINGS, SpringRow};
+use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, TangentialState};
 
 /// The fraction of the row that the contact fills at first contact.
 const FIRST_FILL: f64 = 0.75;
-
-/// The MDR row of one contact: cell width and each cell's 2-D value
-/// q = C u (u the cell average displacement times the fraction in contact),
-/// in the frame (t1, n x t1) of the tangent plane.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SpringRow {
-    /// First tangent direction of the frame (zero until first contact).
-    pub frame: Vector3<f64>,
-    /// Cell width h [m] (0 until first contact).
-    pub h: f64,
-    /// q per cell [m].
-    pub q: [[f64; 2]; SPRINGS],
-}
-
-impl Default for SpringRow {
-    fn default() -> Self {
-        SpringRow {
-            frame: Vector3::zeros(),
-            h: 0.0,
-            q: [[0.0; 2]; SPRINGS],
-        }
-    }
-}
 
 /// The contact during one update: its constants and the row being updated
 /// with the derivative of each cell's q by the tangential increment.

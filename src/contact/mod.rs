@@ -8,6 +8,7 @@
 //! | sphere-seat (ball in a concave spherical seat, R2 > R1) | 1/R = 1/R1 - 1/R2 |
 //! | sphere-cylinder (crossed) | 1/Rx = 1/R1 + 1/R2 (across the pin), Ry = R1 (along it) |
 
+pub mod coulomb;
 pub mod elliptic;
 pub mod friction;
 pub mod hertz;
@@ -18,6 +19,7 @@ pub mod quadrature;
 pub mod series;
 pub mod stress;
 pub mod tangential;
+pub mod tangential_types;
 
 use serde::{Deserialize, Serialize};
 use thiserror::Error;

@@ -1,0 +1,115 @@
+//! The history-dependent Coulomb stick/slip law: return mapping with its
+//! consistent tangent, over Mindlin's elastic stiffness.
+//!
+//! Elastic stiffness: Mindlin's exact 2x2 tangential stiffness of the contact
+//! ellipse (`contact::mindlin`), as the 3x3 tensor
+//! K_t = k_major e1 e1^T + k_minor e2 e2^T in the tangent plane (e1 the major
+//! axis; K_t = 8 G* a (I - n n^T) for a circle).
+//!
+//! Coulomb return mapping (Simo & Hughes, *Computational Inelasticity*,
+//! 1998, §2.2 applied to the tangential force; Wriggers, *Computational
+//! Contact Mechanics*, 2006, §5.2):
+//! ```text
+//! F_trial = R F_old + K_t du_t           (R rotates the old force into the new tangent plane)
+//! stick  if |F_trial| <= mu F_n,   mu = mu_s (was sticking) or mu_d (was sliding)
+//! slip   otherwise: F = the point of |F| = mu_d F_n closest to F_trial in the
+//!        complementary-energy norm of K_t (mu_d F_n F_trial/|F_trial| for a circle)
+//! ```
+//! The change from mu_s to mu_d is sudden, as in the paper's FE model
+//! (`law = "switch"`); `law = "decay"` makes the sliding coefficient depend
+//! on the slip velocity of the increment ([`super::friction`]).
+//!
+//! Sign convention: `du` is the tangential displacement of the moving body
+//! relative to the fixed surface at the contact, and the law's force is the
+//! tangential force along it that the moving body exerts on the fixed
+//! surface (a spring stretched by du). The friction force on the moving
+//! body is its negative.
+
+use nalgebra::{Matrix3, Vector3};
+
+use super::friction::{SlideInput, Sliding};
+use super::mindlin::project_tangential;
+use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, TangentialState};
+
+/// Coulomb return mapping; the sliding coefficient comes from the friction
+/// law ([`super::friction::slide`]: the sudden switch, or the decay law).
+/// The decay law's slip increment uses the stiffness along the trial force,
+/// k = t^T K_t t (t = F_trial/|F_trial|): exact for a circular contact, the
+/// stiffness of the load direction for an elliptical one.
+pub(super) fn update(
+    old: &TangentialState,
+    du: &Vector3<f64>,
+    input: &TangentialInput,
+) -> TangentialResponse {
+    let fr = input.friction;
+    let trial = old.force + input.stiffness * du;
+    let norm = trial.norm();
+    let t = if norm > 0.0 { trial / norm } else { trial };
+    let k_along = t.dot(&(input.stiffness * t));
+    let sliding = super::friction::slide(&SlideInput {
+        mu_s: fr.mu_s,
+        mu_d: fr.mu_d,
+        law: fr.law,
+        duration: fr.duration,
+        trial: norm,
+        normal_force: input.normal_force,
+        stiffness: k_along,
+        was_sliding: old.sliding,
+        previous_velocity: old.slip_velocity,
+    });
+    match sliding {
+        None => TangentialResponse {
+            force: trial,
+            state: TangentialState {
+                force: trial,
+                sliding: false,
+                slip_velocity: 0.0,
+                row: old.row.clone(),
+                ..*old
+            },
+            slip: SlipState::Stick,
+            d_force_d_du: input.stiffness,
+            d_force_d_fn: input.d_stiffness_d_fn * du,
+        },
+        Some(s) => slide_response(old, &trial, &input.stiffness, du, input, &s),
+    }
+}
+
+/// Gross sliding: F on the circle |F| = mu F_n closest to F_trial in the
+/// complementary-energy norm of K (`mindlin::project_tangential`; the radial
+/// return F = mu F_n F_trial/|F_trial| for a circular contact), so that the
+/// friction force opposes the slip also for an elliptical K; mu from the
+/// friction law (`s`; constant mu_d for the switch law). Tangent, with
+/// T = |F_trial|, t = F_trial/T and L = mu F_n the limit:
+/// dF/d(du) = (dF/dF_trial) K + (dF/dL) F_n (dmu/dT) t^T K,
+/// dF/dF_n = (dF/dL) (mu + F_n dmu/dF_n) + (dF/dF_trial) (dK/dF_n) du,
+/// dmu/dF_n total through T (dT/dF_n = t . K' du), F_n and k (dk/dF_n = t^T K' t).
+fn slide_response(
+    old: &TangentialState,
+    trial: &Vector3<f64>,
+    k: &Matrix3<f64>,
+    du: &Vector3<f64>,
+    input: &TangentialInput,
+    s: &Sliding,
+) -> TangentialResponse {
+    let f_n = input.normal_force;
+    let dk = &input.d_stiffness_d_fn;
+    let mu = s.mu;
+    let (force, d_trial, d_limit) = project_tangential(k, &input.normal, trial, mu * f_n);
+    let t = trial.normalize();
+    let dmu_dfn = s.d_mu_d_trial * t.dot(&(dk * du)) + s.d_mu_d_fn + s.d_mu_d_k * t.dot(&(dk * t));
+    let dt_ddu = k.transpose() * t; // dT/d(du) as a column
+    TangentialResponse {
+        force,
+        state: TangentialState {
+            force,
+            sliding: true,
+            slip_velocity: s.slip / input.friction.duration,
+            row: old.row.clone(),
+            ..*old
+        },
+        slip: SlipState::Slip,
+        d_force_d_du: d_trial * k + (d_limit * (f_n * s.d_mu_d_trial)) * dt_ddu.transpose(),
+        d_force_d_fn: (mu + f_n * dmu_dfn) * d_limit + d_trial * (dk * du),
+    }
+}
