@@ -2,7 +2,7 @@
 //! overflowing outputs (an error naming the sample, never sigma = 0) and a
 //! coupling that did not seat (zero scatter).
 
-use crate::report::study::{PointStats, StudyRecord};
+use crate::report::study_record::{PointStats, StudyRecord};
 use crate::report::study_stream::check_record;
 use crate::study::StudyError;
 

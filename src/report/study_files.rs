@@ -8,7 +8,8 @@ use std::path::Path;
 
 use crate::report::atomic::{self, AtomicFile, WriteError};
 use crate::report::provenance::{SCHEMA_VERSION, VERSION, produced_by};
-use crate::report::study::{Dofs, StudyRecord, StudyReport, VariantReport, csv_field, truncate};
+use crate::report::study::{Dofs, StudyRecord, StudyReport, VariantReport};
+use crate::report::study_text::{csv_field, truncate};
 use crate::study::plot::{
     ConvergenceSeries, Dof, VariantScatter, VariantSigma, plot_convergence, plot_sigma_bars,
     plot_xy_scatter,

@@ -72,3 +72,24 @@ impl StudyRecord {
         }
     }
 }
+
+/// Statistics of one evaluation point over the samples (relative to the
+/// nominal-mu pose; sigma with divisor n - 1).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PointStats {
+    pub name: String,
+    pub n: usize,
+    pub sigma: Dofs,
+    /// 90 % interval of sigma by `sigma_interval_method` (null where the
+    /// design admits none: corners, a single LHS).
+    pub sigma_ci90_low: Option<Dofs>,
+    pub sigma_ci90_high: Option<Dofs>,
+    /// How sigma and its interval were computed, valid for the design.
+    #[serde(default)]
+    pub sigma_interval_method: String,
+    /// Reproducibility +- 3 sigma.
+    pub three_sigma: Dofs,
+    pub mean: Dofs,
+    pub min: Dofs,
+    pub max: Dofs,
+}

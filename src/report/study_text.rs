@@ -3,9 +3,8 @@
 
 use std::fmt::Write;
 
-use crate::report::study::{PointStats, VariantReport};
+use crate::report::study::{PointStats, VariantReport, varied_kinds};
 use crate::scene::VariationBounds;
-use crate::study::runner::Variation;
 
 /// The Table 2 style sigma table of `points(v)` for every variant.
 pub(crate) fn sigma_table(
@@ -101,24 +100,6 @@ pub(crate) fn detail(s: &mut String, points: &[PointStats]) {
             );
         }
     }
-}
-
-/// The `--vary` names of what a variation varies.
-pub fn varied_kinds(var: &Variation) -> Vec<&'static str> {
-    let mut parts = Vec::new();
-    if var.friction {
-        parts.push("friction");
-    }
-    if var.preload {
-        parts.push("preload");
-    }
-    if var.start.is_some() {
-        parts.push("start");
-    }
-    if var.tolerances {
-        parts.push("tolerances");
-    }
-    parts
 }
 
 /// What varied, in words.

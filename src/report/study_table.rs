@@ -1,0 +1,178 @@
+//! The Table 2 style text table of a study: the variants side by side,
+//! then each variant's statistics and sensitivity.
+
+use std::fmt::Write;
+
+use crate::contact::FrictionLaw;
+use crate::report::study::{StudyReport, VariantReport};
+use crate::report::study_text::{bounds_text, detail, sigma_table, varied};
+use crate::study::runner::INTERCHANGE_PREFIX;
+use crate::study::sensitivity::{self, SensitivityBlock};
+
+impl StudyReport {
+    /// The text table: the variants side by side as in the paper's Table 2,
+    /// then the full statistics of each variant.
+    pub fn table(&self) -> String {
+        let mut s = String::new();
+        let _ = writeln!(s, "{}, shard {}", self.produced_by(), self.shard);
+        for w in self.cannot_seat() {
+            let _ = writeln!(s, "CANNOT SEAT: {w}");
+        }
+        if self
+            .variants
+            .iter()
+            .any(|v| v.partial || !v.points.is_empty())
+        {
+            let _ = writeln!(
+                s,
+                "Standard deviation of the seated pose relative to the nominal seating (nominal friction and preload, touching start; divisor n-1, for a replicated LHS the unbiased replicate estimate); below each row the 90 % interval of sigma, by a method valid for the design: {}.",
+                interval_methods(&self.variants)
+            );
+            let _ = writeln!(s);
+            sigma_table(&mut s, &self.variants, |v| &v.points);
+        }
+        if self
+            .variants
+            .iter()
+            .any(|v| !v.interchangeability.is_empty())
+        {
+            if self.variants.iter().any(|v| !v.points.is_empty()) {
+                let _ = writeln!(s);
+            }
+            let _ = writeln!(
+                s,
+                "Interchangeability (manufacturing tolerances): standard deviation (and its interval) as above, of the seated pose of each perturbed coupling at nominal friction and preload, relative to the nominal geometry's seating."
+            );
+            let _ = writeln!(s);
+            sigma_table(&mut s, &self.variants, |v| &v.interchangeability);
+        }
+        for v in self.variants.iter().filter(|v| !v.partial) {
+            let _ = writeln!(s);
+            let _ = writeln!(
+                s,
+                "{} ({}): {} samples, {} seed {}, mu_s = {} +- {} uniform, mu_d = {} mu_s, {}",
+                v.name,
+                v.scene,
+                v.samples,
+                v.sampler,
+                v.seed,
+                v.mu_static,
+                v.spread,
+                v.dynamic_ratio,
+                friction_law_text(&v.friction_law, v.ramp_time_s)
+            );
+            let _ = writeln!(s, "  varied: {}", varied(v));
+            if v.streamed {
+                let _ = writeln!(
+                    s,
+                    "  streamed: statistics from one-pass moments in sample order (no records kept); interval of sigma: {}",
+                    crate::study::stats::interval::METHOD_BONETT
+                );
+            }
+            if let Some(b) = &v.variation_bounds {
+                let _ = writeln!(s, "  [variation] bounds: {}", bounds_text(b));
+            }
+            if !v.points.is_empty() {
+                let _ = writeln!(s, "  re-seating scatter (one pair of halves):");
+                detail(&mut s, &v.points);
+            }
+            if !v.interchangeability.is_empty() {
+                let _ = writeln!(
+                    s,
+                    "  interchangeability (tolerances; nominal friction and preload):"
+                );
+                detail(&mut s, &v.interchangeability);
+            }
+            if let Some(blocks) = &v.sensitivity {
+                for b in blocks {
+                    sensitivity_table(&mut s, b);
+                    super::sensitivity::sobol_table(&mut s, b);
+                }
+            }
+        }
+        s
+    }
+}
+
+/// One SRC table: inputs down, DOFs across.
+fn sensitivity_table(s: &mut String, b: &SensitivityBlock) {
+    let point = b
+        .dofs
+        .first()
+        .and_then(|d| {
+            d.output
+                .trim_start_matches(INTERCHANGE_PREFIX)
+                .rsplit_once('/')
+        })
+        .map_or(String::new(), |(p, _)| p.to_string());
+    let _ = writeln!(
+        s,
+        "  sensitivity of the {} scatter at {point}: share of each DOF's variance per input (normalised SRC^2: R^2 SRC_j^2 / sum SRC^2; R^2 of the linear fit)",
+        b.kind
+    );
+    let _ = writeln!(
+        s,
+        "  {:<22} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
+        "input", "x", "y", "z", "phi_x", "phi_y", "phi_z"
+    );
+    let cell = |d: &sensitivity::DofSensitivity, j: usize| {
+        d.share
+            .get(j)
+            .map_or(format!("{:>9}", "-"), |v| format!("{v:>9.3}"))
+    };
+    for (j, name) in b.inputs.iter().enumerate() {
+        let cells: Vec<String> = b.dofs.iter().map(|d| cell(d, j)).collect();
+        let _ = writeln!(s, "  {:<22} {}", name, cells.join(" "));
+    }
+    let sums: Vec<String> = b
+        .dofs
+        .iter()
+        .map(|d| {
+            if d.share.is_empty() {
+                format!("{:>9}", "-")
+            } else {
+                format!("{:>9.3}", d.share.iter().sum::<f64>())
+            }
+        })
+        .collect();
+    let _ = writeln!(s, "  {:<22} {}", "sum of shares", sums.join(" "));
+    let r2: Vec<String> = b
+        .dofs
+        .iter()
+        .map(|d| {
+            d.r_squared
+                .map_or(format!("{:>9}", "-"), |r| format!("{r:>9.3}"))
+        })
+        .collect();
+    let _ = writeln!(s, "  {:<22} {}", "R^2", r2.join(" "));
+    for d in &b.dofs {
+        if let Some(n) = &d.note {
+            let _ = writeln!(s, "  note, {}: {n}", d.output);
+        }
+    }
+}
+
+/// The friction reading in words, for the study header.
+fn friction_law_text(law: &FrictionLaw, ramp_time: f64) -> String {
+    match law {
+        FrictionLaw::Switch => "sudden switch".to_string(),
+        FrictionLaw::Decay { coefficient } => format!(
+            "decay mu = mu_d + (mu_s - mu_d) exp(-{coefficient} s/m * v_slip), ramp {ramp_time} s"
+        ),
+    }
+}
+
+/// The distinct interval methods of the variants' points, in order.
+fn interval_methods(variants: &[VariantReport]) -> String {
+    let mut methods: Vec<&str> = Vec::new();
+    for p in variants.iter().flat_map(|v| &v.points) {
+        if !methods.contains(&p.sigma_interval_method.as_str()) {
+            methods.push(&p.sigma_interval_method);
+        }
+    }
+    if methods.is_empty() {
+        "per variant, after merging".to_string()
+    } else {
+        methods.join("; ")
+    }
+}
