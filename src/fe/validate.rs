@@ -3,8 +3,8 @@
 //! candidates, solves the Signorini problem at several load levels and compares with
 //! Hertz; plus the mesh-convergence study.
 
-use crate::fe::contact::{ContactModel, contact_extent};
-use crate::fe::elasticity::{Factor, Material, assemble};
+use crate::fe::contact::{ContactModel, ContactState, contact_extent};
+use crate::fe::elasticity::{Factor, FreeSystem, Material, assemble};
 use crate::fe::hertz_ref::hertz;
 use crate::fe::mesh::{HexMesh, graded_edges};
 use crate::fe::{FeCase, FeError, FeResult, MeshOptions, boussinesq};
@@ -14,35 +14,67 @@ use std::time::Instant;
 /// Number of right-hand sides solved at once when building the compliance matrix.
 const BATCH: usize = 48;
 
-/// Solves one contact case with the FE model (see [`crate::fe::solve_case`]).
+/// Solves one contact case with the FE model (see [`crate::fe::solve_case`]):
+/// mesh, boundary conditions, contact candidates, their compliance, the
+/// force-approach curve, and the outputs at the target load.
 pub fn run_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError> {
     let t0 = Instant::now();
     case.check()?;
     opt.check()?;
     let hz = hertz(case.rx, case.ry, case.e_star, case.load)?;
     let [ax, ay] = hz.semi_axes;
-    let amin = ax.min(ay);
-    let amax = ax.max(ay);
     let nu = opt.poisson;
     // Rigid indenter, frictionless: only E/(1-ν²) = E* enters the normal problem.
     let mat = Material {
         e: case.e_star * (1.0 - nu * nu),
         nu,
     };
+    let mesh = build_mesh(ax, ay, opt)?;
+    let (fixed, vals) = boundary_conditions(&mesh, &mat)?;
+    let sys = assemble(&mesh, &mat, &fixed, &vals)?;
+    let fac = Factor::nested_dissection(&sys, &mesh)?;
+    let top = TopNodes::new(&mesh, &sys, [ax, ay], opt.fine_zone_rel);
+    let model = contact_model(case, &top, &fac, &vals);
+    let (curve, st) = load_curve(case, &model, opt.curve_levels)?;
+    let (semi_axes, peak_pressure, min_pressure) = outputs(&top, &st)?;
+    let result = FeResult {
+        curve,
+        approach: st.approach,
+        semi_axes,
+        peak_pressure,
+        min_pressure,
+        element_size: opt.element_size_rel * ax.min(ay),
+        dofs: sys.n_eq,
+        seconds: t0.elapsed().as_secs_f64(),
+    };
+    if !(result.approach.is_finite() && result.peak_pressure.is_finite()) {
+        return Err(FeError::NonFinite("result"));
+    }
+    Ok(result)
+}
 
-    // ---- mesh: uniform fine zone over the contact, geometric grading outside ----
+/// The quarter-block mesh: a uniform fine zone over the contact (semi-axes
+/// `ax`, `ay`), geometric grading outside.
+pub fn build_mesh(ax: f64, ay: f64, opt: &MeshOptions) -> Result<HexMesh, FeError> {
     let rel = opt.element_size_rel;
     let n_fine = (opt.fine_zone_rel / rel).ceil() as usize;
-    let size = opt.domain_rel * amax;
+    let size = opt.domain_rel * ax.max(ay);
     let xe = graded_edges(rel * ax, n_fine, opt.growth, size)?;
     let ye = graded_edges(rel * ay, n_fine, opt.growth, size)?;
-    let de = graded_edges(rel * amin, n_fine, opt.growth, size)?;
+    let de = graded_edges(rel * ax.min(ay), n_fine, opt.growth, size)?;
     let ze: Vec<f64> = de.iter().rev().map(|d| -d).collect();
-    let mesh = HexMesh::structured(opt.order, &xe, &ye, &ze)?;
+    HexMesh::structured(opt.order, &xe, &ye, &ze)
+}
+
+/// Boundary conditions: rollers on x = 0 and y = 0, the Boussinesq
+/// displacement of a unit load on the far faces. Returns (prescribed flag,
+/// prescribed value) per DOF.
+pub fn boundary_conditions(
+    mesh: &HexMesh,
+    mat: &Material,
+) -> Result<(Vec<bool>, Vec<f64>), FeError> {
     let [nx, ny, nz] = mesh.dims;
     let nn = mesh.nodes.len();
-
-    // ---- boundary conditions: rollers on x=0, y=0; Boussinesq (unit load) outside ----
     let mut fixed = vec![false; 3 * nn];
     let mut vals = vec![0.0; 3 * nn];
     for k in 0..nz {
@@ -67,58 +99,101 @@ pub fn run_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError> {
             }
         }
     }
-    let sys = assemble(&mesh, &mat, &fixed, &vals)?;
-    let fac = Factor::nested_dissection(&sys, &mesh)?;
+    Ok((fixed, vals))
+}
 
-    // ---- top nodes: candidates (fine zone) and the rest ----
-    let top = nz - 1;
-    // candidates: free top nodes inside the ellipse (x/ax)² + (y/ay)² ≤ fine_zone_rel²
-    let is_cand = |i: usize, j: usize| {
+/// The top face split into contact candidates (free top nodes in the fine
+/// zone, the ellipse (x/ax)² + (y/ay)² ≤ fine_zone_rel²) and the rest.
+pub struct TopNodes<'a> {
+    mesh: &'a HexMesh,
+    sys: &'a FreeSystem,
+    semi_axes: [f64; 2],
+    fine_zone_rel: f64,
+    /// (i, j) of the candidates and of the other top nodes.
+    pub cand: Vec<(usize, usize)>,
+    pub other: Vec<(usize, usize)>,
+}
+
+impl<'a> TopNodes<'a> {
+    pub fn new(
+        mesh: &'a HexMesh,
+        sys: &'a FreeSystem,
+        semi_axes: [f64; 2],
+        fine_zone_rel: f64,
+    ) -> Self {
+        let mut t = TopNodes {
+            mesh,
+            sys,
+            semi_axes,
+            fine_zone_rel,
+            cand: Vec::new(),
+            other: Vec::new(),
+        };
+        let [nx, ny, _] = mesh.dims;
+        for j in 0..ny {
+            for i in 0..nx {
+                if t.is_cand(i, j) {
+                    t.cand.push((i, j));
+                } else {
+                    t.other.push((i, j));
+                }
+            }
+        }
+        t
+    }
+
+    fn node(&self, i: usize, j: usize) -> usize {
+        self.mesh.node_index(i, j, self.mesh.dims[2] - 1)
+    }
+
+    /// Whether top node (i, j) is a contact candidate.
+    pub fn is_cand(&self, i: usize, j: usize) -> bool {
+        let [nx, ny, _] = self.mesh.dims;
         if i >= nx || j >= ny {
             return false;
         }
-        let x = mesh.nodes[mesh.node_index(i, j, top)];
-        let free = sys.eq_of_dof[3 * mesh.node_index(i, j, top) + 2] != usize::MAX;
+        let x = self.mesh.nodes[self.node(i, j)];
+        let [ax, ay] = self.semi_axes;
+        let free = self.zeq(i, j) != usize::MAX;
         free && (x[0] / ax).powi(2) + (x[1] / ay).powi(2)
-            <= opt.fine_zone_rel.powi(2) * (1.0 + 1e-12)
-    };
-    let mut cand = Vec::new(); // (i, j)
-    let mut other = Vec::new();
-    for j in 0..ny {
-        for i in 0..nx {
-            if is_cand(i, j) {
-                cand.push((i, j));
-            } else {
-                other.push((i, j));
-            }
-        }
+            <= self.fine_zone_rel.powi(2) * (1.0 + 1e-12)
     }
-    let profile = |i: usize, j: usize| {
-        let x = mesh.nodes[mesh.node_index(i, j, top)];
-        x[0] * x[0] / (2.0 * case.rx) + x[1] * x[1] / (2.0 * case.ry)
-    };
-    let zeq = |i: usize, j: usize| sys.eq_of_dof[3 * mesh.node_index(i, j, top) + 2];
+
+    /// Equation number of the vertical DOF of top node (i, j).
+    fn zeq(&self, i: usize, j: usize) -> usize {
+        self.sys.eq_of_dof[3 * self.node(i, j) + 2]
+    }
+
+    /// The gap of the undeformed surface to the indenter, x²/2rx + y²/2ry.
+    fn profile(&self, i: usize, j: usize, rx: f64, ry: f64) -> f64 {
+        let x = self.mesh.nodes[self.node(i, j)];
+        x[0] * x[0] / (2.0 * rx) + x[1] * x[1] / (2.0 * ry)
+    }
+}
+
+/// The contact candidates condensed: compliance columns (a unit downward
+/// force at candidate j gives w = K⁻¹ e_j, solved [`BATCH`] at a time) and
+/// the unit Boussinesq response (downward displacement w = -u_z).
+fn contact_model(case: &FeCase, top: &TopNodes, fac: &Factor, vals: &[f64]) -> ContactModel {
+    let sys = top.sys;
     let wval = |sol: &Mat<f64>, col: usize, i: usize, j: usize| {
-        let e = zeq(i, j);
+        let e = top.zeq(i, j);
         if e == usize::MAX { 0.0 } else { sol[(e, col)] }
     };
-
-    // unit Boussinesq response (downward displacement w = -u_z)
     let mut ub = Mat::<f64>::zeros(sys.n_eq, 1);
     for e in 0..sys.n_eq {
         ub[(e, 0)] = sys.rhs_fixed[e];
     }
     fac.solve_in_place(ub.as_mut());
     let w_b = |i: usize, j: usize| {
-        let e = zeq(i, j);
+        let e = top.zeq(i, j);
         if e == usize::MAX {
-            -vals[3 * mesh.node_index(i, j, top) + 2]
+            -vals[3 * top.node(i, j) + 2]
         } else {
             -ub[(e, 0)]
         }
     };
-
-    // compliance columns: unit downward force at candidate j gives w = K⁻¹ e_j
+    let (cand, other) = (&top.cand, &top.other);
     let nc = cand.len();
     let mut c = Mat::<f64>::zeros(nc, nc);
     let mut c_other = Mat::<f64>::zeros(other.len(), nc);
@@ -128,7 +203,7 @@ pub fn run_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError> {
         rhs.fill(0.0);
         for q in 0..cols {
             let (i, j) = cand[start + q];
-            rhs[(zeq(i, j), q)] = 1.0;
+            rhs[(top.zeq(i, j), q)] = 1.0;
         }
         fac.solve_in_place(rhs.as_mut());
         for q in 0..cols {
@@ -140,21 +215,30 @@ pub fn run_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError> {
             }
         }
     }
-    let model = ContactModel {
-        h: cand.iter().map(|&(i, j)| profile(i, j)).collect(),
+    let profile = |&(i, j): &(usize, usize)| top.profile(i, j, case.rx, case.ry);
+    ContactModel {
+        h: cand.iter().map(profile).collect(),
         c,
         w_unit: cand.iter().map(|&(i, j)| w_b(i, j)).collect(),
-        h_other: other.iter().map(|&(i, j)| profile(i, j)).collect(),
+        h_other: other.iter().map(profile).collect(),
         c_other,
         w_unit_other: other.iter().map(|&(i, j)| w_b(i, j)).collect(),
         on_zone_edge: cand
             .iter()
-            .map(|&(i, j)| !is_cand(i + 1, j) || !is_cand(i, j + 1))
+            .map(|&(i, j)| !top.is_cand(i + 1, j) || !top.is_cand(i, j + 1))
             .collect(),
-    };
+    }
+}
 
-    // ---- force–approach curve ----
-    let levels = opt.curve_levels.max(1);
+/// The force-approach curve at `levels` equal load steps up to the case's
+/// load (each started from the previous active set); returns the curve
+/// (approach, load) and the state at the full load.
+fn load_curve(
+    case: &FeCase,
+    model: &ContactModel,
+    levels: usize,
+) -> Result<(Vec<(f64, f64)>, ContactState), FeError> {
+    let levels = levels.max(1);
     let mut curve = Vec::with_capacity(levels);
     let mut active: Option<Vec<bool>> = None;
     let mut state = None;
@@ -167,16 +251,23 @@ pub fn run_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError> {
         state = Some(st);
     }
     let st = state.ok_or(FeError::NonFinite("no load level"))?;
+    Ok((curve, st))
+}
 
-    // ---- outputs at the target load ----
+/// The outputs at the target load: the contact semi-axes along x and y,
+/// the peak pressure at the origin and the least candidate pressure
+/// (nodal force over tributary area).
+fn outputs(top: &TopNodes, st: &ContactState) -> Result<([f64; 2], f64, f64), FeError> {
+    let mesh = top.mesh;
+    let nx = mesh.dims[0];
     let trib = mesh.top_tributary_areas();
     let axis = |along_x: bool| {
         let mut xs = Vec::new();
         let mut fs = Vec::new();
         let mut gs = Vec::new();
-        for (r, &(i, j)) in cand.iter().enumerate() {
+        for (r, &(i, j)) in top.cand.iter().enumerate() {
             if (along_x && j == 0) || (!along_x && i == 0) {
-                let x = mesh.nodes[mesh.node_index(i, j, top)];
+                let x = mesh.nodes[top.node(i, j)];
                 xs.push(if along_x { x[0] } else { x[1] });
                 fs.push(st.forces[r]);
                 gs.push(st.gaps[r]);
@@ -185,30 +276,19 @@ pub fn run_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError> {
         contact_extent(&xs, &fs, &gs).ok_or(FeError::CandidateZoneTooSmall)
     };
     let semi_axes = [axis(true)?, axis(false)?];
-    let origin = cand
+    let origin = top
+        .cand
         .iter()
         .position(|&(i, j)| i == 0 && j == 0)
         .ok_or(FeError::CandidateZoneTooSmall)?;
     let peak_pressure = st.forces[origin] / trib[0];
-    let min_pressure = cand
+    let min_pressure = top
+        .cand
         .iter()
         .zip(&st.forces)
         .map(|(&(i, j), f)| f / trib[i + nx * j])
         .fold(f64::INFINITY, f64::min);
-    let result = FeResult {
-        curve,
-        approach: st.approach,
-        semi_axes,
-        peak_pressure,
-        min_pressure,
-        element_size: rel * amin,
-        dofs: sys.n_eq,
-        seconds: t0.elapsed().as_secs_f64(),
-    };
-    if !(result.approach.is_finite() && result.peak_pressure.is_finite()) {
-        return Err(FeError::NonFinite("result"));
-    }
-    Ok(result)
+    Ok((semi_axes, peak_pressure, min_pressure))
 }
 
 /// Mesh-convergence study: runs [`run_case`] at each relative element size in

@@ -22,8 +22,8 @@ use toml::Spanned;
 
 use super::error::{ErrorContext, SceneError};
 use super::file::{
-    Arrangement, BallFile, EvaluationPointFile, GrooveKind, Numbers, SceneFile, SurfaceFile,
-    SurfaceKind,
+    Arrangement, BallFile, CouplingFile, EvaluationPointFile, GrooveKind, Numbers, SceneFile,
+    SurfaceFile, SurfaceKind,
 };
 use super::plausible;
 
@@ -35,6 +35,53 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
     let Some(c) = &raw.coupling else {
         return Ok(raw.clone());
     };
+    let dims = check_coupling(raw, c, ctx)?;
+    let centres = ball_centres(dims.diameter);
+    let balls = centres
+        .iter()
+        .map(|ck| BallFile {
+            centre: Spanned::new(0..0, Numbers::of(&[ck.x, ck.y, ck.z])),
+            radius: Spanned::new(0..0, dims.r_ball),
+            material: c.ball_material.clone(),
+        })
+        .collect();
+    let surfaces = contacts(c.arrangement, &centres, dims.alpha)
+        .into_iter()
+        .map(|k| surface(c, &dims, &k, &centres[k.ball]))
+        .collect();
+    Ok(SceneFile {
+        name: raw.name.clone(),
+        allow_large_values: raw.allow_large_values,
+        materials: raw.materials.clone(),
+        coupling: None,
+        balls,
+        surfaces,
+        preload: raw.preload.clone(),
+        friction: raw.friction.clone(),
+        study: raw.study.clone(),
+        evaluation_points: evaluation_points(raw, c, &centres),
+        dynamics: raw.dynamics.clone(),
+        variation: raw.variation.clone(),
+    })
+}
+
+/// The checked dimensions of a `[coupling]` table.
+struct Dimensions {
+    /// Circle of ball centres [m].
+    diameter: f64,
+    /// Ball radius and pin or fixed-ball radius (0 for planes) [m].
+    r_ball: f64,
+    r_elem: f64,
+    /// Angle between a contact normal and z: 90 deg - opening/2 [rad].
+    alpha: f64,
+}
+
+/// `[coupling]` checked, with errors naming its high-level fields.
+fn check_coupling(
+    raw: &SceneFile,
+    c: &CouplingFile,
+    ctx: &ErrorContext,
+) -> Result<Dimensions, SceneError> {
     if !raw.balls.is_empty() || !raw.surfaces.is_empty() {
         return Err(ctx.error(
             None,
@@ -89,26 +136,55 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
             "the balls overlap: ball diameter must be smaller than the coupling diameter",
         ));
     }
-    let alpha = (90.0 - opening / 2.0).to_radians();
-    let centres: Vec<Vector3<f64>> = BALL_AZIMUTHS_DEG
+    Ok(Dimensions {
+        diameter,
+        r_ball,
+        r_elem,
+        alpha: (90.0 - opening / 2.0).to_radians(),
+    })
+}
+
+/// Centres of balls 1, 2, 3 on the circle of `diameter`, at [`BALL_AZIMUTHS_DEG`].
+fn ball_centres(diameter: f64) -> Vec<Vector3<f64>> {
+    BALL_AZIMUTHS_DEG
         .iter()
         .map(|a| {
             let t = a.to_radians();
             Vector3::new(t.cos(), t.sin(), 0.0) * (diameter / 2.0)
         })
-        .collect();
+        .collect()
+}
+
+/// One contact of the expanded coupling.
+struct ContactSpec {
+    /// Index of its ball.
+    ball: usize,
+    /// Contact normal (unit, from the fixed element to the ball).
+    normal: Vector3<f64>,
+    /// Groove axis direction (the pin's axis for cylinders).
+    axis: Vector3<f64>,
+    /// The Kelvin flat: a plane whatever the groove kind.
+    flat: bool,
+}
+
+/// The contacts, ball by ball, with the normals of the module docs.
+fn contacts(arrangement: Arrangement, centres: &[Vector3<f64>], alpha: f64) -> Vec<ContactSpec> {
     let ez = Vector3::z();
     let tilt = |horizontal: Vector3<f64>| horizontal * alpha.sin() + ez * alpha.cos();
-
-    // (ball index, normal, groove axis direction for pins)
-    let mut contacts: Vec<(usize, Vector3<f64>, Vector3<f64>, bool)> = Vec::new();
-    match c.arrangement {
+    let contact = |ball, normal, axis, flat| ContactSpec {
+        ball,
+        normal,
+        axis,
+        flat,
+    };
+    let mut out = Vec::new();
+    match arrangement {
         Arrangement::Maxwell => {
             for (k, ck) in centres.iter().enumerate() {
                 let er = Vector3::new(ck.x, ck.y, 0.0).normalize();
                 let s = ez.cross(&er);
-                contacts.push((k, tilt(s), er, false));
-                contacts.push((k, tilt(-s), er, false));
+                out.push(contact(k, tilt(s), er, false));
+                out.push(contact(k, tilt(-s), er, false));
             }
         }
         Arrangement::Kelvin => {
@@ -118,91 +194,76 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
                 // direction from ball 1 to fixed element j: -e_r rotated by +120 j about z
                 let d = rotate_z(&(-er), ang);
                 // pins of the trihedral seat lie horizontal, across the element direction
-                contacts.push((0, tilt(-d), ez.cross(&d), false));
+                out.push(contact(0, tilt(-d), ez.cross(&d), false));
             }
             let u = (centres[0] - centres[1]).normalize();
             let s = ez.cross(&u);
-            contacts.push((1, tilt(s), u, false));
-            contacts.push((1, tilt(-s), u, false));
-            contacts.push((2, ez, Vector3::x(), true));
+            out.push(contact(1, tilt(s), u, false));
+            out.push(contact(1, tilt(-s), u, false));
+            out.push(contact(2, ez, Vector3::x(), true));
         }
     }
+    out
+}
 
-    let ball_material = c.ball_material.clone();
-    let balls = centres
-        .iter()
-        .map(|ck| BallFile {
-            centre: Spanned::new(0..0, Numbers::of(&[ck.x, ck.y, ck.z])),
-            radius: Spanned::new(0..0, r_ball),
-            material: ball_material.clone(),
-        })
-        .collect();
+/// The fixed element of contact `k`, touching its ball (centre `ck`) at zero gap.
+fn surface(c: &CouplingFile, dims: &Dimensions, k: &ContactSpec, ck: &Vector3<f64>) -> SurfaceFile {
     let arr = |v: Vector3<f64>| Some(Spanned::new(0..0, Numbers::of(&[v.x, v.y, v.z])));
-    let surfaces = contacts
-        .into_iter()
-        .map(|(k, n, axis, flat)| {
-            let ck = centres[k];
-            let mut s = SurfaceFile {
-                kind: Spanned::new(0..0, SurfaceKind::Plane),
-                ball: Spanned::new(0..0, k as i64 + 1),
-                material: c.groove_material.clone(),
-                point: None,
-                normal: None,
-                axis_point: None,
-                direction: None,
-                centre: None,
-                radius: None,
-                support_compliance: c.support_compliance.clone(),
-            };
-            match (c.groove, flat) {
-                (GrooveKind::Planes, _) | (_, true) => {
-                    s.point = arr(ck - n * r_ball);
-                    s.normal = arr(n);
-                }
-                (GrooveKind::Cylinders, false) => {
-                    s.kind = Spanned::new(0..0, SurfaceKind::Cylinder);
-                    s.axis_point = arr(ck - n * (r_ball + r_elem));
-                    s.direction = arr(axis);
-                    s.radius = Some(Spanned::new(0..0, r_elem));
-                }
-                (GrooveKind::Balls, false) => {
-                    s.kind = Spanned::new(0..0, SurfaceKind::Sphere);
-                    s.centre = arr(ck - n * (r_ball + r_elem));
-                    s.radius = Some(Spanned::new(0..0, r_elem));
-                }
-            }
-            s
-        })
-        .collect();
+    let (n, r_ball, r_elem) = (k.normal, dims.r_ball, dims.r_elem);
+    let mut s = SurfaceFile {
+        kind: Spanned::new(0..0, SurfaceKind::Plane),
+        ball: Spanned::new(0..0, k.ball as i64 + 1),
+        material: c.groove_material.clone(),
+        point: None,
+        normal: None,
+        axis_point: None,
+        direction: None,
+        centre: None,
+        radius: None,
+        support_compliance: c.support_compliance.clone(),
+    };
+    match (c.groove, k.flat) {
+        (GrooveKind::Planes, _) | (_, true) => {
+            s.point = arr(ck - n * r_ball);
+            s.normal = arr(n);
+        }
+        (GrooveKind::Cylinders, false) => {
+            s.kind = Spanned::new(0..0, SurfaceKind::Cylinder);
+            s.axis_point = arr(ck - n * (r_ball + r_elem));
+            s.direction = arr(k.axis);
+            s.radius = Some(Spanned::new(0..0, r_elem));
+        }
+        (GrooveKind::Balls, false) => {
+            s.kind = Spanned::new(0..0, SurfaceKind::Sphere);
+            s.centre = arr(ck - n * (r_ball + r_elem));
+            s.radius = Some(Spanned::new(0..0, r_elem));
+        }
+    }
+    s
+}
 
-    let mut evaluation_points = raw.evaluation_points.clone();
-    if evaluation_points.is_empty() {
-        evaluation_points.push(EvaluationPointFile {
+/// The file's evaluation points, or the centre (and, for Kelvin, the
+/// trihedral ball) when it names none.
+fn evaluation_points(
+    raw: &SceneFile,
+    c: &CouplingFile,
+    centres: &[Vector3<f64>],
+) -> Vec<EvaluationPointFile> {
+    let mut points = raw.evaluation_points.clone();
+    if points.is_empty() {
+        points.push(EvaluationPointFile {
             name: "centre".to_string(),
             position: Spanned::new(0..0, Numbers::of(&[0.0; 3])),
         });
         if c.arrangement == Arrangement::Kelvin {
             let c1 = centres[0];
-            evaluation_points.push(EvaluationPointFile {
+            points.push(EvaluationPointFile {
                 name: "trihedral ball".to_string(),
                 position: Spanned::new(0..0, Numbers::of(&[c1.x, c1.y, c1.z])),
             });
         }
     }
-    Ok(SceneFile {
-        name: raw.name.clone(),
-        allow_large_values: raw.allow_large_values,
-        materials: raw.materials.clone(),
-        coupling: None,
-        balls,
-        surfaces,
-        preload: raw.preload.clone(),
-        friction: raw.friction.clone(),
-        study: raw.study.clone(),
-        evaluation_points,
-        dynamics: raw.dynamics.clone(),
-        variation: raw.variation.clone(),
-    })
+    points
 }
 
 fn rotate_z(v: &Vector3<f64>, angle: f64) -> Vector3<f64> {

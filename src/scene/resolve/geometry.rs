@@ -1,0 +1,125 @@
+//! `[[balls]]` and `[[surfaces]]`: every ball placed, every surface
+//! complete for its kind and attached to a ball, every ball touching one.
+
+use nalgebra::Vector3;
+use toml::Spanned;
+
+use super::fields::Fields;
+use super::tables::compliance;
+use crate::scene::error::{ErrorContext, SceneError};
+use crate::scene::file::{Numbers, SceneFile, SurfaceFile, SurfaceKind};
+use crate::scene::plausible;
+use crate::scene::{Ball, Surface, SurfaceGeometry};
+
+/// The moving balls, in file order.
+pub fn balls(f: &SceneFile, fx: &Fields) -> Result<Vec<Ball>, SceneError> {
+    if f.balls.is_empty() {
+        return Err(fx.ctx.error(
+            None,
+            "balls",
+            "no moving balls: give a [coupling] table or [[balls]] and [[surfaces]]",
+        ));
+    }
+    let mut balls = Vec::new();
+    for (i, b) in f.balls.iter().enumerate() {
+        let field = |k: &str| format!("balls[{}].{k}", i + 1);
+        balls.push(Ball {
+            centre: fx.finite(&b.centre, &field("centre"))?,
+            radius: fx.positive(&b.radius, &field("radius"), "m")?,
+            material: fx.material(&b.material, &field("material"))?,
+            line: fx.ctx.line_of(&b.radius.span()),
+        });
+    }
+    Ok(balls)
+}
+
+/// The fixed surfaces, numbered ball by ball (the order of `--mu`); each
+/// ball must touch at least one.
+pub fn surfaces(f: &SceneFile, fx: &Fields, balls: &[Ball]) -> Result<Vec<Surface>, SceneError> {
+    // Radii are checked positive below; first the magnitudes (millimetres?).
+    let centres: Vec<Vector3<f64>> = balls.iter().map(|b| b.centre).collect();
+    plausible::check_explicit(f, &centres, fx.ctx)?;
+    let mut surfaces = Vec::new();
+    for (i, s) in f.surfaces.iter().enumerate() {
+        surfaces.push(surface(s, i, fx, balls.len())?);
+    }
+    // Contacts are numbered ball by ball (the order of --mu).
+    surfaces.sort_by_key(|s| s.ball);
+    let mut served = vec![false; balls.len()];
+    surfaces.iter().for_each(|s| served[s.ball] = true);
+    for (k, b) in balls.iter().enumerate() {
+        if !served[k] {
+            return Err(SceneError {
+                file: fx.ctx.file.to_string(),
+                line: b.line,
+                field: format!("balls[{}]", k + 1),
+                reason: "this ball touches no fixed surface (no [[surfaces]] entry has ball = \
+                         its number)"
+                    .to_string(),
+            });
+        }
+    }
+    Ok(surfaces)
+}
+
+/// Surface `i` (0-based) of the file, for a coupling of `n_balls` balls.
+fn surface(s: &SurfaceFile, i: usize, fx: &Fields, n_balls: usize) -> Result<Surface, SceneError> {
+    let ctx = fx.ctx;
+    let field = |k: &str| format!("surfaces[{}].{k}", i + 1);
+    let ball = *s.ball.get_ref();
+    if ball < 1 || ball as usize > n_balls {
+        return Err(ctx.error(
+            Some(&s.ball.span()),
+            field("ball"),
+            format!("{ball} names no moving ball (there are {n_balls})"),
+        ));
+    }
+    let need = |v: &Option<Spanned<Numbers>>, k: &str| -> Result<Spanned<Numbers>, SceneError> {
+        v.clone().ok_or_else(|| missing(s, ctx, &field(k), k))
+    };
+    let radius = |s: &SurfaceFile| -> Result<f64, SceneError> {
+        let r = s
+            .radius
+            .as_ref()
+            .ok_or_else(|| missing(s, ctx, &field("radius"), "radius"))?;
+        fx.positive(r, &field("radius"), "m")
+    };
+    let geometry = match s.kind.get_ref() {
+        SurfaceKind::Plane => SurfaceGeometry::Plane {
+            point: fx.finite(&need(&s.point, "point")?, &field("point"))?,
+            normal: fx.unit(&need(&s.normal, "normal")?, &field("normal"))?,
+        },
+        SurfaceKind::Cylinder => SurfaceGeometry::Cylinder {
+            axis_point: fx.finite(&need(&s.axis_point, "axis_point")?, &field("axis_point"))?,
+            direction: fx.unit(&need(&s.direction, "direction")?, &field("direction"))?,
+            radius: radius(s)?,
+        },
+        SurfaceKind::Sphere => SurfaceGeometry::Sphere {
+            centre: fx.finite(&need(&s.centre, "centre")?, &field("centre"))?,
+            radius: radius(s)?,
+        },
+    };
+    Ok(Surface {
+        geometry,
+        material: fx.material(&s.material, &field("material"))?,
+        ball: ball as usize - 1,
+        line: ctx.line_of(&s.kind.span()),
+        support_compliance: match &s.support_compliance {
+            Some(v) => compliance(ctx, v, &field("support_compliance"))?,
+            None => 0.0,
+        },
+    })
+}
+
+fn missing(s: &SurfaceFile, ctx: &ErrorContext, field: &str, key: &str) -> SceneError {
+    let kind = match s.kind.get_ref() {
+        SurfaceKind::Plane => "plane",
+        SurfaceKind::Cylinder => "cylinder",
+        SurfaceKind::Sphere => "sphere",
+    };
+    ctx.error(
+        Some(&s.kind.span()),
+        field,
+        format!("missing: a {kind} needs `{key}`"),
+    )
+}

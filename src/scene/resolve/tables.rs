@@ -1,0 +1,264 @@
+//! The scalar tables of a scene: `[preload]`, `[friction]`, `[study]`,
+//! `[[evaluation_points]]`, `[dynamics]` and `[variation]`, one validator each.
+
+use nalgebra::Vector3;
+use toml::Spanned;
+
+use super::fields::Fields;
+use crate::contact::{FrictionLaw, TangentialLaw};
+use crate::scene::error::{ErrorContext, SceneError};
+use crate::scene::file::{
+    DynamicsFile, FrictionFile, FrictionLawName, Numbers, PreloadFile, SceneFile, StudyFile,
+    VariationFile,
+};
+use crate::scene::{
+    DEFAULT_RAMP_TIME, DynamicsSettings, EvaluationPoint, FrictionSettings, Preload, SamplerChoice,
+    StudySettings, VariationBounds,
+};
+
+/// Largest friction coefficient accepted in a scene.
+pub const MU_MAX: f64 = 2.0;
+
+/// `[preload]`: a positive force; point, direction and ramp time default to
+/// the centre, -z and [`DEFAULT_RAMP_TIME`].
+pub fn preload(p: &PreloadFile, fx: &Fields) -> Result<Preload, SceneError> {
+    Ok(Preload {
+        force: fx.positive(&p.force, "preload.force", "N")?,
+        point: match &p.point {
+            Some(v) => fx.finite(v, "preload.point")?,
+            None => Vector3::zeros(),
+        },
+        direction: match &p.direction {
+            Some(v) => fx.unit(v, "preload.direction")?,
+            None => -Vector3::z(),
+        },
+        ramp_time: match &p.ramp_time {
+            Some(v) => fx.positive(v, "preload.ramp_time", "s")?,
+            None => DEFAULT_RAMP_TIME,
+        },
+    })
+}
+
+/// `[friction]`: 0 <= mu_s <= [`MU_MAX`], 0 <= spread <= mu_s with
+/// mu_s + spread <= [`MU_MAX`], 0 < dynamic_ratio <= 1, and the law.
+pub fn friction(fr: &FrictionFile, ctx: &ErrorContext) -> Result<FrictionSettings, SceneError> {
+    let mu = *fr.mu_static.get_ref();
+    if !(0.0..=MU_MAX).contains(&mu) {
+        return Err(ctx.error(
+            Some(&fr.mu_static.span()),
+            "friction.mu_static",
+            format!("{mu} is outside [0, {MU_MAX}]"),
+        ));
+    }
+    let spread = *fr.spread.get_ref();
+    if !(spread >= 0.0 && spread <= mu) {
+        return Err(ctx.error(
+            Some(&fr.spread.span()),
+            "friction.spread",
+            format!("{spread} must lie in [0, mu_static = {mu}] (friction cannot be negative)"),
+        ));
+    }
+    if mu + spread > MU_MAX {
+        return Err(ctx.error(
+            Some(&fr.spread.span()),
+            "friction.spread",
+            format!("mu_static + spread = {} exceeds {MU_MAX}", mu + spread),
+        ));
+    }
+    let ratio = *fr.dynamic_ratio.get_ref();
+    if !(ratio > 0.0 && ratio <= 1.0) {
+        return Err(ctx.error(
+            Some(&fr.dynamic_ratio.span()),
+            "friction.dynamic_ratio",
+            format!("{ratio} must lie in (0, 1]: mu_d = ratio * mu_s"),
+        ));
+    }
+    Ok(FrictionSettings {
+        mu_static: mu,
+        spread,
+        dynamic_ratio: ratio,
+        tangential_law: fr.tangential_law,
+        law: friction_law(fr, ctx)?,
+    })
+}
+
+/// `[study]`: at least 2 samples and a known sampler name.
+pub fn study(st: &StudyFile, ctx: &ErrorContext) -> Result<StudySettings, SceneError> {
+    let samples = *st.samples.get_ref();
+    if samples < 2 {
+        return Err(ctx.error(
+            Some(&st.samples.span()),
+            "study.samples",
+            format!("{samples}: a study needs at least 2 samples"),
+        ));
+    }
+    let name = st.sampler.get_ref();
+    let sampler = SamplerChoice::parse(name).ok_or_else(|| {
+        ctx.error(
+            Some(&st.sampler.span()),
+            "study.sampler",
+            format!("unknown sampler '{name}': expected lhs, mc or corners"),
+        )
+    })?;
+    Ok(StudySettings {
+        samples: samples as usize,
+        sampler,
+        seed: st.seed,
+    })
+}
+
+/// `[[evaluation_points]]`, or the centre when there are none.
+pub fn evaluation_points(f: &SceneFile, fx: &Fields) -> Result<Vec<EvaluationPoint>, SceneError> {
+    let mut points = Vec::new();
+    for (i, e) in f.evaluation_points.iter().enumerate() {
+        points.push(EvaluationPoint {
+            name: e.name.clone(),
+            position: fx.finite(
+                &e.position,
+                &format!("evaluation_points[{}].position", i + 1),
+            )?,
+        });
+    }
+    if points.is_empty() {
+        points.push(EvaluationPoint {
+            name: "centre".to_string(),
+            position: Vector3::zeros(),
+        });
+    }
+    Ok(points)
+}
+
+/// `[dynamics]`: a positive mass and principal moments of inertia that a
+/// rigid body can have.
+pub fn dynamics(d: &DynamicsFile, fx: &Fields) -> Result<DynamicsSettings, SceneError> {
+    let mass = fx.positive(&d.mass, "dynamics.mass", "kg")?;
+    let i = fx.finite(&d.inertia, "dynamics.inertia")?;
+    let bad = |reason: String| {
+        fx.ctx
+            .error(Some(&d.inertia.span()), "dynamics.inertia", reason)
+    };
+    if !i.iter().all(|v| *v > 0.0) {
+        return Err(bad(format!(
+            "[{}, {}, {}]: principal moments of inertia must be positive (kg m^2)",
+            i.x, i.y, i.z
+        )));
+    }
+    // Principal moments of a real body obey the triangle inequality
+    // (I_a + I_b >= I_c, since I_a + I_b - I_c = 2 int z_c^2 dm >= 0).
+    let sum = i.x + i.y + i.z;
+    if let Some(k) = (0..3).find(|&k| 2.0 * i[k] > sum * (1.0 + 1e-12)) {
+        return Err(bad(format!(
+            "[{}, {}, {}]: no rigid body has these principal moments: the {} moment \
+             exceeds the sum of the other two",
+            i.x,
+            i.y,
+            i.z,
+            ["x", "y", "z"][k]
+        )));
+    }
+    let centre_of_mass = match &d.centre_of_mass {
+        Some(v) => fx.finite(v, "dynamics.centre_of_mass")?,
+        None => Vector3::zeros(),
+    };
+    Ok(DynamicsSettings {
+        mass,
+        inertia: i,
+        centre_of_mass,
+    })
+}
+
+/// `[friction] law` and `decay_coefficient`: the decay law needs a finite
+/// coefficient >= 0 [s/m] and the Coulomb tangential law; the switch law takes none.
+fn friction_law(fr: &FrictionFile, ctx: &ErrorContext) -> Result<FrictionLaw, SceneError> {
+    let name = fr.law.as_ref().map(|l| *l.get_ref());
+    match (name, &fr.decay_coefficient) {
+        (None | Some(FrictionLawName::Switch), None) => Ok(FrictionLaw::Switch),
+        (None | Some(FrictionLawName::Switch), Some(c)) => Err(ctx.error(
+            Some(&c.span()),
+            "friction.decay_coefficient",
+            "only the decay law uses it: set law = \"decay\" or remove it",
+        )),
+        (Some(FrictionLawName::Decay), None) => Err(ctx.error(
+            fr.law.as_ref().map(|l| l.span()).as_ref(),
+            "friction.decay_coefficient",
+            "missing: law = \"decay\" needs decay_coefficient [s/m]",
+        )),
+        (Some(FrictionLawName::Decay), Some(c)) => {
+            let v = *c.get_ref();
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(ctx.error(
+                    Some(&c.span()),
+                    "friction.decay_coefficient",
+                    format!("{v} must be finite and >= 0 (s/m)"),
+                ));
+            }
+            if fr.tangential_law != TangentialLaw::Coulomb {
+                return Err(ctx.error(
+                    fr.law.as_ref().map(|l| l.span()).as_ref(),
+                    "friction.law",
+                    "law = \"decay\" works with tangential_law = \"coulomb\" only",
+                ));
+            }
+            Ok(FrictionLaw::Decay { coefficient: v })
+        }
+    }
+}
+
+/// A support compliance [m/N]: finite and >= 0.
+pub fn compliance(ctx: &ErrorContext, v: &Spanned<f64>, field: &str) -> Result<f64, SceneError> {
+    let x = *v.get_ref();
+    if x.is_finite() && x >= 0.0 {
+        Ok(x)
+    } else {
+        Err(ctx.error(
+            Some(&v.span()),
+            field,
+            format!("{x} must be finite and >= 0 (a compliance in m/N)"),
+        ))
+    }
+}
+
+/// `[variation]`: every bound finite and >= 0.
+pub fn variation_bounds(
+    v: &VariationFile,
+    ctx: &ErrorContext,
+) -> Result<VariationBounds, SceneError> {
+    fn check<const N: usize>(
+        ctx: &ErrorContext,
+        v: &Option<Spanned<Numbers>>,
+        key: &str,
+        unit: &str,
+    ) -> Result<[f64; N], SceneError> {
+        let Some(s) = v else {
+            return Ok([0.0; N]);
+        };
+        let what = if N == 2 { "[x, y]" } else { "[x, y, z]" };
+        let a: [f64; N] = ctx.numbers(s, &format!("variation.{key}"), what)?;
+        if let Some(x) = a.iter().find(|x| !(x.is_finite() && **x >= 0.0)) {
+            return Err(ctx.error(
+                Some(&s.span()),
+                format!("variation.{key}"),
+                format!(
+                    "{x}: a tolerance or variation bound is a half-width and must be finite \
+                     and >= 0 ({unit})"
+                ),
+            ));
+        }
+        Ok(a)
+    }
+    let scalar = |v: &Option<Spanned<f64>>, key: &str, unit: &str| -> Result<f64, SceneError> {
+        let arr = v
+            .as_ref()
+            .map(|s| Spanned::new(s.span(), Numbers::of(&[*s.get_ref()])));
+        Ok(check::<1>(ctx, &arr, key, unit)?[0])
+    };
+    Ok(VariationBounds {
+        preload_offset_m: check(ctx, &v.preload_offset, "preload_offset", "m")?,
+        preload_tilt_rad: scalar(&v.preload_tilt, "preload_tilt", "rad")?,
+        ball_diameter_m: scalar(&v.ball_diameter, "ball_diameter", "m")?,
+        ball_position_m: check(ctx, &v.ball_position, "ball_position", "m")?,
+        surface_normal_m: scalar(&v.surface_normal, "surface_normal", "m")?,
+        surface_tilt_rad: scalar(&v.surface_tilt, "surface_tilt", "rad")?,
+        groove_position_m: check(ctx, &v.groove_position, "groove_position", "m")?,
+    })
+}
