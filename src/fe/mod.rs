@@ -10,8 +10,8 @@
 //! (default 0.3): with a rigid frictionless indenter only `E/(1-ν²)` enters the
 //! normal problem (Johnson 1985 §3.4), so the result depends only on `E*`.
 //!
-//! Modules: [`mesh`] (graded hexahedral mesh), [`elasticity`] (elements, assembly,
-//! sparse Cholesky), [`boussinesq`] (far field), [`contact`] (Signorini active set),
+//! Modules: [`mesh`] (graded hexahedral mesh), [`elasticity`] (elements),
+//! [`system`] (assembly, sparse Cholesky), [`boussinesq`] (far field), [`contact`] (Signorini active set),
 //! [`hertz_ref`] (kinrepro's Hertz law, the reference), [`validate`] (case runner, convergence study).
 
 pub mod boussinesq;
@@ -20,6 +20,9 @@ pub mod elasticity;
 pub mod hertz_ref;
 pub mod mesh;
 pub mod pairs;
+pub mod system;
+#[cfg(test)]
+mod system_tests;
 pub mod validate;
 
 pub use hertz_ref::{HertzSolution, hertz};

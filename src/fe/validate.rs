@@ -4,9 +4,10 @@
 //! Hertz; plus the mesh-convergence study.
 
 use crate::fe::contact::{ContactModel, ContactState, contact_extent};
-use crate::fe::elasticity::{Factor, FreeSystem, Material, assemble};
+use crate::fe::elasticity::Material;
 use crate::fe::hertz_ref::hertz;
 use crate::fe::mesh::{HexMesh, graded_edges};
+use crate::fe::system::{Factor, FreeSystem, assemble};
 use crate::fe::{FeCase, FeError, FeResult, MeshOptions, boussinesq};
 use faer::Mat;
 use std::time::Instant;
