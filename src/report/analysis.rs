@@ -274,6 +274,18 @@ impl LoadReport {
 
     pub fn table(&self) -> String {
         let mut s = String::new();
+        self.header(&mut s);
+        let _ = writeln!(s);
+        self.deflections(&mut s);
+        let _ = writeln!(s);
+        self.contact_rows(&mut s);
+        let _ = writeln!(s);
+        self.envelope_text(&mut s);
+        s
+    }
+
+    /// Scene, load and friction; a warning if the load path stopped short.
+    fn header(&self, s: &mut String) {
         let _ = writeln!(s, "{}  ({})", self.scene, self.name);
         let mu: Vec<String> = self.mu_static.iter().map(|m| format!("{m:.4}")).collect();
         let f = self.force_n;
@@ -304,7 +316,10 @@ impl LoadReport {
                     .unwrap_or_else(|| ": the coupling lifts off its seat".to_string())
             );
         }
-        let _ = writeln!(s);
+    }
+
+    /// The deflection of each point [nm, nrad].
+    fn deflections(&self, s: &mut String) {
         let _ = writeln!(
             s,
             "{:<16} {:>10} {:>10} {:>10} {:>11} {:>11} {:>11}",
@@ -324,7 +339,10 @@ impl LoadReport {
                 d.phi_z_rad * 1e9
             );
         }
-        let _ = writeln!(s);
+    }
+
+    /// Each contact before and after the load.
+    fn contact_rows(&self, s: &mut String) {
         let _ = writeln!(
             s,
             "{:>2} {:>11} {:>11} {:>10} {:>10} {:>13} {:>6}",
@@ -358,7 +376,10 @@ impl LoadReport {
                 }
             );
         }
-        let _ = writeln!(s);
+    }
+
+    /// The safe load envelope and where the given load lies in it.
+    fn envelope_text(&self, s: &mut String) {
         match (&self.envelope.event, self.envelope.factor) {
             (Some(e), Some(f)) => {
                 let _ = writeln!(
@@ -394,6 +415,5 @@ impl LoadReport {
                 );
             }
         }
-        s
     }
 }

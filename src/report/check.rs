@@ -62,6 +62,13 @@ pub fn check_summary(c: &Coupling) -> String {
         s.friction.dynamic_ratio,
         s.friction.tangential_law
     );
+    contact_rows(&mut out, c);
+    out
+}
+
+/// One row per contact at the frictionless preload forces: geometry,
+/// moduli, peak stresses and safety factors, with the notes.
+fn contact_rows(out: &mut String, c: &Coupling) {
     let forces = frictionless_preload_forces(c);
     let _ = writeln!(
         out,
@@ -114,5 +121,4 @@ pub fn check_summary(c: &Coupling) -> String {
     for note in crate::report::safety::left_out_notes(left_out.iter().map(Vec::as_slice)) {
         let _ = writeln!(out, "  {note}");
     }
-    out
 }

@@ -72,6 +72,16 @@ impl RunReport {
     /// Human-readable table: nm, nrad, N, MPa.
     pub fn table(&self) -> String {
         let mut s = String::new();
+        self.header(&mut s);
+        let _ = writeln!(s);
+        self.pose_rows(&mut s);
+        let _ = writeln!(s);
+        self.contact_rows(&mut s);
+        s
+    }
+
+    /// Scene and solver.
+    fn header(&self, s: &mut String) {
         let _ = writeln!(s, "{}  ({})", self.scene, self.name);
         let mu: Vec<String> = self.mu_static.iter().map(|m| format!("{m:.4}")).collect();
         if self.solver == "dynamic" {
@@ -91,7 +101,10 @@ impl RunReport {
                 mu.join(", ")
             );
         }
-        let _ = writeln!(s);
+    }
+
+    /// The pose of each point, from touching and relative to nominal mu.
+    fn pose_rows(&self, s: &mut String) {
         let _ = writeln!(
             s,
             "{:<16} {:<22} {:>10} {:>10} {:>10} {:>11} {:>11} {:>11}",
@@ -127,7 +140,10 @@ impl RunReport {
             s,
             "* phi_z is reported but not evaluated for reproducibility."
         );
-        let _ = writeln!(s);
+    }
+
+    /// Each contact: forces, state, stresses and safety factors, with notes.
+    fn contact_rows(&self, s: &mut String) {
         let _ = writeln!(
             s,
             "{:>2} {:>7} {:>7} {:>10} {:>10} {:>9} {:>6} {:>11} {:>9} {:>13} {:>8} {:>8} {:>8}",
@@ -167,7 +183,7 @@ impl RunReport {
                 factor(c.safety_factor)
             );
         }
-        support_split(&mut s, &self.contacts);
+        support_split(s, &self.contacts);
         let _ = writeln!(
             s,
             "tau_max: maximum subsurface shear stress on the contact axis (closed form for circles, Boussinesq quadrature for ellipses); SF = allowable / actual, \"-\" where the materials give no allowable"
@@ -179,7 +195,6 @@ impl RunReport {
         for note in crate::report::safety::left_out_notes(left_out) {
             let _ = writeln!(s, "{note}");
         }
-        s
     }
 }
 

@@ -1,0 +1,352 @@
+//! The dynamic seating, step by step (the scheme of the module docs of
+//! [`super`]).
+
+use nalgebra::{Matrix3, Vector3};
+use rapier3d_f64::prelude::{PhysicsWorld, RigidBodyHandle};
+
+use super::forces::{self, StepContact};
+use super::frequency::{self, Frequencies};
+use super::mass::MassModel;
+use super::options::DynamicOptions;
+use super::trace::{Energy, TraceContact, TraceSample, TraceState};
+use super::world::{self, dvec, from_rapier, nvec};
+use crate::assembly::{BodyPose, Coupling};
+use crate::contact::{Friction, SlipState, TangentialState};
+use crate::solve::{SolveError, frictions};
+
+/// Settling status of the last step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Status {
+    pub(super) kinetic: f64,
+    max_speed: f64,
+    pub(super) residual: f64,
+}
+
+/// A dynamic seating in progress: step it yourself (tests, studies of the
+/// motion) or let [`seat`] run it to rest.
+pub struct Simulation<'a> {
+    coupling: &'a Coupling,
+    pub(super) friction: Vec<Friction>,
+    opts: DynamicOptions,
+    mass: MassModel,
+    pub(super) freq: Frequencies,
+    world: PhysicsWorld,
+    body: RigidBodyHandle,
+    dt: f64,
+    pub(super) ramp_time: f64,
+    /// Steps taken.
+    pub(super) steps: usize,
+    committed_pose: BodyPose,
+    states: Vec<TangentialState>,
+    /// Pose x_n at which the last step evaluated its forces, and those forces.
+    pub(super) pose: BodyPose,
+    pub(super) contacts: Vec<StepContact>,
+    energy: Energy,
+    pub(super) status: Status,
+    work: f64,
+    length: f64,
+    pub(super) max_travel: f64,
+}
+
+impl<'a> Simulation<'a> {
+    /// Set up the world at the start pose, at rest.
+    pub fn new(
+        coupling: &'a Coupling,
+        mu_s: &[f64],
+        opts: &DynamicOptions,
+    ) -> Result<Self, SolveError> {
+        opts.check()?;
+        let friction = frictions(coupling, mu_s)?;
+        let mass = MassModel::of(coupling);
+        let freq = frequency::seated_frequencies(coupling, &mass).ok_or_else(|| {
+            SolveError::BadOption(
+                "the seated coupling has no positive natural frequencies (a contact unloaded \
+                 by the preload, or singular mass properties)"
+                    .into(),
+            )
+        })?;
+        let touching = coupling.touching_pose;
+        let start = touching.moved(&opts.start.offset, &opts.start.tilt);
+        let n = coupling.contacts.len();
+        let mut states = Vec::with_capacity(n);
+        for i in 0..n {
+            let g = coupling.geometry(i, &start);
+            if g.gap < 0.0 && (opts.start.offset.norm() > 0.0 || opts.start.tilt.norm() > 0.0) {
+                return Err(SolveError::StartOverlaps {
+                    contact: i + 1,
+                    overlap_m: -g.gap,
+                });
+            }
+            states.push(TangentialState::new(g.normal));
+        }
+        let dt = freq.shortest_period() / opts.steps_per_period;
+        let (world, body) = world::build(coupling, &mass, &start, dt);
+        let length = coupling.length_scale();
+        let max_travel = coupling.slide_away_travel()
+            + opts.start.offset.norm()
+            + opts.start.tilt.norm() * 2.0 * length;
+        Ok(Simulation {
+            coupling,
+            friction,
+            opts: *opts,
+            mass,
+            freq,
+            world,
+            body,
+            dt,
+            ramp_time: opts.ramp_periods * freq.longest_period(),
+            steps: 0,
+            committed_pose: start,
+            states,
+            pose: start,
+            contacts: Vec::new(),
+            energy: Energy {
+                kinetic: 0.0,
+                kinetic_synchronized: 0.0,
+                hertz: 0.0,
+                preload_work: 0.0,
+            },
+            status: Status {
+                kinetic: 0.0,
+                max_speed: 0.0,
+                residual: f64::INFINITY,
+            },
+            work: 0.0,
+            length,
+            max_travel,
+        })
+    }
+
+    /// Time step [s].
+    pub fn dt(&self) -> f64 {
+        self.dt
+    }
+
+    /// Duration of the preload ramp [s].
+    pub fn ramp_time(&self) -> f64 {
+        self.ramp_time
+    }
+
+    pub fn frequencies(&self) -> Frequencies {
+        self.freq
+    }
+
+    pub fn mass(&self) -> &MassModel {
+        &self.mass
+    }
+
+    /// Steps taken so far.
+    pub fn steps(&self) -> usize {
+        self.steps
+    }
+
+    /// Time t_n of the state of the last step (its start) [s].
+    pub fn time_of_state(&self) -> f64 {
+        self.steps.saturating_sub(1) as f64 * self.dt
+    }
+
+    /// Pose x_n at the start of the last step.
+    pub fn pose(&self) -> &BodyPose {
+        &self.pose
+    }
+
+    /// Contacts of the last step, evaluated at x_n.
+    pub fn contacts(&self) -> &[StepContact] {
+        &self.contacts
+    }
+
+    /// Energy at t_n (see [`Energy`]).
+    pub fn energy(&self) -> Energy {
+        self.energy
+    }
+
+    /// Preload fraction lambda(t).
+    pub fn load_fraction(&self, t: f64) -> f64 {
+        if t >= self.ramp_time {
+            1.0
+        } else {
+            let tau = t / self.ramp_time;
+            let s = tau * tau * (3.0 - 2.0 * tau);
+            s.powf(1.5)
+        }
+    }
+
+    fn kinetic(&self, v: &Vector3<f64>, w: &Vector3<f64>, rot: &Matrix3<f64>) -> f64 {
+        let iw = rot * self.mass.inertia * rot.transpose();
+        0.5 * self.mass.mass * v.norm_squared() + 0.5 * w.dot(&(iw * w))
+    }
+
+    /// Advance one time step (module docs): evaluate the contacts at x_n,
+    /// the residual of the contact-layer forces and the preload, apply the
+    /// forces and commit, then let rapier step.
+    pub fn step(&mut self) -> Result<(), SolveError> {
+        let t = self.steps as f64 * self.dt;
+        let lambda = self.load_fraction(t);
+        let rb = &self.world.bodies[self.body];
+        let pose = from_rapier(rb.position());
+        let com = nvec(rb.center_of_mass());
+        let linvel = nvec(rb.linvel());
+        let angvel = nvec(rb.angvel());
+        let rot = pose.rotation.to_rotation_matrix().into_inner();
+        let motion = forces::Motion {
+            pose: &pose,
+            com,
+            linvel,
+            angvel,
+            inv_inertia: self.mass.world_inverse_inertia(&pose.rotation),
+            mass: &self.mass,
+        };
+        let contacts = self.contact_forces(&motion);
+        let p = &self.coupling.scene.preload;
+        let fp = p.direction * (p.force * lambda);
+        let pp = pose.apply(&p.point);
+        let (residual, max_speed, hertz) = self.balance(&motion, &contacts, &fp, &pp);
+        let kinetic_before = self.kinetic(&linvel, &angvel, &rot);
+        self.apply_and_commit(&contacts, &fp, &pp, pose);
+        self.world.step();
+        let rb = &self.world.bodies[self.body];
+        let new_pose = from_rapier(rb.position());
+        let (v1, w1) = (nvec(rb.linvel()), nvec(rb.angvel()));
+        let finite = new_pose.translation.iter().all(|x| x.is_finite())
+            && new_pose.rotation.coords.iter().all(|x| x.is_finite())
+            && v1.iter().chain(w1.iter()).all(|x| x.is_finite());
+        if !finite || !residual.is_finite() {
+            return Err(SolveError::NonFinite {
+                time_s: t,
+                step: self.steps,
+            });
+        }
+        self.energy = Energy {
+            kinetic: kinetic_before,
+            kinetic_synchronized: self.kinetic(
+                &((linvel + v1) * 0.5),
+                &((angvel + w1) * 0.5),
+                &rot,
+            ),
+            hertz,
+            preload_work: self.work,
+        };
+        self.work += fp.dot(&(new_pose.apply(&p.point) - pp));
+        self.status = Status {
+            kinetic: kinetic_before,
+            max_speed,
+            residual,
+        };
+        self.pose = pose;
+        self.contacts = contacts;
+        self.steps += 1;
+        Ok(())
+    }
+
+    /// Every contact's force at the pose of `motion` (contact layer and dashpots).
+    fn contact_forces(&self, motion: &forces::Motion) -> Vec<StepContact> {
+        let c = self.coupling;
+        (0..c.contacts.len())
+            .map(|i| {
+                forces::contact_force(
+                    c,
+                    i,
+                    motion,
+                    &self.committed_pose,
+                    &self.states[i],
+                    self.friction[i].during(self.dt),
+                    self.opts.damping,
+                )
+            })
+            .collect()
+    }
+
+    /// Residual of the contact-layer forces (no dashpots) and the preload
+    /// `fp` at `pp`, relative to F_p and F_p L; the largest speed of a ball
+    /// centre or contact point; the Hertz energy.
+    fn balance(
+        &self,
+        motion: &forces::Motion,
+        contacts: &[StepContact],
+        fp: &Vector3<f64>,
+        pp: &Vector3<f64>,
+    ) -> (f64, f64, f64) {
+        let c = self.coupling;
+        let p = &c.scene.preload;
+        let mut rf = *fp;
+        let mut rm = pp.cross(fp);
+        let mut max_speed: f64 = 0.0;
+        let mut hertz = 0.0;
+        for (i, sc) in contacts.iter().enumerate() {
+            let e = &sc.eval;
+            rf += e.force;
+            rm += e.geometry.point.cross(&e.force);
+            let centre = motion.pose.apply(&c.balls[c.contacts[i].ball].centre);
+            max_speed = max_speed
+                .max(motion.velocity_at(&centre).norm())
+                .max(motion.velocity_at(&e.geometry.point).norm());
+            hertz += c.contacts[i].normal.energy(e.approach);
+        }
+        let residual = (rf.norm() / p.force).max(rm.norm() / (p.force * self.length));
+        (residual, max_speed, hertz)
+    }
+
+    /// Set the contact forces and the preload as rapier user forces (they
+    /// persist in rapier, so reset first), and commit the tangential
+    /// history and the pose of this step.
+    fn apply_and_commit(
+        &mut self,
+        contacts: &[StepContact],
+        fp: &Vector3<f64>,
+        pp: &Vector3<f64>,
+        pose: BodyPose,
+    ) {
+        let rb = &mut self.world.bodies[self.body];
+        rb.reset_forces(false);
+        rb.reset_torques(false);
+        for sc in contacts {
+            rb.add_force_at_point(dvec(&sc.force), dvec(&sc.eval.geometry.point), false);
+        }
+        rb.add_force_at_point(dvec(fp), dvec(pp), false);
+        for (st, sc) in self.states.iter_mut().zip(contacts) {
+            *st = sc.eval.tangential.state.clone();
+        }
+        self.committed_pose = pose;
+    }
+
+    /// Whether the state of the last step is at rest (module docs).
+    pub fn settled(&self) -> bool {
+        let v_tol = self.freq.omega_min * self.opts.settle_displacement;
+        self.status.max_speed <= v_tol
+            && self.status.kinetic <= 0.5 * self.mass.mass * v_tol * v_tol
+            && self.status.residual <= self.opts.settle_force
+    }
+
+    /// The trace sample of the last step.
+    pub fn sample(&self) -> TraceSample {
+        let t = self.time_of_state();
+        TraceSample {
+            time: t,
+            load_fraction: self.load_fraction(t),
+            pose: self.pose,
+            kinetic_energy: self.status.kinetic,
+            contacts: self
+                .contacts
+                .iter()
+                .map(|sc| TraceContact {
+                    normal_force: sc.normal_force,
+                    tangential_force: sc.tangential_force,
+                    approach: sc.eval.approach,
+                    state: if sc.eval.normal_force <= 0.0 {
+                        TraceState::Open
+                    } else if sc.eval.slip() == SlipState::Slip {
+                        TraceState::Slip
+                    } else {
+                        TraceState::Stick
+                    },
+                })
+                .collect(),
+        }
+    }
+
+    /// Number of contact pairs rapier's narrow phase holds (0: its rigid
+    /// contact is off for every coupling pair).
+    pub fn rapier_contact_pairs(&self) -> usize {
+        self.world.narrow_phase.contact_pairs().count()
+    }
+}
