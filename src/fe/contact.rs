@@ -77,37 +77,7 @@ impl ContactModel {
         }
         const MAX_IT: usize = 200;
         for it in 1..=MAX_IT {
-            let idx: Vec<usize> = (0..n).filter(|&i| active[i]).collect();
-            let m = idx.len();
-            // [C_AA  -1] [f_A]   [-h_A - F w_B,A]
-            // [4·1ᵀ   0] [ δ ] = [      F       ]
-            let mut a = Mat::<f64>::zeros(m + 1, m + 1);
-            let mut b = Mat::<f64>::zeros(m + 1, 1);
-            for (r, &i) in idx.iter().enumerate() {
-                for (s, &j) in idx.iter().enumerate() {
-                    a[(r, s)] = self.c[(i, j)];
-                }
-                a[(r, m)] = -1.0;
-                a[(m, r)] = 4.0;
-                b[(r, 0)] = -self.h[i] - load * self.w_unit[i];
-            }
-            b[(m, 0)] = load;
-            let x = a.partial_piv_lu().solve(&b);
-            let delta = x[(m, 0)];
-            if !delta.is_finite() {
-                return Err(FeError::NonFinite("contact system"));
-            }
-            let mut forces = vec![0.0; n];
-            for (r, &i) in idx.iter().enumerate() {
-                forces[i] = x[(r, 0)];
-            }
-            let gaps: Vec<f64> = (0..n)
-                .map(|i| {
-                    let w: f64 = idx.iter().map(|&j| self.c[(i, j)] * forces[j]).sum::<f64>()
-                        + load * self.w_unit[i];
-                    self.h[i] - delta + w
-                })
-                .collect();
+            let (delta, mut forces, gaps) = self.solve_active(load, &active)?;
             let tol_g = 1e-9 * delta.abs();
             let tol_f = 1e-12 * load;
             let new: Vec<bool> = (0..n)
@@ -128,19 +98,7 @@ impl ContactModel {
                         *f = 0.0;
                     }
                 }
-                if (0..n).any(|i| active[i] && self.on_zone_edge[i]) {
-                    return Err(FeError::CandidateZoneTooSmall);
-                }
-                // remaining top nodes must not penetrate
-                for (r, &ho) in self.h_other.iter().enumerate() {
-                    let w: f64 = (0..n)
-                        .map(|j| self.c_other[(r, j)] * forces[j])
-                        .sum::<f64>()
-                        + load * self.w_unit_other[r];
-                    if ho - delta + w < -tol_g {
-                        return Err(FeError::CandidateZoneTooSmall);
-                    }
-                }
+                self.check_zone(load, delta, &forces, &active, tol_g)?;
                 return Ok(ContactState {
                     load,
                     approach: delta,
@@ -155,6 +113,78 @@ impl ContactModel {
             }
         }
         Err(FeError::ContactNotConverged(MAX_IT))
+    }
+
+    /// The approach, the candidate forces and the gaps with the candidates
+    /// in `active` in contact (zero gap) and the others free of load:
+    /// ```text
+    /// [C_AA  -1] [f_A]   [-h_A - F w_B,A]
+    /// [4·1ᵀ   0] [ δ ] = [      F       ]
+    /// ```
+    /// (4: the quarter model carries a quarter of the load).
+    fn solve_active(
+        &self,
+        load: f64,
+        active: &[bool],
+    ) -> Result<(f64, Vec<f64>, Vec<f64>), FeError> {
+        let n = self.h.len();
+        let idx: Vec<usize> = (0..n).filter(|&i| active[i]).collect();
+        let m = idx.len();
+        let mut a = Mat::<f64>::zeros(m + 1, m + 1);
+        let mut b = Mat::<f64>::zeros(m + 1, 1);
+        for (r, &i) in idx.iter().enumerate() {
+            for (s, &j) in idx.iter().enumerate() {
+                a[(r, s)] = self.c[(i, j)];
+            }
+            a[(r, m)] = -1.0;
+            a[(m, r)] = 4.0;
+            b[(r, 0)] = -self.h[i] - load * self.w_unit[i];
+        }
+        b[(m, 0)] = load;
+        let x = a.partial_piv_lu().solve(&b);
+        let delta = x[(m, 0)];
+        if !delta.is_finite() {
+            return Err(FeError::NonFinite("contact system"));
+        }
+        let mut forces = vec![0.0; n];
+        for (r, &i) in idx.iter().enumerate() {
+            forces[i] = x[(r, 0)];
+        }
+        let gaps: Vec<f64> = (0..n)
+            .map(|i| {
+                let w: f64 = idx.iter().map(|&j| self.c[(i, j)] * forces[j]).sum::<f64>()
+                    + load * self.w_unit[i];
+                self.h[i] - delta + w
+            })
+            .collect();
+        Ok((delta, forces, gaps))
+    }
+
+    /// The converged contact must lie inside the candidate zone: no active
+    /// candidate on its edge, and no other top node penetrating.
+    fn check_zone(
+        &self,
+        load: f64,
+        delta: f64,
+        forces: &[f64],
+        active: &[bool],
+        tol_g: f64,
+    ) -> Result<(), FeError> {
+        let n = self.h.len();
+        if (0..n).any(|i| active[i] && self.on_zone_edge[i]) {
+            return Err(FeError::CandidateZoneTooSmall);
+        }
+        // remaining top nodes must not penetrate
+        for (r, &ho) in self.h_other.iter().enumerate() {
+            let w: f64 = (0..n)
+                .map(|j| self.c_other[(r, j)] * forces[j])
+                .sum::<f64>()
+                + load * self.w_unit_other[r];
+            if ho - delta + w < -tol_g {
+                return Err(FeError::CandidateZoneTooSmall);
+            }
+        }
+        Ok(())
     }
 }
 

@@ -6,7 +6,7 @@ use nalgebra::{UnitQuaternion, Vector3};
 
 use super::inputs::{Input, Tolerances};
 use crate::assembly::Coupling;
-use crate::scene::Preload;
+use crate::scene::{Preload, VariationBounds};
 use crate::solve::dynamic::StartPose;
 use crate::solve::nominal_mu;
 
@@ -166,26 +166,7 @@ impl Variation {
                     start_u[j] = u;
                     f64::NAN
                 }
-                (Input::BallDiameter(k), Some(t)) => {
-                    t.ball_diameter[k] = b.ball_diameter_m * c;
-                    t.ball_diameter[k]
-                }
-                (Input::BallPosition(k, a), Some(t)) => {
-                    t.ball_position[k][a] = b.ball_position_m[a] * c;
-                    t.ball_position[k][a]
-                }
-                (Input::SurfaceNormal(i), Some(t)) => {
-                    t.surface_normal[i] = b.surface_normal_m * c;
-                    t.surface_normal[i]
-                }
-                (Input::SurfaceTilt(i), Some(t)) => {
-                    t.surface_tilt[i] = b.surface_tilt_rad * c;
-                    t.surface_tilt[i]
-                }
-                (Input::GroovePosition(k, a), Some(t)) => {
-                    t.groove_position[k][a] = b.groove_position_m[a] * c;
-                    t.groove_position[k][a]
-                }
+                (tolerance, Some(t)) => set_tolerance(t, tolerance, &b, c),
                 (_, None) => f64::NAN,
             };
             physical.push(value);
@@ -195,19 +176,7 @@ impl Variation {
             None => StartPose::touching(),
         };
         if self.start.is_some() {
-            let values = [
-                start.offset.x,
-                start.offset.y,
-                start.offset.z,
-                start.tilt.x,
-                start.tilt.y,
-                start.tilt.z,
-            ];
-            for (input, v) in inputs.iter().zip(physical.iter_mut()) {
-                if let Input::Start(j) = input {
-                    *v = values[*j];
-                }
-            }
+            fill_start_values(&inputs, &start, &mut physical);
         }
         let preload = Preload {
             force: nominal.force,
@@ -221,6 +190,51 @@ impl Variation {
             preload,
             tolerances: tol,
             physical,
+        }
+    }
+}
+
+/// Sets tolerance `input` to b (2u - 1) = `b` * `c` (its bound times c) and
+/// returns the value; NaN for an input that is not a tolerance.
+fn set_tolerance(t: &mut Tolerances, input: Input, b: &VariationBounds, c: f64) -> f64 {
+    match input {
+        Input::BallDiameter(k) => {
+            t.ball_diameter[k] = b.ball_diameter_m * c;
+            t.ball_diameter[k]
+        }
+        Input::BallPosition(k, a) => {
+            t.ball_position[k][a] = b.ball_position_m[a] * c;
+            t.ball_position[k][a]
+        }
+        Input::SurfaceNormal(i) => {
+            t.surface_normal[i] = b.surface_normal_m * c;
+            t.surface_normal[i]
+        }
+        Input::SurfaceTilt(i) => {
+            t.surface_tilt[i] = b.surface_tilt_rad * c;
+            t.surface_tilt[i]
+        }
+        Input::GroovePosition(k, a) => {
+            t.groove_position[k][a] = b.groove_position_m[a] * c;
+            t.groove_position[k][a]
+        }
+        _ => f64::NAN,
+    }
+}
+
+/// The physical values of the start inputs: the offset and tilt of `start`.
+fn fill_start_values(inputs: &[Input], start: &StartPose, physical: &mut [f64]) {
+    let values = [
+        start.offset.x,
+        start.offset.y,
+        start.offset.z,
+        start.tilt.x,
+        start.tilt.y,
+        start.tilt.z,
+    ];
+    for (input, v) in inputs.iter().zip(physical.iter_mut()) {
+        if let Input::Start(j) = input {
+            *v = values[*j];
         }
     }
 }

@@ -3,6 +3,10 @@
 use super::*;
 use crate::args::*;
 use crate::error::{CliError, Context};
+use kinrepro::assembly::Coupling;
+use kinrepro::solve::Seating;
+use kinrepro::solve::dynamic::{DynamicOptions, StartPose, seat_traced};
+use std::path::Path;
 
 pub fn run(args: RunArgs) -> Result<(), CliError> {
     let RunArgs {
@@ -16,7 +20,6 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         tilt,
         json,
     } = args;
-    use kinrepro::solve::dynamic::{DynamicOptions, StartPose, seat_traced};
     let coupling = kinrepro::error::read_coupling(&scene)?;
     if solver == SolverKind::QuasiStatic && (trace.is_some() || offset.is_some() || tilt.is_some())
     {
@@ -47,28 +50,7 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         .context(&file)
     };
     let seating = match (&trace, solver) {
-        (Some(path), SolverKind::Dynamic) => {
-            let name = path.display().to_string();
-            let mut trace_file =
-                kinrepro::report::atomic::AtomicFile::create(path, force).context("--trace")?;
-            let mut w = kinrepro::report::trace::TraceWriter::new(trace_file.writer(), &coupling)
-                .map_err(|e| CliError::file(&name, "", e))?;
-            let mut io_err = None;
-            let result = seat_traced(&coupling, &mu, &dyn_opts, &mut |s| {
-                if io_err.is_none() {
-                    io_err = w.write(s).err();
-                }
-            });
-            if let Some(e) = io_err {
-                return Err(CliError::file(&name, "writing the trace failed: ", e));
-            }
-            w.finish().map_err(|e| CliError::file(&name, "", e))?;
-            trace_file.commit()?;
-            result.map_err(|e| CliError::Traced {
-                trace: name.clone(),
-                source: Box::new(CliError::from(e).in_context(&file)),
-            })?
-        }
+        (Some(path), SolverKind::Dynamic) => traced(&coupling, &mu, &dyn_opts, path, force)?,
         _ => seat(&mu)?,
     };
     let nominal = seat(&nominal_mu)?;
@@ -87,4 +69,36 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     } else {
         emit(&report.table())
     }
+}
+
+/// A dynamic seating with its trace written to `path` (whole or not at
+/// all; kept when the seating fails, and the error says so).
+fn traced(
+    coupling: &Coupling,
+    mu: &[f64],
+    dyn_opts: &DynamicOptions,
+    path: &Path,
+    force: bool,
+) -> Result<Seating, CliError> {
+    let file = &coupling.scene.file;
+    let name = path.display().to_string();
+    let mut trace_file =
+        kinrepro::report::atomic::AtomicFile::create(path, force).context("--trace")?;
+    let mut w = kinrepro::report::trace::TraceWriter::new(trace_file.writer(), coupling)
+        .map_err(|e| CliError::file(&name, "", e))?;
+    let mut io_err = None;
+    let result = seat_traced(coupling, mu, dyn_opts, &mut |s| {
+        if io_err.is_none() {
+            io_err = w.write(s).err();
+        }
+    });
+    if let Some(e) = io_err {
+        return Err(CliError::file(&name, "writing the trace failed: ", e));
+    }
+    w.finish().map_err(|e| CliError::file(&name, "", e))?;
+    trace_file.commit()?;
+    result.map_err(|e| CliError::Traced {
+        trace: name.clone(),
+        source: Box::new(CliError::from(e).in_context(file)),
+    })
 }
