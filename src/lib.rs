@@ -1,9 +1,10 @@
 //! kinrepro: friction-induced re-seating scatter of kinematic couplings.
 //!
-//! Data flows one way (see README.md, "Architecture"):
-//! scene file -> [`scene`] -> coupling assembly -> solver -> pose -> study -> report.
+//! Data flows one way (docs/architecture.md):
+//! scene file -> [`scene`] -> [`assembly`] -> [`solve`] -> [`study`] -> [`report`].
 //! The compliant contact laws ([`contact`]) and the materials ([`material`])
-//! sit under everything; the CLI (`src/main.rs`) holds no physics.
+//! sit under everything; [`analysis`] and [`fe`] are side branches above
+//! `solve`; the CLI (`src/bin/kinrepro`) holds no physics.
 
 pub mod analysis;
 pub mod assembly;
