@@ -16,5 +16,8 @@ pub mod study_files;
 pub mod study_record;
 pub mod study_stream;
 pub mod study_text;
+pub mod sweep;
+pub mod sweep_plot;
+pub mod sweep_text;
 pub mod trace;
 pub mod validate_hertz;

@@ -37,6 +37,9 @@ pub enum Command {
     Study(StudyArgs),
     /// Merge the JSON outputs of sharded studies into the result of one run.
     Merge(MergeArgs),
+    /// Sweep scene fields over a grid or an LHS: reproducibility, stiffness,
+    /// safety and friction limit per design point, and the Pareto front.
+    Sweep(crate::commands::sweep::SweepArgs),
     /// Check the Hertz law of every distinct contact pair of the scenes with
     /// the mini FE solver, at the load the nominal seating reaches.
     ValidateHertz(ValidateHertzArgs),

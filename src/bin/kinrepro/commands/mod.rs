@@ -6,6 +6,7 @@ mod fe;
 mod scene;
 mod seat;
 mod study;
+pub mod sweep;
 
 use kinrepro::report::study::StudyReport;
 
@@ -21,6 +22,7 @@ pub fn dispatch(command: Command) -> Result<(), String> {
         Command::Load(a) => analysis::load(a),
         Command::Study(a) => study::study(a),
         Command::Merge(a) => study::merge(a),
+        Command::Sweep(a) => sweep::sweep(a),
         Command::ValidateHertz(a) => fe::validate_hertz(a),
     }
 }

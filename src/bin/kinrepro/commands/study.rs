@@ -241,6 +241,9 @@ fn progress(total: usize) -> Result<indicatif::ProgressBar, String> {
 
 pub fn merge(args: MergeArgs) -> Result<(), String> {
     let MergeArgs { parts, format } = args;
+    if parts.first().is_some_and(|p| super::sweep::is_sweep(p)) {
+        return super::sweep::merge(&parts, format);
+    }
     let docs = parts
         .iter()
         .map(|p| {
