@@ -17,10 +17,9 @@ fn scene01() -> String {
 }
 
 fn sweep(text: &str, sets: &[&str], samples: usize) -> SweepReport {
-    let base = kinrepro::assembly::Coupling::new(
-        &kinrepro::scene::Scene::parse(text, "scene01").unwrap(),
-    )
-    .unwrap();
+    let base =
+        kinrepro::assembly::Coupling::new(&kinrepro::scene::Scene::parse(text, "scene01").unwrap())
+            .unwrap();
     let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
     let spec = SweepSpec::new("scene01", text, &sets, DesignKind::Grid).unwrap();
     let opts = StudyOptions {
@@ -67,7 +66,11 @@ fn sigma_follows_preload_to_the_two_thirds() {
         let ratio = number(d, "preload.force") / 20.0;
         let law = ratio.powf(2.0 / 3.0);
         let w = worst(d, reference, law);
-        assert!(w < 0.01, "F = {}: off F^(2/3) by {w}", number(d, "preload.force"));
+        assert!(
+            w < 0.01,
+            "F = {}: off F^(2/3) by {w}",
+            number(d, "preload.force")
+        );
         // The nominal approach follows the same Hertz law.
         let a = d.nominal_approach_m.unwrap() / reference.nominal_approach_m.unwrap();
         assert!((a / law - 1.0).abs() < 0.01, "approach ratio {a} vs {law}");
