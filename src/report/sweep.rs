@@ -127,22 +127,7 @@ pub fn run(
     let setup = |e: String| SweepError::Setup(format!("{}: {e}", spec.file));
     let points = spec.points()?;
     let study_design = design_for(base, opts).map_err(|e| setup(e.to_string()))?;
-    let names: Vec<&str> = base
-        .scene
-        .evaluation_points
-        .iter()
-        .map(|p| p.name.as_str())
-        .collect();
-    let pareto_point = match pareto_point {
-        None => names[0].to_string(),
-        Some(p) if names.contains(&p) => p.to_string(),
-        Some(p) => {
-            return Err(setup(format!(
-                "--pareto-point {p}: no such evaluation point (the scene has {})",
-                names.join(", ")
-            )));
-        }
-    };
+    let pareto_point = pareto_point_of(base, pareto_point).map_err(setup)?;
     let whole = StudyOptions {
         shard: Shard::whole(),
         ..*opts
@@ -205,6 +190,24 @@ pub fn run(
     };
     report.mark_pareto();
     Ok(report)
+}
+
+/// The evaluation point of the Pareto objective: `asked`, or the first.
+fn pareto_point_of(base: &Coupling, asked: Option<&str>) -> Result<String, String> {
+    let names: Vec<&str> = base
+        .scene
+        .evaluation_points
+        .iter()
+        .map(|p| p.name.as_str())
+        .collect();
+    match asked {
+        None => Ok(names[0].to_string()),
+        Some(p) if names.contains(&p) => Ok(p.to_string()),
+        Some(p) => Err(format!(
+            "--pareto-point {p}: no such evaluation point (the scene has {})",
+            names.join(", ")
+        )),
+    }
 }
 
 /// The report of one evaluated design point: the study statistics by the

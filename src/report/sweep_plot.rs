@@ -47,7 +47,7 @@ pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> 
     if r.sets.len() == 2 && r.design.name() == "grid" {
         out.push((
             "sweep_heatmap".to_string(),
-            svg(&foot, (760, 640), |a| heatmap(r, a))?,
+            svg(&foot, (900, 640), |a| heatmap(r, a))?,
         ));
     }
     if r.designs
@@ -138,9 +138,12 @@ fn point<'a>(r: &SweepReport, d: &'a DesignReport) -> Option<&'a PointStats> {
     d.points.iter().find(|p| p.name == r.pareto_point)
 }
 
-fn sigma_chart(r: &SweepReport, k: usize, area: &Area) -> Result<(), SweepPlotError> {
-    let field = &r.sets[k].field;
-    let mut groups: Vec<(String, Vec<(f64, &DesignReport)>)> = Vec::new();
+/// Evaluated designs grouped by the values of every field but `k`: (label,
+/// [(x, design)] sorted by x).
+type Groups<'a> = Vec<(String, Vec<(f64, &'a DesignReport)>)>;
+
+fn groups(r: &SweepReport, k: usize) -> Groups<'_> {
+    let mut groups: Groups = Vec::new();
     for d in r.designs.iter().filter(|d| point(r, d).is_some()) {
         let label: Vec<String> = r
             .sets
@@ -148,17 +151,15 @@ fn sigma_chart(r: &SweepReport, k: usize, area: &Area) -> Result<(), SweepPlotEr
             .enumerate()
             .filter(|(j, _)| *j != k)
             .map(|(_, s)| {
-                format!(
-                    "{} = {}",
-                    s.field,
-                    d.values
-                        .get(&s.field)
-                        .map_or(String::new(), |v| v.to_string())
-                )
+                let v = d.values.get(&s.field).map_or(String::new(), value_tick);
+                format!("{} = {v}", s.field)
             })
             .collect();
         let label = label.join(", ");
-        let x = d.values.get(field).map_or(0.0, |v| x_of(r, k, v));
+        let x = d
+            .values
+            .get(&r.sets[k].field)
+            .map_or(0.0, |v| x_of(r, k, v));
         match groups.iter_mut().find(|(l, _)| *l == label) {
             Some((_, g)) => g.push((x, d)),
             None => groups.push((label, vec![(x, d)])),
@@ -167,106 +168,153 @@ fn sigma_chart(r: &SweepReport, k: usize, area: &Area) -> Result<(), SweepPlotEr
     for (_, g) in &mut groups {
         g.sort_by(|a, b| a.0.total_cmp(&b.0));
     }
-    let title = format!("σ at {} against {field} ({})", r.pareto_point, r.name);
+    groups
+}
+
+fn sigma_chart(r: &SweepReport, k: usize, area: &Area) -> Result<(), SweepPlotError> {
+    let groups = groups(r, k);
+    let title = format!(
+        "σ at {} against {} ({})",
+        r.pareto_point, r.sets[k].field, r.name
+    );
     let panels = area.titled(&title, ("sans-serif", 20)).map_err(draw_err)?;
-    let cells = panels.split_evenly((2, 3));
     let xs: Vec<f64> = groups
         .iter()
         .flat_map(|(_, g)| g.iter().map(|p| p.0))
         .collect();
-    let (x0, x1) = span(&xs);
-    for (j, (cell, dof)) in cells.iter().zip(Dof::ALL).enumerate() {
-        let val = |d: &DesignReport, f: &dyn Fn(&PointStats) -> Option<f64>| {
-            point(r, d).and_then(f).unwrap_or(f64::NAN)
-        };
-        let sigma = |p: &PointStats| Some(p.sigma.values()[j]);
-        let lo = |p: &PointStats| p.sigma_ci90_low.map(|x| x.values()[j]);
-        let hi = |p: &PointStats| p.sigma_ci90_high.map(|x| x.values()[j]);
-        let ymax = groups
+    let xr = span(&xs);
+    for (j, cell) in panels.split_evenly((2, 3)).iter().enumerate() {
+        // Per group: (x, sigma, interval low, high) of DOF j [nm or nrad].
+        let series: Vec<(&str, Vec<[f64; 4]>)> = groups
             .iter()
-            .flat_map(|(_, g)| g.iter())
-            .map(|(_, d)| val(d, &hi).max(val(d, &sigma)))
-            .filter(|y| y.is_finite())
-            .fold(0.0, f64::max);
-        let mut chart = ChartBuilder::on(cell)
-            .margin(8)
-            .x_label_area_size(36)
-            .y_label_area_size(62)
-            .build_cartesian_2d(x0..x1, 0.0..(if ymax > 0.0 { ymax * 1.1 } else { 1.0 }))
-            .map_err(draw_err)?;
-        let material = r.sets[k].kind == crate::explore::FieldKind::Material;
-        let level_names = names(r, k);
-        let fmt = |v: &f64| {
-            if material {
-                level_names
-                    .get(v.round().max(0.0) as usize)
-                    .cloned()
-                    .unwrap_or_default()
-            } else {
-                format!("{v:.3}")
-            }
-        };
-        chart
-            .configure_mesh()
-            .label_style(("sans-serif", 12))
-            .x_label_formatter(&fmt)
-            .x_desc(field.as_str())
-            .y_desc(format!("σ_{} [{}]", dof.label(), dof.unit()))
-            .draw()
-            .map_err(draw_err)?;
-        for (gi, (label, g)) in groups.iter().enumerate() {
-            let col = color(gi);
-            let band: Vec<(f64, f64)> = g
-                .iter()
-                .map(|(x, d)| (*x, val(d, &hi)))
-                .chain(g.iter().rev().map(|(x, d)| (*x, val(d, &lo))))
-                .filter(|p| p.1.is_finite())
-                .collect();
-            if g.len() > 1 && band.len() == 2 * g.len() {
-                chart
-                    .draw_series(std::iter::once(Polygon::new(band, col.mix(0.2).filled())))
-                    .map_err(draw_err)?;
-            }
-            for (x, d) in g {
-                let (l, h) = (val(d, &lo), val(d, &hi));
-                if l.is_finite() && h.is_finite() {
-                    chart
-                        .draw_series(std::iter::once(PathElement::new(
-                            vec![(*x, l), (*x, h)],
-                            col,
-                        )))
-                        .map_err(draw_err)?;
-                }
-            }
-            chart
-                .draw_series(
-                    g.iter()
-                        .map(|(x, d)| Circle::new((*x, val(d, &sigma)), 3, col.filled())),
-                )
-                .map_err(draw_err)?;
-            let line = chart
-                .draw_series(LineSeries::new(
-                    g.iter().map(|(x, d)| (*x, val(d, &sigma))),
-                    col.stroke_width(2),
-                ))
-                .map_err(draw_err)?;
-            if j == 0 && !label.is_empty() && gi < 8 {
-                line.label(label.as_str()).legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 14, y)], col.stroke_width(2))
-                });
-            }
-        }
-        if j == 0 && groups.len() > 1 {
-            chart
-                .configure_series_labels()
-                .label_font(("sans-serif", 11))
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK)
-                .draw()
-                .map_err(draw_err)?;
-        }
+            .map(|(label, g)| {
+                let rows = g
+                    .iter()
+                    .filter_map(|(x, d)| {
+                        let p = point(r, d)?;
+                        let ci = |c: &Option<crate::report::study::Dofs>| {
+                            c.map_or(f64::NAN, |c| c.values()[j])
+                        };
+                        Some([
+                            *x,
+                            p.sigma.values()[j],
+                            ci(&p.sigma_ci90_low),
+                            ci(&p.sigma_ci90_high),
+                        ])
+                    })
+                    .collect();
+                (label.as_str(), rows)
+            })
+            .collect();
+        dof_panel(r, k, Dof::ALL[j], &series, cell, xr, j == 0)?;
     }
     Ok(())
+}
+
+/// One DOF's panel: per group the sigma line and dots, the interval as a
+/// band and as bars; the legend of the groups if `legend`.
+fn dof_panel(
+    r: &SweepReport,
+    k: usize,
+    dof: Dof,
+    series: &[(&str, Vec<[f64; 4]>)],
+    cell: &Area,
+    (x0, x1): (f64, f64),
+    legend: bool,
+) -> Result<(), SweepPlotError> {
+    let ymax = series
+        .iter()
+        .flat_map(|(_, g)| g.iter().flat_map(|v| [v[1], v[3]]))
+        .filter(|y| y.is_finite())
+        .fold(0.0, f64::max);
+    let mut chart = ChartBuilder::on(cell)
+        .margin(8)
+        .x_label_area_size(36)
+        .y_label_area_size(62)
+        .build_cartesian_2d(x0..x1, 0.0..(if ymax > 0.0 { ymax * 1.1 } else { 1.0 }))
+        .map_err(draw_err)?;
+    let material = r.sets[k].kind == crate::explore::FieldKind::Material;
+    let level_names = names(r, k);
+    let fmt = |v: &f64| match material {
+        true => level_names
+            .get(v.round().max(0.0) as usize)
+            .cloned()
+            .unwrap_or_default(),
+        false => tick(*v),
+    };
+    chart
+        .configure_mesh()
+        .label_style(("sans-serif", 12))
+        .x_label_formatter(&fmt)
+        .x_desc(r.sets[k].field.as_str())
+        .y_desc(format!("σ_{} [{}]", dof.label(), dof.unit()))
+        .draw()
+        .map_err(draw_err)?;
+    for (gi, (label, g)) in series.iter().enumerate() {
+        let col = color(gi);
+        let band: Vec<(f64, f64)> = g
+            .iter()
+            .map(|v| (v[0], v[3]))
+            .chain(g.iter().rev().map(|v| (v[0], v[2])))
+            .filter(|p| p.1.is_finite())
+            .collect();
+        if g.len() > 1 && band.len() == 2 * g.len() {
+            chart
+                .draw_series(std::iter::once(Polygon::new(band, col.mix(0.2).filled())))
+                .map_err(draw_err)?;
+        }
+        let bars = g.iter().filter(|v| v[2].is_finite() && v[3].is_finite());
+        chart
+            .draw_series(bars.map(|v| PathElement::new(vec![(v[0], v[2]), (v[0], v[3])], col)))
+            .map_err(draw_err)?;
+        chart
+            .draw_series(g.iter().map(|v| Circle::new((v[0], v[1]), 3, col.filled())))
+            .map_err(draw_err)?;
+        let line = chart
+            .draw_series(LineSeries::new(
+                g.iter().map(|v| (v[0], v[1])),
+                col.stroke_width(2),
+            ))
+            .map_err(draw_err)?;
+        if legend && !label.is_empty() && gi < 8 {
+            line.label(*label).legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 14, y)], col.stroke_width(2))
+            });
+        }
+    }
+    if legend && series.len() > 1 {
+        chart
+            .configure_series_labels()
+            .label_font(("sans-serif", 11))
+            .position(SeriesLabelPosition::UpperLeft)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .draw()
+            .map_err(draw_err)?;
+    }
+    Ok(())
+}
+
+/// A short tick label: up to 4 significant digits, no trailing zeros.
+fn tick(v: f64) -> String {
+    if v != 0.0 && !(1e-3..1e5).contains(&v.abs()) {
+        return format!("{v:.3e}");
+    }
+    let digits = (3 - v.abs().log10().floor() as i32).clamp(0, 6) as usize;
+    let t = format!("{v:.digits$}");
+    if t.contains('.') {
+        t.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        t
+    }
+}
+
+/// A swept value as a tick label.
+fn value_tick(v: &SweptValue) -> String {
+    match v {
+        SweptValue::Number(x) => tick(*x),
+        SweptValue::Name(n) => n.clone(),
+    }
 }
 
 /// Axis span of `xs` with 5 % margins (a unit span around a single value).
@@ -305,21 +353,23 @@ fn sigma_max(r: &SweepReport, d: &DesignReport) -> Option<f64> {
     Some(s[0].max(s[1]).max(s[2]))
 }
 
+/// The distinct values of field `k`, in design order.
+fn levels(r: &SweepReport, k: usize) -> Vec<SweptValue> {
+    let mut v: Vec<SweptValue> = Vec::new();
+    for d in &r.designs {
+        if let Some(x) = d.values.get(&r.sets[k].field)
+            && !v.contains(x)
+        {
+            v.push(x.clone());
+        }
+    }
+    v
+}
+
 /// Heat map over the two fields of a grid: cells by level index, coloured
 /// by the largest translational sigma; designs not evaluated are grey.
 fn heatmap(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
-    let levels = |k: usize| -> Vec<SweptValue> {
-        let mut v: Vec<SweptValue> = Vec::new();
-        for d in &r.designs {
-            if let Some(x) = d.values.get(&r.sets[k].field)
-                && !v.contains(x)
-            {
-                v.push(x.clone());
-            }
-        }
-        v
-    };
-    let (lx, ly) = (levels(0), levels(1));
+    let (lx, ly) = (levels(r, 0), levels(r, 1));
     let values: Vec<f64> = r.designs.iter().filter_map(|d| sigma_max(r, d)).collect();
     let (vmin, vmax) = (
         values.iter().copied().fold(f64::INFINITY, f64::min),
@@ -340,7 +390,7 @@ fn heatmap(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
         let v = v.to_vec();
         move |x: &f64| {
             v.get(x.round().max(0.0) as usize)
-                .map_or(String::new(), |v| v.to_string())
+                .map_or(String::new(), value_tick)
         }
     };
     chart
@@ -375,6 +425,15 @@ fn heatmap(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
                 fill.filled(),
             )))
             .map_err(draw_err)?;
+        let text = sigma_max(r, d).map_or("-".to_string(), |v| format!("{v:.3}"));
+        let ink = if fill.1 > 160 { BLACK } else { WHITE };
+        chart
+            .draw_series(std::iter::once(Text::new(
+                text,
+                (i - 0.2, j),
+                ("sans-serif", 12).into_font().color(&ink),
+            )))
+            .map_err(draw_err)?;
     }
     Ok(())
 }
@@ -392,9 +451,7 @@ fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
     let ymax = pts.iter().map(|p| p.1).fold(0.0, f64::max);
     let mut chart = ChartBuilder::on(area)
         .caption(
-            format!(
-                "Pareto front: lower σ, higher k_min, higher SF_p (front: coloured, #index SF_p)"
-            ),
+            "Pareto front: lower σ, higher k_min, higher SF_p (front: coloured, #index SF_p)",
             ("sans-serif", 16),
         )
         .margin(10)
@@ -411,15 +468,6 @@ fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
         ))
         .label_style(("sans-serif", 12))
         .draw()
-        .map_err(draw_err)?;
-    let mut front: Vec<(f64, f64)> = pts
-        .iter()
-        .filter(|p| p.2.pareto == Some(true))
-        .map(|p| (p.0, p.1))
-        .collect();
-    front.sort_by(|a, b| a.0.total_cmp(&b.0));
-    chart
-        .draw_series(LineSeries::new(front, color(5).stroke_width(1)))
         .map_err(draw_err)?;
     for (x, y, d) in &pts {
         let on = d.pareto == Some(true);
