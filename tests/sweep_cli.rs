@@ -263,3 +263,21 @@ fn lhs_sweep_with_charts() {
     let (ok, _, err) = kinrepro(&args);
     assert!(!ok && err.contains("--force"), "{err}");
 }
+
+#[test]
+fn a_design_point_equal_to_the_scene_gives_the_study_statistics() {
+    // The sweep sets preload.force to the scene's own 20 N: its points must
+    // be exactly those of `kinrepro study` on the unchanged file (same
+    // design, same seed, the study's statistics), field for field.
+    let s01 = scene("01_maxwell_vgroove_steel.toml");
+    let s = s01.to_str().unwrap();
+    let (ok, sweep, err) = kinrepro(&[
+        "sweep", s, "--set", "preload.force=10,20", "--samples", "10", "--format", "json",
+    ]);
+    assert!(ok, "{err}");
+    let (ok, study, err) = kinrepro(&["study", s, "--samples", "10", "--format", "json"]);
+    assert!(ok, "{err}");
+    let (sweep, study) = (json(&sweep), json(&study));
+    assert_eq!(sweep["designs"][1]["points"], study["variants"][0]["points"]);
+    assert_ne!(sweep["designs"][0]["points"], study["variants"][0]["points"]);
+}
