@@ -183,6 +183,15 @@ fn bad_fields_and_values_fail_with_one_line_and_bad_points_are_reported() {
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.starts_with("error: ") && err.contains(expect), "{err}");
     }
+    // An explicit scene has no [coupling] table to sweep.
+    let explicit = scene("custom_kelvin_explicit.toml");
+    let (ok, _, err) = kinrepro(&[
+        "sweep",
+        explicit.to_str().unwrap(),
+        "--set",
+        "preload.force=1,2",
+    ]);
+    assert!(!ok && err.contains("high-level form"), "{err}");
     // An invalid design point is reported with its reason; the sweep goes on.
     let (ok, out, err) = kinrepro(&[
         "sweep",
@@ -272,12 +281,25 @@ fn a_design_point_equal_to_the_scene_gives_the_study_statistics() {
     let s01 = scene("01_maxwell_vgroove_steel.toml");
     let s = s01.to_str().unwrap();
     let (ok, sweep, err) = kinrepro(&[
-        "sweep", s, "--set", "preload.force=10,20", "--samples", "10", "--format", "json",
+        "sweep",
+        s,
+        "--set",
+        "preload.force=10,20",
+        "--samples",
+        "10",
+        "--format",
+        "json",
     ]);
     assert!(ok, "{err}");
     let (ok, study, err) = kinrepro(&["study", s, "--samples", "10", "--format", "json"]);
     assert!(ok, "{err}");
     let (sweep, study) = (json(&sweep), json(&study));
-    assert_eq!(sweep["designs"][1]["points"], study["variants"][0]["points"]);
-    assert_ne!(sweep["designs"][0]["points"], study["variants"][0]["points"]);
+    assert_eq!(
+        sweep["designs"][1]["points"],
+        study["variants"][0]["points"]
+    );
+    assert_ne!(
+        sweep["designs"][0]["points"],
+        study["variants"][0]["points"]
+    );
 }

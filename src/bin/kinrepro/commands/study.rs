@@ -225,7 +225,7 @@ fn options(args: &StudyArgs) -> Result<StudyOptions, String> {
 }
 
 /// The progress bar (on a terminal only).
-fn progress(total: usize) -> Result<indicatif::ProgressBar, String> {
+pub(super) fn progress(total: usize) -> Result<indicatif::ProgressBar, String> {
     if !std::io::IsTerminal::is_terminal(&std::io::stderr()) {
         return Ok(indicatif::ProgressBar::hidden());
     }

@@ -107,8 +107,22 @@ pub fn sweep(args: SweepArgs) -> Result<(), String> {
     };
     let spec = SweepSpec::new(&file, &text, &args.sets, design).map_err(|e| e.to_string())?;
     set_jobs(args.jobs, usize::MAX)?;
-    let report = run(&spec, &base, &opts, args.pareto_point.as_deref(), &|| {})
-        .map_err(|e| e.to_string())?;
+    // One tick per seated sample (points that cannot seat tick none).
+    let points = spec.points().map_err(|e| e.to_string())?.len();
+    let samples = kinrepro::study::runner::design_for(&base, &opts)
+        .map_err(|e| format!("{file}: {e}"))?
+        .n;
+    let share = opts
+        .shard
+        .range(points)
+        .map_err(|e| format!("--shard: {e}"))?
+        .len();
+    let bar = super::study::progress(share * samples)?;
+    let report = run(&spec, &base, &opts, args.pareto_point.as_deref(), &|| {
+        bar.inc(1)
+    })
+    .map_err(|e| e.to_string())?;
+    bar.finish_and_clear();
     print_sweep(&report, args.format)?;
     if let Some(dir) = &args.out {
         for f in kinrepro::report::sweep_plot::write_charts(&report, dir, args.force)
