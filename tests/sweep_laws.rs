@@ -153,3 +153,27 @@ fn the_largest_ball_dominates_a_ball_sweep() {
     let marks: Vec<Option<bool>> = r.designs.iter().map(|d| d.pareto).collect();
     assert_eq!(marks, vec![Some(false), Some(false), Some(true)]);
 }
+
+#[test]
+fn the_preload_law_holds_where_contacts_stick_and_contacts_are_elliptical() {
+    // Scene 06 (Kelvin: the flat sticks) and scene 02 (pins: elliptical
+    // Hertz contacts). The law still holds: stick or slip, Q <= mu P is
+    // scale-free, and a stuck contact's tangential displacement dQ / k_t
+    // scales as F / F^(1/3) = F^(2/3) like the normal approach (Mindlin
+    // k_t ~ a ~ F^(1/3); an ellipse's eccentricity depends on the
+    // curvatures alone), so the whole quasi-static path is self-similar.
+    for name in ["06_kelvin_steel.toml", "02_maxwell_pins_steel.toml"] {
+        let text = std::fs::read_to_string(common::scene(name)).unwrap();
+        let r = sweep(&text, &["preload.force=10,20,40"], 10);
+        let reference = &r.designs[1];
+        for d in &r.designs {
+            let law = (number(d, "preload.force") / 20.0).powf(2.0 / 3.0);
+            let w = worst(d, reference, law);
+            assert!(
+                w < 0.01,
+                "{name}: F = {}: off by {w}",
+                number(d, "preload.force")
+            );
+        }
+    }
+}
