@@ -4,11 +4,13 @@
 //! Numeric fields: `coupling.{diameter, ball_diameter,
 //! groove_element_diameter, opening_angle_deg, support_compliance}`,
 //! `preload.{force, ramp_time}`, `friction.{mu_static, spread,
-//! dynamic_ratio, decay_coefficient}`, `variation.{preload_tilt,
-//! ball_diameter, surface_normal, surface_tilt}` and
-//! `materials.NAME.{youngs_modulus, poisson_ratio, allowable_pressure,
-//! allowable_shear_stress}` (NAME: a `[[materials]]` entry of the scene).
-//! Material fields: `coupling.ball_material`, `coupling.groove_material`.
+//! dynamic_ratio, decay_coefficient}` and `materials.NAME.{youngs_modulus,
+//! poisson_ratio, allowable_pressure}` (NAME: a `[[materials]]` entry of
+//! the scene). Material fields: `coupling.ball_material`,
+//! `coupling.groove_material`. Not sweepable: fields no sweep output
+//! depends on (`[variation]`: a sweep varies the friction only; the
+//! allowable shear stress: the sweep reports the pressure safety factor),
+//! and the study settings (`[study]`: given as options).
 
 use serde::{Deserialize, Serialize};
 use toml::{Table, Value};
@@ -42,7 +44,7 @@ impl std::fmt::Display for SweptValue {
     }
 }
 
-const NUMBERS: [(&str, &[&str]); 4] = [
+const NUMBERS: [(&str, &[&str]); 3] = [
     (
         "coupling",
         &[
@@ -58,22 +60,8 @@ const NUMBERS: [(&str, &[&str]); 4] = [
         "friction",
         &["mu_static", "spread", "dynamic_ratio", "decay_coefficient"],
     ),
-    (
-        "variation",
-        &[
-            "preload_tilt",
-            "ball_diameter",
-            "surface_normal",
-            "surface_tilt",
-        ],
-    ),
 ];
-const MATERIAL_NUMBERS: [&str; 4] = [
-    "youngs_modulus",
-    "poisson_ratio",
-    "allowable_pressure",
-    "allowable_shear_stress",
-];
+const MATERIAL_NUMBERS: [&str; 3] = ["youngs_modulus", "poisson_ratio", "allowable_pressure"];
 const MATERIALS: [&str; 2] = ["coupling.ball_material", "coupling.groove_material"];
 
 /// Every sweepable path, for messages (NAME stands for a material entry).
@@ -135,14 +123,13 @@ fn type_fits(v: &Value, kind: FieldKind) -> bool {
 }
 
 /// The present value at `seg` (None if the field is absent but its table
-/// exists, or is `[variation]`, which a sweep may create).
+/// exists).
 fn lookup<'a>(scene: &'a Table, seg: &[&str]) -> Result<Option<&'a Value>, String> {
     match seg {
         ["materials", name, key] => Ok(material(scene, name)?.get(*key)),
         [table, key] => match scene.get(*table) {
             Some(Value::Table(t)) => Ok(t.get(*key)),
             Some(_) => Err(format!("[{table}] is not a table in the scene")),
-            None if *table == "variation" => Ok(None),
             None => Err(format!("the scene has no [{table}] table")),
         },
         _ => Err("not a sweepable field".to_string()),
@@ -219,10 +206,6 @@ mod tests {
             kind_of("materials.probe.youngs_modulus", &s).unwrap(),
             FieldKind::Number
         );
-        assert_eq!(
-            kind_of("variation.surface_tilt", &s).unwrap(),
-            FieldKind::Number
-        );
     }
 
     #[test]
@@ -233,6 +216,8 @@ mod tests {
             "coupling",
             "materials.other.youngs_modulus",
             "study.samples",
+            "variation.surface_tilt",
+            "materials.probe.allowable_shear_stress",
         ] {
             let e = kind_of(bad, &s).unwrap_err().to_string();
             assert!(e.contains(bad), "{e}");
@@ -247,7 +232,12 @@ mod tests {
     fn set_replaces_or_inserts() {
         let mut s = scene();
         set(&mut s, "preload.force", &SweptValue::Number(5.0)).unwrap();
-        set(&mut s, "variation.surface_tilt", &SweptValue::Number(1e-4)).unwrap();
+        set(
+            &mut s,
+            "coupling.opening_angle_deg",
+            &SweptValue::Number(60.0),
+        )
+        .unwrap();
         set(
             &mut s,
             "materials.probe.youngs_modulus",
@@ -255,7 +245,7 @@ mod tests {
         )
         .unwrap();
         assert_eq!(s["preload"]["force"].as_float(), Some(5.0));
-        assert_eq!(s["variation"]["surface_tilt"].as_float(), Some(1e-4));
+        assert_eq!(s["coupling"]["opening_angle_deg"].as_float(), Some(60.0));
         assert_eq!(s["materials"][0]["youngs_modulus"].as_float(), Some(1e11));
     }
 }

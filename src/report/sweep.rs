@@ -339,6 +339,9 @@ pub fn merge_sweeps(parts: Vec<(String, SweepReport)>) -> Result<SweepReport, Sw
                 p.shard.count
             )));
         }
+        if p.shard.index == 0 || p.shard.index > count {
+            return Err(differs(format!("shard {} (not in 1..={count})", p.shard)));
+        }
         let slot = &mut seen[p.shard.index - 1];
         if slot.is_some() {
             return Err(SweepMergeError::Duplicate {

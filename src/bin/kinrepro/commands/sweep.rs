@@ -106,7 +106,6 @@ pub fn sweep(args: SweepArgs) -> Result<(), String> {
         },
     };
     let spec = SweepSpec::new(&file, &text, &args.sets, design).map_err(|e| e.to_string())?;
-    set_jobs(args.jobs, usize::MAX)?;
     // One tick per seated sample (points that cannot seat tick none).
     let points = spec.points().map_err(|e| e.to_string())?.len();
     let samples = kinrepro::study::runner::design_for(&base, &opts)
@@ -117,6 +116,7 @@ pub fn sweep(args: SweepArgs) -> Result<(), String> {
         .range(points)
         .map_err(|e| format!("--shard: {e}"))?
         .len();
+    set_jobs(args.jobs, share * samples)?;
     let bar = super::study::progress(share * samples)?;
     let report = run(&spec, &base, &opts, args.pareto_point.as_deref(), &|| {
         bar.inc(1)
