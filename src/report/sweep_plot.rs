@@ -17,6 +17,7 @@ use crate::explore::SweptValue;
 use crate::report::atomic::{WriteError, check_overwrite, write_file};
 use crate::report::study::PointStats;
 use crate::report::sweep::{DesignReport, SweepReport};
+use crate::report::sweep_text::short as tick;
 use crate::study::plot::{Dof, color};
 
 /// A chart could not be drawn or written.
@@ -293,20 +294,6 @@ fn dof_panel(
             .map_err(draw_err)?;
     }
     Ok(())
-}
-
-/// A short tick label: up to 4 significant digits, no trailing zeros.
-fn tick(v: f64) -> String {
-    if v != 0.0 && !(1e-3..1e5).contains(&v.abs()) {
-        return format!("{v:.3e}");
-    }
-    let digits = (3 - v.abs().log10().floor() as i32).clamp(0, 6) as usize;
-    let t = format!("{v:.digits$}");
-    if t.contains('.') {
-        t.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        t
-    }
 }
 
 /// A swept value as a tick label.

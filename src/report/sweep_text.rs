@@ -8,6 +8,21 @@ use crate::report::study::{Dofs, csv_field, truncate};
 use crate::report::sweep::{DesignReport, SweepReport};
 use crate::study::runner::COMPONENTS;
 
+/// A number in at most 4 significant digits, no trailing zeros (tables
+/// and chart ticks; the JSON and CSV keep every digit).
+pub fn short(v: f64) -> String {
+    if v != 0.0 && !(1e-3..1e5).contains(&v.abs()) {
+        return format!("{v:.3e}");
+    }
+    let digits = (3 - v.abs().log10().floor() as i32).clamp(0, 6) as usize;
+    let t = format!("{v:.digits$}");
+    if t.contains('.') {
+        t.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        t
+    }
+}
+
 /// Provenance and design columns, then the swept fields, then these.
 pub const CSV_TAIL: &str = "status,pareto,point,dof,unit,n,mean,min,max,sigma,three_sigma,sigma_ci90_low,sigma_ci90_high,sigma_interval_method,min_principal_stiffness_n_per_m,min_pressure_safety_factor,friction_limit,friction_limit_margin,nominal_approach_m";
 
@@ -143,10 +158,10 @@ impl SweepReport {
         let values: Vec<String> = self
             .sets
             .iter()
-            .map(|f| {
-                d.values
-                    .get(&f.field)
-                    .map_or(String::new(), |v| v.to_string())
+            .map(|f| match d.values.get(&f.field) {
+                Some(SweptValue::Number(x)) => short(*x),
+                Some(SweptValue::Name(n)) => n.clone(),
+                None => String::new(),
             })
             .collect();
         let values = truncate(&values.join(", "), 33);
@@ -219,5 +234,20 @@ impl SweepReport {
         } else {
             m.join("; ")
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::short;
+
+    #[test]
+    fn short_numbers() {
+        assert_eq!(short(5.0), "5");
+        assert_eq!(short(16.666666666666664), "16.67");
+        assert_eq!(short(0.005), "0.005");
+        assert_eq!(short(0.0), "0");
+        assert_eq!(short(-2.5), "-2.5");
+        assert_eq!(short(2.1e11), "2.100e11");
     }
 }
