@@ -35,7 +35,7 @@ pub enum Command {
     /// Reproducibility study: seat each scene once per friction sample and
     /// report the scatter of the pose (Table 2 of the paper).
     Study(StudyArgs),
-    /// Merge the JSON outputs of sharded studies into the result of one run.
+    /// Merge the JSON outputs of sharded studies (or sweeps) into the result of one run.
     Merge(MergeArgs),
     /// Sweep scene fields over a grid or an LHS: reproducibility, stiffness,
     /// safety and friction limit per design point, and the Pareto front.
@@ -235,7 +235,8 @@ pub struct StudyArgs {
 
 #[derive(Args)]
 pub struct MergeArgs {
-    /// JSON files written by `kinrepro study --shard I/N --format json`.
+    /// JSON files written by `kinrepro study --shard I/N --format json` (or
+    /// `kinrepro sweep --shard I/N --format json`).
     #[arg(required = true)]
     pub parts: Vec<PathBuf>,
     #[arg(long, value_enum, default_value_t = Format::Json)]
