@@ -217,6 +217,8 @@ impl SweepReport {
                     })
                     .collect();
                 let _ = writeln!(s, "{:<55}{}", "", ci.join(""));
+            } else {
+                let _ = writeln!(s, "{:<55}(no interval: {})", "", p.sigma_interval_method);
             }
         }
     }

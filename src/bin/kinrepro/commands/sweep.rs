@@ -80,6 +80,12 @@ pub fn sweep(args: SweepArgs) -> Result<(), String> {
     let base = kinrepro::scene::Scene::parse(&text, &file).map_err(|e| e.to_string())?;
     let base = kinrepro::assembly::Coupling::new(&base).map_err(|e| format!("{file}: {e}"))?;
     check_increments(args.increments)?;
+    if args.sampler == Some(Sampler::Corners) && args.samples.is_some() {
+        return Err(
+            "--samples does not apply to --sampler corners: the corner design has all 2^d extremes"
+                .into(),
+        );
+    }
     let opts = StudyOptions {
         sampler: args.sampler,
         samples: args.samples,
