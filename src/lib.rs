@@ -10,6 +10,7 @@ pub mod analysis;
 pub mod assembly;
 pub mod contact;
 pub mod error;
+pub mod explore;
 pub mod fe;
 pub mod material;
 pub mod report;

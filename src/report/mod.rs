@@ -18,5 +18,8 @@ pub mod study_stats;
 pub mod study_stream;
 pub mod study_table;
 pub mod study_text;
+pub mod sweep;
+pub mod sweep_plot;
+pub mod sweep_text;
 pub mod trace;
 pub mod validate_hertz;

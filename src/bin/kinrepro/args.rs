@@ -35,8 +35,11 @@ pub enum Command {
     /// Reproducibility study: seat each scene once per friction sample and
     /// report the scatter of the pose (Table 2 of the paper).
     Study(StudyArgs),
-    /// Merge the JSON outputs of sharded studies into the result of one run.
+    /// Merge the JSON outputs of sharded studies (or sweeps) into the result of one run.
     Merge(MergeArgs),
+    /// Sweep scene fields over a grid or an LHS: reproducibility, stiffness,
+    /// safety and friction limit per design point, and the Pareto front.
+    Sweep(crate::commands::sweep::SweepArgs),
     /// Check the Hertz law of every distinct contact pair of the scenes with
     /// the mini FE solver, at the load the nominal seating reaches.
     ValidateHertz(ValidateHertzArgs),
@@ -232,7 +235,8 @@ pub struct StudyArgs {
 
 #[derive(Args)]
 pub struct MergeArgs {
-    /// JSON files written by `kinrepro study --shard I/N --format json`.
+    /// JSON files written by `kinrepro study --shard I/N --format json` (or
+    /// `kinrepro sweep --shard I/N --format json`).
     #[arg(required = true)]
     pub parts: Vec<PathBuf>,
     #[arg(long, value_enum, default_value_t = Format::Json)]

@@ -16,12 +16,15 @@ use std::fmt::Display;
 
 use kinrepro::assembly::AssemblyError;
 use kinrepro::contact::ContactError;
+use kinrepro::explore::ExploreError;
 use kinrepro::contact::history::{HistoryCsvError, HistoryError};
 use kinrepro::fe::FeError;
 use kinrepro::material::MaterialError;
 use kinrepro::report::analysis::ReportError;
 use kinrepro::report::atomic::WriteError;
 use kinrepro::report::merge::MergeError;
+use kinrepro::report::sweep::{SweepError, SweepMergeError};
+use kinrepro::report::sweep_plot::SweepPlotError;
 use kinrepro::scene::SceneError;
 use kinrepro::solve::SolveError;
 use kinrepro::study::StudyError;
@@ -61,6 +64,14 @@ pub enum CliError {
     Write(#[from] WriteError),
     #[error("merge: {0}")]
     Merge(#[from] MergeError),
+    #[error("{0}")]
+    Explore(#[from] ExploreError),
+    #[error("{0}")]
+    Sweep(#[from] SweepError),
+    #[error("merge: {0}")]
+    SweepMerge(#[from] SweepMergeError),
+    #[error("{0}")]
+    SweepPlot(#[from] SweepPlotError),
     #[error("{0}")]
     Json(#[from] serde_json::Error),
     #[error("{0}")]

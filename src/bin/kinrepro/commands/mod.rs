@@ -6,6 +6,7 @@ mod fe;
 mod scene;
 mod seat;
 mod study;
+pub mod sweep;
 
 use kinrepro::report::study::StudyReport;
 
@@ -22,6 +23,7 @@ pub fn dispatch(command: Command) -> Result<(), CliError> {
         Command::Load(a) => analysis::load(a),
         Command::Study(a) => study::study(a),
         Command::Merge(a) => study::merge(a),
+        Command::Sweep(a) => sweep::sweep(a),
         Command::ValidateHertz(a) => fe::validate_hertz(a),
     }
 }

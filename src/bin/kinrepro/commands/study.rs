@@ -221,7 +221,7 @@ fn options(args: &StudyArgs) -> Result<StudyOptions, CliError> {
 }
 
 /// The progress bar (on a terminal only).
-fn progress(total: usize) -> Result<indicatif::ProgressBar, CliError> {
+pub(super) fn progress(total: usize) -> Result<indicatif::ProgressBar, CliError> {
     if !std::io::IsTerminal::is_terminal(&std::io::stderr()) {
         return Ok(indicatif::ProgressBar::hidden());
     }
@@ -234,6 +234,9 @@ fn progress(total: usize) -> Result<indicatif::ProgressBar, CliError> {
 
 pub fn merge(args: MergeArgs) -> Result<(), CliError> {
     let MergeArgs { parts, format } = args;
+    if parts.first().is_some_and(|p| super::sweep::is_sweep(p)) {
+        return super::sweep::merge(&parts, format);
+    }
     let docs = parts
         .iter()
         .map(|p| {

@@ -1,0 +1,166 @@
+//! The design points of a sweep: the full grid of the `--set` values
+//! (the last `--set` varying fastest), or a space-filling Latin hypercube
+//! of N points over their ranges (`study::sampling`'s optimised LHS,
+//! Jin et al. 2005 ESE, seeded).
+
+use serde::{Deserialize, Serialize};
+
+use super::ExploreError;
+use super::field::SweptValue;
+use super::values::Set;
+use crate::study::{Sampler, sampling};
+
+/// How the design points are chosen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case", tag = "kind")]
+pub enum DesignKind {
+    /// Every combination of the `--set` values.
+    Grid,
+    /// An optimised Latin hypercube of `points` points over the ranges
+    /// (lists: each value equally often), seeded with `seed`.
+    Lhs { points: usize, seed: u64 },
+}
+
+impl DesignKind {
+    pub fn name(&self) -> &'static str {
+        match self {
+            DesignKind::Grid => "grid",
+            DesignKind::Lhs { .. } => "lhs",
+        }
+    }
+}
+
+/// One design point: its index and the value of each `--set`, in order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DesignPoint {
+    pub index: usize,
+    pub values: Vec<SweptValue>,
+}
+
+/// Most design points of a sweep.
+pub const MAX_DESIGN_POINTS: usize = 100_000;
+
+/// The design points of `sets` under `kind`.
+pub fn design_points(sets: &[Set], kind: DesignKind) -> Result<Vec<DesignPoint>, ExploreError> {
+    if sets.is_empty() {
+        return Err(ExploreError::Design(
+            "nothing to sweep: give at least one --set FIELD=VALUES".into(),
+        ));
+    }
+    for (i, a) in sets.iter().enumerate() {
+        if sets[..i].iter().any(|b| b.path == a.path) {
+            return Err(ExploreError::Design(format!(
+                "--set {} is given twice",
+                a.path
+            )));
+        }
+    }
+    match kind {
+        DesignKind::Grid => grid(sets),
+        DesignKind::Lhs { points, seed } => lhs(sets, points, seed),
+    }
+}
+
+fn grid(sets: &[Set]) -> Result<Vec<DesignPoint>, ExploreError> {
+    if let Some(s) = sets.iter().find(|s| s.levels.is_empty()) {
+        return Err(ExploreError::Design(format!(
+            "--set {}={}: a grid needs a count (a:b:count) or a list",
+            s.path, s.spec
+        )));
+    }
+    let total = sets
+        .iter()
+        .try_fold(1usize, |acc, s| acc.checked_mul(s.levels.len()))
+        .filter(|n| *n <= MAX_DESIGN_POINTS)
+        .ok_or_else(|| {
+            ExploreError::Design(format!("the grid has more than {MAX_DESIGN_POINTS} points"))
+        })?;
+    Ok((0..total)
+        .map(|index| {
+            let mut rest = index;
+            let mut values = vec![SweptValue::Number(0.0); sets.len()];
+            for (k, s) in sets.iter().enumerate().rev() {
+                let n = s.levels.len();
+                values[k] = s.levels.value(rest % n);
+                rest /= n;
+            }
+            DesignPoint { index, values }
+        })
+        .collect())
+}
+
+fn lhs(sets: &[Set], points: usize, seed: u64) -> Result<Vec<DesignPoint>, ExploreError> {
+    let rows = sampling::design(Sampler::Lhs, sets.len(), points, seed)
+        .map_err(|e| ExploreError::Design(format!("--design lhs --points {points}: {e}")))?;
+    Ok(rows
+        .into_iter()
+        .enumerate()
+        .map(|(index, u)| DesignPoint {
+            index,
+            values: sets
+                .iter()
+                .zip(&u)
+                .map(|(s, &u)| match s.interval {
+                    Some(iv) => SweptValue::Number(iv.at(u)),
+                    None => {
+                        let n = s.levels.len();
+                        s.levels.value(((u * n as f64) as usize).min(n - 1))
+                    }
+                })
+                .collect(),
+        })
+        .collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sets(args: &[&str]) -> Vec<Set> {
+        let scene: toml::Table =
+            toml::from_str("[coupling]\ndiameter = 0.08\n[preload]\nforce = 20.0\n").unwrap();
+        args.iter()
+            .map(|a| Set::parse(a, &scene).unwrap())
+            .collect()
+    }
+
+    #[test]
+    fn grid_is_the_full_product_last_fastest() {
+        let s = sets(&["preload.force=1,2,3", "coupling.diameter=0.05,0.1"]);
+        let p = design_points(&s, DesignKind::Grid).unwrap();
+        assert_eq!(p.len(), 6);
+        assert_eq!(
+            p[1].values,
+            vec![SweptValue::Number(1.0), SweptValue::Number(0.1)]
+        );
+        assert_eq!(
+            p[4].values,
+            vec![SweptValue::Number(3.0), SweptValue::Number(0.05)]
+        );
+    }
+
+    #[test]
+    fn lhs_stratifies_every_range() {
+        let s = sets(&["preload.force=log:1:100", "coupling.diameter=0.05:0.1"]);
+        let n = 10;
+        let p = design_points(&s, DesignKind::Lhs { points: n, seed: 3 }).unwrap();
+        // One point in each of the n equal strata of each (log) range.
+        for (k, to_u) in [
+            (
+                0,
+                Box::new(|x: f64| x.log10() / 2.0) as Box<dyn Fn(f64) -> f64>,
+            ),
+            (1, Box::new(|x: f64| (x - 0.05) / 0.05)),
+        ] {
+            let mut strata: Vec<usize> = p
+                .iter()
+                .map(|d| match d.values[k] {
+                    SweptValue::Number(x) => ((to_u(x) * n as f64) as usize).min(n - 1),
+                    _ => unreachable!(),
+                })
+                .collect();
+            strata.sort();
+            assert_eq!(strata, (0..n).collect::<Vec<_>>());
+        }
+    }
+}

@@ -1,0 +1,189 @@
+//! One design point of a sweep: its scene text (the base scene with the
+//! swept fields set), validated by the normal scene loader, and its
+//! evaluation: the nominal seating's principal stiffnesses, smallest
+//! pressure safety factor, friction limit and approach, then the
+//! reproducibility study (`study::runner::run_variant`, the study's own
+//! design and statistics).
+
+use toml::Table;
+
+use super::ExploreError;
+use super::field::{SweptValue, set};
+use super::values::Set;
+use crate::analysis::stiffness::CouplingStiffness;
+use crate::assembly::Coupling;
+use crate::assembly::constraint::friction_limit;
+use crate::scene::Scene;
+use crate::solve::dynamic::StartPose;
+use crate::solve::{PointPose, Seating, nominal_mu};
+use crate::study::runner::{StudyOptions, VariantRun, friction_moves_pose, run_variant};
+
+/// What became of a design point.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Outcome {
+    /// Evaluated: the study ran.
+    Ok,
+    /// The scene of this point does not validate or assemble.
+    Invalid(String),
+    /// Friction does not move the seated pose: every contact sticks from
+    /// the first load increment, the coupling does not centre.
+    CannotSeat(String),
+    /// A seating failed (the solver's reason).
+    Failed(String),
+}
+
+impl Outcome {
+    /// `ok`, or the reason it could not be evaluated (the JSON `status`).
+    pub fn status(&self) -> String {
+        match self {
+            Outcome::Ok => "ok".to_string(),
+            Outcome::Invalid(r) => format!("invalid: {r}"),
+            Outcome::CannotSeat(r) => format!("cannot seat: {r}"),
+            Outcome::Failed(r) => format!("failed: {r}"),
+        }
+    }
+}
+
+/// Results of the nominal seating (nominal friction and preload, touching
+/// start) of a design point, SI units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Nominal {
+    /// Ascending principal translational stiffnesses at the first
+    /// evaluation point [N/m] (`analysis::stiffness`, contacts at rest).
+    pub translational_n_per_m: [f64; 3],
+    /// Ascending principal rotational stiffnesses [N m/rad].
+    pub rotational_nm_per_rad: [f64; 3],
+    /// Smallest allowable / peak pressure over the contacts (None: no
+    /// contact's materials give an allowable pressure).
+    pub min_pressure_safety_factor: Option<f64>,
+    /// Friction limit for seating (`assembly::constraint::friction_limit`,
+    /// as `check` prints it; None: no limit below mu = 10).
+    pub friction_limit: Option<f64>,
+    /// friction_limit - (mu_static + spread): positive below the limit.
+    pub friction_limit_margin: Option<f64>,
+    /// Displacement of the first evaluation point along the preload
+    /// direction from the touching pose to the nominal seating [m].
+    pub approach_m: f64,
+    /// Largest contact approach (Hertz plus support) [m].
+    pub max_contact_approach_m: f64,
+}
+
+/// A design point's evaluation.
+#[derive(Debug, Clone)]
+pub struct Evaluation {
+    pub outcome: Outcome,
+    /// The assembled coupling (None if the scene is invalid).
+    pub coupling: Option<Coupling>,
+    pub nominal: Option<Nominal>,
+    /// The study's samples (Some when `outcome` is `Ok`).
+    pub run: Option<VariantRun>,
+}
+
+/// The scene text of a design point: `base` with each set field replaced.
+pub fn point_text(
+    base: &Table,
+    sets: &[Set],
+    values: &[SweptValue],
+) -> Result<String, ExploreError> {
+    let mut doc = base.clone();
+    for (s, v) in sets.iter().zip(values) {
+        set(&mut doc, &s.path, v)?;
+    }
+    toml::to_string(&doc).map_err(|e| ExploreError::Design(format!("cannot write the scene: {e}")))
+}
+
+/// Validate and evaluate one design point; `label` names it in messages.
+/// Never fails: a bad point is an [`Outcome`] other than `Ok`.
+pub fn evaluate(
+    text: &str,
+    label: &str,
+    opts: &StudyOptions,
+    tick: &(dyn Fn() + Sync),
+) -> Evaluation {
+    let mut e = Evaluation {
+        outcome: Outcome::Ok,
+        coupling: None,
+        nominal: None,
+        run: None,
+    };
+    let scene = match Scene::parse(text, label) {
+        Ok(s) => s,
+        Err(err) => {
+            // Line numbers would point into the generated text: name the field only.
+            e.outcome = Outcome::Invalid(if err.field.is_empty() {
+                err.reason
+            } else {
+                format!("{}: {}", err.field, err.reason)
+            });
+            return e;
+        }
+    };
+    let coupling = match Coupling::new(&scene) {
+        Ok(c) => c,
+        Err(err) => {
+            e.outcome = Outcome::Invalid(err.to_string());
+            return e;
+        }
+    };
+    e.outcome = match seat_and_study(&coupling, opts, tick, &mut e) {
+        Ok(o) => o,
+        Err(reason) => Outcome::Failed(reason),
+    };
+    e.coupling = Some(coupling);
+    e
+}
+
+fn seat_and_study(
+    c: &Coupling,
+    opts: &StudyOptions,
+    tick: &(dyn Fn() + Sync),
+    e: &mut Evaluation,
+) -> Result<Outcome, String> {
+    let mu = nominal_mu(c);
+    let seating = opts
+        .method
+        .seat(c, &mu, &StartPose::touching())
+        .map_err(|err| format!("the nominal seating (mu_s = {}): {err}", mu[0]))?;
+    e.nominal = Some(nominal(c, &seating, &mu)?);
+    if !friction_moves_pose(c, &opts.method).map_err(|err| err.to_string())? {
+        let f = &c.scene.friction;
+        return Ok(Outcome::CannotSeat(format!(
+            "with mu_s = {} +- {} every contact sticks from the first load increment: the seated pose does not depend on friction and the coupling does not centre",
+            f.mu_static, f.spread
+        )));
+    }
+    e.run = Some(run_variant(c, opts, tick).map_err(|err| err.to_string())?);
+    Ok(Outcome::Ok)
+}
+
+/// Stiffness, safety, friction limit and approach of the nominal seating.
+fn nominal(c: &Coupling, seating: &Seating, mu: &[f64]) -> Result<Nominal, String> {
+    let point = c.scene.evaluation_points[0].position;
+    let k = CouplingStiffness::new(c, seating, mu).map_err(|err| err.to_string())?;
+    let at = seating.pose.apply(&point);
+    let principal = k
+        .principal_at(&at)
+        .ok_or("the seated stiffness matrix is not positive definite")?;
+    let limit = friction_limit(c).mu_limit;
+    let f = &c.scene.friction;
+    let limit = limit.is_finite().then_some(limit);
+    let approach = PointPose::between(&c.touching_pose, &seating.pose, &point);
+    let d = nalgebra::Vector3::new(approach.x_m, approach.y_m, approach.z_m);
+    Ok(Nominal {
+        translational_n_per_m: principal.translational.map(|(k, _)| k),
+        rotational_nm_per_rad: principal.rotational.map(|(k, _)| k),
+        min_pressure_safety_factor: seating
+            .contacts
+            .iter()
+            .filter_map(|r| r.pressure_safety_factor)
+            .reduce(f64::min),
+        friction_limit: limit,
+        friction_limit_margin: limit.map(|l| l - (f.mu_static + f.spread)),
+        approach_m: d.dot(&c.scene.preload.direction),
+        max_contact_approach_m: seating
+            .contacts
+            .iter()
+            .map(|r| r.approach_m)
+            .fold(f64::NEG_INFINITY, f64::max),
+    })
+}

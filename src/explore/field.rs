@@ -1,0 +1,251 @@
+//! The fields a sweep may set, by their TOML path in the high-level scene
+//! (docs/scenes.md), and setting one in the parsed scene document.
+//!
+//! Numeric fields: `coupling.{diameter, ball_diameter,
+//! groove_element_diameter, opening_angle_deg, support_compliance}`,
+//! `preload.{force, ramp_time}`, `friction.{mu_static, spread,
+//! dynamic_ratio, decay_coefficient}` and `materials.NAME.{youngs_modulus,
+//! poisson_ratio, allowable_pressure}` (NAME: a `[[materials]]` entry of
+//! the scene). Material fields: `coupling.ball_material`,
+//! `coupling.groove_material`. Not sweepable: fields no sweep output
+//! depends on (`[variation]`: a sweep varies the friction only; the
+//! allowable shear stress: the sweep reports the pressure safety factor),
+//! and the study settings (`[study]`: given as options).
+
+use serde::{Deserialize, Serialize};
+use toml::{Table, Value};
+
+use super::ExploreError;
+
+/// What a field holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FieldKind {
+    /// A number (SI unit of the scene format).
+    Number,
+    /// A material name (built-in or a `[[materials]]` entry).
+    Material,
+}
+
+/// One value of a swept field.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum SweptValue {
+    Number(f64),
+    Name(String),
+}
+
+impl std::fmt::Display for SweptValue {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SweptValue::Number(x) => write!(f, "{x}"),
+            SweptValue::Name(s) => write!(f, "{s}"),
+        }
+    }
+}
+
+const NUMBERS: [(&str, &[&str]); 3] = [
+    (
+        "coupling",
+        &[
+            "diameter",
+            "ball_diameter",
+            "groove_element_diameter",
+            "opening_angle_deg",
+            "support_compliance",
+        ],
+    ),
+    ("preload", &["force", "ramp_time"]),
+    (
+        "friction",
+        &["mu_static", "spread", "dynamic_ratio", "decay_coefficient"],
+    ),
+];
+const MATERIAL_NUMBERS: [&str; 3] = ["youngs_modulus", "poisson_ratio", "allowable_pressure"];
+const MATERIALS: [&str; 2] = ["coupling.ball_material", "coupling.groove_material"];
+
+/// Every sweepable path, for messages (NAME stands for a material entry).
+pub fn sweepable() -> String {
+    let mut all: Vec<String> = NUMBERS
+        .iter()
+        .flat_map(|(t, ks)| ks.iter().map(move |k| format!("{t}.{k}")))
+        .collect();
+    all.extend(
+        MATERIAL_NUMBERS
+            .iter()
+            .map(|k| format!("materials.NAME.{k}")),
+    );
+    all.extend(MATERIALS.iter().map(|s| s.to_string()));
+    all.join(", ")
+}
+
+/// The kind of the field at `path`, checked against the sweepable fields
+/// and against `scene` (its table must exist, an existing value must have
+/// the field's type).
+pub fn kind_of(path: &str, scene: &Table) -> Result<FieldKind, ExploreError> {
+    let err = |reason: String| ExploreError::Field {
+        path: path.to_string(),
+        reason,
+    };
+    let unknown = || err(format!("not a sweepable field; sweepable: {}", sweepable()));
+    let seg: Vec<&str> = path.split('.').collect();
+    let kind = match seg.as_slice() {
+        ["materials", _, key] if MATERIAL_NUMBERS.contains(key) => FieldKind::Number,
+        [table, key] if NUMBERS.iter().any(|(t, ks)| t == table && ks.contains(key)) => {
+            FieldKind::Number
+        }
+        _ if MATERIALS.contains(&path) => FieldKind::Material,
+        _ => return Err(unknown()),
+    };
+    match lookup(scene, &seg).map_err(err)? {
+        Some(v) if !type_fits(v, kind) => Err(err(format!(
+            "the scene gives it as {} ({}), not as {}",
+            v.type_str(),
+            v,
+            kind_text(kind)
+        ))),
+        _ => Ok(kind),
+    }
+}
+
+fn kind_text(kind: FieldKind) -> &'static str {
+    match kind {
+        FieldKind::Number => "a number",
+        FieldKind::Material => "a material name",
+    }
+}
+
+fn type_fits(v: &Value, kind: FieldKind) -> bool {
+    match kind {
+        FieldKind::Number => v.is_float() || v.is_integer(),
+        FieldKind::Material => v.is_str(),
+    }
+}
+
+/// The present value at `seg` (None if the field is absent but its table
+/// exists).
+fn lookup<'a>(scene: &'a Table, seg: &[&str]) -> Result<Option<&'a Value>, String> {
+    match seg {
+        ["materials", name, key] => Ok(material(scene, name)?.get(*key)),
+        [table, key] => match scene.get(*table) {
+            Some(Value::Table(t)) => Ok(t.get(*key)),
+            Some(_) => Err(format!("[{table}] is not a table in the scene")),
+            None => Err(format!("the scene has no [{table}] table")),
+        },
+        _ => Err("not a sweepable field".to_string()),
+    }
+}
+
+/// The `[[materials]]` entry named `name`.
+fn material<'a>(scene: &'a Table, name: &str) -> Result<&'a Table, String> {
+    scene
+        .get("materials")
+        .and_then(Value::as_array)
+        .into_iter()
+        .flatten()
+        .filter_map(Value::as_table)
+        .find(|t| t.get("name").and_then(Value::as_str) == Some(name))
+        .ok_or_else(|| format!("the scene has no [[materials]] entry named \"{name}\""))
+}
+
+/// Set the field at `path` (checked by [`kind_of`]) to `value`.
+pub fn set(scene: &mut Table, path: &str, value: &SweptValue) -> Result<(), ExploreError> {
+    let v = match value {
+        SweptValue::Number(x) => Value::Float(*x),
+        SweptValue::Name(s) => Value::String(s.clone()),
+    };
+    let seg: Vec<&str> = path.split('.').collect();
+    let target = match seg.as_slice() {
+        ["materials", name, _] => scene
+            .get_mut("materials")
+            .and_then(Value::as_array_mut)
+            .into_iter()
+            .flatten()
+            .filter_map(Value::as_table_mut)
+            .find(|t| t.get("name").and_then(Value::as_str) == Some(*name)),
+        [table, _] => scene
+            .entry(table.to_string())
+            .or_insert_with(|| Value::Table(Table::new()))
+            .as_table_mut(),
+        _ => None,
+    };
+    match target {
+        Some(t) => {
+            t.insert(seg[seg.len() - 1].to_string(), v);
+            Ok(())
+        }
+        None => Err(ExploreError::Field {
+            path: path.to_string(),
+            reason: "not present in the scene".to_string(),
+        }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene() -> Table {
+        toml::from_str(
+            "[coupling]\nball_material = \"steel\"\ndiameter = 0.08\n[preload]\nforce = 20\n\
+             [[materials]]\nname = \"probe\"\nyoungs_modulus = 2e11\npoisson_ratio = 0.3\n",
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn known_fields_have_their_kind() {
+        let s = scene();
+        assert_eq!(kind_of("preload.force", &s).unwrap(), FieldKind::Number);
+        assert_eq!(kind_of("friction.mu_static", &s).ok(), None); // no [friction] here
+        assert_eq!(
+            kind_of("coupling.ball_material", &s).unwrap(),
+            FieldKind::Material
+        );
+        assert_eq!(
+            kind_of("materials.probe.youngs_modulus", &s).unwrap(),
+            FieldKind::Number
+        );
+    }
+
+    #[test]
+    fn unknown_paths_and_wrong_types_are_named() {
+        let s = scene();
+        for bad in [
+            "preload.forse",
+            "coupling",
+            "materials.other.youngs_modulus",
+            "study.samples",
+            "variation.surface_tilt",
+            "materials.probe.allowable_shear_stress",
+        ] {
+            let e = kind_of(bad, &s).unwrap_err().to_string();
+            assert!(e.contains(bad), "{e}");
+        }
+        let mut s = scene();
+        s["coupling"]["diameter"] = Value::String("big".into());
+        let e = kind_of("coupling.diameter", &s).unwrap_err().to_string();
+        assert!(e.contains("not as a number"), "{e}");
+    }
+
+    #[test]
+    fn set_replaces_or_inserts() {
+        let mut s = scene();
+        set(&mut s, "preload.force", &SweptValue::Number(5.0)).unwrap();
+        set(
+            &mut s,
+            "coupling.opening_angle_deg",
+            &SweptValue::Number(60.0),
+        )
+        .unwrap();
+        set(
+            &mut s,
+            "materials.probe.youngs_modulus",
+            &SweptValue::Number(1e11),
+        )
+        .unwrap();
+        assert_eq!(s["preload"]["force"].as_float(), Some(5.0));
+        assert_eq!(s["coupling"]["opening_angle_deg"].as_float(), Some(60.0));
+        assert_eq!(s["materials"][0]["youngs_modulus"].as_float(), Some(1e11));
+    }
+}

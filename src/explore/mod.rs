@@ -1,0 +1,110 @@
+//! Design exploration: `kinrepro sweep`. A sweep sets fields of a
+//! high-level scene by their TOML path ([`field`]) to the values of a grid
+//! or a Latin hypercube over the `--set` ranges ([`values`], [`design`]),
+//! validates every design point exactly like a scene file (the text goes
+//! through [`crate::scene::Scene::parse`]) and evaluates it
+//! ([`evaluate`]): the reproducibility study of `study::runner` with the
+//! same design (same seed: common random numbers across the designs), plus
+//! the nominal seating's principal stiffnesses, smallest safety factor
+//! against the allowable pressure, friction limit and approach. [`pareto`]
+//! marks the designs no other design beats.
+//!
+//! Data flow: scene -> assembly -> solve -> study -> explore; the sweep's
+//! document, tables, CSV and charts are in `report::sweep*`.
+
+pub mod design;
+pub mod evaluate;
+pub mod field;
+pub mod pareto;
+pub mod values;
+
+use thiserror::Error;
+
+pub use design::{DesignKind, DesignPoint, design_points};
+pub use evaluate::{Evaluation, Nominal, Outcome, evaluate, point_text};
+pub use field::{FieldKind, SweptValue};
+pub use values::{Levels, Set};
+
+/// A sweep that cannot be set up (the whole command fails with this line;
+/// a bad design point is reported in the output instead).
+#[derive(Debug, Error)]
+pub enum ExploreError {
+    #[error("--set {path}: {reason}")]
+    Field { path: String, reason: String },
+    #[error("--set {path}={spec}: {reason}")]
+    Values {
+        path: String,
+        spec: String,
+        reason: String,
+    },
+    #[error("--set {arg}: expected FIELD=VALUES, e.g. preload.force=5,10,20")]
+    SetSyntax { arg: String },
+    #[error("{file}: not a TOML document: {reason}")]
+    SceneToml { file: String, reason: String },
+    #[error("{file}: a sweep needs the high-level form of a scene ([coupling] table)")]
+    NotHighLevel { file: String },
+    #[error("sweep design: {0}")]
+    Design(String),
+}
+
+/// A sweep as asked for: the base scene and what to vary how.
+#[derive(Debug, Clone)]
+pub struct SweepSpec {
+    /// The scene file (for messages and the output).
+    pub file: String,
+    /// Its text as read (its hash enters the fingerprint).
+    pub text: String,
+    /// Its TOML document (each design point sets fields in a copy).
+    pub base: toml::Table,
+    pub sets: Vec<Set>,
+    pub design: DesignKind,
+}
+
+impl SweepSpec {
+    /// Parse the base scene text and the `--set` arguments. The base scene
+    /// must be a high-level scene; whether it validates is checked by the
+    /// caller (it loads it like any scene).
+    pub fn new(
+        file: &str,
+        text: &str,
+        set_args: &[String],
+        design: DesignKind,
+    ) -> Result<Self, ExploreError> {
+        let base: toml::Table = toml::from_str(text).map_err(|e| ExploreError::SceneToml {
+            file: file.to_string(),
+            reason: e.message().trim().to_string(),
+        })?;
+        if !base.contains_key("coupling") {
+            return Err(ExploreError::NotHighLevel {
+                file: file.to_string(),
+            });
+        }
+        let sets = set_args
+            .iter()
+            .map(|a| Set::parse(a, &base))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(SweepSpec {
+            file: file.to_string(),
+            text: text.to_string(),
+            base,
+            sets,
+            design,
+        })
+    }
+
+    /// The design points.
+    pub fn points(&self) -> Result<Vec<DesignPoint>, ExploreError> {
+        design_points(&self.sets, self.design)
+    }
+
+    /// The label of design point `p` in messages: `FILE [a = 1, b = 2]`.
+    pub fn label(&self, p: &DesignPoint) -> String {
+        let v: Vec<String> = self
+            .sets
+            .iter()
+            .zip(&p.values)
+            .map(|(s, v)| format!("{} = {v}", s.path))
+            .collect();
+        format!("{} [{}]", self.file, v.join(", "))
+    }
+}

@@ -1,0 +1,244 @@
+//! The VALUES of `--set FIELD=VALUES`: a list (`5,10,20`, or material
+//! names `steel,silicon-carbide`), a linear range with a count (`5:40:8`:
+//! 8 values from 5 to 40, ends included) or a logarithmic one
+//! (`log:1:100:5`: 1, 3.16, 10, 31.6, 100). An LHS design draws from the
+//! interval of a range (its count is not used; `a:b` without a count is
+//! allowed there) and picks equally often among the values of a list.
+
+use serde::{Deserialize, Serialize};
+use toml::Table;
+
+use super::ExploreError;
+use super::field::{FieldKind, SweptValue, kind_of};
+
+/// The discrete values of a `--set` (a grid uses them all).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub enum Levels {
+    Numbers(Vec<f64>),
+    Names(Vec<String>),
+}
+
+impl Levels {
+    pub fn len(&self) -> usize {
+        match self {
+            Levels::Numbers(v) => v.len(),
+            Levels::Names(v) => v.len(),
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Value `i`.
+    pub fn value(&self, i: usize) -> SweptValue {
+        match self {
+            Levels::Numbers(v) => SweptValue::Number(v[i]),
+            Levels::Names(v) => SweptValue::Name(v[i].clone()),
+        }
+    }
+}
+
+/// A continuous interval for an LHS design: [lo, hi], uniform in the value
+/// or (`log`) in its logarithm.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Interval {
+    pub lo: f64,
+    pub hi: f64,
+    pub log: bool,
+}
+
+impl Interval {
+    /// The value at design coordinate u in [0, 1].
+    pub fn at(&self, u: f64) -> f64 {
+        if self.log {
+            (self.lo.ln() + u * (self.hi / self.lo).ln()).exp()
+        } else {
+            self.lo + u * (self.hi - self.lo)
+        }
+    }
+}
+
+/// One `--set`: the field, the VALUES as written, and what they mean.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Set {
+    pub path: String,
+    pub spec: String,
+    pub kind: FieldKind,
+    /// The grid values (empty for `a:b` without a count, LHS only).
+    pub levels: Levels,
+    /// The interval of a range (None for a list).
+    pub interval: Option<Interval>,
+}
+
+/// Most values one range may expand to.
+pub const MAX_LEVELS: usize = 10_000;
+
+impl Set {
+    /// Parse `FIELD=VALUES` against the base scene document.
+    pub fn parse(arg: &str, scene: &Table) -> Result<Set, ExploreError> {
+        let (path, spec) = arg
+            .split_once('=')
+            .filter(|(p, s)| !p.trim().is_empty() && !s.trim().is_empty())
+            .ok_or_else(|| ExploreError::SetSyntax {
+                arg: arg.to_string(),
+            })?;
+        let (path, spec) = (path.trim().to_string(), spec.trim().to_string());
+        let kind = kind_of(&path, scene)?;
+        let err = |reason: String| ExploreError::Values {
+            path: path.clone(),
+            spec: spec.clone(),
+            reason,
+        };
+        let (levels, interval) = if spec.contains(':') {
+            if kind == FieldKind::Material {
+                return Err(err(
+                    "a material field takes a list of names, not a range".into()
+                ));
+            }
+            range(&spec).map_err(err)?
+        } else {
+            (list(&spec, kind).map_err(err)?, None)
+        };
+        Ok(Set {
+            path,
+            spec,
+            kind,
+            levels,
+            interval,
+        })
+    }
+}
+
+fn number(s: &str) -> Result<f64, String> {
+    let x: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("\"{}\" is not a number", s.trim()))?;
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(format!("\"{}\" is not finite", s.trim()))
+    }
+}
+
+/// `a:b:n`, `log:a:b:n`, `a:b`, `log:a:b`.
+fn range(spec: &str) -> Result<(Levels, Option<Interval>), String> {
+    let (log, rest) = match spec.strip_prefix("log:") {
+        Some(r) => (true, r),
+        None => (false, spec),
+    };
+    let parts: Vec<&str> = rest.split(':').collect();
+    if !(2..=3).contains(&parts.len()) {
+        return Err("a range is a:b:count or log:a:b:count".into());
+    }
+    let (lo, hi) = (number(parts[0])?, number(parts[1])?);
+    if lo >= hi {
+        return Err(format!("the range needs a < b, got {lo} and {hi}"));
+    }
+    if log && lo <= 0.0 {
+        return Err("a logarithmic range needs positive ends".into());
+    }
+    let interval = Interval { lo, hi, log };
+    let Some(count) = parts.get(2) else {
+        return Ok((Levels::Numbers(Vec::new()), Some(interval)));
+    };
+    let n: usize = count
+        .trim()
+        .parse()
+        .map_err(|_| format!("the count \"{}\" is not a whole number", count.trim()))?;
+    if !(2..=MAX_LEVELS).contains(&n) {
+        return Err(format!("the count must lie in 2..={MAX_LEVELS}, got {n}"));
+    }
+    let values = (0..n)
+        .map(|i| match i {
+            0 => lo,
+            _ if i == n - 1 => hi,
+            _ => interval.at(i as f64 / (n - 1) as f64),
+        })
+        .collect();
+    Ok((Levels::Numbers(values), Some(interval)))
+}
+
+/// A comma-separated list of numbers or material names.
+fn list(spec: &str, kind: FieldKind) -> Result<Levels, String> {
+    let items: Vec<&str> = spec.split(',').map(str::trim).collect();
+    if items.iter().any(|s| s.is_empty()) {
+        return Err("an empty item in the list".into());
+    }
+    let mut seen: Vec<&str> = Vec::new();
+    for s in &items {
+        if seen.contains(s) {
+            return Err(format!("\"{s}\" is listed twice"));
+        }
+        seen.push(s);
+    }
+    match kind {
+        FieldKind::Number => Ok(Levels::Numbers(
+            items.iter().map(|s| number(s)).collect::<Result<_, _>>()?,
+        )),
+        FieldKind::Material => {
+            if let Some(s) = items.iter().find(|s| s.parse::<f64>().is_ok()) {
+                return Err(format!(
+                    "the field holds a material name, \"{s}\" is a number"
+                ));
+            }
+            Ok(Levels::Names(items.iter().map(|s| s.to_string()).collect()))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene() -> Table {
+        toml::from_str("[coupling]\nball_material = \"steel\"\n[preload]\nforce = 20.0\n").unwrap()
+    }
+
+    #[test]
+    fn ranges_lists_and_names() {
+        let s = scene();
+        let lin = Set::parse("preload.force=5:40:8", &s).unwrap();
+        assert_eq!(
+            lin.levels,
+            Levels::Numbers(vec![5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0])
+        );
+        let log = Set::parse("preload.force=log:1:100:5", &s).unwrap();
+        let Levels::Numbers(v) = log.levels else {
+            panic!()
+        };
+        for (got, want) in v
+            .iter()
+            .zip([1.0, 10f64.sqrt(), 10.0, 1000f64.sqrt(), 100.0])
+        {
+            assert!((got / want - 1.0).abs() < 1e-14, "{got} vs {want}");
+        }
+        let list = Set::parse("preload.force=5,10,20", &s).unwrap();
+        assert_eq!(list.levels, Levels::Numbers(vec![5.0, 10.0, 20.0]));
+        assert_eq!(list.interval, None);
+        let m = Set::parse("coupling.ball_material=steel,silicon-carbide", &s).unwrap();
+        assert_eq!(m.levels.len(), 2);
+    }
+
+    #[test]
+    fn bad_values_are_named() {
+        let s = scene();
+        for bad in [
+            "preload.force=5,steel",
+            "preload.force=40:5:3",
+            "preload.force=log:0:10:3",
+            "preload.force=1:2:1",
+            "preload.force=5,5",
+            "coupling.ball_material=1,2",
+            "coupling.ball_material=1:2:3",
+        ] {
+            let e = Set::parse(bad, &s).unwrap_err().to_string();
+            assert!(e.contains(bad), "{e}");
+        }
+        assert!(matches!(
+            Set::parse("preload.force", &s),
+            Err(ExploreError::SetSyntax { .. })
+        ));
+    }
+}

@@ -1,0 +1,400 @@
+//! The sweep document (`kinrepro sweep --format json`, docs/output.md,
+//! "Sweeps"): one entry per design point with its swept values, its
+//! status, the study statistics of every evaluation point exactly as a
+//! study's `points`, the nominal seating's stiffness, safety factor,
+//! friction limit and approach, and the Pareto mark. Running a sweep
+//! ([`run`]), shard merging ([`merge_sweeps`]). Table and CSV:
+//! `sweep_text`; charts: `sweep_plot`.
+
+use std::collections::BTreeMap;
+
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use crate::assembly::Coupling;
+use crate::explore::pareto::{Objectives, front};
+use crate::explore::{DesignKind, Evaluation, FieldKind, Outcome, SweepSpec, SweptValue};
+use crate::explore::{ExploreError, evaluate, point_text};
+use crate::report::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, fnv1a64, produced_by};
+use crate::report::study::{PointStats, VariantReport};
+use crate::study::runner::{StudyOptions, design_for};
+use crate::study::{Sampler, Shard};
+
+/// One `--set` as given.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SetRecord {
+    /// TOML path of the field.
+    pub field: String,
+    /// The VALUES as written.
+    pub values: String,
+    pub kind: FieldKind,
+}
+
+/// One design point's results.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct DesignReport {
+    /// Row of the design, 0-based.
+    pub index: usize,
+    /// The swept fields by TOML path.
+    pub values: BTreeMap<String, SweptValue>,
+    /// `ok`, or why the point could not be evaluated (`invalid: ...`,
+    /// `cannot seat: ...`, `failed: ...`).
+    pub status: String,
+    /// On the Pareto front (null in one shard of several: the front needs
+    /// every design, `merge` marks it).
+    pub pareto: Option<bool>,
+    /// Study statistics per evaluation point (nm, nrad), as a study's
+    /// `points`; empty unless `status` is `ok`.
+    pub points: Vec<PointStats>,
+    /// Ascending principal translational stiffnesses at the first
+    /// evaluation point, nominal seating [N/m].
+    pub principal_stiffness_n_per_m: Option<[f64; 3]>,
+    /// Ascending principal rotational stiffnesses [N m/rad].
+    pub principal_rotational_stiffness_nm_per_rad: Option<[f64; 3]>,
+    /// Smallest allowable / peak pressure over the contacts, nominal seating.
+    pub min_pressure_safety_factor: Option<f64>,
+    /// Friction limit for seating as `check` prints it (null: none below 10).
+    pub friction_limit: Option<f64>,
+    /// friction_limit - (mu_static + spread).
+    pub friction_limit_margin: Option<f64>,
+    /// Displacement of the first evaluation point along the preload
+    /// direction, touching pose to nominal seating [m].
+    pub nominal_approach_m: Option<f64>,
+    /// Largest contact approach of the nominal seating [m].
+    pub max_contact_approach_m: Option<f64>,
+}
+
+/// What a sweep's numbers depend on (`merge` compares it).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SweepFingerprint {
+    /// FNV-1a 64 of the base scene text as read.
+    pub scene_content: String,
+    pub sets: Vec<SetRecord>,
+    pub design: DesignKind,
+    pub design_points: usize,
+    pub pareto_point: String,
+    /// The study settings of every design point (the base scene's).
+    pub study: Fingerprint,
+}
+
+/// The whole sweep document.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SweepReport {
+    pub schema_version: u32,
+    pub kinrepro_version: String,
+    /// Always `sweep` (tells a sweep from a study document).
+    pub document: String,
+    pub solver: String,
+    pub sampler: Sampler,
+    pub seed: u64,
+    /// Samples per design point.
+    pub samples: usize,
+    pub vary: Vec<String>,
+    pub scene: String,
+    pub name: String,
+    pub design: DesignKind,
+    /// Design points of the whole sweep (all shards).
+    pub design_points: usize,
+    pub sets: Vec<SetRecord>,
+    /// The evaluation point whose sigma is the Pareto objective.
+    pub pareto_point: String,
+    pub fingerprint: SweepFingerprint,
+    pub shard: Shard,
+    /// This shard's design points (all of them when `shard` is 1/1).
+    pub designs: Vec<DesignReport>,
+}
+
+/// A sweep that cannot run.
+#[derive(Debug, Error)]
+pub enum SweepError {
+    #[error(transparent)]
+    Explore(#[from] ExploreError),
+    #[error("{0}")]
+    Setup(String),
+}
+
+/// Run this shard's design points of `spec` (rayon across designs and
+/// samples). The base scene must load (`base`); `pareto_point` names the
+/// evaluation point of the Pareto objective (None: the first).
+pub fn run(
+    spec: &SweepSpec,
+    base: &Coupling,
+    opts: &StudyOptions,
+    pareto_point: Option<&str>,
+    tick: &(dyn Fn() + Sync),
+) -> Result<SweepReport, SweepError> {
+    let setup = |e: String| SweepError::Setup(format!("{}: {e}", spec.file));
+    let points = spec.points()?;
+    let study_design = design_for(base, opts).map_err(|e| setup(e.to_string()))?;
+    let pareto_point = pareto_point_of(base, pareto_point).map_err(setup)?;
+    let whole = StudyOptions {
+        shard: Shard::whole(),
+        ..*opts
+    };
+    let range = opts
+        .shard
+        .range(points.len())
+        .map_err(|e| setup(format!("--shard: {e}")))?;
+    let texts = points[range]
+        .iter()
+        .map(|p| Ok((p, point_text(&spec.base, &spec.sets, &p.values)?)))
+        .collect::<Result<Vec<_>, ExploreError>>()?;
+    let designs: Vec<DesignReport> = texts
+        .into_par_iter()
+        .map(|(p, text)| {
+            let e = evaluate(&text, &spec.label(p), &whole, tick);
+            let values = spec
+                .sets
+                .iter()
+                .map(|s| s.path.clone())
+                .zip(p.values.iter().cloned())
+                .collect();
+            design_report(p.index, values, e, &whole)
+        })
+        .collect();
+    let sets: Vec<SetRecord> = spec
+        .sets
+        .iter()
+        .map(|s| SetRecord {
+            field: s.path.clone(),
+            values: s.spec.clone(),
+            kind: s.kind,
+        })
+        .collect();
+    let mut report = SweepReport {
+        schema_version: SCHEMA_VERSION,
+        kinrepro_version: VERSION.to_string(),
+        document: "sweep".to_string(),
+        solver: opts.method.name().to_string(),
+        sampler: study_design.sampler,
+        seed: study_design.seed,
+        samples: study_design.n,
+        vary: vec!["friction".to_string()],
+        scene: spec.file.clone(),
+        name: base.scene.name.clone(),
+        design: spec.design,
+        design_points: points.len(),
+        sets: sets.clone(),
+        pareto_point: pareto_point.clone(),
+        fingerprint: SweepFingerprint {
+            scene_content: format!("{:016x}", fnv1a64(spec.text.as_bytes())),
+            sets,
+            design: spec.design,
+            design_points: points.len(),
+            pareto_point,
+            study: Fingerprint::new(base, &whole, &study_design),
+        },
+        shard: opts.shard,
+        designs,
+    };
+    report.mark_pareto();
+    Ok(report)
+}
+
+/// The evaluation point of the Pareto objective: `asked`, or the first.
+fn pareto_point_of(base: &Coupling, asked: Option<&str>) -> Result<String, String> {
+    let names: Vec<&str> = base
+        .scene
+        .evaluation_points
+        .iter()
+        .map(|p| p.name.as_str())
+        .collect();
+    match asked {
+        None => Ok(names[0].to_string()),
+        Some(p) if names.contains(&p) => Ok(p.to_string()),
+        Some(p) => Err(format!(
+            "--pareto-point {p}: no such evaluation point (the scene has {})",
+            names.join(", ")
+        )),
+    }
+}
+
+/// The report of one evaluated design point: the study statistics by the
+/// study's own machinery ([`VariantReport::new`]).
+fn design_report(
+    index: usize,
+    values: BTreeMap<String, SweptValue>,
+    e: Evaluation,
+    opts: &StudyOptions,
+) -> DesignReport {
+    let n = e.nominal;
+    let mut d = DesignReport {
+        index,
+        values,
+        status: e.outcome.status(),
+        pareto: None,
+        points: Vec::new(),
+        principal_stiffness_n_per_m: n.map(|n| n.translational_n_per_m),
+        principal_rotational_stiffness_nm_per_rad: n.map(|n| n.rotational_nm_per_rad),
+        min_pressure_safety_factor: n.and_then(|n| n.min_pressure_safety_factor),
+        friction_limit: n.and_then(|n| n.friction_limit),
+        friction_limit_margin: n.and_then(|n| n.friction_limit_margin),
+        nominal_approach_m: n.map(|n| n.approach_m),
+        max_contact_approach_m: n.map(|n| n.max_contact_approach_m),
+    };
+    if let (Outcome::Ok, Some(c), Some(run)) = (&e.outcome, &e.coupling, e.run) {
+        match VariantReport::new(c, run, opts) {
+            Ok(v) => match v.cannot_seat {
+                Some(r) => d.status = Outcome::CannotSeat(r).status(),
+                None => d.points = v.points,
+            },
+            Err(err) => d.status = Outcome::Failed(err.to_string()).status(),
+        }
+    }
+    d
+}
+
+impl SweepReport {
+    /// Set each design's Pareto mark (only when this document holds every
+    /// design; a shard's marks stay null until `merge`).
+    pub fn mark_pareto(&mut self) {
+        if self.shard.count != 1 {
+            return;
+        }
+        let obj: Vec<Option<Objectives>> =
+            self.designs.iter().map(|d| self.objectives(d)).collect();
+        for (d, on) in self.designs.iter_mut().zip(front(&obj)) {
+            d.pareto = Some(on);
+        }
+    }
+
+    /// The Pareto objectives of an evaluated design (None otherwise).
+    pub fn objectives(&self, d: &DesignReport) -> Option<Objectives> {
+        let p = d.points.iter().find(|p| p.name == self.pareto_point)?;
+        let s = p.sigma.values();
+        Some(Objectives {
+            sigma_max: s[0].max(s[1]).max(s[2]) * 1e-9,
+            stiffness_min: d.principal_stiffness_n_per_m?[0],
+            safety_factor: d.min_pressure_safety_factor,
+        })
+    }
+
+    /// The line naming what produced this document.
+    pub fn produced_by(&self) -> String {
+        format!(
+            "{}, sweep of {} ({} design, {} points), shard {}",
+            produced_by(
+                &self.solver,
+                &self.sampler.to_string(),
+                &self.seed.to_string(),
+                &self.samples.to_string(),
+                &self.vary.join("+")
+            ),
+            self.scene,
+            self.design.name(),
+            self.design_points,
+            self.shard
+        )
+    }
+}
+
+/// Sweep parts that do not merge.
+#[derive(Debug, Error)]
+pub enum SweepMergeError {
+    #[error("no parts")]
+    Empty,
+    #[error("{part}: not a part of the sweep of {first}: {field} differs")]
+    Different {
+        part: String,
+        first: String,
+        field: String,
+    },
+    #[error("{part}: shard {shard} given twice")]
+    Duplicate { part: String, shard: Shard },
+    #[error("shard {index}/{count} (design points {start}..{end}) missing")]
+    Missing {
+        index: usize,
+        count: usize,
+        start: usize,
+        end: usize,
+    },
+    #[error("{part}: shard {shard} should hold design points {expected:?}")]
+    Rows {
+        part: String,
+        shard: Shard,
+        expected: std::ops::Range<usize>,
+    },
+}
+
+/// Merge the parts of a sharded sweep into exactly the single run's document.
+pub fn merge_sweeps(parts: Vec<(String, SweepReport)>) -> Result<SweepReport, SweepMergeError> {
+    let (first_name, first) = parts.first().ok_or(SweepMergeError::Empty)?;
+    let fp = serde_json::to_value(&first.fingerprint).unwrap_or_default();
+    let count = first.shard.count;
+    let mut seen: Vec<Option<&str>> = vec![None; count];
+    for (name, p) in &parts {
+        let other = serde_json::to_value(&p.fingerprint).unwrap_or_default();
+        let differs = |field: String| SweepMergeError::Different {
+            part: name.clone(),
+            first: first_name.clone(),
+            field,
+        };
+        if let Some(field) = first_difference(&fp, &other, "fingerprint") {
+            return Err(differs(field));
+        }
+        if p.shard.count != count {
+            return Err(differs(format!(
+                "shard count ({} vs {count})",
+                p.shard.count
+            )));
+        }
+        if p.shard.index == 0 || p.shard.index > count {
+            return Err(differs(format!("shard {} (not in 1..={count})", p.shard)));
+        }
+        let slot = &mut seen[p.shard.index - 1];
+        if slot.is_some() {
+            return Err(SweepMergeError::Duplicate {
+                part: name.clone(),
+                shard: p.shard,
+            });
+        }
+        *slot = Some(name);
+        let expected = p.shard.range(p.design_points).unwrap_or(0..0);
+        if !p.designs.iter().map(|d| d.index).eq(expected.clone()) {
+            return Err(SweepMergeError::Rows {
+                part: name.clone(),
+                shard: p.shard,
+                expected,
+            });
+        }
+    }
+    if let Some(i) = seen.iter().position(Option::is_none) {
+        let r = Shard::new(i + 1, count)
+            .and_then(|s| s.range(first.design_points))
+            .unwrap_or(0..0);
+        return Err(SweepMergeError::Missing {
+            index: i + 1,
+            count,
+            start: r.start,
+            end: r.end,
+        });
+    }
+    let mut parts: Vec<SweepReport> = parts.into_iter().map(|(_, p)| p).collect();
+    parts.sort_by_key(|p| p.shard.index);
+    let mut merged = parts[0].clone();
+    merged.designs = parts.into_iter().flat_map(|p| p.designs).collect();
+    merged.shard = Shard::whole();
+    merged.mark_pareto();
+    Ok(merged)
+}
+
+/// The dotted path of the first field where two JSON values differ.
+fn first_difference(a: &serde_json::Value, b: &serde_json::Value, at: &str) -> Option<String> {
+    use serde_json::Value::Object;
+    match (a, b) {
+        (Object(x), Object(y)) => x
+            .iter()
+            .find_map(|(k, v)| match y.get(k) {
+                Some(w) => first_difference(v, w, &format!("{at}.{k}")),
+                None => Some(format!("{at}.{k}")),
+            })
+            .or_else(|| {
+                y.keys()
+                    .find(|k| !x.contains_key(*k))
+                    .map(|k| format!("{at}.{k}"))
+            }),
+        _ if a == b => None,
+        _ => Some(format!("{at} ({a} vs {b})")),
+    }
+}

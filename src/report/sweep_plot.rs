@@ -1,0 +1,483 @@
+//! The sweep's design charts as SVG (plotters): sigma against each swept
+//! field with its 90 % interval as a band (one panel per DOF, one line per
+//! combination of the other fields), a heat map of the largest
+//! translational sigma over two fields (a grid of exactly two `--set`),
+//! and the Pareto front (largest translational sigma against the lowest
+//! principal stiffness, the front marked). Every chart carries the
+//! provenance line. [`charts`] returns the SVG texts (for an HTML report),
+//! [`write_charts`] writes them to files.
+
+use std::path::Path;
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use thiserror::Error;
+
+use crate::explore::SweptValue;
+use crate::report::atomic::{WriteError, check_overwrite, write_file};
+use crate::report::study::PointStats;
+use crate::report::sweep::{DesignReport, SweepReport};
+use crate::report::sweep_text::short as tick;
+use crate::study::plot::{Dof, color};
+
+/// A chart could not be drawn or written.
+#[derive(Debug, Error)]
+pub enum SweepPlotError {
+    #[error("sweep chart: {0}")]
+    Draw(String),
+    #[error(transparent)]
+    Write(#[from] WriteError),
+}
+
+fn draw_err<E: std::fmt::Display>(e: E) -> SweepPlotError {
+    SweepPlotError::Draw(e.to_string())
+}
+
+type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+
+/// The design charts as (file stem / title, SVG text), in a fixed order:
+/// `sweep_sigma_<field>` per swept field, `sweep_heatmap` (grids of two
+/// fields), `sweep_pareto` (when two or more designs were evaluated).
+pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> {
+    let foot = r.produced_by();
+    let mut out = Vec::new();
+    for k in 0..r.sets.len() {
+        let title = format!("sweep_sigma_{}", r.sets[k].field.replace('.', "_"));
+        out.push((title, svg(&foot, (1200, 760), |a| sigma_chart(r, k, a))?));
+    }
+    if r.sets.len() == 2 && r.design.name() == "grid" {
+        out.push((
+            "sweep_heatmap".to_string(),
+            svg(&foot, (900, 640), |a| heatmap(r, a))?,
+        ));
+    }
+    if r.designs
+        .iter()
+        .filter(|d| r.objectives(d).is_some())
+        .count()
+        >= 2
+    {
+        out.push((
+            "sweep_pareto".to_string(),
+            svg(&foot, (820, 620), |a| pareto_chart(r, a))?,
+        ));
+    }
+    Ok(out)
+}
+
+/// Write [`charts`] as `<title>.svg` into `dir` (none if any exists, unless
+/// `force`); returns the paths written.
+pub fn write_charts(
+    r: &SweepReport,
+    dir: &Path,
+    force: bool,
+) -> Result<Vec<String>, SweepPlotError> {
+    std::fs::create_dir_all(dir).map_err(|e| {
+        SweepPlotError::Write(WriteError::Io {
+            path: dir.display().to_string(),
+            reason: e.to_string(),
+        })
+    })?;
+    let all = charts(r)?;
+    for (t, _) in &all {
+        check_overwrite(&dir.join(format!("{t}.svg")), force)?;
+    }
+    let mut written = Vec::new();
+    for (t, text) in all {
+        let p = dir.join(format!("{t}.svg"));
+        write_file(&p, &text, force)?;
+        written.push(p.display().to_string());
+    }
+    Ok(written)
+}
+
+/// Draw into an SVG string; the provenance line goes at the bottom.
+fn svg(
+    footer: &str,
+    size: (u32, u32),
+    draw: impl FnOnce(&Area) -> Result<(), SweepPlotError>,
+) -> Result<String, SweepPlotError> {
+    let mut s = String::new();
+    {
+        let root = SVGBackend::with_string(&mut s, size).into_drawing_area();
+        root.fill(&WHITE).map_err(draw_err)?;
+        let (body, foot) = root.split_vertically(size.1 - 22);
+        draw(&body)?;
+        foot.draw(&Text::new(
+            footer.to_string(),
+            (8, 4),
+            ("sans-serif", 12).into_font().color(&BLACK.mix(0.7)),
+        ))
+        .map_err(draw_err)?;
+        root.present().map_err(draw_err)?;
+    }
+    Ok(s)
+}
+
+/// The x coordinate of a swept value: the number, or the index of a name.
+fn x_of(r: &SweepReport, k: usize, v: &SweptValue) -> f64 {
+    match v {
+        SweptValue::Number(x) => *x,
+        SweptValue::Name(n) => names(r, k).iter().position(|m| m == n).unwrap_or(0) as f64,
+    }
+}
+
+/// The distinct names of a material field, in design order.
+fn names(r: &SweepReport, k: usize) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for d in &r.designs {
+        if let Some(SweptValue::Name(n)) = d.values.get(&r.sets[k].field)
+            && !out.contains(n)
+        {
+            out.push(n.clone());
+        }
+    }
+    out
+}
+
+fn point<'a>(r: &SweepReport, d: &'a DesignReport) -> Option<&'a PointStats> {
+    d.points.iter().find(|p| p.name == r.pareto_point)
+}
+
+/// Evaluated designs grouped by the values of every field but `k`: (label,
+/// [(x, design)] sorted by x).
+type Groups<'a> = Vec<(String, Vec<(f64, &'a DesignReport)>)>;
+
+fn groups(r: &SweepReport, k: usize) -> Groups<'_> {
+    let mut groups: Groups = Vec::new();
+    for d in r.designs.iter().filter(|d| point(r, d).is_some()) {
+        let label: Vec<String> = r
+            .sets
+            .iter()
+            .enumerate()
+            .filter(|(j, _)| *j != k)
+            .map(|(_, s)| {
+                let v = d.values.get(&s.field).map_or(String::new(), value_tick);
+                format!("{} = {v}", s.field)
+            })
+            .collect();
+        let label = label.join(", ");
+        let x = d
+            .values
+            .get(&r.sets[k].field)
+            .map_or(0.0, |v| x_of(r, k, v));
+        match groups.iter_mut().find(|(l, _)| *l == label) {
+            Some((_, g)) => g.push((x, d)),
+            None => groups.push((label, vec![(x, d)])),
+        }
+    }
+    for (_, g) in &mut groups {
+        g.sort_by(|a, b| a.0.total_cmp(&b.0));
+    }
+    groups
+}
+
+fn sigma_chart(r: &SweepReport, k: usize, area: &Area) -> Result<(), SweepPlotError> {
+    let groups = groups(r, k);
+    let title = format!(
+        "σ at {} against {} ({})",
+        r.pareto_point, r.sets[k].field, r.name
+    );
+    let panels = area.titled(&title, ("sans-serif", 20)).map_err(draw_err)?;
+    let xs: Vec<f64> = groups
+        .iter()
+        .flat_map(|(_, g)| g.iter().map(|p| p.0))
+        .collect();
+    let xr = span(&xs);
+    for (j, cell) in panels.split_evenly((2, 3)).iter().enumerate() {
+        // Per group: (x, sigma, interval low, high) of DOF j [nm or nrad].
+        let series: Vec<(&str, Vec<[f64; 4]>)> = groups
+            .iter()
+            .map(|(label, g)| {
+                let rows = g
+                    .iter()
+                    .filter_map(|(x, d)| {
+                        let p = point(r, d)?;
+                        let ci = |c: &Option<crate::report::study::Dofs>| {
+                            c.map_or(f64::NAN, |c| c.values()[j])
+                        };
+                        Some([
+                            *x,
+                            p.sigma.values()[j],
+                            ci(&p.sigma_ci90_low),
+                            ci(&p.sigma_ci90_high),
+                        ])
+                    })
+                    .collect();
+                (label.as_str(), rows)
+            })
+            .collect();
+        dof_panel(r, k, Dof::ALL[j], &series, cell, xr, j == 0)?;
+    }
+    Ok(())
+}
+
+/// One DOF's panel: per group the sigma line and dots, the interval as a
+/// band and as bars; the legend of the groups if `legend`.
+fn dof_panel(
+    r: &SweepReport,
+    k: usize,
+    dof: Dof,
+    series: &[(&str, Vec<[f64; 4]>)],
+    cell: &Area,
+    (x0, x1): (f64, f64),
+    legend: bool,
+) -> Result<(), SweepPlotError> {
+    let ymax = series
+        .iter()
+        .flat_map(|(_, g)| g.iter().flat_map(|v| [v[1], v[3]]))
+        .filter(|y| y.is_finite())
+        .fold(0.0, f64::max);
+    let mut chart = ChartBuilder::on(cell)
+        .margin(8)
+        .x_label_area_size(36)
+        .y_label_area_size(62)
+        .build_cartesian_2d(x0..x1, 0.0..(if ymax > 0.0 { ymax * 1.1 } else { 1.0 }))
+        .map_err(draw_err)?;
+    let material = r.sets[k].kind == crate::explore::FieldKind::Material;
+    let level_names = names(r, k);
+    let fmt = |v: &f64| match material {
+        true => level_names
+            .get(v.round().max(0.0) as usize)
+            .cloned()
+            .unwrap_or_default(),
+        false => tick(*v),
+    };
+    chart
+        .configure_mesh()
+        .label_style(("sans-serif", 12))
+        .x_label_formatter(&fmt)
+        .x_desc(r.sets[k].field.as_str())
+        .y_desc(format!("σ_{} [{}]", dof.label(), dof.unit()))
+        .draw()
+        .map_err(draw_err)?;
+    for (gi, (label, g)) in series.iter().enumerate() {
+        let col = color(gi);
+        let band: Vec<(f64, f64)> = g
+            .iter()
+            .map(|v| (v[0], v[3]))
+            .chain(g.iter().rev().map(|v| (v[0], v[2])))
+            .filter(|p| p.1.is_finite())
+            .collect();
+        if g.len() > 1 && band.len() == 2 * g.len() {
+            chart
+                .draw_series(std::iter::once(Polygon::new(band, col.mix(0.2).filled())))
+                .map_err(draw_err)?;
+        }
+        let bars = g.iter().filter(|v| v[2].is_finite() && v[3].is_finite());
+        chart
+            .draw_series(bars.map(|v| PathElement::new(vec![(v[0], v[2]), (v[0], v[3])], col)))
+            .map_err(draw_err)?;
+        chart
+            .draw_series(g.iter().map(|v| Circle::new((v[0], v[1]), 3, col.filled())))
+            .map_err(draw_err)?;
+        let line = chart
+            .draw_series(LineSeries::new(
+                g.iter().map(|v| (v[0], v[1])),
+                col.stroke_width(2),
+            ))
+            .map_err(draw_err)?;
+        if legend && !label.is_empty() && gi < 8 {
+            line.label(*label).legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 14, y)], col.stroke_width(2))
+            });
+        }
+    }
+    if legend && series.len() > 1 {
+        chart
+            .configure_series_labels()
+            .label_font(("sans-serif", 11))
+            .position(SeriesLabelPosition::UpperLeft)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .draw()
+            .map_err(draw_err)?;
+    }
+    Ok(())
+}
+
+/// A swept value as a tick label.
+fn value_tick(v: &SweptValue) -> String {
+    match v {
+        SweptValue::Number(x) => tick(*x),
+        SweptValue::Name(n) => n.clone(),
+    }
+}
+
+/// Axis span of `xs` with 5 % margins (a unit span around a single value).
+fn span(xs: &[f64]) -> (f64, f64) {
+    let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    if !lo.is_finite() || !hi.is_finite() {
+        return (0.0, 1.0);
+    }
+    let w = if hi > lo {
+        0.05 * (hi - lo)
+    } else {
+        0.5 * lo.abs().max(1.0)
+    };
+    (lo - w, hi + w)
+}
+
+/// Colour of t in [0, 1] (blue - green - yellow, after viridis).
+fn ramp(t: f64) -> RGBColor {
+    let stops = [
+        (68.0, 1.0, 84.0),
+        (33.0, 145.0, 140.0),
+        (253.0, 231.0, 37.0),
+    ];
+    let t = t.clamp(0.0, 1.0) * 2.0;
+    let i = (t as usize).min(1);
+    let f = t - i as f64;
+    let mix = |a: f64, b: f64| (a + f * (b - a)).round() as u8;
+    let (a, b) = (stops[i], stops[i + 1]);
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// Largest translational sigma at the Pareto point [nm].
+fn sigma_max(r: &SweepReport, d: &DesignReport) -> Option<f64> {
+    let s = point(r, d)?.sigma.values();
+    Some(s[0].max(s[1]).max(s[2]))
+}
+
+/// The distinct values of field `k`, in design order.
+fn levels(r: &SweepReport, k: usize) -> Vec<SweptValue> {
+    let mut v: Vec<SweptValue> = Vec::new();
+    for d in &r.designs {
+        if let Some(x) = d.values.get(&r.sets[k].field)
+            && !v.contains(x)
+        {
+            v.push(x.clone());
+        }
+    }
+    v
+}
+
+/// Heat map over the two fields of a grid: cells by level index, coloured
+/// by the largest translational sigma; designs not evaluated are grey.
+fn heatmap(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
+    let (lx, ly) = (levels(r, 0), levels(r, 1));
+    let values: Vec<f64> = r.designs.iter().filter_map(|d| sigma_max(r, d)).collect();
+    let (vmin, vmax) = (
+        values.iter().copied().fold(f64::INFINITY, f64::min),
+        values.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+    );
+    let title = format!(
+        "largest translational σ at {} [nm] ({:.3} to {:.3}; grey: not evaluated)",
+        r.pareto_point, vmin, vmax
+    );
+    let mut chart = ChartBuilder::on(area)
+        .caption(title, ("sans-serif", 16))
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(70)
+        .build_cartesian_2d(-0.5..(lx.len() as f64 - 0.5), -0.5..(ly.len() as f64 - 0.5))
+        .map_err(draw_err)?;
+    let label = |v: &[SweptValue]| {
+        let v = v.to_vec();
+        move |x: &f64| {
+            v.get(x.round().max(0.0) as usize)
+                .map_or(String::new(), value_tick)
+        }
+    };
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_labels(lx.len())
+        .y_labels(ly.len())
+        .x_label_formatter(&label(&lx))
+        .y_label_formatter(&label(&ly))
+        .x_desc(r.sets[0].field.as_str())
+        .y_desc(r.sets[1].field.as_str())
+        .label_style(("sans-serif", 12))
+        .draw()
+        .map_err(draw_err)?;
+    for d in &r.designs {
+        let (Some(x), Some(y)) = (
+            d.values.get(&r.sets[0].field),
+            d.values.get(&r.sets[1].field),
+        ) else {
+            continue;
+        };
+        let i = lx.iter().position(|v| v == x).unwrap_or(0) as f64;
+        let j = ly.iter().position(|v| v == y).unwrap_or(0) as f64;
+        let fill = match sigma_max(r, d) {
+            Some(v) if vmax > vmin => ramp((v - vmin) / (vmax - vmin)),
+            Some(_) => ramp(0.5),
+            None => RGBColor(190, 190, 190),
+        };
+        chart
+            .draw_series(std::iter::once(Rectangle::new(
+                [(i - 0.5, j - 0.5), (i + 0.5, j + 0.5)],
+                fill.filled(),
+            )))
+            .map_err(draw_err)?;
+        let text = sigma_max(r, d).map_or("-".to_string(), |v| format!("{v:.3}"));
+        let ink = if fill.1 > 160 { BLACK } else { WHITE };
+        chart
+            .draw_series(std::iter::once(Text::new(
+                text,
+                (i - 0.2, j),
+                ("sans-serif", 12).into_font().color(&ink),
+            )))
+            .map_err(draw_err)?;
+    }
+    Ok(())
+}
+
+/// The Pareto front: every evaluated design at (lowest principal
+/// stiffness [N/um], largest translational sigma [nm]); the front in
+/// colour with its index and safety factor, dominated designs grey.
+fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
+    let pts: Vec<(f64, f64, &DesignReport)> = r
+        .designs
+        .iter()
+        .filter_map(|d| Some((r.objectives(d)?.stiffness_min * 1e-6, sigma_max(r, d)?, d)))
+        .collect();
+    let (x0, x1) = span(&pts.iter().map(|p| p.0).collect::<Vec<_>>());
+    let ymax = pts.iter().map(|p| p.1).fold(0.0, f64::max);
+    let mut chart = ChartBuilder::on(area)
+        .caption(
+            "Pareto front: lower σ, higher k_min, higher SF_p (front: coloured, #index SF_p)",
+            ("sans-serif", 16),
+        )
+        .margin(10)
+        .x_label_area_size(40)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x0..x1, 0.0..(ymax * 1.15).max(1e-12))
+        .map_err(draw_err)?;
+    chart
+        .configure_mesh()
+        .x_desc("lowest principal translational stiffness k_min [N/µm]")
+        .y_desc(format!(
+            "largest translational σ at {} [nm]",
+            r.pareto_point
+        ))
+        .label_style(("sans-serif", 12))
+        .draw()
+        .map_err(draw_err)?;
+    for (x, y, d) in &pts {
+        let on = d.pareto == Some(true);
+        let col = if on {
+            color(5)
+        } else {
+            RGBColor(150, 150, 150)
+        };
+        chart
+            .draw_series(std::iter::once(Circle::new((*x, *y), 4, col.filled())))
+            .map_err(draw_err)?;
+        if on {
+            let sf = d
+                .min_pressure_safety_factor
+                .map_or("-".to_string(), |s| format!("{s:.2}"));
+            chart
+                .draw_series(std::iter::once(Text::new(
+                    format!("#{} SF {sf}", d.index),
+                    (*x, *y),
+                    ("sans-serif", 11),
+                )))
+                .map_err(draw_err)?;
+        }
+    }
+    Ok(())
+}
