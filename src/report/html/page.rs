@@ -30,6 +30,7 @@ pub const CSS: &str = r#"
 html { -webkit-text-size-adjust: 100%; }
 body { font-family: system-ui, -apple-system, "Segoe UI", Roboto, "Helvetica Neue", Arial, sans-serif;
   color: var(--fg); margin: 0 auto; max-width: 1200px; padding: 1rem 1.25rem 3rem; line-height: 1.45; }
+p, h1, h2, h3, h4, li, figcaption, footer { overflow-wrap: anywhere; }
 h1 { font-size: 1.6rem; margin: 0.2rem 0 0.3rem; }
 h2 { font-size: 1.3rem; margin-top: 2.2rem; border-bottom: 2px solid var(--accent); padding-bottom: 0.2rem; }
 h3 { font-size: 1.05rem; margin: 1.4rem 0 0.5rem; }
