@@ -330,3 +330,84 @@ fn check_probe(dom: &str, window: &str) {
         }
     }
 }
+
+/// `study --html` writes the report of the run; `report` refuses a shard
+/// part, a scene file changed since the study, and a bad reference row,
+/// each with one line naming the file and the reason, and writes nothing.
+#[test]
+fn study_html_and_bad_inputs() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    let sc = dir.join("01_copy.toml");
+    std::fs::copy(scene("01_maxwell_vgroove_steel.toml"), &sc).unwrap();
+    let html = dir.join("run.html");
+    let (ok, _, err) = kinrepro(&[
+        "study",
+        sc.to_str().unwrap(),
+        "--samples",
+        "10",
+        "--html",
+        html.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let text = std::fs::read_to_string(&html).unwrap();
+    assert_eq!(text.matches("data-check=\"chart\"").count(), 3);
+    assert_eq!(text.matches("data-check=\"drawing\"").count(), 7);
+    assert!(text.contains("this run") && text.contains("01_copy.toml"));
+
+    let json = dir.join("s.json");
+    let (ok, out, err) = kinrepro(&[
+        "study",
+        sc.to_str().unwrap(),
+        "--samples",
+        "10",
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{err}");
+    std::fs::write(&json, out).unwrap();
+    let target = dir.join("r.html");
+    let report = |args: &[&str]| {
+        let mut a = vec![
+            "report",
+            json.to_str().unwrap(),
+            "--out",
+            target.to_str().unwrap(),
+        ];
+        a.extend_from_slice(args);
+        kinrepro(&a)
+    };
+    // A bad reference row: file, line, column.
+    let reference = dir.join("ref.csv");
+    std::fs::write(&reference, "label,scene,point,x_nm,y_nm,z_nm,phi_x_nrad,phi_y_nrad,phi_z_nrad\np,01_copy,centre,1,2,abc,,,\n").unwrap();
+    let (ok, _, err) = report(&["--reference", reference.to_str().unwrap()]);
+    assert!(
+        !ok && err.contains("ref.csv:2: z_nm") && err.lines().count() == 1,
+        "{err}"
+    );
+    assert!(!target.exists());
+    // The scene changed since the study: refused.
+    let edited = std::fs::read_to_string(&sc)
+        .unwrap()
+        .replace("force = 20.0", "force = 25.0");
+    std::fs::write(&sc, edited).unwrap();
+    let (ok, _, err) = report(&[]);
+    assert!(!ok && err.contains("changed since the study"), "{err}");
+    assert!(!target.exists());
+    // A shard part: refused (merge first).
+    let (ok, out, err) = kinrepro(&[
+        "study",
+        scene("01_maxwell_vgroove_steel.toml").to_str().unwrap(),
+        "--samples",
+        "10",
+        "--shard",
+        "1/2",
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{err}");
+    std::fs::write(&json, out).unwrap();
+    let (ok, _, err) = report(&[]);
+    assert!(!ok && err.contains("merge the parts first"), "{err}");
+    assert!(!target.exists());
+}
