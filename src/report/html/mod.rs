@@ -22,6 +22,7 @@ pub mod inputs;
 mod mechanics;
 mod page;
 pub mod reference;
+mod svg;
 mod tables;
 
 use std::fmt::Write;
@@ -97,10 +98,11 @@ impl HtmlReport {
             .collect();
         let charts = charts::study_charts(&variants, &self.references)?;
         let mut body = String::new();
-        let mut toc: Vec<(String, String)> = vec![
-            ("run".into(), "Run".into()),
-            ("sigma".into(), "σ tables".into()),
-        ];
+        let mut toc: Vec<(String, String)> = Vec::new();
+        if !self.studies.is_empty() {
+            toc.push(("run".into(), "Run".into()));
+            toc.push(("sigma".into(), "σ tables".into()));
+        }
         if !charts.is_empty() {
             toc.push(("charts".into(), "Charts".into()));
         }
@@ -115,7 +117,9 @@ impl HtmlReport {
             toc.push((format!("extra-{}", i + 1), s.title.clone()));
         }
         self.header(&mut body, &toc);
-        self.results(&mut body, &variants);
+        if !self.studies.is_empty() {
+            self.results(&mut body, &variants);
+        }
         if !charts.is_empty() {
             body.push_str("<section id=\"charts\"><h2>Charts</h2>\n");
             for c in &charts {
@@ -147,10 +151,15 @@ impl HtmlReport {
             body.push_str("</section>\n");
         }
         let sources: Vec<&str> = self.studies.iter().map(|s| s.source.as_str()).collect();
+        let from = if sources.is_empty() {
+            String::new()
+        } else {
+            format!(" from {}", sources.join(", "))
+        };
         let _ = writeln!(
             body,
-            "<footer class=\"muted\">Written by kinrepro {VERSION} from {}. Self-contained: inline CSS and SVG, no script, no network.</footer>",
-            escape(&sources.join(", "))
+            "<footer class=\"muted\">Written by kinrepro {VERSION}{}. Self-contained: inline CSS and SVG, no script, no network.</footer>",
+            escape(&from)
         );
         Ok(page::document("kinrepro report", &body))
     }
@@ -174,7 +183,11 @@ impl HtmlReport {
                 escape(title)
             );
         }
-        body.push_str("</ul></nav>\n<section id=\"run\"><h2>Run</h2>\n");
+        body.push_str("</ul></nav>\n");
+        if self.studies.is_empty() {
+            return;
+        }
+        body.push_str("<section id=\"run\"><h2>Run</h2>\n");
         for st in &self.studies {
             body.push_str(&tables::metadata(&st.source, &st.report));
         }
@@ -260,4 +273,44 @@ fn scene_section(
         escape(&explicit)
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A report of extra sections only (e.g. a sweep's charts): the sections
+    /// in order, escaped titles, no study parts.
+    #[test]
+    fn sections_alone_make_a_report() {
+        let svg = |w: u32| {
+            format!(
+                "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {w} 10\"><rect width=\"{w}\" height=\"10\"/></svg>"
+            )
+        };
+        let report = HtmlReport {
+            sections: vec![
+                Section {
+                    title: "σ vs preload <F>".into(),
+                    svg: svg(40),
+                },
+                Section {
+                    title: "Pareto front".into(),
+                    svg: format!("<?xml version=\"1.0\"?>\n{}", svg(50)),
+                },
+            ],
+            ..Default::default()
+        };
+        let html = report.render().unwrap();
+        let (a, b) = (
+            html.find("σ vs preload &lt;F&gt;").unwrap(),
+            html.find("Pareto front").unwrap(),
+        );
+        assert!(a < b);
+        assert_eq!(html.matches("data-check=\"chart\"").count(), 2);
+        assert!(
+            !html.contains("<?xml") && !html.contains("σ tables") && !html.contains("id=\"run\"")
+        );
+        assert!(html.contains("viewBox=\"0 0 50 10\""));
+    }
 }

@@ -96,43 +96,7 @@ pub fn sigma_table(
             if !methods.contains(&p.sigma_interval_method.as_str()) {
                 methods.push(&p.sigma_interval_method);
             }
-            let sigma = p.sigma.values();
-            let interval = match (&p.sigma_ci90_low, &p.sigma_ci90_high) {
-                (Some(l), Some(h)) => Some((l.values(), h.values())),
-                _ => None,
-            };
-            let _ = write!(
-                s,
-                "<tr><td>{}</td><td class=\"l\">{}</td><td class=\"l\">{}</td><td>{}</td>",
-                i + 1,
-                escape(&v.name),
-                escape(&p.name),
-                p.n
-            );
-            for k in 0..6 {
-                let digits = if k < 3 { 3 } else { 2 };
-                let ci = interval.map_or(String::new(), |(l, h)| {
-                    format!(
-                        "<span class=\"ci\">[{}, {}]</span>",
-                        num(l[k], digits),
-                        num(h[k], digits)
-                    )
-                });
-                let _ = write!(s, "<td>{}{ci}</td>", num(sigma[k], digits));
-            }
-            s.push_str("</tr>\n");
-            if let Some(r) = ReferenceRow::find(references, v, &p.name) {
-                let _ = write!(
-                    s,
-                    "<tr class=\"ref\"><td></td><td class=\"l\" colspan=\"2\">reference: {}</td><td></td>",
-                    escape(&r.label)
-                );
-                for (k, x) in r.sigma.iter().enumerate() {
-                    let digits = if k < 3 { 3 } else { 2 };
-                    let _ = write!(s, "<td>{}</td>", x.map_or("-".into(), |x| num(x, digits)));
-                }
-                s.push_str("</tr>\n");
-            }
+            point_rows(&mut s, i, v, p, references);
         }
     }
     s.push_str("</tbody></table></div>\n");
@@ -146,4 +110,52 @@ pub fn sigma_table(
         })
     );
     s
+}
+
+/// The row of one evaluation point (sigma, interval under it) and the
+/// matching reference row.
+fn point_rows(
+    s: &mut String,
+    i: usize,
+    v: &VariantReport,
+    p: &PointStats,
+    references: &[ReferenceRow],
+) {
+    let sigma = p.sigma.values();
+    let interval = match (&p.sigma_ci90_low, &p.sigma_ci90_high) {
+        (Some(l), Some(h)) => Some((l.values(), h.values())),
+        _ => None,
+    };
+    let _ = write!(
+        s,
+        "<tr><td>{}</td><td class=\"l\">{}</td><td class=\"l\">{}</td><td>{}</td>",
+        i + 1,
+        escape(&v.name),
+        escape(&p.name),
+        p.n
+    );
+    for k in 0..6 {
+        let digits = if k < 3 { 3 } else { 2 };
+        let ci = interval.map_or(String::new(), |(l, h)| {
+            format!(
+                "<span class=\"ci\">[{}, {}]</span>",
+                num(l[k], digits),
+                num(h[k], digits)
+            )
+        });
+        let _ = write!(s, "<td>{}{ci}</td>", num(sigma[k], digits));
+    }
+    s.push_str("</tr>\n");
+    if let Some(r) = ReferenceRow::find(references, v, &p.name) {
+        let _ = write!(
+            s,
+            "<tr class=\"ref\"><td></td><td class=\"l\" colspan=\"2\">reference: {}</td><td></td>",
+            escape(&r.label)
+        );
+        for (k, x) in r.sigma.iter().enumerate() {
+            let digits = if k < 3 { 3 } else { 2 };
+            let _ = write!(s, "<td>{}</td>", x.map_or("-".into(), |x| num(x, digits)));
+        }
+        s.push_str("</tr>\n");
+    }
 }

@@ -136,7 +136,7 @@ fn panel<DB: DrawingBackend>(
     let width = 0.8 / data.len() as f64;
     for (v, variant) in data.iter().enumerate() {
         let col = color(v);
-        let x0 = |c: usize| c as f64 - 0.4 + v as f64 * width;
+        let x0 = move |c: usize| c as f64 - 0.4 + v as f64 * width;
         let bars = dofs.iter().enumerate().map(move |(c, &d)| {
             Rectangle::new(
                 [(x0(c), 0.0), (x0(c) + width, variant.sigma[idx(d)])],
@@ -148,32 +148,9 @@ fn panel<DB: DrawingBackend>(
             .map_err(plot_err)?
             .label(variant.variant.as_str())
             .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], col.filled()));
-        if let Some((lo, hi)) = variant.interval {
-            // Error bar: a vertical line with caps a third of the bar wide.
-            let bars = dofs.iter().enumerate().flat_map(move |(c, &d)| {
-                let (k, xm, cap) = (idx(d), x0(c) + width / 2.0, width / 6.0);
-                [
-                    PathElement::new([(xm, lo[k]), (xm, hi[k])], BLACK.stroke_width(2)),
-                    PathElement::new(
-                        [(xm - cap, lo[k]), (xm + cap, lo[k])],
-                        BLACK.stroke_width(2),
-                    ),
-                    PathElement::new(
-                        [(xm - cap, hi[k]), (xm + cap, hi[k])],
-                        BLACK.stroke_width(2),
-                    ),
-                ]
-            });
-            chart.draw_series(bars).map_err(plot_err)?;
-        }
-        if let Some(r) = variant.reference {
-            let ticks = dofs.iter().enumerate().filter_map(move |(c, &d)| {
-                r[idx(d)].map(|y| {
-                    PathElement::new([(x0(c), y), (x0(c) + width, y)], BLACK.stroke_width(4))
-                })
-            });
-            chart.draw_series(ticks).map_err(plot_err)?;
-        }
+        chart
+            .draw_series(marks(variant, dofs, &x0, width))
+            .map_err(plot_err)?;
     }
     if has_ref {
         // An empty series carries the legend entry of the reference ticks.
@@ -194,4 +171,39 @@ fn panel<DB: DrawingBackend>(
         .border_style(BLACK)
         .draw()
         .map_err(plot_err)
+}
+
+/// The error bars (a vertical line from the low to the high end of the
+/// interval, caps a third of the bar wide) and the reference ticks (across
+/// the bar, thicker) of one variant; bar c spans [x0(c), x0(c) + width].
+fn marks(
+    variant: &VariantSigma,
+    dofs: &[Dof],
+    x0: &dyn Fn(usize) -> f64,
+    width: f64,
+) -> Vec<PathElement<(f64, f64)>> {
+    let mut out = Vec::new();
+    for (c, &d) in dofs.iter().enumerate() {
+        let k = idx(d);
+        if let Some((lo, hi)) = variant.interval {
+            let (xm, cap) = (x0(c) + width / 2.0, width / 6.0);
+            let style = BLACK.stroke_width(2);
+            out.push(PathElement::new([(xm, lo[k]), (xm, hi[k])], style));
+            out.push(PathElement::new(
+                [(xm - cap, lo[k]), (xm + cap, lo[k])],
+                style,
+            ));
+            out.push(PathElement::new(
+                [(xm - cap, hi[k]), (xm + cap, hi[k])],
+                style,
+            ));
+        }
+        if let Some(y) = variant.reference.and_then(|r| r[k]) {
+            out.push(PathElement::new(
+                [(x0(c), y), (x0(c) + width, y)],
+                BLACK.stroke_width(4),
+            ));
+        }
+    }
+    out
 }
