@@ -277,7 +277,8 @@ fn browser_checks(exe: &Path, tmp: &Path, html: &str) {
         .replacen("<head>", &format!("<head>\n{PROBE}"), 1);
     let probe_file = tmp.join("probe.html");
     std::fs::write(&probe_file, probed).unwrap();
-    for window in ["1280,2000", "390,844"] {
+    // Desktop, and the narrowest window headless Chromium opens (500 px).
+    for window in ["1280,2000", "500,900"] {
         let (dom, _) = run_chromium(exe, tmp, &probe_file, window, &["--dump-dom".to_string()]);
         check_probe(&dom, window);
     }

@@ -41,7 +41,7 @@ nav a { color: var(--accent); text-decoration: none; }
 table { border-collapse: collapse; font-size: 0.88rem; margin: 0.4rem 0 0.8rem; }
 th, td { border: 1px solid var(--line); padding: 0.22rem 0.5rem; text-align: right; white-space: nowrap; vertical-align: top; }
 th { background: var(--head); }
-td.l, th.l { text-align: left; white-space: normal; }
+td.l, th.l { text-align: left; white-space: normal; min-width: 8em; }
 td .ci { display: block; color: var(--muted); font-size: 0.78rem; }
 tr.ref td { background: #fffbe6; }
 figure { margin: 1rem 0 1.4rem; }
