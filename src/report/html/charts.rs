@@ -68,8 +68,8 @@ fn bars(
     out
 }
 
-/// The x-y scatter [nm] of every variant and evaluation point whose
-/// outputs start at `prefix` (`""` re-seating, `interchange/`).
+/// The x-y scatter [nm] of every variant and evaluation point, of the
+/// re-seating outputs or (`interchange`) of the interchangeability outputs.
 fn scatter(variants: &[&VariantReport], interchange: bool) -> Vec<VariantScatter> {
     let mut out = Vec::new();
     for v in variants.iter().filter(|v| !v.records.is_empty()) {

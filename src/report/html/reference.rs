@@ -141,7 +141,7 @@ pub fn parse_reference(text: &str, file: &str) -> Result<Vec<ReferenceRow>, Html
         });
     }
     if !header_seen {
-        return Err(err(0, "header", "no header line: the file is empty".into()));
+        return Err(err(1, "header", "no header line: the file is empty".into()));
     }
     Ok(rows)
 }
