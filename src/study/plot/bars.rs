@@ -95,7 +95,8 @@ fn panel<DB: DrawingBackend>(
     let m = dofs.len();
     // Room above the bars for the legend box (about one line per entry).
     let has_ref = data.iter().any(|v| v.reference.is_some());
-    let entries = data.len() + usize::from(has_ref);
+    let has_ci = data.iter().any(|v| v.interval.is_some());
+    let entries = data.len() + usize::from(has_ref || has_ci);
     let (_, height) = area.dim_in_pixel();
     let room = if legend {
         legend_room(entries, f64::from(height) - 100.0)
@@ -152,13 +153,22 @@ fn panel<DB: DrawingBackend>(
             .draw_series(marks(variant, dofs, &x0, width))
             .map_err(plot_err)?;
     }
-    if has_ref {
-        // An empty series carries the legend entry of the reference ticks.
+    // An empty series carries the legend entry of the marks.
+    let mark_label = match (has_ref, has_ci) {
+        (true, true) => Some("reference value (tick); 90 % interval (bar)"),
+        (true, false) => Some("reference value (tick)"),
+        (false, true) => Some("90 % interval of σ (error bar)"),
+        (false, false) => None,
+    };
+    if let Some(label) = mark_label {
+        let width = if has_ref { 4 } else { 2 };
         chart
             .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
             .map_err(plot_err)?
-            .label("reference value (tick); 90 % interval (bar)")
-            .legend(|(x, y)| PathElement::new([(x, y), (x + 12, y)], BLACK.stroke_width(4)));
+            .label(label)
+            .legend(move |(x, y)| {
+                PathElement::new([(x, y), (x + 12, y)], BLACK.stroke_width(width))
+            });
     }
     if !legend {
         return Ok(());
