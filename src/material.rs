@@ -43,35 +43,124 @@ pub enum MaterialError {
     },
 }
 
-/// The built-in table: (name, E [Pa], v, allowable pressure [Pa]).
-///
-/// Sources:
-/// - `steel`: hardened bearing steel (100Cr6 / AISI 52100), E 210 GPa, v 0.30
-///   (the paper's values); allowable static contact pressure 4.2 GPa for
-///   ball contacts, ISO 76:2006 (static load rating of rolling bearings).
-/// - `silicon-carbide`: sintered SiC, E 410 GPa, v 0.14 (the paper's values;
-///   e.g. Munro, J. Phys. Chem. Ref. Data 26 (1997) 1195).
-/// - `tungsten-carbide`: WC with 6 % Co, E 620 GPa, v 0.22 (Ashby, *Materials
-///   Selection in Mechanical Design*, 4th ed., tables of engineering ceramics).
-/// - `silicon-nitride`: bearing-grade hot-isostatically-pressed Si3N4, E 310 GPa,
-///   v 0.27 (ASTM F2094, typical values).
-/// - `alumina`: 99.5 % Al2O3, E 370 GPa, v 0.22 (Munro, J. Am. Ceram. Soc. 80
-///   (1997) 1919).
-/// - `sapphire`: single-crystal Al2O3 taken as isotropic, E 345 GPa, v 0.29
-///   (Dobrovinskaya et al., *Sapphire*, Springer 2009; the true modulus varies
-///   with orientation, so treat results for sapphire as approximate).
-///
-/// The ceramics carry no allowable pressure: their contact strength depends on
-/// grade and surface finish; give `allowable_pressure` in the scene file.
-/// No built-in material carries an allowable shear stress (no cited value is
-/// at hand); give `allowable_shear_stress` in the scene file.
-const BUILTIN: &[(&str, f64, f64, Option<f64>)] = &[
-    ("steel", 210e9, 0.30, Some(4.2e9)),
-    ("silicon-carbide", 410e9, 0.14, None),
-    ("tungsten-carbide", 620e9, 0.22, None),
-    ("silicon-nitride", 310e9, 0.27, None),
-    ("alumina", 370e9, 0.22, None),
-    ("sapphire", 345e9, 0.29, None),
+/// Where the values of a built-in material come from: one citable handbook,
+/// standard, paper or datasheet per value group.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct MaterialSources {
+    /// Source of Young's modulus and Poisson's ratio.
+    pub elastic: &'static str,
+    /// Source of the density.
+    pub density: &'static str,
+    /// Source of the allowable contact pressure, or why there is none.
+    pub allowable_pressure: &'static str,
+}
+
+/// A built-in material: its constants (SI) and their sources.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct BuiltinMaterial {
+    /// Kebab-case name, as in scene files.
+    pub name: &'static str,
+    /// What exactly the entry stands for (grade).
+    pub description: &'static str,
+    /// Young's modulus E [Pa].
+    pub youngs_modulus: f64,
+    /// Poisson's ratio v [-].
+    pub poisson_ratio: f64,
+    /// Density [kg/m^3] (listed for reference; the dynamic solver takes its
+    /// masses from `[dynamics]` or its own default).
+    pub density: f64,
+    /// Allowable peak Hertz contact pressure [Pa], if a cited value exists.
+    pub allowable_pressure: Option<f64>,
+    pub sources: MaterialSources,
+}
+
+/// No allowable pressure is built in for the ceramics: their contact
+/// strength depends on grade and surface finish.
+const NO_CERAMIC_PRESSURE: &str = "none built in: the contact strength of a ceramic depends on grade and surface finish; give allowable_pressure in the scene file";
+
+/// The built-in table. No built-in material carries an allowable shear
+/// stress (no cited value is at hand); give `allowable_shear_stress` in the
+/// scene file. Sapphire is anisotropic: its isotropic constants are
+/// approximate.
+pub const BUILTIN: &[BuiltinMaterial] = &[
+    BuiltinMaterial {
+        name: "steel",
+        description: "hardened bearing steel 100Cr6 / AISI 52100",
+        youngs_modulus: 210e9,
+        poisson_ratio: 0.30,
+        density: 7810.0,
+        allowable_pressure: Some(4.2e9),
+        sources: MaterialSources {
+            elastic: "the paper's values (TU Ilmenau, Model-based determination of the reproducibility of kinematic couplings); AISI 52100 datasheets give E 190-210 GPa, v 0.27-0.30",
+            density: "AISI 52100 datasheet (e.g. ASM / MatWeb 'AISI 52100 Steel'): 7.81 g/cm^3",
+            allowable_pressure: "ISO 76:2006 (static load ratings of rolling bearings): 4200 MPa for ball contacts",
+        },
+    },
+    BuiltinMaterial {
+        name: "silicon-carbide",
+        description: "sintered alpha-SiC",
+        youngs_modulus: 410e9,
+        poisson_ratio: 0.14,
+        density: 3160.0,
+        allowable_pressure: None,
+        sources: MaterialSources {
+            elastic: "the paper's values; cf. Munro, J. Phys. Chem. Ref. Data 26 (1997) 1195 (sintered alpha-SiC)",
+            density: "Munro, J. Phys. Chem. Ref. Data 26 (1997) 1195; NIST SRD 150 (sintered alpha-SiC): 3.16 g/cm^3",
+            allowable_pressure: NO_CERAMIC_PRESSURE,
+        },
+    },
+    BuiltinMaterial {
+        name: "tungsten-carbide",
+        description: "cemented carbide WC with 6 % Co",
+        youngs_modulus: 620e9,
+        poisson_ratio: 0.22,
+        density: 14900.0,
+        allowable_pressure: None,
+        sources: MaterialSources {
+            elastic: "Ashby, Materials Selection in Mechanical Design, 4th ed. (2011), tables of engineering ceramics (WC-Co)",
+            density: "Upadhyaya, Cemented Tungsten Carbides (Noyes, 1998), WC-6Co: 14.9 g/cm^3",
+            allowable_pressure: NO_CERAMIC_PRESSURE,
+        },
+    },
+    BuiltinMaterial {
+        name: "silicon-nitride",
+        description: "bearing-grade hot-isostatically-pressed Si3N4 (ASTM F2094 class I)",
+        youngs_modulus: 310e9,
+        poisson_ratio: 0.27,
+        density: 3160.0,
+        allowable_pressure: None,
+        sources: MaterialSources {
+            elastic: "ASTM F2094 (silicon nitride bearing balls), typical values; NBD 200 datasheet (HIP Si3N4): E 310 GPa, v 0.27",
+            density: "NBD 200 datasheet (HIP Si3N4 bearing balls): 3.16 g/cm^3",
+            allowable_pressure: NO_CERAMIC_PRESSURE,
+        },
+    },
+    BuiltinMaterial {
+        name: "alumina",
+        description: "99.5 % Al2O3",
+        youngs_modulus: 370e9,
+        poisson_ratio: 0.22,
+        density: 3900.0,
+        allowable_pressure: None,
+        sources: MaterialSources {
+            elastic: "CoorsTek AD-995 datasheet (99.5 % alumina): E 370 GPa, v 0.22 (Munro, J. Am. Ceram. Soc. 80 (1997) 1919 gives 416 GPa for fully dense alpha-Al2O3)",
+            density: "CoorsTek AD-995 datasheet: 3.90 g/cm^3",
+            allowable_pressure: NO_CERAMIC_PRESSURE,
+        },
+    },
+    BuiltinMaterial {
+        name: "sapphire",
+        description: "single-crystal Al2O3 taken as isotropic (approximate)",
+        youngs_modulus: 345e9,
+        poisson_ratio: 0.29,
+        density: 3980.0,
+        allowable_pressure: None,
+        sources: MaterialSources {
+            elastic: "Dobrovinskaya, Lytvynov, Pishchik, Sapphire (Springer, 2009); the modulus varies with orientation",
+            density: "Dobrovinskaya, Lytvynov, Pishchik, Sapphire (Springer, 2009): 3.98 g/cm^3",
+            allowable_pressure: NO_CERAMIC_PRESSURE,
+        },
+    },
 ];
 
 impl Material {
@@ -107,12 +196,12 @@ impl Material {
     pub fn builtin(name: &str) -> Result<Self, MaterialError> {
         BUILTIN
             .iter()
-            .find(|(n, ..)| *n == name)
-            .map(|&(n, e, v, p)| Material {
-                name: n.to_string(),
-                youngs_modulus: e,
-                poisson_ratio: v,
-                allowable_pressure: p,
+            .find(|b| b.name == name)
+            .map(|b| Material {
+                name: b.name.to_string(),
+                youngs_modulus: b.youngs_modulus,
+                poisson_ratio: b.poisson_ratio,
+                allowable_pressure: b.allowable_pressure,
                 allowable_shear_stress: None,
             })
             .ok_or_else(|| MaterialError::Unknown {
@@ -172,7 +261,7 @@ impl Material {
 
 /// Names of the built-in materials.
 pub fn builtin_names() -> Vec<&'static str> {
-    BUILTIN.iter().map(|(n, ..)| *n).collect()
+    BUILTIN.iter().map(|b| b.name).collect()
 }
 
 /// Effective (contact) modulus E* of a pair: 1/E* = (1-v1^2)/E1 + (1-v2^2)/E2.

@@ -5,6 +5,8 @@ pub mod analysis;
 pub mod atomic;
 pub mod check;
 pub mod contact;
+pub mod html;
+pub mod materials;
 pub mod merge;
 pub mod provenance;
 pub mod run;

@@ -7,15 +7,11 @@ use std::io::Write as _;
 use std::path::Path;
 
 use crate::report::atomic::{self, AtomicFile, WriteError};
+use crate::report::html::charts::study_charts;
 use crate::report::provenance::{SCHEMA_VERSION, VERSION, produced_by};
 use crate::report::study::{Dofs, StudyRecord, StudyReport, VariantReport};
-use crate::report::study_text::{csv_field, truncate};
-use crate::study::plot::{
-    ConvergenceSeries, Dof, VariantScatter, VariantSigma, plot_convergence, plot_sigma_bars,
-    plot_xy_scatter,
-};
+use crate::report::study_text::csv_field;
 use crate::study::runner::{COMPONENTS, INTERCHANGE_PREFIX};
-use crate::study::stats::sigma_convergence;
 
 /// Header of the summary CSV: provenance columns, then the statistics (SI).
 pub const SUMMARY_HEADER: &str = "kinrepro_version,schema_version,solver,sampler,seed,samples,vary,scene,name,point,dof,unit,n,mean,min,max,sigma,three_sigma,sigma_ci90_low,sigma_ci90_high,sigma_interval_method";
@@ -97,75 +93,21 @@ impl StudyReport {
         Ok(written)
     }
 
-    /// The SVG plots of the complete variants with re-seating outputs.
+    /// The SVG plots of the complete variants ([`study_charts`]: sigma bars
+    /// with intervals, scatter of every point, convergence of all six DOFs,
+    /// interchangeability when tolerances vary).
     fn write_plots(&self, dir: &Path, force: bool) -> Result<Vec<String>, WriteError> {
-        let full: Vec<&VariantReport> = self
-            .variants
-            .iter()
-            .filter(|v| !v.partial && !v.points.is_empty())
-            .collect();
+        let variants: Vec<&VariantReport> = self.variants.iter().collect();
+        let charts = study_charts(&variants, &[]).map_err(|e| WriteError::Io {
+            path: dir.display().to_string(),
+            reason: e.to_string(),
+        })?;
         let mut written = Vec::new();
-        if full.is_empty() {
-            return Ok(written);
+        for c in charts {
+            let path = dir.join(c.file_name);
+            atomic::write_file(&path, &c.svg, force)?;
+            written.push(path.display().to_string());
         }
-        // Scene file stems are short and tell the variants apart.
-        let label = |v: &VariantReport| {
-            Path::new(&v.scene).file_stem().map_or_else(
-                || truncate(&v.name, 30),
-                |s| s.to_string_lossy().into_owned(),
-            )
-        };
-        let sigmas: Vec<VariantSigma> = full
-            .iter()
-            .map(|v| VariantSigma {
-                variant: label(v),
-                sigma: v.points[0].sigma.values(),
-            })
-            .collect();
-        let path = dir.join("sigma_bars.svg");
-        atomic::write_with(&path, force, |p| plot_sigma_bars(p, &sigmas))?;
-        written.push(path.display().to_string());
-        // Scatter and convergence need the samples (not kept by a streamed study).
-        let with_records: Vec<&&VariantReport> =
-            full.iter().filter(|v| !v.records.is_empty()).collect();
-        if with_records.is_empty() {
-            return Ok(written);
-        }
-        let scatter: Vec<VariantScatter> = with_records
-            .iter()
-            .map(|v| VariantScatter {
-                variant: label(v),
-                xy: v
-                    .records
-                    .iter()
-                    .map(|r| (r.outputs[0] * 1e9, r.outputs[1] * 1e9))
-                    .collect(),
-            })
-            .collect();
-        let mut conv = Vec::new();
-        for v in &with_records {
-            // One translation and one rotation per variant keeps the legend
-            // readable; x and phi_x stand for the others (the per-sample CSV
-            // has all six).
-            for (k, dof) in [(0, Dof::X), (3, Dof::PhiX)] {
-                let values: Vec<f64> = v.records.iter().map(|r| r.outputs[k] * 1e9).collect();
-                let points = sigma_convergence(&values).map_err(|e| WriteError::Io {
-                    path: dir.join("sigma_convergence.svg").display().to_string(),
-                    reason: e.to_string(),
-                })?;
-                conv.push(ConvergenceSeries {
-                    variant: label(v),
-                    dof,
-                    points,
-                });
-            }
-        }
-        let path = dir.join("scatter_xy.svg");
-        atomic::write_with(&path, force, |p| plot_xy_scatter(p, &scatter))?;
-        written.push(path.display().to_string());
-        let path = dir.join("sigma_convergence.svg");
-        atomic::write_with(&path, force, |p| plot_convergence(p, &conv))?;
-        written.push(path.display().to_string());
         Ok(written)
     }
 }

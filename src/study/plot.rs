@@ -6,20 +6,29 @@
 //! element (`font-family="sans-serif"`) that the viewer renders. So no system fonts, fontconfig
 //! or freetype are needed at build or run time.
 //!
-//! * [`plot_sigma_bars`]: sigma per variant and DOF as grouped bars; translations x, y, z \[nm\]
-//!   and rotations phi_x, phi_y \[nrad\] in two panels because the units differ.
-//! * [`plot_xy_scatter`]: x-y scatter of the samples \[nm\], one panel per variant, common axes.
-//! * [`plot_convergence`]: sigma of the first k samples against k, one panel per unit.
+//! * [`sigma_bars_svg`]: sigma per variant and DOF as grouped bars with the 90 % interval of
+//!   each sigma as an error bar and optional reference values (e.g. the paper's) as black
+//!   ticks; translations x, y, z \[nm\] and rotations phi_x, phi_y, phi_z \[nrad\] in two panels
+//!   because the units differ.
+//! * [`xy_scatter_svg`]: x-y scatter of the samples \[nm\], one panel per variant and
+//!   evaluation point (each named), common axes.
+//! * [`convergence_svg`]: sigma of the first k samples against k, one panel per DOF (all six).
 //!
-//! Colours: the Okabe & Ito (2008) colour-blind-safe palette, by variant (or series) order.
+//! Each `*_svg` function returns the SVG text (for the HTML report); the `plot_*` functions
+//! write it to a file.
+//!
+//! Colours: the Okabe & Ito (2008) colour-blind-safe palette (then four of Paul Tol's), by
+//! variant (or series) order.
 
 mod bars;
 mod convergence;
 mod scatter;
 
-pub use bars::plot_sigma_bars;
-pub use convergence::plot_convergence;
-pub use scatter::plot_xy_scatter;
+pub use bars::{plot_sigma_bars, sigma_bars_svg};
+pub use convergence::{convergence_svg, plot_convergence};
+pub use scatter::{plot_xy_scatter, xy_scatter_svg};
+
+use std::path::Path;
 
 use plotters::style::RGBColor;
 use serde::{Deserialize, Serialize};
@@ -69,12 +78,33 @@ impl Dof {
 pub struct VariantSigma {
     pub variant: String,
     pub sigma: [f64; 6],
+    /// The 90 % interval of each sigma, `(low, high)`, where the design admits one.
+    #[serde(default)]
+    pub interval: Option<([f64; 6], [f64; 6])>,
+    /// Reference values of sigma (the paper's, or the user's), per DOF where given.
+    #[serde(default)]
+    pub reference: Option<[Option<f64>; 6]>,
 }
 
-/// The x-y re-seating errors \[nm\] of every sample of one variant.
+impl VariantSigma {
+    /// Sigma without interval or reference.
+    pub fn new(variant: impl Into<String>, sigma: [f64; 6]) -> Self {
+        VariantSigma {
+            variant: variant.into(),
+            sigma,
+            interval: None,
+            reference: None,
+        }
+    }
+}
+
+/// The x-y errors \[nm\] of every sample of one variant at one evaluation point.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct VariantScatter {
     pub variant: String,
+    /// The evaluation point (e.g. `centre`, `trihedral ball`).
+    #[serde(default)]
+    pub point: String,
     pub xy: Vec<(f64, f64)>,
 }
 
@@ -86,7 +116,9 @@ pub struct ConvergenceSeries {
     pub points: Vec<ConvergencePoint>,
 }
 
-const OKABE_ITO: [RGBColor; 8] = [
+/// Okabe & Ito's eight colours, then four of Paul Tol's muted scheme (wine,
+/// teal, olive, grey) so that up to twelve series differ.
+const PALETTE: [RGBColor; 12] = [
     RGBColor(0, 114, 178),
     RGBColor(230, 159, 0),
     RGBColor(0, 158, 115),
@@ -95,10 +127,26 @@ const OKABE_ITO: [RGBColor; 8] = [
     RGBColor(213, 94, 0),
     RGBColor(240, 228, 66),
     RGBColor(0, 0, 0),
+    RGBColor(136, 34, 85),
+    RGBColor(68, 170, 153),
+    RGBColor(153, 153, 51),
+    RGBColor(136, 136, 136),
 ];
 
+/// Write an SVG text to `path`.
+pub(crate) fn write_svg(path: &Path, svg: &str) -> Result<()> {
+    std::fs::write(path, svg).map_err(|e| StudyError::Plot(format!("{}: {e}", path.display())))
+}
+
 pub(crate) fn color(i: usize) -> RGBColor {
-    OKABE_ITO[i % OKABE_ITO.len()]
+    PALETTE[i % PALETTE.len()]
+}
+
+/// Factor on the data maximum that leaves room for a legend of `entries`
+/// lines (about 20 px each) at the top of a plot area `plot_px` high.
+pub(crate) fn legend_room(entries: usize, plot_px: f64) -> f64 {
+    let frac = ((20.0 * entries as f64 + 20.0) / plot_px).min(0.75);
+    1.0 / (1.0 - frac)
 }
 
 pub(crate) fn plot_err<E: std::fmt::Display>(e: E) -> StudyError {

@@ -45,6 +45,10 @@ pub enum Command {
     ValidateHertz(ValidateHertzArgs),
     /// Print the explicit form of a scene (loads back to the same coupling).
     Expand(ExpandArgs),
+    /// Write one self-contained HTML report of study JSON files.
+    Report(crate::commands::report::ReportArgs),
+    /// List the built-in materials with E, nu, density, allowable pressure and sources.
+    Materials(crate::commands::report::MaterialsArgs),
 }
 
 #[derive(Args)]
@@ -185,9 +189,15 @@ pub struct StudyArgs {
     /// (existing files are refused, unless --force).
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Replace existing files of --out.
+    /// Replace existing files of --out (and --html).
     #[arg(long)]
     pub force: bool,
+    /// Also write the self-contained HTML report of this study to FILE.
+    #[arg(long)]
+    pub html: Option<PathBuf>,
+    /// Reference values of sigma for the --html report (CSV; see `kinrepro report`).
+    #[arg(long, requires = "html")]
+    pub reference: Option<PathBuf>,
     /// Exit 0 even if a coupling cannot seat (zero scatter: nothing slid);
     /// the result still says so.
     #[arg(long)]

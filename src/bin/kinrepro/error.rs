@@ -22,6 +22,7 @@ use kinrepro::fe::FeError;
 use kinrepro::material::MaterialError;
 use kinrepro::report::analysis::ReportError;
 use kinrepro::report::atomic::WriteError;
+use kinrepro::report::html::HtmlError;
 use kinrepro::report::merge::MergeError;
 use kinrepro::report::sweep::{SweepError, SweepMergeError};
 use kinrepro::report::sweep_plot::SweepPlotError;
@@ -64,6 +65,8 @@ pub enum CliError {
     Write(#[from] WriteError),
     #[error("merge: {0}")]
     Merge(#[from] MergeError),
+    #[error("{0}")]
+    Html(#[from] HtmlError),
     #[error("{0}")]
     Explore(#[from] ExploreError),
     #[error("{0}")]

@@ -1,34 +1,87 @@
-//! Grouped bar chart of sigma per variant and DOF.
+//! Grouped bar chart of sigma per variant and DOF, with the 90 % interval of
+//! each sigma as an error bar and reference values as black ticks.
 
 use std::path::Path;
 
 use plotters::prelude::*;
 
 use super::super::error::{Result, StudyError};
-use super::{Dof, VariantSigma, check_finite, color, headroom, plot_err};
+use super::{Dof, VariantSigma, check_finite, color, headroom, legend_room, plot_err, write_svg};
 
-/// Writes an SVG with two panels, translations \[nm\] and rotations \[nrad\]: one group of bars per
-/// DOF, one bar per variant, legend with the variant names.
+/// Writes [`sigma_bars_svg`] of the re-seating sigma to `path`.
 pub fn plot_sigma_bars(path: &Path, data: &[VariantSigma]) -> Result<()> {
+    write_svg(path, &sigma_bars_svg(data, "re-seating σ")?)
+}
+
+/// An SVG with two panels, translations \[nm\] and rotations \[nrad\]: one
+/// group of bars per DOF, one bar per variant, a vertical error bar from the
+/// low to the high end of the interval of sigma (where there is one), a
+/// black tick at each reference value, and a legend with the variant names.
+/// `what` heads the panels (e.g. "re-seating σ", "interchangeability σ").
+pub fn sigma_bars_svg(data: &[VariantSigma], what: &str) -> Result<String> {
     if data.is_empty() {
         return Err(StudyError::NothingToPlot("no variants".into()));
     }
     check_finite(data.iter().flat_map(|v| v.sigma.iter()), "sigma")?;
+    check_finite(
+        data.iter()
+            .filter_map(|v| v.interval.as_ref())
+            .flat_map(|(l, h)| l.iter().chain(h.iter())),
+        "interval of sigma",
+    )?;
+    check_finite(
+        data.iter()
+            .filter_map(|v| v.reference.as_ref())
+            .flat_map(|r| r.iter().flatten()),
+        "reference sigma",
+    )?;
     if data.iter().flat_map(|v| v.sigma).any(|s| s < 0.0) {
         return Err(StudyError::InvalidParameter("negative sigma".into()));
     }
-    let root = SVGBackend::new(path, (1100, 480)).into_drawing_area();
-    root.fill(&WHITE).map_err(plot_err)?;
-    let (left, right) = root.split_horizontally(550);
-    panel(&left, data, &[Dof::X, Dof::Y, Dof::Z], "translations", true)?;
-    panel(
-        &right,
-        data,
-        &[Dof::PhiX, Dof::PhiY, Dof::PhiZ],
-        "rotations",
-        false,
-    )?;
-    root.present().map_err(plot_err)
+    let mut svg = String::new();
+    {
+        let entries = data.len() + usize::from(data.iter().any(|v| v.reference.is_some()));
+        let height = 480 + 12 * entries.saturating_sub(4) as u32;
+        let root = SVGBackend::with_string(&mut svg, (1100, height)).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let (left, right) = root.split_horizontally(550);
+        let translations = [Dof::X, Dof::Y, Dof::Z];
+        let rotations = [Dof::PhiX, Dof::PhiY, Dof::PhiZ];
+        panel(
+            &left,
+            data,
+            &translations,
+            &format!("{what}, translations"),
+            true,
+        )?;
+        panel(
+            &right,
+            data,
+            &rotations,
+            &format!("{what}, rotations"),
+            false,
+        )?;
+        root.present().map_err(plot_err)?;
+    }
+    Ok(svg)
+}
+
+fn idx(d: Dof) -> usize {
+    Dof::ALL.iter().position(|&x| x == d).unwrap_or(0)
+}
+
+/// The largest value drawn in the panel: bar, interval top or reference.
+fn panel_max(data: &[VariantSigma], dofs: &[Dof]) -> f64 {
+    data.iter()
+        .flat_map(|v| {
+            dofs.iter().map(move |&d| {
+                let k = idx(d);
+                let hi = v.interval.map_or(0.0, |(_, h)| h[k]);
+                let rf = v.reference.and_then(|r| r[k]).unwrap_or(0.0);
+                v.sigma[k].max(hi).max(rf)
+            })
+        })
+        .fold(0.0, f64::max)
 }
 
 fn panel<DB: DrawingBackend>(
@@ -38,27 +91,26 @@ fn panel<DB: DrawingBackend>(
     title: &str,
     legend: bool,
 ) -> Result<()> {
-    let idx = |d: Dof| Dof::ALL.iter().position(|&x| x == d).unwrap_or(0);
-    let ymax = data
-        .iter()
-        .flat_map(|v| dofs.iter().map(|&d| v.sigma[idx(d)]))
-        .fold(0.0, f64::max);
     let unit = dofs[0].unit();
     let m = dofs.len();
-    // Room above the bars for the legend box (about one line per variant).
-    let legend_room = if legend {
-        1.0 + 0.08 * data.len() as f64
+    // Room above the bars for the legend box (about one line per entry).
+    let has_ref = data.iter().any(|v| v.reference.is_some());
+    let has_ci = data.iter().any(|v| v.interval.is_some());
+    let entries = data.len() + usize::from(has_ref || has_ci);
+    let (_, height) = area.dim_in_pixel();
+    let room = if legend {
+        legend_room(entries, f64::from(height) - 100.0)
     } else {
         1.0
     };
     let mut chart = ChartBuilder::on(area)
-        .caption(format!("re-seating σ, {title}"), ("sans-serif", 20))
+        .caption(title, ("sans-serif", 20))
         .margin(12)
         .x_label_area_size(45)
         .y_label_area_size(75)
         .build_cartesian_2d(
             -0.5f64..(m as f64 - 0.5),
-            0f64..headroom(ymax * legend_room)?,
+            0f64..headroom(panel_max(data, dofs) * room)?,
         )
         .map_err(plot_err)?;
     let names: Vec<&str> = dofs.iter().map(|d| d.label()).collect();
@@ -85,28 +137,83 @@ fn panel<DB: DrawingBackend>(
     let width = 0.8 / data.len() as f64;
     for (v, variant) in data.iter().enumerate() {
         let col = color(v);
+        let x0 = move |c: usize| c as f64 - 0.4 + v as f64 * width;
         let bars = dofs.iter().enumerate().map(move |(c, &d)| {
-            let x0 = c as f64 - 0.4 + v as f64 * width;
             Rectangle::new(
-                [(x0, 0.0), (x0 + width, variant.sigma[idx(d)])],
+                [(x0(c), 0.0), (x0(c) + width, variant.sigma[idx(d)])],
                 col.filled(),
             )
         });
-        let anno = chart.draw_series(bars).map_err(plot_err)?;
-        if legend {
-            anno.label(variant.variant.as_str())
-                .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], col.filled()));
-        }
-    }
-    if legend {
         chart
-            .configure_series_labels()
-            .label_font(("sans-serif", 15))
-            .position(SeriesLabelPosition::UpperRight)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
+            .draw_series(bars)
+            .map_err(plot_err)?
+            .label(variant.variant.as_str())
+            .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], col.filled()));
+        chart
+            .draw_series(marks(variant, dofs, &x0, width))
             .map_err(plot_err)?;
     }
-    Ok(())
+    // An empty series carries the legend entry of the marks.
+    let mark_label = match (has_ref, has_ci) {
+        (true, true) => Some("reference value (tick); 90 % interval (bar)"),
+        (true, false) => Some("reference value (tick)"),
+        (false, true) => Some("90 % interval of σ (error bar)"),
+        (false, false) => None,
+    };
+    if let Some(label) = mark_label {
+        let width = if has_ref { 4 } else { 2 };
+        chart
+            .draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
+            .map_err(plot_err)?
+            .label(label)
+            .legend(move |(x, y)| {
+                PathElement::new([(x, y), (x + 12, y)], BLACK.stroke_width(width))
+            });
+    }
+    if !legend {
+        return Ok(());
+    }
+    chart
+        .configure_series_labels()
+        .label_font(("sans-serif", 15))
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(plot_err)
+}
+
+/// The error bars (a vertical line from the low to the high end of the
+/// interval, caps a third of the bar wide) and the reference ticks (across
+/// the bar, thicker) of one variant; bar c spans [x0(c), x0(c) + width].
+fn marks(
+    variant: &VariantSigma,
+    dofs: &[Dof],
+    x0: &dyn Fn(usize) -> f64,
+    width: f64,
+) -> Vec<PathElement<(f64, f64)>> {
+    let mut out = Vec::new();
+    for (c, &d) in dofs.iter().enumerate() {
+        let k = idx(d);
+        if let Some((lo, hi)) = variant.interval {
+            let (xm, cap) = (x0(c) + width / 2.0, width / 6.0);
+            let style = BLACK.stroke_width(2);
+            out.push(PathElement::new([(xm, lo[k]), (xm, hi[k])], style));
+            out.push(PathElement::new(
+                [(xm - cap, lo[k]), (xm + cap, lo[k])],
+                style,
+            ));
+            out.push(PathElement::new(
+                [(xm - cap, hi[k]), (xm + cap, hi[k])],
+                style,
+            ));
+        }
+        if let Some(y) = variant.reference.and_then(|r| r[k]) {
+            out.push(PathElement::new(
+                [(x0(c), y), (x0(c) + width, y)],
+                BLACK.stroke_width(4),
+            ));
+        }
+    }
+    out
 }

@@ -1,15 +1,24 @@
-//! Convergence of sigma with the number of samples.
+//! Convergence of sigma with the number of samples, one panel per DOF.
 
 use std::path::Path;
 
 use plotters::prelude::*;
 
 use super::super::error::{Result, StudyError};
-use super::{ConvergenceSeries, check_finite, color, headroom, plot_err};
+use super::{
+    ConvergenceSeries, Dof, check_finite, color, headroom, legend_room, plot_err, write_svg,
+};
 
-/// Writes an SVG of sigma of the first k samples against k: one panel for translations \[nm\]
-/// and one for rotations \[nrad\] (only the panels that have series), one line per series.
+/// Writes [`convergence_svg`] to `path`.
 pub fn plot_convergence(path: &Path, data: &[ConvergenceSeries]) -> Result<()> {
+    write_svg(path, &convergence_svg(data)?)
+}
+
+/// An SVG of sigma of the first k samples against k: one panel per DOF that
+/// has series (in the order x, y, z, phi_x, phi_y, phi_z; three per row),
+/// each in its unit, one line per variant (colour by variant, in order of
+/// first appearance), the legend in the first panel.
+pub fn convergence_svg(data: &[ConvergenceSeries]) -> Result<String> {
     if data.iter().all(|s| s.points.is_empty()) {
         return Err(StudyError::NothingToPlot("no convergence points".into()));
     }
@@ -17,43 +26,78 @@ pub fn plot_convergence(path: &Path, data: &[ConvergenceSeries]) -> Result<()> {
         data.iter().flat_map(|s| s.points.iter().map(|p| &p.sigma)),
         "convergence sigma",
     )?;
-    let groups: Vec<Vec<(usize, &ConvergenceSeries)>> = [false, true]
-        .iter()
-        .map(|&rot| {
-            data.iter()
-                .enumerate()
-                .filter(|(_, s)| s.dof.is_rotation() == rot && !s.points.is_empty())
-                .collect::<Vec<_>>()
-        })
-        .filter(|g| !g.is_empty())
-        .collect();
-    let root = SVGBackend::new(path, (560 * groups.len() as u32, 460)).into_drawing_area();
-    root.fill(&WHITE).map_err(plot_err)?;
-    for (group, area) in groups.iter().zip(root.split_evenly((1, groups.len()))) {
-        panel(&area, group)?;
+    let mut variants: Vec<&str> = Vec::new();
+    for s in data {
+        if !variants.contains(&s.variant.as_str()) {
+            variants.push(&s.variant);
+        }
     }
-    root.present().map_err(plot_err)
+    let groups: Vec<(Dof, Vec<(usize, &ConvergenceSeries)>)> = Dof::ALL
+        .iter()
+        .map(|&dof| {
+            let series = data
+                .iter()
+                .filter(|s| s.dof == dof && !s.points.is_empty())
+                .map(|s| {
+                    let i = variants.iter().position(|v| *v == s.variant).unwrap_or(0);
+                    (i, s)
+                })
+                .collect::<Vec<_>>();
+            (dof, series)
+        })
+        .filter(|(_, g)| !g.is_empty())
+        .collect();
+    let cols = groups.len().min(3);
+    let rows = groups.len().div_ceil(cols);
+    let mut svg = String::new();
+    {
+        // The first panel holds the legend: taller panels for many series.
+        let legend_lines = groups.first().map_or(0, |(_, g)| g.len()) as u32;
+        let size = (420 * cols as u32, (400 + 14 * legend_lines) * rows as u32);
+        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        for (n, ((dof, group), area)) in groups
+            .iter()
+            .zip(root.split_evenly((rows, cols)))
+            .enumerate()
+        {
+            panel(&area, *dof, group, n == 0)?;
+        }
+        root.present().map_err(plot_err)?;
+    }
+    Ok(svg)
 }
 
 fn panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, plotters::coord::Shift>,
+    dof: Dof,
     series: &[(usize, &ConvergenceSeries)],
+    legend: bool,
 ) -> Result<()> {
-    let unit = series[0].1.dof.unit();
+    let unit = dof.unit();
     let points = || series.iter().flat_map(|(_, s)| s.points.iter());
     let kmax = points().map(|p| p.k).max().unwrap_or(2).max(3) as f64;
-    let ymax = headroom(points().map(|p| p.sigma).fold(0.0, f64::max))?;
+    let ymax = points().map(|p| p.sigma).fold(0.0, f64::max);
+    let (_, height) = area.dim_in_pixel();
+    let room = if legend {
+        legend_room(series.len(), f64::from(height) - 90.0)
+    } else {
+        1.0
+    };
     let mut chart = ChartBuilder::on(area)
-        .caption(format!("convergence of σ [{unit}]"), ("sans-serif", 18))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(75)
-        .build_cartesian_2d(1f64..kmax, 0f64..ymax)
+        .caption(
+            format!("convergence of σ {} [{unit}]", dof.label()),
+            ("sans-serif", 17),
+        )
+        .margin(10)
+        .x_label_area_size(42)
+        .y_label_area_size(65)
+        .build_cartesian_2d(1f64..kmax, 0f64..headroom(ymax * room)?)
         .map_err(plot_err)?;
     chart
         .configure_mesh()
-        .label_style(("sans-serif", 15))
-        .axis_desc_style(("sans-serif", 17))
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", 15))
         .x_label_formatter(&|v| format!("{v:.0}"))
         .x_desc("number of samples k")
         .y_desc(format!("σ of first k samples [{unit}]"))
@@ -67,12 +111,15 @@ fn panel<DB: DrawingBackend>(
                 col.stroke_width(2),
             ))
             .map_err(plot_err)?
-            .label(format!("{} {}", s.variant, s.dof.label()))
+            .label(s.variant.as_str())
             .legend(move |(x, y)| PathElement::new([(x, y), (x + 16, y)], col.stroke_width(2)));
+    }
+    if !legend {
+        return Ok(());
     }
     chart
         .configure_series_labels()
-        .label_font(("sans-serif", 15))
+        .label_font(("sans-serif", 13))
         .position(SeriesLabelPosition::UpperRight)
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)

@@ -3,6 +3,7 @@
 mod analysis;
 mod contact;
 mod fe;
+pub mod report;
 mod scene;
 mod seat;
 mod study;
@@ -25,6 +26,8 @@ pub fn dispatch(command: Command) -> Result<(), CliError> {
         Command::Merge(a) => study::merge(a),
         Command::Sweep(a) => sweep::sweep(a),
         Command::ValidateHertz(a) => fe::validate_hertz(a),
+        Command::Report(a) => report::report(a),
+        Command::Materials(a) => report::materials(a),
     }
 }
 

@@ -84,6 +84,15 @@ pub fn study(args: StudyArgs) -> Result<(), CliError> {
             eprintln!("wrote {f}");
         }
     }
+    if let Some(path) = &args.html {
+        super::report::study_html(
+            &report,
+            &couplings,
+            args.reference.as_deref(),
+            path,
+            args.force,
+        )?;
+    }
     refuse_unseated(&report, args.allow_unseated)
 }
 

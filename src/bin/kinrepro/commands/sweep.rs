@@ -65,7 +65,11 @@ pub struct SweepArgs {
     /// Write the SVG design charts into this directory.
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Replace existing files of --out.
+    /// Write the design charts as one self-contained HTML report
+    /// (inline SVG, no network).
+    #[arg(long)]
+    pub html: Option<PathBuf>,
+    /// Replace existing files of --out and --html.
     #[arg(long)]
     pub force: bool,
     /// Evaluate only shard I of N of the design points; merge the JSON
@@ -139,6 +143,9 @@ pub fn sweep(args: SweepArgs) -> Result<(), CliError> {
         {
             eprintln!("wrote {f}");
         }
+    }
+    if let Some(path) = &args.html {
+        super::report::sweep_html(&report, path, args.force)?;
     }
     Ok(())
 }

@@ -1,0 +1,116 @@
+//! `kinrepro report` (the self-contained HTML report of study JSON files),
+//! `kinrepro study --html FILE` (the same for the study just run) and
+//! `kinrepro materials` (the built-in materials and their sources).
+
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+use kinrepro::assembly::Coupling;
+use kinrepro::report::html::{
+    HtmlReport, Section, StudyInput, load_reference, load_study, scene_input,
+};
+use kinrepro::report::study::StudyReport;
+
+use super::*;
+use crate::args::Format;
+use crate::error::CliError;
+
+#[derive(Args)]
+pub struct ReportArgs {
+    /// Study JSON files (`kinrepro study --format json`, or `kinrepro merge`).
+    #[arg(required = true)]
+    pub studies: Vec<PathBuf>,
+    /// The HTML file to write.
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Reference values of sigma to show with the results (CSV, header
+    /// label,scene,point,x_nm,y_nm,z_nm,phi_x_nrad,phi_y_nrad,phi_z_nrad;
+    /// e.g. docs/reference/paper_table2.csv).
+    #[arg(long)]
+    pub reference: Option<PathBuf>,
+    /// Replace an existing --out file.
+    #[arg(long)]
+    pub force: bool,
+}
+
+#[derive(Args)]
+pub struct MaterialsArgs {
+    /// table (GPa, MPa, kg/m^3, with sources) | csv (SI) | json (SI).
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+}
+
+pub fn report(args: ReportArgs) -> Result<(), CliError> {
+    let studies = args
+        .studies
+        .iter()
+        .map(|p| load_study(p))
+        .collect::<Result<Vec<_>, _>>()?;
+    write_html(studies, Vec::new(), args.reference.as_deref(), &args.out, args.force)
+}
+
+/// `study --html FILE`: the report of the study just run.
+pub fn study_html(
+    report: &StudyReport,
+    couplings: &[Coupling],
+    reference: Option<&Path>,
+    out: &Path,
+    force: bool,
+) -> Result<(), CliError> {
+    let scenes = couplings
+        .iter()
+        .map(|c| scene_input(c.clone()))
+        .collect::<Result<Vec<_>, _>>()?;
+    let study = StudyInput {
+        source: "this run".into(),
+        report: report.clone(),
+        scenes,
+    };
+    write_html(vec![study], Vec::new(), reference, out, force)
+}
+
+/// `sweep --html FILE`: the sweep's design charts (each carries its
+/// provenance line) as sections of a self-contained HTML report.
+pub fn sweep_html(
+    report: &kinrepro::report::sweep::SweepReport,
+    out: &Path,
+    force: bool,
+) -> Result<(), CliError> {
+    let sections = kinrepro::report::sweep_plot::charts(report)?
+        .into_iter()
+        .map(|(title, svg)| Section { title, svg })
+        .collect();
+    write_html(Vec::new(), sections, None, out, force)
+}
+
+fn write_html(
+    studies: Vec<StudyInput>,
+    sections: Vec<Section>,
+    reference: Option<&Path>,
+    out: &Path,
+    force: bool,
+) -> Result<(), CliError> {
+    let references = match reference {
+        Some(p) => load_reference(p)?,
+        None => Vec::new(),
+    };
+    let html = HtmlReport {
+        studies,
+        references,
+        reference_source: reference.map(|p| p.display().to_string()),
+        sections,
+    }
+    .render()?;
+    kinrepro::report::atomic::write_file(out, &html, force)?;
+    eprintln!("wrote {}", out.display());
+    Ok(())
+}
+
+pub fn materials(args: MaterialsArgs) -> Result<(), CliError> {
+    use kinrepro::report::materials::*;
+    match args.format {
+        Format::Table => emit(&materials_table()),
+        Format::Csv => emit(&materials_csv()),
+        Format::Json => print_json(&materials_doc()),
+    }
+}

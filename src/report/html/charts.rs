@@ -1,0 +1,186 @@
+//! The study's charts as SVG text: sigma bars with intervals (and reference
+//! values), x-y scatter of every evaluation point, convergence of sigma in
+//! all six DOFs, and the same bars and scatter for the interchangeability
+//! when tolerances vary. `kinrepro study --out` writes them as files, the
+//! HTML report inlines them; both take them from [`study_charts`].
+
+use std::path::Path;
+
+use crate::report::html::reference::ReferenceRow;
+use crate::report::study::{PointStats, VariantReport};
+use crate::report::study_text::truncate;
+use crate::study::StudyError;
+use crate::study::plot::{
+    ConvergenceSeries, Dof, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
+    xy_scatter_svg,
+};
+use crate::study::runner::INTERCHANGE_PREFIX;
+use crate::study::stats::sigma_convergence;
+
+/// One chart: the file name `--out` gives it, a title and the SVG text.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Chart {
+    pub file_name: &'static str,
+    pub title: String,
+    pub svg: String,
+}
+
+/// A short label of a variant: its scene file stem (they tell the variants
+/// apart), else its truncated name.
+pub fn variant_label(v: &VariantReport) -> String {
+    Path::new(&v.scene).file_stem().map_or_else(
+        || truncate(&v.name, 30),
+        |s| s.to_string_lossy().into_owned(),
+    )
+}
+
+/// `label · point` where a variant has several evaluation points, else the label.
+fn series_label(v: &VariantReport, point: &str, points: usize) -> String {
+    if points > 1 {
+        format!("{} · {point}", variant_label(v))
+    } else {
+        variant_label(v)
+    }
+}
+
+/// Bars of every variant and evaluation point, with intervals and the
+/// reference values that match (by scene stem or name, and point).
+fn bars(
+    variants: &[&VariantReport],
+    stats: fn(&VariantReport) -> &[PointStats],
+    references: &[ReferenceRow],
+) -> Vec<VariantSigma> {
+    let mut out = Vec::new();
+    for v in variants {
+        let pts = stats(v);
+        for p in pts {
+            let interval = match (&p.sigma_ci90_low, &p.sigma_ci90_high) {
+                (Some(l), Some(h)) => Some((l.values(), h.values())),
+                _ => None,
+            };
+            out.push(VariantSigma {
+                variant: series_label(v, &p.name, pts.len()),
+                sigma: p.sigma.values(),
+                interval,
+                reference: ReferenceRow::find(references, v, &p.name).map(|r| r.sigma),
+            });
+        }
+    }
+    out
+}
+
+/// The x-y scatter [nm] of every variant and evaluation point, of the
+/// re-seating outputs or (`interchange`) of the interchangeability outputs.
+fn scatter(variants: &[&VariantReport], interchange: bool) -> Vec<VariantScatter> {
+    let mut out = Vec::new();
+    for v in variants.iter().filter(|v| !v.records.is_empty()) {
+        for (k, name) in v.output_names.iter().enumerate() {
+            let Some(point) = name.strip_suffix("/x_m") else {
+                continue;
+            };
+            if point.starts_with(INTERCHANGE_PREFIX) != interchange {
+                continue;
+            }
+            let point = point.trim_start_matches(INTERCHANGE_PREFIX).to_string();
+            out.push(VariantScatter {
+                variant: variant_label(v),
+                point,
+                xy: v
+                    .records
+                    .iter()
+                    .map(|r| (r.outputs[k] * 1e9, r.outputs[k + 1] * 1e9))
+                    .collect(),
+            });
+        }
+    }
+    out
+}
+
+/// Sigma of the first k samples for all six DOFs of every re-seating
+/// evaluation point.
+fn convergence(variants: &[&VariantReport]) -> Result<Vec<ConvergenceSeries>, StudyError> {
+    let mut out = Vec::new();
+    for v in variants.iter().filter(|v| !v.records.is_empty()) {
+        let starts: Vec<(usize, &str)> = v
+            .output_names
+            .iter()
+            .enumerate()
+            .filter_map(|(k, n)| n.strip_suffix("/x_m").map(|p| (k, p)))
+            .filter(|(_, p)| !p.starts_with(INTERCHANGE_PREFIX))
+            .collect();
+        for &(k0, point) in &starts {
+            for (j, &dof) in Dof::ALL.iter().enumerate() {
+                let values: Vec<f64> = v.records.iter().map(|r| r.outputs[k0 + j] * 1e9).collect();
+                out.push(ConvergenceSeries {
+                    variant: series_label(v, point, starts.len()),
+                    dof,
+                    points: sigma_convergence(&values)?,
+                });
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// The charts of the complete variants of a study. Scatter and convergence
+/// need the samples, which a streamed study does not keep.
+pub fn study_charts(
+    variants: &[&VariantReport],
+    references: &[ReferenceRow],
+) -> Result<Vec<Chart>, StudyError> {
+    let full: Vec<&VariantReport> = variants
+        .iter()
+        .copied()
+        .filter(|v| !v.partial && (!v.points.is_empty() || !v.interchangeability.is_empty()))
+        .collect();
+    let mut charts = Vec::new();
+    let reseat: Vec<&VariantReport> = full
+        .iter()
+        .copied()
+        .filter(|v| !v.points.is_empty())
+        .collect();
+    if !reseat.is_empty() {
+        charts.push(Chart {
+            file_name: "sigma_bars.svg",
+            title: "Re-seating σ per DOF, with 90 % intervals".into(),
+            svg: sigma_bars_svg(&bars(&reseat, |v| &v.points, references), "re-seating σ")?,
+        });
+    }
+    let inter: Vec<&VariantReport> = full
+        .iter()
+        .copied()
+        .filter(|v| !v.interchangeability.is_empty())
+        .collect();
+    if !inter.is_empty() {
+        charts.push(Chart {
+            file_name: "interchange_sigma_bars.svg",
+            title: "Interchangeability σ (manufacturing tolerances), with 90 % intervals".into(),
+            svg: sigma_bars_svg(
+                &bars(&inter, |v| &v.interchangeability, &[]),
+                "interchange σ",
+            )?,
+        });
+    }
+    let xy = scatter(&reseat, false);
+    if !xy.is_empty() {
+        charts.push(Chart {
+            file_name: "scatter_xy.svg",
+            title: "Re-seating x-y scatter of every sample, per evaluation point".into(),
+            svg: xy_scatter_svg(&xy)?,
+        });
+        charts.push(Chart {
+            file_name: "sigma_convergence.svg",
+            title: "Convergence of σ with the number of samples, all six DOFs".into(),
+            svg: convergence_svg(&convergence(&reseat)?)?,
+        });
+    }
+    let xy = scatter(&inter, true);
+    if !xy.is_empty() {
+        charts.push(Chart {
+            file_name: "interchange_scatter_xy.svg",
+            title: "Interchangeability x-y scatter, per evaluation point".into(),
+            svg: xy_scatter_svg(&xy)?,
+        });
+    }
+    Ok(charts)
+}

@@ -1,0 +1,298 @@
+//! Hand-written SVG drawings of a coupling at its nominal seating.
+//!
+//! * The layout, seen from the top (x right, y up): moving balls, fixed
+//!   elements, contact points (numbered in the order of `--mu`), the
+//!   evaluation points and the preload point.
+//! * Per ball, a close-up from the top and a side view along the ball's
+//!   radial direction e_r (horizontal axis s = e_z x e_r, z up; for a ball
+//!   on the axis, x): the ball, its fixed elements, the contact points, the
+//!   contact normals (unit length) and the seated contact forces on the
+//!   moving half, N n + T, to one force scale per coupling (a force bar shows
+//!   it).
+//!
+//! Lengths are to scale within each drawing (a length bar shows it). Fixed
+//! elements are schematic where their true extent is unbounded: a plane as
+//! a segment (a square patch seen face on), a pin as a band (a circle seen
+//! end on), a fixed ball as a circle.
+
+use std::fmt::Write;
+
+use nalgebra::Vector3;
+
+use super::svg::{Shape, bounds, svg, svg_at};
+use crate::assembly::Coupling;
+use crate::scene::SurfaceGeometry;
+use crate::solve::{ContactResult, Seating};
+
+use super::svg::{BALL, CONTACT, FIXED, FORCE, NORMAL, PRELOAD};
+
+/// A projection onto the plane of two orthonormal axes (horizontal, up).
+#[derive(Clone, Copy)]
+struct Proj {
+    u: Vector3<f64>,
+    v: Vector3<f64>,
+}
+
+impl Proj {
+    fn top() -> Self {
+        Proj {
+            u: Vector3::x(),
+            v: Vector3::y(),
+        }
+    }
+    /// Looking along the radial direction of a ball at `c`.
+    fn along_radius(c: &Vector3<f64>) -> Self {
+        let r = Vector3::new(c.x, c.y, 0.0);
+        let u = if r.norm() > 1e-12 {
+            Vector3::z().cross(&r).normalize()
+        } else {
+            Vector3::x()
+        };
+        Proj { u, v: Vector3::z() }
+    }
+    fn p(&self, p: &Vector3<f64>) -> (f64, f64) {
+        (p.dot(&self.u), p.dot(&self.v))
+    }
+}
+
+fn force_vector(k: &ContactResult) -> Vector3<f64> {
+    Vector3::from(k.normal) * k.normal_force_n + Vector3::from(k.tangential_force)
+}
+
+/// The layout and the close-ups of every ball, with the legend.
+pub fn coupling_views(id: &str, c: &Coupling, s: &Seating) -> String {
+    let r = c.balls.iter().map(|b| b.radius).fold(0.0, f64::max);
+    let fmax = s
+        .contacts
+        .iter()
+        .map(|k| force_vector(k).norm())
+        .fold(0.0, f64::max);
+    // The longest contact force is drawn 1.2 ball radii long.
+    let scale = if fmax > 0.0 { 1.2 * r / fmax } else { 0.0 };
+    let mut out = String::from("<div class=\"views\">\n");
+    let layout = svg(&format!("{id}-layout"), 460.0, &layout_shapes(c, s), None);
+    let _ = writeln!(
+        out,
+        "<figure data-check=\"drawing\" id=\"{id}-layout\">{layout}<figcaption>layout, top view (x right, y up)</figcaption></figure>"
+    );
+    out.push_str("</div>\n<div class=\"balls\">\n");
+    // Every close-up at one scale: the largest extent of any of them.
+    let views: Vec<(usize, &str, Vec<Shape>)> = c
+        .balls
+        .iter()
+        .enumerate()
+        .flat_map(|(b, ball)| {
+            let centre = s.pose.apply(&ball.centre);
+            [("top", Proj::top()), ("side", Proj::along_radius(&centre))]
+                .into_iter()
+                .map(move |(tag, proj)| (b, tag, ball_shapes(c, s, b, proj, scale)))
+        })
+        .collect();
+    let span = views
+        .iter()
+        .map(|(_, _, sh)| {
+            let (x0, y0, x1, y1) = bounds(sh);
+            (x1 - x0).max(y1 - y0)
+        })
+        .fold(0.0, f64::max);
+    for (b, tag, shapes) in &views {
+        if *tag == "top" {
+            let _ = write!(out, "<div class=\"ball\">");
+        }
+        let fid = format!("{id}-b{}-{tag}", b + 1);
+        let drawn = svg_at(&fid, 300.0, shapes, Some((scale, fmax)), Some(span));
+        let what = if *tag == "top" {
+            "top view"
+        } else {
+            "side view along e_r"
+        };
+        let _ = write!(
+            out,
+            "<figure data-check=\"drawing\" id=\"{fid}\">{drawn}<figcaption>ball {}: {what}</figcaption></figure>",
+            b + 1
+        );
+        if *tag == "side" {
+            out.push_str("</div>\n");
+        }
+    }
+    out.push_str("</div>\n");
+    let _ = writeln!(
+        out,
+        "<p class=\"note\">Nominal seating (nominal μ, quasi-static). <span style=\"color:{BALL}\">Blue</span>: moving balls; <span style=\"color:{FIXED}\">grey</span>: fixed elements; <span style=\"color:{CONTACT}\">red dots</span>: contact points, numbered in the order of --mu; <span style=\"color:{NORMAL}\">green</span>: contact normals (unit length, not to scale); <span style=\"color:{FORCE}\">orange</span>: seated contact force on the moving half, N n + T, to the force bar's scale (largest {fmax:.3} N); <span style=\"color:{PRELOAD}\">pink</span>: preload point, F_p = {:.3} N along ({:.3}, {:.3}, {:.3}).</p>",
+        c.scene.preload.force,
+        // + 0.0 prints -0 as 0.
+        c.scene.preload.direction.x + 0.0,
+        c.scene.preload.direction.y + 0.0,
+        c.scene.preload.direction.z + 0.0
+    );
+    out
+}
+
+fn layout_shapes(c: &Coupling, s: &Seating) -> Vec<Shape> {
+    let proj = Proj::top();
+    let p = |v: &Vector3<f64>| proj.p(v);
+    let r = c.balls.iter().map(|b| b.radius).fold(0.0, f64::max);
+    let mut out: Vec<Shape> = c
+        .contacts
+        .iter()
+        .flat_map(|k| fixed_element(proj, &k.surface, r))
+        .collect();
+    for (i, b) in c.balls.iter().enumerate() {
+        let centre = p(&s.pose.apply(&b.centre));
+        out.push(Shape::Circle {
+            c: centre,
+            r: b.radius,
+            stroke: BALL,
+            fill: "#cfe6f5",
+        });
+        out.push(Shape::Text {
+            at: (centre.0, centre.1 + 1.6 * b.radius),
+            text: format!("ball {}", i + 1),
+            colour: BALL,
+        });
+    }
+    for k in &s.contacts {
+        out.push(Shape::Dot {
+            c: p(&Vector3::from(k.point_m)),
+            colour: CONTACT,
+        });
+    }
+    let pl = p(&c.scene.preload.point);
+    out.push(Shape::Dot {
+        c: pl,
+        colour: PRELOAD,
+    });
+    out.push(Shape::Text {
+        at: (pl.0 + 1.3 * r, pl.1 + 0.9 * r),
+        text: "F_p".into(),
+        colour: PRELOAD,
+    });
+    for e in &c.scene.evaluation_points {
+        let q = p(&s.pose.apply(&e.position));
+        let d = 0.35 * r;
+        out.push(Shape::Line {
+            a: (q.0 - d, q.1 - d),
+            b: (q.0 + d, q.1 + d),
+            width_m: 0.0,
+            colour: "#000",
+        });
+        out.push(Shape::Line {
+            a: (q.0 - d, q.1 + d),
+            b: (q.0 + d, q.1 - d),
+            width_m: 0.0,
+            colour: "#000",
+        });
+        out.push(Shape::Text {
+            at: (q.0, q.1 - 1.2 * r),
+            text: e.name.clone(),
+            colour: "#000",
+        });
+    }
+    out
+}
+
+/// Ball `b`, its fixed elements and contacts, normals and forces.
+fn ball_shapes(c: &Coupling, s: &Seating, b: usize, proj: Proj, scale: f64) -> Vec<Shape> {
+    let p = |v: &Vector3<f64>| proj.p(v);
+    let ball = &c.balls[b];
+    let r = ball.radius;
+    let mut out = Vec::new();
+    let mine: Vec<usize> = (0..c.contacts.len())
+        .filter(|&i| c.contacts[i].ball == b)
+        .collect();
+    for &i in &mine {
+        out.extend(fixed_element(proj, &c.contacts[i].surface, r));
+    }
+    out.push(Shape::Circle {
+        c: p(&s.pose.apply(&ball.centre)),
+        r,
+        stroke: BALL,
+        fill: "#cfe6f5",
+    });
+    for &i in &mine {
+        let k = &s.contacts[i];
+        let at = Vector3::from(k.point_m);
+        let n = Vector3::from(k.normal);
+        out.push(Shape::Arrow {
+            a: p(&at),
+            b: p(&(at + n * 0.8 * r)),
+            colour: NORMAL,
+        });
+        out.push(Shape::Arrow {
+            a: p(&at),
+            b: p(&(at + force_vector(k) * scale)),
+            colour: FORCE,
+        });
+        out.push(Shape::Dot {
+            c: p(&at),
+            colour: CONTACT,
+        });
+        out.push(Shape::Text {
+            at: p(&(at - n * 0.3 * r)),
+            text: format!("{}", i + 1),
+            colour: CONTACT,
+        });
+    }
+    out
+}
+
+fn fixed_element(proj: Proj, g: &SurfaceGeometry, r: f64) -> Vec<Shape> {
+    let p = |v: &Vector3<f64>| proj.p(v);
+    let grey = "#c6ccd3";
+    match *g {
+        SurfaceGeometry::Sphere { centre, radius } => {
+            vec![Shape::Circle {
+                c: p(&centre),
+                r: radius,
+                stroke: FIXED,
+                fill: "#eaeef2",
+            }]
+        }
+        SurfaceGeometry::Cylinder {
+            axis_point,
+            direction,
+            radius,
+        } => {
+            let (pa, pb) = (
+                p(&(axis_point - direction * 1.6 * r)),
+                p(&(axis_point + direction * 1.6 * r)),
+            );
+            if (pa.0 - pb.0).hypot(pa.1 - pb.1) < 0.5 * radius {
+                vec![Shape::Circle {
+                    c: p(&axis_point),
+                    r: radius,
+                    stroke: FIXED,
+                    fill: "#eaeef2",
+                }]
+            } else {
+                vec![Shape::Line {
+                    a: pa,
+                    b: pb,
+                    width_m: 2.0 * radius,
+                    colour: grey,
+                }]
+            }
+        }
+        SurfaceGeometry::Plane { point, normal } => {
+            let (nx, ny) = p(&normal);
+            let len = nx.hypot(ny);
+            let (x, y) = p(&point);
+            if len < 0.3 {
+                let h = 0.9 * r;
+                return vec![Shape::Line {
+                    a: (x - h, y),
+                    b: (x + h, y),
+                    width_m: 2.0 * h,
+                    colour: "#eaeef2",
+                }];
+            }
+            let (tx, ty, h) = (-ny / len, nx / len, 1.3 * r);
+            vec![Shape::Line {
+                a: (x - h * tx, y - h * ty),
+                b: (x + h * tx, y + h * ty),
+                width_m: 0.0,
+                colour: FIXED,
+            }]
+        }
+    }
+}

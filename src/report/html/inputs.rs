@@ -1,0 +1,115 @@
+//! What the report reads: study JSON (`study --format json`, or a merged
+//! study) and the scene files it names.
+//!
+//! The study JSON holds the statistics and every sample (records) but not
+//! the scenes. The report reads each scene file again (by the path in the
+//! JSON, as given to `study`, else relative to the JSON file's folder),
+//! checks that it is the scene the study ran (the fingerprint's
+//! `scene_content` hash), and seats it once at nominal friction for the
+//! drawing, the contact forces, stresses and stiffnesses. That seating is
+//! deterministic; nothing random is re-run.
+
+use std::path::{Path, PathBuf};
+
+use super::HtmlError;
+use crate::assembly::Coupling;
+use crate::report::provenance::{Fingerprint, SCHEMA_VERSION};
+use crate::report::study::StudyReport;
+use crate::scene::Scene;
+use crate::study::runner::StudyOptions;
+
+/// One scene of a study: its file text and its coupling.
+#[derive(Debug, Clone)]
+pub struct SceneInput {
+    pub text: String,
+    pub coupling: Coupling,
+}
+
+/// One study: where it came from, its document, and one scene per variant
+/// (in the order of `report.variants`).
+#[derive(Debug, Clone)]
+pub struct StudyInput {
+    pub source: String,
+    pub report: StudyReport,
+    pub scenes: Vec<SceneInput>,
+}
+
+/// The scene of an assembled coupling, its text read from `coupling.scene.file`.
+pub fn scene_input(coupling: Coupling) -> Result<SceneInput, HtmlError> {
+    let file = coupling.scene.file.clone();
+    let text = std::fs::read_to_string(&file).map_err(|e| HtmlError::Input {
+        file,
+        reason: format!("cannot read the scene file: {e}"),
+    })?;
+    Ok(SceneInput { text, coupling })
+}
+
+/// Read a study JSON file and the scenes it names.
+pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
+    let source = path.display().to_string();
+    let input = |reason: String| HtmlError::Input {
+        file: source.clone(),
+        reason,
+    };
+    let text =
+        std::fs::read_to_string(path).map_err(|e| input(format!("cannot read the file: {e}")))?;
+    let report: StudyReport = serde_json::from_str(&text)
+        .map_err(|e| input(format!("not a kinrepro study JSON: {e}")))?;
+    if report.schema_version != SCHEMA_VERSION {
+        return Err(input(format!(
+            "schema_version {} (this kinrepro reads schema {SCHEMA_VERSION}; rerun the study)",
+            report.schema_version
+        )));
+    }
+    if report.variants.is_empty() {
+        return Err(input("no variants: nothing to report".into()));
+    }
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let mut scenes = Vec::new();
+    for v in &report.variants {
+        if v.partial {
+            return Err(input(format!(
+                "{}: shard {} of a sharded study; merge the parts first (kinrepro merge)",
+                v.scene, v.shard
+            )));
+        }
+        let scene_path = locate(&v.scene, dir).ok_or_else(|| {
+            input(format!(
+                "scene `{}` not found (neither from the current folder nor next to the JSON)",
+                v.scene
+            ))
+        })?;
+        let text = std::fs::read_to_string(&scene_path)
+            .map_err(|e| input(format!("{}: cannot read: {e}", scene_path.display())))?;
+        let scene = Scene::parse(&text, &v.scene)?;
+        let coupling = Coupling::new(&scene).map_err(|source| HtmlError::Assembly {
+            file: v.scene.clone(),
+            source,
+        })?;
+        let now = Fingerprint::new(&coupling, &StudyOptions::default(), &v.design).scene_content;
+        if now != v.fingerprint.scene_content {
+            return Err(input(format!(
+                "{}: scene_content {} differs from the study's {}: the scene file changed since the study ran; rerun the study",
+                scene_path.display(),
+                now,
+                v.fingerprint.scene_content
+            )));
+        }
+        scenes.push(SceneInput { text, coupling });
+    }
+    Ok(StudyInput {
+        source,
+        report,
+        scenes,
+    })
+}
+
+/// The scene path as written, else relative to the JSON's folder.
+fn locate(scene: &str, json_dir: &Path) -> Option<PathBuf> {
+    let p = PathBuf::from(scene);
+    if p.is_file() {
+        return Some(p);
+    }
+    let q = json_dir.join(scene);
+    q.is_file().then_some(q)
+}

@@ -1,0 +1,316 @@
+//! The self-contained HTML report (`kinrepro report`, `kinrepro study
+//! --html FILE`): one file with inline CSS and inline SVG, no script, no
+//! external resource (a Content Security Policy forbids fetching anything).
+//!
+//! Sections, in order: the run's metadata (version, schema, solver, sampler,
+//! seed, samples, what varied), the sigma tables with intervals (nm, nrad)
+//! and reference values, the charts ([`charts::study_charts`]: sigma bars
+//! with interval bars and reference ticks, x-y scatter of every evaluation
+//! point, convergence of sigma in all six DOFs, interchangeability), then per
+//! scene a top and a side view of the coupling at its nominal seating
+//! ([`drawing`]), the contact forces, stresses and stiffnesses
+//! ([`mechanics`]) and the scene in both forms (the file as written and the
+//! explicit form of `kinrepro expand`), and last any extra sections given
+//! as `(title, svg)` ([`Section`], e.g. a sweep's design charts).
+//!
+//! Every element the browser test checks carries `data-check` (`table`,
+//! `chart`, `drawing`).
+
+pub mod charts;
+mod drawing;
+pub mod inputs;
+mod mechanics;
+mod page;
+pub mod reference;
+mod svg;
+mod tables;
+
+use std::fmt::Write;
+
+use thiserror::Error;
+
+use crate::analysis::stiffness::CouplingStiffness;
+use crate::assembly::AssemblyError;
+use crate::report::provenance::VERSION;
+use crate::report::study::VariantReport;
+use crate::scene::{Scene, SceneError};
+use crate::solve::SolveError;
+use crate::study::StudyError;
+pub use inputs::{SceneInput, StudyInput, load_study, scene_input};
+use page::escape;
+pub use reference::{ReferenceRow, load_reference, parse_reference};
+
+/// The report could not be made.
+#[derive(Debug, Error)]
+pub enum HtmlError {
+    #[error("{file}:{line}: {field}: {reason}")]
+    Reference {
+        file: String,
+        line: usize,
+        field: String,
+        reason: String,
+    },
+    #[error("{file}: {reason}")]
+    Input { file: String, reason: String },
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    #[error("{file}: {source}")]
+    Assembly {
+        file: String,
+        #[source]
+        source: AssemblyError,
+    },
+    #[error("{file}: the nominal seating (for the drawing and the stresses) failed: {source}")]
+    Solve {
+        file: String,
+        #[source]
+        source: SolveError,
+    },
+    #[error("charts: {0}")]
+    Chart(#[from] StudyError),
+}
+
+/// An extra section of the report: a title and an SVG (e.g. a sweep's
+/// design charts), appended after the scenes in the order given.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Section {
+    pub title: String,
+    pub svg: String,
+}
+
+/// Everything one report shows.
+#[derive(Debug, Clone, Default)]
+pub struct HtmlReport {
+    pub studies: Vec<StudyInput>,
+    /// Reference values of sigma (`--reference FILE`) and the file's name.
+    pub references: Vec<ReferenceRow>,
+    pub reference_source: Option<String>,
+    pub sections: Vec<Section>,
+}
+
+impl HtmlReport {
+    /// The HTML document.
+    pub fn render(&self) -> Result<String, HtmlError> {
+        let variants: Vec<&VariantReport> = self
+            .studies
+            .iter()
+            .flat_map(|s| s.report.variants.iter())
+            .collect();
+        let charts = charts::study_charts(&variants, &self.references)?;
+        let mut body = String::new();
+        let mut toc: Vec<(String, String)> = Vec::new();
+        if !self.studies.is_empty() {
+            toc.push(("run".into(), "Run".into()));
+            toc.push(("sigma".into(), "σ tables".into()));
+        }
+        if !charts.is_empty() {
+            toc.push(("charts".into(), "Charts".into()));
+        }
+        let mut n = 0;
+        for st in &self.studies {
+            for v in &st.report.variants {
+                n += 1;
+                toc.push((format!("scene-{n}"), format!("{n}. {}", v.name)));
+            }
+        }
+        for (i, s) in self.sections.iter().enumerate() {
+            toc.push((format!("extra-{}", i + 1), s.title.clone()));
+        }
+        self.header(&mut body, &toc);
+        if !self.studies.is_empty() {
+            self.results(&mut body, &variants);
+        }
+        if !charts.is_empty() {
+            body.push_str("<section id=\"charts\"><h2>Charts</h2>\n");
+            for c in &charts {
+                let id = c.file_name.trim_end_matches(".svg").replace('_', "-");
+                let _ = writeln!(body, "<h3>{}</h3>", escape(&c.title));
+                body.push_str(&page::figure(&id, &c.svg, chart_caption(c.file_name)));
+            }
+            body.push_str("</section>\n");
+        }
+        let mut n = 0;
+        for st in &self.studies {
+            for (v, scene) in st.report.variants.iter().zip(&st.scenes) {
+                n += 1;
+                scene_section(&mut body, n, v, scene)?;
+            }
+        }
+        for (i, s) in self.sections.iter().enumerate() {
+            let _ = writeln!(
+                body,
+                "<section id=\"extra-{}\"><h2>{}</h2>",
+                i + 1,
+                escape(&s.title)
+            );
+            body.push_str(&page::figure(
+                &format!("extra-{}-svg", i + 1),
+                &s.svg,
+                &s.title,
+            ));
+            body.push_str("</section>\n");
+        }
+        let sources: Vec<&str> = self.studies.iter().map(|s| s.source.as_str()).collect();
+        let from = if sources.is_empty() {
+            String::new()
+        } else {
+            format!(" from {}", sources.join(", "))
+        };
+        let _ = writeln!(
+            body,
+            "<footer class=\"muted\">Written by kinrepro {VERSION}{}. Self-contained: inline CSS and SVG, no script, no network.</footer>",
+            escape(&from)
+        );
+        Ok(page::document("kinrepro report", &body))
+    }
+
+    fn header(&self, body: &mut String, toc: &[(String, String)]) {
+        body.push_str("<header><h1>kinrepro: re-seating reproducibility report</h1>\n");
+        for st in &self.studies {
+            let _ = writeln!(
+                body,
+                "<p class=\"prov\">{}, shard {}</p>",
+                escape(&st.report.produced_by()),
+                st.report.shard
+            );
+        }
+        body.push_str("</header>\n<nav><ul>\n");
+        for (id, title) in toc {
+            let _ = writeln!(
+                body,
+                "<li><a href=\"#{}\">{}</a></li>",
+                escape(id),
+                escape(title)
+            );
+        }
+        body.push_str("</ul></nav>\n");
+        if self.studies.is_empty() {
+            return;
+        }
+        body.push_str("<section id=\"run\"><h2>Run</h2>\n");
+        for st in &self.studies {
+            body.push_str(&tables::metadata(&st.source, &st.report));
+        }
+        body.push_str("</section>\n");
+    }
+
+    fn results(&self, body: &mut String, variants: &[&VariantReport]) {
+        body.push_str("<section id=\"sigma\"><h2>σ tables</h2>\n<h3>Re-seating scatter (one pair of halves)</h3>\n");
+        body.push_str(&tables::sigma_table(
+            variants,
+            |v| &v.points,
+            &self.references,
+        ));
+        if let Some(src) = &self.reference_source {
+            let _ = writeln!(
+                body,
+                "<p class=\"note\">Reference rows (highlighted) and the black ticks on the bars: {}.</p>",
+                escape(src)
+            );
+        }
+        if variants.iter().any(|v| !v.interchangeability.is_empty()) {
+            body.push_str("<h3>Interchangeability (manufacturing tolerances; nominal friction and preload)</h3>\n");
+            body.push_str(&tables::sigma_table(
+                variants,
+                |v| &v.interchangeability,
+                &[],
+            ));
+        }
+        body.push_str("</section>\n");
+    }
+}
+
+fn chart_caption(file: &str) -> &'static str {
+    match file {
+        "sigma_bars.svg" | "interchange_sigma_bars.svg" => {
+            "Bars: σ per variant and evaluation point; black error bars: the 90 % interval of σ; black ticks: reference values. Left nm, right nrad."
+        }
+        "scatter_xy.svg" | "interchange_scatter_xy.svg" => {
+            "Every sample's x-y error relative to the nominal seating [nm], one panel per variant and evaluation point, common axes."
+        }
+        _ => {
+            "σ of the first k samples against k, one panel per DOF. For an LHS a prefix is not itself a Latin hypercube: the curve shows how σ settles."
+        }
+    }
+}
+
+/// One scene: drawing, mechanics, scene text in both forms.
+fn scene_section(
+    body: &mut String,
+    n: usize,
+    v: &VariantReport,
+    scene: &SceneInput,
+) -> Result<(), HtmlError> {
+    let c = &scene.coupling;
+    let file = v.scene.clone();
+    let mu = crate::solve::nominal_mu(c);
+    let seating =
+        crate::solve::quasistatic::seat(c, &mu, &Default::default()).map_err(|source| {
+            HtmlError::Solve {
+                file: file.clone(),
+                source,
+            }
+        })?;
+    let k = CouplingStiffness::new(c, &seating, &mu).map_err(|source| HtmlError::Solve {
+        file: file.clone(),
+        source,
+    })?;
+    let _ = writeln!(
+        body,
+        "<section id=\"scene-{n}\"><h2>{n}. {}</h2>\n<p class=\"muted\">{}</p>\n<h3>Coupling at the nominal seating</h3>",
+        escape(&v.name),
+        escape(&v.scene)
+    );
+    body.push_str(&drawing::coupling_views(&format!("d{n}"), c, &seating));
+    body.push_str("<h3>Stiffness and stresses</h3>\n");
+    body.push_str(&mechanics::mechanics(c, &seating, &k));
+    let explicit = Scene::expand_text(&scene.text, &file)?;
+    let _ = writeln!(
+        body,
+        "<h3>Scene</h3><div class=\"two\"><div><h4>As written ({})</h4><pre data-check=\"scene\">{}</pre></div><div><h4>Explicit form (kinrepro expand)</h4><pre data-check=\"scene\">{}</pre></div></div>\n</section>",
+        escape(&file),
+        escape(&scene.text),
+        escape(&explicit)
+    );
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A report of extra sections only (e.g. a sweep's charts): the sections
+    /// in order, escaped titles, no study parts.
+    #[test]
+    fn sections_alone_make_a_report() {
+        let svg = |w: u32| {
+            format!(
+                "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {w} 10\"><rect width=\"{w}\" height=\"10\"/></svg>"
+            )
+        };
+        let report = HtmlReport {
+            sections: vec![
+                Section {
+                    title: "σ vs preload <F>".into(),
+                    svg: svg(40),
+                },
+                Section {
+                    title: "Pareto front".into(),
+                    svg: format!("<?xml version=\"1.0\"?>\n{}", svg(50)),
+                },
+            ],
+            ..Default::default()
+        };
+        let html = report.render().unwrap();
+        let (a, b) = (
+            html.find("σ vs preload &lt;F&gt;").unwrap(),
+            html.find("Pareto front").unwrap(),
+        );
+        assert!(a < b);
+        assert_eq!(html.matches("data-check=\"chart\"").count(), 2);
+        assert!(
+            !html.contains("<?xml") && !html.contains("σ tables") && !html.contains("id=\"run\"")
+        );
+        assert!(html.contains("viewBox=\"0 0 50 10\""));
+    }
+}

@@ -1,0 +1,499 @@
+//! The HTML report in a real browser (headless Chromium): it loads without a
+//! console error or a blocked fetch, every drawing, table and chart is
+//! present and visible (non-zero box), it fits a phone's width, and it
+//! holds no external URL, script or @import. The numbers in its tables are
+//! the study JSON's.
+//!
+//! Chromium: /usr/bin/chromium (Debian's `chromium`; .ci/run installs it).
+//! Without it the browser part is skipped with a loud message, except in CI
+//! (env CI=true), where that is a failure.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use common::{kinrepro, scene};
+
+/// Hooks errors, console.error and CSP violations into a list, and on load
+/// writes the boxes of every `[data-check]` element into `<pre id="probe">`.
+const PROBE: &str = r#"<script>
+window.__errors = [];
+window.addEventListener('error', e => __errors.push('error: ' + (e.message || (e.target && e.target.outerHTML || '').slice(0, 120))), true);
+document.addEventListener('securitypolicyviolation', e => __errors.push('blocked: ' + e.blockedURI + ' ' + e.violatedDirective));
+const __ce = console.error;
+console.error = (...a) => { __errors.push('console.error: ' + a.join(' ')); __ce.apply(console, a); };
+window.addEventListener('load', () => {
+  const out = { errors: __errors, width: window.innerWidth, scroll_width: document.documentElement.scrollWidth, items: [] };
+  document.querySelectorAll('[data-check]').forEach(el => {
+    const r = el.getBoundingClientRect();
+    const cs = getComputedStyle(el);
+    const svg = el.querySelector('svg');
+    const s = svg ? svg.getBoundingClientRect() : { width: -1, height: -1 };
+    out.items.push({ kind: el.dataset.check, id: el.id, w: r.width, h: r.height,
+      visible: cs.display !== 'none' && cs.visibility !== 'hidden' && cs.opacity !== '0',
+      svg_w: s.width, svg_h: s.height });
+  });
+  const pre = document.createElement('pre');
+  pre.id = 'probe';
+  pre.textContent = JSON.stringify(out);
+  document.body.appendChild(pre);
+});
+</script>"#;
+
+/// The report's CSP, and the probe's: the same, plus inline scripts.
+const CSP: &str = "default-src 'none'; style-src 'unsafe-inline'; img-src data:";
+
+fn chromium() -> Option<PathBuf> {
+    let p = PathBuf::from("/usr/bin/chromium");
+    if p.exists() {
+        return Some(p);
+    }
+    if std::env::var("CI").is_ok_and(|v| v == "true") {
+        panic!("CI=true but /usr/bin/chromium is missing: .ci/run installs Debian's chromium");
+    }
+    eprintln!(
+        "\n******** SKIPPED: the browser checks of the HTML report need /usr/bin/chromium (apt-get install chromium) ********\n"
+    );
+    None
+}
+
+/// Run headless Chromium on `file` with a fresh profile; (stdout, stderr).
+fn run_chromium(
+    exe: &Path,
+    tmp: &Path,
+    file: &Path,
+    window: &str,
+    extra: &[String],
+) -> (String, String) {
+    let profile = tempfile::tempdir_in(tmp).unwrap();
+    let out = Command::new(exe)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            "--no-first-run",
+            "--enable-logging=stderr",
+            "--v=0",
+            "--virtual-time-budget=10000",
+        ])
+        .arg(format!("--user-data-dir={}", profile.path().display()))
+        .arg(format!("--window-size={window}"))
+        .args(extra)
+        .arg(format!("file://{}", file.display()))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "chromium failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    (
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// Two studies (scenes 01 and 06 re-seating; the tolerance scene with
+/// interchangeability) and their report with the paper's reference values.
+fn make_report(dir: &Path) -> (String, serde_json::Value) {
+    let a = dir.join("a.json");
+    let b = dir.join("b.json");
+    let (s1, s6, st) = (
+        scene("01_maxwell_vgroove_steel.toml"),
+        scene("06_kelvin_steel.toml"),
+        scene("tolerances_maxwell_vgroove.toml"),
+    );
+    let (ok, json, err) = kinrepro(&[
+        "study",
+        s1.to_str().unwrap(),
+        s6.to_str().unwrap(),
+        "--samples",
+        "10",
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{err}");
+    std::fs::write(&a, &json).unwrap();
+    let (ok, json_b, err) = kinrepro(&[
+        "study",
+        st.to_str().unwrap(),
+        "--samples",
+        "10",
+        "--vary",
+        "friction,tolerances",
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{err}");
+    std::fs::write(&b, &json_b).unwrap();
+    let html = dir.join("report.html");
+    let reference = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/reference/paper_table2.csv");
+    let (ok, _, err) = kinrepro(&[
+        "report",
+        a.to_str().unwrap(),
+        b.to_str().unwrap(),
+        "--out",
+        html.to_str().unwrap(),
+        "--reference",
+        reference.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    // Written whole; a second run refuses to overwrite.
+    let (ok, _, err) = kinrepro(&[
+        "report",
+        a.to_str().unwrap(),
+        "--out",
+        html.to_str().unwrap(),
+    ]);
+    assert!(!ok && err.contains("--force"), "{err}");
+    (
+        std::fs::read_to_string(&html).unwrap(),
+        serde_json::from_str(&json).unwrap(),
+    )
+}
+
+#[test]
+fn report_is_self_contained_complete_and_renders_in_chromium() {
+    let tmp = tempfile::tempdir().unwrap();
+    let (html, study) = make_report(tmp.path());
+
+    static_checks(&html, &study);
+    let Some(exe) = chromium() else { return };
+    browser_checks(&exe, tmp.path(), &html);
+}
+
+/// No external resource; metadata, scenes, references and the JSON's
+/// numbers present; every chart and drawing there.
+fn static_checks(html: &str, study: &serde_json::Value) {
+    // No external resource of any kind.
+    let lower = html.to_lowercase();
+    for bad in [
+        "<script",
+        "@import",
+        " src=",
+        "<link",
+        "<iframe",
+        "<img",
+        "url(http",
+        "href=\"http",
+        "href='http",
+    ] {
+        assert!(!lower.contains(bad), "the report contains {bad}");
+    }
+    for (i, _) in lower.match_indices("href=") {
+        assert!(
+            lower[i..].starts_with("href=\"#"),
+            "non-local link: {}",
+            &html[i..i + 40]
+        );
+    }
+    // The only http(s) strings are the SVG namespace.
+    let urls = lower.matches("http://").count() + lower.matches("https://").count();
+    assert_eq!(
+        urls,
+        lower
+            .matches("xmlns=\"http://www.w3.org/2000/svg\"")
+            .count()
+    );
+    assert!(html.contains(&format!("content=\"{CSP}\"")));
+    assert!(html.contains("@media print") && html.contains("size: A4"));
+
+    // Metadata, both scene forms, reference rows, the JSON's numbers.
+    for s in [
+        "solver",
+        "quasi-static",
+        "sampler",
+        "seed",
+        "samples",
+        "kinrepro version",
+        "Explicit form of",
+        "[coupling]",
+        "[[balls]]",
+        "reference: paper (FE, 25 LHS)",
+        "σ_φz [nrad]",
+    ] {
+        assert!(html.contains(s), "missing {s}");
+    }
+    for v in study["variants"].as_array().unwrap() {
+        for p in v["points"].as_array().unwrap() {
+            let sx = p["sigma"]["x_nm"].as_f64().unwrap();
+            let lo = p["sigma_ci90_low"]["phi_z_nrad"].as_f64().unwrap();
+            assert!(
+                html.contains(&format!("<td>{sx:.3}<span")),
+                "sigma_x {sx:.3} not in a table"
+            );
+            assert!(
+                html.contains(&format!("[{lo:.2},")),
+                "interval {lo:.2} not in a table"
+            );
+        }
+    }
+    // 5 charts (bars, interchange bars, scatter, convergence, interchange scatter);
+    // per scene a layout and a top and a side view of each of 3 balls.
+    assert_eq!(html.matches("data-check=\"chart\"").count(), 5);
+    assert_eq!(html.matches("data-check=\"drawing\"").count(), 3 * 7);
+}
+
+/// In Chromium: a screenshot without console errors, the probe at desktop
+/// and phone widths, and A4 print.
+fn browser_checks(exe: &Path, tmp: &Path, html: &str) {
+    let file = tmp.join("report.html");
+    // 1. The report itself: a screenshot, no console error, nothing blocked.
+    let shot = tmp.join("shot.png");
+    let (_, log) = run_chromium(
+        exe,
+        tmp,
+        &file,
+        "1280,2000",
+        &[format!("--screenshot={}", shot.display())],
+    );
+    let png = std::fs::read(&shot).unwrap();
+    assert_eq!(&png[1..4], b"PNG");
+    let (w, h) = (
+        u32::from_be_bytes(png[16..20].try_into().unwrap()),
+        u32::from_be_bytes(png[20..24].try_into().unwrap()),
+    );
+    assert_eq!((w, h), (1280, 2000));
+    for line in log.lines() {
+        let l = line.to_lowercase();
+        assert!(
+            !(l.contains("console")
+                && (l.contains("error") || l.contains("uncaught") || l.contains("refused")))
+                && !l.contains("content security policy"),
+            "browser console: {line}"
+        );
+    }
+    // 2. With the probe, on a desktop and on a phone width.
+    let probe_csp = format!("{CSP}; script-src 'unsafe-inline'");
+    let probed = html
+        .replace(
+            &format!("content=\"{CSP}\""),
+            &format!("content=\"{probe_csp}\""),
+        )
+        .replacen("<head>", &format!("<head>\n{PROBE}"), 1);
+    let probe_file = tmp.join("probe.html");
+    std::fs::write(&probe_file, probed).unwrap();
+    // Desktop, and the narrowest window headless Chromium opens (500 px).
+    for window in ["1280,2000", "500,900"] {
+        let (dom, _) = run_chromium(exe, tmp, &probe_file, window, &["--dump-dom".to_string()]);
+        check_probe(&dom, window);
+    }
+}
+
+fn check_probe(dom: &str, window: &str) {
+    let start = dom
+        .find("<pre id=\"probe\">")
+        .unwrap_or_else(|| panic!("{window}: the probe did not run"))
+        + 16;
+    let text = &dom[start..start + dom[start..].find("</pre>").unwrap()];
+    let text = text
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&");
+    let r: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(
+        r["errors"].as_array().unwrap().len(),
+        0,
+        "{window}: {}",
+        r["errors"]
+    );
+    let width = r["width"].as_f64().unwrap();
+    assert!(
+        r["scroll_width"].as_f64().unwrap() <= width + 1.0,
+        "{window}: the page is wider than the window: {r}"
+    );
+    let items = r["items"].as_array().unwrap();
+    let count = |k: &str| items.iter().filter(|i| i["kind"] == k).count();
+    assert_eq!(count("chart"), 5, "{window}");
+    assert_eq!(count("drawing"), 21, "{window}");
+    assert!(
+        count("table") >= 8 && count("scene") == 6,
+        "{window}: {}",
+        count("table")
+    );
+    for i in items {
+        let what = format!("{window}: {} {}", i["kind"], i["id"]);
+        assert_eq!(i["visible"], true, "{what}");
+        assert!(
+            i["w"].as_f64().unwrap() > 10.0 && i["h"].as_f64().unwrap() > 10.0,
+            "{what}: {i}"
+        );
+        // Tables may be wider: they scroll inside their box (the page's
+        // scroll width above covers that box).
+        assert!(
+            i["kind"] == "table" || i["w"].as_f64().unwrap() <= width + 1.0,
+            "{what} wider than the window: {i}"
+        );
+        if i["kind"] == "chart" || i["kind"] == "drawing" {
+            assert!(
+                i["svg_w"].as_f64().unwrap() > 10.0 && i["svg_h"].as_f64().unwrap() > 10.0,
+                "{what}: {i}"
+            );
+        }
+    }
+}
+
+/// `study --html` writes the report of the run; `report` refuses a shard
+/// part, a scene file changed since the study, and a bad reference row,
+/// each with one line naming the file and the reason, and writes nothing.
+#[test]
+fn study_html_and_bad_inputs() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    let sc = dir.join("01_copy.toml");
+    std::fs::copy(scene("01_maxwell_vgroove_steel.toml"), &sc).unwrap();
+    let html = dir.join("run.html");
+    let (ok, _, err) = kinrepro(&[
+        "study",
+        sc.to_str().unwrap(),
+        "--samples",
+        "10",
+        "--html",
+        html.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let text = std::fs::read_to_string(&html).unwrap();
+    assert_eq!(text.matches("data-check=\"chart\"").count(), 3);
+    assert_eq!(text.matches("data-check=\"drawing\"").count(), 7);
+    assert!(text.contains("this run") && text.contains("01_copy.toml"));
+
+    let json = dir.join("s.json");
+    let (ok, out, err) = kinrepro(&[
+        "study",
+        sc.to_str().unwrap(),
+        "--samples",
+        "10",
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{err}");
+    std::fs::write(&json, out).unwrap();
+    let target = dir.join("r.html");
+    let report = |args: &[&str]| {
+        let mut a = vec![
+            "report",
+            json.to_str().unwrap(),
+            "--out",
+            target.to_str().unwrap(),
+        ];
+        a.extend_from_slice(args);
+        kinrepro(&a)
+    };
+    // A bad reference row: file, line, column.
+    let reference = dir.join("ref.csv");
+    std::fs::write(&reference, "label,scene,point,x_nm,y_nm,z_nm,phi_x_nrad,phi_y_nrad,phi_z_nrad\np,01_copy,centre,1,2,abc,,,\n").unwrap();
+    let (ok, _, err) = report(&["--reference", reference.to_str().unwrap()]);
+    assert!(
+        !ok && err.contains("ref.csv:2: z_nm") && err.lines().count() == 1,
+        "{err}"
+    );
+    assert!(!target.exists());
+    // The scene changed since the study: refused.
+    let edited = std::fs::read_to_string(&sc)
+        .unwrap()
+        .replace("force = 20.0", "force = 25.0");
+    std::fs::write(&sc, edited).unwrap();
+    let (ok, _, err) = report(&[]);
+    assert!(!ok && err.contains("changed since the study"), "{err}");
+    assert!(!target.exists());
+    // A shard part: refused (merge first).
+    let (ok, out, err) = kinrepro(&[
+        "study",
+        scene("01_maxwell_vgroove_steel.toml").to_str().unwrap(),
+        "--samples",
+        "10",
+        "--shard",
+        "1/2",
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{err}");
+    std::fs::write(&json, out).unwrap();
+    let (ok, _, err) = report(&[]);
+    assert!(!ok && err.contains("merge the parts first"), "{err}");
+    assert!(!target.exists());
+}
+
+/// The drawn contact forces are to scale: in the side views (z up) the
+/// vertical components of the six force arrows, read back through the force
+/// bar, add up to the preload (equilibrium of the moving half: sum of
+/// N n + T = -F_p), and in the top views the horizontal ones to zero.
+#[test]
+fn drawn_contact_forces_balance_the_preload() {
+    let tmp = tempfile::tempdir().unwrap();
+    for name in ["01_maxwell_vgroove_steel.toml", "06_kelvin_steel.toml"] {
+        let html = tmp.path().join(format!("{name}.html"));
+        let (ok, _, err) = kinrepro(&[
+            "study",
+            scene(name).to_str().unwrap(),
+            "--samples",
+            "10",
+            "--html",
+            html.to_str().unwrap(),
+        ]);
+        assert!(ok, "{err}");
+        let text = std::fs::read_to_string(&html).unwrap();
+        let mut sum = [0.0f64; 3];
+        for view in ["top", "side"] {
+            for b in 1..=3 {
+                let id = format!("id=\"d1-b{b}-{view}\"");
+                let start = text.find(&id).unwrap();
+                let fig = &text[start..start + text[start..].find("</figure>").unwrap()];
+                let (n_per_px, arrows) = force_arrows(fig);
+                for (dx, dy) in arrows {
+                    if view == "top" {
+                        sum[0] += dx * n_per_px;
+                        sum[1] -= dy * n_per_px;
+                    } else {
+                        sum[2] -= dy * n_per_px;
+                    }
+                }
+            }
+        }
+        let fp = 20.0;
+        assert!(
+            sum[0].abs() < 2e-3 * fp && sum[1].abs() < 2e-3 * fp,
+            "{name}: horizontal sum {sum:?}"
+        );
+        assert!(
+            (sum[2] / fp - 1.0).abs() < 2e-3,
+            "{name}: vertical sum {} N vs the preload {fp} N",
+            sum[2]
+        );
+    }
+}
+
+/// Newtons per pixel (from the force bar and its label) and the (dx, dy)
+/// pixel vectors of the force arrows of one drawing.
+fn force_arrows(fig: &str) -> (f64, Vec<(f64, f64)>) {
+    let num = |el: &str, k: &str| -> f64 {
+        let key = format!(" {k}=\"");
+        let i = el.find(&key).unwrap() + key.len();
+        el[i..].split('"').next().unwrap().parse().unwrap()
+    };
+    let mut arrows = Vec::new();
+    let mut bar = None;
+    for (i, _) in fig.match_indices("<line ") {
+        let el = &fig[i..i + fig[i..].find('>').unwrap()];
+        if !el.contains("stroke=\"#e69f00\"") {
+            continue;
+        }
+        let (dx, dy) = (num(el, "x2") - num(el, "x1"), num(el, "y2") - num(el, "y1"));
+        if el.contains("marker-end") {
+            arrows.push((dx, dy));
+        } else {
+            // The force bar: `<line ...><text ...>F N</text>`.
+            let rest = &fig[i..];
+            let t = rest.find("<text").unwrap();
+            let label =
+                &rest[t + rest[t..].find('>').unwrap() + 1..t + rest[t..].find("</text>").unwrap()];
+            let newtons: f64 = label.trim_end_matches(" N").parse().unwrap();
+            bar = Some(newtons / dx);
+        }
+    }
+    (bar.expect("a force bar"), arrows)
+}
