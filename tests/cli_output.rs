@@ -505,3 +505,32 @@ fn a_streamed_mc_study_equals_its_merged_shards_and_writes_its_csv() {
     assert!(ok, "{err}");
     assert_eq!(merged, one, "merged shards differ from one streamed run");
 }
+
+/// A written output file gets an ordinary file's mode (what `File::create`
+/// gives under the same umask), not a private temporary file's 0600.
+#[cfg(unix)]
+#[test]
+fn output_files_have_the_mode_of_an_ordinary_file() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let plain = dir.path().join("plain.txt");
+    std::fs::File::create(&plain).unwrap();
+    let want = std::fs::metadata(&plain).unwrap().permissions().mode() & 0o777;
+    let out = dir.path().join("out");
+    let out_s = out.to_str().unwrap();
+    let s = s01();
+    let (ok, _, err) = kinrepro(&[
+        "study",
+        &s,
+        "--sampler",
+        "mc",
+        "--samples",
+        "8",
+        "--out",
+        out_s,
+    ]);
+    assert!(ok, "{err}");
+    let file = out.join("samples_01_01_maxwell_vgroove_steel.csv");
+    let got = std::fs::metadata(&file).unwrap().permissions().mode() & 0o777;
+    assert_eq!(got, want, "mode {got:o}, File::create gives {want:o}");
+}

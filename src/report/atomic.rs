@@ -84,9 +84,17 @@ pub fn temp_next_to(target: &Path, suffix: &str) -> Result<NamedTempFile, WriteE
     let name = target
         .file_name()
         .map_or("kinrepro".into(), |n| n.to_string_lossy().into_owned());
-    tempfile::Builder::new()
-        .prefix(&format!(".{name}."))
-        .suffix(suffix)
+    let prefix = format!(".{name}.");
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(suffix);
+    // An ordinary file's mode (0666 less the umask), not the 0600 of a
+    // private temporary file: the output is shared like any other file.
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        builder.permissions(std::fs::Permissions::from_mode(0o666));
+    }
+    builder
         .tempfile_in(dir)
         .map_err(|e| WriteError::io(target, e))
 }

@@ -16,8 +16,8 @@ use std::fmt::Display;
 
 use kinrepro::assembly::AssemblyError;
 use kinrepro::contact::ContactError;
-use kinrepro::explore::ExploreError;
 use kinrepro::contact::history::{HistoryCsvError, HistoryError};
+use kinrepro::explore::ExploreError;
 use kinrepro::fe::FeError;
 use kinrepro::material::MaterialError;
 use kinrepro::report::analysis::ReportError;

@@ -46,7 +46,13 @@ pub fn report(args: ReportArgs) -> Result<(), CliError> {
         .iter()
         .map(|p| load_study(p))
         .collect::<Result<Vec<_>, _>>()?;
-    write_html(studies, Vec::new(), args.reference.as_deref(), &args.out, args.force)
+    write_html(
+        studies,
+        Vec::new(),
+        args.reference.as_deref(),
+        &args.out,
+        args.force,
+    )
 }
 
 /// `study --html FILE`: the report of the study just run.

@@ -126,11 +126,7 @@ pub fn sweep(args: SweepArgs) -> Result<(), CliError> {
     let samples = kinrepro::study::runner::design_for(&base, &opts)
         .context(&file)?
         .n;
-    let share = opts
-        .shard
-        .range(points)
-        .context("--shard")?
-        .len();
+    let share = opts.shard.range(points).context("--shard")?.len();
     set_jobs(args.jobs, share * samples)?;
     let bar = super::study::progress(share * samples)?;
     let report = run(&spec, &base, &opts, args.pareto_point.as_deref(), &|| {
@@ -139,8 +135,7 @@ pub fn sweep(args: SweepArgs) -> Result<(), CliError> {
     bar.finish_and_clear();
     print_sweep(&report, args.format)?;
     if let Some(dir) = &args.out {
-        for f in kinrepro::report::sweep_plot::write_charts(&report, dir, args.force)?
-        {
+        for f in kinrepro::report::sweep_plot::write_charts(&report, dir, args.force)? {
             eprintln!("wrote {f}");
         }
     }
