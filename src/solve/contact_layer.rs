@@ -18,9 +18,11 @@
 
 use nalgebra::{Matrix3, Vector3};
 
+use crate::assembly::geometry::closed_form;
 use crate::assembly::{BodyPose, ContactGeometry, Coupling};
 use crate::contact::{
-    Friction, SlipState, TangentialInput, TangentialResponse, TangentialState, tangential_tensor,
+    Friction, SlipState, TangentialInput, TangentialLaw, TangentialResponse, TangentialState,
+    tangential_tensor,
 };
 use crate::scene::SurfaceGeometry;
 
@@ -47,7 +49,7 @@ impl ContactEval {
 }
 
 /// Evaluate contact `i` of `coupling` at `pose`, from the committed pose
-/// and tangential state.
+/// and tangential state, with the geometry from parry.
 pub fn evaluate(
     coupling: &Coupling,
     i: usize,
@@ -56,8 +58,45 @@ pub fn evaluate(
     committed: &TangentialState,
     friction: Friction,
 ) -> ContactEval {
-    let contact = &coupling.contacts[i];
     let g = coupling.geometry(i, pose);
+    evaluate_at(coupling, i, g, pose, committed_pose, committed, friction)
+}
+
+/// Where the contact geometry of an evaluation comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GeometrySource {
+    /// parry's contact query ([`Coupling::geometry`]).
+    Parry,
+    /// The closed forms of `assembly::geometry` (plane, cylinder, sphere),
+    /// which parry's exact paths match to ~1e-17 m.
+    ClosedForm,
+}
+
+impl GeometrySource {
+    /// Geometry of contact `i` at `pose`.
+    pub fn geometry(self, coupling: &Coupling, i: usize, pose: &BodyPose) -> ContactGeometry {
+        match self {
+            GeometrySource::Parry => coupling.geometry(i, pose),
+            GeometrySource::ClosedForm => {
+                let c = &coupling.contacts[i];
+                let ball = &coupling.balls[c.ball];
+                closed_form(&c.surface, &pose.apply(&ball.centre), ball.radius)
+            }
+        }
+    }
+}
+
+/// [`evaluate`] with the geometry `g` of the contact at `pose` given.
+pub fn evaluate_at(
+    coupling: &Coupling,
+    i: usize,
+    g: ContactGeometry,
+    pose: &BodyPose,
+    committed_pose: &BodyPose,
+    committed: &TangentialState,
+    friction: Friction,
+) -> ContactEval {
+    let contact = &coupling.contacts[i];
     let approach = -g.gap;
     let hertz = &contact.law.hertz;
     // Hertz in series with the support compliance (`contact::series`).
@@ -77,23 +116,34 @@ pub fn evaluate(
     } else {
         Matrix3::zeros()
     };
-    // Mindlin-Deresiewicz: the equal-area radius and the shape K_t / (8 G* sqrt(ab)).
-    let [a, b] = hertz.semi_axes(fn_);
-    let shape = law
-        .mindlin
-        .map(|c| c / (8.0 * law.g_star * hertz.axis_ratio.sqrt()));
+    // Mindlin-Deresiewicz: the equal-area radius and the shape K_t / (8 G* sqrt(ab))
+    // (the Coulomb law reads neither: they are left at zero for it).
+    let tangential_law = coupling.scene.friction.tangential_law;
+    let (contact_radius, mindlin_shape) = match tangential_law {
+        TangentialLaw::Coulomb => (0.0, Matrix3::zeros()),
+        TangentialLaw::MindlinDeresiewicz => {
+            let [a, b] = hertz.semi_axes(fn_);
+            let shape = law
+                .mindlin
+                .map(|c| c / (8.0 * law.g_star * hertz.axis_ratio.sqrt()));
+            (
+                (a * b).sqrt(),
+                tangential_tensor(shape, &g.normal, &major_axis),
+            )
+        }
+    };
     let input = TangentialInput {
         normal: g.normal,
         du,
         normal_force: fn_,
         stiffness: kt,
         d_stiffness_d_fn: dkt,
-        contact_radius: (a * b).sqrt(),
+        contact_radius,
         g_star: law.g_star,
-        mindlin_shape: tangential_tensor(shape, &g.normal, &major_axis),
+        mindlin_shape,
         friction,
     };
-    let mut tangential = committed.update(coupling.scene.friction.tangential_law, &input);
+    let mut tangential = committed.update(tangential_law, &input);
     tangential.state.normal_force = fn_;
     let n = g.normal;
     // d(approach) = -n . dp, so d(F_n n) = -k_n n n^T dp and

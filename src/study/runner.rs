@@ -157,14 +157,6 @@ fn replicated(spec: DesignSpec, replicates: Option<usize>) -> Result<DesignSpec,
     }
 }
 
-/// Static coefficients of one design row.
-pub fn mu_of_row(coupling: &Coupling, row: &[f64]) -> Vec<f64> {
-    let f = &coupling.scene.friction;
-    row.iter()
-        .map(|u| f.mu_static + f.spread * (2.0 * u - 1.0))
-        .collect()
-}
-
 /// Prefix of the interchangeability outputs (`interchange/<point>/<dof>`).
 pub const INTERCHANGE_PREFIX: &str = "interchange/";
 

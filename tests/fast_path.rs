@@ -1,0 +1,115 @@
+//! The uniform fast path of the quasi-static seating against the adaptive
+//! path (today's algorithm, parry geometry): for every bundled scene and
+//! 1000 Monte Carlo friction vectors (mu_s uniform in mu0 +- spread per
+//! contact, drawn here with ChaCha8, not by the study code), the fast path
+//! either declines or gives the adaptive path's pose (to the rounding
+//! floor of the adaptive path itself, [`TOLERANCE`]), after as many
+//! increments.
+//!
+//! "Relative" is relative to the seating's own motion: a translation
+//! component against the largest translation component D of the adaptive
+//! seating, a rotation component against D / L (L the coupling radius, so
+//! that a rotation error is compared as the displacement it causes at the
+//! balls). Comparing a component against itself is meaningless where it
+//! vanishes by symmetry (y of scene 01 is 1e-12 m beside z = 6e-7 m).
+
+mod common;
+use common::load;
+
+use kinrepro::assembly::Coupling;
+use kinrepro::solve::quasistatic::{seat, seat_adaptive};
+use kinrepro::solve::{PointPose, Seating, SeatingPath, SolverOptions};
+use nalgebra::Vector3;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+const SCENES: [&str; 7] = [
+    "01_maxwell_vgroove_steel.toml",
+    "02_maxwell_pins_steel.toml",
+    "03_maxwell_pins_sic.toml",
+    "04_maxwell_balls_steel.toml",
+    "05_maxwell_balls_sic.toml",
+    "06_kelvin_steel.toml",
+    "07_kelvin_sic.toml",
+];
+
+/// Relative agreement required in every pose component. Not the issue's
+/// 1e-12: the adaptive path itself moves by ~1e-11 of its motion when every
+/// mu moves by one ulp (measured below, printed with --nocapture): the
+/// tangential increment du is a difference of positions ~0.04 m that
+/// resolves ~1e-8 m steps to ~1e-10 relative. The closed-form geometry
+/// differs from parry's by such roundings, so the fast path can agree only
+/// to that floor; 1e-10 is a few times the floor (measured worst 7.5e-11).
+const TOLERANCE: f64 = 1e-10;
+
+/// The largest relative difference of the six pose components of two
+/// seatings (module docs: against the seating's own motion).
+fn difference(c: &Coupling, a: &Seating, b: &Seating) -> f64 {
+    let at = |s: &Seating| PointPose::between(&c.touching_pose, &s.pose, &Vector3::zeros());
+    let (a, b) = (at(a).components(), at(b).components());
+    let d = a[..3].iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let length = c.length_scale();
+    (0..6)
+        .map(|k| {
+            let scale = if k < 3 { d } else { d / length };
+            (a[k] - b[k]).abs() / scale
+        })
+        .fold(0.0, f64::max)
+}
+
+/// (served by the fast path, largest relative difference, largest
+/// difference of the adaptive path under a one-ulp nudge of mu).
+fn compare(name: &str, samples: usize) -> (usize, f64, f64) {
+    let c = load(name);
+    let f = &c.scene.friction;
+    let opts = SolverOptions::default();
+    let mut rng = ChaCha8Rng::seed_from_u64(16);
+    let (mut served, mut worst) = (0, 0.0f64);
+    let mut noise = 0.0f64;
+    for _ in 0..samples {
+        let mu: Vec<f64> = (0..c.contacts.len())
+            .map(|_| f.mu_static + f.spread * rng.random_range(-1.0..1.0))
+            .collect();
+        let reference = seat_adaptive(&c, &mu, &opts).unwrap();
+        // The adaptive path's own rounding noise: mu nudged by one ulp.
+        let nudged: Vec<f64> = mu.iter().map(|m| m * (1.0 + f64::EPSILON)).collect();
+        let again = seat_adaptive(&c, &nudged, &opts).unwrap();
+        noise = noise.max(difference(&c, &reference, &again));
+        let fast = seat(&c, &mu, &opts).unwrap();
+        assert_eq!(reference.path, SeatingPath::Adaptive);
+        if fast.path == SeatingPath::Adaptive {
+            continue;
+        }
+        assert_eq!(fast.path, SeatingPath::Uniform);
+        served += 1;
+        let rel = difference(&c, &reference, &fast);
+        worst = worst.max(rel);
+        assert!(
+            rel <= TOLERANCE,
+            "{name} mu {mu:?}: fast {:?} vs adaptive {:?} ({rel:.2e} relative)",
+            fast.pose,
+            reference.pose
+        );
+        assert_eq!(fast.increments, reference.increments, "{name} mu {mu:?}");
+    }
+    (served, worst, noise)
+}
+
+#[test]
+fn the_fast_path_gives_the_adaptive_answer_or_declines() {
+    for (i, name) in SCENES.iter().enumerate() {
+        let samples = 1000;
+        let (served, worst, noise) = compare(name, samples);
+        let share = served as f64 / samples as f64;
+        println!(
+            "{name}: fast path served {served} / {samples}, largest difference {worst:.2e}; \
+             the adaptive path moves by {noise:.2e} when mu moves by one ulp"
+        );
+        if i < 5 {
+            assert!(
+                share >= 0.95,
+                "{name}: fast path served only {served} / {samples}"
+            );
+        }
+    }
+}
