@@ -60,6 +60,25 @@ enum Verdict {
     Stop(SolveError),
 }
 
+/// Accept an increment: the trial evaluations and states become the
+/// committed ones. Returns the increment's twist and its length in s.
+fn commit(
+    w: &mut Walk,
+    trial: &mut Vec<ContactEval>,
+    new_pose: BodyPose,
+    s_next: f64,
+) -> (Vector6<f64>, f64) {
+    for (st, e) in w.states.iter_mut().zip(trial.iter()) {
+        st.clone_from(&e.tangential.state);
+    }
+    let step = (twist_between(&w.pose, &new_pose), s_next - w.s);
+    w.pose = new_pose;
+    std::mem::swap(&mut w.evals, trial);
+    w.accepted += 1;
+    w.s = s_next;
+    step
+}
+
 /// Whether a contact that carried load changed between stick and slip. A
 /// change is located by halving; from zero load it is not: Hertz force,
 /// Mindlin stiffness and the Coulomb limit all scale with the same power of
@@ -110,26 +129,7 @@ impl Solver<'_> {
         let mut last_step: Option<(Vector6<f64>, f64)> = None;
         while w.s < 1.0 {
             let s_next = if w.s + h > 1.0 - 1e-12 { 1.0 } else { w.s + h };
-            let (lambda, extra) = self.loads_at(s_next);
-            // Secant predictor from the last accepted increment (the path is
-            // nearly straight in s), the frictionless one at the start of a
-            // seating, the start pose at the start of a load path.
-            let dx = match last_step {
-                Some((dx, ds)) => dx * ((s_next - w.s) / ds),
-                None if seating => self.x1 * (s_next - w.s),
-                None => Vector6::zeros(),
-            };
-            let predictor = w
-                .pose
-                .moved(&dx.fixed_rows::<3>(0).into(), &dx.fixed_rows::<3>(3).into());
-            // The increment's duration on the ramp (t = s T_ramp): the time
-            // base of the slip velocity of the decay friction law.
-            let loads = Loads {
-                lambda,
-                extra,
-                duration: (s_next - w.s) * self.ramp_time,
-                s: s_next,
-            };
+            let (predictor, loads) = self.increment(&w, last_step, s_next, seating);
             let can_halve = h > h_min * 1.5;
             let step = self.newton(&w.pose, &w.states, predictor, &loads, &mut trial);
             let verdict = match step {
@@ -138,7 +138,8 @@ impl Solver<'_> {
                     if self.uniform {
                         return Ok(None);
                     }
-                    return self.dead_end(&ctx, w, s_next, lambda.max(extra), residual);
+                    let load = loads.lambda.max(loads.extra);
+                    return self.dead_end(&ctx, w, s_next, load, residual);
                 }
                 Step::Converged(new_pose, its) => {
                     w.iterations += its;
@@ -159,14 +160,7 @@ impl Solver<'_> {
                     let Step::Converged(new_pose, _) = step else {
                         unreachable!("only a converged increment is accepted")
                     };
-                    for (st, e) in w.states.iter_mut().zip(&trial) {
-                        st.clone_from(&e.tangential.state);
-                    }
-                    last_step = Some((twist_between(&w.pose, &new_pose), s_next - w.s));
-                    w.pose = new_pose;
-                    std::mem::swap(&mut w.evals, &mut trial);
-                    w.accepted += 1;
-                    w.s = s_next;
+                    last_step = Some(commit(&mut w, &mut trial, new_pose, s_next));
                     if !changed {
                         h = (2.0 * h).min(nominal);
                     }
@@ -174,6 +168,37 @@ impl Solver<'_> {
             }
         }
         Ok(Some(self.end(w)))
+    }
+
+    /// The predictor and the loads of the increment from `w.s` to `s_next`.
+    /// Secant predictor from the last accepted increment (the path is
+    /// nearly straight in s), the frictionless one at the start of a
+    /// seating, the start pose at the start of a load path. The increment
+    /// lasts (s_next - s) T_ramp (t = s T_ramp): the time base of the slip
+    /// velocity of the decay friction law.
+    fn increment(
+        &self,
+        w: &Walk,
+        last_step: Option<(Vector6<f64>, f64)>,
+        s_next: f64,
+        seating: bool,
+    ) -> (BodyPose, Loads) {
+        let (lambda, extra) = self.loads_at(s_next);
+        let dx = match last_step {
+            Some((dx, ds)) => dx * ((s_next - w.s) / ds),
+            None if seating => self.x1 * (s_next - w.s),
+            None => Vector6::zeros(),
+        };
+        let predictor = w
+            .pose
+            .moved(&dx.fixed_rows::<3>(0).into(), &dx.fixed_rows::<3>(3).into());
+        let loads = Loads {
+            lambda,
+            extra,
+            duration: (s_next - w.s) * self.ramp_time,
+            s: s_next,
+        };
+        (predictor, loads)
     }
 
     /// A converged increment that needs no halving: `Some(Stop)` if the
