@@ -34,15 +34,15 @@
 //! model agree, so the 1e-12 cannot be asked of any other code path.
 //!
 //! The argument does not use the contact law: it holds for Coulomb and
-//! Mindlin-Deresiewicz and any support compliance, because the history
-//! integrals are the adaptive path's own (same increments, same midpoint
-//! stiffness, same return mapping). The decay friction law is declined all
-//! the same: its slip velocity, a difference of forces over an increment,
-//! amplifies the geometry's rounding a further step (measured 2e-10 of the
-//! motion, above the tolerance of tests/fast_path.rs). The one way the
-//! answers could part is a stick/slip decision or a Newton stop that lies
-//! within rounding of its threshold, so that one path halves and the other
-//! does not; tests/fast_path.rs would see it (none in 7000 seatings).
+//! Mindlin-Deresiewicz, the switch and the decay friction law, and any
+//! support compliance, because the history integrals are the adaptive
+//! path's own (same increments, same midpoint stiffness, same return
+//! mapping). The decay law amplifies the rounding a further step (its slip
+//! velocity is a difference of forces over an increment): measured 2e-10 of
+//! the motion there. The one way the answers could part is a stick/slip
+//! decision or a Newton stop that lies within rounding of its threshold, so
+//! that one path halves and the other does not; tests/fast_path.rs would
+//! see it (none in 7000 seatings).
 //!
 //! # Why not a direct solve of the final equilibrium
 //!
@@ -63,7 +63,7 @@ use super::path::End;
 use super::solver::{Program, Solver};
 use super::virgin_states;
 use crate::assembly::Coupling;
-use crate::contact::{Friction, FrictionLaw};
+use crate::contact::Friction;
 use crate::solve::SolverOptions;
 use crate::solve::contact_layer::GeometrySource;
 
@@ -73,9 +73,6 @@ pub(super) fn seat(
     friction: &[Friction],
     opts: &SolverOptions,
 ) -> Option<End> {
-    if coupling.scene.friction.law != FrictionLaw::Switch {
-        return None;
-    }
     let mut solver = Solver::adaptive(coupling, friction.to_vec(), *opts, Program::Seat);
     solver.geometry = GeometrySource::ClosedForm;
     solver.uniform = true;
