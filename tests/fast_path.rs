@@ -148,3 +148,21 @@ fn the_fast_path_serves_mindlin_deresiewicz_and_the_decay_law() {
         }
     }
 }
+
+/// `run --json` names the path: the fast one for a bundled scene at its
+/// nominal friction (served above), the dynamic solver as such.
+#[test]
+fn run_json_says_which_path_seated() {
+    let scene = common::scene("01_maxwell_vgroove_steel.toml");
+    let scene = scene.to_str().unwrap();
+    for (extra, expected) in [(None, "uniform"), (Some("dynamic"), "dynamic")] {
+        let mut args = vec!["run", scene, "--json"];
+        if let Some(solver) = extra {
+            args.extend(["--solver", solver]);
+        }
+        let (ok, out, err) = common::kinrepro(&args);
+        assert!(ok, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        assert_eq!(v["seating_path"], expected, "{args:?}");
+    }
+}
