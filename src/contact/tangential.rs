@@ -31,7 +31,7 @@ use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
 
 use super::friction::{FrictionLaw, SlideInput, Sliding};
-use super::mindlin::project_tangential;
+use super::mindlin::{PrincipalStiffness, project_tangential};
 use super::mindlin_deresiewicz::{self, SpringRow};
 
 /// Which tangential law a contact follows (scene key `tangential_law`).
@@ -221,6 +221,19 @@ impl TangentialState {
 
     /// Evaluate the chosen law for a trial increment. Pure: `self` is not changed.
     pub fn update(&self, law: TangentialLaw, input: &TangentialInput) -> TangentialResponse {
+        self.update_with(law, input, None)
+    }
+
+    /// [`Self::update`] with K_t (`input.stiffness`) also given by its
+    /// principal values and axes: the Coulomb return mapping then projects
+    /// without an eigen-decomposition, in closed form for a circular
+    /// contact ([`PrincipalStiffness::project`], the same map).
+    pub fn update_with(
+        &self,
+        law: TangentialLaw,
+        input: &TangentialInput,
+        principal: Option<&PrincipalStiffness>,
+    ) -> TangentialResponse {
         let n = input.normal;
         if input.normal_force <= 0.0 {
             // No normal force, no friction; history is lost when a contact opens.
@@ -236,7 +249,7 @@ impl TangentialState {
         let proj = Matrix3::identity() - n * n.transpose();
         let du = proj * input.du;
         match law {
-            TangentialLaw::Coulomb => coulomb(&old, &du, input),
+            TangentialLaw::Coulomb => coulomb(&old, &du, input, principal),
             TangentialLaw::MindlinDeresiewicz => {
                 mindlin_deresiewicz::update(&old, &proj, &du, input)
             }
@@ -253,6 +266,7 @@ fn coulomb(
     old: &TangentialState,
     du: &Vector3<f64>,
     input: &TangentialInput,
+    principal: Option<&PrincipalStiffness>,
 ) -> TangentialResponse {
     let fr = input.friction;
     let trial = old.force + input.stiffness * du;
@@ -284,7 +298,7 @@ fn coulomb(
             d_force_d_du: input.stiffness,
             d_force_d_fn: input.d_stiffness_d_fn * du,
         },
-        Some(s) => slide_response(old, &trial, &input.stiffness, du, input, &s),
+        Some(s) => slide_response(old, &trial, du, input, &s, principal),
     }
 }
 
@@ -300,15 +314,18 @@ fn coulomb(
 fn slide_response(
     old: &TangentialState,
     trial: &Vector3<f64>,
-    k: &Matrix3<f64>,
     du: &Vector3<f64>,
     input: &TangentialInput,
     s: &Sliding,
+    principal: Option<&PrincipalStiffness>,
 ) -> TangentialResponse {
     let fn_ = input.normal_force;
-    let dk = &input.d_stiffness_d_fn;
+    let (k, dk) = (&input.stiffness, &input.d_stiffness_d_fn);
     let mu = s.mu;
-    let (force, d_trial, d_limit) = project_tangential(k, &input.normal, trial, mu * fn_);
+    let (force, d_trial, d_limit) = match principal {
+        Some(p) => p.project(&input.normal, trial, mu * fn_),
+        None => project_tangential(k, &input.normal, trial, mu * fn_),
+    };
     let t = trial.normalize();
     let dmu_dfn = s.d_mu_d_trial * t.dot(&(dk * du)) + s.d_mu_d_fn + s.d_mu_d_k * t.dot(&(dk * t));
     let dt_ddu = k.transpose() * t; // dT/d(du) as a column

@@ -21,8 +21,8 @@ use nalgebra::{Matrix3, Vector3};
 use crate::assembly::geometry::closed_form;
 use crate::assembly::{BodyPose, ContactGeometry, Coupling};
 use crate::contact::{
-    Friction, SlipState, TangentialInput, TangentialLaw, TangentialResponse, TangentialState,
-    tangential_tensor,
+    Friction, PrincipalStiffness, SlipState, TangentialInput, TangentialLaw, TangentialResponse,
+    TangentialState, tangential_tensor,
 };
 use crate::scene::SurfaceGeometry;
 
@@ -109,7 +109,9 @@ pub fn evaluate_at(
         _ => Vector3::zeros(), // circular: K_t is isotropic
     };
     let law = &contact.law;
-    let kt = tangential_tensor(law.tangential_stiffness_axes(f_mid), &g.normal, &major_axis);
+    let principal =
+        PrincipalStiffness::new(law.tangential_stiffness_axes(f_mid), &g.normal, &major_axis);
+    let kt = principal.tensor(&g.normal);
     // dK_t/dF_n = K_t / (3 F_mid) d(F_mid)/dF_n, with d(F_mid)/dF_n = 1/2.
     let dkt = if f_mid > 0.0 {
         kt / (6.0 * f_mid)
@@ -143,7 +145,7 @@ pub fn evaluate_at(
         mindlin_shape,
         friction,
     };
-    let mut tangential = committed.update(tangential_law, &input);
+    let mut tangential = committed.update_with(tangential_law, &input, Some(&principal));
     tangential.state.normal_force = fn_;
     let n = g.normal;
     // d(approach) = -n . dp, so d(F_n n) = -k_n n n^T dp and
