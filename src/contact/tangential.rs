@@ -246,12 +246,14 @@ impl TangentialState {
             };
         }
         let old = self.rotated_to(&n);
-        let proj = Matrix3::identity() - n * n.transpose();
-        let du = proj * input.du;
         match law {
-            TangentialLaw::Coulomb => coulomb(&old, &du, input, principal),
+            TangentialLaw::Coulomb => {
+                let du = input.du - n * n.dot(&input.du);
+                coulomb(&old, &du, input, principal)
+            }
             TangentialLaw::MindlinDeresiewicz => {
-                mindlin_deresiewicz::update(&old, &proj, &du, input)
+                let proj = Matrix3::identity() - n * n.transpose();
+                mindlin_deresiewicz::update(&old, &proj, &(proj * input.du), input)
             }
         }
     }
@@ -271,8 +273,14 @@ fn coulomb(
     let fr = input.friction;
     let trial = old.force + input.stiffness * du;
     let norm = trial.norm();
-    let t = if norm > 0.0 { trial / norm } else { trial };
-    let k_along = t.dot(&(input.stiffness * t));
+    // The switch law reads no stiffness (`friction::slide`).
+    let k_along = match fr.law {
+        FrictionLaw::Switch => 0.0,
+        FrictionLaw::Decay { .. } => {
+            let t = if norm > 0.0 { trial / norm } else { trial };
+            t.dot(&(input.stiffness * t))
+        }
+    };
     let sliding = super::friction::slide(&SlideInput {
         mu_s: fr.mu_s,
         mu_d: fr.mu_d,
@@ -326,9 +334,21 @@ fn slide_response(
         Some(p) => p.project(&input.normal, trial, mu * fn_),
         None => project_tangential(k, &input.normal, trial, mu * fn_),
     };
-    let t = trial.normalize();
-    let dmu_dfn = s.d_mu_d_trial * t.dot(&(dk * du)) + s.d_mu_d_fn + s.d_mu_d_k * t.dot(&(dk * t));
-    let dt_ddu = k.transpose() * t; // dT/d(du) as a column
+    let dk_du = dk * du;
+    let (d_force_d_du, d_force_d_fn) =
+        if s.d_mu_d_trial == 0.0 && s.d_mu_d_fn == 0.0 && s.d_mu_d_k == 0.0 {
+            // A constant coefficient (the switch law, a sliding decay contact).
+            (d_trial * k, mu * d_limit + d_trial * dk_du)
+        } else {
+            let t = trial.normalize();
+            let dmu_dfn =
+                s.d_mu_d_trial * t.dot(&dk_du) + s.d_mu_d_fn + s.d_mu_d_k * t.dot(&(dk * t));
+            let dt_ddu = k.transpose() * t; // dT/d(du) as a column
+            (
+                d_trial * k + (d_limit * (fn_ * s.d_mu_d_trial)) * dt_ddu.transpose(),
+                (mu + fn_ * dmu_dfn) * d_limit + d_trial * dk_du,
+            )
+        };
     TangentialResponse {
         force,
         state: TangentialState {
@@ -339,8 +359,8 @@ fn slide_response(
             ..*old
         },
         slip: SlipState::Slip,
-        d_force_d_du: d_trial * k + (d_limit * (fn_ * s.d_mu_d_trial)) * dt_ddu.transpose(),
-        d_force_d_fn: (mu + fn_ * dmu_dfn) * d_limit + d_trial * (dk * du),
+        d_force_d_du,
+        d_force_d_fn,
     }
 }
 

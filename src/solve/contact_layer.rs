@@ -114,7 +114,7 @@ pub fn evaluate_at(
     let kt = principal.tensor(&g.normal);
     // dK_t/dF_n = K_t / (3 F_mid) d(F_mid)/dF_n, with d(F_mid)/dF_n = 1/2.
     let dkt = if f_mid > 0.0 {
-        kt / (6.0 * f_mid)
+        kt * (1.0 / (6.0 * f_mid))
     } else {
         Matrix3::zeros()
     };
@@ -149,9 +149,9 @@ pub fn evaluate_at(
     tangential.state.normal_force = fn_;
     let n = g.normal;
     // d(approach) = -n . dp, so d(F_n n) = -k_n n n^T dp and
-    // d(F_t) = T dp + (dF_t/dF_n)(-k_n n^T dp); the force on the body is F_n n - F_t.
-    let d_fn = -kn * n.transpose();
-    let stiffness = n * d_fn - (tangential.d_force_d_du + tangential.d_force_d_fn * d_fn);
+    // d(F_t) = T dp + (dF_t/dF_n)(-k_n n^T dp); the force on the body is F_n n - F_t:
+    // K = -k_n (n - dF_t/dF_n) n^T - T.
+    let stiffness = (tangential.d_force_d_fn - n) * (kn * n).transpose() - tangential.d_force_d_du;
     ContactEval {
         geometry: g,
         approach,

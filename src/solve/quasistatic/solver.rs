@@ -3,7 +3,7 @@
 //! [`super`]). Allocation-free: the contact evaluations go into a buffer
 //! the caller owns, the 6x6 system lives on the stack.
 
-use std::ops::AddAssign;
+use std::ops::{AddAssign, SubAssign};
 
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
@@ -258,8 +258,13 @@ impl<'a> Solver<'a> {
                 + e.geometry.normal * self.coupling.balls[self.coupling.contacts[i].ball].radius;
             add_point_force(&e.stiffness, &e.force, &e.geometry.point, &centre);
         }
+        // A load of fixed direction at a point of the body (K = 0): moment
+        // rows only, d(p x f) = dp x f = -[f]x (v - [p]x w).
         for (f, p) in point_forces {
-            add_point_force(&Matrix3::zeros(), f, p, p);
+            let fx = f.cross_matrix();
+            j.fixed_view_mut::<3, 3>(3, 0).sub_assign(&fx);
+            j.fixed_view_mut::<3, 3>(3, 3)
+                .add_assign(&(fx * p.cross_matrix()));
         }
         j
     }
