@@ -75,14 +75,56 @@ pub enum GeometrySource {
 impl GeometrySource {
     /// Geometry of contact `i` at `pose`.
     pub fn geometry(self, coupling: &Coupling, i: usize, pose: &BodyPose) -> ContactGeometry {
+        let centre = coupling.balls[coupling.contacts[i].ball].centre;
+        self.geometry_with_centre(coupling, i, pose, &pose.apply(&centre))
+    }
+
+    /// [`Self::geometry`] with the world position of the contact's ball
+    /// centre at `pose` given (shared by the contacts of one ball).
+    pub fn geometry_with_centre(
+        self,
+        coupling: &Coupling,
+        i: usize,
+        pose: &BodyPose,
+        centre: &Vector3<f64>,
+    ) -> ContactGeometry {
         match self {
             GeometrySource::Parry => coupling.geometry(i, pose),
             GeometrySource::ClosedForm => {
                 let c = &coupling.contacts[i];
-                let ball = &coupling.balls[c.ball];
-                closed_form(&c.surface, &pose.apply(&ball.centre), ball.radius)
+                closed_form(&c.surface, centre, coupling.balls[c.ball].radius)
             }
         }
+    }
+}
+
+/// The rigid motion that takes the moving half from a trial pose T back to
+/// the committed pose T_c, p_c = T_c T^-1 p, written as p_c - p = D p + b
+/// with D = R(dq) - I, dq = q_c q^-1, and b = (t_c - t) - D t. For the unit
+/// quaternion dq = (w, v), R(dq) - I = 2 w [v]x + 2 [v]x^2 (Rodrigues), so
+/// D is formed without the cancellation of R - I: the small displacement
+/// du = p - p_c = -(D p + b) of the contact law keeps the full relative
+/// precision of the rotation and the translation increments.
+#[derive(Debug, Clone, Copy)]
+pub struct Motion {
+    d: Matrix3<f64>,
+    b: Vector3<f64>,
+}
+
+impl Motion {
+    /// The motion from `pose` back to `committed`.
+    pub fn between(pose: &BodyPose, committed: &BodyPose) -> Self {
+        let dq = committed.rotation * pose.rotation.inverse();
+        let (w, v) = (dq.w, dq.imag());
+        let vx = v.cross_matrix();
+        let d = vx * (2.0 * w) + vx * vx * 2.0;
+        let b = (committed.translation - pose.translation) - d * pose.translation;
+        Motion { d, b }
+    }
+
+    /// du = p - p_c of the material point now at `p`.
+    pub fn displacement(&self, p: &Vector3<f64>) -> Vector3<f64> {
+        -(self.d * p + self.b)
     }
 }
 
@@ -96,13 +138,25 @@ pub fn evaluate_at(
     committed: &TangentialState,
     friction: Friction,
 ) -> ContactEval {
+    let du = Motion::between(pose, committed_pose).displacement(&g.point);
+    evaluate_moved(coupling, i, g, du, committed, friction)
+}
+
+/// [`evaluate_at`] with the tangential increment du = p - p_c of the
+/// contact point given (the solver forms [`Motion`] once per pose).
+pub fn evaluate_moved(
+    coupling: &Coupling,
+    i: usize,
+    g: ContactGeometry,
+    du: Vector3<f64>,
+    committed: &TangentialState,
+    friction: Friction,
+) -> ContactEval {
     let contact = &coupling.contacts[i];
     let approach = -g.gap;
     let hertz = &contact.law.hertz;
     // Hertz in series with the support compliance (`contact::series`).
     let (fn_, kn) = contact.normal.force_and_stiffness(approach);
-    let body_point = pose.rotation.inverse() * (g.point - pose.translation);
-    let du = g.point - committed_pose.apply(&body_point);
     let f_mid = 0.5 * (committed.normal_force + fn_);
     let major_axis = match contact.surface {
         SurfaceGeometry::Cylinder { direction, .. } => direction,
@@ -160,5 +214,34 @@ pub fn evaluate_at(
         force: n * fn_ - tangential.force,
         tangential,
         stiffness,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::UnitQuaternion;
+
+    #[test]
+    fn motion_is_the_committed_pose_of_the_material_point() {
+        // du = p - T_c T^-1 p by the two rigid maps applied one after the other.
+        let pose = BodyPose {
+            rotation: UnitQuaternion::from_scaled_axis(Vector3::new(1e-3, -2e-3, 0.5)),
+            translation: Vector3::new(1e-6, 2e-6, -3e-6),
+        };
+        let committed = pose.moved(
+            &Vector3::new(2e-8, -1e-8, 3e-8),
+            &Vector3::new(1e-7, 3e-7, -2e-7),
+        );
+        let motion = Motion::between(&pose, &committed);
+        for p in [
+            Vector3::new(0.04, 0.0, 0.0),
+            Vector3::new(-0.02, 0.035, -0.005),
+        ] {
+            let body = pose.rotation.inverse() * (p - pose.translation);
+            let direct = p - committed.apply(&body);
+            assert!(direct.norm() > 1e-9);
+            assert!((motion.displacement(&p) - direct).norm() < 1e-17, "{p}");
+        }
     }
 }

@@ -11,8 +11,12 @@ use super::load::ExternalLoad;
 use crate::assembly::constraint::frictionless_preload_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
-use crate::solve::contact_layer::{ContactEval, GeometrySource, evaluate_at};
+use crate::solve::contact_layer::{ContactEval, GeometrySource, Motion, evaluate_moved};
 use crate::solve::{ContactResult, SolveError, SolverOptions};
+
+/// Ball centres held on the stack by [`Solver::evaluate_all`] (a kinematic
+/// coupling has three balls; more are placed one by one).
+const MAX_BALLS: usize = 8;
 
 /// A force and the world point it acts at (moving with the body).
 type PointForce = (Vector3<f64>, Vector3<f64>);
@@ -147,18 +151,24 @@ impl<'a> Solver<'a> {
         out: &mut Vec<ContactEval>,
     ) {
         out.clear();
+        let motion = Motion::between(pose, committed_pose);
+        let mut centres = [Vector3::zeros(); MAX_BALLS];
+        let balls = &self.coupling.balls;
+        for (c, ball) in centres.iter_mut().zip(balls) {
+            *c = pose.apply(&ball.centre);
+        }
         for (i, state) in states.iter().enumerate() {
-            let g = self.geometry.geometry(self.coupling, i, pose);
+            let ball = self.coupling.contacts[i].ball;
+            let centre = match centres.get(ball) {
+                Some(c) => *c,
+                None => pose.apply(&balls[ball].centre),
+            };
+            let g = self
+                .geometry
+                .geometry_with_centre(self.coupling, i, pose, &centre);
+            let du = motion.displacement(&g.point);
             let fr = self.friction[i].during(duration);
-            out.push(evaluate_at(
-                self.coupling,
-                i,
-                g,
-                pose,
-                committed_pose,
-                state,
-                fr,
-            ));
+            out.push(evaluate_moved(self.coupling, i, g, du, state, fr));
         }
     }
 
