@@ -166,3 +166,40 @@ fn run_json_says_which_path_seated() {
         assert_eq!(v["seating_path"], expected, "{args:?}");
     }
 }
+
+/// `seating_paths` of a study variant counts every sample seating once:
+/// the counts add up to the samples (twice the samples with tolerances
+/// varied, where each sample also seats the perturbed coupling), the
+/// quasi-static study uses no dynamic seating, and the fast path serves
+/// (it serves every sample of scene 01 above).
+#[test]
+fn study_json_counts_the_seating_paths() {
+    let s01 = common::scene("01_maxwell_vgroove_steel.toml");
+    let tol = common::scene("tolerances_maxwell_vgroove.toml");
+    let cases = [
+        (vec![s01.to_str().unwrap(), "--samples", "30"], 30),
+        (
+            vec![
+                tol.to_str().unwrap(),
+                "--samples",
+                "12",
+                "--vary",
+                "friction,tolerances",
+            ],
+            24,
+        ),
+    ];
+    for (args, seatings) in cases {
+        let mut a = vec!["study"];
+        a.extend(args);
+        a.extend(["--format", "json"]);
+        let (ok, out, err) = common::kinrepro(&a);
+        assert!(ok, "{err}");
+        let json: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let p = &json["variants"][0]["seating_paths"];
+        let count = |k: &str| p[k].as_u64().unwrap();
+        assert_eq!(count("uniform") + count("adaptive"), seatings, "{p}");
+        assert_eq!(count("dynamic"), 0, "{p}");
+        assert!(count("uniform") > 0, "{p}");
+    }
+}

@@ -23,6 +23,7 @@ use thiserror::Error;
 
 use super::StudyError;
 pub use super::inputs::{Input, Tolerances};
+pub use super::paths::{PathTally, SeatingPaths};
 use super::stats::SampleRecord;
 pub use super::variation::{START_CLEARANCE, Sample, StartBounds, Variation, lifted_clear};
 use super::{DesignSpec, Sampler, Shard};
@@ -236,11 +237,21 @@ pub fn run_variant(
     opts: &StudyOptions,
     tick: &(dyn Fn() + Sync),
 ) -> Result<VariantRun, RunError> {
+    run_variant_tallied(coupling, opts, tick, &PathTally::default())
+}
+
+/// [`run_variant`], counting the seating paths in `tally`.
+pub fn run_variant_tallied(
+    coupling: &Coupling,
+    opts: &StudyOptions,
+    tick: &(dyn Fn() + Sync),
+    tally: &PathTally,
+) -> Result<VariantRun, RunError> {
     let (design, range) = shard_design(coupling, opts)?;
     let rows = design
         .range(range.clone())
         .map_err(|source| design_error(coupling, source))?;
-    let records = evaluate_rows(coupling, opts, range.zip(rows).collect(), tick)?;
+    let records = evaluate_rows_tallied(coupling, opts, range.zip(rows).collect(), tick, tally)?;
     Ok(VariantRun {
         design,
         shard: opts.shard,
@@ -313,17 +324,30 @@ pub fn run_chunked(
     tick: &(dyn Fn() + Sync),
     sink: &mut dyn FnMut(Vec<SampleRecord>) -> Result<(), RunError>,
 ) -> Result<DesignSpec, RunError> {
+    run_chunked_tallied(coupling, opts, chunk, tick, sink, &PathTally::default())
+}
+
+/// [`run_chunked`], counting the seating paths in `tally`.
+pub fn run_chunked_tallied(
+    coupling: &Coupling,
+    opts: &StudyOptions,
+    chunk: usize,
+    tick: &(dyn Fn() + Sync),
+    sink: &mut dyn FnMut(Vec<SampleRecord>) -> Result<(), RunError>,
+    tally: &PathTally,
+) -> Result<DesignSpec, RunError> {
     let (design, range) = shard_design(coupling, opts)?;
     let design_err = |source| design_error(coupling, source);
     let mut start = range.start;
     while start < range.end {
         let end = (start + chunk.max(1)).min(range.end);
         let rows = design.range(start..end).map_err(design_err)?;
-        sink(evaluate_rows(
+        sink(evaluate_rows_tallied(
             coupling,
             opts,
             (start..end).zip(rows).collect(),
             tick,
+            tally,
         )?)?;
         start = end;
     }
@@ -341,6 +365,17 @@ pub fn evaluate_rows(
     opts: &StudyOptions,
     rows: Vec<(usize, Vec<f64>)>,
     tick: &(dyn Fn() + Sync),
+) -> Result<Vec<SampleRecord>, RunError> {
+    evaluate_rows_tallied(coupling, opts, rows, tick, &PathTally::default())
+}
+
+/// [`evaluate_rows`], counting the seating paths of the rows in `tally`.
+pub fn evaluate_rows_tallied(
+    coupling: &Coupling,
+    opts: &StudyOptions,
+    rows: Vec<(usize, Vec<f64>)>,
+    tick: &(dyn Fn() + Sync),
+    tally: &PathTally,
 ) -> Result<Vec<SampleRecord>, RunError> {
     let file = coupling.scene.file.clone();
     let var = opts.variation;
@@ -383,6 +418,7 @@ pub fn evaluate_rows(
                 let s = opts
                     .method
                     .seat(c, &sample.mu, &sample.start)
+                    .map(|s| tally.count(s))
                     .map_err(|e| seat_err(index, &sample.mu, e))?;
                 outputs.extend(
                     points
@@ -399,6 +435,7 @@ pub fn evaluate_rows(
                 let s = opts
                     .method
                     .seat(&perturbed, &nominal_mu, &StartPose::touching())
+                    .map(|s| tally.count(s))
                     .map_err(|e| seat_err(index, &nominal_mu, e))?;
                 outputs.extend(
                     points

@@ -6,8 +6,8 @@ use kinrepro::report::study_files::{SamplesCsv, samples_file_name};
 use kinrepro::report::study_stream::{STREAM_ABOVE, StreamStats, streams};
 use kinrepro::study::Shard;
 use kinrepro::study::runner::{
-    StartBounds, StudyOptions, VariantRun, Variation, design_for, recorded_output_names,
-    run_chunked, run_variant,
+    PathTally, StartBounds, StudyOptions, VariantRun, Variation, design_for, recorded_output_names,
+    run_chunked_tallied, run_variant_tallied,
 };
 
 use super::*;
@@ -59,9 +59,12 @@ pub fn study(args: StudyArgs) -> Result<(), String> {
             variants.push(v);
             pending_csv.extend(csv);
         } else {
-            let run = run_variant(c, &opts, &|| bar.inc(1)).map_err(|e| e.to_string())?;
+            let tally = PathTally::default();
+            let run =
+                run_variant_tallied(c, &opts, &|| bar.inc(1), &tally).map_err(|e| e.to_string())?;
             let mut v =
                 VariantReport::new(c, run, &opts).map_err(|e| format!("{}: {e}", c.scene.file))?;
+            v.seating_paths = Some(tally.counts());
             if sobol {
                 let r = kinrepro::study::sensitivity::sobol_run::run_sobol(
                     c,
@@ -141,32 +144,41 @@ fn streamed_variant(
     };
     let mut st = StreamStats::new(names.len());
     let mut failure: Option<String> = None;
-    run_chunked(c, opts, CHUNK, tick, &mut |records| {
-        let step = st
-            .push(&records, &names)
-            .map_err(|e| format!("{file}: {e}"))
-            .and_then(|()| match csv.as_mut() {
-                Some(w) => records.iter().try_for_each(|r| {
-                    w.push(&kinrepro::report::study::StudyRecord {
-                        index: r.index,
-                        physical: opts.variation.sample(c, &r.inputs).physical,
-                        inputs: r.inputs.clone(),
-                        outputs: r.outputs.clone(),
-                    })
-                    .map_err(|e| e.to_string())
-                }),
-                None => Ok(()),
-            });
-        if let Err(e) = step {
-            failure = Some(e);
-            return Err(kinrepro::study::runner::RunError::Options {
-                file: file.clone(),
-                reason: "stopped".into(),
-            });
-        }
-        Ok(())
-    })
+    let tally = PathTally::default();
+    run_chunked_tallied(
+        c,
+        opts,
+        CHUNK,
+        tick,
+        &mut |records| {
+            let step = st
+                .push(&records, &names)
+                .map_err(|e| format!("{file}: {e}"))
+                .and_then(|()| match csv.as_mut() {
+                    Some(w) => records.iter().try_for_each(|r| {
+                        w.push(&kinrepro::report::study::StudyRecord {
+                            index: r.index,
+                            physical: opts.variation.sample(c, &r.inputs).physical,
+                            inputs: r.inputs.clone(),
+                            outputs: r.outputs.clone(),
+                        })
+                        .map_err(|e| e.to_string())
+                    }),
+                    None => Ok(()),
+                });
+            if let Err(e) = step {
+                failure = Some(e);
+                return Err(kinrepro::study::runner::RunError::Options {
+                    file: file.clone(),
+                    reason: "stopped".into(),
+                });
+            }
+            Ok(())
+        },
+        &tally,
+    )
     .map_err(|e| failure.clone().unwrap_or_else(|| e.to_string()))?;
+    v.seating_paths = Some(tally.counts());
     v.set_moment_stats(&st)
         .map_err(|e| format!("{file}: {e}"))?;
     Ok((v, csv))
