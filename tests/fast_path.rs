@@ -203,3 +203,22 @@ fn study_json_counts_the_seating_paths() {
         assert!(count("uniform") > 0, "{p}");
     }
 }
+
+/// A set-up shared by the seatings of a study gives the bits of a fresh
+/// seating (the same predictor and virgin states), on either path.
+#[test]
+fn a_shared_setup_gives_the_same_bits() {
+    use kinrepro::solve::quasistatic::{SeatingSetup, seat_prepared};
+    let opts = SolverOptions::default();
+    for name in [SCENES[0], SCENES[1], SCENES[5]] {
+        let c = load(name);
+        let setup = SeatingSetup::new(&c);
+        for mu in [[0.46, 0.53, 0.51, 0.47, 0.545, 0.455], [0.5; 6], [0.0; 6]] {
+            let fresh = seat(&c, &mu, &opts).unwrap();
+            let shared = seat_prepared(&setup, &mu, &opts).unwrap();
+            assert_eq!(fresh.pose, shared.pose, "{name} {mu:?}");
+            assert_eq!(fresh.path, shared.path, "{name} {mu:?}");
+            assert_eq!(fresh.contacts, shared.contacts, "{name} {mu:?}");
+        }
+    }
+}

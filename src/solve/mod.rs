@@ -352,4 +352,18 @@ impl Method {
             ),
         }
     }
+
+    /// [`Method::seat`] of `setup`'s coupling, reusing the quasi-static
+    /// set-up across the seatings of a study (the same bits).
+    pub fn seat_prepared(
+        &self,
+        setup: &quasistatic::SeatingSetup,
+        mu_s: &[f64],
+        start: &dynamic::StartPose,
+    ) -> Result<Seating, SolveError> {
+        match self {
+            Method::QuasiStatic(o) => quasistatic::seat_prepared(setup, mu_s, o),
+            Method::Dynamic(_) => self.seat(setup.coupling(), mu_s, start),
+        }
+    }
 }

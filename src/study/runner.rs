@@ -30,6 +30,7 @@ use super::{DesignSpec, Sampler, Shard};
 use crate::assembly::{AssemblyError, Coupling};
 
 use crate::solve::dynamic::StartPose;
+use crate::solve::quasistatic::SeatingSetup;
 use crate::solve::{Method, PointPose, SolveError, nominal_mu};
 
 /// Output components per evaluation point (relative to the nominal seating,
@@ -401,23 +402,20 @@ pub fn evaluate_rows_tallied(
         .iter()
         .map(|p| p.position)
         .collect();
+    let setup = SeatingSetup::new(coupling);
     rows.into_par_iter()
         .map(|(index, row)| {
             let sample = var.sample(coupling, &row);
             let mut outputs: Vec<f64> = Vec::new();
             if var.reseating() {
-                let loaded;
-                let c = if var.preload {
+                let seated = if var.preload {
                     let mut c = coupling.clone();
                     c.scene.preload = sample.preload;
-                    loaded = c;
-                    &loaded
+                    opts.method.seat(&c, &sample.mu, &sample.start)
                 } else {
-                    coupling
+                    opts.method.seat_prepared(&setup, &sample.mu, &sample.start)
                 };
-                let s = opts
-                    .method
-                    .seat(c, &sample.mu, &sample.start)
+                let s = seated
                     .map(|s| tally.count(s))
                     .map_err(|e| seat_err(index, &sample.mu, e))?;
                 outputs.extend(

@@ -48,9 +48,14 @@ pub use load::{ExternalLoad, LoadEvent, LoadEventKind, LoadPath, apply_load, at_
 use path::End;
 use solver::{Program, Solver};
 
+use std::sync::OnceLock;
+
+use nalgebra::Vector6;
+
 use super::{Seating, SeatingPath, SolveError, SolverOptions, frictions};
 use crate::assembly::Coupling;
 use crate::contact::{Friction, TangentialState};
+use crate::solve::contact_layer::GeometrySource;
 
 /// Seat the coupling with static coefficients `mu_s` (contact order): the
 /// uniform fast path where it serves, else the adaptive path; the same
@@ -60,11 +65,54 @@ pub fn seat(
     mu_s: &[f64],
     opts: &SolverOptions,
 ) -> Result<Seating, SolveError> {
-    let fr = frictions(coupling, mu_s)?;
-    if let Some(end) = uniform::seat(coupling, &fr, opts) {
+    seat_prepared(&SeatingSetup::new(coupling), mu_s, opts)
+}
+
+/// What every seating of one coupling computes before its first
+/// increment, computed once and shared (it is `Sync`) by the seatings of a
+/// study: the frictionless predictor x_1 and the virgin contact states
+/// (zero force, tangent to the normals at the touching pose) of either
+/// path. [`seat_prepared`] with it gives the bits of [`seat`].
+pub struct SeatingSetup<'a> {
+    coupling: &'a Coupling,
+    x1: Vector6<f64>,
+    /// Closed-form normals (the uniform path), parry's (the adaptive path).
+    virgin_closed_form: Vec<TangentialState>,
+    virgin_parry: OnceLock<Vec<TangentialState>>,
+}
+
+impl<'a> SeatingSetup<'a> {
+    pub fn new(coupling: &'a Coupling) -> Self {
+        SeatingSetup {
+            coupling,
+            x1: solver::predictor(coupling),
+            virgin_closed_form: virgin_states(coupling, GeometrySource::ClosedForm),
+            virgin_parry: OnceLock::new(),
+        }
+    }
+
+    pub fn coupling(&self) -> &'a Coupling {
+        self.coupling
+    }
+
+    fn virgin_parry(&self) -> Vec<TangentialState> {
+        self.virgin_parry
+            .get_or_init(|| virgin_states(self.coupling, GeometrySource::Parry))
+            .clone()
+    }
+}
+
+/// [`seat`] of `setup`'s coupling.
+pub fn seat_prepared(
+    setup: &SeatingSetup,
+    mu_s: &[f64],
+    opts: &SolverOptions,
+) -> Result<Seating, SolveError> {
+    let fr = frictions(setup.coupling, mu_s)?;
+    if let Some(end) = uniform::seat(setup, &fr, opts) {
         return Ok(seating(end, SeatingPath::Uniform));
     }
-    adaptive(coupling, fr, opts)
+    adaptive(setup, fr, opts)
 }
 
 /// Seat by the adaptive path only (today's algorithm, parry's geometry):
@@ -74,29 +122,28 @@ pub fn seat_adaptive(
     mu_s: &[f64],
     opts: &SolverOptions,
 ) -> Result<Seating, SolveError> {
-    adaptive(coupling, frictions(coupling, mu_s)?, opts)
+    let setup = SeatingSetup::new(coupling);
+    adaptive(&setup, frictions(coupling, mu_s)?, opts)
 }
 
 fn adaptive(
-    coupling: &Coupling,
+    setup: &SeatingSetup,
     fr: Vec<Friction>,
     opts: &SolverOptions,
 ) -> Result<Seating, SolveError> {
-    let solver = Solver::adaptive(coupling, fr, *opts, Program::Seat);
-    let end = solver.run(coupling.touching_pose, virgin_states(&solver))?;
+    let c = setup.coupling;
+    let solver = Solver::with_predictor(c, fr, *opts, Program::Seat, setup.x1);
+    let end = solver.run(c.touching_pose, setup.virgin_parry())?;
     let end = end.expect("the adaptive path never declines");
     Ok(seating(end, SeatingPath::Adaptive))
 }
 
 /// Zero tangential force at every contact, tangent to its normal at the
-/// touching pose.
-fn virgin_states(solver: &Solver) -> Vec<TangentialState> {
-    let pose = solver.coupling.touching_pose;
-    (0..solver.coupling.contacts.len())
-        .map(|i| {
-            let g = solver.geometry.geometry(solver.coupling, i, &pose);
-            TangentialState::new(g.normal)
-        })
+/// touching pose (the geometry from `source`).
+fn virgin_states(coupling: &Coupling, source: GeometrySource) -> Vec<TangentialState> {
+    let pose = coupling.touching_pose;
+    (0..coupling.contacts.len())
+        .map(|i| TangentialState::new(source.geometry(coupling, i, &pose).normal))
         .collect()
 }
 

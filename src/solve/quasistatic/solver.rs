@@ -79,13 +79,18 @@ impl<'a> Solver<'a> {
         opts: SolverOptions,
         program: Program,
     ) -> Self {
-        let touching = coupling.touching_pose;
+        Self::with_predictor(coupling, friction, opts, program, predictor(coupling))
+    }
+
+    /// [`Self::adaptive`] with the seating predictor x_1 ([`predictor`]) given.
+    pub fn with_predictor(
+        coupling: &'a Coupling,
+        friction: Vec<Friction>,
+        opts: SolverOptions,
+        program: Program,
+        x1: Vector6<f64>,
+    ) -> Self {
         let length = coupling.length_scale();
-        let rows = coupling.constraint_rows(&touching);
-        let w = Matrix6::from_fn(|r, c| rows[r][c]);
-        let f = frictionless_preload_forces(coupling);
-        let rhs = Vector6::from_fn(|i, _| -coupling.contacts[i].normal.approach(f[i].max(0.0)));
-        let x1 = w.lu().solve(&rhs).unwrap_or_else(Vector6::zeros);
         let preload = coupling.scene.preload.force;
         let force_scale = match program {
             Program::Seat => preload,
@@ -282,6 +287,18 @@ impl<'a> Solver<'a> {
     pub fn result(&self, i: usize, e: &ContactEval) -> ContactResult {
         ContactResult::from_eval(self.coupling, i, e, self.friction[i])
     }
+}
+
+/// The predictor twist per unit s of a seating (module docs of [`super`]):
+/// W x_1 = -delta_i(f_i), W the constraint rows at the touching pose, f_i
+/// the frictionless contact forces at full preload, delta_i the approach
+/// (Hertz plus support compliance). Depends on the coupling only.
+pub(super) fn predictor(coupling: &Coupling) -> Vector6<f64> {
+    let rows = coupling.constraint_rows(&coupling.touching_pose);
+    let w = Matrix6::from_fn(|r, c| rows[r][c]);
+    let f = frictionless_preload_forces(coupling);
+    let rhs = Vector6::from_fn(|i, _| -coupling.contacts[i].normal.approach(f[i].max(0.0)));
+    w.lu().solve(&rhs).unwrap_or_else(Vector6::zeros)
 }
 
 /// The twist (v, w) with `from.moved(v, w) == to`.

@@ -59,23 +59,24 @@
 //! increments can match the 20-increment path to 1e-12, so the fast path
 //! keeps its increments and saves on each one instead.
 
+use super::SeatingSetup;
 use super::path::End;
 use super::solver::{Program, Solver};
-use super::virgin_states;
-use crate::assembly::Coupling;
 use crate::contact::Friction;
 use crate::solve::SolverOptions;
 use crate::solve::contact_layer::GeometrySource;
 
 /// The seating on the uniform path, or `None` where it declines.
 pub(super) fn seat(
-    coupling: &Coupling,
+    setup: &SeatingSetup,
     friction: &[Friction],
     opts: &SolverOptions,
 ) -> Option<End> {
-    let mut solver = Solver::adaptive(coupling, friction.to_vec(), *opts, Program::Seat);
+    let coupling = setup.coupling;
+    let mut solver =
+        Solver::with_predictor(coupling, friction.to_vec(), *opts, Program::Seat, setup.x1);
     solver.geometry = GeometrySource::ClosedForm;
     solver.uniform = true;
-    let states = virgin_states(&solver);
+    let states = setup.virgin_closed_form.clone();
     solver.run(coupling.touching_pose, states).ok().flatten()
 }
