@@ -255,18 +255,33 @@ impl<'a> Solver<'a> {
     /// points move with the body.
     fn jacobian(&self, evals: &[ContactEval], point_forces: &[PointForce]) -> Matrix6<f64> {
         let mut j = Matrix6::zeros();
+        // [p]x M column by column (p x m_j) and M [p]x row by row
+        // ((m_i x p)^T): the products with a cross-product matrix without
+        // its zeros.
+        let cross_left = |p: &Vector3<f64>, m: &Matrix3<f64>| {
+            Matrix3::from_columns(&[
+                p.cross(&m.column(0)),
+                p.cross(&m.column(1)),
+                p.cross(&m.column(2)),
+            ])
+        };
+        let cross_right = |m: &Matrix3<f64>, p: &Vector3<f64>| {
+            let row = |i: usize| m.row(i).transpose().cross(p).transpose();
+            Matrix3::from_rows(&[row(0), row(1), row(2)])
+        };
         let mut add_point_force =
             |k: &Matrix3<f64>, f: &Vector3<f64>, p: &Vector3<f64>, moving: &Vector3<f64>| {
-                let px = p.cross_matrix();
-                let mx = moving.cross_matrix();
+                // force rows: K dp;  moment rows: p x (K dp) + dp_moving x f,
+                // dp = v - [p]x w: K [-p]x = -K [p]x, [f]x [m]x = m f^T - (f . m) I.
+                let kp = -cross_right(k, p);
                 let fx = f.cross_matrix();
-                // force rows: K dp;  moment rows: p x (K dp) + dp_moving x f
-                let kp = k * (-px);
+                let fm = moving * f.transpose() - Matrix3::from_diagonal_element(f.dot(moving));
                 j.fixed_view_mut::<3, 3>(0, 0).add_assign(k);
                 j.fixed_view_mut::<3, 3>(0, 3).add_assign(&kp);
-                j.fixed_view_mut::<3, 3>(3, 0).add_assign(&(px * k - fx));
+                j.fixed_view_mut::<3, 3>(3, 0)
+                    .add_assign(&(cross_left(p, k) - fx));
                 j.fixed_view_mut::<3, 3>(3, 3)
-                    .add_assign(&(px * kp + fx * mx));
+                    .add_assign(&(cross_left(p, &kp) + fm));
             };
         for (i, e) in evals.iter().enumerate() {
             let centre = e.geometry.point
