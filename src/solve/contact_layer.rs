@@ -163,8 +163,9 @@ pub fn evaluate_moved(
         _ => Vector3::zeros(), // circular: K_t is isotropic
     };
     let law = &contact.law;
-    let principal =
-        PrincipalStiffness::new(law.tangential_stiffness_axes(f_mid), &g.normal, &major_axis);
+    // ContactLaw::tangential_stiffness_axes (k = coef a) with the fast cube root.
+    let a_mid = hertz.major_semi_axis_fast(f_mid);
+    let principal = PrincipalStiffness::new(law.mindlin.map(|c| c * a_mid), &g.normal, &major_axis);
     let kt = principal.tensor(&g.normal);
     // dK_t/dF_n = K_t / (3 F_mid) d(F_mid)/dF_n, with d(F_mid)/dF_n = 1/2.
     let dkt = if f_mid > 0.0 {
