@@ -1,13 +1,14 @@
 //! One quasi-static seating of scenes 01 (Maxwell, V-grooves), 02 (Maxwell,
 //! pins) and 06 (Kelvin) on each path: `seat` (the uniform fast path, which
 //! serves these friction vectors) and `seat_adaptive` (the adaptive path
-//! alone: today's algorithm, the reference of the fast one).
+//! alone: today's algorithm, the reference of the fast one); and the fast
+//! path with the coupling's set-up shared as in a study (`seat_prepared`).
 
 use std::hint::black_box;
 use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use kinrepro::solve::quasistatic::{seat, seat_adaptive};
+use kinrepro::solve::quasistatic::{SeatingSetup, seat, seat_adaptive, seat_prepared};
 use kinrepro::solve::{SeatingPath, SolverOptions};
 
 fn seating(c: &mut Criterion) {
@@ -30,6 +31,10 @@ fn seating(c: &mut Criterion) {
         );
         c.bench_function(&format!("quasi-static seating/uniform/{name}"), |b| {
             b.iter(|| seat(black_box(&coupling), black_box(&mu), &opts).unwrap())
+        });
+        let setup = SeatingSetup::new(&coupling);
+        c.bench_function(&format!("quasi-static seating/shared-setup/{name}"), |b| {
+            b.iter(|| seat_prepared(black_box(&setup), black_box(&mu), &opts).unwrap())
         });
         c.bench_function(&format!("quasi-static seating/adaptive/{name}"), |b| {
             b.iter(|| seat_adaptive(black_box(&coupling), black_box(&mu), &opts).unwrap())
