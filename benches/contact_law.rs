@@ -6,8 +6,8 @@ use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::contact::{
-    ContactPair, ContactShape, Friction, FrictionLaw, TangentialInput, TangentialLaw,
-    TangentialState, tangential_tensor,
+    ContactPair, ContactShape, Friction, FrictionLaw, PrincipalStiffness, TangentialInput,
+    TangentialLaw, TangentialState, tangential_tensor,
 };
 use kinrepro::material::Material;
 use nalgebra::Vector3;
@@ -58,11 +58,13 @@ fn contact_update(c: &mut Criterion) {
                     let delta = black_box(5e-7);
                     let fn_ = law.hertz.force(delta);
                     let [a, bb] = law.hertz.semi_axes(fn_);
-                    let kt = tangential_tensor(
+                    // K_t by its principal axes, as the contact layer passes it.
+                    let principal = PrincipalStiffness::new(
                         law.tangential_stiffness_axes(fn_),
                         &normal,
                         &Vector3::x(),
                     );
+                    let kt = principal.tensor(&normal);
                     let shape = law
                         .mindlin
                         .map(|c| c / (8.0 * law.g_star * law.hertz.axis_ratio.sqrt()));
@@ -77,7 +79,7 @@ fn contact_update(c: &mut Criterion) {
                         mindlin_shape: tangential_tensor(shape, &normal, &Vector3::x()),
                         friction: friction.during(0.05),
                     };
-                    black_box(state.update(tl, &input))
+                    black_box(state.update_with(tl, &input, Some(&principal)))
                 })
             });
         }
