@@ -325,7 +325,7 @@ pub fn run_chunked(
     tick: &(dyn Fn() + Sync),
     sink: &mut dyn FnMut(Vec<SampleRecord>) -> Result<(), RunError>,
 ) -> Result<DesignSpec, RunError> {
-    run_chunked_tallied(coupling, opts, chunk, tick, sink, &PathTally::default())
+    run_chunked_tallied(coupling, opts, chunk, tick, &PathTally::default(), sink)
 }
 
 /// [`run_chunked`], counting the seating paths in `tally`.
@@ -334,8 +334,8 @@ pub fn run_chunked_tallied(
     opts: &StudyOptions,
     chunk: usize,
     tick: &(dyn Fn() + Sync),
-    sink: &mut dyn FnMut(Vec<SampleRecord>) -> Result<(), RunError>,
     tally: &PathTally,
+    sink: &mut dyn FnMut(Vec<SampleRecord>) -> Result<(), RunError>,
 ) -> Result<DesignSpec, RunError> {
     let (design, range) = shard_design(coupling, opts)?;
     let design_err = |source| design_error(coupling, source);

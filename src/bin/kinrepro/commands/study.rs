@@ -145,38 +145,31 @@ fn streamed_variant(
     let mut st = StreamStats::new(names.len());
     let mut failure: Option<String> = None;
     let tally = PathTally::default();
-    run_chunked_tallied(
-        c,
-        opts,
-        CHUNK,
-        tick,
-        &mut |records| {
-            let step = st
-                .push(&records, &names)
-                .map_err(|e| format!("{file}: {e}"))
-                .and_then(|()| match csv.as_mut() {
-                    Some(w) => records.iter().try_for_each(|r| {
-                        w.push(&kinrepro::report::study::StudyRecord {
-                            index: r.index,
-                            physical: opts.variation.sample(c, &r.inputs).physical,
-                            inputs: r.inputs.clone(),
-                            outputs: r.outputs.clone(),
-                        })
-                        .map_err(|e| e.to_string())
-                    }),
-                    None => Ok(()),
-                });
-            if let Err(e) = step {
-                failure = Some(e);
-                return Err(kinrepro::study::runner::RunError::Options {
-                    file: file.clone(),
-                    reason: "stopped".into(),
-                });
-            }
-            Ok(())
-        },
-        &tally,
-    )
+    run_chunked_tallied(c, opts, CHUNK, tick, &tally, &mut |records| {
+        let step = st
+            .push(&records, &names)
+            .map_err(|e| format!("{file}: {e}"))
+            .and_then(|()| match csv.as_mut() {
+                Some(w) => records.iter().try_for_each(|r| {
+                    w.push(&kinrepro::report::study::StudyRecord {
+                        index: r.index,
+                        physical: opts.variation.sample(c, &r.inputs).physical,
+                        inputs: r.inputs.clone(),
+                        outputs: r.outputs.clone(),
+                    })
+                    .map_err(|e| e.to_string())
+                }),
+                None => Ok(()),
+            });
+        if let Err(e) = step {
+            failure = Some(e);
+            return Err(kinrepro::study::runner::RunError::Options {
+                file: file.clone(),
+                reason: "stopped".into(),
+            });
+        }
+        Ok(())
+    })
     .map_err(|e| failure.clone().unwrap_or_else(|| e.to_string()))?;
     v.seating_paths = Some(tally.counts());
     v.set_moment_stats(&st)
