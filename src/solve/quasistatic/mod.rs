@@ -37,6 +37,9 @@
 //! adaptive path would halve, it declines and the adaptive path runs
 //! (`Seating::path` says which one served). [`seat_adaptive`] always takes
 //! the adaptive path (today's algorithm, the reference of the fast one).
+//! A study seats one coupling many times: [`SeatingSetup`] holds what
+//! every seating of it computes first (the predictor x_1, the virgin
+//! contact states), and [`seat_prepared`] reuses it with the same bits.
 
 mod load;
 mod path;

@@ -24,22 +24,24 @@
 //! the closed forms of `assembly::geometry` (gap and normal of a ball on a
 //! plane, a cylinder or a sphere) instead of parry's query, which agree to
 //! ~1e-17 m (`parry_contact_matches_closed_form`). Such a rounding
-//! difference is amplified once, in the tangential increment du = p - p_c,
-//! a difference of positions ~0.04 m that resolves steps of ~1e-8 m to
-//! ~1e-10 relative; the adaptive path has the same floor against itself (a
-//! one-ulp change of mu moves its pose by ~1e-11 of the seating's motion).
-//! Measured over 1000 friction vectors per bundled scene
-//! (tests/fast_path.rs): at most 7.5e-11 of the seating's motion, the
-//! increments equal. Below that floor no two float evaluations of this
-//! model agree, so the 1e-12 cannot be asked of any other code path.
+//! difference is amplified where a small quantity is a difference of
+//! positions ~0.04 m: the gap (an approach of ~1e-6 m resolved to ~1e-11
+//! relative). The tangential increment du = p - p_c no longer is one (it is
+//! formed from the rotation and translation increments, `contact_layer::
+//! Motion`); the adaptive path's floor against itself (a one-ulp change of
+//! mu) is 1.5e-12 to 6e-12 of the seating's motion. Measured over 1000
+//! friction vectors per bundled scene (tests/fast_path.rs): at most 6.2e-11
+//! of the seating's motion (scene 01; 7e-12 on scenes 02-07), the
+//! increments equal. The 1e-12 is below what two float evaluations
+//! of this model with different geometry code agree to.
 //!
 //! The argument does not use the contact law: it holds for Coulomb and
 //! Mindlin-Deresiewicz, the switch and the decay friction law, and any
 //! support compliance, because the history integrals are the adaptive
 //! path's own (same increments, same midpoint stiffness, same return
 //! mapping). The decay law amplifies the rounding a further step (its slip
-//! velocity is a difference of forces over an increment): measured 2e-10 of
-//! the motion there. The one way the answers could part is a stick/slip
+//! velocity is a difference of forces over an increment): measured 1.7e-10
+//! of the motion there. The one way the answers could part is a stick/slip
 //! decision or a Newton stop that lies within rounding of its threshold, so
 //! that one path halves and the other does not; tests/fast_path.rs would
 //! see it (none in 7000 seatings).
