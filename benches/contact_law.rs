@@ -1,12 +1,13 @@
 //! One Hertz + tangential update per iteration, for each contact shape and
-//! both tangential laws (Coulomb; Mindlin-Deresiewicz with its 128 springs).
+//! law: Coulomb with the switch and the decay friction law, and
+//! Mindlin-Deresiewicz with its 128 springs.
 
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::contact::{
-    ContactPair, ContactShape, Friction, TangentialInput, TangentialLaw, TangentialState,
-    tangential_tensor,
+    ContactPair, ContactShape, Friction, FrictionLaw, PrincipalStiffness, TangentialInput,
+    TangentialLaw, TangentialState, tangential_tensor,
 };
 use kinrepro::material::Material;
 use nalgebra::Vector3;
@@ -28,23 +29,42 @@ fn contact_update(c: &mut Criterion) {
         .law()
         .unwrap();
         let normal = Vector3::new(0.0, 1.0, 1.0).normalize();
-        for tl in TangentialLaw::ALL {
+        let decay = Friction {
+            law: FrictionLaw::Decay { coefficient: 1e6 },
+            ..Friction::switch(0.5, 0.4)
+        };
+        let laws = [
+            (
+                TangentialLaw::Coulomb,
+                Friction::switch(0.5, 0.4),
+                "coulomb",
+            ),
+            (TangentialLaw::Coulomb, decay, "coulomb (decay friction)"),
+            (
+                TangentialLaw::MindlinDeresiewicz,
+                Friction::switch(0.5, 0.4),
+                "mindlin-deresiewicz",
+            ),
+        ];
+        for (tl, friction, label) in laws {
             let fn0 = law.hertz.force(4.9e-7);
             let state = TangentialState {
                 normal_force: fn0,
                 ..TangentialState::new(normal)
             };
-            let name = format!("hertz+{} update/{}", tl.name(), shape.name());
+            let name = format!("hertz+{label} update/{}", shape.name());
             c.bench_function(&name, |b| {
                 b.iter(|| {
                     let delta = black_box(5e-7);
                     let fn_ = law.hertz.force(delta);
                     let [a, bb] = law.hertz.semi_axes(fn_);
-                    let kt = tangential_tensor(
+                    // K_t by its principal axes, as the contact layer passes it.
+                    let principal = PrincipalStiffness::new(
                         law.tangential_stiffness_axes(fn_),
                         &normal,
                         &Vector3::x(),
                     );
+                    let kt = principal.tensor(&normal);
                     let shape = law
                         .mindlin
                         .map(|c| c / (8.0 * law.g_star * law.hertz.axis_ratio.sqrt()));
@@ -57,9 +77,9 @@ fn contact_update(c: &mut Criterion) {
                         contact_radius: (a * bb).sqrt(),
                         g_star: law.g_star,
                         mindlin_shape: tangential_tensor(shape, &normal, &Vector3::x()),
-                        friction: Friction::switch(0.5, 0.4),
+                        friction: friction.during(0.05),
                     };
-                    black_box(state.update(tl, &input))
+                    black_box(state.update_with(tl, &input, Some(&principal)))
                 })
             });
         }

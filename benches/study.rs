@@ -1,35 +1,72 @@
-//! The seven bundled scenes at 25 LHS samples: a full Table 2 study.
+//! Studies: the seven bundled scenes at 25 LHS samples (a full Table 2
+//! study), the seven at 2000 Monte Carlo samples, and 10^5 Monte Carlo
+//! samples of scene 01 streamed into moments (chunks of 8192, the route of
+//! large studies, `report::study_stream`). rayon uses every core.
 
 use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use kinrepro::study::runner::{StudyOptions, run_variant};
+use kinrepro::assembly::Coupling;
+use kinrepro::report::study_stream::StreamStats;
+use kinrepro::study::Sampler;
+use kinrepro::study::runner::{StudyOptions, output_names, run_chunked, run_variant};
+
+const SCENES: [&str; 7] = [
+    "01_maxwell_vgroove_steel.toml",
+    "02_maxwell_pins_steel.toml",
+    "03_maxwell_pins_sic.toml",
+    "04_maxwell_balls_steel.toml",
+    "05_maxwell_balls_sic.toml",
+    "06_kelvin_steel.toml",
+    "07_kelvin_sic.toml",
+];
+
+fn load(name: &str) -> Coupling {
+    kinrepro::error::read_coupling(
+        &Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("scenes")
+            .join(name),
+    )
+    .unwrap()
+}
+
+fn mc(samples: usize) -> StudyOptions {
+    StudyOptions {
+        sampler: Some(Sampler::MonteCarlo),
+        samples: Some(samples),
+        ..StudyOptions::default()
+    }
+}
 
 fn study(c: &mut Criterion) {
-    let couplings: Vec<_> = [
-        "01_maxwell_vgroove_steel.toml",
-        "02_maxwell_pins_steel.toml",
-        "03_maxwell_pins_sic.toml",
-        "04_maxwell_balls_steel.toml",
-        "05_maxwell_balls_sic.toml",
-        "06_kelvin_steel.toml",
-        "07_kelvin_sic.toml",
-    ]
-    .iter()
-    .map(|n| {
-        kinrepro::error::load_coupling(
-            &Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(n),
-        )
-        .unwrap()
-    })
-    .collect();
+    let couplings: Vec<_> = SCENES.iter().map(|n| load(n)).collect();
     let mut g = c.benchmark_group("study");
-    g.sample_size(20);
+    g.sample_size(10);
     g.bench_function("seven scenes x 25 LHS samples", |b| {
         b.iter(|| {
             for coupling in &couplings {
                 run_variant(coupling, &StudyOptions::default(), &|| {}).unwrap();
             }
+        })
+    });
+    g.bench_function("seven scenes x 2000 MC samples", |b| {
+        b.iter(|| {
+            for coupling in &couplings {
+                run_variant(coupling, &mc(2000), &|| {}).unwrap();
+            }
+        })
+    });
+    let scene01 = &couplings[0];
+    let names = output_names(scene01);
+    g.bench_function("scene 01 x 10^5 MC samples, streamed", |b| {
+        b.iter(|| {
+            let mut stats = StreamStats::new(names.len());
+            run_chunked(scene01, &mc(100_000), 8192, &|| {}, &mut |records| {
+                stats.push(&records, &names).unwrap();
+                Ok(())
+            })
+            .unwrap();
+            stats
         })
     });
     g.finish();

@@ -13,7 +13,7 @@ use kinrepro::study::runner::{StudyOptions, Variation};
 fn sweep(c: &mut Criterion) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/01_maxwell_vgroove_steel.toml");
     let text = std::fs::read_to_string(&path).unwrap();
-    let base = kinrepro::error::load_coupling(&path).unwrap();
+    let base = kinrepro::error::read_coupling(&path).unwrap();
     let variation = Variation {
         friction: true,
         ..Default::default()

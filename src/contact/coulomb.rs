@@ -25,10 +25,10 @@
 //! surface (a spring stretched by du). The friction force on the moving
 //! body is its negative.
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 
-use super::friction::{SlideInput, Sliding};
-use super::mindlin::project_tangential;
+use super::friction::{FrictionLaw, SlideInput, Sliding};
+use super::mindlin::{PrincipalStiffness, project_tangential};
 use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, TangentialState};
 
 /// Coulomb return mapping; the sliding coefficient comes from the friction
@@ -40,12 +40,19 @@ pub(super) fn update(
     old: &TangentialState,
     du: &Vector3<f64>,
     input: &TangentialInput,
+    principal: Option<&PrincipalStiffness>,
 ) -> TangentialResponse {
     let fr = input.friction;
     let trial = old.force + input.stiffness * du;
     let norm = trial.norm();
-    let t = if norm > 0.0 { trial / norm } else { trial };
-    let k_along = t.dot(&(input.stiffness * t));
+    // The switch law reads no stiffness (`friction::slide`).
+    let k_along = match fr.law {
+        FrictionLaw::Switch => 0.0,
+        FrictionLaw::Decay { .. } => {
+            let t = if norm > 0.0 { trial / norm } else { trial };
+            t.dot(&(input.stiffness * t))
+        }
+    };
     let sliding = super::friction::slide(&SlideInput {
         mu_s: fr.mu_s,
         mu_d: fr.mu_d,
@@ -71,7 +78,7 @@ pub(super) fn update(
             d_force_d_du: input.stiffness,
             d_force_d_fn: input.d_stiffness_d_fn * du,
         },
-        Some(s) => slide_response(old, &trial, &input.stiffness, du, input, &s),
+        Some(s) => slide_response(old, &trial, du, input, &s, principal),
     }
 }
 
@@ -87,18 +94,33 @@ pub(super) fn update(
 fn slide_response(
     old: &TangentialState,
     trial: &Vector3<f64>,
-    k: &Matrix3<f64>,
     du: &Vector3<f64>,
     input: &TangentialInput,
     s: &Sliding,
+    principal: Option<&PrincipalStiffness>,
 ) -> TangentialResponse {
     let f_n = input.normal_force;
-    let dk = &input.d_stiffness_d_fn;
+    let (k, dk) = (&input.stiffness, &input.d_stiffness_d_fn);
     let mu = s.mu;
-    let (force, d_trial, d_limit) = project_tangential(k, &input.normal, trial, mu * f_n);
-    let t = trial.normalize();
-    let dmu_dfn = s.d_mu_d_trial * t.dot(&(dk * du)) + s.d_mu_d_fn + s.d_mu_d_k * t.dot(&(dk * t));
-    let dt_ddu = k.transpose() * t; // dT/d(du) as a column
+    let (force, d_trial, d_limit) = match principal {
+        Some(p) => p.project(&input.normal, trial, mu * f_n),
+        None => project_tangential(k, &input.normal, trial, mu * f_n),
+    };
+    let dk_du = dk * du;
+    let (d_force_d_du, d_force_d_fn) =
+        if s.d_mu_d_trial == 0.0 && s.d_mu_d_fn == 0.0 && s.d_mu_d_k == 0.0 {
+            // A constant coefficient (the switch law, a sliding decay contact).
+            (d_trial * k, mu * d_limit + d_trial * dk_du)
+        } else {
+            let t = trial.normalize();
+            let dmu_dfn =
+                s.d_mu_d_trial * t.dot(&dk_du) + s.d_mu_d_fn + s.d_mu_d_k * t.dot(&(dk * t));
+            let dt_ddu = k.transpose() * t; // dT/d(du) as a column
+            (
+                d_trial * k + (d_limit * (f_n * s.d_mu_d_trial)) * dt_ddu.transpose(),
+                (mu + f_n * dmu_dfn) * d_limit + d_trial * dk_du,
+            )
+        };
     TangentialResponse {
         force,
         state: TangentialState {
@@ -109,7 +131,7 @@ fn slide_response(
             ..*old
         },
         slip: SlipState::Slip,
-        d_force_d_du: d_trial * k + (d_limit * (f_n * s.d_mu_d_trial)) * dt_ddu.transpose(),
-        d_force_d_fn: (mu + f_n * dmu_dfn) * d_limit + d_trial * (dk * du),
+        d_force_d_du,
+        d_force_d_fn,
     }
 }

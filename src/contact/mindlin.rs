@@ -46,13 +46,76 @@ pub fn mindlin_axis_coefficients(m1: &Material, m2: &Material, kp: f64) -> [f64;
 /// tangent plane of the unit normal `n`, e1 the major axis (`major_axis`
 /// projected into the plane; any direction for a circle), e2 = n x e1.
 pub fn tangential_tensor(k: [f64; 2], n: &Vector3<f64>, major_axis: &Vector3<f64>) -> Matrix3<f64> {
-    let proj = Matrix3::identity() - n * n.transpose();
-    if k[0] == k[1] {
-        return k[0] * proj;
+    PrincipalStiffness::new(k, n, major_axis).tensor(n)
+}
+
+/// Mindlin's tangential stiffness by its principal values and axes, as
+/// [`tangential_tensor`] builds it, so that the return mapping needs no
+/// eigen-decomposition: `axes` is `None` for a circular contact
+/// (K_t = k (I - n n^T), equal principal values), else the unit axes
+/// (e1, e2) in the tangent plane with K_t = k_1 e1 e1^T + k_2 e2 e2^T.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PrincipalStiffness {
+    pub k: [f64; 2],
+    pub axes: Option<[Vector3<f64>; 2]>,
+}
+
+impl PrincipalStiffness {
+    /// Principal values `k` (major, minor) about the unit normal `n`, the
+    /// major axis along `major_axis` projected into the tangent plane.
+    pub fn new(k: [f64; 2], n: &Vector3<f64>, major_axis: &Vector3<f64>) -> Self {
+        if k[0] == k[1] {
+            return PrincipalStiffness { k, axes: None };
+        }
+        let e1 = ((Matrix3::identity() - n * n.transpose()) * major_axis).normalize();
+        PrincipalStiffness {
+            k,
+            axes: Some([e1, n.cross(&e1)]),
+        }
     }
-    let e1 = (proj * major_axis).normalize();
-    let e2 = n.cross(&e1);
-    k[0] * e1 * e1.transpose() + k[1] * e2 * e2.transpose()
+
+    /// The 3x3 tensor K_t in the tangent plane of `n`.
+    pub fn tensor(&self, n: &Vector3<f64>) -> Matrix3<f64> {
+        match self.axes {
+            None => self.k[0] * (Matrix3::identity() - n * n.transpose()),
+            Some([e1, e2]) => self.k[0] * e1 * e1.transpose() + self.k[1] * e2 * e2.transpose(),
+        }
+    }
+
+    /// [`project_tangential`] with the principal axes known: the closest
+    /// point to `trial` on |F| = `limit` in the complementary-energy norm of
+    /// K_t. For a circular contact this is the radial return in closed form
+    /// (the map of [`project_on_circle`] with equal k, where g = (T/L - 1)/k
+    /// and A = L/T exactly):
+    /// ```text
+    /// F = L t,   dF/dF_trial = (L/T) (I - n n^T - t t^T),   dF/dL = t
+    /// T = |F_trial - n (n . F_trial)|,  t = (F_trial - n (n . F_trial)) / T
+    /// ```
+    /// An elliptical contact projects in its principal axes by
+    /// [`project_on_circle`]. Returns (F, dF/dF_trial, dF/dL).
+    pub fn project(
+        &self,
+        n: &Vector3<f64>,
+        trial: &Vector3<f64>,
+        limit: f64,
+    ) -> (Vector3<f64>, Matrix3<f64>, Vector3<f64>) {
+        match self.axes {
+            None => {
+                let in_plane = trial - n * n.dot(trial);
+                let norm = in_plane.norm();
+                let t = in_plane / norm;
+                let a = limit.max(0.0) / norm;
+                let d_trial = a * (Matrix3::identity() - n * n.transpose() - t * t.transpose());
+                (t * limit.max(0.0), d_trial, t)
+            }
+            Some([e1, e2]) => {
+                let e = Matrix3x2::from_columns(&[e1, e2]);
+                let local = Vector2::new(e1.dot(trial), e2.dot(trial));
+                let (f, d_trial, d_limit) = project_on_circle(self.k, &local, limit);
+                (e * f, e * d_trial * e.transpose(), e * d_limit)
+            }
+        }
+    }
 }
 
 /// Eigenvalues and unit eigenvectors (columns) of a symmetric 2x2 matrix.
@@ -136,4 +199,57 @@ pub fn project_tangential(
     let e = basis * r; // principal axes in 3-D
     let (f, d_trial, d_limit) = project_on_circle(kv, &(e.transpose() * trial), limit);
     (e * f, e * d_trial * e.transpose(), e * d_limit)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A unit normal, a trial force with a normal component (removed by
+    /// both projections) and a limit below the trial's tangential size.
+    fn case() -> (Vector3<f64>, Vector3<f64>, f64) {
+        let n = Vector3::new(0.3, -0.2, 0.9).normalize();
+        (n, Vector3::new(2.0, 1.5, -0.7), 0.8)
+    }
+
+    #[test]
+    fn principal_projection_is_the_eigen_projection() {
+        // The closed-form radial return (circle) and the known-axes
+        // projection (ellipse) against the eigen-decomposition route and
+        // its Newton iteration, which shares neither shortcut.
+        let (n, trial, limit) = case();
+        for k in [[3e7, 3e7], [2.9e7, 3.3e7]] {
+            let p = PrincipalStiffness::new(k, &n, &Vector3::x());
+            let (f, d_trial, d_limit) = p.project(&n, &trial, limit);
+            let (g, g_trial, g_limit) = project_tangential(&p.tensor(&n), &n, &trial, limit);
+            assert!((f - g).norm() < 1e-14 * limit, "{k:?}: {f} {g}");
+            assert!(
+                (d_trial - g_trial).norm() < 1e-13,
+                "{k:?}: {d_trial} {g_trial}"
+            );
+            assert!(
+                (d_limit - g_limit).norm() < 1e-13,
+                "{k:?}: {d_limit} {g_limit}"
+            );
+            assert!((f.norm() - limit).abs() < 1e-14 * limit);
+            assert!(f.dot(&n).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn radial_return_derivatives_match_finite_differences() {
+        let (n, trial, limit) = case();
+        let p = PrincipalStiffness::new([3e7, 3e7], &n, &Vector3::x());
+        let (_, d_trial, d_limit) = p.project(&n, &trial, limit);
+        let h = 1e-6;
+        for j in 0..3 {
+            let e = Vector3::ith(j, h);
+            let col = (p.project(&n, &(trial + e), limit).0 - p.project(&n, &(trial - e), limit).0)
+                / (2.0 * h);
+            assert!((col - d_trial.column(j)).norm() < 1e-8, "column {j}");
+        }
+        let dl =
+            (p.project(&n, &trial, limit + h).0 - p.project(&n, &trial, limit - h).0) / (2.0 * h);
+        assert!((dl - d_limit).norm() < 1e-8);
+    }
 }

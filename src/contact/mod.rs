@@ -27,7 +27,7 @@ use thiserror::Error;
 use crate::material::{Material, effective_modulus, effective_shear_modulus};
 pub use friction::FrictionLaw;
 pub use hertz::HertzLaw;
-pub use mindlin::{mindlin_axis_coefficients, tangential_tensor};
+pub use mindlin::{PrincipalStiffness, mindlin_axis_coefficients, tangential_tensor};
 pub use series::SeriesNormal;
 pub use tangential::{
     Friction, SlipState, TangentialInput, TangentialLaw, TangentialResponse, TangentialState,

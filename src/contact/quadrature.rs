@@ -7,7 +7,9 @@
 //! w_i = 2 / ((1 - x_i^2) P_n'(x_i)^2) (Abramowitz & Stegun 25.4.29).
 //! An n-point rule integrates polynomials of degree 2n - 1 exactly.
 
+use std::cell::RefCell;
 use std::f64::consts::PI;
+use std::rc::Rc;
 
 /// An n-point Gauss-Legendre rule on [-1, 1]: (nodes, weights).
 pub fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
@@ -50,12 +52,29 @@ fn legendre(n: usize, x: f64) -> (f64, f64) {
     (p1, d)
 }
 
-/// The rule mapped to [lo, hi]: (nodes, weights).
+/// The rule mapped to [lo, hi]: (nodes, weights). The rule on [-1, 1] is
+/// computed once per n and thread (the stress check maps the same two rules
+/// onto thousands of intervals).
 pub fn gauss_on(n: usize, lo: f64, hi: f64) -> Vec<(f64, f64)> {
-    let (x, w) = gauss_legendre(n);
+    thread_local! {
+        static RULES: RefCell<Vec<(usize, Rc<Rule>)>> = const { RefCell::new(Vec::new()) };
+    }
+    let rule = RULES.with(|rules| {
+        let mut rules = rules.borrow_mut();
+        if let Some((_, r)) = rules.iter().find(|(k, _)| *k == n) {
+            return Rc::clone(r);
+        }
+        let r = Rc::new(gauss_legendre(n));
+        rules.push((n, Rc::clone(&r)));
+        r
+    });
+    let (x, w) = &*rule;
     let (m, h) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-    x.iter().zip(&w).map(|(x, w)| (m + h * x, h * w)).collect()
+    x.iter().zip(w).map(|(x, w)| (m + h * x, h * w)).collect()
 }
+
+/// Nodes and weights of a rule on [-1, 1].
+type Rule = (Vec<f64>, Vec<f64>);
 
 /// Golden-section search for the maximum of a unimodal `f` on [lo, hi],
 /// to an interval width `tol`: (argmax, max).

@@ -16,11 +16,25 @@ pub use super::tangential_types::{
     Friction, Rotation, SlipState, TangentialInput, TangentialLaw, TangentialResponse,
     TangentialState, UnknownLaw,
 };
+use super::mindlin::PrincipalStiffness;
 use super::{coulomb, mindlin_deresiewicz};
 
 impl TangentialState {
     /// Evaluate the chosen law for a trial increment. Pure: `self` is not changed.
     pub fn update(&self, law: TangentialLaw, input: &TangentialInput) -> TangentialResponse {
+        self.update_with(law, input, None)
+    }
+
+    /// [`Self::update`] with K_t (`input.stiffness`) also given by its
+    /// principal values and axes: the Coulomb return mapping then projects
+    /// without an eigen-decomposition, in closed form for a circular
+    /// contact ([`PrincipalStiffness::project`], the same map).
+    pub fn update_with(
+        &self,
+        law: TangentialLaw,
+        input: &TangentialInput,
+        principal: Option<&PrincipalStiffness>,
+    ) -> TangentialResponse {
         let n = input.normal;
         if input.normal_force <= 0.0 {
             // No normal force, no friction; history is lost when a contact opens.
@@ -33,12 +47,14 @@ impl TangentialState {
             };
         }
         let old = self.rotated_to(&n);
-        let proj = Matrix3::identity() - n * n.transpose();
-        let du = proj * input.du;
         match law {
-            TangentialLaw::Coulomb => coulomb::update(&old, &du, input),
+            TangentialLaw::Coulomb => {
+                let du = input.du - n * n.dot(&input.du);
+                coulomb::update(&old, &du, input, principal)
+            }
             TangentialLaw::MindlinDeresiewicz => {
-                mindlin_deresiewicz::update(&old, &proj, &du, input)
+                let proj = Matrix3::identity() - n * n.transpose();
+                mindlin_deresiewicz::update(&old, &proj, &(proj * input.du), input)
             }
         }
     }

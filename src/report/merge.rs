@@ -190,6 +190,8 @@ fn merge_variant(
     v.partial = false;
     v.shard = Shard::whole();
     v.records = records;
+    v.seating_paths =
+        crate::study::paths::SeatingPaths::total(parts.iter().map(|p| p.seating_paths));
     v.finish()?;
     Ok(v)
 }

@@ -5,7 +5,7 @@ use std::fmt::Write;
 use serde::Serialize;
 
 use crate::assembly::Coupling;
-use crate::solve::{ContactResult, PointPose, Seating};
+use crate::solve::{ContactResult, PointPose, Seating, SeatingPath};
 
 /// Pose of one evaluation point, from the touching pose and from the nominal seating.
 #[derive(Debug, Clone, Serialize)]
@@ -30,6 +30,9 @@ pub struct RunReport {
     pub contacts: Vec<ContactResult>,
     pub increments: usize,
     pub newton_iterations: usize,
+    /// Which path of the solver seated it: `uniform` (quasi-static fast
+    /// path), `adaptive` (quasi-static with halving) or `dynamic`.
+    pub seating_path: SeatingPath,
     /// Pose components reported but not evaluated for reproducibility
     /// (MODEL.md §1: rotation about z).
     pub not_evaluated: Vec<&'static str>,
@@ -65,6 +68,7 @@ impl RunReport {
             contacts: seating.contacts.clone(),
             increments: seating.increments,
             newton_iterations: seating.newton_iterations,
+            seating_path: seating.path,
             not_evaluated: vec!["phi_z_rad"],
         }
     }
@@ -94,8 +98,9 @@ impl RunReport {
         } else {
             let _ = writeln!(
                 s,
-                "solver: {}, {} load increments, {} Newton iterations; mu_s = [{}]",
+                "solver: {} ({} path), {} load increments, {} Newton iterations; mu_s = [{}]",
                 self.solver,
+                self.seating_path.name(),
                 self.increments,
                 self.newton_iterations,
                 mu.join(", ")

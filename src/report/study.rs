@@ -27,6 +27,9 @@ pub struct VariantReport {
     /// Set when the coupling could not seat (nothing slid): the reason.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cannot_seat: Option<String>,
+    /// Sample seatings per solver path (absent from `merge` output).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seating_paths: Option<crate::study::paths::SeatingPaths>,
     pub scene: String,
     pub name: String,
     /// Samples in the whole design.
@@ -159,6 +162,7 @@ impl VariantReport {
             fingerprint: Fingerprint::new(coupling, opts, &run.design),
             streamed: false,
             cannot_seat: None,
+            seating_paths: None,
             scene: coupling.scene.file.clone(),
             name: coupling.scene.name.clone(),
             samples: run.design.n,

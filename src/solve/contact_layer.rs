@@ -18,9 +18,11 @@
 
 use nalgebra::{Matrix3, Vector3};
 
+use crate::assembly::geometry::closed_form;
 use crate::assembly::{BodyPose, ContactGeometry, Coupling};
 use crate::contact::{
-    Friction, SlipState, TangentialInput, TangentialResponse, TangentialState, tangential_tensor,
+    Friction, PrincipalStiffness, SlipState, TangentialInput, TangentialLaw, TangentialResponse,
+    TangentialState, tangential_tensor,
 };
 use crate::scene::SurfaceGeometry;
 
@@ -47,7 +49,7 @@ impl ContactEval {
 }
 
 /// Evaluate contact `i` of `coupling` at `pose`, from the committed pose
-/// and tangential state.
+/// and tangential state, with the geometry from parry.
 pub fn evaluate(
     coupling: &Coupling,
     i: usize,
@@ -56,50 +58,155 @@ pub fn evaluate(
     committed: &TangentialState,
     friction: Friction,
 ) -> ContactEval {
-    let contact = &coupling.contacts[i];
     let g = coupling.geometry(i, pose);
+    evaluate_at(coupling, i, g, pose, committed_pose, committed, friction)
+}
+
+/// Where the contact geometry of an evaluation comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GeometrySource {
+    /// parry's contact query ([`Coupling::geometry`]).
+    Parry,
+    /// The closed forms of `assembly::geometry` (plane, cylinder, sphere),
+    /// which parry's exact paths match to ~1e-17 m.
+    ClosedForm,
+}
+
+impl GeometrySource {
+    /// Geometry of contact `i` at `pose`.
+    pub fn geometry(self, coupling: &Coupling, i: usize, pose: &BodyPose) -> ContactGeometry {
+        let centre = coupling.balls[coupling.contacts[i].ball].centre;
+        self.geometry_with_centre(coupling, i, pose, &pose.apply(&centre))
+    }
+
+    /// [`Self::geometry`] with the world position of the contact's ball
+    /// centre at `pose` given (shared by the contacts of one ball).
+    pub fn geometry_with_centre(
+        self,
+        coupling: &Coupling,
+        i: usize,
+        pose: &BodyPose,
+        centre: &Vector3<f64>,
+    ) -> ContactGeometry {
+        match self {
+            GeometrySource::Parry => coupling.geometry(i, pose),
+            GeometrySource::ClosedForm => {
+                let c = &coupling.contacts[i];
+                closed_form(&c.surface, centre, coupling.balls[c.ball].radius)
+            }
+        }
+    }
+}
+
+/// The rigid motion that takes the moving half from a trial pose T back to
+/// the committed pose T_c, p_c = T_c T^-1 p, written as p_c - p = D p + b
+/// with D = R(dq) - I, dq = q_c q^-1, and b = (t_c - t) - D t. For the unit
+/// quaternion dq = (w, v), R(dq) - I = 2 w [v]x + 2 [v]x^2 (Rodrigues), so
+/// D is formed without the cancellation of R - I: the small displacement
+/// du = p - p_c = -(D p + b) of the contact law keeps the full relative
+/// precision of the rotation and the translation increments.
+#[derive(Debug, Clone, Copy)]
+pub struct Motion {
+    d: Matrix3<f64>,
+    b: Vector3<f64>,
+}
+
+impl Motion {
+    /// The motion from `pose` back to `committed`.
+    pub fn between(pose: &BodyPose, committed: &BodyPose) -> Self {
+        let dq = committed.rotation * pose.rotation.inverse();
+        let (w, v) = (dq.w, dq.imag());
+        let vx = v.cross_matrix();
+        let d = vx * (2.0 * w) + vx * vx * 2.0;
+        let b = (committed.translation - pose.translation) - d * pose.translation;
+        Motion { d, b }
+    }
+
+    /// du = p - p_c of the material point now at `p`.
+    pub fn displacement(&self, p: &Vector3<f64>) -> Vector3<f64> {
+        -(self.d * p + self.b)
+    }
+}
+
+/// [`evaluate`] with the geometry `g` of the contact at `pose` given.
+pub fn evaluate_at(
+    coupling: &Coupling,
+    i: usize,
+    g: ContactGeometry,
+    pose: &BodyPose,
+    committed_pose: &BodyPose,
+    committed: &TangentialState,
+    friction: Friction,
+) -> ContactEval {
+    let du = Motion::between(pose, committed_pose).displacement(&g.point);
+    evaluate_moved(coupling, i, g, du, committed, friction)
+}
+
+/// [`evaluate_at`] with the tangential increment du = p - p_c of the
+/// contact point given (the solver forms [`Motion`] once per pose).
+pub fn evaluate_moved(
+    coupling: &Coupling,
+    i: usize,
+    g: ContactGeometry,
+    du: Vector3<f64>,
+    committed: &TangentialState,
+    friction: Friction,
+) -> ContactEval {
+    let contact = &coupling.contacts[i];
     let approach = -g.gap;
     let hertz = &contact.law.hertz;
     // Hertz in series with the support compliance (`contact::series`).
     let (fn_, kn) = contact.normal.force_and_stiffness(approach);
-    let body_point = pose.rotation.inverse() * (g.point - pose.translation);
-    let du = g.point - committed_pose.apply(&body_point);
     let f_mid = 0.5 * (committed.normal_force + fn_);
     let major_axis = match contact.surface {
         SurfaceGeometry::Cylinder { direction, .. } => direction,
         _ => Vector3::zeros(), // circular: K_t is isotropic
     };
     let law = &contact.law;
-    let kt = tangential_tensor(law.tangential_stiffness_axes(f_mid), &g.normal, &major_axis);
+    // ContactLaw::tangential_stiffness_axes (k = coef a) with the fast cube root.
+    let a_mid = hertz.major_semi_axis_fast(f_mid);
+    let principal = PrincipalStiffness::new(law.mindlin.map(|c| c * a_mid), &g.normal, &major_axis);
+    let kt = principal.tensor(&g.normal);
     // dK_t/dF_n = K_t / (3 F_mid) d(F_mid)/dF_n, with d(F_mid)/dF_n = 1/2.
     let dkt = if f_mid > 0.0 {
-        kt / (6.0 * f_mid)
+        kt * (1.0 / (6.0 * f_mid))
     } else {
         Matrix3::zeros()
     };
-    // Mindlin-Deresiewicz: the equal-area radius and the shape K_t / (8 G* sqrt(ab)).
-    let [a, b] = hertz.semi_axes(fn_);
-    let shape = law
-        .mindlin
-        .map(|c| c / (8.0 * law.g_star * hertz.axis_ratio.sqrt()));
+    // Mindlin-Deresiewicz: the equal-area radius and the shape K_t / (8 G* sqrt(ab))
+    // (the Coulomb law reads neither: they are left at zero for it).
+    let tangential_law = coupling.scene.friction.tangential_law;
+    let (contact_radius, mindlin_shape) = match tangential_law {
+        TangentialLaw::Coulomb => (0.0, Matrix3::zeros()),
+        TangentialLaw::MindlinDeresiewicz => {
+            let [a, b] = hertz.semi_axes(fn_);
+            let shape = law
+                .mindlin
+                .map(|c| c / (8.0 * law.g_star * hertz.axis_ratio.sqrt()));
+            (
+                (a * b).sqrt(),
+                tangential_tensor(shape, &g.normal, &major_axis),
+            )
+        }
+    };
     let input = TangentialInput {
         normal: g.normal,
         du,
         normal_force: fn_,
         stiffness: kt,
         d_stiffness_d_fn: dkt,
-        contact_radius: (a * b).sqrt(),
+        contact_radius,
         g_star: law.g_star,
-        mindlin_shape: tangential_tensor(shape, &g.normal, &major_axis),
+        mindlin_shape,
         friction,
     };
-    let mut tangential = committed.update(coupling.scene.friction.tangential_law, &input);
+    let mut tangential = committed.update_with(tangential_law, &input, Some(&principal));
     tangential.state.normal_force = fn_;
     let n = g.normal;
     // d(approach) = -n . dp, so d(F_n n) = -k_n n n^T dp and
-    // d(F_t) = T dp + (dF_t/dF_n)(-k_n n^T dp); the force on the body is F_n n - F_t.
-    let d_fn = -kn * n.transpose();
-    let stiffness = n * d_fn - (tangential.d_force_d_du + tangential.d_force_d_fn * d_fn);
+    // d(F_t) = T dp + (dF_t/dF_n)(-k_n n^T dp); the force on the body is F_n n - F_t:
+    // K = -k_n (n - dF_t/dF_n) n^T - T.
+    let stiffness = (tangential.d_force_d_fn - n) * (kn * n).transpose() - tangential.d_force_d_du;
     ContactEval {
         geometry: g,
         approach,
@@ -108,5 +215,34 @@ pub fn evaluate(
         force: n * fn_ - tangential.force,
         tangential,
         stiffness,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::UnitQuaternion;
+
+    #[test]
+    fn motion_is_the_committed_pose_of_the_material_point() {
+        // du = p - T_c T^-1 p by the two rigid maps applied one after the other.
+        let pose = BodyPose {
+            rotation: UnitQuaternion::from_scaled_axis(Vector3::new(1e-3, -2e-3, 0.5)),
+            translation: Vector3::new(1e-6, 2e-6, -3e-6),
+        };
+        let committed = pose.moved(
+            &Vector3::new(2e-8, -1e-8, 3e-8),
+            &Vector3::new(1e-7, 3e-7, -2e-7),
+        );
+        let motion = Motion::between(&pose, &committed);
+        for p in [
+            Vector3::new(0.04, 0.0, 0.0),
+            Vector3::new(-0.02, 0.035, -0.005),
+        ] {
+            let body = pose.rotation.inverse() * (p - pose.translation);
+            let direct = p - committed.apply(&body);
+            assert!(direct.norm() > 1e-9);
+            assert!((motion.displacement(&p) - direct).norm() < 1e-17, "{p}");
+        }
     }
 }

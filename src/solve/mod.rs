@@ -197,6 +197,32 @@ pub struct Seating {
     /// Accepted load increments and Newton iterations in all.
     pub increments: usize,
     pub newton_iterations: usize,
+    /// Which path of the solver produced it.
+    pub path: SeatingPath,
+}
+
+/// Which path seated the coupling (`seating_path` in `run --json`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SeatingPath {
+    /// The quasi-static fast path: nominal increments, no halving,
+    /// closed-form geometry (`quasistatic::uniform`).
+    Uniform,
+    /// The quasi-static adaptive path (halving at stick/slip changes).
+    Adaptive,
+    /// The dynamic solver.
+    Dynamic,
+}
+
+impl SeatingPath {
+    /// The name as in `run --json`.
+    pub fn name(self) -> &'static str {
+        match self {
+            SeatingPath::Uniform => "uniform",
+            SeatingPath::Adaptive => "adaptive",
+            SeatingPath::Dynamic => "dynamic",
+        }
+    }
 }
 
 /// Pose of an evaluation point relative to a reference pose: translation of
@@ -324,6 +350,20 @@ impl Method {
                     ..*o
                 },
             ),
+        }
+    }
+
+    /// [`Method::seat`] of `setup`'s coupling, reusing the quasi-static
+    /// set-up across the seatings of a study (the same bits).
+    pub fn seat_prepared(
+        &self,
+        setup: &quasistatic::SeatingSetup,
+        mu_s: &[f64],
+        start: &dynamic::StartPose,
+    ) -> Result<Seating, SolveError> {
+        match self {
+            Method::QuasiStatic(o) => quasistatic::seat_prepared(setup, mu_s, o),
+            Method::Dynamic(_) => self.seat(setup.coupling(), mu_s, start),
         }
     }
 }

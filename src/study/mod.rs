@@ -41,6 +41,7 @@
 
 pub mod error;
 pub mod inputs;
+pub mod paths;
 pub mod plot;
 mod rng;
 pub mod runner;

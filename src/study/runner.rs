@@ -23,12 +23,14 @@ use thiserror::Error;
 
 use super::StudyError;
 pub use super::inputs::{Input, Tolerances};
+pub use super::paths::{PathTally, SeatingPaths};
 use super::stats::SampleRecord;
 pub use super::variation::{START_CLEARANCE, Sample, StartBounds, Variation, lifted_clear};
 use super::{DesignSpec, Sampler, Shard};
 use crate::assembly::{AssemblyError, Coupling};
 
 use crate::solve::dynamic::StartPose;
+use crate::solve::quasistatic::SeatingSetup;
 use crate::solve::{Method, PointPose, SolveError, nominal_mu};
 
 /// Output components per evaluation point (relative to the nominal seating,
@@ -157,14 +159,6 @@ fn replicated(spec: DesignSpec, replicates: Option<usize>) -> Result<DesignSpec,
     }
 }
 
-/// Static coefficients of one design row.
-pub fn mu_of_row(coupling: &Coupling, row: &[f64]) -> Vec<f64> {
-    let f = &coupling.scene.friction;
-    row.iter()
-        .map(|u| f.mu_static + f.spread * (2.0 * u - 1.0))
-        .collect()
-}
-
 /// Prefix of the interchangeability outputs (`interchange/<point>/<dof>`).
 pub const INTERCHANGE_PREFIX: &str = "interchange/";
 
@@ -244,11 +238,21 @@ pub fn run_variant(
     opts: &StudyOptions,
     tick: &(dyn Fn() + Sync),
 ) -> Result<VariantRun, RunError> {
+    run_variant_tallied(coupling, opts, tick, &PathTally::default())
+}
+
+/// [`run_variant`], counting the seating paths in `tally`.
+pub fn run_variant_tallied(
+    coupling: &Coupling,
+    opts: &StudyOptions,
+    tick: &(dyn Fn() + Sync),
+    tally: &PathTally,
+) -> Result<VariantRun, RunError> {
     let (design, range) = shard_design(coupling, opts)?;
     let rows = design
         .range(range.clone())
         .map_err(|source| design_error(coupling, source))?;
-    let records = evaluate_rows(coupling, opts, range.zip(rows).collect(), tick)?;
+    let records = evaluate_rows_tallied(coupling, opts, range.zip(rows).collect(), tick, tally)?;
     Ok(VariantRun {
         design,
         shard: opts.shard,
@@ -321,17 +325,30 @@ pub fn run_chunked(
     tick: &(dyn Fn() + Sync),
     sink: &mut dyn FnMut(Vec<SampleRecord>) -> Result<(), RunError>,
 ) -> Result<DesignSpec, RunError> {
+    run_chunked_tallied(coupling, opts, chunk, tick, &PathTally::default(), sink)
+}
+
+/// [`run_chunked`], counting the seating paths in `tally`.
+pub fn run_chunked_tallied(
+    coupling: &Coupling,
+    opts: &StudyOptions,
+    chunk: usize,
+    tick: &(dyn Fn() + Sync),
+    tally: &PathTally,
+    sink: &mut dyn FnMut(Vec<SampleRecord>) -> Result<(), RunError>,
+) -> Result<DesignSpec, RunError> {
     let (design, range) = shard_design(coupling, opts)?;
     let design_err = |source| design_error(coupling, source);
     let mut start = range.start;
     while start < range.end {
         let end = (start + chunk.max(1)).min(range.end);
         let rows = design.range(start..end).map_err(design_err)?;
-        sink(evaluate_rows(
+        sink(evaluate_rows_tallied(
             coupling,
             opts,
             (start..end).zip(rows).collect(),
             tick,
+            tally,
         )?)?;
         start = end;
     }
@@ -349,6 +366,17 @@ pub fn evaluate_rows(
     opts: &StudyOptions,
     rows: Vec<(usize, Vec<f64>)>,
     tick: &(dyn Fn() + Sync),
+) -> Result<Vec<SampleRecord>, RunError> {
+    evaluate_rows_tallied(coupling, opts, rows, tick, &PathTally::default())
+}
+
+/// [`evaluate_rows`], counting the seating paths of the rows in `tally`.
+pub fn evaluate_rows_tallied(
+    coupling: &Coupling,
+    opts: &StudyOptions,
+    rows: Vec<(usize, Vec<f64>)>,
+    tick: &(dyn Fn() + Sync),
+    tally: &PathTally,
 ) -> Result<Vec<SampleRecord>, RunError> {
     let file = coupling.scene.file.clone();
     let var = opts.variation;
@@ -374,23 +402,21 @@ pub fn evaluate_rows(
         .iter()
         .map(|p| p.position)
         .collect();
+    let setup = SeatingSetup::new(coupling);
     rows.into_par_iter()
         .map(|(index, row)| {
             let sample = var.sample(coupling, &row);
             let mut outputs: Vec<f64> = Vec::new();
             if var.reseating() {
-                let loaded;
-                let c = if var.preload {
+                let seated = if var.preload {
                     let mut c = coupling.clone();
                     c.scene.preload = sample.preload;
-                    loaded = c;
-                    &loaded
+                    opts.method.seat(&c, &sample.mu, &sample.start)
                 } else {
-                    coupling
+                    opts.method.seat_prepared(&setup, &sample.mu, &sample.start)
                 };
-                let s = opts
-                    .method
-                    .seat(c, &sample.mu, &sample.start)
+                let s = seated
+                    .map(|s| tally.count(s))
                     .map_err(|e| seat_err(index, &sample.mu, e))?;
                 outputs.extend(
                     points
@@ -407,6 +433,7 @@ pub fn evaluate_rows(
                 let s = opts
                     .method
                     .seat(&perturbed, &nominal_mu, &StartPose::touching())
+                    .map(|s| tally.count(s))
                     .map_err(|e| seat_err(index, &nominal_mu, e))?;
                 outputs.extend(
                     points

@@ -153,5 +153,6 @@ pub fn seat_traced(
             .collect(),
         increments: sim.steps,
         newton_iterations: 0,
+        path: crate::solve::SeatingPath::Dynamic,
     })
 }

@@ -6,8 +6,8 @@ use kinrepro::report::study_files::{SamplesCsv, samples_file_name};
 use kinrepro::report::study_stream::{STREAM_ABOVE, StreamStats, streams};
 use kinrepro::study::Shard;
 use kinrepro::study::runner::{
-    StartBounds, StudyOptions, VariantRun, Variation, design_for, recorded_output_names,
-    run_chunked, run_variant,
+    PathTally, StartBounds, StudyOptions, VariantRun, Variation, design_for, recorded_output_names,
+    run_chunked_tallied, run_variant_tallied,
 };
 
 use super::*;
@@ -58,8 +58,10 @@ pub fn study(args: StudyArgs) -> Result<(), CliError> {
             variants.push(v);
             pending_csv.extend(csv);
         } else {
-            let run = run_variant(c, &opts, &|| bar.inc(1))?;
+            let tally = PathTally::default();
+            let run = run_variant_tallied(c, &opts, &|| bar.inc(1), &tally)?;
             let mut v = VariantReport::new(c, run, &opts).context(&c.scene.file)?;
+            v.seating_paths = Some(tally.counts());
             if sobol {
                 let r = kinrepro::study::sensitivity::sobol_run::run_sobol(
                     c,
@@ -141,7 +143,8 @@ fn streamed_variant(
     };
     let mut st = StreamStats::new(names.len());
     let mut failure: Option<CliError> = None;
-    let run = run_chunked(c, opts, CHUNK, tick, &mut |records| {
+    let tally = PathTally::default();
+    let run = run_chunked_tallied(c, opts, CHUNK, tick, &tally, &mut |records| {
         let step = st
             .push(&records, &names)
             .context(file)
@@ -169,6 +172,7 @@ fn streamed_variant(
     if let Err(e) = run {
         return Err(failure.take().unwrap_or_else(|| e.into()));
     }
+    v.seating_paths = Some(tally.counts());
     v.set_moment_stats(&st).context(file)?;
     Ok((v, csv))
 }

@@ -1,0 +1,161 @@
+//! Quasi-static seating: the preload ramps from 0 to F_p; at each increment
+//! Newton solves the six pose unknowns of the moving half so that the
+//! preload and the contact forces balance (MODEL.md §3).
+//!
+//! - Load schedule: lambda = s^(3/2) with s in uniform steps, so that every
+//!   increment adds about the same Hertz approach (delta ~ F^(2/3)).
+//! - Predictor: the linearised frictionless solution, x(lambda) = s x_1,
+//!   where W x_1 = -(f_i / K_i)^(2/3) - c_i f_i (W the constraint rows, f_i
+//!   the frictionless contact forces at full preload, c_i the support
+//!   compliances).
+//! - Corrector: Newton on R(x) = sum_i [F_i; p_i x F_i] + [P; p_P x P] = 0
+//!   with the consistent tangent of the contact layer plus the geometric
+//!   terms of moving points; finite rotations (quaternions), contact points
+//!   and normals from parry at the current pose. Converged when
+//!   |R_F| < tol F_p and |R_M| < tol F_p L (L the coupling radius).
+//! - Time: the path parameter s runs from 0 to 1 in `[preload] ramp_time`
+//!   T (t = s T, so lambda = (t/T)^(3/2): a uniform rate of Hertz
+//!   approach); an increment from s to s' lasts (s' - s) T, the time base
+//!   of the slip velocity of the decay friction law (`contact::friction`).
+//!   A load path after seating ramps its load in the same time T.
+//! - Adaptivity: an increment is halved when Newton fails, and when a
+//!   contact changes between stick and slip, until that change is located
+//!   within 2^-max_splits of a nominal increment.
+//!
+//! The same path follower applies an external load after seating
+//! ([`apply_load`]): it starts from the seated pose and the at-rest contact
+//! states ([`at_rest_states`]), holds the full preload, and ramps an extra
+//! wrench (a force at a point of the moving half and a moment) from 0 to a
+//! load factor in equal increments, with the same Newton corrector and
+//! halving. Instead of failing, it records the first contact that
+//! separates (F_n reaches 0) or starts to slip (|F_t| reaches mu_s F_n) as
+//! a [`LoadEvent`]; a separation that leaves no equilibrium (the coupling
+//! lifts off) ends the path there.
+//!
+//! A seating first tries the uniform fast path ([`uniform`]): the same
+//! increments without halving, closed-form contact geometry; where the
+//! adaptive path would halve, it declines and the adaptive path runs
+//! (`Seating::path` says which one served). [`seat_adaptive`] always takes
+//! the adaptive path (today's algorithm, the reference of the fast one).
+//! A study seats one coupling many times: [`SeatingSetup`] holds what
+//! every seating of it computes first (the predictor x_1, the virgin
+//! contact states), and [`seat_prepared`] reuses it with the same bits.
+
+mod load;
+mod path;
+mod solver;
+pub mod uniform;
+
+pub use load::{ExternalLoad, LoadEvent, LoadEventKind, LoadPath, apply_load, at_rest_states};
+
+use path::End;
+use solver::{Program, Solver};
+
+use std::sync::OnceLock;
+
+use nalgebra::Vector6;
+
+use super::{Seating, SeatingPath, SolveError, SolverOptions, frictions};
+use crate::assembly::Coupling;
+use crate::contact::{Friction, TangentialState};
+use crate::solve::contact_layer::GeometrySource;
+
+/// Seat the coupling with static coefficients `mu_s` (contact order): the
+/// uniform fast path where it serves, else the adaptive path; the same
+/// answer either way (to rounding, [`uniform`]).
+pub fn seat(
+    coupling: &Coupling,
+    mu_s: &[f64],
+    opts: &SolverOptions,
+) -> Result<Seating, SolveError> {
+    seat_prepared(&SeatingSetup::new(coupling), mu_s, opts)
+}
+
+/// What every seating of one coupling computes before its first
+/// increment, computed once and shared (it is `Sync`) by the seatings of a
+/// study: the frictionless predictor x_1 and the virgin contact states
+/// (zero force, tangent to the normals at the touching pose) of either
+/// path. [`seat_prepared`] with it gives the bits of [`seat`].
+pub struct SeatingSetup<'a> {
+    coupling: &'a Coupling,
+    x1: Vector6<f64>,
+    /// Closed-form normals (the uniform path), parry's (the adaptive path).
+    virgin_closed_form: Vec<TangentialState>,
+    virgin_parry: OnceLock<Vec<TangentialState>>,
+}
+
+impl<'a> SeatingSetup<'a> {
+    pub fn new(coupling: &'a Coupling) -> Self {
+        SeatingSetup {
+            coupling,
+            x1: solver::predictor(coupling),
+            virgin_closed_form: virgin_states(coupling, GeometrySource::ClosedForm),
+            virgin_parry: OnceLock::new(),
+        }
+    }
+
+    pub fn coupling(&self) -> &'a Coupling {
+        self.coupling
+    }
+
+    fn virgin_parry(&self) -> Vec<TangentialState> {
+        self.virgin_parry
+            .get_or_init(|| virgin_states(self.coupling, GeometrySource::Parry))
+            .clone()
+    }
+}
+
+/// [`seat`] of `setup`'s coupling.
+pub fn seat_prepared(
+    setup: &SeatingSetup,
+    mu_s: &[f64],
+    opts: &SolverOptions,
+) -> Result<Seating, SolveError> {
+    let fr = frictions(setup.coupling, mu_s)?;
+    if let Some(end) = uniform::seat(setup, &fr, opts) {
+        return Ok(seating(end, SeatingPath::Uniform));
+    }
+    adaptive(setup, fr, opts)
+}
+
+/// Seat by the adaptive path only (today's algorithm, parry's geometry):
+/// the reference of the fast path in tests and benches.
+pub fn seat_adaptive(
+    coupling: &Coupling,
+    mu_s: &[f64],
+    opts: &SolverOptions,
+) -> Result<Seating, SolveError> {
+    let setup = SeatingSetup::new(coupling);
+    adaptive(&setup, frictions(coupling, mu_s)?, opts)
+}
+
+fn adaptive(
+    setup: &SeatingSetup,
+    fr: Vec<Friction>,
+    opts: &SolverOptions,
+) -> Result<Seating, SolveError> {
+    let c = setup.coupling;
+    let solver = Solver::with_predictor(c, fr, *opts, Program::Seat, setup.x1);
+    let end = solver.run(c.touching_pose, setup.virgin_parry())?;
+    let end = end.expect("the adaptive path never declines");
+    Ok(seating(end, SeatingPath::Adaptive))
+}
+
+/// Zero tangential force at every contact, tangent to its normal at the
+/// touching pose (the geometry from `source`).
+fn virgin_states(coupling: &Coupling, source: GeometrySource) -> Vec<TangentialState> {
+    let pose = coupling.touching_pose;
+    (0..coupling.contacts.len())
+        .map(|i| TangentialState::new(source.geometry(coupling, i, &pose).normal))
+        .collect()
+}
+
+fn seating(end: End, path: SeatingPath) -> Seating {
+    Seating {
+        pose: end.pose,
+        contacts: end.contacts,
+        increments: end.increments,
+        newton_iterations: end.newton_iterations,
+        path,
+    }
+}

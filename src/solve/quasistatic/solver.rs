@@ -1,0 +1,325 @@
+//! The Newton corrector of the path follower: residual, consistent
+//! Jacobian and the iteration of one increment (module docs of
+//! [`super`]). Allocation-free: the contact evaluations go into a buffer
+//! the caller owns, the 6x6 system lives on the stack.
+
+use std::ops::{AddAssign, SubAssign};
+
+use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
+
+use super::load::ExternalLoad;
+use crate::assembly::constraint::frictionless_preload_forces;
+use crate::assembly::{BodyPose, Coupling};
+use crate::contact::{Friction, TangentialState};
+use crate::solve::contact_layer::{ContactEval, GeometrySource, Motion, evaluate_moved};
+use crate::solve::{ContactResult, SolveError, SolverOptions};
+
+/// Ball centres held on the stack by [`Solver::evaluate_all`] (a kinematic
+/// coupling has three balls; more are placed one by one).
+const MAX_BALLS: usize = 8;
+
+/// A force and the world point it acts at (moving with the body).
+type PointForce = (Vector3<f64>, Vector3<f64>);
+
+/// What the path follower ramps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Program {
+    /// The preload from 0 (lambda = s^1.5) from the touching pose.
+    Seat,
+    /// Full preload plus s * factor * load.
+    Load { load: ExternalLoad, factor: f64 },
+}
+
+/// The loads of one increment: preload factor, extra-load factor, and the
+/// increment's duration [s] (the decay friction law's time base).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Loads {
+    pub lambda: f64,
+    pub extra: f64,
+    pub duration: f64,
+    /// The path parameter at the end of the increment.
+    pub s: f64,
+}
+
+/// The outcome of Newton on one increment; the evaluations of a converged
+/// increment are in the caller's buffer.
+pub(super) enum Step {
+    /// Converged pose and the iterations it took.
+    Converged(BodyPose, usize),
+    /// Failed, with the last relative residual.
+    Failed(f64),
+}
+
+pub(super) struct Solver<'a> {
+    pub coupling: &'a Coupling,
+    pub friction: Vec<Friction>,
+    pub opts: SolverOptions,
+    pub program: Program,
+    /// Force scale of the residual [N].
+    force_scale: f64,
+    /// Coupling radius, the length scale of moments [m].
+    length: f64,
+    /// Predictor twist per unit s.
+    pub x1: Vector6<f64>,
+    /// Slide-away bound on the translation [m].
+    pub max_travel: f64,
+    /// Duration of the whole path, s from 0 to 1 (`[preload] ramp_time`) [s].
+    pub ramp_time: f64,
+    /// Where the contact geometry comes from.
+    pub geometry: GeometrySource,
+    /// The uniform (fast) path: give up where the adaptive path would halve.
+    pub uniform: bool,
+}
+
+impl<'a> Solver<'a> {
+    /// The adaptive path follower with parry's geometry (today's algorithm).
+    pub fn adaptive(
+        coupling: &'a Coupling,
+        friction: Vec<Friction>,
+        opts: SolverOptions,
+        program: Program,
+    ) -> Self {
+        Self::with_predictor(coupling, friction, opts, program, predictor(coupling))
+    }
+
+    /// [`Self::adaptive`] with the seating predictor x_1 ([`predictor`]) given.
+    pub fn with_predictor(
+        coupling: &'a Coupling,
+        friction: Vec<Friction>,
+        opts: SolverOptions,
+        program: Program,
+        x1: Vector6<f64>,
+    ) -> Self {
+        let length = coupling.length_scale();
+        let preload = coupling.scene.preload.force;
+        let force_scale = match program {
+            Program::Seat => preload,
+            Program::Load { load, factor } => {
+                let f = factor.abs();
+                preload
+                    .max(f * load.force.norm())
+                    .max(f * load.moment.norm() / length)
+            }
+        };
+        Solver {
+            coupling,
+            friction,
+            opts,
+            program,
+            force_scale,
+            length,
+            x1,
+            max_travel: coupling.slide_away_travel(),
+            ramp_time: coupling.scene.preload.ramp_time,
+            geometry: GeometrySource::Parry,
+            uniform: false,
+        }
+    }
+
+    /// Preload factor and extra-load factor at path parameter s.
+    pub fn loads_at(&self, s: f64) -> (f64, f64) {
+        match self.program {
+            Program::Seat => (s.powf(1.5), 0.0),
+            Program::Load { factor, .. } => (1.0, s * factor),
+        }
+    }
+
+    pub fn failure(
+        &self,
+        lambda: f64,
+        residual: f64,
+        pose: &BodyPose,
+        start: &BodyPose,
+    ) -> SolveError {
+        let travel = (pose.translation - start.translation).norm();
+        if travel > 0.5 * self.max_travel {
+            SolveError::SlidAway {
+                percent: 100.0 * lambda,
+                displacement_m: travel,
+            }
+        } else {
+            SolveError::NotConverged {
+                percent: 100.0 * lambda,
+                residual,
+                splits: self.opts.max_splits,
+            }
+        }
+    }
+
+    /// Every contact at `pose` into `out` (cleared first).
+    pub fn evaluate_all(
+        &self,
+        pose: &BodyPose,
+        committed_pose: &BodyPose,
+        states: &[TangentialState],
+        duration: f64,
+        out: &mut Vec<ContactEval>,
+    ) {
+        out.clear();
+        let motion = Motion::between(pose, committed_pose);
+        let mut centres = [Vector3::zeros(); MAX_BALLS];
+        let balls = &self.coupling.balls;
+        for (c, ball) in centres.iter_mut().zip(balls) {
+            *c = pose.apply(&ball.centre);
+        }
+        for (i, state) in states.iter().enumerate() {
+            let ball = self.coupling.contacts[i].ball;
+            let centre = match centres.get(ball) {
+                Some(c) => *c,
+                None => pose.apply(&balls[ball].centre),
+            };
+            let g = self
+                .geometry
+                .geometry_with_centre(self.coupling, i, pose, &centre);
+            let du = motion.displacement(&g.point);
+            let fr = self.friction[i].during(duration);
+            out.push(evaluate_moved(self.coupling, i, g, du, state, fr));
+        }
+    }
+
+    /// Net force and moment on the moving half, and the preload force and point.
+    fn residual(
+        &self,
+        pose: &BodyPose,
+        evals: &[ContactEval],
+        loads: &Loads,
+    ) -> (Vector6<f64>, [PointForce; 2]) {
+        let p = &self.coupling.scene.preload;
+        let fp = p.direction * (p.force * loads.lambda);
+        let pp = pose.apply(&p.point);
+        let mut r = Vector6::zeros();
+        let mut add = |f: &Vector3<f64>, at: &Vector3<f64>| {
+            let m = at.cross(f);
+            r += Vector6::new(f.x, f.y, f.z, m.x, m.y, m.z);
+        };
+        add(&fp, &pp);
+        for e in evals {
+            add(&e.force, &e.geometry.point);
+        }
+        let mut point_forces = [(fp, pp), (Vector3::zeros(), pp)];
+        if let Program::Load { load, .. } = self.program {
+            let fe = load.force * loads.extra;
+            let pe = pose.apply(&load.point);
+            add(&fe, &pe);
+            let me = load.moment * loads.extra;
+            r += Vector6::new(0.0, 0.0, 0.0, me.x, me.y, me.z);
+            point_forces[1] = (fe, pe);
+        }
+        (r, point_forces)
+    }
+
+    fn relative(&self, r: &Vector6<f64>) -> f64 {
+        let fp = self.force_scale;
+        let rf = r.fixed_rows::<3>(0).norm() / fp;
+        let rm = r.fixed_rows::<3>(3).norm() / (fp * self.length);
+        rf.max(rm)
+    }
+
+    /// Newton from `start` on the increment with `loads` from the committed
+    /// pose and states; the evaluations of the last iterate are left in `evals`.
+    pub fn newton(
+        &self,
+        committed_pose: &BodyPose,
+        states: &[TangentialState],
+        start: BodyPose,
+        loads: &Loads,
+        evals: &mut Vec<ContactEval>,
+    ) -> Step {
+        let mut pose = start;
+        let mut last = f64::INFINITY;
+        for it in 0..self.opts.max_newton {
+            self.evaluate_all(&pose, committed_pose, states, loads.duration, evals);
+            let (r, point_forces) = self.residual(&pose, evals, loads);
+            let rel = self.relative(&r);
+            if !rel.is_finite() {
+                return Step::Failed(rel);
+            }
+            if rel < self.opts.tolerance {
+                return Step::Converged(pose, it + 1);
+            }
+            last = rel;
+            let j = self.jacobian(evals, &point_forces);
+            let Some(dx) = j.lu().solve(&(-r)) else {
+                return Step::Failed(rel);
+            };
+            if !dx.iter().all(|v| v.is_finite()) || dx.fixed_rows::<3>(0).norm() > self.max_travel {
+                return Step::Failed(rel);
+            }
+            pose = pose.moved(&dx.fixed_rows::<3>(0).into(), &dx.fixed_rows::<3>(3).into());
+        }
+        Step::Failed(last)
+    }
+
+    /// dR/d(v, w) for a twist about the world origin: contact stiffness K_i
+    /// mapped through dp = v - [p]x w, plus the moments of forces whose
+    /// points move with the body.
+    fn jacobian(&self, evals: &[ContactEval], point_forces: &[PointForce]) -> Matrix6<f64> {
+        let mut j = Matrix6::zeros();
+        // [p]x M column by column (p x m_j) and M [p]x row by row
+        // ((m_i x p)^T): the products with a cross-product matrix without
+        // its zeros.
+        let cross_left = |p: &Vector3<f64>, m: &Matrix3<f64>| {
+            Matrix3::from_columns(&[
+                p.cross(&m.column(0)),
+                p.cross(&m.column(1)),
+                p.cross(&m.column(2)),
+            ])
+        };
+        let cross_right = |m: &Matrix3<f64>, p: &Vector3<f64>| {
+            let row = |i: usize| m.row(i).transpose().cross(p).transpose();
+            Matrix3::from_rows(&[row(0), row(1), row(2)])
+        };
+        let mut add_point_force =
+            |k: &Matrix3<f64>, f: &Vector3<f64>, p: &Vector3<f64>, moving: &Vector3<f64>| {
+                // force rows: K dp;  moment rows: p x (K dp) + dp_moving x f,
+                // dp = v - [p]x w: K [-p]x = -K [p]x, [f]x [m]x = m f^T - (f . m) I.
+                let kp = -cross_right(k, p);
+                let fx = f.cross_matrix();
+                let fm = moving * f.transpose() - Matrix3::from_diagonal_element(f.dot(moving));
+                j.fixed_view_mut::<3, 3>(0, 0).add_assign(k);
+                j.fixed_view_mut::<3, 3>(0, 3).add_assign(&kp);
+                j.fixed_view_mut::<3, 3>(3, 0)
+                    .add_assign(&(cross_left(p, k) - fx));
+                j.fixed_view_mut::<3, 3>(3, 3)
+                    .add_assign(&(cross_left(p, &kp) + fm));
+            };
+        for (i, e) in evals.iter().enumerate() {
+            let centre = e.geometry.point
+                + e.geometry.normal * self.coupling.balls[self.coupling.contacts[i].ball].radius;
+            add_point_force(&e.stiffness, &e.force, &e.geometry.point, &centre);
+        }
+        // A load of fixed direction at a point of the body (K = 0): moment
+        // rows only, d(p x f) = dp x f = -[f]x (v - [p]x w).
+        for (f, p) in point_forces {
+            let fx = f.cross_matrix();
+            j.fixed_view_mut::<3, 3>(3, 0).sub_assign(&fx);
+            j.fixed_view_mut::<3, 3>(3, 3)
+                .add_assign(&(fx * p.cross_matrix()));
+        }
+        j
+    }
+
+    pub fn result(&self, i: usize, e: &ContactEval) -> ContactResult {
+        ContactResult::from_eval(self.coupling, i, e, self.friction[i])
+    }
+}
+
+/// The predictor twist per unit s of a seating (module docs of [`super`]):
+/// W x_1 = -delta_i(f_i), W the constraint rows at the touching pose, f_i
+/// the frictionless contact forces at full preload, delta_i the approach
+/// (Hertz plus support compliance). Depends on the coupling only.
+pub(super) fn predictor(coupling: &Coupling) -> Vector6<f64> {
+    let rows = coupling.constraint_rows(&coupling.touching_pose);
+    let w = Matrix6::from_fn(|r, c| rows[r][c]);
+    let f = frictionless_preload_forces(coupling);
+    let rhs = Vector6::from_fn(|i, _| -coupling.contacts[i].normal.approach(f[i].max(0.0)));
+    w.lu().solve(&rhs).unwrap_or_else(Vector6::zeros)
+}
+
+/// The twist (v, w) with `from.moved(v, w) == to`.
+pub(super) fn twist_between(from: &BodyPose, to: &BodyPose) -> Vector6<f64> {
+    let dq = to.rotation * from.rotation.inverse();
+    let w = dq.scaled_axis();
+    let v = to.translation - dq * from.translation;
+    Vector6::new(v.x, v.y, v.z, w.x, w.y, w.z)
+}

@@ -1,0 +1,59 @@
+//! Which solver path served the seatings of a study: counted by the rayon
+//! workers as samples finish, reported as `seating_paths` of a variant.
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use serde::{Deserialize, Serialize};
+
+use crate::solve::{Seating, SeatingPath};
+
+/// How many sample seatings each solver path served (`seating_paths` of a
+/// study variant's JSON): the quasi-static fast path (`uniform`), the
+/// adaptive path where it declined (`adaptive`), the dynamic solver
+/// (`dynamic`). A sample with tolerances varied seats twice; the nominal
+/// seating is not counted.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct SeatingPaths {
+    pub uniform: usize,
+    pub adaptive: usize,
+    pub dynamic: usize,
+}
+
+impl SeatingPaths {
+    /// The counts of several runs (shards) added; `None` if any lacks them.
+    pub fn total(parts: impl IntoIterator<Item = Option<SeatingPaths>>) -> Option<SeatingPaths> {
+        parts.into_iter().try_fold(SeatingPaths::default(), |a, p| {
+            p.map(|p| SeatingPaths {
+                uniform: a.uniform + p.uniform,
+                adaptive: a.adaptive + p.adaptive,
+                dynamic: a.dynamic + p.dynamic,
+            })
+        })
+    }
+}
+
+/// [`SeatingPaths`] counted by the rayon workers of a run.
+#[derive(Debug, Default)]
+pub struct PathTally([AtomicUsize; 3]);
+
+impl PathTally {
+    /// Count the path of `seating` and pass it on.
+    pub fn count(&self, seating: Seating) -> Seating {
+        let k = match seating.path {
+            SeatingPath::Uniform => 0,
+            SeatingPath::Adaptive => 1,
+            SeatingPath::Dynamic => 2,
+        };
+        self.0[k].fetch_add(1, Ordering::Relaxed);
+        seating
+    }
+
+    pub fn counts(&self) -> SeatingPaths {
+        let n = |k: usize| self.0[k].load(Ordering::Relaxed);
+        SeatingPaths {
+            uniform: n(0),
+            adaptive: n(1),
+            dynamic: n(2),
+        }
+    }
+}
