@@ -64,10 +64,23 @@ impl PrincipalStiffness {
     /// Principal values `k` (major, minor) about the unit normal `n`, the
     /// major axis along `major_axis` projected into the tangent plane.
     pub fn new(k: [f64; 2], n: &Vector3<f64>, major_axis: &Vector3<f64>) -> Self {
-        if k[0] == k[1] {
-            return PrincipalStiffness { k, axes: None };
+        // A circular contact: equal principal values (to rounding: the two
+        // may be computed by different formulas), or no major axis to orient
+        // an ellipse by. Both values are then the mean, K_t = k (I - n n^T).
+        let in_plane = (Matrix3::identity() - n * n.transpose()) * major_axis;
+        let round = (k[0] - k[1]).abs() <= 1e-12 * k[0].abs().max(k[1].abs());
+        if round || in_plane.norm() <= 1e-12 * major_axis.norm() || in_plane.norm() == 0.0 {
+            let mean = if k[0] == k[1] {
+                k[0]
+            } else {
+                0.5 * (k[0] + k[1])
+            };
+            return PrincipalStiffness {
+                k: [mean, mean],
+                axes: None,
+            };
         }
-        let e1 = ((Matrix3::identity() - n * n.transpose()) * major_axis).normalize();
+        let e1 = in_plane.normalize();
         PrincipalStiffness {
             k,
             axes: Some([e1, n.cross(&e1)]),
@@ -251,5 +264,30 @@ mod tests {
         let dl =
             (p.project(&n, &trial, limit + h).0 - p.project(&n, &trial, limit - h).0) / (2.0 * h);
         assert!((dl - d_limit).norm() < 1e-8);
+    }
+
+    /// Principal values equal but for rounding, or a major axis along the
+    /// normal (none in the tangent plane), are a circular contact: the
+    /// radial return, finite, never an ellipse oriented by a zero vector.
+    #[test]
+    fn nearly_equal_values_or_no_axis_give_the_radial_return() {
+        let (n, trial, limit) = case();
+        let k = 3e7;
+        let circle = PrincipalStiffness::new([k, k], &n, &Vector3::x());
+        let want = circle.project(&n, &trial, limit).0;
+        let near = PrincipalStiffness::new([k, k * (1.0 + f64::EPSILON)], &n, &Vector3::zeros());
+        assert!(near.axes.is_none());
+        let got = near.project(&n, &trial, limit).0;
+        assert!(got.iter().all(|v| v.is_finite()));
+        assert!((got - want).norm() <= 1e-15 * limit, "{got} vs {want}");
+        let along_normal = PrincipalStiffness::new([k, 0.5 * k], &n, &n);
+        assert!(along_normal.axes.is_none());
+        assert!(
+            along_normal
+                .project(&n, &trial, limit)
+                .0
+                .iter()
+                .all(|v| v.is_finite())
+        );
     }
 }

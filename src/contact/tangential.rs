@@ -12,11 +12,11 @@
 
 use nalgebra::{Matrix3, Vector3};
 
+use super::mindlin::PrincipalStiffness;
 pub use super::tangential_types::{
     Friction, Rotation, SlipState, TangentialInput, TangentialLaw, TangentialResponse,
     TangentialState, UnknownLaw,
 };
-use super::mindlin::PrincipalStiffness;
 use super::{coulomb, mindlin_deresiewicz};
 
 impl TangentialState {
