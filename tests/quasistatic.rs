@@ -329,3 +329,53 @@ fn failures_are_clear_errors_not_poses() {
             .contains("preload cannot seat")
     );
 }
+
+/// Scene 01 with the circle of ball centres scaled to `diameter` [m].
+fn scene01_with_diameter(diameter: f64) -> Coupling {
+    let text = std::fs::read_to_string(common::scene("01_maxwell_vgroove_steel.toml")).unwrap();
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("diameter"))
+        .expect("scene 01 gives coupling.diameter");
+    let text = text.replace(line, &format!("diameter = {diameter}"));
+    let scene = kinrepro::scene::Scene::parse(&text, "scene01_scaled.toml").unwrap();
+    Coupling::new(&scene).unwrap()
+}
+
+/// A coupling of metres (contact approaches of a micrometre computed from
+/// positions of a metre: force rounding above 1e-10 of the preload) seats,
+/// and seats right: frictionless, straight down by the same Hertz closed
+/// form as at 80 mm (the contact forces do not depend on the diameter);
+/// sliding, at the history-free all-sliding equilibrium.
+#[test]
+fn a_coupling_of_metres_seats_to_the_closed_form_and_the_sliding_equilibrium() {
+    for diameter in [1.0, 2.0, 4.0] {
+        let c = scene01_with_diameter(diameter);
+        let s = seat(&c, &[0.0; 6], &SolverOptions::default()).unwrap();
+        let p = centre_pose(&c, &s);
+        let cos_a = 45f64.to_radians().cos();
+        let f = 20.0 / (6.0 * cos_a);
+        let k = 4.0 / 3.0 * common::E_STAR_STEEL * 5e-3f64.sqrt();
+        let z = -(f / k).powf(2.0 / 3.0) / cos_a;
+        assert!(
+            (p.z_m / z - 1.0).abs() < 1e-6,
+            "D {diameter}: z {} vs {z}",
+            p.z_m
+        );
+        let mu = [0.45, 0.55, 0.5, 0.52, 0.48, 0.5];
+        let s = seat(&c, &mu, &SolverOptions::default())
+            .unwrap_or_else(|e| panic!("D {diameter} m: {e}"));
+        let mu_d: Vec<f64> = mu.iter().map(|m| 0.8 * m).collect();
+        let start = BodyPose {
+            rotation: UnitQuaternion::identity(),
+            translation: Vector3::new(0.0, 0.0, -6e-7),
+        };
+        let direct = all_sliding_equilibrium(&c, &mu_d, &start);
+        // Both solves resolve a pose of size D to about eps D.
+        let resolution = 1e-12 * diameter / 0.08;
+        for b in &c.balls {
+            let gap = (s.pose.apply(&b.centre) - direct.apply(&b.centre)).norm();
+            assert!(gap < resolution, "D {diameter} m: {gap:e} m apart");
+        }
+    }
+}

@@ -2,6 +2,15 @@
 //! Jacobian and the iteration of one increment (module docs of
 //! [`super`]). Allocation-free: the contact evaluations go into a buffer
 //! the caller owns, the 6x6 system lives on the stack.
+//!
+//! Convergence: the relative residual below `tolerance`, or, where the
+//! residual cannot get there in f64 (it stalls: less than a tenfold drop in
+//! an iteration), the Newton correction below the resolution of the pose
+//! itself: |dv| + L |dw| <= 64 eps L (L the coupling radius). Contact forces come from approaches delta of about a
+//! micrometre computed as differences of positions of size L, so their
+//! rounding is about eps L / delta of the contact force; for a coupling of
+//! a metre or more that is above 1e-10 of the preload, and without this
+//! floor Newton would stall and the increment be halved until it fails.
 
 use std::ops::{AddAssign, SubAssign};
 
@@ -237,6 +246,7 @@ impl<'a> Solver<'a> {
             if rel < self.opts.tolerance {
                 return Step::Converged(pose, it + 1);
             }
+            let stalled = rel > 0.1 * last;
             last = rel;
             let j = self.jacobian(evals, &point_forces);
             let Some(dx) = j.lu().solve(&(-r)) else {
@@ -245,9 +255,19 @@ impl<'a> Solver<'a> {
             if !dx.iter().all(|v| v.is_finite()) || dx.fixed_rows::<3>(0).norm() > self.max_travel {
                 return Step::Failed(rel);
             }
+            if stalled && self.at_resolution(&dx) {
+                return Step::Converged(pose, it + 1);
+            }
             pose = pose.moved(&dx.fixed_rows::<3>(0).into(), &dx.fixed_rows::<3>(3).into());
         }
         Step::Failed(last)
+    }
+
+    /// A Newton correction below what f64 resolves in a pose of size L:
+    /// |dv| + L |dw| <= 64 eps L (module docs).
+    fn at_resolution(&self, dx: &Vector6<f64>) -> bool {
+        let size = dx.fixed_rows::<3>(0).norm() + self.length * dx.fixed_rows::<3>(3).norm();
+        size <= 64.0 * f64::EPSILON * self.length
     }
 
     /// dR/d(v, w) for a twist about the world origin: contact stiffness K_i
