@@ -54,6 +54,8 @@ pub struct Parameter {
     pub high: f64,
     pub level: f64,
     pub method: String,
+    /// Sandwich factor k of the adjusted likelihood ratio (1: normal scatter).
+    pub sandwich_factor: f64,
     /// The interval reached the end of the admissible range (0 or mu_static).
     pub low_at_bound: bool,
     pub high_at_bound: bool,
@@ -238,38 +240,9 @@ pub fn calibrate(
     let g = at_estimate.per_unit(&m.dofs);
     let fitted = model_covariance(&g, &noise_var, fit.estimate);
     let gof = goodness_of_fit(&observed(m), &fitted);
-    let linearity = (0..6)
-        .map(|j| {
-            let a = (reference.cov[(j, j)]).sqrt() / reference.spread;
-            let b = (at_estimate.cov[(j, j)]).sqrt() / at_estimate.spread;
-            if a > 0.0 { (b / a - 1.0).abs() } else { 0.0 }
-        })
-        .fold(0.0, f64::max);
-    let measured = m.sigma();
-    let cycles = m.cycles();
-    let dofs = m
-        .dofs
-        .iter()
-        .enumerate()
-        .map(|(j, &d)| DofFit {
-            dof: DOFS[d].into(),
-            unit: si_unit(d).into(),
-            cycles: cycles[j],
-            measured_sigma: measured[j],
-            noise_sigma: noise[j],
-            fitted_sigma: fitted[(j, j)].sqrt(),
-            model_sigma: fit.estimate * g[(j, j)].sqrt(),
-        })
-        .collect();
-    let parameter = Parameter {
-        estimate: fit.estimate,
-        low: fit.low,
-        high: fit.high,
-        level: fit.level,
-        method: "profile likelihood (Wilks: 2 (l_max - l) <= chi^2_1(0.90) = 2.7055)".into(),
-        low_at_bound: fit.low_at_bound,
-        high_at_bound: fit.high_at_bound,
-    };
+    let linearity = linearity(&reference, &at_estimate);
+    let dofs = dof_fits(m, &noise, &fitted, &g, fit.estimate);
+    let parameter = parameter(&fit);
     Ok(Calibration {
         schema_version: CALIBRATION_SCHEMA_VERSION,
         kind: "calibration".into(),
@@ -309,6 +282,58 @@ pub fn calibrate(
         },
         fingerprint: at_estimate.fingerprint,
     })
+}
+
+/// Largest relative change of sigma / spread over the six DOFs between two model studies.
+fn linearity(a: &ModelStudy, b: &ModelStudy) -> f64 {
+    (0..6)
+        .map(|j| {
+            let x = a.cov[(j, j)].sqrt() / a.spread;
+            let y = b.cov[(j, j)].sqrt() / b.spread;
+            if x > 0.0 { (y / x - 1.0).abs() } else { 0.0 }
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Measured against fitted sigma per measured DOF.
+fn dof_fits(
+    m: &Measurement,
+    noise: &[f64],
+    fitted: &DMatrix<f64>,
+    g: &DMatrix<f64>,
+    estimate: f64,
+) -> Vec<DofFit> {
+    let measured = m.sigma();
+    let cycles = m.cycles();
+    m.dofs
+        .iter()
+        .enumerate()
+        .map(|(j, &d)| DofFit {
+            dof: DOFS[d].into(),
+            unit: si_unit(d).into(),
+            cycles: cycles[j],
+            measured_sigma: measured[j],
+            noise_sigma: noise[j],
+            fitted_sigma: fitted[(j, j)].sqrt(),
+            model_sigma: estimate * g[(j, j)].sqrt(),
+        })
+        .collect()
+}
+
+/// The spread's entry of `parameters`.
+fn parameter(fit: &SpreadFit) -> Parameter {
+    Parameter {
+        estimate: fit.estimate,
+        low: fit.low,
+        high: fit.high,
+        level: fit.level,
+        method: "adjusted profile likelihood: k 2 (l_max - l) <= chi^2_1(0.90) = 2.7055, \
+                 k the sandwich factor"
+            .into(),
+        sandwich_factor: fit.sandwich,
+        low_at_bound: fit.low_at_bound,
+        high_at_bound: fit.high_at_bound,
+    }
 }
 
 impl Calibration {

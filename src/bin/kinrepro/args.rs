@@ -42,6 +42,12 @@ pub enum Command {
     ValidateHertz(ValidateHertzArgs),
     /// Print the explicit form of a scene (loads back to the same coupling).
     Expand(ExpandArgs),
+    /// Fit the friction spread of a scene to a measured re-seating scatter
+    /// (docs/measurements.md) and write a calibration file.
+    Calibrate(crate::commands::calibrate::CalibrateArgs),
+    /// Predict sigma of other scenes with a calibrated friction spread, with
+    /// a prediction interval.
+    Predict(crate::commands::calibrate::PredictArgs),
 }
 
 #[derive(Args)]

@@ -1,6 +1,7 @@
 //! One function per verb; shared helpers for parsing and printing.
 
 mod analysis;
+pub mod calibrate;
 mod contact;
 mod fe;
 mod scene;
@@ -22,6 +23,8 @@ pub fn dispatch(command: Command) -> Result<(), String> {
         Command::Study(a) => study::study(a),
         Command::Merge(a) => study::merge(a),
         Command::ValidateHertz(a) => fe::validate_hertz(a),
+        Command::Calibrate(a) => calibrate::calibrate_cmd(a),
+        Command::Predict(a) => calibrate::predict_cmd(a),
     }
 }
 
