@@ -164,9 +164,14 @@ fn panel<DB: DrawingBackend>(
             )?
             .label(DOFS[j])
             .legend(move |(x, y)| Circle::new((x + 6, y), 4, col.filled()));
-        chart.draw_series(data.iter().enumerate().filter_map(move |(i, r)| {
+        let crosses = chart.draw_series(data.iter().enumerate().filter_map(move |(i, r)| {
             r.measured[j].map(|m| Cross::new((i as f64 + dx, m), 6, BLACK.stroke_width(2)))
         }))?;
+        if c == 2 && data.iter().any(|r| r.measured.iter().any(Option::is_some)) {
+            crosses
+                .label("measured (raw)")
+                .legend(|(x, y)| Cross::new((x + 6, y), 5, BLACK.stroke_width(2)));
+        }
     }
     chart
         .configure_series_labels()
