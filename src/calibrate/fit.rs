@@ -17,7 +17,7 @@ use serde::{Deserialize, Serialize};
 use super::error::CalibrateError;
 use super::likelihood::{
     GOF_THRESHOLD, Observed, SpreadFit, fit_spread, goodness_of_fit, model_covariance,
-    sandwich_factor,
+    model_error_sd, sandwich_factor,
 };
 use super::measurement::{MeasuredData, Measurement};
 use super::model::ModelStudy;
@@ -56,6 +56,9 @@ pub struct Parameter {
     pub method: String,
     /// Sandwich factor k of the adjusted likelihood ratio (1: normal scatter).
     pub sandwich_factor: f64,
+    /// Standard deviation of ln(estimate) due to the finite model study,
+    /// added to the interval in quadrature on ln s.
+    pub model_error: f64,
     /// The interval reached the end of the admissible range (0 or mu_static).
     pub low_at_bound: bool,
     pub high_at_bound: bool,
@@ -202,13 +205,27 @@ pub fn fit_with(
     let g = model.per_unit(&m.dofs);
     let x = model.samples_of(&m.dofs);
     let k = |s: f64| sandwich_factor(&obs, &g, noise_var, s, &x, model.spread);
-    fit_spread(&obs, &g, noise_var, s_max, &k).ok_or_else(|| CalibrateError::Model {
-        file: m.file.clone(),
-        reason: "the model covariance of the measured DOFs plus the sensor noise is singular: \
-                     give the sensor noise of every measured DOF (--noise)"
-            .into(),
-    })
+    let mut fit =
+        fit_spread(&obs, &g, noise_var, s_max, &k).ok_or_else(|| CalibrateError::Model {
+            file: m.file.clone(),
+            reason: "the model covariance of the measured DOFs plus the sensor noise is singular: \
+                 give the sensor noise of every measured DOF (--noise)"
+                .into(),
+        })?;
+    // Carry the model study's own sampling error: widen in quadrature on ln s.
+    fit.model_error = model_error_sd(&obs, &g, noise_var, fit.estimate, &x);
+    let h = Z_90 * fit.model_error;
+    if !fit.low_at_bound {
+        fit.low = fit.estimate * (-(fit.estimate / fit.low).ln().hypot(h)).exp();
+    }
+    if !fit.high_at_bound {
+        fit.high = (fit.estimate * (fit.high / fit.estimate).ln().hypot(h).exp()).min(s_max);
+    }
+    Ok(fit)
 }
+
+/// The two-sided 90 % normal quantile, 1.6449.
+const Z_90: f64 = 1.644_853_626_951_472_2;
 
 /// Calibrate the scene's friction spread on measurement `m`.
 pub fn calibrate(
@@ -327,10 +344,12 @@ fn parameter(fit: &SpreadFit) -> Parameter {
         low: fit.low,
         high: fit.high,
         level: fit.level,
-        method: "adjusted profile likelihood: k 2 (l_max - l) <= chi^2_1(0.90) = 2.7055, \
-                 k the sandwich factor"
+        method: "adjusted profile likelihood (k 2 (l_max - l) <= chi^2_1(0.90) = 2.7055, \
+                 k the sandwich factor), widened in quadrature on ln s by the model study's \
+                 sampling error"
             .into(),
         sandwich_factor: fit.sandwich,
+        model_error: fit.model_error,
         low_at_bound: fit.low_at_bound,
         high_at_bound: fit.high_at_bound,
     }

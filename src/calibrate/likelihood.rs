@@ -102,6 +102,9 @@ pub struct SpreadFit {
     pub log_likelihood: f64,
     /// The sandwich factor k = H / J at the estimate.
     pub sandwich: f64,
+    /// Standard deviation of ln(estimate) due to the model study (0 until
+    /// [`model_error_sd`] is applied).
+    pub model_error: f64,
 }
 
 /// Smallest spread searched, relative to `s_max`.
@@ -161,6 +164,7 @@ pub fn fit_spread(
         high_at_bound,
         log_likelihood: l_max,
         sandwich: factor,
+        model_error: 0.0,
     })
 }
 
@@ -253,6 +257,53 @@ pub fn sandwich_factor(
     if k.is_finite() && k > 0.0 { k } else { 1.0 }
 }
 
+/// Standard deviation of ln s_hat due to the finite model study alone.
+///
+/// s_hat solves the score equation tr(A (S - s^2 G - N)) = 0 (A the score's
+/// weight matrix: Sigma^-1 Sigma' Sigma^-1, or its diagonal form weighted by
+/// n_j - 1 for a summary), so an error dC of the model covariance C = s_m^2 G
+/// moves ln s_hat^2 by -tr(A dC) / tr(A C), and with C estimated from the
+/// model's N pose samples x: Var(ln s_hat) = Var(x' A x) / (4 N tr(A C)^2).
+pub fn model_error_sd(
+    obs: &Observed,
+    g: &DMatrix<f64>,
+    noise_var: &[f64],
+    s: f64,
+    x: &[Vec<f64>],
+) -> f64 {
+    let p = g.nrows();
+    let sigma = model_covariance(g, noise_var, s);
+    let Some((_, inv)) = ln_det_inverse(&sigma) else {
+        return 0.0;
+    };
+    let mut a = &inv * g * &inv;
+    if let Observed::Sigmas { cycles, .. } = obs {
+        a = DMatrix::from_fn(p, p, |i, j| {
+            if i == j {
+                (cycles[i] as f64 - 1.0) * g[(i, i)] / sigma[(i, i)].powi(2)
+            } else {
+                0.0
+            }
+        });
+    }
+    let n = x.len() as f64;
+    let mean: Vec<f64> = (0..p)
+        .map(|j| x.iter().map(|r| r[j]).sum::<f64>() / n)
+        .collect();
+    let q: Vec<f64> = x
+        .iter()
+        .map(|r| {
+            let v = nalgebra::DVector::from_fn(p, |j, _| r[j] - mean[j]);
+            (v.transpose() * &a * &v)[(0, 0)]
+        })
+        .collect();
+    let qm = q.iter().sum::<f64>() / n;
+    let var_q = q.iter().map(|v| (v - qm).powi(2)).sum::<f64>() / (n - 1.0);
+    // tr(A C) is the mean of x' A x.
+    let sd = (var_q / (4.0 * n * qm * qm)).sqrt();
+    if sd.is_finite() { sd } else { 0.0 }
+}
+
 /// Root of `f` between `a` and `b` (opposite signs) by bisection.
 fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
     let fa = f(a);
@@ -336,5 +387,52 @@ pub fn goodness_of_fit(obs: &Observed, fitted: &DMatrix<f64>) -> GoodnessOfFit {
         p_value,
         ok: p_value.is_none_or(|pv| pv >= GOF_THRESHOLD),
         test,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::{Rng, SeedableRng};
+
+    fn samples(n: usize, uniform: bool) -> Vec<Vec<f64>> {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(9);
+        (0..n)
+            .map(|_| {
+                let v = if uniform {
+                    // Uniform on +-sqrt(3): unit variance.
+                    3f64.sqrt() * (2.0 * rng.random::<f64>() - 1.0)
+                } else {
+                    let (u1, u2): (f64, f64) = (1.0 - rng.random::<f64>(), rng.random());
+                    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+                };
+                vec![v]
+            })
+            .collect()
+    }
+
+    #[test]
+    fn one_dof_closed_forms() {
+        // One DOF, no noise, unit G: the Wishart maximum is s^2 = S.
+        let g = DMatrix::from_element(1, 1, 1.0);
+        let obs = Observed::Covariance {
+            s: DMatrix::from_element(1, 1, 0.09),
+            n: 40,
+        };
+        let f = fit_spread(&obs, &g, &[0.0], 1.0, &|_| 1.0).unwrap();
+        assert!((f.estimate - 0.3).abs() < 1e-9, "{}", f.estimate);
+        // Its Wilks interval: 39 [ln(s^2/S) + S/s^2 - 1] = 2.7055 at both ends.
+        for e in [f.low, f.high] {
+            let r = 0.09 / (e * e);
+            assert!((39.0 * (r - r.ln() - 1.0) - CHI2_1_90).abs() < 1e-6);
+        }
+        // Sandwich factor: normal scatter 1; uniform scatter 2 / Var(x^2) = 2 / 0.8 = 2.5.
+        let normal = sandwich_factor(&obs, &g, &[0.0], 1.0, &samples(200_000, false), 1.0);
+        let uniform = sandwich_factor(&obs, &g, &[0.0], 1.0, &samples(200_000, true), 1.0);
+        assert!((normal - 1.0).abs() < 0.02, "{normal}");
+        assert!((uniform - 2.5).abs() < 0.03, "{uniform}");
+        // Model error of ln s from N normal samples: sqrt(1 / (2 N)).
+        let sd = model_error_sd(&obs, &g, &[0.0], 1.0, &samples(20_000, false));
+        assert!((sd / (1.0 / 40_000f64).sqrt() - 1.0).abs() < 0.03, "{sd}");
     }
 }
