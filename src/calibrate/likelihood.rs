@@ -200,61 +200,86 @@ pub fn sandwich_factor(
         .iter()
         .map(|r| (0..p).map(|j| (r[j] - mean[j]) * scale).collect())
         .collect();
-    let var = |v: &[f64]| {
-        let m = v.iter().sum::<f64>() / v.len() as f64;
-        v.iter().map(|a| (a - m).powi(2)).sum::<f64>() / (v.len() as f64 - 1.0)
-    };
     let k = match obs {
-        Observed::Covariance { .. } => {
-            let Some((_, inv)) = ln_det_inverse(&sigma) else {
-                return 1.0;
-            };
-            let a = &inv * &d_sigma * &inv;
-            let nm = DMatrix::from_diagonal(&nalgebra::DVector::from_column_slice(noise_var));
-            let sx = g * (s * s);
-            let h = 2.0 * (&a * &sigma * &a * &sigma).trace();
-            let q: Vec<f64> = xs
-                .iter()
-                .map(|r| {
-                    let v = nalgebra::DVector::from_column_slice(r);
-                    (v.transpose() * &a * &v)[(0, 0)]
-                })
-                .collect();
-            let j =
-                var(&q) + 4.0 * (&a * &nm * &a * &sx).trace() + 2.0 * (&a * &nm * &a * &nm).trace();
-            h / j
-        }
+        Observed::Covariance { .. } => sandwich_cycles(g, noise_var, s, &sigma, &d_sigma, &xs),
         Observed::Sigmas { cycles, .. } => {
-            let w: Vec<f64> = cycles.iter().map(|c| *c as f64 - 1.0).collect();
-            let a: Vec<f64> = (0..p)
-                .map(|j| d_sigma[(j, j)] / sigma[(j, j)].powi(2))
-                .collect();
-            let h: f64 = (0..p)
-                .map(|j| w[j] / 2.0 * (a[j] * sigma[(j, j)]).powi(2))
-                .sum();
-            let sq: Vec<Vec<f64>> = (0..p)
-                .map(|j| xs.iter().map(|r| r[j] * r[j]).collect())
-                .collect();
-            let mut jv = 0.0;
-            for u in 0..p {
-                for v in 0..p {
-                    let (mu, mv) = (sq[u].iter().sum::<f64>() / n, sq[v].iter().sum::<f64>() / n);
-                    let mut c = sq[u]
-                        .iter()
-                        .zip(&sq[v])
-                        .map(|(a, b)| (a - mu) * (b - mv))
-                        .sum::<f64>()
-                        / (n - 1.0);
-                    if u == v {
-                        c += 4.0 * mu * noise_var[u] + 2.0 * noise_var[u] * noise_var[u];
-                    }
-                    jv += (w[u] * w[v]).sqrt() / 4.0 * a[u] * a[v] * c;
-                }
-            }
-            h / jv
+            sandwich_summary(cycles, noise_var, &sigma, &d_sigma, &xs)
         }
     };
     if k.is_finite() && k > 0.0 { k } else { 1.0 }
+}
+
+/// Sample variance (divisor n - 1).
+fn variance(v: &[f64]) -> f64 {
+    let m = v.iter().sum::<f64>() / v.len() as f64;
+    v.iter().map(|a| (a - m).powi(2)).sum::<f64>() / (v.len() as f64 - 1.0)
+}
+
+/// k for a cycles file (see [`sandwich_factor`]); `xs` centred and scaled samples.
+fn sandwich_cycles(
+    g: &DMatrix<f64>,
+    noise_var: &[f64],
+    s: f64,
+    sigma: &DMatrix<f64>,
+    d_sigma: &DMatrix<f64>,
+    xs: &[Vec<f64>],
+) -> f64 {
+    let Some((_, inv)) = ln_det_inverse(sigma) else {
+        return 1.0;
+    };
+    let a = &inv * d_sigma * &inv;
+    let nm = DMatrix::from_diagonal(&nalgebra::DVector::from_column_slice(noise_var));
+    let sx = g * (s * s);
+    let h = 2.0 * (&a * sigma * &a * sigma).trace();
+    let q: Vec<f64> = xs
+        .iter()
+        .map(|r| {
+            let v = nalgebra::DVector::from_column_slice(r);
+            (v.transpose() * &a * &v)[(0, 0)]
+        })
+        .collect();
+    let j =
+        variance(&q) + 4.0 * (&a * &nm * &a * &sx).trace() + 2.0 * (&a * &nm * &a * &nm).trace();
+    h / j
+}
+
+/// k for a summary file (see [`sandwich_factor`]).
+fn sandwich_summary(
+    cycles: &[usize],
+    noise_var: &[f64],
+    sigma: &DMatrix<f64>,
+    d_sigma: &DMatrix<f64>,
+    xs: &[Vec<f64>],
+) -> f64 {
+    let p = sigma.nrows();
+    let n = xs.len() as f64;
+    let w: Vec<f64> = cycles.iter().map(|c| *c as f64 - 1.0).collect();
+    let a: Vec<f64> = (0..p)
+        .map(|j| d_sigma[(j, j)] / sigma[(j, j)].powi(2))
+        .collect();
+    let h: f64 = (0..p)
+        .map(|j| w[j] / 2.0 * (a[j] * sigma[(j, j)]).powi(2))
+        .sum();
+    let sq: Vec<Vec<f64>> = (0..p)
+        .map(|j| xs.iter().map(|r| r[j] * r[j]).collect())
+        .collect();
+    let mut jv = 0.0;
+    for u in 0..p {
+        for v in 0..p {
+            let (mu, mv) = (sq[u].iter().sum::<f64>() / n, sq[v].iter().sum::<f64>() / n);
+            let mut c = sq[u]
+                .iter()
+                .zip(&sq[v])
+                .map(|(a, b)| (a - mu) * (b - mv))
+                .sum::<f64>()
+                / (n - 1.0);
+            if u == v {
+                c += 4.0 * mu * noise_var[u] + 2.0 * noise_var[u] * noise_var[u];
+            }
+            jv += (w[u] * w[v]).sqrt() / 4.0 * a[u] * a[v] * c;
+        }
+    }
+    h / jv
 }
 
 /// Standard deviation of ln s_hat due to the finite model study alone.

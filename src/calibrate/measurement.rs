@@ -51,6 +51,8 @@ impl Measurement {
 
     /// Parse the text of a measurement file named `file`.
     pub fn parse(text: &str, file: &str) -> Result<Self, CalibrateError> {
+        // A spreadsheet's byte-order mark is not part of the first header.
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let mut noise = [None; 6];
         let mut metadata = Vec::new();
         let mut lines = Vec::new();

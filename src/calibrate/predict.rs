@@ -87,23 +87,8 @@ pub fn predict(
                 reason: "the Monte Carlo study at the estimate gave no interval of sigma".into(),
             });
         };
-        let (bl, bh, h) = (bl.values(), bh.values(), hi[k].sigma.values());
         let l = lo.as_ref().map(|v| v[k].sigma.values());
-        let mut low = [0.0; 6];
-        let mut high = [0.0; 6];
-        for j in 0..6 {
-            if mid[j] <= 0.0 {
-                continue;
-            }
-            let hs_lo = (mid[j] / bl[j]).ln();
-            let hs_hi = (bh[j] / mid[j]).ln();
-            let hp_hi = (h[j] / mid[j]).ln().abs();
-            high[j] = mid[j] * (hp_hi.hypot(hs_hi)).exp();
-            low[j] = match l {
-                Some(l) if l[j] > 0.0 => mid[j] * (-(mid[j] / l[j]).ln().abs().hypot(hs_lo)).exp(),
-                _ => 0.0,
-            };
-        }
+        let (low, high) = combine(mid, bl.values(), bh.values(), l, hi[k].sigma.values());
         p.sigma_ci90_low = Some(nm_dofs(low));
         p.sigma_ci90_high = Some(nm_dofs(high));
         p.sigma_interval_method = PREDICTION_METHOD.to_string();
@@ -111,6 +96,35 @@ pub fn predict(
     let measured =
         (design_hash(coupling) == cal.scene_content).then(|| (cal.point.clone(), cal.dofs.clone()));
     Ok(Prediction { variant, measured })
+}
+
+/// The prediction interval per DOF: sigma `mid` at the estimate with its
+/// Bonett interval [bl, bh], sigma at the spread's low end `lo` (None: the
+/// interval reaches zero spread) and high end `hi`; the parameter and
+/// sampling half-widths combined in quadrature on ln sigma.
+fn combine(
+    mid: [f64; 6],
+    bl: [f64; 6],
+    bh: [f64; 6],
+    lo: Option<[f64; 6]>,
+    hi: [f64; 6],
+) -> ([f64; 6], [f64; 6]) {
+    let mut low = [0.0; 6];
+    let mut high = [0.0; 6];
+    for j in 0..6 {
+        if mid[j] <= 0.0 {
+            continue;
+        }
+        let hs_lo = (mid[j] / bl[j]).ln();
+        let hs_hi = (bh[j] / mid[j]).ln();
+        let hp_hi = (hi[j] / mid[j]).ln().abs();
+        high[j] = mid[j] * hp_hi.hypot(hs_hi).exp();
+        low[j] = match lo {
+            Some(l) if l[j] > 0.0 => mid[j] * (-(mid[j] / l[j]).ln().abs().hypot(hs_lo)).exp(),
+            _ => 0.0,
+        };
+    }
+    (low, high)
 }
 
 /// `Dofs` from values already in nm and nrad.
