@@ -93,6 +93,9 @@ pub fn predict(
         p.sigma_ci90_high = Some(nm_dofs(high));
         p.sigma_interval_method = PREDICTION_METHOD.to_string();
     }
+    // The per-sample records of the study at the estimate are left out (as
+    // for a streamed study): `kinrepro study` at the calibrated spread gives them.
+    variant.records.clear();
     let measured =
         (design_hash(coupling) == cal.scene_content).then(|| (cal.point.clone(), cal.dofs.clone()));
     Ok(Prediction { variant, measured })
