@@ -29,9 +29,3 @@ pub fn read_coupling(path: &Path) -> Result<Coupling, Error> {
         source,
     })
 }
-
-/// The name [`read_coupling`] had before (it read like "the load on a
-/// coupling"); kept so that branches written against it still build. New
-/// code calls `read_coupling`; remove once every branch is merged.
-#[doc(hidden)]
-pub use read_coupling as load_coupling;

@@ -8,6 +8,7 @@
 
 pub mod analysis;
 pub mod assembly;
+pub mod calibrate;
 pub mod contact;
 pub mod error;
 pub mod explore;

@@ -3,6 +3,8 @@
 
 pub mod analysis;
 pub mod atomic;
+pub mod calibration;
+pub mod calibration_plot;
 pub mod check;
 pub mod contact;
 pub mod html;

@@ -49,6 +49,12 @@ pub enum Command {
     Report(crate::commands::report::ReportArgs),
     /// List the built-in materials with E, nu, density, allowable pressure and sources.
     Materials(crate::commands::report::MaterialsArgs),
+    /// Fit the friction spread of a scene to a measured re-seating scatter
+    /// (docs/measurements.md) and write a calibration file.
+    Calibrate(crate::commands::calibrate::CalibrateArgs),
+    /// Predict sigma of other scenes with a calibrated friction spread, with
+    /// a prediction interval.
+    Predict(crate::commands::calibrate::PredictArgs),
 }
 
 #[derive(Args)]

@@ -15,6 +15,7 @@
 use std::fmt::Display;
 
 use kinrepro::assembly::AssemblyError;
+use kinrepro::calibrate::CalibrateError;
 use kinrepro::contact::ContactError;
 use kinrepro::contact::history::{HistoryCsvError, HistoryError};
 use kinrepro::explore::ExploreError;
@@ -22,6 +23,7 @@ use kinrepro::fe::FeError;
 use kinrepro::material::MaterialError;
 use kinrepro::report::analysis::ReportError;
 use kinrepro::report::atomic::WriteError;
+use kinrepro::report::calibration_plot::PlotError as CalibrationPlotError;
 use kinrepro::report::html::HtmlError;
 use kinrepro::report::merge::MergeError;
 use kinrepro::report::sweep::{SweepError, SweepMergeError};
@@ -67,6 +69,10 @@ pub enum CliError {
     Merge(#[from] MergeError),
     #[error("{0}")]
     Html(#[from] HtmlError),
+    #[error("{0}")]
+    Calibrate(#[from] CalibrateError),
+    #[error("{0}")]
+    CalibrationPlot(#[from] CalibrationPlotError),
     #[error("{0}")]
     Explore(#[from] ExploreError),
     #[error("{0}")]

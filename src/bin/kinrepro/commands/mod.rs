@@ -1,6 +1,7 @@
 //! One function per verb; shared helpers for parsing and printing.
 
 mod analysis;
+pub mod calibrate;
 mod contact;
 mod fe;
 pub mod report;
@@ -28,6 +29,8 @@ pub fn dispatch(command: Command) -> Result<(), CliError> {
         Command::ValidateHertz(a) => fe::validate_hertz(a),
         Command::Report(a) => report::report(a),
         Command::Materials(a) => report::materials(a),
+        Command::Calibrate(a) => calibrate::calibrate_cmd(a),
+        Command::Predict(a) => calibrate::predict_cmd(a),
     }
 }
 

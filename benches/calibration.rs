@@ -1,0 +1,35 @@
+//! `calibrate` of the worked example's 50-cycle measurement of scene 02
+//! with one fitted parameter (two 2000-sample model studies): issue 15 asks
+//! for under 10 s on 2 cores.
+
+use std::path::Path;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use kinrepro::calibrate::fit::CalibrateOptions;
+use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED};
+use kinrepro::calibrate::{Measurement, calibrate};
+use kinrepro::solve::Method;
+
+fn calibration(c: &mut Criterion) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let coupling =
+        kinrepro::error::read_coupling(&root.join("scenes/02_maxwell_pins_steel.toml")).unwrap();
+    let m = Measurement::load(&root.join("docs/calibration/measured_02.csv")).unwrap();
+    let opts = CalibrateOptions {
+        fit: vec!["spread".into()],
+        noise: [None; 6],
+        point: None,
+        samples: MODEL_SAMPLES,
+        seed: MODEL_SEED,
+        method: Method::default(),
+    };
+    let mut g = c.benchmark_group("calibration");
+    g.sample_size(10);
+    g.bench_function("scene 02, 50 cycles, fit spread", |b| {
+        b.iter(|| calibrate(&coupling, &m, &opts).unwrap())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, calibration);
+criterion_main!(benches);

@@ -1,0 +1,66 @@
+//! Errors of the calibration module: bad measurement files, bad options,
+//! and model studies that could not run.
+
+use thiserror::Error;
+
+use crate::study::StudyError;
+use crate::study::runner::RunError;
+
+/// A calibration or prediction could not be made.
+#[derive(Debug, Error)]
+pub enum CalibrateError {
+    /// A bad value or header in a measurement file.
+    #[error("{file}: line {line}, column {column}: {reason}")]
+    Parse {
+        file: String,
+        line: usize,
+        /// 1-based column number and header name, e.g. "2 (x_nm)".
+        column: String,
+        reason: String,
+    },
+    /// A measurement file that is wrong as a whole (too few cycles, no DOF).
+    #[error("{file}: line {line}: {reason}")]
+    File {
+        file: String,
+        line: usize,
+        reason: String,
+    },
+    /// The file could not be read.
+    #[error("{file}: cannot read: {reason}")]
+    Read { file: String, reason: String },
+    /// A bad `--noise` entry (or `# noise:` metadata).
+    #[error("{origin}: {reason}")]
+    Noise { origin: String, reason: String },
+    /// A parameter `--fit` names that this version cannot fit.
+    #[error(
+        "--fit {0}: not supported yet: this version fits only `spread` (the friction spread); \
+         mu_static, dynamic_ratio and support_compliance are held at the scene's values"
+    )]
+    NotSupported(String),
+    /// A parameter name `--fit` does not know.
+    #[error(
+        "--fit {0}: unknown parameter (known: spread, mu_static, dynamic_ratio, support_compliance)"
+    )]
+    UnknownParameter(String),
+    /// The measured evaluation point is not in the scene.
+    #[error("{file}: evaluation point `{point}` is not in the scene (it has: {have})")]
+    Point {
+        file: String,
+        point: String,
+        have: String,
+    },
+    /// The model cannot be compared with the data (singular covariance, ...).
+    #[error("{file}: {reason}")]
+    Model { file: String, reason: String },
+    /// A bad calibration file (`predict --calibration`).
+    #[error("{file}: not a kinrepro calibration file: {reason}")]
+    Calibration { file: String, reason: String },
+    #[error(transparent)]
+    Run(#[from] RunError),
+    #[error("{file}: {source}")]
+    Study {
+        file: String,
+        #[source]
+        source: StudyError,
+    },
+}

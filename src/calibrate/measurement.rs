@@ -1,0 +1,303 @@
+//! Measured re-seating data (docs/measurements.md): a cycles file (one row
+//! per re-seating cycle, one column per measured DOF with its unit) or a
+//! summary file (one row per DOF: its sigma and the number of cycles).
+//! `#` lines carry metadata (`# key: value`); `# noise: x=1nm, ...` gives
+//! the sensor noise per DOF.
+
+use std::path::Path;
+
+use nalgebra::DMatrix;
+
+use super::error::CalibrateError;
+use super::units::{DOFS, dof_index, parse_column, parse_noise};
+
+/// Fewest re-seating cycles a measurement may have.
+pub const MIN_CYCLES: usize = 3;
+
+/// The measured values.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MeasuredData {
+    /// One row per cycle, one value per measured DOF [SI].
+    Cycles(Vec<Vec<f64>>),
+    /// Per measured DOF: sample sigma (divisor n - 1) [SI] and cycle count.
+    Summary { sigma: Vec<f64>, cycles: Vec<usize> },
+}
+
+/// A measurement of one evaluation point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Measurement {
+    pub file: String,
+    /// The evaluation point (None: the scene's first).
+    pub point: Option<String>,
+    /// Measured DOFs (indices into x, y, z, phi_x, phi_y, phi_z), file order.
+    pub dofs: Vec<usize>,
+    pub data: MeasuredData,
+    /// Sensor noise sigma per DOF from `# noise:` [SI].
+    pub noise: [Option<f64>; 6],
+    /// Other `# key: value` lines.
+    pub metadata: Vec<(String, String)>,
+}
+
+impl Measurement {
+    /// Read a measurement file.
+    pub fn load(path: &Path) -> Result<Self, CalibrateError> {
+        let file = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| CalibrateError::Read {
+            file: file.clone(),
+            reason: e.to_string(),
+        })?;
+        Self::parse(&text, &file)
+    }
+
+    /// Parse the text of a measurement file named `file`.
+    pub fn parse(text: &str, file: &str) -> Result<Self, CalibrateError> {
+        // A spreadsheet's byte-order mark is not part of the first header.
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+        let mut noise = [None; 6];
+        let mut metadata = Vec::new();
+        let mut lines = Vec::new();
+        for (i, raw) in text.lines().enumerate() {
+            let line = raw.trim();
+            if let Some(c) = line.strip_prefix('#') {
+                if let Some((k, v)) = c.split_once(':') {
+                    let (k, v) = (k.trim().to_lowercase(), v.trim().to_string());
+                    if k == "noise" {
+                        parse_noise(&v, &mut noise).map_err(|reason| CalibrateError::Noise {
+                            origin: format!("{file}: line {}: # noise", i + 1),
+                            reason,
+                        })?;
+                    }
+                    metadata.push((k, v));
+                }
+            } else if !line.is_empty() {
+                lines.push((i + 1, line));
+            }
+        }
+        let Some(&(header_line, header)) = lines.first() else {
+            return Err(CalibrateError::File {
+                file: file.into(),
+                line: text.lines().count().max(1),
+                reason: "no header line (e.g. `x_nm,y_nm,phi_x_nrad`)".into(),
+            });
+        };
+        let names: Vec<&str> = header.split(',').map(str::trim).collect();
+        let base = Measurement {
+            file: file.into(),
+            point: None,
+            dofs: Vec::new(),
+            data: MeasuredData::Cycles(Vec::new()),
+            noise,
+            metadata,
+        };
+        if names.contains(&"sigma") {
+            base.parse_summary(header_line, &names, &lines[1..])
+        } else {
+            base.parse_cycles(header_line, &names, &lines[1..])
+        }
+    }
+
+    fn parse_cycles(
+        mut self,
+        header_line: usize,
+        names: &[&str],
+        rows: &[(usize, &str)],
+    ) -> Result<Self, CalibrateError> {
+        let mut columns = Vec::new();
+        let mut point_col = None;
+        for (c, name) in names.iter().enumerate() {
+            if *name == "point" {
+                point_col = Some(c);
+                continue;
+            }
+            let (d, f) = parse_column(name).map_err(|r| self.err(header_line, c, name, r))?;
+            if self.dofs.contains(&d) {
+                let r = format!("{} measured twice", DOFS[d]);
+                return Err(self.err(header_line, c, name, r));
+            }
+            self.dofs.push(d);
+            columns.push((c, f));
+        }
+        if self.dofs.is_empty() {
+            return Err(self.whole(header_line, "no measured DOF column".into()));
+        }
+        let mut data = Vec::new();
+        for &(line, text) in rows {
+            let cells: Vec<&str> = text.split(',').map(str::trim).collect();
+            if cells.len() != names.len() {
+                let r = format!("{} values, the header has {}", cells.len(), names.len());
+                return Err(self.whole(line, r));
+            }
+            if let Some(pc) = point_col {
+                self.check_point(line, pc, cells[pc])?;
+            }
+            let mut row = Vec::with_capacity(columns.len());
+            for &(c, f) in &columns {
+                row.push(self.number(line, c, names[c], cells[c])? * f);
+            }
+            data.push(row);
+        }
+        let last = rows.last().map_or(header_line, |r| r.0);
+        if data.len() < MIN_CYCLES {
+            let r = format!(
+                "{} cycle(s), need at least {MIN_CYCLES} re-seating cycles",
+                data.len()
+            );
+            return Err(self.whole(last, r));
+        }
+        self.data = MeasuredData::Cycles(data);
+        Ok(self)
+    }
+
+    fn parse_summary(
+        mut self,
+        header_line: usize,
+        names: &[&str],
+        rows: &[(usize, &str)],
+    ) -> Result<Self, CalibrateError> {
+        let col = |n: &str| names.iter().position(|h| *h == n);
+        let (Some(cd), Some(cu), Some(cs), Some(cn)) =
+            (col("dof"), col("unit"), col("sigma"), col("cycles"))
+        else {
+            let r = "a summary file needs the columns dof,unit,sigma,cycles (and optionally point)";
+            return Err(self.whole(header_line, r.into()));
+        };
+        let cp = col("point");
+        let (mut sigma, mut cycles) = (Vec::new(), Vec::new());
+        for &(line, text) in rows {
+            let cells: Vec<&str> = text.split(',').map(str::trim).collect();
+            if cells.len() != names.len() {
+                let r = format!("{} values, the header has {}", cells.len(), names.len());
+                return Err(self.whole(line, r));
+            }
+            if let Some(pc) = cp {
+                self.check_point(line, pc, cells[pc])?;
+            }
+            let d = dof_index(cells[cd]).ok_or_else(|| {
+                let r = format!("unknown DOF `{}` (one of {})", cells[cd], DOFS.join(", "));
+                self.err(line, cd, "dof", r)
+            })?;
+            if self.dofs.contains(&d) {
+                return Err(self.err(line, cd, "dof", format!("{} given twice", DOFS[d])));
+            }
+            let unit = cells[cu];
+            if unit.is_empty() {
+                return Err(self.err(line, cu, "unit", "missing unit".into()));
+            }
+            let s = self.number(line, cs, "sigma", cells[cs])?;
+            let f = super::units::unit_factor(d, unit).ok_or_else(|| {
+                let r = format!(
+                    "unit `{unit}` does not fit {} (use {})",
+                    DOFS[d],
+                    super::units::unit_names(d)
+                );
+                self.err(line, cu, "unit", r)
+            })?;
+            let n: usize = cells[cn].parse().map_err(|_| {
+                let r = format!("`{}` is not a whole number of cycles", cells[cn]);
+                self.err(line, cn, "cycles", r)
+            })?;
+            if n < MIN_CYCLES {
+                let r = format!("{n} cycle(s), need at least {MIN_CYCLES}");
+                return Err(self.err(line, cn, "cycles", r));
+            }
+            self.dofs.push(d);
+            sigma.push(s * f);
+            cycles.push(n);
+        }
+        if self.dofs.is_empty() {
+            return Err(self.whole(header_line, "no DOF rows".into()));
+        }
+        self.data = MeasuredData::Summary { sigma, cycles };
+        Ok(self)
+    }
+
+    /// A finite number in a cell.
+    fn number(&self, line: usize, c: usize, name: &str, cell: &str) -> Result<f64, CalibrateError> {
+        if cell.is_empty() {
+            return Err(self.err(line, c, name, "empty value".into()));
+        }
+        let v: f64 = cell
+            .parse()
+            .map_err(|_| self.err(line, c, name, format!("`{cell}` is not a number")))?;
+        if !v.is_finite() {
+            let r = format!("`{cell}` is not a finite measured value");
+            return Err(self.err(line, c, name, r));
+        }
+        Ok(v)
+    }
+
+    /// One evaluation point per file.
+    fn check_point(&mut self, line: usize, c: usize, cell: &str) -> Result<(), CalibrateError> {
+        if cell.is_empty() {
+            return Err(self.err(line, c, "point", "empty point name".into()));
+        }
+        match &self.point {
+            Some(p) if p != cell => {
+                let r = format!(
+                    "point `{cell}` differs from `{p}` above: one evaluation point per file"
+                );
+                Err(self.err(line, c, "point", r))
+            }
+            _ => {
+                self.point = Some(cell.to_string());
+                Ok(())
+            }
+        }
+    }
+
+    fn err(&self, line: usize, c: usize, name: &str, reason: String) -> CalibrateError {
+        CalibrateError::Parse {
+            file: self.file.clone(),
+            line,
+            column: format!("{} ({name})", c + 1),
+            reason,
+        }
+    }
+
+    fn whole(&self, line: usize, reason: String) -> CalibrateError {
+        CalibrateError::File {
+            file: self.file.clone(),
+            line,
+            reason,
+        }
+    }
+
+    /// Number of cycles per measured DOF.
+    pub fn cycles(&self) -> Vec<usize> {
+        match &self.data {
+            MeasuredData::Cycles(rows) => vec![rows.len(); self.dofs.len()],
+            MeasuredData::Summary { cycles, .. } => cycles.clone(),
+        }
+    }
+
+    /// Sample sigma (divisor n - 1) per measured DOF [SI].
+    pub fn sigma(&self) -> Vec<f64> {
+        match &self.data {
+            MeasuredData::Cycles(_) => {
+                let s = self.covariance().unwrap_or_else(|| DMatrix::zeros(0, 0));
+                (0..self.dofs.len()).map(|j| s[(j, j)].sqrt()).collect()
+            }
+            MeasuredData::Summary { sigma, .. } => sigma.clone(),
+        }
+    }
+
+    /// Sample covariance S (divisor n - 1) of a cycles file [SI]; None for a summary.
+    pub fn covariance(&self) -> Option<DMatrix<f64>> {
+        let MeasuredData::Cycles(rows) = &self.data else {
+            return None;
+        };
+        let (n, p) = (rows.len(), self.dofs.len());
+        let mean: Vec<f64> = (0..p)
+            .map(|j| rows.iter().map(|r| r[j]).sum::<f64>() / n as f64)
+            .collect();
+        let mut s = DMatrix::zeros(p, p);
+        for r in rows {
+            for a in 0..p {
+                for b in 0..p {
+                    s[(a, b)] += (r[a] - mean[a]) * (r[b] - mean[b]);
+                }
+            }
+        }
+        Some(s / (n as f64 - 1.0))
+    }
+}

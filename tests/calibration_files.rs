@@ -1,0 +1,239 @@
+//! Measurement files and the calibrate / predict command line (issue 15):
+//! bad files get one error naming file, line and column; a calibration
+//! file round-trips into `predict`, whose JSON uses the study's fields.
+
+mod common;
+
+use kinrepro::calibrate::Measurement;
+use kinrepro::calibrate::predict::PREDICTION_METHOD;
+
+fn err(text: &str) -> String {
+    Measurement::parse(text, "m.csv").unwrap_err().to_string()
+}
+
+#[test]
+fn bad_measurement_files_name_file_line_and_column() {
+    let e = err("# rig: test\nx,y_nm\n1,2\n3,4\n5,6\n");
+    assert!(
+        e.starts_with("m.csv: line 2, column 1 (x):") && e.contains("no unit"),
+        "{e}"
+    );
+    let e = err("x_nm,w_nm\n1,2\n3,4\n5,6\n");
+    assert!(
+        e.starts_with("m.csv: line 1, column 2 (w_nm):") && e.contains("unknown DOF"),
+        "{e}"
+    );
+    let e = err("x_nm,phi_x_nm\n1,2\n3,4\n5,6\n");
+    assert!(
+        e.contains("column 2 (phi_x_nm)") && e.contains("does not fit"),
+        "{e}"
+    );
+    let e = err("x_nm,y_nm\n1,2\n3,4\n");
+    assert!(
+        e.starts_with("m.csv: line 3:") && e.contains("need at least 3"),
+        "{e}"
+    );
+    let e = err("x_nm,y_nm\n1,2\n3,abc\n5,6\n");
+    assert!(
+        e.starts_with("m.csv: line 3, column 2 (y_nm):") && e.contains("`abc` is not a number"),
+        "{e}"
+    );
+    let e = err("x_nm,y_nm\n1,2\n3,4\nNaN,6\n");
+    assert!(
+        e.starts_with("m.csv: line 4, column 1 (x_nm):") && e.contains("not a finite"),
+        "{e}"
+    );
+    let e = err("x_nm,y_nm\n1,2\n3,4\n5\n");
+    assert!(
+        e.starts_with("m.csv: line 4:") && e.contains("1 values, the header has 2"),
+        "{e}"
+    );
+    let e = err("x_nm,x_um\n1,2\n3,4\n5,6\n");
+    assert!(
+        e.contains("column 2 (x_um)") && e.contains("measured twice"),
+        "{e}"
+    );
+    let e = err("point,x_nm\na,1\na,2\nb,3\n");
+    assert!(
+        e.starts_with("m.csv: line 4, column 1 (point):") && e.contains("one evaluation point"),
+        "{e}"
+    );
+    let e = err("# noise: x=1 nrad\nx_nm\n1\n2\n3\n");
+    assert!(
+        e.starts_with("m.csv: line 1: # noise:") && e.contains("does not fit"),
+        "{e}"
+    );
+    // Summary files.
+    let e = err("dof,unit,sigma,cycles\nx,nm,5,2\n");
+    assert!(
+        e.starts_with("m.csv: line 2, column 4 (cycles):") && e.contains("need at least 3"),
+        "{e}"
+    );
+    let e = err("dof,unit,sigma,cycles\nx,,5,20\n");
+    assert!(
+        e.contains("column 2 (unit)") && e.contains("missing unit"),
+        "{e}"
+    );
+    let e = err("dof,unit,sigma,cycles\nq,nm,5,20\n");
+    assert!(
+        e.contains("column 1 (dof)") && e.contains("unknown DOF"),
+        "{e}"
+    );
+    let e = err("dof,unit,sigma,cycles\nx,nm,inf,20\n");
+    assert!(
+        e.contains("column 3 (sigma)") && e.contains("not a finite"),
+        "{e}"
+    );
+}
+
+#[test]
+fn units_convert_to_si() {
+    let m = Measurement::parse(
+        "# noise: x=2nm, phi_y=0.05urad\npoint,x_um,phi_y_urad\nc,0.001,0.1\nc,0.003,0.3\nc,0.002,0.2\n",
+        "u.csv",
+    )
+    .unwrap();
+    assert_eq!(m.point.as_deref(), Some("c"));
+    assert_eq!(m.dofs, vec![0, 4]);
+    let s = m.sigma();
+    // sigma of (1, 3, 2) nm is 1 nm; of (0.1, 0.3, 0.2) urad is 0.1 urad.
+    assert!(
+        (s[0] - 1e-9).abs() < 1e-18 && (s[1] - 1e-7).abs() < 1e-16,
+        "{s:?}"
+    );
+    assert_eq!(m.noise[0], Some(2e-9));
+    assert!((m.noise[4].unwrap() - 5e-8).abs() < 1e-20);
+    let sm = Measurement::parse(
+        "dof,unit,sigma,cycles\nz,um,0.004,30\nphi_z,nrad,150,30\n",
+        "s.csv",
+    )
+    .unwrap();
+    assert_eq!(sm.dofs, vec![2, 5]);
+    assert_eq!(sm.cycles(), vec![30, 30]);
+    assert!((sm.sigma()[0] - 4e-9).abs() < 1e-20);
+}
+
+#[test]
+fn cli_calibrate_and_predict() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = |n: &str| dir.path().join(n).display().to_string();
+    let s02 = common::scene("02_maxwell_pins_steel.toml")
+        .display()
+        .to_string();
+    let s01 = common::scene("01_maxwell_vgroove_steel.toml")
+        .display()
+        .to_string();
+    let measured = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/docs/calibration/measured_02.csv"
+    );
+    // A bad file: one error line, non-zero exit.
+    std::fs::write(path("bad.csv"), "x_nm,y_nm\n1,2\n3,zz\n4,5\n").unwrap();
+    let (ok, _, e) = common::kinrepro(&["calibrate", &s02, "--measured", &path("bad.csv")]);
+    assert!(!ok && e.trim().lines().count() == 1, "{e}");
+    assert!(e.contains("bad.csv: line 3, column 2 (y_nm)"), "{e}");
+    let (ok, _, e) = common::kinrepro(&[
+        "calibrate",
+        &s02,
+        "--measured",
+        measured,
+        "--fit",
+        "spread,mu_static",
+    ]);
+    assert!(!ok && e.contains("not supported yet"), "{e}");
+    let (ok, _, e) = common::kinrepro(&[
+        "calibrate",
+        &s02,
+        "--measured",
+        measured,
+        "--point",
+        "nowhere",
+    ]);
+    assert!(!ok && e.contains("`nowhere` is not in the scene"), "{e}");
+    let (ok, _, e) = common::kinrepro(&[
+        "calibrate",
+        &s02,
+        "--measured",
+        measured,
+        "--noise",
+        "x=abc",
+    ]);
+    assert!(!ok && e.contains("--noise"), "{e}");
+    // Calibrate (small model studies to keep the test quick), JSON to stdout and file.
+    let cal = path("cal.json");
+    let args = [
+        "calibrate",
+        &s02,
+        "--measured",
+        measured,
+        "--model-samples",
+        "300",
+        "--format",
+        "json",
+        "--out",
+        &cal,
+    ];
+    let (ok, out, e) = common::kinrepro(&args);
+    assert!(ok, "{e}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(
+        j,
+        serde_json::from_str::<serde_json::Value>(&std::fs::read_to_string(&cal).unwrap()).unwrap()
+    );
+    assert_eq!(j["schema_version"], 1);
+    assert_eq!(j["kinrepro_version"], env!("CARGO_PKG_VERSION"));
+    let sp = &j["parameters"]["spread"];
+    let (est, lo, hi) = (
+        sp["estimate"].as_f64().unwrap(),
+        sp["low"].as_f64().unwrap(),
+        sp["high"].as_f64().unwrap(),
+    );
+    assert!(lo < est && est < hi && sp["level"] == 0.9, "{sp}");
+    assert!(
+        j["goodness_of_fit"]["p_value"].as_f64().is_some() && j["goodness_of_fit"]["ok"] == true
+    );
+    // Written whole or not at all; no overwrite without --force.
+    let (ok, _, e) = common::kinrepro(&args);
+    assert!(!ok && e.contains("--force"), "{e}");
+    // Predict two scenes.
+    let svg = path("pred.svg");
+    let (ok, out, e) = common::kinrepro(&[
+        "predict",
+        &s02,
+        &s01,
+        "--calibration",
+        &cal,
+        "--samples",
+        "300",
+        "--format",
+        "json",
+        "--plot",
+        &svg,
+    ]);
+    assert!(ok, "{e}");
+    let p: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(p["schema_version"], 2);
+    assert_eq!(p["calibration"]["spread"]["estimate"], sp["estimate"]);
+    let v = p["variants"].as_array().unwrap();
+    assert!(v[0]["measured"]["sigma"]["x_nm"].as_f64().unwrap() > 0.0);
+    assert!(v[1]["measured"].is_null());
+    for var in v {
+        let pt = &var["points"][0];
+        assert_eq!(pt["sigma_interval_method"], PREDICTION_METHOD);
+        for k in ["x_nm", "z_nm", "phi_z_nrad"] {
+            let (l, s, h) = (
+                pt["sigma_ci90_low"][k].as_f64().unwrap(),
+                pt["sigma"][k].as_f64().unwrap(),
+                pt["sigma_ci90_high"][k].as_f64().unwrap(),
+            );
+            assert!(0.0 < l && l < s && s < h, "{k}: {l} {s} {h}");
+        }
+        assert!((var["spread"].as_f64().unwrap() - est).abs() < 1e-15);
+    }
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.starts_with("<svg") && text.contains("kinrepro"), "svg");
+    // A study JSON is not a calibration file.
+    std::fs::write(path("study.json"), out).unwrap();
+    let (ok, _, e) = common::kinrepro(&["predict", &s01, "--calibration", &path("study.json")]);
+    assert!(!ok && e.contains("not a kinrepro calibration file"), "{e}");
+}
