@@ -163,13 +163,49 @@ fn report_is_self_contained_complete_and_renders_in_chromium() {
 
     static_checks(&html, &study);
     let Some(exe) = chromium() else { return };
-    browser_checks(&exe, tmp.path(), &html);
+    browser_checks(&exe, tmp.path(), &html, &STUDY_REPORT);
 }
 
-/// No external resource; metadata, scenes, references and the JSON's
-/// numbers present; every chart and drawing there.
-fn static_checks(html: &str, study: &serde_json::Value) {
-    // No external resource of any kind.
+/// `sweep --html`: the design charts of a 2 x 2 grid (sigma against each of
+/// the two fields, the heat map, the Pareto front), self-contained, each
+/// visible in Chromium without a console error.
+#[test]
+fn sweep_html_is_self_contained_and_renders_in_chromium() {
+    let tmp = tempfile::tempdir().unwrap();
+    let html_file = tmp.path().join("report.html");
+    let s1 = scene("01_maxwell_vgroove_steel.toml");
+    let (ok, _, err) = kinrepro(&[
+        "sweep",
+        s1.to_str().unwrap(),
+        "--set",
+        "preload.force=5,20",
+        "--set",
+        "coupling.opening_angle_deg=60,90",
+        "--sampler",
+        "mc",
+        "--samples",
+        "20",
+        "--html",
+        html_file.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let html = std::fs::read_to_string(&html_file).unwrap();
+    self_contained(&html);
+    assert_eq!(html.matches("data-check=\"chart\"").count(), 4);
+    // Each chart carries the run's provenance.
+    assert_eq!(html.matches("sampler mc, seed 1, samples 20").count(), 4);
+    let Some(exe) = chromium() else { return };
+    let expect = Expect {
+        charts: 4,
+        drawings: 0,
+        min_tables: 0,
+        scenes: 0,
+    };
+    browser_checks(&exe, tmp.path(), &html, &expect);
+}
+
+/// No external resource of any kind; the CSP; A4 print rules.
+fn self_contained(html: &str) {
     let lower = html.to_lowercase();
     for bad in [
         "<script",
@@ -201,6 +237,12 @@ fn static_checks(html: &str, study: &serde_json::Value) {
     );
     assert!(html.contains(&format!("content=\"{CSP}\"")));
     assert!(html.contains("@media print") && html.contains("size: A4"));
+}
+
+/// No external resource; metadata, scenes, references and the JSON's
+/// numbers present; every chart and drawing there.
+fn static_checks(html: &str, study: &serde_json::Value) {
+    self_contained(html);
 
     // Metadata, both scene forms, reference rows, the JSON's numbers.
     for s in [
@@ -240,7 +282,23 @@ fn static_checks(html: &str, study: &serde_json::Value) {
 
 /// In Chromium: a screenshot without console errors, the probe at desktop
 /// and phone widths, and A4 print.
-fn browser_checks(exe: &Path, tmp: &Path, html: &str) {
+/// What a report holds: charts, drawings, at least so many tables, scenes.
+struct Expect {
+    charts: usize,
+    drawings: usize,
+    min_tables: usize,
+    scenes: usize,
+}
+
+/// The study report of `make_report`.
+const STUDY_REPORT: Expect = Expect {
+    charts: 5,
+    drawings: 21,
+    min_tables: 8,
+    scenes: 6,
+};
+
+fn browser_checks(exe: &Path, tmp: &Path, html: &str, expect: &Expect) {
     let file = tmp.join("report.html");
     // 1. The report itself: a screenshot, no console error, nothing blocked.
     let shot = tmp.join("shot.png");
@@ -280,11 +338,11 @@ fn browser_checks(exe: &Path, tmp: &Path, html: &str) {
     // Desktop, and the narrowest window headless Chromium opens (500 px).
     for window in ["1280,2000", "500,900"] {
         let (dom, _) = run_chromium(exe, tmp, &probe_file, window, &["--dump-dom".to_string()]);
-        check_probe(&dom, window);
+        check_probe(&dom, window, expect);
     }
 }
 
-fn check_probe(dom: &str, window: &str) {
+fn check_probe(dom: &str, window: &str, expect: &Expect) {
     let start = dom
         .find("<pre id=\"probe\">")
         .unwrap_or_else(|| panic!("{window}: the probe did not run"))
@@ -308,10 +366,10 @@ fn check_probe(dom: &str, window: &str) {
     );
     let items = r["items"].as_array().unwrap();
     let count = |k: &str| items.iter().filter(|i| i["kind"] == k).count();
-    assert_eq!(count("chart"), 5, "{window}");
-    assert_eq!(count("drawing"), 21, "{window}");
+    assert_eq!(count("chart"), expect.charts, "{window}");
+    assert_eq!(count("drawing"), expect.drawings, "{window}");
     assert!(
-        count("table") >= 8 && count("scene") == 6,
+        count("table") >= expect.min_tables && count("scene") == expect.scenes,
         "{window}: {}",
         count("table")
     );
