@@ -404,8 +404,9 @@ fn a_coupling_that_cannot_seat_fails_unless_allowed() {
         let r: StudyReport = serde_json::from_str(&text).unwrap();
         assert!(r.variants[0].cannot_seat.is_some());
         // check: the stronger, distinct message.
-        let (_, out, _) = kinrepro(&["check", &p]);
+        let (ok, out, err) = kinrepro(&["check", &p]);
         assert!(out.contains("CANNOT SEAT"), "{out}");
+        assert!(!ok && err.contains("1 of 1 scenes cannot seat"), "{err}");
     }
     // The paper's scene: above the friction limit, yet it seats from the
     // touching pose; check says what the limit means and no CANNOT SEAT.

@@ -100,6 +100,8 @@ pub enum CliError {
     Jobs(#[from] rayon::ThreadPoolBuildError),
     #[error("{failed} of {total} scenes are invalid")]
     InvalidScenes { failed: usize, total: usize },
+    #[error("{count} of {total} scenes cannot seat (CANNOT SEAT above)")]
+    UnseatableScenes { count: usize, total: usize },
     #[error("cannot seat: {0} (pass --allow-unseated to accept this result)")]
     CannotSeat(String),
     /// A failed seating whose trace file was still written.

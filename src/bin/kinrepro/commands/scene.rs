@@ -5,11 +5,12 @@ use crate::error::{CliError, Context};
 
 pub fn check(args: CheckArgs) -> Result<(), CliError> {
     let CheckArgs { scenes } = args;
-    let mut failed = 0;
+    let (mut failed, mut unseated) = (0, 0);
     for path in &scenes {
         match kinrepro::error::read_coupling(path) {
             Ok(c) => {
                 let moves = kinrepro::study::runner::friction_moves_pose(&c, &Default::default())?;
+                unseated += usize::from(!moves);
                 let note = kinrepro::report::check::seating_note(&c, moves);
                 let summary = kinrepro::report::check::check_summary(&c);
                 super::emit(&format!("{summary}{note}\n"))?
@@ -23,6 +24,14 @@ pub fn check(args: CheckArgs) -> Result<(), CliError> {
     if failed > 0 {
         return Err(CliError::InvalidScenes {
             failed,
+            total: scenes.len(),
+        });
+    }
+    // A coupling that cannot seat is valid TOML but not a usable design: a
+    // script that checks scenes before a batch run must see it fail.
+    if unseated > 0 {
+        return Err(CliError::UnseatableScenes {
+            count: unseated,
             total: scenes.len(),
         });
     }
