@@ -220,8 +220,9 @@ mod tests {
             parse_value(0, "1 nrad"),
             Err(UnitError::ValueUnit { dof: 0, .. })
         ));
+        assert!(parse_value(0, "NaN").is_err());
         assert!(matches!(
-            parse_value(0, "NaN"),
+            parse_value(0, "-1nm"),
             Err(UnitError::OutOfRange { .. })
         ));
         let mut n = [None; 6];
