@@ -3,6 +3,7 @@
 
 use thiserror::Error;
 
+use super::units::UnitError;
 use crate::study::StudyError;
 use crate::study::runner::RunError;
 
@@ -30,7 +31,7 @@ pub enum CalibrateError {
     Read { file: String, reason: String },
     /// A bad `--noise` entry (or `# noise:` metadata).
     #[error("{origin}: {reason}")]
-    Noise { origin: String, reason: String },
+    Noise { origin: String, reason: UnitError },
     /// A parameter `--fit` names that this version cannot fit.
     #[error(
         "--fit {0}: not supported yet: this version fits only `spread` (the friction spread); \

@@ -109,7 +109,8 @@ impl Measurement {
                 point_col = Some(c);
                 continue;
             }
-            let (d, f) = parse_column(name).map_err(|r| self.err(header_line, c, name, r))?;
+            let (d, f) =
+                parse_column(name).map_err(|r| self.err(header_line, c, name, r.to_string()))?;
             if self.dofs.contains(&d) {
                 let r = format!("{} measured twice", DOFS[d]);
                 return Err(self.err(header_line, c, name, r));

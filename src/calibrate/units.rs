@@ -2,6 +2,8 @@
 //! measurement file (`x_nm`, `phi_x_urad`, ...) and `--noise` values
 //! (`x=1nm`, `phi_x=20nrad`, or plain SI numbers).
 
+use thiserror::Error;
+
 /// The six DOFs in output order (x, y, z, phi_x, phi_y, phi_z).
 pub const DOFS: [&str; 6] = ["x", "y", "z", "phi_x", "phi_y", "phi_z"];
 
@@ -53,40 +55,85 @@ pub fn unit_factor(dof: usize, unit: &str) -> Option<f64> {
     units(dof).iter().find(|(u, _)| *u == unit).map(|(_, f)| *f)
 }
 
+/// Why a column header, a value or a `--noise` entry was not understood.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum UnitError {
+    /// A bare DOF name as a column header: `x` instead of `x_nm`.
+    #[error("`{header}` has no unit: write {}", with_units(header, *dof))]
+    NoUnit { header: String, dof: usize },
+    /// A column header whose unit does not fit its DOF (`z_nrad`).
+    #[error("`{header}`: unit `{unit}` does not fit {} (use {})", DOFS[*dof], unit_names(*dof))]
+    ColumnUnit {
+        header: String,
+        unit: String,
+        dof: usize,
+    },
+    /// A column header that names no DOF.
+    #[error(
+        "`{header}`: unknown DOF (columns are <dof>_<unit> with dof one of {} and a unit such as nm or nrad, or `point`)",
+        DOFS.join(", ")
+    )]
+    UnknownColumn { header: String },
+    /// A value whose unit does not fit its DOF (`1 nrad` for x).
+    #[error("`{text}`: unit `{unit}` does not fit {} (use {})", DOFS[*dof], unit_names(*dof))]
+    ValueUnit {
+        text: String,
+        unit: String,
+        dof: usize,
+    },
+    /// A value that is not a number.
+    #[error("`{text}` is not a number (with an optional unit)")]
+    NotANumber { text: String },
+    /// A value that is negative, infinite or NaN.
+    #[error("`{text}`: need a finite value >= 0")]
+    OutOfRange { text: String },
+    /// A `--noise` entry without `=`.
+    #[error("`{entry}`: write DOF=VALUE, e.g. x=1nm or phi_x=20nrad")]
+    NoiseSyntax { entry: String },
+    /// A `--noise` entry naming no DOF.
+    #[error("`{entry}`: unknown DOF `{name}` (one of {})", DOFS.join(", "))]
+    NoiseDof { entry: String, name: String },
+}
+
+/// `header_m, header_mm, ...`: the column names a bare DOF header could be.
+fn with_units(header: &str, dof: usize) -> String {
+    units(dof)
+        .iter()
+        .map(|(u, _)| format!("{header}_{u}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 /// A column header `<dof>_<unit>`: the DOF index and the factor to SI, or
 /// the reason it is not one.
-pub fn parse_column(header: &str) -> Result<(usize, f64), String> {
-    if let Some(d) = dof_index(header) {
-        return Err(format!(
-            "`{header}` has no unit: write {}",
-            units(d)
-                .iter()
-                .map(|(u, _)| format!("{header}_{u}"))
-                .collect::<Vec<_>>()
-                .join(", ")
-        ));
+pub fn parse_column(header: &str) -> Result<(usize, f64), UnitError> {
+    if let Some(dof) = dof_index(header) {
+        return Err(UnitError::NoUnit {
+            header: header.to_string(),
+            dof,
+        });
     }
     // The DOF is the longest known prefix followed by `_`.
     for d in [3, 4, 5, 0, 1, 2] {
         let name = DOFS[d];
         if let Some(unit) = header.strip_prefix(name).and_then(|r| r.strip_prefix('_')) {
-            return unit_factor(d, unit).map(|f| (d, f)).ok_or_else(|| {
-                format!(
-                    "`{header}`: unit `{unit}` does not fit {name} (use {})",
-                    unit_names(d)
-                )
-            });
+            return unit_factor(d, unit)
+                .map(|f| (d, f))
+                .ok_or_else(|| UnitError::ColumnUnit {
+                    header: header.to_string(),
+                    unit: unit.to_string(),
+                    dof: d,
+                });
         }
     }
-    Err(format!(
-        "`{header}`: unknown DOF (columns are <dof>_<unit> with dof one of {} and a unit such as nm or nrad, or `point`)",
-        DOFS.join(", ")
-    ))
+    Err(UnitError::UnknownColumn {
+        header: header.to_string(),
+    })
 }
 
 /// One value with an optional unit suffix (`1nm`, `20 nrad`, `1e-9`): SI
 /// if no unit is given. Finite and >= 0.
-pub fn parse_value(dof: usize, text: &str) -> Result<f64, String> {
+pub fn parse_value(dof: usize, text: &str) -> Result<f64, UnitError> {
     let t = text.trim();
     let split = t
         .char_indices()
@@ -96,19 +143,19 @@ pub fn parse_value(dof: usize, text: &str) -> Result<f64, String> {
     let factor = if unit.is_empty() {
         1.0
     } else {
-        unit_factor(dof, unit).ok_or_else(|| {
-            format!(
-                "`{t}`: unit `{unit}` does not fit {} (use {})",
-                DOFS[dof],
-                unit_names(dof)
-            )
+        unit_factor(dof, unit).ok_or_else(|| UnitError::ValueUnit {
+            text: t.to_string(),
+            unit: unit.to_string(),
+            dof,
         })?
     };
-    let v: f64 = num
-        .parse()
-        .map_err(|_| format!("`{t}` is not a number (with an optional unit)"))?;
+    let v: f64 = num.parse().map_err(|_| UnitError::NotANumber {
+        text: t.to_string(),
+    })?;
     if !v.is_finite() || v < 0.0 {
-        return Err(format!("`{t}`: need a finite value >= 0"));
+        return Err(UnitError::OutOfRange {
+            text: t.to_string(),
+        });
     }
     Ok(v * factor)
 }
@@ -125,17 +172,16 @@ fn is_exponent(t: &str, i: usize) -> bool {
 
 /// Sensor noise per DOF from `DOF=VALUE,...` (SI numbers or with a unit
 /// suffix: `x=1nm,phi_x=20nrad`). Later entries override `into`'s.
-pub fn parse_noise(text: &str, into: &mut [Option<f64>; 6]) -> Result<(), String> {
+pub fn parse_noise(text: &str, into: &mut [Option<f64>; 6]) -> Result<(), UnitError> {
     for entry in text.split(',').map(str::trim).filter(|e| !e.is_empty()) {
         let (name, value) = entry
             .split_once('=')
-            .ok_or_else(|| format!("`{entry}`: write DOF=VALUE, e.g. x=1nm or phi_x=20nrad"))?;
-        let d = dof_index(name.trim()).ok_or_else(|| {
-            format!(
-                "`{entry}`: unknown DOF `{}` (one of {})",
-                name.trim(),
-                DOFS.join(", ")
-            )
+            .ok_or_else(|| UnitError::NoiseSyntax {
+                entry: entry.to_string(),
+            })?;
+        let d = dof_index(name.trim()).ok_or_else(|| UnitError::NoiseDof {
+            entry: entry.to_string(),
+            name: name.trim().to_string(),
         })?;
         into[d] = Some(parse_value(d, value)?);
     }
@@ -150,18 +196,42 @@ mod tests {
     fn columns_and_values() {
         assert_eq!(parse_column("phi_x_nrad").unwrap(), (3, 1e-9));
         assert_eq!(parse_column("x_um").unwrap(), (0, 1e-6));
-        assert!(parse_column("x").unwrap_err().contains("no unit"));
-        assert!(parse_column("w_nm").unwrap_err().contains("unknown DOF"));
-        assert!(parse_column("z_nrad").unwrap_err().contains("does not fit"));
+        let e = parse_column("x").unwrap_err();
+        assert!(matches!(e, UnitError::NoUnit { dof: 0, .. }), "{e:?}");
+        assert_eq!(
+            e.to_string(),
+            "`x` has no unit: write x_m, x_mm, x_um, x_nm"
+        );
+        assert!(
+            parse_column("w_nm")
+                .unwrap_err()
+                .to_string()
+                .contains("unknown DOF")
+        );
+        let e = parse_column("z_nrad").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "`z_nrad`: unit `nrad` does not fit z (use m, mm, um, nm)"
+        );
         assert_eq!(parse_value(0, "1nm").unwrap(), 1e-9);
         assert_eq!(parse_value(4, "20 nrad").unwrap(), 20e-9);
         assert_eq!(parse_value(0, "1e-9").unwrap(), 1e-9);
-        assert!(parse_value(0, "1 nrad").is_err());
+        assert!(matches!(
+            parse_value(0, "1 nrad"),
+            Err(UnitError::ValueUnit { dof: 0, .. })
+        ));
         assert!(parse_value(0, "NaN").is_err());
+        assert!(matches!(
+            parse_value(0, "-1nm"),
+            Err(UnitError::OutOfRange { .. })
+        ));
         let mut n = [None; 6];
         parse_noise("x=1nm, phi_z=2e-8", &mut n).unwrap();
         assert_eq!(n[0], Some(1e-9));
         assert_eq!(n[5], Some(2e-8));
-        assert!(parse_noise("q=1nm", &mut n).is_err());
+        assert_eq!(
+            parse_noise("q=1nm", &mut n).unwrap_err().to_string(),
+            "`q=1nm`: unknown DOF `q` (one of x, y, z, phi_x, phi_y, phi_z)"
+        );
     }
 }

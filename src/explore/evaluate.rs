@@ -5,6 +5,7 @@
 //! reproducibility study (`study::runner::run_variant`, the study's own
 //! design and statistics).
 
+use thiserror::Error;
 use toml::Table;
 
 use super::ExploreError;
@@ -15,8 +16,28 @@ use crate::assembly::Coupling;
 use crate::assembly::constraint::friction_limit;
 use crate::scene::Scene;
 use crate::solve::dynamic::StartPose;
-use crate::solve::{PointPose, Seating, nominal_mu};
-use crate::study::runner::{StudyOptions, VariantRun, friction_moves_pose, run_variant};
+use crate::solve::{PointPose, Seating, SolveError, nominal_mu};
+use crate::study::runner::{RunError, StudyOptions, VariantRun, friction_moves_pose, run_variant};
+
+/// Why a valid design point could not be evaluated (its `failed:` status).
+#[derive(Debug, Error)]
+pub enum EvalError {
+    /// The nominal seating (nominal friction `mu`, touching start) failed.
+    #[error("the nominal seating (mu_s = {mu}): {source}")]
+    NominalSeating {
+        mu: f64,
+        #[source]
+        source: SolveError,
+    },
+    /// The stiffness of the nominal seating could not be formed.
+    #[error(transparent)]
+    Stiffness(SolveError),
+    #[error("the seated stiffness matrix is not positive definite")]
+    NotPositiveDefinite,
+    /// The friction check or the reproducibility study failed.
+    #[error(transparent)]
+    Run(#[from] RunError),
+}
 
 /// What became of a design point.
 #[derive(Debug, Clone, PartialEq)]
@@ -127,7 +148,7 @@ pub fn evaluate(
     };
     e.outcome = match seat_and_study(&coupling, opts, tick, &mut e) {
         Ok(o) => o,
-        Err(reason) => Outcome::Failed(reason),
+        Err(reason) => Outcome::Failed(reason.to_string()),
     };
     e.coupling = Some(coupling);
     e
@@ -138,32 +159,30 @@ fn seat_and_study(
     opts: &StudyOptions,
     tick: &(dyn Fn() + Sync),
     e: &mut Evaluation,
-) -> Result<Outcome, String> {
+) -> Result<Outcome, EvalError> {
     let mu = nominal_mu(c);
     let seating = opts
         .method
         .seat(c, &mu, &StartPose::touching())
-        .map_err(|err| format!("the nominal seating (mu_s = {}): {err}", mu[0]))?;
+        .map_err(|source| EvalError::NominalSeating { mu: mu[0], source })?;
     e.nominal = Some(nominal(c, &seating, &mu)?);
-    if !friction_moves_pose(c, &opts.method).map_err(|err| err.to_string())? {
+    if !friction_moves_pose(c, &opts.method)? {
         let f = &c.scene.friction;
         return Ok(Outcome::CannotSeat(format!(
             "with mu_s = {} +- {} every contact sticks from the first load increment: the seated pose does not depend on friction and the coupling does not centre",
             f.mu_static, f.spread
         )));
     }
-    e.run = Some(run_variant(c, opts, tick).map_err(|err| err.to_string())?);
+    e.run = Some(run_variant(c, opts, tick)?);
     Ok(Outcome::Ok)
 }
 
 /// Stiffness, safety, friction limit and approach of the nominal seating.
-fn nominal(c: &Coupling, seating: &Seating, mu: &[f64]) -> Result<Nominal, String> {
+fn nominal(c: &Coupling, seating: &Seating, mu: &[f64]) -> Result<Nominal, EvalError> {
     let point = c.scene.evaluation_points[0].position;
-    let k = CouplingStiffness::new(c, seating, mu).map_err(|err| err.to_string())?;
+    let k = CouplingStiffness::new(c, seating, mu).map_err(EvalError::Stiffness)?;
     let at = seating.pose.apply(&point);
-    let principal = k
-        .principal_at(&at)
-        .ok_or("the seated stiffness matrix is not positive definite")?;
+    let principal = k.principal_at(&at).ok_or(EvalError::NotPositiveDefinite)?;
     let limit = friction_limit(c).mu_limit;
     let f = &c.scene.friction;
     let limit = limit.is_finite().then_some(limit);

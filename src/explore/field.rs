@@ -13,6 +13,7 @@
 //! and the study settings (`[study]`: given as options).
 
 use serde::{Deserialize, Serialize};
+use thiserror::Error;
 use toml::{Table, Value};
 
 use super::ExploreError;
@@ -42,6 +43,30 @@ impl std::fmt::Display for SweptValue {
             SweptValue::Name(s) => write!(f, "{s}"),
         }
     }
+}
+
+/// Why a `--set` field cannot be swept in this scene.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum FieldError {
+    #[error("not a sweepable field; sweepable: {}", sweepable())]
+    NotSweepable,
+    /// The scene holds a value of another type (its TOML type and value).
+    #[error("the scene gives it as {type_name} ({value}), not as {}", kind_text(*kind))]
+    WrongType {
+        type_name: &'static str,
+        value: String,
+        kind: FieldKind,
+    },
+    #[error("[{0}] is not a table in the scene")]
+    NotATable(String),
+    #[error("the scene has no [{0}] table")]
+    NoTable(String),
+    #[error("not a sweepable field")]
+    BadPath,
+    #[error("the scene has no [[materials]] entry named \"{0}\"")]
+    NoMaterial(String),
+    #[error("not present in the scene")]
+    NotPresent,
 }
 
 const NUMBERS: [(&str, &[&str]); 3] = [
@@ -83,11 +108,11 @@ pub fn sweepable() -> String {
 /// and against `scene` (its table must exist, an existing value must have
 /// the field's type).
 pub fn kind_of(path: &str, scene: &Table) -> Result<FieldKind, ExploreError> {
-    let err = |reason: String| ExploreError::Field {
+    let err = |reason: FieldError| ExploreError::Field {
         path: path.to_string(),
         reason,
     };
-    let unknown = || err(format!("not a sweepable field; sweepable: {}", sweepable()));
+    let unknown = || err(FieldError::NotSweepable);
     let seg: Vec<&str> = path.split('.').collect();
     let kind = match seg.as_slice() {
         ["materials", _, key] if MATERIAL_NUMBERS.contains(key) => FieldKind::Number,
@@ -98,12 +123,11 @@ pub fn kind_of(path: &str, scene: &Table) -> Result<FieldKind, ExploreError> {
         _ => return Err(unknown()),
     };
     match lookup(scene, &seg).map_err(err)? {
-        Some(v) if !type_fits(v, kind) => Err(err(format!(
-            "the scene gives it as {} ({}), not as {}",
-            v.type_str(),
-            v,
-            kind_text(kind)
-        ))),
+        Some(v) if !type_fits(v, kind) => Err(err(FieldError::WrongType {
+            type_name: v.type_str(),
+            value: v.to_string(),
+            kind,
+        })),
         _ => Ok(kind),
     }
 }
@@ -124,20 +148,20 @@ fn type_fits(v: &Value, kind: FieldKind) -> bool {
 
 /// The present value at `seg` (None if the field is absent but its table
 /// exists).
-fn lookup<'a>(scene: &'a Table, seg: &[&str]) -> Result<Option<&'a Value>, String> {
+fn lookup<'a>(scene: &'a Table, seg: &[&str]) -> Result<Option<&'a Value>, FieldError> {
     match seg {
         ["materials", name, key] => Ok(material(scene, name)?.get(*key)),
         [table, key] => match scene.get(*table) {
             Some(Value::Table(t)) => Ok(t.get(*key)),
-            Some(_) => Err(format!("[{table}] is not a table in the scene")),
-            None => Err(format!("the scene has no [{table}] table")),
+            Some(_) => Err(FieldError::NotATable(table.to_string())),
+            None => Err(FieldError::NoTable(table.to_string())),
         },
-        _ => Err("not a sweepable field".to_string()),
+        _ => Err(FieldError::BadPath),
     }
 }
 
 /// The `[[materials]]` entry named `name`.
-fn material<'a>(scene: &'a Table, name: &str) -> Result<&'a Table, String> {
+fn material<'a>(scene: &'a Table, name: &str) -> Result<&'a Table, FieldError> {
     scene
         .get("materials")
         .and_then(Value::as_array)
@@ -145,7 +169,7 @@ fn material<'a>(scene: &'a Table, name: &str) -> Result<&'a Table, String> {
         .flatten()
         .filter_map(Value::as_table)
         .find(|t| t.get("name").and_then(Value::as_str) == Some(name))
-        .ok_or_else(|| format!("the scene has no [[materials]] entry named \"{name}\""))
+        .ok_or_else(|| FieldError::NoMaterial(name.to_string()))
 }
 
 /// Set the field at `path` (checked by [`kind_of`]) to `value`.
@@ -176,7 +200,7 @@ pub fn set(scene: &mut Table, path: &str, value: &SweptValue) -> Result<(), Expl
         }
         None => Err(ExploreError::Field {
             path: path.to_string(),
-            reason: "not present in the scene".to_string(),
+            reason: FieldError::NotPresent,
         }),
     }
 }

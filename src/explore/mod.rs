@@ -22,20 +22,20 @@ use thiserror::Error;
 
 pub use design::{DesignKind, DesignPoint, design_points};
 pub use evaluate::{Evaluation, Nominal, Outcome, evaluate, point_text};
-pub use field::{FieldKind, SweptValue};
-pub use values::{Levels, Set};
+pub use field::{FieldError, FieldKind, SweptValue};
+pub use values::{Levels, Set, ValuesError};
 
 /// A sweep that cannot be set up (the whole command fails with this line;
 /// a bad design point is reported in the output instead).
 #[derive(Debug, Error)]
 pub enum ExploreError {
     #[error("--set {path}: {reason}")]
-    Field { path: String, reason: String },
+    Field { path: String, reason: FieldError },
     #[error("--set {path}={spec}: {reason}")]
     Values {
         path: String,
         spec: String,
-        reason: String,
+        reason: ValuesError,
     },
     #[error("--set {arg}: expected FIELD=VALUES, e.g. preload.force=5,10,20")]
     SetSyntax { arg: String },

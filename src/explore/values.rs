@@ -6,6 +6,7 @@
 //! allowed there) and picks equally often among the values of a list.
 
 use serde::{Deserialize, Serialize};
+use thiserror::Error;
 use toml::Table;
 
 use super::ExploreError;
@@ -59,6 +60,33 @@ impl Interval {
     }
 }
 
+/// Why the VALUES of a `--set` are not understood.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ValuesError {
+    #[error("a material field takes a list of names, not a range")]
+    MaterialRange,
+    #[error("\"{0}\" is not a number")]
+    NotANumber(String),
+    #[error("\"{0}\" is not finite")]
+    NotFinite(String),
+    #[error("a range is a:b:count or log:a:b:count")]
+    RangeSyntax,
+    #[error("the range needs a < b, got {lo} and {hi}")]
+    Reversed { lo: f64, hi: f64 },
+    #[error("a logarithmic range needs positive ends")]
+    LogNotPositive,
+    #[error("the count \"{0}\" is not a whole number")]
+    CountNotWhole(String),
+    #[error("the count must lie in 2..={MAX_LEVELS}, got {0}")]
+    CountRange(usize),
+    #[error("an empty item in the list")]
+    EmptyItem,
+    #[error("\"{0}\" is listed twice")]
+    Twice(String),
+    #[error("the field holds a material name, \"{0}\" is a number")]
+    NumberForMaterial(String),
+}
+
 /// One `--set`: the field, the VALUES as written, and what they mean.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Set {
@@ -85,16 +113,14 @@ impl Set {
             })?;
         let (path, spec) = (path.trim().to_string(), spec.trim().to_string());
         let kind = kind_of(&path, scene)?;
-        let err = |reason: String| ExploreError::Values {
+        let err = |reason: ValuesError| ExploreError::Values {
             path: path.clone(),
             spec: spec.clone(),
             reason,
         };
         let (levels, interval) = if spec.contains(':') {
             if kind == FieldKind::Material {
-                return Err(err(
-                    "a material field takes a list of names, not a range".into()
-                ));
+                return Err(err(ValuesError::MaterialRange));
             }
             range(&spec).map_err(err)?
         } else {
@@ -110,34 +136,34 @@ impl Set {
     }
 }
 
-fn number(s: &str) -> Result<f64, String> {
+fn number(s: &str) -> Result<f64, ValuesError> {
+    let s = s.trim();
     let x: f64 = s
-        .trim()
         .parse()
-        .map_err(|_| format!("\"{}\" is not a number", s.trim()))?;
+        .map_err(|_| ValuesError::NotANumber(s.to_string()))?;
     if x.is_finite() {
         Ok(x)
     } else {
-        Err(format!("\"{}\" is not finite", s.trim()))
+        Err(ValuesError::NotFinite(s.to_string()))
     }
 }
 
 /// `a:b:n`, `log:a:b:n`, `a:b`, `log:a:b`.
-fn range(spec: &str) -> Result<(Levels, Option<Interval>), String> {
+fn range(spec: &str) -> Result<(Levels, Option<Interval>), ValuesError> {
     let (log, rest) = match spec.strip_prefix("log:") {
         Some(r) => (true, r),
         None => (false, spec),
     };
     let parts: Vec<&str> = rest.split(':').collect();
     if !(2..=3).contains(&parts.len()) {
-        return Err("a range is a:b:count or log:a:b:count".into());
+        return Err(ValuesError::RangeSyntax);
     }
     let (lo, hi) = (number(parts[0])?, number(parts[1])?);
     if lo >= hi {
-        return Err(format!("the range needs a < b, got {lo} and {hi}"));
+        return Err(ValuesError::Reversed { lo, hi });
     }
     if log && lo <= 0.0 {
-        return Err("a logarithmic range needs positive ends".into());
+        return Err(ValuesError::LogNotPositive);
     }
     let interval = Interval { lo, hi, log };
     let Some(count) = parts.get(2) else {
@@ -146,9 +172,9 @@ fn range(spec: &str) -> Result<(Levels, Option<Interval>), String> {
     let n: usize = count
         .trim()
         .parse()
-        .map_err(|_| format!("the count \"{}\" is not a whole number", count.trim()))?;
+        .map_err(|_| ValuesError::CountNotWhole(count.trim().to_string()))?;
     if !(2..=MAX_LEVELS).contains(&n) {
-        return Err(format!("the count must lie in 2..={MAX_LEVELS}, got {n}"));
+        return Err(ValuesError::CountRange(n));
     }
     let values = (0..n)
         .map(|i| match i {
@@ -161,15 +187,15 @@ fn range(spec: &str) -> Result<(Levels, Option<Interval>), String> {
 }
 
 /// A comma-separated list of numbers or material names.
-fn list(spec: &str, kind: FieldKind) -> Result<Levels, String> {
+fn list(spec: &str, kind: FieldKind) -> Result<Levels, ValuesError> {
     let items: Vec<&str> = spec.split(',').map(str::trim).collect();
     if items.iter().any(|s| s.is_empty()) {
-        return Err("an empty item in the list".into());
+        return Err(ValuesError::EmptyItem);
     }
     let mut seen: Vec<&str> = Vec::new();
     for s in &items {
         if seen.contains(s) {
-            return Err(format!("\"{s}\" is listed twice"));
+            return Err(ValuesError::Twice(s.to_string()));
         }
         seen.push(s);
     }
@@ -179,9 +205,7 @@ fn list(spec: &str, kind: FieldKind) -> Result<Levels, String> {
         )),
         FieldKind::Material => {
             if let Some(s) = items.iter().find(|s| s.parse::<f64>().is_ok()) {
-                return Err(format!(
-                    "the field holds a material name, \"{s}\" is a number"
-                ));
+                return Err(ValuesError::NumberForMaterial(s.to_string()));
             }
             Ok(Levels::Names(items.iter().map(|s| s.to_string()).collect()))
         }
@@ -240,5 +264,20 @@ mod tests {
             Set::parse("preload.force", &s),
             Err(ExploreError::SetSyntax { .. })
         ));
+        let e = Set::parse("preload.force=40:5:3", &s).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                ExploreError::Values {
+                    reason: ValuesError::Reversed { lo: 40.0, hi: 5.0 },
+                    ..
+                }
+            ),
+            "{e:?}"
+        );
+        assert_eq!(
+            e.to_string(),
+            "--set preload.force=40:5:3: the range needs a < b, got 40 and 5"
+        );
     }
 }

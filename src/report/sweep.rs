@@ -112,6 +112,13 @@ pub enum SweepError {
     Explore(#[from] ExploreError),
     #[error("{0}")]
     Setup(String),
+    /// `--pareto-point` names no evaluation point of the base scene.
+    #[error("{file}: --pareto-point {point}: no such evaluation point (the scene has {have})")]
+    ParetoPoint {
+        file: String,
+        point: String,
+        have: String,
+    },
 }
 
 /// Run this shard's design points of `spec` (rayon across designs and
@@ -127,7 +134,7 @@ pub fn run(
     let setup = |e: String| SweepError::Setup(format!("{}: {e}", spec.file));
     let points = spec.points()?;
     let study_design = design_for(base, opts).map_err(|e| setup(e.to_string()))?;
-    let pareto_point = pareto_point_of(base, pareto_point).map_err(setup)?;
+    let pareto_point = pareto_point_of(&spec.file, base, pareto_point)?;
     let whole = StudyOptions {
         shard: Shard::whole(),
         ..*opts
@@ -193,7 +200,7 @@ pub fn run(
 }
 
 /// The evaluation point of the Pareto objective: `asked`, or the first.
-fn pareto_point_of(base: &Coupling, asked: Option<&str>) -> Result<String, String> {
+fn pareto_point_of(file: &str, base: &Coupling, asked: Option<&str>) -> Result<String, SweepError> {
     let names: Vec<&str> = base
         .scene
         .evaluation_points
@@ -203,10 +210,11 @@ fn pareto_point_of(base: &Coupling, asked: Option<&str>) -> Result<String, Strin
     match asked {
         None => Ok(names[0].to_string()),
         Some(p) if names.contains(&p) => Ok(p.to_string()),
-        Some(p) => Err(format!(
-            "--pareto-point {p}: no such evaluation point (the scene has {})",
-            names.join(", ")
-        )),
+        Some(p) => Err(SweepError::ParetoPoint {
+            file: file.to_string(),
+            point: p.to_string(),
+            have: names.join(", "),
+        }),
     }
 }
 

@@ -10,6 +10,7 @@
 use std::path::Path;
 
 use plotters::coord::Shift;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use thiserror::Error;
 
@@ -34,6 +35,7 @@ fn draw_err<E: std::fmt::Display>(e: E) -> SweepPlotError {
 }
 
 type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// The design charts as (file stem / title, SVG text), in a fixed order:
 /// `sweep_sigma_<field>` per swept field, `sweep_heatmap` (grids of two
@@ -252,36 +254,8 @@ fn dof_panel(
         .draw()
         .map_err(draw_err)?;
     for (gi, (label, g)) in series.iter().enumerate() {
-        let col = color(gi);
-        let band: Vec<(f64, f64)> = g
-            .iter()
-            .map(|v| (v[0], v[3]))
-            .chain(g.iter().rev().map(|v| (v[0], v[2])))
-            .filter(|p| p.1.is_finite())
-            .collect();
-        if g.len() > 1 && band.len() == 2 * g.len() {
-            chart
-                .draw_series(std::iter::once(Polygon::new(band, col.mix(0.2).filled())))
-                .map_err(draw_err)?;
-        }
-        let bars = g.iter().filter(|v| v[2].is_finite() && v[3].is_finite());
-        chart
-            .draw_series(bars.map(|v| PathElement::new(vec![(v[0], v[2]), (v[0], v[3])], col)))
-            .map_err(draw_err)?;
-        chart
-            .draw_series(g.iter().map(|v| Circle::new((v[0], v[1]), 3, col.filled())))
-            .map_err(draw_err)?;
-        let line = chart
-            .draw_series(LineSeries::new(
-                g.iter().map(|v| (v[0], v[1])),
-                col.stroke_width(2),
-            ))
-            .map_err(draw_err)?;
-        if legend && !label.is_empty() && gi < 8 {
-            line.label(*label).legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 14, y)], col.stroke_width(2))
-            });
-        }
+        let label = if legend && gi < 8 { *label } else { "" };
+        group(&mut chart, color(gi), label, g)?;
     }
     if legend && series.len() > 1 {
         chart
@@ -292,6 +266,46 @@ fn dof_panel(
             .border_style(BLACK)
             .draw()
             .map_err(draw_err)?;
+    }
+    Ok(())
+}
+
+/// One group's sigma line and dots, its interval as a band (where every
+/// point has one) and as bars; `label` (if not empty) enters the legend.
+/// Rows of `g`: [x, sigma, interval low, interval high].
+fn group(
+    chart: &mut Chart,
+    col: RGBColor,
+    label: &str,
+    g: &[[f64; 4]],
+) -> Result<(), SweepPlotError> {
+    let band: Vec<(f64, f64)> = g
+        .iter()
+        .map(|v| (v[0], v[3]))
+        .chain(g.iter().rev().map(|v| (v[0], v[2])))
+        .filter(|p| p.1.is_finite())
+        .collect();
+    if g.len() > 1 && band.len() == 2 * g.len() {
+        chart
+            .draw_series(std::iter::once(Polygon::new(band, col.mix(0.2).filled())))
+            .map_err(draw_err)?;
+    }
+    let bars = g.iter().filter(|v| v[2].is_finite() && v[3].is_finite());
+    chart
+        .draw_series(bars.map(|v| PathElement::new(vec![(v[0], v[2]), (v[0], v[3])], col)))
+        .map_err(draw_err)?;
+    chart
+        .draw_series(g.iter().map(|v| Circle::new((v[0], v[1]), 3, col.filled())))
+        .map_err(draw_err)?;
+    let line = chart
+        .draw_series(LineSeries::new(
+            g.iter().map(|v| (v[0], v[1])),
+            col.stroke_width(2),
+        ))
+        .map_err(draw_err)?;
+    if !label.is_empty() {
+        line.label(label)
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 14, y)], col.stroke_width(2)));
     }
     Ok(())
 }

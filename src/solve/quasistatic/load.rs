@@ -1,59 +1,16 @@
 //! A load applied after seating ([`apply_load`]): the at-rest contact
-//! states, the external wrench, and the contact events along its path.
+//! states and the path of the external wrench (its data types are in
+//! `external`).
 
 use nalgebra::Vector3;
-use serde::Serialize;
 
+use super::external::{ExternalLoad, LoadEvent, LoadEventKind};
 use super::path::Walk;
 use super::solver::{Program, Solver};
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{SlipState, TangentialState};
 use crate::solve::contact_layer::ContactEval;
 use crate::solve::{ContactResult, Seating, SolveError, SolverOptions, frictions};
-
-/// An extra load on the moving half after seating: a force of fixed
-/// direction applied at a point of the moving half, and a moment.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ExternalLoad {
-    /// Force [N] (world axes, direction fixed).
-    pub force: Vector3<f64>,
-    /// Point of application in the moving half, scene coordinates [m].
-    pub point: Vector3<f64>,
-    /// Moment [N m].
-    pub moment: Vector3<f64>,
-}
-
-/// What ends the at-rest (sticking, closed) response of a contact.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum LoadEventKind {
-    /// The normal force reaches 0: the contact opens.
-    Separation,
-    /// |F_t| reaches mu_s F_n: the contact starts to slip.
-    Slip,
-}
-
-impl LoadEventKind {
-    pub fn name(self) -> &'static str {
-        match self {
-            LoadEventKind::Separation => "separates",
-            LoadEventKind::Slip => "starts to slip",
-        }
-    }
-}
-
-/// The first contact event along a load path.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct LoadEvent {
-    /// Contact, 1-based.
-    pub contact: usize,
-    pub kind: LoadEventKind,
-    /// The event happens between these load factors: `previous` is the last
-    /// solved factor without it, `factor` the first with it (or the factor
-    /// beyond which no equilibrium exists).
-    pub previous: f64,
-    pub factor: f64,
-}
 
 /// The end of a load path.
 #[derive(Debug, Clone, PartialEq)]

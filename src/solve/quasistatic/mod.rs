@@ -41,12 +41,14 @@
 //! every seating of it computes first (the predictor x_1, the virgin
 //! contact states), and [`seat_prepared`] reuses it with the same bits.
 
+mod external;
 mod load;
 mod path;
 mod solver;
 pub mod uniform;
 
-pub use load::{ExternalLoad, LoadEvent, LoadEventKind, LoadPath, apply_load, at_rest_states};
+pub use external::{ExternalLoad, LoadEvent, LoadEventKind};
+pub use load::{LoadPath, apply_load, at_rest_states};
 
 use path::End;
 use solver::{Program, Solver};

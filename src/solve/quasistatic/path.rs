@@ -5,7 +5,7 @@
 
 use nalgebra::Vector6;
 
-use super::load::LoadEvent;
+use super::external::LoadEvent;
 use super::solver::{Loads, Program, Solver, Step, twist_between};
 use crate::assembly::BodyPose;
 use crate::contact::{SlipState, TangentialState};

@@ -16,7 +16,7 @@ use std::ops::{AddAssign, SubAssign};
 
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
-use super::load::ExternalLoad;
+use super::external::ExternalLoad;
 use crate::assembly::constraint::frictionless_preload_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};

@@ -3,6 +3,7 @@
 
 use std::path::Path;
 
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
 use super::super::error::{Result, StudyError};
@@ -84,6 +85,11 @@ fn panel_max(data: &[VariantSigma], dofs: &[Dof]) -> f64 {
         .fold(0.0, f64::max)
 }
 
+type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// One panel: the axes with the DOF names, per variant its bars and marks
+/// ([`variant_bars`]), the legend entry of the marks ([`marks_legend`]),
+/// and the legend box if `legend`.
 fn panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, plotters::coord::Shift>,
     data: &[VariantSigma],
@@ -91,7 +97,6 @@ fn panel<DB: DrawingBackend>(
     title: &str,
     legend: bool,
 ) -> Result<()> {
-    let unit = dofs[0].unit();
     let m = dofs.len();
     // Room above the bars for the legend box (about one line per entry).
     let has_ref = data.iter().any(|v| v.reference.is_some());
@@ -113,6 +118,29 @@ fn panel<DB: DrawingBackend>(
             0f64..headroom(panel_max(data, dofs) * room)?,
         )
         .map_err(plot_err)?;
+    axes(&mut chart, dofs)?;
+    let width = 0.8 / data.len() as f64;
+    for (v, variant) in data.iter().enumerate() {
+        variant_bars(&mut chart, v, variant, dofs, width)?;
+    }
+    marks_legend(&mut chart, has_ref, has_ci)?;
+    if !legend {
+        return Ok(());
+    }
+    chart
+        .configure_series_labels()
+        .label_font(("sans-serif", 15))
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(plot_err)
+}
+
+/// The mesh: one x label per DOF (its name at the integer positions), the
+/// y axis in the DOFs' unit.
+fn axes<DB: DrawingBackend>(chart: &mut Chart<DB>, dofs: &[Dof]) -> Result<()> {
+    let unit = dofs[0].unit();
     let names: Vec<&str> = dofs.iter().map(|d| d.label()).collect();
     let fmt = |v: &f64| {
         let r = v.round();
@@ -127,33 +155,49 @@ fn panel<DB: DrawingBackend>(
         .label_style(("sans-serif", 15))
         .axis_desc_style(("sans-serif", 17))
         .disable_x_mesh()
-        .x_labels(m)
+        .x_labels(dofs.len())
         .x_label_formatter(&fmt)
         .x_desc("degree of freedom")
         .y_desc(format!("σ [{unit}]"))
         .draw()
-        .map_err(plot_err)?;
+        .map_err(plot_err)
+}
 
-    let width = 0.8 / data.len() as f64;
-    for (v, variant) in data.iter().enumerate() {
-        let col = color(v);
-        let x0 = move |c: usize| c as f64 - 0.4 + v as f64 * width;
-        let bars = dofs.iter().enumerate().map(move |(c, &d)| {
-            Rectangle::new(
-                [(x0(c), 0.0), (x0(c) + width, variant.sigma[idx(d)])],
-                col.filled(),
-            )
-        });
-        chart
-            .draw_series(bars)
-            .map_err(plot_err)?
-            .label(variant.variant.as_str())
-            .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], col.filled()));
-        chart
-            .draw_series(marks(variant, dofs, &x0, width))
-            .map_err(plot_err)?;
-    }
-    // An empty series carries the legend entry of the marks.
+/// Variant `v`'s bars (one per DOF, `width` wide, its legend entry) and
+/// their error bars and reference ticks.
+fn variant_bars<DB: DrawingBackend>(
+    chart: &mut Chart<DB>,
+    v: usize,
+    variant: &VariantSigma,
+    dofs: &[Dof],
+    width: f64,
+) -> Result<()> {
+    let col = color(v);
+    let x0 = move |c: usize| c as f64 - 0.4 + v as f64 * width;
+    let bars = dofs.iter().enumerate().map(move |(c, &d)| {
+        Rectangle::new(
+            [(x0(c), 0.0), (x0(c) + width, variant.sigma[idx(d)])],
+            col.filled(),
+        )
+    });
+    chart
+        .draw_series(bars)
+        .map_err(plot_err)?
+        .label(variant.variant.as_str())
+        .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], col.filled()));
+    chart
+        .draw_series(marks(variant, dofs, &x0, width))
+        .map_err(plot_err)?;
+    Ok(())
+}
+
+/// An empty series that carries the legend entry of the marks (reference
+/// ticks and/or interval bars), if any variant has them.
+fn marks_legend<DB: DrawingBackend>(
+    chart: &mut Chart<DB>,
+    has_ref: bool,
+    has_ci: bool,
+) -> Result<()> {
     let mark_label = match (has_ref, has_ci) {
         (true, true) => Some("reference value (tick); 90 % interval (bar)"),
         (true, false) => Some("reference value (tick)"),
@@ -170,17 +214,7 @@ fn panel<DB: DrawingBackend>(
                 PathElement::new([(x, y), (x + 12, y)], BLACK.stroke_width(width))
             });
     }
-    if !legend {
-        return Ok(());
-    }
-    chart
-        .configure_series_labels()
-        .label_font(("sans-serif", 15))
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()
-        .map_err(plot_err)
+    Ok(())
 }
 
 /// The error bars (a vertical line from the low to the high end of the
