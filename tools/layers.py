@@ -4,7 +4,10 @@ import each other (docs/architecture.md).
 
 Layers, low to high (a file may import its own layer or a lower one):
   0 material, contact   1 scene   2 assembly, error   3 solve
-  4 analysis, fe        5 study   6 report            7 bin (the CLI)
+  4 analysis, fe        5 study   6 explore (sweeps)
+  7 report, calibrate (calibration builds on the study document types and
+    the report renders it; no two of their files import each other)
+  8 bin (the CLI)
 An import is any `crate::a::b` or `super::...` path in a file (use lines
 and paths in code alike), resolved to the file that defines the module.
 Run from the repository root: python3 tools/layers.py
@@ -16,7 +19,8 @@ import sys
 
 LAYER = {
     "material": 0, "contact": 0, "scene": 1, "assembly": 2, "error": 2,
-    "solve": 3, "analysis": 4, "fe": 4, "study": 5, "report": 6, "bin": 7,
+    "solve": 3, "analysis": 4, "fe": 4, "study": 5, "explore": 6,
+    "report": 7, "calibrate": 7, "bin": 8,
 }
 
 
