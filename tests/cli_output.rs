@@ -328,10 +328,11 @@ fn files_are_not_overwritten_without_force_and_never_left_half_written() {
     assert_eq!(std::fs::read_to_string(&trace).unwrap(), "keep");
     let (ok, _, err) = kinrepro(&["run", &s, "--solver", "dynamic", "--trace", t, "--force"]);
     assert!(ok, "{err}");
+    let written = std::fs::read_to_string(&trace).unwrap();
     assert!(
-        std::fs::read_to_string(&trace)
-            .unwrap()
-            .starts_with("time_s")
+        written.starts_with("# kinrepro ") && written.lines().nth(1).unwrap().starts_with("time_s"),
+        "{}",
+        &written[..80.min(written.len())]
     );
 }
 

@@ -55,6 +55,12 @@ fn dynamic_run_writes_a_trace() {
     );
     let csv = std::fs::read_to_string(&trace).unwrap();
     let mut lines = csv.lines();
+    // What produced it, as the study's CSV says.
+    let first = lines.next().unwrap();
+    assert!(
+        first.starts_with("# kinrepro ") && first.contains("solver dynamic") && first.contains(&s1),
+        "{first}"
+    );
     let head: Vec<&str> = lines.next().unwrap().split(',').collect();
     assert_eq!(head.len(), 9 + 4 * 6);
     assert_eq!(head[0], "time_s");

@@ -1,6 +1,10 @@
 //! The time history of a dynamic seating as CSV (`kinrepro run --solver
 //! dynamic --trace FILE.csv`), one row per time step, SI units.
 //!
+//! The first line says what produced the file (`# kinrepro VERSION (output
+//! schema N), solver dynamic, one seating of SCENE (NAME)`), as the study's
+//! per-sample CSV does; the header follows.
+//!
 //! Columns: `time_s, load_fraction, x_m, y_m, z_m, phi_x_rad, phi_y_rad,
 //! phi_z_rad, kinetic_energy_j`, then per contact k = 1..6 `fn{k}_n` (normal
 //! force, dashpot included), `ft{k}_n` (tangential force magnitude, dashpot
@@ -11,6 +15,7 @@
 use std::io::Write;
 
 use crate::assembly::Coupling;
+use crate::report::provenance::{SCHEMA_VERSION, VERSION};
 use crate::solve::PointPose;
 use crate::solve::dynamic::TraceSample;
 
@@ -22,8 +27,14 @@ pub struct TraceWriter<W: Write> {
 }
 
 impl<W: Write> TraceWriter<W> {
-    /// Write the header for `coupling` and return the writer.
+    /// Write the provenance line and the header for `coupling` and return
+    /// the writer.
     pub fn new(mut out: W, coupling: &Coupling) -> std::io::Result<Self> {
+        writeln!(
+            out,
+            "# kinrepro {VERSION} (output schema {SCHEMA_VERSION}), solver dynamic, one seating of {} ({})",
+            coupling.scene.file, coupling.scene.name
+        )?;
         let mut head = String::from(
             "time_s,load_fraction,x_m,y_m,z_m,phi_x_rad,phi_y_rad,phi_z_rad,kinetic_energy_j",
         );
