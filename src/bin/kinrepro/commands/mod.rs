@@ -124,3 +124,27 @@ pub fn finite3(name: &str, v: Option<Vec<f64>>) -> Result<nalgebra::Vector3<f64>
 pub fn print_json<T: serde::Serialize>(v: &T) -> Result<(), CliError> {
     emit(&format!("{}\n", serde_json::to_string_pretty(v)?))
 }
+
+/// The parts of a `merge` (study or sweep JSON), each read once: `what`
+/// names the document in the error (`"study"`, `"sweep"`); `first` is the
+/// first part's text if the caller has already read it.
+pub fn read_json_parts<T: serde::de::DeserializeOwned>(
+    parts: &[std::path::PathBuf],
+    mut first: Option<String>,
+    what: &str,
+) -> Result<Vec<(String, T)>, CliError> {
+    use crate::error::Context;
+    parts
+        .iter()
+        .map(|p| {
+            let text = match first.take() {
+                Some(t) => t,
+                None => std::fs::read_to_string(p)
+                    .map_err(|e| CliError::file(p.display(), "cannot read: ", e))?,
+            };
+            let doc = serde_json::from_str::<T>(&text)
+                .context(format!("{}: not a kinrepro {what} JSON", p.display()))?;
+            Ok((p.display().to_string(), doc))
+        })
+        .collect()
+}

@@ -247,19 +247,18 @@ pub(super) fn progress(total: usize) -> Result<indicatif::ProgressBar, CliError>
 
 pub fn merge(args: MergeArgs) -> Result<(), CliError> {
     let MergeArgs { parts, format } = args;
-    if parts.first().is_some_and(|p| super::sweep::is_sweep(p)) {
-        return super::sweep::merge(&parts, format);
+    // The first part says which kind of document is merged; it is read once.
+    let first = match parts.first() {
+        Some(p) => Some(
+            std::fs::read_to_string(p)
+                .map_err(|e| CliError::file(p.display(), "cannot read: ", e))?,
+        ),
+        None => None,
+    };
+    if first.as_deref().is_some_and(super::sweep::is_sweep) {
+        return super::sweep::merge(&parts, first, format);
     }
-    let docs = parts
-        .iter()
-        .map(|p| {
-            let text = std::fs::read_to_string(p)
-                .map_err(|e| CliError::file(p.display(), "cannot read: ", e))?;
-            let doc = serde_json::from_str::<StudyReport>(&text)
-                .context(format!("{}: not a kinrepro study JSON", p.display()))?;
-            Ok((p.display().to_string(), doc))
-        })
-        .collect::<Result<Vec<_>, CliError>>()?;
+    let docs = read_json_parts::<StudyReport>(&parts, first, "study")?;
     let merged = kinrepro::report::merge::merge_parts(docs)?;
     print_study(&merged, format)?;
     refuse_unseated(&merged, true)

@@ -153,26 +153,21 @@ pub fn print_sweep(report: &SweepReport, format: Format) -> Result<(), CliError>
     }
 }
 
-/// `kinrepro merge` of sweep parts (JSON documents with `"document": "sweep"`).
-pub fn merge(parts: &[PathBuf], format: Format) -> Result<(), CliError> {
-    let docs = parts
-        .iter()
-        .map(|p| {
-            let text = std::fs::read_to_string(p)
-                .map_err(|e| CliError::file(p.display(), "cannot read: ", e))?;
-            let doc = serde_json::from_str::<SweepReport>(&text)
-                .context(format!("{}: not a kinrepro sweep JSON", p.display()))?;
-            Ok((p.display().to_string(), doc))
-        })
-        .collect::<Result<Vec<_>, CliError>>()?;
+/// `kinrepro merge` of sweep parts (JSON documents with `"document":
+/// "sweep"`); `first`: the first part's text, already read.
+pub fn merge(parts: &[PathBuf], first: Option<String>, format: Format) -> Result<(), CliError> {
+    let docs = read_json_parts::<SweepReport>(parts, first, "sweep")?;
     let merged = merge_sweeps(docs)?;
     print_sweep(&merged, format)
 }
 
-/// True if the JSON file at `path` is a sweep document.
-pub fn is_sweep(path: &std::path::Path) -> bool {
-    std::fs::read_to_string(path)
-        .ok()
-        .and_then(|t| serde_json::from_str::<serde_json::Value>(&t).ok())
-        .is_some_and(|v| v.get("document").and_then(|d| d.as_str()) == Some("sweep"))
+/// True if a JSON text is a sweep document (`"document": "sweep"`); only
+/// that field is read, the rest is skipped without building a tree.
+pub fn is_sweep(text: &str) -> bool {
+    #[derive(serde::Deserialize)]
+    struct Document {
+        #[serde(default)]
+        document: Option<String>,
+    }
+    serde_json::from_str::<Document>(text).is_ok_and(|d| d.document.as_deref() == Some("sweep"))
 }
