@@ -9,9 +9,9 @@ use std::path::Path;
 use crate::report::atomic::{self, AtomicFile, WriteError};
 use crate::report::html::charts::study_charts;
 use crate::report::provenance::{SCHEMA_VERSION, VERSION, produced_by};
-use crate::report::study::{Dofs, StudyRecord, StudyReport, VariantReport};
-use crate::report::study_text::csv_field;
-use crate::study::runner::{COMPONENTS, INTERCHANGE_PREFIX};
+use crate::report::study::{StudyRecord, StudyReport, VariantReport};
+use crate::report::study_text::{csv_field, point_csv_fields};
+use crate::study::runner::INTERCHANGE_PREFIX;
 
 /// Header of the summary CSV: provenance columns, then the statistics (SI).
 pub const SUMMARY_HEADER: &str = "kinrepro_version,schema_version,solver,sampler,seed,samples,vary,scene,name,point,dof,unit,n,mean,min,max,sigma,three_sigma,sigma_ci90_low,sigma_ci90_high,sigma_interval_method";
@@ -30,33 +30,16 @@ impl StudyReport {
                 p
             });
             for p in v.points.iter().cloned().chain(interchange) {
-                let p = &p;
-                for (k, comp) in COMPONENTS.iter().enumerate() {
-                    let (dof, unit) = comp.rsplit_once('_').unwrap_or((comp, ""));
-                    let si = |d: &Dofs| d.values()[k] * 1e-9;
-                    // No interval (corners, single LHS): an empty field.
-                    let ci = |d: &Option<Dofs>| {
-                        d.as_ref().map_or(String::new(), |d| format!("{:e}", si(d)))
-                    };
+                for stats in point_csv_fields(&p) {
                     let _ = writeln!(
                         s,
-                        "{VERSION},{SCHEMA_VERSION},{},{},{},{},{vary},{},{},{},{dof},{unit},{},{:e},{:e},{:e},{:e},{:e},{},{},{}",
+                        "{VERSION},{SCHEMA_VERSION},{},{},{},{},{vary},{},{},{stats}",
                         v.solver,
                         v.sampler,
                         v.seed,
                         v.samples,
                         csv_field(&v.scene),
                         csv_field(&v.name),
-                        csv_field(&p.name),
-                        p.n,
-                        si(&p.mean),
-                        si(&p.min),
-                        si(&p.max),
-                        si(&p.sigma),
-                        si(&p.three_sigma),
-                        ci(&p.sigma_ci90_low),
-                        ci(&p.sigma_ci90_high),
-                        csv_field(&p.sigma_interval_method)
                     );
                 }
             }

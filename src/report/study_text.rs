@@ -3,8 +3,9 @@
 
 use std::fmt::Write;
 
-use crate::report::study::{PointStats, VariantReport, varied_kinds};
+use crate::report::study::{Dofs, PointStats, VariantReport, varied_kinds};
 use crate::scene::VariationBounds;
+use crate::study::runner::COMPONENTS;
 
 /// The Table 2 style sigma table of `points(v)` for every variant.
 pub(crate) fn sigma_table(
@@ -163,6 +164,36 @@ pub(crate) fn truncate(s: &str, n: usize) -> String {
     } else {
         s.chars().take(n - 1).collect::<String>() + "…"
     }
+}
+
+/// The statistics columns of one evaluation point in the summary CSVs of a
+/// study and of a sweep, one string per DOF (`COMPONENTS` order):
+/// `point,dof,unit,n,mean,min,max,sigma,three_sigma,sigma_ci90_low,
+/// sigma_ci90_high,sigma_interval_method`, values in SI (m, rad); no interval
+/// (corners, a single LHS) is an empty field.
+pub(crate) fn point_csv_fields(p: &PointStats) -> Vec<String> {
+    COMPONENTS
+        .iter()
+        .enumerate()
+        .map(|(k, comp)| {
+            let (dof, unit) = comp.rsplit_once('_').unwrap_or((comp, ""));
+            let si = |d: &Dofs| format!("{:e}", d.values()[k] * 1e-9);
+            let ci = |d: &Option<Dofs>| d.as_ref().map_or(String::new(), si);
+            format!(
+                "{},{dof},{unit},{},{},{},{},{},{},{},{},{}",
+                csv_field(&p.name),
+                p.n,
+                si(&p.mean),
+                si(&p.min),
+                si(&p.max),
+                si(&p.sigma),
+                si(&p.three_sigma),
+                ci(&p.sigma_ci90_low),
+                ci(&p.sigma_ci90_high),
+                csv_field(&p.sigma_interval_method)
+            )
+        })
+        .collect()
 }
 
 pub(crate) fn csv_field(s: &str) -> String {

@@ -4,10 +4,8 @@ use std::fmt::Write;
 
 use crate::explore::SweptValue;
 use crate::report::provenance::{SCHEMA_VERSION, VERSION};
-use crate::report::study::Dofs;
-use crate::report::study_text::{csv_field, truncate};
+use crate::report::study_text::{csv_field, point_csv_fields, truncate};
 use crate::report::sweep::{DesignReport, SweepReport};
-use crate::study::runner::COMPONENTS;
 
 /// A number in at most 4 significant digits, no trailing zeros (tables
 /// and chart ticks; the JSON and CSV keep every digit).
@@ -88,24 +86,8 @@ impl SweepReport {
                 let _ = writeln!(s, "{head},,,,,,,,,,,,,,{tail}");
             }
             for p in &d.points {
-                for (k, comp) in COMPONENTS.iter().enumerate() {
-                    let (dof, unit) = comp.rsplit_once('_').unwrap_or((comp, ""));
-                    let si = |x: &Dofs| format!("{:e}", x.values()[k] * 1e-9);
-                    let ci = |x: &Option<Dofs>| x.as_ref().map_or(String::new(), si);
-                    let _ = writeln!(
-                        s,
-                        "{head},{},{dof},{unit},{},{},{},{},{},{},{},{},{},{tail}",
-                        csv_field(&p.name),
-                        p.n,
-                        si(&p.mean),
-                        si(&p.min),
-                        si(&p.max),
-                        si(&p.sigma),
-                        si(&p.three_sigma),
-                        ci(&p.sigma_ci90_low),
-                        ci(&p.sigma_ci90_high),
-                        csv_field(&p.sigma_interval_method)
-                    );
+                for stats in point_csv_fields(p) {
+                    let _ = writeln!(s, "{head},{stats},{tail}");
                 }
             }
         }
