@@ -68,19 +68,17 @@ impl PrincipalStiffness {
         // may be computed by different formulas), or no major axis to orient
         // an ellipse by. Both values are then the mean, K_t = k (I - n n^T).
         let in_plane = (Matrix3::identity() - n * n.transpose()) * major_axis;
+        let length = in_plane.norm();
         let round = (k[0] - k[1]).abs() <= 1e-12 * k[0].abs().max(k[1].abs());
-        if round || in_plane.norm() <= 1e-12 * major_axis.norm() || in_plane.norm() == 0.0 {
-            let mean = if k[0] == k[1] {
-                k[0]
-            } else {
-                0.5 * (k[0] + k[1])
-            };
+        if round || length <= 1e-12 * major_axis.norm() {
+            // 0.5 (k + k) is k exactly: equal values stay bit for bit.
+            let mean = 0.5 * (k[0] + k[1]);
             return PrincipalStiffness {
                 k: [mean, mean],
                 axes: None,
             };
         }
-        let e1 = in_plane.normalize();
+        let e1 = in_plane / length;
         PrincipalStiffness {
             k,
             axes: Some([e1, n.cross(&e1)]),
