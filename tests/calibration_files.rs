@@ -30,7 +30,13 @@ fn bad_measurement_files_name_file_line_and_column() {
     );
     let e = err("x_nm,y_nm\n1,2\n3,4\n");
     assert!(
-        e.starts_with("m.csv: line 3:") && e.contains("need at least 3"),
+        e.starts_with("m.csv: line 3, column 1 (x_nm):") && e.contains("need at least 3"),
+        "{e}"
+    );
+    // With a `point` column first, the first DOF column is named.
+    let e = err("point,x_nm\na,1\na,2\n");
+    assert!(
+        e.starts_with("m.csv: line 3, column 2 (x_nm):") && e.contains("2 cycle(s)"),
         "{e}"
     );
     let e = err("x_nm,y_nm\n1,2\n3,abc\n5,6\n");
