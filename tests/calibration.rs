@@ -141,7 +141,7 @@ fn transfer_to_scenes_01_and_04_contains_direct_studies() {
         method: Method::default(),
     };
     let cal = calibrate(&c02, &m, &opts).unwrap();
-    let sp = cal.spread();
+    let sp = cal.spread().expect("the spread is fitted");
     eprintln!("spread {} [{}, {}]", sp.estimate, sp.low, sp.high);
     assert!(cal.goodness_of_fit.ok);
     for name in [
