@@ -107,6 +107,22 @@ impl ModelGrid {
         })
     }
 
+    /// A grid of given node matrices (unit tests with a closed-form G).
+    #[cfg(test)]
+    pub(crate) fn from_parts(
+        params: Vec<Param>,
+        nodes: Vec<Vec<f64>>,
+        g: Vec<DMatrix<f64>>,
+        spread: f64,
+    ) -> Self {
+        ModelGrid {
+            params,
+            nodes,
+            g,
+            spread,
+        }
+    }
+
     /// G at the grid-parameter values `phi` (interpolated).
     pub fn at(&self, phi: &[f64]) -> DMatrix<f64> {
         let per_dim: Vec<Vec<(usize, f64)>> = self

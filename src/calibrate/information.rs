@@ -211,3 +211,97 @@ impl Information {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::chi2::CHI2_1_90;
+    use super::super::grid::ModelGrid;
+    use super::super::joint::{estimate, profile_end};
+    use super::*;
+    use rand::{Rng, SeedableRng};
+
+    /// Two DOFs, G(phi) = diag(1, phi), no noise: Sigma = diag(s^2, s^2 phi).
+    /// With S = diag(a, b) from n cycles the maximum is s^2 = a, phi = b / a,
+    /// and at any s, phi = b / s^2 fits the second DOF exactly, so the
+    /// profile of s is the one-DOF curve (n - 1)(r - ln r - 1), r = a / s^2.
+    fn separable<'a>(obs: &'a Observed, grid: &'a ModelGrid) -> JointModel<'a> {
+        JointModel {
+            obs,
+            grid,
+            params: vec![Param::Spread, Param::DynamicRatio],
+            ranges: vec![(0.0, 0.5), (0.3, 1.0)],
+            spread_fixed: 0.0,
+            mu_fixed: 1.0,
+            noise_var: vec![0.0, 0.0],
+        }
+    }
+
+    fn grid() -> ModelGrid {
+        let nodes: Vec<f64> = (0..4).map(|i| 0.3 + 0.7 * i as f64 / 3.0).collect();
+        let g = nodes
+            .iter()
+            .map(|&phi| DMatrix::from_diagonal(&DVector::from_vec(vec![1.0, phi])))
+            .collect();
+        ModelGrid::from_parts(vec![Param::DynamicRatio], vec![nodes], g, 0.2)
+    }
+
+    /// Rows of two independent DOFs with variances (0.04, 0.024): normal or uniform.
+    fn samples(n: usize, uniform: bool) -> Vec<Vec<f64>> {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(11);
+        let mut unit = || {
+            if uniform {
+                3f64.sqrt() * (2.0 * rng.random::<f64>() - 1.0)
+            } else {
+                let (u1, u2): (f64, f64) = (1.0 - rng.random::<f64>(), rng.random());
+                (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+            }
+        };
+        (0..n)
+            .map(|_| vec![0.2 * unit(), 0.024f64.sqrt() * unit()])
+            .collect()
+    }
+
+    #[test]
+    fn separable_model_closed_forms() {
+        let (a, b, n) = (0.04, 0.024, 40);
+        let obs = Observed::Covariance {
+            s: DMatrix::from_diagonal(&DVector::from_vec(vec![a, b])),
+            n,
+        };
+        let grid = grid();
+        let jm = separable(&obs, &grid);
+        let (u_hat, l_max) = estimate(&jm);
+        let theta = jm.theta(&u_hat);
+        assert!(
+            (theta[0] - 0.2).abs() < 1e-6 && (theta[1] - 0.6).abs() < 1e-5,
+            "{theta:?}"
+        );
+        // Profile ends of the spread: 39 (r - ln r - 1) = chi^2_1(0.90).
+        for dir in [-1.0, 1.0] {
+            let e = profile_end(&jm, 0, 1.0, &u_hat, l_max, dir);
+            let s = jm.theta(&e.point)[0];
+            let r = a / (s * s);
+            let d = (n as f64 - 1.0) * (r - r.ln() - 1.0);
+            assert!(
+                !e.at_bound && (d - CHI2_1_90).abs() < 1e-4,
+                "{dir}: s {s}, {d}"
+            );
+        }
+        // Sandwich factors: normal scatter 1, uniform 2 / Var(u^2) = 2.5 (unit-variance u).
+        for (uniform, want) in [(false, 1.0), (true, 2.5)] {
+            let d = information(&jm, &theta, &samples(200_000, uniform))
+                .unwrap()
+                .derived();
+            for k in &d.k {
+                assert!((k / want - 1.0).abs() < 0.02, "uniform {uniform}: k {k}");
+            }
+        }
+        // Model error of s from N normal samples: sd(ln s) = sqrt(1 / (2 N)).
+        let nx = 20_000;
+        let d = information(&jm, &theta, &samples(nx, false))
+            .unwrap()
+            .derived();
+        let rel = d.model_sd[0] / theta[0] / (1.0 / (2.0 * nx as f64)).sqrt();
+        assert!((rel - 1.0).abs() < 0.03, "model sd ratio {rel}");
+    }
+}
