@@ -189,6 +189,73 @@ fn transfer_to_scenes_01_and_04_contains_direct_studies() {
     assert_eq!(dofs.len(), 6);
 }
 
+/// The same with spread and mu_static calibrated jointly on data at
+/// (0.08, 0.40): the prediction intervals, which carry the joint
+/// uncertainty, contain sigma of direct 2000-sample studies of scenes 01
+/// and 04 at the true pair (another seed).
+#[test]
+fn joint_transfer_to_scenes_01_and_04_contains_direct_studies() {
+    use kinrepro::calibrate::params::{Param, with_values};
+    let params = [Param::Spread, Param::MuStatic];
+    let truth = [TRUE_SPREAD, 0.40];
+    let c02 = common::load("02_maxwell_pins_steel.toml");
+    let mut rng = ChaCha8Rng::seed_from_u64(33);
+    let rows = synthetic(
+        &with_values(&c02, &[Param::MuStatic], &[0.40]),
+        TRUE_SPREAD,
+        50,
+        &mut rng,
+    );
+    let m = Measurement::parse(&csv(&rows), "syn02.csv").unwrap();
+    let opts = CalibrateOptions {
+        fit: vec!["spread".into(), "mu_static".into()],
+        noise: [None; 6],
+        point: None,
+        samples: MODEL_SAMPLES,
+        seed: MODEL_SEED,
+        method: Method::default(),
+    };
+    let cal = calibrate(&c02, &m, &opts).unwrap();
+    eprintln!("{:?}", cal.parameters);
+    assert!(cal.goodness_of_fit.ok);
+    for name in [
+        "01_maxwell_vgroove_steel.toml",
+        "04_maxwell_balls_steel.toml",
+    ] {
+        let c = common::load(name);
+        let p = predict(&c, &cal, MODEL_SAMPLES, MODEL_SEED, Method::default()).unwrap();
+        let direct = with_values(&c, &params, &truth);
+        let run = run_variant(
+            &direct,
+            &model_options(2000, 4242, Method::default()),
+            &|| {},
+        )
+        .unwrap();
+        let pt = &p.variant.points[0];
+        let (lo, hi) = (
+            pt.sigma_ci90_low.unwrap().values(),
+            pt.sigma_ci90_high.unwrap().values(),
+        );
+        for j in 0..6 {
+            let v: Vec<f64> = run.records.iter().map(|r| r.outputs[j]).collect();
+            let mean = v.iter().sum::<f64>() / v.len() as f64;
+            let sd = (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (v.len() as f64 - 1.0))
+                .sqrt()
+                * 1e9;
+            eprintln!(
+                "{name} dof {j}: direct {sd:.4} in [{:.4}, {:.4}]",
+                lo[j], hi[j]
+            );
+            assert!(
+                lo[j] <= sd && sd <= hi[j],
+                "{name} dof {j}: direct sigma {sd} outside [{}, {}]",
+                lo[j],
+                hi[j]
+            );
+        }
+    }
+}
+
 #[test]
 fn misfit_sigma_z_three_times_sigma_x_is_flagged() {
     let c = common::load("01_maxwell_vgroove_steel.toml");
