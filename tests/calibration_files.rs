@@ -298,4 +298,11 @@ fn two_parameters(s02: &str, s01: &str, measured: &str, path: &dyn Fn(&str) -> S
         pt["sigma_ci90_high"]["x_nm"].as_f64().unwrap(),
     );
     assert!(0.0 < l && l < s && s < h, "{l} {s} {h}");
+    // A region point naming a parameter that was not fitted is refused.
+    let mut bad = j.clone();
+    bad["region"][0]["dynamic_ratio"] = serde_json::json!(0.5);
+    std::fs::write(path("bad_region.json"), bad.to_string()).unwrap();
+    let (ok, _, e) = common::kinrepro(&["predict", s01, "--calibration", &path("bad_region.json")]);
+    assert!(!ok && e.trim().lines().count() == 1, "{e}");
+    assert!(e.contains("`region[0]`: `dynamic_ratio`"), "{e}");
 }

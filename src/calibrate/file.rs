@@ -299,6 +299,16 @@ impl Calibration {
         {
             return Err(bad(format!("unknown parameter `{p}` in `parameters`")));
         }
+        for (i, point) in c.region.iter().enumerate() {
+            if let Some((k, v)) = point
+                .iter()
+                .find(|(k, v)| !c.parameters.contains_key(*k) || !v.is_finite() || **v < 0.0)
+            {
+                return Err(bad(format!(
+                    "`region[{i}]`: `{k}` = {v} (need a fitted parameter with a finite value >= 0)"
+                )));
+            }
+        }
         Ok(c)
     }
 
