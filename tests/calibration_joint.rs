@@ -121,6 +121,49 @@ fn joint_spread_and_mu_static_intervals_cover_the_truth() {
     assert!(err[0] < 0.05, "spread mean |error| {}", err[0]);
 }
 
+/// The grid's interpolation against direct studies (same seed) half way
+/// between nodes, for each grid parameter of scene 02: sigma per DOF within
+/// 1 % (the grid's check at the estimate reports the same quantity).
+#[test]
+fn grid_interpolation_matches_direct_studies_between_nodes() {
+    let c = common::load("02_maxwell_pins_steel.toml");
+    let dofs = [0, 1, 2, 3, 4, 5];
+    let spec = StudySpec {
+        coupling: &c,
+        point: 0,
+        dofs: &dofs,
+        samples: 1000,
+        seed: MODEL_SEED,
+        method: Method::default(),
+    };
+    for p in [
+        Param::MuStatic,
+        Param::DynamicRatio,
+        Param::SupportCompliance,
+    ] {
+        let range = p.range(&c, false);
+        let grid = ModelGrid::build(&spec, &[p], &[range], 0.05).unwrap();
+        let nodes = &grid.nodes[0];
+        let mut worst = 0.0f64;
+        for i in [0, nodes.len() / 2, nodes.len() - 2] {
+            let v = 0.5 * (nodes[i] + nodes[i + 1]);
+            let g = grid.at(&[v]);
+            let direct = spec
+                .run(&with_values(&c, &[p, Param::Spread], &[v, 0.05]))
+                .unwrap();
+            let gd = direct.per_unit(&dofs);
+            for j in 0..6 {
+                worst = worst.max(((g[(j, j)] / gd[(j, j)]).sqrt() - 1.0).abs());
+            }
+        }
+        eprintln!(
+            "{}: largest sigma difference between nodes {worst:.2e}",
+            p.name()
+        );
+        assert!(worst < 0.01, "{}: {worst}", p.name());
+    }
+}
+
 fn options(fit: &[&str]) -> CalibrateOptions {
     CalibrateOptions {
         fit: fit.iter().map(|s| s.to_string()).collect(),
