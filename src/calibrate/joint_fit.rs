@@ -252,6 +252,9 @@ fn intervals(
                 high = (est + (high - est).hypot(h)).min(r1);
             }
         }
+        // Widening by the model error may also reach a range end.
+        let low_at = lo.at_bound || (*p != Param::Spread && low <= r0);
+        let high_at = hi.at_bound || high >= r1;
         out.push(Parameter {
             estimate: est,
             low,
@@ -264,10 +267,10 @@ fn intervals(
             } else {
                 d.model_sd[a]
             },
-            low_at_bound: lo.at_bound,
-            high_at_bound: hi.at_bound,
+            low_at_bound: low_at,
+            high_at_bound: high_at,
             range: Some([if *p == Param::Spread { 0.0 } else { r0 }, r1]),
-            determined: !lo.at_bound && !hi.at_bound,
+            determined: !low_at && !high_at,
         });
         ends.push((lo, hi));
     }
