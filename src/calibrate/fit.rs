@@ -1,4 +1,4 @@
-//! `kinrepro calibrate`: fit the friction spread of a scene to a measured
+//! `kinrepro calibrate`: fit the friction spread alone of a scene to a measured
 //! scatter and write the calibration file (docs/measurements.md).
 //!
 //! Steps: (1) the model covariance G per unit spread^2 from a Monte Carlo

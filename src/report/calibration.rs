@@ -25,6 +25,10 @@ fn human(dof: &str, si: f64) -> String {
     format!("{:.3} {u}", si * 1e9)
 }
 
+/// `model.grid.check` above which the table warns (a sigma difference of 2 %
+/// is a tenth of a 50-cycle measurement's own sigma error).
+pub const GRID_CHECK_WARN: f64 = 0.02;
+
 /// A parameter value with its unit (support compliance in m/N).
 fn value(name: &str, v: f64) -> String {
     if name == "support_compliance" {
@@ -145,7 +149,13 @@ pub fn calibration_table(c: &Calibration) -> String {
                 g.parameters.join(" x "),
                 g.spread,
                 100.0 * g.check
-            )
+            );
+            if g.check > GRID_CHECK_WARN {
+                s += &format!(
+                    "  WARNING: the grid's model covariance differs from a direct study at the estimate by more than {:.0} % (sigma ∝ spread fails near spread = mu_static, or the grid is too coarse): read the intervals with care\n\n",
+                    100.0 * GRID_CHECK_WARN
+                );
+            }
         }
     }
     s += "dof      cycles  measured sigma   noise sigma      fitted sigma     model sigma (no noise)\n";
