@@ -1,5 +1,5 @@
-//! `kinrepro calibrate`: fit the friction spread alone of a scene to a measured
-//! scatter and write the calibration file (docs/measurements.md).
+//! `kinrepro calibrate`: fit the friction spread of a scene alone to a measured
+//! scatter (several parameters: `joint_fit`) and build the calibration file.
 //!
 //! Steps: (1) the model covariance G per unit spread^2 from a Monte Carlo
 //! study at the scene's spread (the reference); (2) the maximum-likelihood
