@@ -152,35 +152,7 @@ fn transfer_to_scenes_01_and_04_contains_direct_studies() {
         let p = predict(&c, &cal, MODEL_SAMPLES, MODEL_SEED, Method::default()).unwrap();
         assert!(p.measured.is_none(), "{name} is not the calibrated design");
         // The direct study: 2000 Monte Carlo samples at the true spread, another seed.
-        let direct = with_spread(&c, TRUE_SPREAD);
-        let run = run_variant(
-            &direct,
-            &model_options(2000, 4242, Method::default()),
-            &|| {},
-        )
-        .unwrap();
-        let pt = &p.variant.points[0];
-        let (lo, hi) = (
-            pt.sigma_ci90_low.unwrap().values(),
-            pt.sigma_ci90_high.unwrap().values(),
-        );
-        for j in 0..6 {
-            let v: Vec<f64> = run.records.iter().map(|r| r.outputs[j]).collect();
-            let mean = v.iter().sum::<f64>() / v.len() as f64;
-            let sd = (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (v.len() as f64 - 1.0))
-                .sqrt()
-                * 1e9;
-            eprintln!(
-                "{name} dof {j}: direct {sd:.4} in [{:.4}, {:.4}]",
-                lo[j], hi[j]
-            );
-            assert!(
-                lo[j] <= sd && sd <= hi[j],
-                "{name} dof {j}: direct sigma {sd} outside [{}, {}]",
-                lo[j],
-                hi[j]
-            );
-        }
+        assert_direct_inside(name, &p, &with_spread(&c, TRUE_SPREAD));
     }
     // The calibrated design itself carries its measured values.
     let p = predict(&c02, &cal, 200, MODEL_SEED, Method::default()).unwrap();
@@ -207,14 +179,7 @@ fn joint_transfer_to_scenes_01_and_04_contains_direct_studies() {
         &mut rng,
     );
     let m = Measurement::parse(&csv(&rows), "syn02.csv").unwrap();
-    let opts = CalibrateOptions {
-        fit: vec!["spread".into(), "mu_static".into()],
-        noise: [None; 6],
-        point: None,
-        samples: MODEL_SAMPLES,
-        seed: MODEL_SEED,
-        method: Method::default(),
-    };
+    let opts = common::synthetic::calibrate_options(&["spread", "mu_static"]);
     let cal = calibrate(&c02, &m, &opts).unwrap();
     eprintln!("{:?}", cal.parameters);
     assert!(cal.goodness_of_fit.ok);
@@ -224,35 +189,36 @@ fn joint_transfer_to_scenes_01_and_04_contains_direct_studies() {
     ] {
         let c = common::load(name);
         let p = predict(&c, &cal, MODEL_SAMPLES, MODEL_SEED, Method::default()).unwrap();
-        let direct = with_values(&c, &params, &truth);
-        let run = run_variant(
-            &direct,
-            &model_options(2000, 4242, Method::default()),
-            &|| {},
-        )
-        .unwrap();
-        let pt = &p.variant.points[0];
-        let (lo, hi) = (
-            pt.sigma_ci90_low.unwrap().values(),
-            pt.sigma_ci90_high.unwrap().values(),
+        assert_direct_inside(name, &p, &with_values(&c, &params, &truth));
+    }
+}
+
+/// sigma of a direct 2000-sample study of `direct` (point 0, seed 4242)
+/// lies inside the prediction interval of `p` for every DOF.
+fn assert_direct_inside(name: &str, p: &kinrepro::calibrate::Prediction, direct: &Coupling) {
+    let opts = model_options(2000, 4242, Method::default());
+    let run = run_variant(direct, &opts, &|| {}).unwrap();
+    let pt = &p.variant.points[0];
+    let (lo, hi) = (
+        pt.sigma_ci90_low.unwrap().values(),
+        pt.sigma_ci90_high.unwrap().values(),
+    );
+    for j in 0..6 {
+        let v: Vec<f64> = run.records.iter().map(|r| r.outputs[j]).collect();
+        let mean = v.iter().sum::<f64>() / v.len() as f64;
+        let sd = (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (v.len() as f64 - 1.0))
+            .sqrt()
+            * 1e9;
+        eprintln!(
+            "{name} dof {j}: direct {sd:.4} in [{:.4}, {:.4}]",
+            lo[j], hi[j]
         );
-        for j in 0..6 {
-            let v: Vec<f64> = run.records.iter().map(|r| r.outputs[j]).collect();
-            let mean = v.iter().sum::<f64>() / v.len() as f64;
-            let sd = (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (v.len() as f64 - 1.0))
-                .sqrt()
-                * 1e9;
-            eprintln!(
-                "{name} dof {j}: direct {sd:.4} in [{:.4}, {:.4}]",
-                lo[j], hi[j]
-            );
-            assert!(
-                lo[j] <= sd && sd <= hi[j],
-                "{name} dof {j}: direct sigma {sd} outside [{}, {}]",
-                lo[j],
-                hi[j]
-            );
-        }
+        assert!(
+            lo[j] <= sd && sd <= hi[j],
+            "{name} dof {j}: direct sigma {sd} outside [{}, {}]",
+            lo[j],
+            hi[j]
+        );
     }
 }
 

@@ -5,10 +5,9 @@
 
 mod common;
 
-use common::synthetic::{csv, synthetic};
-use kinrepro::calibrate::fit::CalibrateOptions;
+use common::synthetic::{calibrate_options, csv, synthetic};
 use kinrepro::calibrate::grid::{ModelGrid, StudySpec};
-use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED};
+use kinrepro::calibrate::model::MODEL_SEED;
 use kinrepro::calibrate::params::{Param, with_values};
 use kinrepro::calibrate::{Measurement, calibrate};
 use kinrepro::solve::Method;
@@ -58,17 +57,6 @@ fn grid_interpolation_matches_direct_studies_between_nodes() {
     }
 }
 
-fn options(fit: &[&str]) -> CalibrateOptions {
-    CalibrateOptions {
-        fit: fit.iter().map(|s| s.to_string()).collect(),
-        noise: [None; 6],
-        point: None,
-        samples: MODEL_SAMPLES,
-        seed: MODEL_SEED,
-        method: Method::default(),
-    }
-}
-
 /// Beside the spread, the support compliance changes the covariance's shape
 /// too little for 50 cycles to separate the two (their estimates correlate
 /// nearly -1): its interval must reach an end of [0, 4 c_H] and be flagged,
@@ -80,8 +68,13 @@ fn support_compliance_beside_the_spread_is_flagged_not_determined() {
     let truth = with_values(&c, &[Param::Spread], &[0.08]);
     let mut rng = ChaCha8Rng::seed_from_u64(152);
     let m = Measurement::parse(&csv(&synthetic(&truth, 50, &mut rng)), "syn.csv").unwrap();
-    let alone = calibrate(&c, &m, &options(&["spread"])).unwrap();
-    let joint = calibrate(&c, &m, &options(&["spread", "support_compliance"])).unwrap();
+    let alone = calibrate(&c, &m, &calibrate_options(&["spread"])).unwrap();
+    let joint = calibrate(
+        &c,
+        &m,
+        &calibrate_options(&["spread", "support_compliance"]),
+    )
+    .unwrap();
     let sc = &joint.parameters["support_compliance"];
     let [r0, r1] = sc.range.unwrap();
     eprintln!(

@@ -4,7 +4,8 @@
 //! cycle, plus Gaussian sensor noise (Box-Muller).
 
 use kinrepro::assembly::Coupling;
-use kinrepro::calibrate::model::model_options;
+use kinrepro::calibrate::fit::CalibrateOptions;
+use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED, model_options};
 use kinrepro::solve::Method;
 use kinrepro::study::runner::evaluate_rows;
 use rand::Rng;
@@ -47,4 +48,16 @@ pub fn csv(rows: &[[f64; 6]]) -> String {
 
 pub fn noise_var() -> Vec<f64> {
     NOISE.iter().map(|v| v * v).collect()
+}
+
+/// Calibration options fitting `fit`, with the model's defaults.
+pub fn calibrate_options(fit: &[&str]) -> CalibrateOptions {
+    CalibrateOptions {
+        fit: fit.iter().map(|s| s.to_string()).collect(),
+        noise: [None; 6],
+        point: None,
+        samples: MODEL_SAMPLES,
+        seed: MODEL_SEED,
+        method: Method::default(),
+    }
 }
