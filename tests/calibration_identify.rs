@@ -1,7 +1,7 @@
 //! Calibration of several parameters (issue 15): a parameter the data
 //! cannot determine (support_compliance beside the spread) is flagged at
-//! its range end; the model grid's interpolation against direct studies;
-//! bad `--fit` lists.
+//! its range end; a shape no parameters can produce is a poor fit; the
+//! model grid's interpolation against direct studies; bad `--fit` lists.
 
 mod common;
 
@@ -105,6 +105,49 @@ fn support_compliance_beside_the_spread_is_flagged_not_determined() {
     // One parameter fewer degree of freedom than the spread alone.
     assert_eq!(alone.goodness_of_fit.df, 20);
     assert_eq!(joint.goodness_of_fit.df, 19);
+}
+
+/// A measured shape no (spread, mu_static) can produce (sigma_z = 3
+/// sigma_x on scene 01, where the model gives about 0.6 at any mu_static in
+/// the range) is flagged as a poor fit by the joint fit too, with 19
+/// degrees of freedom; the unscaled data are not.
+#[test]
+fn joint_misfit_is_flagged() {
+    let c = common::load("01_maxwell_vgroove_steel.toml");
+    let truth = with_values(&c, &[Param::Spread], &[0.08]);
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    let mut rows = synthetic(&truth, 50, &mut rng);
+    let opts = calibrate_options(&["spread", "mu_static"]);
+    let good = calibrate(
+        &c,
+        &Measurement::parse(&csv(&rows), "good.csv").unwrap(),
+        &opts,
+    )
+    .unwrap();
+    let sd = |j: usize, r: &[[f64; 6]]| {
+        let m = r.iter().map(|x| x[j]).sum::<f64>() / r.len() as f64;
+        (r.iter().map(|x| (x[j] - m).powi(2)).sum::<f64>() / (r.len() as f64 - 1.0)).sqrt()
+    };
+    let scale = 3.0 * sd(0, &rows) / sd(2, &rows);
+    for r in &mut rows {
+        r[2] *= scale;
+    }
+    let bad = calibrate(
+        &c,
+        &Measurement::parse(&csv(&rows), "bad.csv").unwrap(),
+        &opts,
+    )
+    .unwrap();
+    let (g, b) = (&good.goodness_of_fit, &bad.goodness_of_fit);
+    eprintln!("p good {:?}, p bad {:?}", g.p_value, b.p_value);
+    assert_eq!((g.df, b.df), (19, 19));
+    assert!(g.ok, "data drawn from the model flagged: {g:?}");
+    assert!(
+        !b.ok && b.p_value.unwrap() < 1e-6,
+        "misfit not flagged: {b:?}"
+    );
+    let table = kinrepro::report::calibration::calibration_table(&bad);
+    assert!(table.contains("POOR FIT"), "{table}");
 }
 
 /// Bad `--fit` lists: one error line naming the fault, exit status 1.
