@@ -141,7 +141,7 @@ fn transfer_to_scenes_01_and_04_contains_direct_studies() {
         method: Method::default(),
     };
     let cal = calibrate(&c02, &m, &opts).unwrap();
-    let sp = cal.spread();
+    let sp = cal.spread().expect("the spread is fitted");
     eprintln!("spread {} [{}, {}]", sp.estimate, sp.low, sp.high);
     assert!(cal.goodness_of_fit.ok);
     for name in [
@@ -152,41 +152,74 @@ fn transfer_to_scenes_01_and_04_contains_direct_studies() {
         let p = predict(&c, &cal, MODEL_SAMPLES, MODEL_SEED, Method::default()).unwrap();
         assert!(p.measured.is_none(), "{name} is not the calibrated design");
         // The direct study: 2000 Monte Carlo samples at the true spread, another seed.
-        let direct = with_spread(&c, TRUE_SPREAD);
-        let run = run_variant(
-            &direct,
-            &model_options(2000, 4242, Method::default()),
-            &|| {},
-        )
-        .unwrap();
-        let pt = &p.variant.points[0];
-        let (lo, hi) = (
-            pt.sigma_ci90_low.unwrap().values(),
-            pt.sigma_ci90_high.unwrap().values(),
-        );
-        for j in 0..6 {
-            let v: Vec<f64> = run.records.iter().map(|r| r.outputs[j]).collect();
-            let mean = v.iter().sum::<f64>() / v.len() as f64;
-            let sd = (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (v.len() as f64 - 1.0))
-                .sqrt()
-                * 1e9;
-            eprintln!(
-                "{name} dof {j}: direct {sd:.4} in [{:.4}, {:.4}]",
-                lo[j], hi[j]
-            );
-            assert!(
-                lo[j] <= sd && sd <= hi[j],
-                "{name} dof {j}: direct sigma {sd} outside [{}, {}]",
-                lo[j],
-                hi[j]
-            );
-        }
+        assert_direct_inside(name, &p, &with_spread(&c, TRUE_SPREAD));
     }
     // The calibrated design itself carries its measured values.
     let p = predict(&c02, &cal, 200, MODEL_SEED, Method::default()).unwrap();
     let (point, dofs) = p.measured.expect("scene 02 is the calibrated design");
     assert_eq!(point, "centre");
     assert_eq!(dofs.len(), 6);
+}
+
+/// The same with spread and mu_static calibrated jointly on data at
+/// (0.08, 0.40): the prediction intervals, which carry the joint
+/// uncertainty, contain sigma of direct 2000-sample studies of scenes 01
+/// and 04 at the true pair (another seed).
+#[test]
+fn joint_transfer_to_scenes_01_and_04_contains_direct_studies() {
+    use kinrepro::calibrate::params::{Param, with_values};
+    let params = [Param::Spread, Param::MuStatic];
+    let truth = [TRUE_SPREAD, 0.40];
+    let c02 = common::load("02_maxwell_pins_steel.toml");
+    let mut rng = ChaCha8Rng::seed_from_u64(33);
+    let rows = synthetic(
+        &with_values(&c02, &[Param::MuStatic], &[0.40]),
+        TRUE_SPREAD,
+        50,
+        &mut rng,
+    );
+    let m = Measurement::parse(&csv(&rows), "syn02.csv").unwrap();
+    let opts = common::synthetic::calibrate_options(&["spread", "mu_static"]);
+    let cal = calibrate(&c02, &m, &opts).unwrap();
+    eprintln!("{:?}", cal.parameters);
+    assert!(cal.goodness_of_fit.ok);
+    for name in [
+        "01_maxwell_vgroove_steel.toml",
+        "04_maxwell_balls_steel.toml",
+    ] {
+        let c = common::load(name);
+        let p = predict(&c, &cal, MODEL_SAMPLES, MODEL_SEED, Method::default()).unwrap();
+        assert_direct_inside(name, &p, &with_values(&c, &params, &truth));
+    }
+}
+
+/// sigma of a direct 2000-sample study of `direct` (point 0, seed 4242)
+/// lies inside the prediction interval of `p` for every DOF.
+fn assert_direct_inside(name: &str, p: &kinrepro::calibrate::Prediction, direct: &Coupling) {
+    let opts = model_options(2000, 4242, Method::default());
+    let run = run_variant(direct, &opts, &|| {}).unwrap();
+    let pt = &p.variant.points[0];
+    let (lo, hi) = (
+        pt.sigma_ci90_low.unwrap().values(),
+        pt.sigma_ci90_high.unwrap().values(),
+    );
+    for j in 0..6 {
+        let v: Vec<f64> = run.records.iter().map(|r| r.outputs[j]).collect();
+        let mean = v.iter().sum::<f64>() / v.len() as f64;
+        let sd = (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (v.len() as f64 - 1.0))
+            .sqrt()
+            * 1e9;
+        eprintln!(
+            "{name} dof {j}: direct {sd:.4} in [{:.4}, {:.4}]",
+            lo[j], hi[j]
+        );
+        assert!(
+            lo[j] <= sd && sd <= hi[j],
+            "{name} dof {j}: direct sigma {sd} outside [{}, {}]",
+            lo[j],
+            hi[j]
+        );
+    }
 }
 
 #[test]

@@ -30,7 +30,13 @@ fn bad_measurement_files_name_file_line_and_column() {
     );
     let e = err("x_nm,y_nm\n1,2\n3,4\n");
     assert!(
-        e.starts_with("m.csv: line 3:") && e.contains("need at least 3"),
+        e.starts_with("m.csv: line 3, column 1 (x_nm):") && e.contains("need at least 3"),
+        "{e}"
+    );
+    // With a `point` column first, the first DOF column is named.
+    let e = err("point,x_nm\na,1\na,2\n");
+    assert!(
+        e.starts_with("m.csv: line 3, column 2 (x_nm):") && e.contains("2 cycle(s)"),
         "{e}"
     );
     let e = err("x_nm,y_nm\n1,2\n3,abc\n5,6\n");
@@ -137,15 +143,6 @@ fn cli_calibrate_and_predict() {
         &s02,
         "--measured",
         measured,
-        "--fit",
-        "spread,mu_static",
-    ]);
-    assert!(!ok && e.contains("not supported yet"), "{e}");
-    let (ok, _, e) = common::kinrepro(&[
-        "calibrate",
-        &s02,
-        "--measured",
-        measured,
         "--point",
         "nowhere",
     ]);
@@ -180,7 +177,7 @@ fn cli_calibrate_and_predict() {
         j,
         serde_json::from_str::<serde_json::Value>(&std::fs::read_to_string(&cal).unwrap()).unwrap()
     );
-    assert_eq!(j["schema_version"], 1);
+    assert_eq!(j["schema_version"], 2);
     assert_eq!(j["kinrepro_version"], env!("CARGO_PKG_VERSION"));
     let sp = &j["parameters"]["spread"];
     let (est, lo, hi) = (
@@ -236,4 +233,76 @@ fn cli_calibrate_and_predict() {
     std::fs::write(path("study.json"), out).unwrap();
     let (ok, _, e) = common::kinrepro(&["predict", &s01, "--calibration", &path("study.json")]);
     assert!(!ok && e.contains("not a kinrepro calibration file"), "{e}");
+    two_parameters(&s02, &s01, measured, &path);
+}
+
+/// `--fit spread,mu_static` through the CLI: both parameters in
+/// `parameters` with their intervals, a 2 x 2 correlation, region points,
+/// and `predict` with the calibration.
+fn two_parameters(s02: &str, s01: &str, measured: &str, path: &dyn Fn(&str) -> String) {
+    let cal = path("cal2.json");
+    let (ok, out, e) = common::kinrepro(&[
+        "calibrate",
+        s02,
+        "--measured",
+        measured,
+        "--fit",
+        "spread,mu_static",
+        "--model-samples",
+        "300",
+        "--format",
+        "json",
+        "--out",
+        &cal,
+    ]);
+    assert!(ok, "{e}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    for name in ["spread", "mu_static"] {
+        let p = &j["parameters"][name];
+        let (lo, est, hi) = (
+            p["low"].as_f64().unwrap(),
+            p["estimate"].as_f64().unwrap(),
+            p["high"].as_f64().unwrap(),
+        );
+        assert!(lo <= est && est <= hi && p["level"] == 0.9, "{name}: {p}");
+        assert!(p["range"].as_array().unwrap().len() == 2, "{p}");
+    }
+    assert!(j["fixed"]["mu_static"].is_null() && j["fixed"]["dynamic_ratio"] == 0.8);
+    let r = &j["correlation"]["matrix"];
+    let (r01, r10) = (r[0][1].as_f64().unwrap(), r[1][0].as_f64().unwrap());
+    assert!((r01 - r10).abs() < 1e-12 && r01.abs() <= 1.0, "{r}");
+    assert!((r[0][0].as_f64().unwrap() - 1.0).abs() < 1e-12, "{r}");
+    assert!(j["region"].as_array().unwrap().len() >= 4);
+    // 21 variances and covariances of 6 DOFs, 2 fitted parameters.
+    assert_eq!(j["goodness_of_fit"]["df"], 19);
+    let (ok, out, e) = common::kinrepro(&[
+        "predict",
+        s01,
+        "--calibration",
+        &cal,
+        "--samples",
+        "300",
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{e}");
+    let p: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(
+        p["calibration"]["parameters"]["mu_static"]["estimate"],
+        j["parameters"]["mu_static"]["estimate"]
+    );
+    let pt = &p["variants"][0]["points"][0];
+    let (l, s, h) = (
+        pt["sigma_ci90_low"]["x_nm"].as_f64().unwrap(),
+        pt["sigma"]["x_nm"].as_f64().unwrap(),
+        pt["sigma_ci90_high"]["x_nm"].as_f64().unwrap(),
+    );
+    assert!(0.0 < l && l < s && s < h, "{l} {s} {h}");
+    // A region point naming a parameter that was not fitted is refused.
+    let mut bad = j.clone();
+    bad["region"][0]["dynamic_ratio"] = serde_json::json!(0.5);
+    std::fs::write(path("bad_region.json"), bad.to_string()).unwrap();
+    let (ok, _, e) = common::kinrepro(&["predict", s01, "--calibration", &path("bad_region.json")]);
+    assert!(!ok && e.trim().lines().count() == 1, "{e}");
+    assert!(e.contains("`region[0]`: `dynamic_ratio`"), "{e}");
 }

@@ -32,17 +32,20 @@ pub enum CalibrateError {
     /// A bad `--noise` entry (or `# noise:` metadata).
     #[error("{origin}: {reason}")]
     Noise { origin: String, reason: UnitError },
-    /// A parameter `--fit` names that this version cannot fit.
-    #[error(
-        "--fit {0}: not supported yet: this version fits only `spread` (the friction spread); \
-         mu_static, dynamic_ratio and support_compliance are held at the scene's values"
-    )]
-    NotSupported(String),
     /// A parameter name `--fit` does not know.
     #[error(
         "--fit {0}: unknown parameter (known: spread, mu_static, dynamic_ratio, support_compliance)"
     )]
     UnknownParameter(String),
+    /// A parameter named twice in `--fit`.
+    #[error("--fit {0}: named twice")]
+    DuplicateParameter(String),
+    /// An empty `--fit` list or an empty name in it.
+    #[error(
+        "--fit: empty parameter name (give a comma-separated list of spread, mu_static, \
+         dynamic_ratio, support_compliance)"
+    )]
+    EmptyFit,
     /// The measured evaluation point is not in the scene.
     #[error("{file}: evaluation point `{point}` is not in the scene (it has: {have})")]
     Point {

@@ -368,12 +368,19 @@ pub struct GoodnessOfFit {
 /// (n_j - 1)(r_j - ln r_j - 1), r_j = sigma_j^2 / F_jj, each with the p = 1
 /// factor 1 - 1/(3 (n_j - 1)), against chi^2 of p - 1.
 pub fn goodness_of_fit(obs: &Observed, fitted: &DMatrix<f64>) -> GoodnessOfFit {
+    goodness_of_fit_q(obs, fitted, 1)
+}
+
+/// [`goodness_of_fit`] of a model with `q` fitted parameters: the degrees
+/// of freedom p(p + 1)/2 - q (cycles) or p - q (summary); none left: not
+/// testable.
+pub fn goodness_of_fit_q(obs: &Observed, fitted: &DMatrix<f64>, q: usize) -> GoodnessOfFit {
     let p = obs.dims();
     let (stat, df, test) = match obs {
         Observed::Covariance { s, n } => {
             let m = *n as f64 - 1.0;
             let pf = p as f64;
-            let df = p * (p + 1) / 2 - 1;
+            let df = (p * (p + 1) / 2).saturating_sub(q);
             let name = "likelihood ratio vs the unrestricted covariance (Wishart), Bartlett-corrected, chi^2";
             let stat = match (ln_det_inverse(fitted), s.clone().cholesky()) {
                 (Some((ld_f, inv)), Some(chs)) if *n > p => {
@@ -394,7 +401,7 @@ pub fn goodness_of_fit(obs: &Observed, fitted: &DMatrix<f64>) -> GoodnessOfFit {
                 lr += (1.0 - 1.0 / (3.0 * m)) * m * (r - r.ln() - 1.0);
             }
             let name = "likelihood ratio vs free sigma per DOF (chi-square, DOFs independent), Bartlett-corrected";
-            (lr.is_finite().then_some(lr), p - 1, name)
+            (lr.is_finite().then_some(lr), p.saturating_sub(q), name)
         }
     };
     let p_value = match stat {
@@ -402,7 +409,9 @@ pub fn goodness_of_fit(obs: &Observed, fitted: &DMatrix<f64>) -> GoodnessOfFit {
         _ => None,
     };
     let test = match (stat, df) {
-        (_, 0) => "not testable: one measured DOF leaves no shape to test".to_string(),
+        (_, 0) => "not testable: the fitted parameters leave no shape to test \
+                   (as many parameters as measured variances)"
+            .to_string(),
         (None, _) => format!("not testable: fewer cycles than measured DOFs + 1 ({test})"),
         _ => test.to_string(),
     };

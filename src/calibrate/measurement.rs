@@ -139,11 +139,13 @@ impl Measurement {
         }
         let last = rows.last().map_or(header_line, |r| r.0);
         if data.len() < MIN_CYCLES {
+            // Every DOF column is short by the same count: name the first.
+            let c = columns[0].0;
             let r = format!(
                 "{} cycle(s), need at least {MIN_CYCLES} re-seating cycles",
                 data.len()
             );
-            return Err(self.whole(last, r));
+            return Err(self.err(last, c, names[c], r));
         }
         self.data = MeasuredData::Cycles(data);
         Ok(self)

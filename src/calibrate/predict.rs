@@ -1,30 +1,41 @@
-//! `kinrepro predict`: sigma of other designs at the calibrated friction
-//! spread, with a prediction interval.
+//! `kinrepro predict`: sigma of other designs at the calibrated
+//! parameters, with a prediction interval.
 //!
-//! Per scene three Monte Carlo studies with the same design rows (common
-//! random numbers): at the estimate s_hat and at the ends s_lo, s_hi of the
-//! spread's interval. The interval of sigma carries
-//! * the parameter uncertainty: ln sigma(s_hat) - ln sigma(s_lo) below and
-//!   ln sigma(s_hi) - ln sigma(s_hat) above (the studies at the ends, so no
-//!   linearity is assumed), and
-//! * the sampling error of the N-sample study at s_hat: Bonett's 90 %
+//! Per scene Monte Carlo studies with the same design rows (common random
+//! numbers): at the estimate theta_hat and at each point of the
+//! calibration's `region` (spread alone: the ends s_lo, s_hi of its
+//! interval; several parameters: the profile-interval ends with the other
+//! parameters at their profile maximum, and the ends of the principal axes
+//! of the joint region, see `joint_fit`). The interval of sigma carries
+//! * the parameter uncertainty: the range of sigma over those points,
+//!   ln sigma(theta_hat) - ln min below and ln max - ln sigma(theta_hat)
+//!   above (studies at the points, so no linearity is assumed; the range
+//!   over the joint region's boundary points approximates the profile
+//!   likelihood interval of sigma itself, {sigma(theta) : k 2 (l_max -
+//!   l(theta)) <= chi^2_1(0.90)}, from inside), and
+//! * the sampling error of the N-sample study at theta_hat: Bonett's 90 %
 //!   interval (Bonett 2006) on ln sigma,
 //!
 //! combined in quadrature on ln sigma (both taken as independent, roughly
 //! normal on the log scale): low = sigma exp(-sqrt(h_p,lo^2 + h_s,lo^2)),
-//! high = sigma exp(+sqrt(h_p,hi^2 + h_s,hi^2)). The prediction is the
-//! coupling's own scatter (no sensor noise).
+//! high = sigma exp(+sqrt(h_p,hi^2 + h_s,hi^2)). A region point at zero
+//! spread gives low = 0. The prediction is the coupling's own scatter (no
+//! sensor noise). The calibrated mu_static, dynamic_ratio and absolute
+//! support_compliance [m/N] are applied to the other design as they are.
+
+use std::collections::BTreeMap;
 
 use super::error::CalibrateError;
-use super::fit::{Calibration, DofFit, design_hash};
-use super::model::{model_options, with_spread};
+use super::file::{Calibration, DofFit, design_hash};
+use super::model::model_options;
+use super::params::{PARAMETERS, Param, admissible};
 use crate::assembly::Coupling;
 use crate::report::study::{Dofs, PointStats, VariantReport};
 use crate::solve::Method;
 use crate::study::runner::run_variant;
 
 /// The interval method named in `sigma_interval_method`.
-pub const PREDICTION_METHOD: &str = "calibrated prediction: profile-likelihood 90 % interval of the spread (studies at its ends, common random numbers) and Bonett's 90 % interval of the Monte Carlo study at the estimate, combined in quadrature on ln sigma";
+pub const PREDICTION_METHOD: &str = "calibrated prediction: range of sigma over the calibration's 90 % profile-likelihood parameter region (studies at its points, common random numbers) and Bonett's 90 % interval of the Monte Carlo study at the estimate, combined in quadrature on ln sigma";
 
 /// One scene's prediction.
 #[derive(Debug, Clone, PartialEq)]
@@ -36,7 +47,24 @@ pub struct Prediction {
     pub measured: Option<(String, Vec<DofFit>)>,
 }
 
-/// Predict sigma of every evaluation point of `coupling` at the spread of `cal`.
+/// The scene with the calibrated `values` set (names of [`PARAMETERS`]).
+pub fn with_parameters(coupling: &Coupling, values: &BTreeMap<String, f64>) -> Coupling {
+    let mut c = coupling.clone();
+    for (i, name) in PARAMETERS.iter().enumerate() {
+        if let Some(v) = values.get(*name) {
+            let p = [
+                Param::Spread,
+                Param::MuStatic,
+                Param::DynamicRatio,
+                Param::SupportCompliance,
+            ][i];
+            p.set(&mut c, *v);
+        }
+    }
+    c
+}
+
+/// Predict sigma of every evaluation point of `coupling` at the parameters of `cal`.
 pub fn predict(
     coupling: &Coupling,
     cal: &Calibration,
@@ -44,41 +72,45 @@ pub fn predict(
     seed: u64,
     method: Method,
 ) -> Result<Prediction, CalibrateError> {
-    let sp = cal.spread();
     let file = coupling.scene.file.clone();
-    let mu0 = coupling.scene.friction.mu_static;
-    if sp.high > mu0 {
-        return Err(CalibrateError::Model {
-            file,
-            reason: format!(
-                "the calibrated spread's interval reaches {:.4}, above this scene's mu_static {mu0} (mu_s would go negative)",
-                sp.high
-            ),
-        });
+    let estimate = with_parameters(coupling, &cal.estimates());
+    let region: Vec<Coupling> = cal
+        .region_points()
+        .iter()
+        .map(|v| with_parameters(&estimate, v))
+        .collect();
+    for c in std::iter::once(&estimate).chain(&region) {
+        let f = &c.scene.friction;
+        if !admissible(f.spread, f.mu_static) {
+            return Err(CalibrateError::Model {
+                file,
+                reason: format!(
+                    "the calibrated region reaches spread {:.4} with mu_static {}: mu_s would leave [0, {}]",
+                    f.spread,
+                    f.mu_static,
+                    crate::scene::resolve::MU_MAX
+                ),
+            });
+        }
     }
     let opts = model_options(samples, seed, method);
-    let study = |s: f64| -> Result<Vec<PointStats>, CalibrateError> {
-        let c = with_spread(coupling, s);
-        let run = run_variant(&c, &opts, &|| {})?;
-        let v = VariantReport::new(&c, run, &opts).map_err(|source| CalibrateError::Study {
+    let report = |c: &Coupling| -> Result<VariantReport, CalibrateError> {
+        let run = run_variant(c, &opts, &|| {})?;
+        VariantReport::new(c, run, &opts).map_err(|source| CalibrateError::Study {
             file: file.clone(),
             source,
-        })?;
-        Ok(v.points)
+        })
     };
-    let c = with_spread(coupling, sp.estimate);
-    let run = run_variant(&c, &opts, &|| {})?;
-    let mut variant =
-        VariantReport::new(&c, run, &opts).map_err(|source| CalibrateError::Study {
-            file: file.clone(),
-            source,
-        })?;
-    let lo = if sp.low > 0.0 {
-        Some(study(sp.low)?)
-    } else {
-        None
-    };
-    let hi = study(sp.high)?;
+    let mut variant = report(&estimate)?;
+    // A point at zero spread has no scatter (sigma 0): no study needed.
+    let others: Vec<Option<Vec<PointStats>>> = region
+        .iter()
+        .map(|c| {
+            (c.scene.friction.spread > 0.0)
+                .then(|| report(c).map(|v| v.points))
+                .transpose()
+        })
+        .collect::<Result<_, _>>()?;
     for (k, p) in variant.points.iter_mut().enumerate() {
         let mid = p.sigma.values();
         let (Some(bl), Some(bh)) = (p.sigma_ci90_low, p.sigma_ci90_high) else {
@@ -87,14 +119,17 @@ pub fn predict(
                 reason: "the Monte Carlo study at the estimate gave no interval of sigma".into(),
             });
         };
-        let l = lo.as_ref().map(|v| v[k].sigma.values());
-        let (low, high) = combine(mid, bl.values(), bh.values(), l, hi[k].sigma.values());
+        let at: Vec<[f64; 6]> = others
+            .iter()
+            .map(|o| o.as_ref().map_or([0.0; 6], |v| v[k].sigma.values()))
+            .collect();
+        let (low, high) = combine(mid, bl.values(), bh.values(), &at);
         p.sigma_ci90_low = Some(nm_dofs(low));
         p.sigma_ci90_high = Some(nm_dofs(high));
         p.sigma_interval_method = PREDICTION_METHOD.to_string();
     }
     // The per-sample records of the study at the estimate are left out (as
-    // for a streamed study): `kinrepro study` at the calibrated spread gives them.
+    // for a streamed study): `kinrepro study` at the calibrated values gives them.
     variant.records.clear();
     let measured =
         (design_hash(coupling) == cal.scene_content).then(|| (cal.point.clone(), cal.dofs.clone()));
@@ -102,29 +137,26 @@ pub fn predict(
 }
 
 /// The prediction interval per DOF: sigma `mid` at the estimate with its
-/// Bonett interval [bl, bh], sigma at the spread's low end `lo` (None: the
-/// interval reaches zero spread) and high end `hi`; the parameter and
-/// sampling half-widths combined in quadrature on ln sigma.
-fn combine(
-    mid: [f64; 6],
-    bl: [f64; 6],
-    bh: [f64; 6],
-    lo: Option<[f64; 6]>,
-    hi: [f64; 6],
-) -> ([f64; 6], [f64; 6]) {
+/// Bonett interval [bl, bh], and sigma at the region points `at` (0: a
+/// point at zero spread); the parameter half-widths ln(mid / min) and
+/// ln(max / mid) and the sampling half-widths combined in quadrature on
+/// ln sigma.
+fn combine(mid: [f64; 6], bl: [f64; 6], bh: [f64; 6], at: &[[f64; 6]]) -> ([f64; 6], [f64; 6]) {
     let mut low = [0.0; 6];
     let mut high = [0.0; 6];
     for j in 0..6 {
         if mid[j] <= 0.0 {
             continue;
         }
+        let min = at.iter().map(|a| a[j]).fold(mid[j], f64::min);
+        let max = at.iter().map(|a| a[j]).fold(mid[j], f64::max);
         let hs_lo = (mid[j] / bl[j]).ln();
         let hs_hi = (bh[j] / mid[j]).ln();
-        let hp_hi = (hi[j] / mid[j]).ln().abs();
-        high[j] = mid[j] * hp_hi.hypot(hs_hi).exp();
-        low[j] = match lo {
-            Some(l) if l[j] > 0.0 => mid[j] * (-(mid[j] / l[j]).ln().abs().hypot(hs_lo)).exp(),
-            _ => 0.0,
+        high[j] = mid[j] * (max / mid[j]).ln().hypot(hs_hi).exp();
+        low[j] = if min > 0.0 {
+            mid[j] * (-(mid[j] / min).ln().hypot(hs_lo)).exp()
+        } else {
+            0.0
         };
     }
     (low, high)

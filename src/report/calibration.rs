@@ -4,7 +4,7 @@
 
 use serde_json::{Map, Value, json};
 
-use crate::calibrate::fit::{Calibration, DofFit};
+use crate::calibrate::fit::{Calibration, Correlation, DofFit};
 use crate::calibrate::predict::Prediction;
 use crate::calibrate::units::{DOFS, dof_index, human_unit};
 use crate::report::provenance::VERSION;
@@ -25,6 +25,101 @@ fn human(dof: &str, si: f64) -> String {
     format!("{:.3} {u}", si * 1e9)
 }
 
+/// `model.grid.check` above which the table warns (a sigma difference of 2 %
+/// is a tenth of a 50-cycle measurement's own sigma error).
+pub const GRID_CHECK_WARN: f64 = 0.02;
+
+/// A parameter value with its unit (support compliance in m/N).
+fn value(name: &str, v: f64) -> String {
+    if name == "support_compliance" {
+        format!("{v:.4e} m/N")
+    } else {
+        format!("{v:.5}")
+    }
+}
+
+/// One line per fitted parameter: estimate, interval, flags.
+fn parameter_lines(c: &Calibration) -> String {
+    let mut s = String::new();
+    for (name, p) in &c.parameters {
+        s += &format!(
+            "{name}: {}   {:.0} % interval [{}, {}]{}{}   ({})\n",
+            value(name, p.estimate),
+            p.level * 100.0,
+            value(name, p.low),
+            value(name, p.high),
+            if !p.low_at_bound {
+                ""
+            } else if name == "spread" {
+                "  (low end: no lower bound)"
+            } else {
+                "  (low end: at the range end)"
+            },
+            if p.high_at_bound {
+                if name == "spread" && c.parameters.len() == 1 {
+                    "  (high end: at mu_static)".to_string()
+                } else {
+                    "  (high end: at the range end)".to_string()
+                }
+            } else {
+                String::new()
+            },
+            p.method
+        );
+        let alone = name == "spread" && c.parameters.len() == 1;
+        if !alone && (p.low_at_bound || p.high_at_bound) {
+            let r = p.range.map_or(String::new(), |[a, b]| {
+                format!(" [{}, {}]", value(name, a), value(name, b))
+            });
+            s += &format!(
+                "  NOT DETERMINED: the data do not determine {name}: its interval reaches the end of the searched range{r}\n"
+            );
+        }
+    }
+    s
+}
+
+/// The correlation matrix of the estimates (more than one parameter).
+fn correlation_lines(r: &Correlation) -> String {
+    if r.parameters.len() < 2 {
+        return String::new();
+    }
+    let mut s =
+        String::from("correlation of the estimates (sandwich covariance at the estimate):\n");
+    s += &format!("  {:<20}", "");
+    for n in &r.parameters {
+        s += &format!(" {n:>19}");
+    }
+    s.push('\n');
+    for (n, row) in r.parameters.iter().zip(&r.matrix) {
+        s += &format!("  {n:<20}");
+        for v in row {
+            s += &format!(" {v:>19.3}");
+        }
+        s.push('\n');
+    }
+    s
+}
+
+/// The fitted parameters with their intervals on one line, e.g.
+/// `spread 0.08000 [0.07000, 0.09000] (90 %)`.
+pub fn parameters_summary(c: &Calibration) -> String {
+    let level = c.parameters.values().next().map_or(0.0, |p| p.level);
+    let items: Vec<String> = c
+        .parameters
+        .iter()
+        .map(|(n, p)| {
+            format!(
+                "{n} {} [{}, {}]",
+                value(n, p.estimate),
+                value(n, p.low),
+                value(n, p.high)
+            )
+        })
+        .collect();
+    format!("{} ({:.0} %)", items.join(", "), level * 100.0)
+}
+
 /// The calibration as a human table.
 pub fn calibration_table(c: &Calibration) -> String {
     let mut s = format!("{}\n", calibration_produced_by(c));
@@ -32,34 +127,37 @@ pub fn calibration_table(c: &Calibration) -> String {
         "scene {} ({}), point `{}`, measured {} ({})\n\n",
         c.scene, c.scene_name, c.point, c.measured_file, c.data
     );
-    for (name, p) in &c.parameters {
-        s += &format!(
-            "{name}: {:.5}   {:.0} % interval [{:.5}, {:.5}]{}{}   ({})\n",
-            p.estimate,
-            p.level * 100.0,
-            p.low,
-            p.high,
-            if p.low_at_bound {
-                "  (low end: no lower bound)"
-            } else {
-                ""
-            },
-            if p.high_at_bound {
-                "  (high end: at mu_static)"
-            } else {
-                ""
-            },
-            p.method
-        );
-    }
+    s += &parameter_lines(c);
     for (name, v) in &c.fixed {
-        s += &format!("{name}: {v} (held at the scene's value)\n");
+        s += &format!("{name}: {} (held at the scene's value)\n", value(name, *v));
     }
-    s += &format!(
-        "model: reference spread {}, sigma/spread changed by {:.2} % from it to the estimate\n\n",
-        c.model.reference_spread,
-        100.0 * c.model.linearity
-    );
+    if let Some(r) = &c.correlation {
+        s += &correlation_lines(r);
+    }
+    match &c.model.grid {
+        None => {
+            s += &format!(
+                "model: reference spread {}, sigma/spread changed by {:.2} % from it to the estimate\n\n",
+                c.model.reference_spread,
+                100.0 * c.model.linearity
+            )
+        }
+        Some(g) => {
+            s += &format!(
+                "model: {} node studies over {} (spread {:.5}); grid and sigma ∝ spread against a direct study at the estimate: largest sigma difference {:.2} %\n\n",
+                g.nodes.iter().map(Vec::len).product::<usize>(),
+                g.parameters.join(" x "),
+                g.spread,
+                100.0 * g.check
+            );
+            if g.check > GRID_CHECK_WARN {
+                s += &format!(
+                    "  WARNING: the grid's model covariance differs from a direct study at the estimate by more than {:.0} % (sigma ∝ spread fails near spread = mu_static, or the grid is too coarse): read the intervals with care\n\n",
+                    100.0 * GRID_CHECK_WARN
+                );
+            }
+        }
+    }
     s += "dof      cycles  measured sigma   noise sigma      fitted sigma     model sigma (no noise)\n";
     for d in &c.dofs {
         s += &format!(
@@ -135,6 +233,8 @@ impl PredictionReport {
             "scene": c.scene,
             "point": c.point,
             "spread": c.spread(),
+            "parameters": c.parameters,
+            "region": c.region_points(),
             "goodness_of_fit_ok": c.goodness_of_fit.ok,
             "kinrepro_version": c.kinrepro_version,
         });
@@ -153,15 +253,11 @@ impl PredictionReport {
     /// DOF (nm, nrad), the measured sigma beside the calibrated design.
     pub fn table(&self) -> String {
         let study = self.study();
-        let sp = self.calibration.spread();
         let mut s = format!(
-            "{}\ncalibration {}: spread {:.5} [{:.5}, {:.5}] ({:.0} %) from scene {}{}\n",
+            "{}\ncalibration {}: {} from scene {}{}\n",
             study.produced_by(),
             self.calibration_file,
-            sp.estimate,
-            sp.low,
-            sp.high,
-            sp.level * 100.0,
+            parameters_summary(&self.calibration),
             self.calibration.scene,
             if self.calibration.goodness_of_fit.ok {
                 ""

@@ -81,13 +81,10 @@ pub fn plot_predictions(
     {
         let root = SVGBackend::with_string(&mut svg, (1100, 520)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| err(&e))?;
-        let sp = report.calibration.spread();
         let title = format!(
-            "{}; spread {:.4} [{:.4}, {:.4}] calibrated on {}",
+            "{}; {} calibrated on {}",
             report.study().produced_by(),
-            sp.estimate,
-            sp.low,
-            sp.high,
+            super::calibration::parameters_summary(&report.calibration),
             report.calibration.scene
         );
         let root = root

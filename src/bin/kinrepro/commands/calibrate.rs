@@ -1,5 +1,6 @@
-//! `kinrepro calibrate` and `kinrepro predict`: fit the friction spread to
-//! a measured scatter, and predict other designs with it (docs/measurements.md).
+//! `kinrepro calibrate` and `kinrepro predict`: fit the friction spread (and
+//! optionally mu_static, dynamic_ratio, support_compliance) to a measured
+//! scatter, and predict other designs with it (docs/measurements.md).
 
 use std::path::PathBuf;
 
@@ -33,8 +34,9 @@ pub struct CalibrateArgs {
     /// x_nm, phi_x_nrad), or a summary (dof,unit,sigma,cycles).
     #[arg(long)]
     pub measured: PathBuf,
-    /// Parameters to fit, comma-separated. Only `spread` is supported in
-    /// this version (mu_static, dynamic_ratio, support_compliance: refused).
+    /// Parameters to fit, comma-separated: any of spread, mu_static,
+    /// dynamic_ratio, support_compliance (the others held at the scene's
+    /// values; docs/calibration.md gives the searched ranges).
     #[arg(long, value_delimiter = ',', default_value = "spread")]
     pub fit: Vec<String>,
     /// Sensor noise sigma per DOF, e.g. x=1nm,y=1nm,phi_x=20nrad (a number
@@ -72,8 +74,8 @@ pub struct PredictArgs {
     /// Calibration file written by `kinrepro calibrate --out`.
     #[arg(long)]
     pub calibration: PathBuf,
-    /// Samples of each Monte Carlo study (three per scene: at the estimate
-    /// and at both ends of the spread's interval).
+    /// Samples of each Monte Carlo study (per scene: one at the estimate
+    /// and one per point of the calibration's parameter region).
     #[arg(long, default_value_t = MODEL_SAMPLES)]
     pub samples: usize,
     /// Seed of the studies.

@@ -1,0 +1,307 @@
+//! The information matrices of the joint likelihood ([`super::joint`]) at
+//! the estimate: the sandwich factor of each parameter's profile interval,
+//! the model study's sampling error of each estimate, and the correlation
+//! of the estimates.
+
+use nalgebra::{DMatrix, DVector};
+
+use super::joint::JointModel;
+use super::likelihood::Observed;
+use super::params::Param;
+
+/// Relative step of the spread's finite differences (as its search floor).
+const S_MIN_REL: f64 = 1e-4;
+
+/// The information matrices at theta: H (what the Wishart / chi-square law
+/// assumes), J (the true variance of the score, with the pose's fourth
+/// moments from the samples `x` of the measured DOFs at theta plus normal
+/// sensor noise N), and M (the variance of the score due to the model
+/// study's own N_x samples).
+///
+/// The score of parameter a is tr(W_a (S - Sigma)) with W_a =
+/// (n - 1)/2 Sigma^-1 Sigma_a Sigma^-1 (cycles) or diag((n_j - 1)/2
+/// Sigma_a,jj / Sigma_jj^2) (summary), Sigma_a = dSigma/dtheta_a. Then
+/// H_ab = tr(W_a Sigma_b); cycles: J_ab = Cov(y' W_a y, y' W_b y) / (n - 1)
+/// with y = x + e, Cov(y'Ay, y'By) = Cov(x'Ax, x'Bx) + 4 tr(A N B Sigma_x) +
+/// 2 tr(A N B N); summary: J_ab = sum_uv W_a,u W_b,v Cov(y_u^2, y_v^2) /
+/// sqrt((n_u - 1)(n_v - 1)); M_ab = Cov(x'W_a x, x'W_b x) / N_x (cycles),
+/// sum_uv W_a,u W_b,v Cov(x_u^2, x_v^2) / N_x (summary). Normal scatter
+/// gives J = H.
+pub struct Information {
+    pub h: DMatrix<f64>,
+    pub j: DMatrix<f64>,
+    pub m: DMatrix<f64>,
+}
+
+/// dSigma/dtheta_a by central differences (one-sided at a range end).
+pub fn d_sigma(m: &JointModel, theta: &[f64]) -> Option<Vec<DMatrix<f64>>> {
+    (0..theta.len())
+        .map(|a| {
+            let (lo, hi) = m.ranges[a];
+            let h = match m.params[a] {
+                Param::Spread => 1e-4 * theta[a].max(hi * S_MIN_REL),
+                _ => 1e-4 * (hi - lo),
+            };
+            let at = |d: f64| {
+                let mut t = theta.to_vec();
+                t[a] += d;
+                let inside = t[a] >= lo && t[a] <= hi;
+                inside.then(|| m.sigma(&t)).flatten()
+            };
+            match (at(h), at(-h)) {
+                (Some(p), Some(n)) => Some((p - n) / (2.0 * h)),
+                (Some(p), None) => Some((p - m.sigma(theta)?) / h),
+                (None, Some(n)) => Some((m.sigma(theta)? - n) / h),
+                (None, None) => None,
+            }
+        })
+        .collect()
+}
+
+/// The information matrices at theta (see [`Information`]); `x` the pose
+/// samples (measured DOFs) of a model study at theta.
+pub fn information(m: &JointModel, theta: &[f64], x: &[Vec<f64>]) -> Option<Information> {
+    let sigma = m.sigma(theta)?;
+    let ds = d_sigma(m, theta)?;
+    let p = sigma.nrows();
+    let inv = sigma.clone().cholesky()?.inverse();
+    let w: Vec<DMatrix<f64>> = match m.obs {
+        Observed::Covariance { n, .. } => ds
+            .iter()
+            .map(|d| &inv * d * &inv * (0.5 * (*n as f64 - 1.0)))
+            .collect(),
+        Observed::Sigmas { cycles, .. } => ds
+            .iter()
+            .map(|d| {
+                DMatrix::from_fn(p, p, |i, j| {
+                    if i == j {
+                        0.5 * (cycles[i] as f64 - 1.0) * d[(i, i)] / sigma[(i, i)].powi(2)
+                    } else {
+                        0.0
+                    }
+                })
+            })
+            .collect(),
+    };
+    let q = w.len();
+    let h = DMatrix::from_fn(q, q, |a, b| (&w[a] * &ds[b]).trace());
+    let xs = centred(x);
+    let nx = xs.len() as f64;
+    let nv = DMatrix::from_diagonal(&DVector::from_column_slice(&m.noise_var));
+    let (j, mm) = match m.obs {
+        Observed::Covariance { n, .. } => {
+            let forms: Vec<Vec<f64>> = w.iter().map(|wa| quadratic_forms(&xs, wa)).collect();
+            let sx = sample_cov(&xs);
+            let c = DMatrix::from_fn(q, q, |a, b| covariance(&forms[a], &forms[b]));
+            let noise = DMatrix::from_fn(q, q, |a, b| {
+                4.0 * (&w[a] * &nv * &w[b] * &sx).trace()
+                    + 2.0 * (&w[a] * &nv * &w[b] * &nv).trace()
+            });
+            ((&c + noise) / (*n as f64 - 1.0), c / nx)
+        }
+        Observed::Sigmas { cycles, .. } => {
+            let sq: Vec<Vec<f64>> = (0..p)
+                .map(|u| xs.iter().map(|r| r[u] * r[u]).collect())
+                .collect();
+            let c = DMatrix::from_fn(p, p, |u, v| covariance(&sq[u], &sq[v]));
+            let mean = |u: usize| sq[u].iter().sum::<f64>() / nx;
+            let cy = DMatrix::from_fn(p, p, |u, v| {
+                let extra = if u == v {
+                    4.0 * mean(u) * m.noise_var[u] + 2.0 * m.noise_var[u].powi(2)
+                } else {
+                    0.0
+                };
+                (c[(u, v)] + extra) / ((cycles[u] as f64 - 1.0) * (cycles[v] as f64 - 1.0)).sqrt()
+            });
+            let pair = |mat: &DMatrix<f64>, a: usize, b: usize| {
+                (0..p)
+                    .flat_map(|u| (0..p).map(move |v| (u, v)))
+                    .map(|(u, v)| w[a][(u, u)] * w[b][(v, v)] * mat[(u, v)])
+                    .sum::<f64>()
+            };
+            (
+                DMatrix::from_fn(q, q, |a, b| pair(&cy, a, b)),
+                DMatrix::from_fn(q, q, |a, b| pair(&c, a, b) / nx),
+            )
+        }
+    };
+    Some(Information { h, j, m: mm })
+}
+
+/// Rows minus their mean.
+fn centred(x: &[Vec<f64>]) -> Vec<Vec<f64>> {
+    let n = x.len() as f64;
+    let p = x.first().map_or(0, Vec::len);
+    let mean: Vec<f64> = (0..p)
+        .map(|j| x.iter().map(|r| r[j]).sum::<f64>() / n)
+        .collect();
+    x.iter()
+        .map(|r| (0..p).map(|j| r[j] - mean[j]).collect())
+        .collect()
+}
+
+fn quadratic_forms(xs: &[Vec<f64>], a: &DMatrix<f64>) -> Vec<f64> {
+    xs.iter()
+        .map(|r| {
+            let v = DVector::from_column_slice(r);
+            (v.transpose() * a * &v)[(0, 0)]
+        })
+        .collect()
+}
+
+fn sample_cov(xs: &[Vec<f64>]) -> DMatrix<f64> {
+    let p = xs.first().map_or(0, Vec::len);
+    let n = xs.len() as f64;
+    DMatrix::from_fn(p, p, |a, b| {
+        xs.iter().map(|r| r[a] * r[b]).sum::<f64>() / (n - 1.0)
+    })
+}
+
+/// Sample covariance (divisor n - 1) of two equally long series.
+fn covariance(a: &[f64], b: &[f64]) -> f64 {
+    let n = a.len() as f64;
+    let (ma, mb) = (a.iter().sum::<f64>() / n, b.iter().sum::<f64>() / n);
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - ma) * (y - mb))
+        .sum::<f64>()
+        / (n - 1.0)
+}
+
+/// What the information gives per parameter: the sandwich factor k_a, the
+/// standard deviation of the estimate due to the model study, and the
+/// correlation of the estimates (from H^-1 J H^-1).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Derived {
+    pub k: Vec<f64>,
+    pub model_sd: Vec<f64>,
+    pub covariance: Option<DMatrix<f64>>,
+}
+
+impl Information {
+    /// k_a = (H^-1)_aa / V_aa with V = H^-1 J H^-1 (1 where H is singular,
+    /// the unadjusted, wider interval); model sd_a = sqrt((H^-1 M H^-1)_aa).
+    pub fn derived(&self) -> Derived {
+        let q = self.h.nrows();
+        let Some(hi) = self.h.clone().try_inverse() else {
+            return Derived {
+                k: vec![1.0; q],
+                model_sd: vec![0.0; q],
+                covariance: None,
+            };
+        };
+        let v = &hi * &self.j * &hi;
+        let vm = &hi * &self.m * &hi;
+        let k = (0..q)
+            .map(|a| {
+                let r = hi[(a, a)] / v[(a, a)];
+                if r.is_finite() && r > 0.0 { r } else { 1.0 }
+            })
+            .collect();
+        let model_sd = (0..q)
+            .map(|a| {
+                let s = vm[(a, a)].max(0.0).sqrt();
+                if s.is_finite() { s } else { 0.0 }
+            })
+            .collect();
+        Derived {
+            k,
+            model_sd,
+            covariance: Some(v),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::chi2::CHI2_1_90;
+    use super::super::grid::ModelGrid;
+    use super::super::joint::{estimate, profile_end};
+    use super::*;
+    use rand::{Rng, SeedableRng};
+
+    /// Two DOFs, G(phi) = diag(1, phi), no noise: Sigma = diag(s^2, s^2 phi).
+    /// With S = diag(a, b) from n cycles the maximum is s^2 = a, phi = b / a,
+    /// and at any s, phi = b / s^2 fits the second DOF exactly, so the
+    /// profile of s is the one-DOF curve (n - 1)(r - ln r - 1), r = a / s^2.
+    fn separable<'a>(obs: &'a Observed, grid: &'a ModelGrid) -> JointModel<'a> {
+        JointModel {
+            obs,
+            grid,
+            params: vec![Param::Spread, Param::DynamicRatio],
+            ranges: vec![(0.0, 0.5), (0.3, 1.0)],
+            spread_fixed: 0.0,
+            mu_fixed: 1.0,
+            noise_var: vec![0.0, 0.0],
+        }
+    }
+
+    fn grid() -> ModelGrid {
+        let nodes: Vec<f64> = (0..4).map(|i| 0.3 + 0.7 * i as f64 / 3.0).collect();
+        let g = nodes
+            .iter()
+            .map(|&phi| DMatrix::from_diagonal(&DVector::from_vec(vec![1.0, phi])))
+            .collect();
+        ModelGrid::from_parts(vec![Param::DynamicRatio], vec![nodes], g, 0.2)
+    }
+
+    /// Rows of two independent DOFs with variances (0.04, 0.024): normal or uniform.
+    fn samples(n: usize, uniform: bool) -> Vec<Vec<f64>> {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(11);
+        let mut unit = || {
+            if uniform {
+                3f64.sqrt() * (2.0 * rng.random::<f64>() - 1.0)
+            } else {
+                let (u1, u2): (f64, f64) = (1.0 - rng.random::<f64>(), rng.random());
+                (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+            }
+        };
+        (0..n)
+            .map(|_| vec![0.2 * unit(), 0.024f64.sqrt() * unit()])
+            .collect()
+    }
+
+    #[test]
+    fn separable_model_closed_forms() {
+        let (a, b, n) = (0.04, 0.024, 40);
+        let obs = Observed::Covariance {
+            s: DMatrix::from_diagonal(&DVector::from_vec(vec![a, b])),
+            n,
+        };
+        let grid = grid();
+        let jm = separable(&obs, &grid);
+        let (u_hat, l_max) = estimate(&jm);
+        let theta = jm.theta(&u_hat);
+        assert!(
+            (theta[0] - 0.2).abs() < 1e-6 && (theta[1] - 0.6).abs() < 1e-5,
+            "{theta:?}"
+        );
+        // Profile ends of the spread: 39 (r - ln r - 1) = chi^2_1(0.90).
+        for dir in [-1.0, 1.0] {
+            let e = profile_end(&jm, 0, 1.0, &u_hat, l_max, dir);
+            let s = jm.theta(&e.point)[0];
+            let r = a / (s * s);
+            let d = (n as f64 - 1.0) * (r - r.ln() - 1.0);
+            assert!(
+                !e.at_bound && (d - CHI2_1_90).abs() < 1e-4,
+                "{dir}: s {s}, {d}"
+            );
+        }
+        // Sandwich factors: normal scatter 1, uniform 2 / Var(u^2) = 2.5 (unit-variance u).
+        for (uniform, want) in [(false, 1.0), (true, 2.5)] {
+            let d = information(&jm, &theta, &samples(200_000, uniform))
+                .unwrap()
+                .derived();
+            for k in &d.k {
+                assert!((k / want - 1.0).abs() < 0.02, "uniform {uniform}: k {k}");
+            }
+        }
+        // Model error of s from N normal samples: sd(ln s) = sqrt(1 / (2 N)).
+        let nx = 20_000;
+        let d = information(&jm, &theta, &samples(nx, false))
+            .unwrap()
+            .derived();
+        let rel = d.model_sd[0] / theta[0] / (1.0 / (2.0 * nx as f64)).sqrt();
+        assert!((rel - 1.0).abs() < 0.03, "model sd ratio {rel}");
+    }
+}

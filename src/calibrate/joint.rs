@@ -1,0 +1,349 @@
+//! The joint likelihood of several parameters theta (the spread s and any
+//! of mu_static, dynamic_ratio, support_compliance, phi):
+//! Sigma(theta) = s^2 G(phi) + N with G(phi) from the model grid
+//! ([`super::grid`]) and the same Wishart / chi-square likelihood as the
+//! spread alone ([`super::likelihood::log_likelihood`]).
+//!
+//! * Estimate: the maximum of l over the searched box (a coarse grid, then
+//!   Nelder-Mead), with spread <= mu_static.
+//! * Interval of each parameter: the profile likelihood l_p(v) = max of l
+//!   over the other parameters at theta_a = v, and the adjusted Wilks
+//!   interval {v : k_a 2 (l_max - l_p(v)) <= chi^2_1(0.90)}. For a scalar
+//!   parameter of interest among nuisance parameters the adjusted profile
+//!   likelihood ratio k_a 2 (l_max - l_p) is asymptotically chi^2_1 with
+//!   k_a = (H^-1)_aa / (H^-1 J H^-1)_aa (Chandler & Bate 2007, Biometrika 94,
+//!   167, §3), H the information the Wishart law assumes and J the true
+//!   variance of the score (from the pose samples' fourth moments, see
+//!   [`information`]); for one parameter this is the spread's k = H / J.
+//! * Where the profile stays below the threshold up to an end of the range,
+//!   the interval ends there and is flagged: the data do not determine it.
+
+use nalgebra::DMatrix;
+
+use super::chi2::CHI2_1_90;
+use super::grid::ModelGrid;
+use super::likelihood::{Observed, log_likelihood, model_covariance};
+use super::params::{Param, admissible};
+
+/// Relative lower end of the searched spread (as for the spread alone).
+const S_MIN_REL: f64 = 1e-4;
+
+/// The likelihood of theta for one observation.
+pub struct JointModel<'a> {
+    pub obs: &'a Observed,
+    pub grid: &'a ModelGrid,
+    /// The fitted parameters (sorted: the spread first if fitted).
+    pub params: Vec<Param>,
+    /// Searched range per fitted parameter.
+    pub ranges: Vec<(f64, f64)>,
+    /// The spread and mu_static where they are not fitted.
+    pub spread_fixed: f64,
+    pub mu_fixed: f64,
+    pub noise_var: Vec<f64>,
+}
+
+impl<'a> JointModel<'a> {
+    /// The model of `params` (sorted) on `grid` for the scene `coupling`:
+    /// the searched ranges from [`Param::range`], the spread and mu_static
+    /// from the scene where they are not fitted.
+    pub fn new(
+        obs: &'a Observed,
+        grid: &'a ModelGrid,
+        params: &[Param],
+        coupling: &crate::assembly::Coupling,
+        noise_var: &[f64],
+    ) -> Self {
+        let fit_mu = params.contains(&Param::MuStatic);
+        let f = &coupling.scene.friction;
+        JointModel {
+            obs,
+            grid,
+            params: params.to_vec(),
+            ranges: params.iter().map(|p| p.range(coupling, fit_mu)).collect(),
+            spread_fixed: f.spread,
+            mu_fixed: f.mu_static,
+            noise_var: noise_var.to_vec(),
+        }
+    }
+
+    fn index(&self, p: Param) -> Option<usize> {
+        self.params.iter().position(|q| *q == p)
+    }
+
+    /// Sigma(theta); None where theta is not admissible.
+    pub fn sigma(&self, theta: &[f64]) -> Option<DMatrix<f64>> {
+        let s = self
+            .index(Param::Spread)
+            .map_or(self.spread_fixed, |i| theta[i]);
+        let mu = self
+            .index(Param::MuStatic)
+            .map_or(self.mu_fixed, |i| theta[i]);
+        if !admissible(s, mu) {
+            return None;
+        }
+        let phi: Vec<f64> = self
+            .grid
+            .params
+            .iter()
+            .map(|p| theta[self.index(*p).expect("grid parameters are fitted")])
+            .collect();
+        Some(model_covariance(&self.grid.at(&phi), &self.noise_var, s))
+    }
+
+    /// l(theta), -inf where not admissible or singular.
+    pub fn log_likelihood(&self, theta: &[f64]) -> f64 {
+        self.sigma(theta)
+            .and_then(|sg| {
+                // Sigma given whole: G = Sigma, s = 1, no extra noise.
+                log_likelihood(self.obs, &sg, &vec![0.0; sg.nrows()], 1.0)
+            })
+            .unwrap_or(f64::NEG_INFINITY)
+    }
+
+    /// theta of the unit coordinates u (the spread on a log scale).
+    pub fn theta(&self, u: &[f64]) -> Vec<f64> {
+        self.params
+            .iter()
+            .zip(&self.ranges)
+            .zip(u)
+            .map(|((p, &(a, b)), &u)| match p {
+                Param::Spread => {
+                    let (t0, t1) = ((b * S_MIN_REL).ln(), b.ln());
+                    (t0 + u * (t1 - t0)).exp()
+                }
+                _ => a + u * (b - a),
+            })
+            .collect()
+    }
+
+    /// The unit coordinate of parameter `a` at value `v`.
+    pub fn unit(&self, a: usize, v: f64) -> f64 {
+        let (lo, hi) = self.ranges[a];
+        match self.params[a] {
+            Param::Spread => {
+                let (t0, t1) = ((hi * S_MIN_REL).ln(), hi.ln());
+                ((v.max(hi * S_MIN_REL).ln() - t0) / (t1 - t0)).clamp(0.0, 1.0)
+            }
+            _ => ((v - lo) / (hi - lo)).clamp(0.0, 1.0),
+        }
+    }
+
+    /// l at the unit coordinates u.
+    pub fn l_unit(&self, u: &[f64]) -> f64 {
+        self.log_likelihood(&self.theta(u))
+    }
+}
+
+/// Maximise `f` over the unit box in the coordinates where `free` is true
+/// (the others stay at `start`), by Nelder-Mead with coordinates clamped to
+/// [0, 1] (Nelder & Mead 1965; reflection 1, expansion 2, contraction and
+/// shrink 1/2). Returns the point and its value.
+pub fn maximise(f: &dyn Fn(&[f64]) -> f64, start: &[f64], free: &[bool]) -> (Vec<f64>, f64) {
+    let idx: Vec<usize> = (0..start.len()).filter(|&i| free[i]).collect();
+    let n = idx.len();
+    let point = |y: &[f64]| -> Vec<f64> {
+        let mut x = start.to_vec();
+        for (k, &i) in idx.iter().enumerate() {
+            x[i] = y[k].clamp(0.0, 1.0);
+        }
+        x
+    };
+    let value = |y: &[f64]| f(&point(y));
+    if n == 0 {
+        return (start.to_vec(), f(start));
+    }
+    let y0: Vec<f64> = idx.iter().map(|&i| start[i]).collect();
+    let mut simplex: Vec<(Vec<f64>, f64)> = vec![(y0.clone(), value(&y0))];
+    for k in 0..n {
+        let mut y = y0.clone();
+        y[k] = if y[k] > 0.5 { y[k] - 0.1 } else { y[k] + 0.1 };
+        simplex.push((y.clone(), value(&y)));
+    }
+    for _ in 0..600 {
+        simplex.sort_by(|a, b| b.1.total_cmp(&a.1));
+        let (best, worst) = (simplex[0].1, simplex[n].1);
+        let size = (1..=n)
+            .map(|j| {
+                (0..n)
+                    .map(|k| (simplex[j].0[k] - simplex[0].0[k]).abs())
+                    .fold(0.0, f64::max)
+            })
+            .fold(0.0, f64::max);
+        if size < 1e-10 || (best.is_finite() && (best - worst).abs() < 1e-12 && size < 1e-6) {
+            break;
+        }
+        let centroid: Vec<f64> = (0..n)
+            .map(|k| simplex[..n].iter().map(|s| s.0[k]).sum::<f64>() / n as f64)
+            .collect();
+        let along = |t: f64| -> Vec<f64> {
+            (0..n)
+                .map(|k| (centroid[k] + t * (simplex[n].0[k] - centroid[k])).clamp(0.0, 1.0))
+                .collect()
+        };
+        let r = along(-1.0);
+        let fr = value(&r);
+        if fr > simplex[0].1 {
+            let e = along(-2.0);
+            let fe = value(&e);
+            simplex[n] = if fe > fr { (e, fe) } else { (r, fr) };
+        } else if fr > simplex[n - 1].1 {
+            simplex[n] = (r, fr);
+        } else {
+            let c = along(0.5);
+            let fc = value(&c);
+            if fc > simplex[n].1 {
+                simplex[n] = (c, fc);
+            } else {
+                let b = simplex[0].0.clone();
+                for s in simplex.iter_mut().skip(1) {
+                    let y: Vec<f64> = (0..n).map(|k| 0.5 * (b[k] + s.0[k])).collect();
+                    *s = (y.clone(), value(&y));
+                }
+            }
+        }
+    }
+    simplex.sort_by(|a, b| b.1.total_cmp(&a.1));
+    (point(&simplex[0].0), simplex[0].1)
+}
+
+/// Points per parameter of the starting grid, by number of parameters.
+const START_POINTS: [usize; 5] = [1, 33, 13, 7, 5];
+
+/// The maximum-likelihood estimate in unit coordinates and l_max.
+pub fn estimate(m: &JointModel) -> (Vec<f64>, f64) {
+    let q = m.params.len();
+    let k = START_POINTS[q.min(4)];
+    let mut best = (vec![0.5; q], f64::NEG_INFINITY);
+    for flat in 0..k.pow(q as u32) {
+        let mut r = flat;
+        let u: Vec<f64> = (0..q)
+            .map(|_| {
+                let i = r % k;
+                r /= k;
+                (i as f64 + 0.5) / k as f64
+            })
+            .collect();
+        let l = m.l_unit(&u);
+        if l > best.1 {
+            best = (u, l);
+        }
+    }
+    let all = vec![true; q];
+    maximise(&|u| m.l_unit(u), &best.0, &all)
+}
+
+/// The profile of parameter `a` at unit value `v`: the others maximised,
+/// from `warm` (and from `u_hat`), returning the arg max and l_p.
+pub fn profile(m: &JointModel, a: usize, v: f64, warm: &[f64], u_hat: &[f64]) -> (Vec<f64>, f64) {
+    let free: Vec<bool> = (0..m.params.len()).map(|i| i != a).collect();
+    let f = |u: &[f64]| m.l_unit(u);
+    let mut best = (warm.to_vec(), f64::NEG_INFINITY);
+    for s in [warm, u_hat] {
+        let mut start = s.to_vec();
+        start[a] = v;
+        let r = maximise(&f, &start, &free);
+        if r.1 > best.1 {
+            best = r;
+        }
+    }
+    best
+}
+
+/// One end of a profile interval in unit coordinates.
+#[derive(Debug, Clone, PartialEq)]
+pub struct End {
+    /// The unit value of the parameter at the end.
+    pub u: f64,
+    /// The whole point (the others at their profile maximum).
+    pub point: Vec<f64>,
+    /// No crossing inside the range: the end is the range end.
+    pub at_bound: bool,
+}
+
+/// Profile steps from the estimate to each range end.
+const PROFILE_STEPS: usize = 40;
+
+/// The end of the adjusted profile interval of parameter `a` towards
+/// `dir` (-1: low, +1: high): k 2 (l_max - l_p) = chi^2_1(0.90).
+pub fn profile_end(m: &JointModel, a: usize, k: f64, u_hat: &[f64], l_max: f64, dir: f64) -> End {
+    let drop = |l: f64| k * 2.0 * (l_max - l) - CHI2_1_90;
+    let target = if dir < 0.0 { 0.0 } else { 1.0 };
+    let span = target - u_hat[a];
+    let mut prev = (u_hat[a], u_hat.to_vec());
+    for i in 1..=PROFILE_STEPS {
+        let v = u_hat[a] + span * i as f64 / PROFILE_STEPS as f64;
+        let (pt, l) = profile(m, a, v, &prev.1, u_hat);
+        if drop(l) > 0.0 {
+            // Bisect between prev (inside) and v (outside).
+            let (mut lo, mut hi, mut inside) = (prev.0, v, prev.1.clone());
+            for _ in 0..30 {
+                let mid = 0.5 * (lo + hi);
+                let (p, l) = profile(m, a, mid, &inside, u_hat);
+                if drop(l) > 0.0 {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                    inside = p;
+                }
+            }
+            return End {
+                u: lo,
+                point: inside,
+                at_bound: false,
+            };
+        }
+        prev = (v, pt);
+    }
+    let mut point = prev.1;
+    point[a] = target;
+    End {
+        u: target,
+        point,
+        at_bound: true,
+    }
+}
+
+/// The point where the ray u_hat + t e (t > 0) leaves the adjusted
+/// likelihood region k 2 (l_max - l) <= chi^2_1(0.90), or the unit box.
+pub fn ray_end(m: &JointModel, u_hat: &[f64], e: &[f64], k: f64, l_max: f64) -> Vec<f64> {
+    let t_max = u_hat
+        .iter()
+        .zip(e)
+        .map(|(&u, &d)| {
+            if d > 0.0 {
+                (1.0 - u) / d
+            } else if d < 0.0 {
+                -u / d
+            } else {
+                f64::INFINITY
+            }
+        })
+        .fold(f64::INFINITY, f64::min);
+    let at = |t: f64| -> Vec<f64> {
+        u_hat
+            .iter()
+            .zip(e)
+            .map(|(u, d)| (u + t * d).clamp(0.0, 1.0))
+            .collect()
+    };
+    let outside = |t: f64| k * 2.0 * (l_max - m.l_unit(&at(t))) > CHI2_1_90;
+    let steps = PROFILE_STEPS;
+    let mut prev = 0.0;
+    for i in 1..=steps {
+        let t = t_max * i as f64 / steps as f64;
+        if outside(t) {
+            let (mut lo, mut hi) = (prev, t);
+            for _ in 0..40 {
+                let mid = 0.5 * (lo + hi);
+                if outside(mid) {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            return at(lo);
+        }
+        prev = t;
+    }
+    at(t_max)
+}

@@ -1,0 +1,187 @@
+//! The parameters `calibrate --fit` may name, their admissible ranges, and
+//! setting them in a coupling.
+//!
+//! * `spread`: `[friction] spread`, the half-width of mu_s in mu0 +- spread,
+//!   searched in (1e-4 s_max, s_max] with s_max = min(mu_static,
+//!   MU_MAX - mu_static) (the scene's own rule, `scene::resolve::tables`).
+//! * `mu_static`: `[friction] mu_static`, searched in [0.1, 0.8]: dry and
+//!   boundary-lubricated metal and ceramic pairs (steel on steel dry about
+//!   0.5-0.8, lubricated 0.1-0.2); and spread <= mu_static at every point.
+//! * `dynamic_ratio`: `[friction] dynamic_ratio` = mu_d / mu_s, searched in
+//!   [0.3, 1.0] (the scene allows (0, 1]; below 0.3 no published dry pair).
+//! * `support_compliance`: the series normal compliance of every contact's
+//!   support [m/N], searched in [0, 4 c_H] with c_H the largest Hertz
+//!   compliance d delta / dF = 2 delta / (3 F) of the scene's contacts under
+//!   the frictionless preload forces: a support (pin seat, glued ball)
+//!   softer than four times the Hertz contact itself is a design fault, not
+//!   a scatter to calibrate.
+
+use super::error::CalibrateError;
+use crate::assembly::Coupling;
+use crate::assembly::constraint::frictionless_preload_forces;
+use crate::scene::resolve::MU_MAX;
+
+/// The parameters `--fit` may name, in the order they are fitted and reported.
+pub const PARAMETERS: [&str; 4] = ["spread", "mu_static", "dynamic_ratio", "support_compliance"];
+
+/// Searched range of `mu_static`.
+pub const MU_STATIC_RANGE: (f64, f64) = (0.1, 0.8);
+/// Searched range of `dynamic_ratio`.
+pub const DYNAMIC_RATIO_RANGE: (f64, f64) = (0.3, 1.0);
+/// Upper end of `support_compliance` in units of the largest Hertz compliance.
+pub const SUPPORT_COMPLIANCE_HERTZ_MULTIPLE: f64 = 4.0;
+
+/// One parameter of the model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Param {
+    Spread,
+    MuStatic,
+    DynamicRatio,
+    SupportCompliance,
+}
+
+impl Param {
+    /// Its `--fit` name.
+    pub fn name(self) -> &'static str {
+        PARAMETERS[self as usize]
+    }
+
+    fn from_name(name: &str) -> Option<Param> {
+        [
+            Param::Spread,
+            Param::MuStatic,
+            Param::DynamicRatio,
+            Param::SupportCompliance,
+        ]
+        .into_iter()
+        .find(|p| p.name() == name)
+    }
+
+    /// Its value in `coupling` (the compliance of the first contact).
+    pub fn value(self, coupling: &Coupling) -> f64 {
+        let f = &coupling.scene.friction;
+        match self {
+            Param::Spread => f.spread,
+            Param::MuStatic => f.mu_static,
+            Param::DynamicRatio => f.dynamic_ratio,
+            Param::SupportCompliance => coupling
+                .contacts
+                .first()
+                .map_or(0.0, |c| c.normal.compliance),
+        }
+    }
+
+    /// The searched range [low, high] for the scene `coupling`. The spread's
+    /// upper end also depends on mu_static (see [`admissible`]).
+    pub fn range(self, coupling: &Coupling, fit_mu: bool) -> (f64, f64) {
+        match self {
+            Param::Spread => {
+                let mu = if fit_mu {
+                    MU_STATIC_RANGE.1
+                } else {
+                    coupling.scene.friction.mu_static
+                };
+                (0.0, mu.min(MU_MAX - mu))
+            }
+            Param::MuStatic => MU_STATIC_RANGE,
+            Param::DynamicRatio => DYNAMIC_RATIO_RANGE,
+            Param::SupportCompliance => (
+                0.0,
+                SUPPORT_COMPLIANCE_HERTZ_MULTIPLE * hertz_compliance(coupling),
+            ),
+        }
+    }
+
+    /// Set this parameter to `v` in `coupling`.
+    pub fn set(self, coupling: &mut Coupling, v: f64) {
+        let f = &mut coupling.scene.friction;
+        match self {
+            Param::Spread => f.spread = v,
+            Param::MuStatic => f.mu_static = v,
+            Param::DynamicRatio => f.dynamic_ratio = v,
+            Param::SupportCompliance => {
+                for s in &mut coupling.scene.surfaces {
+                    s.support_compliance = v;
+                }
+                for c in &mut coupling.contacts {
+                    c.normal.compliance = v;
+                }
+            }
+        }
+    }
+}
+
+/// Whether spread `s` and mu_static `mu` keep every mu_s in [0, MU_MAX].
+pub fn admissible(s: f64, mu: f64) -> bool {
+    s >= 0.0 && s <= mu && mu + s <= MU_MAX
+}
+
+/// The coupling with the parameters `params` set to `values`.
+pub fn with_values(coupling: &Coupling, params: &[Param], values: &[f64]) -> Coupling {
+    let mut c = coupling.clone();
+    for (p, v) in params.iter().zip(values) {
+        p.set(&mut c, *v);
+    }
+    c
+}
+
+/// The largest Hertz compliance d delta / dF = 2 delta / (3 F) of the
+/// contacts at their frictionless preload forces F [m/N] (Hertz:
+/// delta = (F / K)^(2/3)).
+pub fn hertz_compliance(coupling: &Coupling) -> f64 {
+    frictionless_preload_forces(coupling)
+        .iter()
+        .zip(&coupling.contacts)
+        .filter(|(f, _)| **f > 0.0)
+        .map(|(f, c)| 2.0 * c.normal.hertz_approach(*f) / (3.0 * f))
+        .fold(0.0, f64::max)
+}
+
+/// Parse `--fit`: a non-empty list of known, distinct names, returned in
+/// the order of [`PARAMETERS`].
+pub fn parse_fit(fit: &[String]) -> Result<Vec<Param>, CalibrateError> {
+    if fit.is_empty() || fit.iter().all(|f| f.is_empty()) {
+        return Err(CalibrateError::EmptyFit);
+    }
+    let mut out = Vec::new();
+    for f in fit {
+        if f.is_empty() {
+            return Err(CalibrateError::EmptyFit);
+        }
+        let p = Param::from_name(f).ok_or_else(|| CalibrateError::UnknownParameter(f.clone()))?;
+        if out.contains(&p) {
+            return Err(CalibrateError::DuplicateParameter(f.clone()));
+        }
+        out.push(p);
+    }
+    out.sort();
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn names(v: &[&str]) -> Vec<String> {
+        v.iter().map(|s| s.to_string()).collect()
+    }
+
+    #[test]
+    fn fit_lists() {
+        let p = parse_fit(&names(&["support_compliance", "spread"])).unwrap();
+        assert_eq!(p, vec![Param::Spread, Param::SupportCompliance]);
+        assert!(matches!(
+            parse_fit(&names(&["spread", "spread"])),
+            Err(CalibrateError::DuplicateParameter(_))
+        ));
+        assert!(matches!(
+            parse_fit(&names(&["mu"])),
+            Err(CalibrateError::UnknownParameter(_))
+        ));
+        assert!(matches!(parse_fit(&[]), Err(CalibrateError::EmptyFit)));
+        assert!(matches!(
+            parse_fit(&names(&["spread", ""])),
+            Err(CalibrateError::EmptyFit)
+        ));
+    }
+}
