@@ -30,7 +30,7 @@ use super::{DesignSpec, Sampler, Shard};
 use crate::assembly::{AssemblyError, Coupling};
 
 use crate::solve::dynamic::StartPose;
-use crate::solve::quasistatic::SeatingSetup;
+use crate::solve::quasistatic::{SeatingSetup, Workspace};
 use crate::solve::{Method, PointPose, SolveError, nominal_mu};
 
 /// Output components per evaluation point (relative to the nominal seating,
@@ -403,21 +403,23 @@ pub fn evaluate_rows_tallied(
         .map(|p| p.position)
         .collect();
     let setup = SeatingSetup::new(coupling);
+    // One workspace per rayon job, reused by the samples it seats.
     rows.into_par_iter()
-        .map(|(index, row)| {
+        .map_init(Workspace::new, |ws, (index, row)| {
             let sample = var.sample(coupling, &row);
             let mut outputs: Vec<f64> = Vec::new();
             if var.reseating() {
                 let seated = if var.preload {
                     let mut c = coupling.clone();
                     c.scene.preload = sample.preload;
-                    opts.method.seat(&c, &sample.mu, &sample.start)
+                    opts.method
+                        .seat(&c, &sample.mu, &sample.start)
+                        .map(|s| s.seated_pose())
                 } else {
-                    opts.method.seat_prepared(&setup, &sample.mu, &sample.start)
+                    opts.method.seat_in(&setup, &sample.mu, &sample.start, ws)
                 };
-                let s = seated
-                    .map(|s| tally.count(s))
-                    .map_err(|e| seat_err(index, &sample.mu, e))?;
+                let s = seated.map_err(|e| seat_err(index, &sample.mu, e))?;
+                tally.record(s.path);
                 outputs.extend(
                     points
                         .iter()

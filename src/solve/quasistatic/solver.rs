@@ -61,7 +61,7 @@ pub(super) enum Step {
 
 pub(super) struct Solver<'a> {
     pub coupling: &'a Coupling,
-    pub friction: Vec<Friction>,
+    pub friction: &'a [Friction],
     pub opts: SolverOptions,
     pub program: Program,
     /// Force scale of the residual [N].
@@ -84,7 +84,7 @@ impl<'a> Solver<'a> {
     /// The adaptive path follower with parry's geometry (today's algorithm).
     pub fn adaptive(
         coupling: &'a Coupling,
-        friction: Vec<Friction>,
+        friction: &'a [Friction],
         opts: SolverOptions,
         program: Program,
     ) -> Self {
@@ -94,7 +94,7 @@ impl<'a> Solver<'a> {
     /// [`Self::adaptive`] with the seating predictor x_1 ([`predictor`]) given.
     pub fn with_predictor(
         coupling: &'a Coupling,
-        friction: Vec<Friction>,
+        friction: &'a [Friction],
         opts: SolverOptions,
         program: Program,
         x1: Vector6<f64>,
@@ -319,9 +319,24 @@ impl<'a> Solver<'a> {
         j
     }
 
-    pub fn result(&self, i: usize, e: &ContactEval) -> ContactResult {
-        ContactResult::from_eval(self.coupling, i, e, self.friction[i])
+    /// The reported contacts of evaluations `evals` (contact order).
+    pub fn results(&self, evals: &[ContactEval]) -> Vec<ContactResult> {
+        contact_results(self.coupling, self.friction, evals)
     }
+}
+
+/// The reported contacts of the evaluations `evals` (contact order) with
+/// their frictions.
+pub(super) fn contact_results(
+    coupling: &Coupling,
+    friction: &[Friction],
+    evals: &[ContactEval],
+) -> Vec<ContactResult> {
+    evals
+        .iter()
+        .enumerate()
+        .map(|(i, e)| ContactResult::from_eval(coupling, i, e, friction[i]))
+        .collect()
 }
 
 /// The predictor twist per unit s of a seating (module docs of [`super`]):
