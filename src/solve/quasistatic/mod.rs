@@ -48,6 +48,7 @@
 
 mod external;
 mod load;
+mod lu6;
 mod path;
 mod solver;
 pub mod uniform;

@@ -17,6 +17,7 @@ use std::ops::{AddAssign, SubAssign};
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
 use super::external::ExternalLoad;
+use super::lu6::solve6;
 use crate::assembly::constraint::frictionless_preload_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
@@ -249,7 +250,7 @@ impl<'a> Solver<'a> {
             let stalled = rel > 0.1 * last;
             last = rel;
             let j = self.jacobian(evals, &point_forces);
-            let Some(dx) = j.lu().solve(&(-r)) else {
+            let Some(dx) = solve6(&j, &(-r)) else {
                 return Step::Failed(rel);
             };
             if !dx.iter().all(|v| v.is_finite()) || dx.fixed_rows::<3>(0).norm() > self.max_travel {
