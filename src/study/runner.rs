@@ -31,7 +31,7 @@ use crate::assembly::{AssemblyError, Coupling};
 
 use crate::solve::dynamic::StartPose;
 use crate::solve::quasistatic::{SeatingSetup, Workspace};
-use crate::solve::{Method, PointPose, SolveError, nominal_mu};
+use crate::solve::{Method, PointPose, SeatedPose, SolveError, nominal_mu};
 
 /// Output components per evaluation point (relative to the nominal seating,
 /// SI): translation of the point and rotation vector, phi_z being the
@@ -409,16 +409,8 @@ pub fn evaluate_rows_tallied(
             let sample = var.sample(coupling, &row);
             let mut outputs: Vec<f64> = Vec::new();
             if var.reseating() {
-                let seated = if var.preload {
-                    let mut c = coupling.clone();
-                    c.scene.preload = sample.preload;
-                    opts.method
-                        .seat(&c, &sample.mu, &sample.start)
-                        .map(|s| s.seated_pose())
-                } else {
-                    opts.method.seat_in(&setup, &sample.mu, &sample.start, ws)
-                };
-                let s = seated.map_err(|e| seat_err(index, &sample.mu, e))?;
+                let s = reseat(&setup, opts, &sample, ws)
+                    .map_err(|e| seat_err(index, &sample.mu, e))?;
                 tally.record(s.path);
                 outputs.extend(
                     points
@@ -451,4 +443,24 @@ pub fn evaluate_rows_tallied(
             })
         })
         .collect::<Result<Vec<_>, RunError>>()
+}
+
+/// The re-seating of one sample: the nominal coupling with the sample's
+/// friction, preload and start; in the reused workspace `ws` unless the
+/// preload varies (then the coupling differs from `setup`'s).
+fn reseat(
+    setup: &SeatingSetup,
+    opts: &StudyOptions,
+    sample: &Sample,
+    ws: &mut Workspace,
+) -> Result<SeatedPose, SolveError> {
+    if opts.variation.preload {
+        let mut c = setup.coupling().clone();
+        c.scene.preload = sample.preload;
+        opts.method
+            .seat(&c, &sample.mu, &sample.start)
+            .map(|s| s.seated_pose())
+    } else {
+        opts.method.seat_in(setup, &sample.mu, &sample.start, ws)
+    }
 }

@@ -46,9 +46,9 @@ pub(super) fn solve6(a: &Matrix6<f64>, b: &Vector6<f64>) -> Option<Vector6<f64>>
 fn eliminate<const I: usize>(m: &mut [[f64; 6]; 6], x: &mut [f64; 6]) -> Option<()> {
     let mut piv = I;
     let mut max = m[I][I].abs();
-    for r in I + 1..6 {
-        if m[I][r].abs() > max {
-            max = m[I][r].abs();
+    for (r, v) in m[I].iter().enumerate().skip(I + 1) {
+        if v.abs() > max {
+            max = v.abs();
             piv = r;
         }
     }

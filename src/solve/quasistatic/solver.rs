@@ -1,7 +1,8 @@
 //! The Newton corrector of the path follower: residual, consistent
 //! Jacobian and the iteration of one increment (module docs of
 //! [`super`]). Allocation-free: the contact evaluations go into a buffer
-//! the caller owns, the 6x6 system lives on the stack.
+//! the caller owns, the 6x6 system lives and is solved on the stack
+//! (`lu6`).
 //!
 //! Convergence: the relative residual below `tolerance`, or, where the
 //! residual cannot get there in f64 (it stalls: less than a tenfold drop in
