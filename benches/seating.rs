@@ -2,13 +2,17 @@
 //! pins) and 06 (Kelvin) on each path: `seat` (the uniform fast path, which
 //! serves these friction vectors) and `seat_adaptive` (the adaptive path
 //! alone: today's algorithm, the reference of the fast one); and the fast
-//! path with the coupling's set-up shared as in a study (`seat_prepared`).
+//! path with the coupling's set-up shared as in a study (`seat_prepared`),
+//! and as a study runs it: set-up shared and the buffers of one reused
+//! workspace, pose only (`seat_in`).
 
 use std::hint::black_box;
 use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use kinrepro::solve::quasistatic::{SeatingSetup, seat, seat_adaptive, seat_prepared};
+use kinrepro::solve::quasistatic::{
+    SeatingSetup, Workspace, seat, seat_adaptive, seat_in, seat_prepared,
+};
 use kinrepro::solve::{SeatingPath, SolverOptions};
 
 fn seating(c: &mut Criterion) {
@@ -35,6 +39,10 @@ fn seating(c: &mut Criterion) {
         let setup = SeatingSetup::new(&coupling);
         c.bench_function(&format!("quasi-static seating/shared-setup/{name}"), |b| {
             b.iter(|| seat_prepared(black_box(&setup), black_box(&mu), &opts).unwrap())
+        });
+        let mut ws = Workspace::new();
+        c.bench_function(&format!("quasi-static seating/workspace/{name}"), |b| {
+            b.iter(|| seat_in(black_box(&setup), black_box(&mu), &opts, &mut ws).unwrap())
         });
         c.bench_function(&format!("quasi-static seating/adaptive/{name}"), |b| {
             b.iter(|| seat_adaptive(black_box(&coupling), black_box(&mu), &opts).unwrap())

@@ -144,6 +144,7 @@ pub fn evaluate_at(
 
 /// [`evaluate_at`] with the tangential increment du = p - p_c of the
 /// contact point given (the solver forms [`Motion`] once per pose).
+#[inline]
 pub fn evaluate_moved(
     coupling: &Coupling,
     i: usize,

@@ -201,6 +201,32 @@ pub struct Seating {
     pub path: SeatingPath,
 }
 
+/// The pose-level result of a seating, without the per-contact report:
+/// what a study keeps of each sample (`quasistatic::seat_in` returns it
+/// without allocating).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SeatedPose {
+    /// Final pose of the moving half.
+    pub pose: BodyPose,
+    /// Accepted load increments and Newton iterations in all.
+    pub increments: usize,
+    pub newton_iterations: usize,
+    /// Which path of the solver produced it.
+    pub path: SeatingPath,
+}
+
+impl Seating {
+    /// The pose-level part of this result.
+    pub fn seated_pose(&self) -> SeatedPose {
+        SeatedPose {
+            pose: self.pose,
+            increments: self.increments,
+            newton_iterations: self.newton_iterations,
+            path: self.path,
+        }
+    }
+}
+
 /// Which path seated the coupling (`seating_path` in `run --json`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
@@ -276,6 +302,18 @@ impl PointPose {
 /// Static coefficients -> per-contact friction (mu_d = ratio mu_s, the
 /// scene's friction law), checked. The solver sets each increment's duration.
 pub fn frictions(coupling: &Coupling, mu_s: &[f64]) -> Result<Vec<Friction>, SolveError> {
+    let mut out = Vec::with_capacity(mu_s.len());
+    frictions_into(coupling, mu_s, &mut out)?;
+    Ok(out)
+}
+
+/// [`frictions`] into `out` (cleared first; no allocation once it has the
+/// capacity).
+pub fn frictions_into(
+    coupling: &Coupling,
+    mu_s: &[f64],
+    out: &mut Vec<Friction>,
+) -> Result<(), SolveError> {
     if mu_s.len() != coupling.contacts.len() {
         return Err(SolveError::MuCount {
             expected: coupling.contacts.len(),
@@ -284,23 +322,21 @@ pub fn frictions(coupling: &Coupling, mu_s: &[f64]) -> Result<Vec<Friction>, Sol
     }
     let ratio = coupling.scene.friction.dynamic_ratio;
     let law = coupling.scene.friction.law;
-    mu_s.iter()
-        .enumerate()
-        .map(|(i, &m)| {
-            if (0.0..=MU_MAX).contains(&m) {
-                Ok(Friction {
-                    law,
-                    ..Friction::switch(m, ratio * m)
-                })
-            } else {
-                Err(SolveError::MuRange {
-                    index: i + 1,
-                    value: m,
-                    max: MU_MAX,
-                })
-            }
-        })
-        .collect()
+    out.clear();
+    for (i, &m) in mu_s.iter().enumerate() {
+        if !(0.0..=MU_MAX).contains(&m) {
+            return Err(SolveError::MuRange {
+                index: i + 1,
+                value: m,
+                max: MU_MAX,
+            });
+        }
+        out.push(Friction {
+            law,
+            ..Friction::switch(m, ratio * m)
+        });
+    }
+    Ok(())
 }
 
 /// The nominal static coefficients of a scene (mu0 at every contact).
@@ -364,6 +400,23 @@ impl Method {
         match self {
             Method::QuasiStatic(o) => quasistatic::seat_prepared(setup, mu_s, o),
             Method::Dynamic(_) => self.seat(setup.coupling(), mu_s, start),
+        }
+    }
+
+    /// [`Method::seat_prepared`]'s pose, in the reused buffers of `ws`
+    /// (quasi-static: no allocation once `ws` has served one seating).
+    pub fn seat_in(
+        &self,
+        setup: &quasistatic::SeatingSetup,
+        mu_s: &[f64],
+        start: &dynamic::StartPose,
+        ws: &mut quasistatic::Workspace,
+    ) -> Result<SeatedPose, SolveError> {
+        match self {
+            Method::QuasiStatic(o) => quasistatic::seat_in(setup, mu_s, o, ws),
+            Method::Dynamic(_) => self
+                .seat(setup.coupling(), mu_s, start)
+                .map(|s| s.seated_pose()),
         }
     }
 }

@@ -39,13 +39,18 @@ pub struct PathTally([AtomicUsize; 3]);
 impl PathTally {
     /// Count the path of `seating` and pass it on.
     pub fn count(&self, seating: Seating) -> Seating {
-        let k = match seating.path {
+        self.record(seating.path);
+        seating
+    }
+
+    /// Count one seating served by `path`.
+    pub fn record(&self, path: SeatingPath) {
+        let k = match path {
             SeatingPath::Uniform => 0,
             SeatingPath::Adaptive => 1,
             SeatingPath::Dynamic => 2,
         };
         self.0[k].fetch_add(1, Ordering::Relaxed);
-        seating
     }
 
     pub fn counts(&self) -> SeatingPaths {

@@ -30,8 +30,8 @@ use super::{DesignSpec, Sampler, Shard};
 use crate::assembly::{AssemblyError, Coupling};
 
 use crate::solve::dynamic::StartPose;
-use crate::solve::quasistatic::SeatingSetup;
-use crate::solve::{Method, PointPose, SolveError, nominal_mu};
+use crate::solve::quasistatic::{SeatingSetup, Workspace};
+use crate::solve::{Method, PointPose, SeatedPose, SolveError, nominal_mu};
 
 /// Output components per evaluation point (relative to the nominal seating,
 /// SI): translation of the point and rotation vector, phi_z being the
@@ -403,21 +403,15 @@ pub fn evaluate_rows_tallied(
         .map(|p| p.position)
         .collect();
     let setup = SeatingSetup::new(coupling);
+    // One workspace per rayon job, reused by the samples it seats.
     rows.into_par_iter()
-        .map(|(index, row)| {
+        .map_init(Workspace::new, |ws, (index, row)| {
             let sample = var.sample(coupling, &row);
             let mut outputs: Vec<f64> = Vec::new();
             if var.reseating() {
-                let seated = if var.preload {
-                    let mut c = coupling.clone();
-                    c.scene.preload = sample.preload;
-                    opts.method.seat(&c, &sample.mu, &sample.start)
-                } else {
-                    opts.method.seat_prepared(&setup, &sample.mu, &sample.start)
-                };
-                let s = seated
-                    .map(|s| tally.count(s))
+                let s = reseat(&setup, opts, &sample, ws)
                     .map_err(|e| seat_err(index, &sample.mu, e))?;
+                tally.record(s.path);
                 outputs.extend(
                     points
                         .iter()
@@ -449,4 +443,24 @@ pub fn evaluate_rows_tallied(
             })
         })
         .collect::<Result<Vec<_>, RunError>>()
+}
+
+/// The re-seating of one sample: the nominal coupling with the sample's
+/// friction, preload and start; in the reused workspace `ws` unless the
+/// preload varies (then the coupling differs from `setup`'s).
+fn reseat(
+    setup: &SeatingSetup,
+    opts: &StudyOptions,
+    sample: &Sample,
+    ws: &mut Workspace,
+) -> Result<SeatedPose, SolveError> {
+    if opts.variation.preload {
+        let mut c = setup.coupling().clone();
+        c.scene.preload = sample.preload;
+        opts.method
+            .seat(&c, &sample.mu, &sample.start)
+            .map(|s| s.seated_pose())
+    } else {
+        opts.method.seat_in(setup, &sample.mu, &sample.start, ws)
+    }
 }

@@ -5,7 +5,7 @@
 use nalgebra::Vector3;
 
 use super::external::{ExternalLoad, LoadEvent, LoadEventKind};
-use super::path::Walk;
+use super::path::{Buffers, Walk};
 use super::solver::{Program, Solver};
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{SlipState, TangentialState};
@@ -75,15 +75,19 @@ pub fn apply_load(
         load: *load,
         factor,
     };
-    let solver = Solver::adaptive(coupling, fr, *opts, program);
+    let solver = Solver::adaptive(coupling, &fr, *opts, program);
+    let mut bufs = Buffers {
+        states: states.to_vec(),
+        ..Buffers::default()
+    };
     let end = solver
-        .run(*start, states.to_vec())?
+        .run(*start, &mut bufs)?
         .expect("the adaptive path never declines");
     Ok(LoadPath {
         factor: end.reached * factor,
         pose: end.pose,
-        contacts: end.contacts,
-        states: end.states,
+        contacts: solver.results(&bufs.evals),
+        states: bufs.states,
         first_event: end.event,
         stopped: end.stopped,
         increments: end.increments,
@@ -100,7 +104,7 @@ impl Solver<'_> {
         }
         evals
             .iter()
-            .zip(&self.friction)
+            .zip(self.friction)
             .position(|(e, f)| f.mu_s > 0.0 && e.slip() == SlipState::Slip)
             .map(|i| (i + 1, LoadEventKind::Slip))
     }

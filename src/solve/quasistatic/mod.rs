@@ -40,9 +40,15 @@
 //! A study seats one coupling many times: [`SeatingSetup`] holds what
 //! every seating of it computes first (the predictor x_1, the virgin
 //! contact states), and [`seat_prepared`] reuses it with the same bits.
+//! A [`Workspace`] holds the buffers of one seating; [`seat_in`] reuses
+//! them (one workspace per rayon worker in a study), so that a seating
+//! allocates nothing once they have grown (tests/alloc_free.rs), and
+//! returns the pose-level [`SeatedPose`] (the per-contact report,
+//! [`Workspace::seating`], is built only on request).
 
 mod external;
 mod load;
+mod lu6;
 mod path;
 mod solver;
 pub mod uniform;
@@ -50,14 +56,14 @@ pub mod uniform;
 pub use external::{ExternalLoad, LoadEvent, LoadEventKind};
 pub use load::{LoadPath, apply_load, at_rest_states};
 
-use path::End;
-use solver::{Program, Solver};
+use path::{Buffers, End};
+use solver::{Program, Solver, contact_results};
 
 use std::sync::OnceLock;
 
 use nalgebra::Vector6;
 
-use super::{Seating, SeatingPath, SolveError, SolverOptions, frictions};
+use super::{SeatedPose, Seating, SeatingPath, SolveError, SolverOptions, frictions_into};
 use crate::assembly::Coupling;
 use crate::contact::{Friction, TangentialState};
 use crate::solve::contact_layer::GeometrySource;
@@ -100,10 +106,36 @@ impl<'a> SeatingSetup<'a> {
         self.coupling
     }
 
-    fn virgin_parry(&self) -> Vec<TangentialState> {
+    fn virgin_parry(&self) -> &[TangentialState] {
         self.virgin_parry
             .get_or_init(|| virgin_states(self.coupling, GeometrySource::Parry))
-            .clone()
+    }
+}
+
+/// The buffers of a seating, reused from one seating to the next
+/// ([`seat_in`]): the per-contact frictions, states and evaluations. After
+/// a seating they hold its final contacts ([`Workspace::seating`]).
+#[derive(Debug, Default)]
+pub struct Workspace {
+    friction: Vec<Friction>,
+    bufs: Buffers,
+}
+
+impl Workspace {
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// The full result of the last seating `seated` of `coupling` in this
+    /// workspace, with the per-contact report (allocates it).
+    pub fn seating(&self, coupling: &Coupling, seated: SeatedPose) -> Seating {
+        Seating {
+            pose: seated.pose,
+            contacts: contact_results(coupling, &self.friction, &self.bufs.evals),
+            increments: seated.increments,
+            newton_iterations: seated.newton_iterations,
+            path: seated.path,
+        }
     }
 }
 
@@ -113,11 +145,25 @@ pub fn seat_prepared(
     mu_s: &[f64],
     opts: &SolverOptions,
 ) -> Result<Seating, SolveError> {
-    let fr = frictions(setup.coupling, mu_s)?;
-    if let Some(end) = uniform::seat(setup, &fr, opts) {
-        return Ok(seating(end, SeatingPath::Uniform));
+    let mut ws = Workspace::new();
+    let seated = seat_in(setup, mu_s, opts, &mut ws)?;
+    Ok(ws.seating(setup.coupling, seated))
+}
+
+/// [`seat_prepared`] in the reused buffers of `ws`, without the
+/// per-contact report: the same pose, increments and path, and no
+/// allocation once `ws` has served one seating of this coupling.
+pub fn seat_in(
+    setup: &SeatingSetup,
+    mu_s: &[f64],
+    opts: &SolverOptions,
+    ws: &mut Workspace,
+) -> Result<SeatedPose, SolveError> {
+    frictions_into(setup.coupling, mu_s, &mut ws.friction)?;
+    if let Some(end) = uniform::seat(setup, &ws.friction, opts, &mut ws.bufs) {
+        return Ok(seated(end, SeatingPath::Uniform));
     }
-    adaptive(setup, fr, opts)
+    adaptive(setup, &ws.friction, opts, &mut ws.bufs)
 }
 
 /// Seat by the adaptive path only (today's algorithm, parry's geometry):
@@ -128,19 +174,25 @@ pub fn seat_adaptive(
     opts: &SolverOptions,
 ) -> Result<Seating, SolveError> {
     let setup = SeatingSetup::new(coupling);
-    adaptive(&setup, frictions(coupling, mu_s)?, opts)
+    let mut ws = Workspace::new();
+    frictions_into(coupling, mu_s, &mut ws.friction)?;
+    let seated = adaptive(&setup, &ws.friction, opts, &mut ws.bufs)?;
+    Ok(ws.seating(coupling, seated))
 }
 
 fn adaptive(
     setup: &SeatingSetup,
-    fr: Vec<Friction>,
+    fr: &[Friction],
     opts: &SolverOptions,
-) -> Result<Seating, SolveError> {
+    bufs: &mut Buffers,
+) -> Result<SeatedPose, SolveError> {
     let c = setup.coupling;
     let solver = Solver::with_predictor(c, fr, *opts, Program::Seat, setup.x1);
-    let end = solver.run(c.touching_pose, setup.virgin_parry())?;
+    bufs.states.clear();
+    bufs.states.extend_from_slice(setup.virgin_parry());
+    let end = solver.run(c.touching_pose, bufs)?;
     let end = end.expect("the adaptive path never declines");
-    Ok(seating(end, SeatingPath::Adaptive))
+    Ok(seated(end, SeatingPath::Adaptive))
 }
 
 /// Zero tangential force at every contact, tangent to its normal at the
@@ -152,10 +204,9 @@ fn virgin_states(coupling: &Coupling, source: GeometrySource) -> Vec<TangentialS
         .collect()
 }
 
-fn seating(end: End, path: SeatingPath) -> Seating {
-    Seating {
+fn seated(end: End, path: SeatingPath) -> SeatedPose {
+    SeatedPose {
         pose: end.pose,
-        contacts: end.contacts,
         increments: end.increments,
         newton_iterations: end.newton_iterations,
         path,

@@ -1,7 +1,10 @@
 //! The adaptive path follower ([`Solver::run`]): increments in the path
 //! parameter s, halved on Newton failure and on a stick/slip change of a
 //! loaded contact, doubled back to the nominal size after a quiet one
-//! (module docs of [`super`]).
+//! (module docs of [`super`]). The contact states and evaluations live in
+//! the caller's [`Buffers`] (reused from seating to seating, no allocation
+//! once they have grown to the coupling's contact count); the path's end
+//! leaves the committed ones there.
 
 use nalgebra::Vector6;
 
@@ -9,14 +12,23 @@ use super::external::LoadEvent;
 use super::solver::{Loads, Program, Solver, Step, twist_between};
 use crate::assembly::BodyPose;
 use crate::contact::{SlipState, TangentialState};
+use crate::solve::SolveError;
 use crate::solve::contact_layer::ContactEval;
-use crate::solve::{ContactResult, SolveError};
 
-/// The end of a path.
+/// The buffers of a path: the committed states (the start states on
+/// entry, the final ones on return), the committed evaluations, and the
+/// trial evaluations of the increment being solved.
+#[derive(Debug, Default)]
+pub(super) struct Buffers {
+    pub states: Vec<TangentialState>,
+    pub evals: Vec<ContactEval>,
+    pub trial: Vec<ContactEval>,
+}
+
+/// The end of a path; its contact states and evaluations are in the
+/// [`Buffers`] the path ran in.
 pub(super) struct End {
     pub pose: BodyPose,
-    pub contacts: Vec<ContactResult>,
-    pub states: Vec<TangentialState>,
     /// Path parameter s reached.
     pub reached: f64,
     pub event: Option<LoadEvent>,
@@ -27,11 +39,11 @@ pub(super) struct End {
 }
 
 /// The committed state of a path between increments.
-pub(super) struct Walk {
+pub(super) struct Walk<'w> {
     pub pose: BodyPose,
-    pub states: Vec<TangentialState>,
+    pub states: &'w mut Vec<TangentialState>,
     /// The contacts at `pose` (empty before the first increment of a seating).
-    pub evals: Vec<ContactEval>,
+    pub evals: &'w mut Vec<ContactEval>,
     /// Path parameter reached.
     pub s: f64,
     pub event: Option<LoadEvent>,
@@ -73,7 +85,7 @@ fn commit(
     }
     let step = (twist_between(&w.pose, &new_pose), s_next - w.s);
     w.pose = new_pose;
-    std::mem::swap(&mut w.evals, trial);
+    std::mem::swap(w.evals, trial);
     w.accepted += 1;
     w.s = s_next;
     step
@@ -85,35 +97,41 @@ fn commit(
 /// the approach along a proportional path, so a fresh contact sticks or
 /// slips from the first load on.
 fn stick_slip_changed(w: &Walk, trial: &[ContactEval]) -> bool {
-    trial.iter().zip(&w.states).enumerate().any(|(i, (e, st))| {
-        (e.slip() == SlipState::Slip) != st.sliding
-            && w.evals.get(i).is_some_and(|old| old.normal_force > 0.0)
-    })
+    trial
+        .iter()
+        .zip(w.states.iter())
+        .enumerate()
+        .any(|(i, (e, st))| {
+            (e.slip() == SlipState::Slip) != st.sliding
+                && w.evals.get(i).is_some_and(|old| old.normal_force > 0.0)
+        })
 }
 
 impl Solver<'_> {
     /// Follow the path from `start`. `Ok(None)` only on the uniform path
     /// (`self.uniform`), where the adaptive path would halve an increment.
+    /// The start states are `bufs.states`.
     pub(super) fn run(
         &self,
         start: BodyPose,
-        start_states: Vec<TangentialState>,
+        bufs: &mut Buffers,
     ) -> Result<Option<End>, SolveError> {
         let seating = self.program == Program::Seat;
         let nominal = 1.0 / self.opts.increments.max(1) as f64;
         let h_min = nominal / f64::powi(2.0, self.opts.max_splits as i32);
-        let n = start_states.len();
+        bufs.evals.clear();
+        let trial = &mut bufs.trial;
         let mut w = Walk {
             pose: start,
-            states: start_states,
-            evals: Vec::with_capacity(n),
+            states: &mut bufs.states,
+            evals: &mut bufs.evals,
             s: 0.0,
             event: None,
             accepted: 0,
             iterations: 0,
         };
         if !seating {
-            self.evaluate_all(&start, &start, &w.states, self.ramp_time, &mut w.evals);
+            self.evaluate_all(&start, &start, w.states, self.ramp_time, w.evals);
         }
         let ctx = Context {
             start,
@@ -124,14 +142,13 @@ impl Solver<'_> {
             },
             seating,
         };
-        let mut trial: Vec<ContactEval> = Vec::with_capacity(n);
         let mut h = nominal;
         let mut last_step: Option<(Vector6<f64>, f64)> = None;
         while w.s < 1.0 {
             let s_next = if w.s + h > 1.0 - 1e-12 { 1.0 } else { w.s + h };
             let (predictor, loads) = self.increment(&w, last_step, s_next, seating);
             let can_halve = h > h_min * 1.5;
-            let step = self.newton(&w.pose, &w.states, predictor, &loads, &mut trial);
+            let step = self.newton(&w.pose, w.states, predictor, &loads, trial);
             let verdict = match step {
                 Step::Failed(_) if can_halve => Verdict::Halve,
                 Step::Failed(residual) => {
@@ -143,11 +160,11 @@ impl Solver<'_> {
                 }
                 Step::Converged(new_pose, its) => {
                     w.iterations += its;
-                    let changed = stick_slip_changed(&w, &trial);
+                    let changed = stick_slip_changed(&w, trial);
                     if changed && can_halve {
                         Verdict::Halve
                     } else {
-                        self.judge(&ctx, &mut w, &new_pose, &trial, &loads)
+                        self.judge(&ctx, &mut w, &new_pose, trial, &loads)
                             .unwrap_or(Verdict::Accept(changed))
                     }
                 }
@@ -160,7 +177,7 @@ impl Solver<'_> {
                     let Step::Converged(new_pose, _) = step else {
                         unreachable!("only a converged increment is accepted")
                     };
-                    last_step = Some(commit(&mut w, &mut trial, new_pose, s_next));
+                    last_step = Some(commit(&mut w, trial, new_pose, s_next));
                     if !changed {
                         h = (2.0 * h).min(nominal);
                     }
@@ -273,13 +290,6 @@ impl Solver<'_> {
     fn end(&self, w: Walk) -> End {
         End {
             pose: w.pose,
-            contacts: w
-                .evals
-                .iter()
-                .enumerate()
-                .map(|(i, e)| self.result(i, e))
-                .collect(),
-            states: w.states,
             reached: w.s,
             event: w.event,
             stopped: None,

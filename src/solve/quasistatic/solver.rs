@@ -1,7 +1,8 @@
 //! The Newton corrector of the path follower: residual, consistent
 //! Jacobian and the iteration of one increment (module docs of
 //! [`super`]). Allocation-free: the contact evaluations go into a buffer
-//! the caller owns, the 6x6 system lives on the stack.
+//! the caller owns, the 6x6 system lives and is solved on the stack
+//! (`lu6`).
 //!
 //! Convergence: the relative residual below `tolerance`, or, where the
 //! residual cannot get there in f64 (it stalls: less than a tenfold drop in
@@ -17,6 +18,7 @@ use std::ops::{AddAssign, SubAssign};
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
 use super::external::ExternalLoad;
+use super::lu6::solve6;
 use crate::assembly::constraint::frictionless_preload_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
@@ -61,7 +63,7 @@ pub(super) enum Step {
 
 pub(super) struct Solver<'a> {
     pub coupling: &'a Coupling,
-    pub friction: Vec<Friction>,
+    pub friction: &'a [Friction],
     pub opts: SolverOptions,
     pub program: Program,
     /// Force scale of the residual [N].
@@ -84,7 +86,7 @@ impl<'a> Solver<'a> {
     /// The adaptive path follower with parry's geometry (today's algorithm).
     pub fn adaptive(
         coupling: &'a Coupling,
-        friction: Vec<Friction>,
+        friction: &'a [Friction],
         opts: SolverOptions,
         program: Program,
     ) -> Self {
@@ -94,7 +96,7 @@ impl<'a> Solver<'a> {
     /// [`Self::adaptive`] with the seating predictor x_1 ([`predictor`]) given.
     pub fn with_predictor(
         coupling: &'a Coupling,
-        friction: Vec<Friction>,
+        friction: &'a [Friction],
         opts: SolverOptions,
         program: Program,
         x1: Vector6<f64>,
@@ -249,7 +251,7 @@ impl<'a> Solver<'a> {
             let stalled = rel > 0.1 * last;
             last = rel;
             let j = self.jacobian(evals, &point_forces);
-            let Some(dx) = j.lu().solve(&(-r)) else {
+            let Some(dx) = solve6(&j, &(-r)) else {
                 return Step::Failed(rel);
             };
             if !dx.iter().all(|v| v.is_finite()) || dx.fixed_rows::<3>(0).norm() > self.max_travel {
@@ -272,41 +274,13 @@ impl<'a> Solver<'a> {
 
     /// dR/d(v, w) for a twist about the world origin: contact stiffness K_i
     /// mapped through dp = v - [p]x w, plus the moments of forces whose
-    /// points move with the body.
+    /// points move with the body ([`add_contact`]).
     fn jacobian(&self, evals: &[ContactEval], point_forces: &[PointForce]) -> Matrix6<f64> {
         let mut j = Matrix6::zeros();
-        // [p]x M column by column (p x m_j) and M [p]x row by row
-        // ((m_i x p)^T): the products with a cross-product matrix without
-        // its zeros.
-        let cross_left = |p: &Vector3<f64>, m: &Matrix3<f64>| {
-            Matrix3::from_columns(&[
-                p.cross(&m.column(0)),
-                p.cross(&m.column(1)),
-                p.cross(&m.column(2)),
-            ])
-        };
-        let cross_right = |m: &Matrix3<f64>, p: &Vector3<f64>| {
-            let row = |i: usize| m.row(i).transpose().cross(p).transpose();
-            Matrix3::from_rows(&[row(0), row(1), row(2)])
-        };
-        let mut add_point_force =
-            |k: &Matrix3<f64>, f: &Vector3<f64>, p: &Vector3<f64>, moving: &Vector3<f64>| {
-                // force rows: K dp;  moment rows: p x (K dp) + dp_moving x f,
-                // dp = v - [p]x w: K [-p]x = -K [p]x, [f]x [m]x = m f^T - (f . m) I.
-                let kp = -cross_right(k, p);
-                let fx = f.cross_matrix();
-                let fm = moving * f.transpose() - Matrix3::from_diagonal_element(f.dot(moving));
-                j.fixed_view_mut::<3, 3>(0, 0).add_assign(k);
-                j.fixed_view_mut::<3, 3>(0, 3).add_assign(&kp);
-                j.fixed_view_mut::<3, 3>(3, 0)
-                    .add_assign(&(cross_left(p, k) - fx));
-                j.fixed_view_mut::<3, 3>(3, 3)
-                    .add_assign(&(cross_left(p, &kp) + fm));
-            };
         for (i, e) in evals.iter().enumerate() {
             let centre = e.geometry.point
                 + e.geometry.normal * self.coupling.balls[self.coupling.contacts[i].ball].radius;
-            add_point_force(&e.stiffness, &e.force, &e.geometry.point, &centre);
+            add_contact(&mut j, &e.stiffness, &e.force, &e.geometry.point, &centre);
         }
         // A load of fixed direction at a point of the body (K = 0): moment
         // rows only, d(p x f) = dp x f = -[f]x (v - [p]x w).
@@ -319,9 +293,75 @@ impl<'a> Solver<'a> {
         j
     }
 
-    pub fn result(&self, i: usize, e: &ContactEval) -> ContactResult {
-        ContactResult::from_eval(self.coupling, i, e, self.friction[i])
+    /// The reported contacts of evaluations `evals` (contact order).
+    pub fn results(&self, evals: &[ContactEval]) -> Vec<ContactResult> {
+        contact_results(self.coupling, self.friction, evals)
     }
+}
+
+/// a x b (the component formulas of nalgebra's `cross`).
+#[inline(always)]
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// Add one contact to the Jacobian: force rows K dp, moment rows
+/// p x (K dp) + dp_moving x f, with dp = v - [p]x w at the contact point p
+/// and at the ball centre `moving` (the point the force's line moves with):
+/// ```text
+/// [ K        -K [p]x                      ]
+/// [ [p]x K - [f]x    -[p]x K [p]x + m f^T - (f . m) I ]
+/// ```
+/// ([f]x [m]x = m f^T - (f . m) I). Written out on the components, each
+/// entry formed by the same operations as the 3x3 matrix products it
+/// replaces.
+#[inline(always)]
+fn add_contact(
+    j: &mut Matrix6<f64>,
+    k: &Matrix3<f64>,
+    f: &Vector3<f64>,
+    p: &Vector3<f64>,
+    moving: &Vector3<f64>,
+) {
+    let pa = [p.x, p.y, p.z];
+    // kp = -K [p]x, row r: -(k_r x p).
+    let mut kp = [[0.0; 3]; 3];
+    for (r, row) in kp.iter_mut().enumerate() {
+        let c = cross([k[(r, 0)], k[(r, 1)], k[(r, 2)]], pa);
+        *row = [-c[0], -c[1], -c[2]];
+    }
+    let fx = f.cross_matrix();
+    let dot = f.dot(moving);
+    for c in 0..3 {
+        // Column c of [p]x K and of [p]x kp.
+        let pk = cross(pa, [k[(0, c)], k[(1, c)], k[(2, c)]]);
+        let pkp = cross(pa, [kp[0][c], kp[1][c], kp[2][c]]);
+        for r in 0..3 {
+            let fm = moving[r] * f[c] - if r == c { dot } else { 0.0 };
+            j[(r, c)] += k[(r, c)];
+            j[(r, c + 3)] += kp[r][c];
+            j[(r + 3, c)] += pk[r] - fx[(r, c)];
+            j[(r + 3, c + 3)] += pkp[r] + fm;
+        }
+    }
+}
+
+/// The reported contacts of the evaluations `evals` (contact order) with
+/// their frictions.
+pub(super) fn contact_results(
+    coupling: &Coupling,
+    friction: &[Friction],
+    evals: &[ContactEval],
+) -> Vec<ContactResult> {
+    evals
+        .iter()
+        .enumerate()
+        .map(|(i, e)| ContactResult::from_eval(coupling, i, e, friction[i]))
+        .collect()
 }
 
 /// The predictor twist per unit s of a seating (module docs of [`super`]):

@@ -62,23 +62,24 @@
 //! keeps its increments and saves on each one instead.
 
 use super::SeatingSetup;
-use super::path::End;
+use super::path::{Buffers, End};
 use super::solver::{Program, Solver};
 use crate::contact::Friction;
 use crate::solve::SolverOptions;
 use crate::solve::contact_layer::GeometrySource;
 
-/// The seating on the uniform path, or `None` where it declines.
+/// The seating on the uniform path, or `None` where it declines; the
+/// states and evaluations are left in `bufs`.
 pub(super) fn seat(
     setup: &SeatingSetup,
     friction: &[Friction],
     opts: &SolverOptions,
+    bufs: &mut Buffers,
 ) -> Option<End> {
     let coupling = setup.coupling;
-    let mut solver =
-        Solver::with_predictor(coupling, friction.to_vec(), *opts, Program::Seat, setup.x1);
+    let mut solver = Solver::with_predictor(coupling, friction, *opts, Program::Seat, setup.x1);
     solver.geometry = GeometrySource::ClosedForm;
     solver.uniform = true;
-    let states = setup.virgin_closed_form.clone();
-    solver.run(coupling.touching_pose, states).ok().flatten()
+    bufs.states.clone_from(&setup.virgin_closed_form);
+    solver.run(coupling.touching_pose, bufs).ok().flatten()
 }

@@ -1,0 +1,112 @@
+//! The 6x6 solve of the Newton corrector, J dx = r, on the stack: Gaussian
+//! elimination with partial pivoting (Golub & Van Loan, Matrix
+//! Computations, 4th ed., Alg. 3.4.1), the forward substitution done in
+//! the same sweep and the back substitution after it.
+//!
+//! It performs nalgebra's `LU::new(J).solve(r)` operation for operation
+//! (the pivot is the first entry of largest |a| in the column; the
+//! multipliers are a_ki (1/a_ii); each update is a_kj - u_ij l_ki; the
+//! back substitution divides by u_ii), so the result is the same to the
+//! bit (checked below against nalgebra), without forming the LU and
+//! permutation objects or its dynamically sized views.
+
+use nalgebra::{Matrix6, Vector6};
+
+/// The solution of `a x = b`, or `None` where `a` is singular (a column
+/// with no non-zero pivot), as nalgebra's `a.lu().solve(b)`.
+pub(super) fn solve6(a: &Matrix6<f64>, b: &Vector6<f64>) -> Option<Vector6<f64>> {
+    // Column-major: m[c][r] is a_rc.
+    let mut m = a.data.0;
+    let mut x = b.data.0[0];
+    // One function per elimination step: its bounds are constants, so
+    // every loop unrolls without index checks.
+    eliminate::<0>(&mut m, &mut x)?;
+    eliminate::<1>(&mut m, &mut x)?;
+    eliminate::<2>(&mut m, &mut x)?;
+    eliminate::<3>(&mut m, &mut x)?;
+    eliminate::<4>(&mut m, &mut x)?;
+    eliminate::<5>(&mut m, &mut x)?;
+    for i in (0..6).rev() {
+        if m[i][i] == 0.0 {
+            return None;
+        }
+        let c = x[i] / m[i][i];
+        x[i] = c;
+        for k in 0..i {
+            x[k] -= c * m[i][k];
+        }
+    }
+    Some(Vector6::from(x))
+}
+
+/// Step `I` of the elimination: pivot on column `I`, the multipliers
+/// l_rI = a_rI / a_II of the rows below, their forward substitution into
+/// `x`, and the update of the columns right of `I`. `None`: no pivot.
+#[inline(always)]
+fn eliminate<const I: usize>(m: &mut [[f64; 6]; 6], x: &mut [f64; 6]) -> Option<()> {
+    let mut piv = I;
+    let mut max = m[I][I].abs();
+    for (r, v) in m[I].iter().enumerate().skip(I + 1) {
+        if v.abs() > max {
+            max = v.abs();
+            piv = r;
+        }
+    }
+    if max == 0.0 {
+        return None;
+    }
+    if piv != I {
+        for col in m.iter_mut() {
+            col.swap(I, piv);
+        }
+        x.swap(I, piv);
+    }
+    let inv = 1.0 / m[I][I];
+    for r in I + 1..6 {
+        m[I][r] *= inv;
+        x[r] -= x[I] * m[I][r];
+    }
+    let l = m[I];
+    for col in m.iter_mut().skip(I + 1) {
+        let u = col[I];
+        for r in I + 1..6 {
+            col[r] -= u * l[r];
+        }
+    }
+    Some(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    #[test]
+    fn equals_nalgebra_lu_to_the_bit() {
+        let mut rng = ChaCha8Rng::seed_from_u64(6);
+        for k in 0..2000 {
+            // Entries over many decades (as a Jacobian with N/m and N m
+            // blocks), some rows swapped by the pivoting.
+            let a = Matrix6::from_fn(|_, _| {
+                rng.random_range(-1.0..1.0) * 10f64.powi(rng.random_range(-3..9))
+            });
+            let b = Vector6::from_fn(|_, _| rng.random_range(-1.0..1.0));
+            let reference = a.lu().solve(&b).unwrap();
+            let x = solve6(&a, &b).unwrap();
+            assert_eq!(x, reference, "case {k}");
+            // and it solves the system (the residual of a backward-stable solve)
+            let r = a * x - b;
+            assert!(r.amax() < 1e-6 * (a.amax() * x.amax() + 1.0), "case {k}");
+        }
+    }
+
+    #[test]
+    fn singular_is_none_as_in_nalgebra() {
+        let mut a = Matrix6::from_fn(|r, c| (r * 6 + c) as f64 + 1.0);
+        a.set_column(2, &Vector6::zeros());
+        let b = Vector6::from_element(1.0);
+        assert!(a.lu().solve(&b).is_none());
+        assert!(solve6(&a, &b).is_none());
+    }
+}

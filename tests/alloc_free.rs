@@ -1,0 +1,123 @@
+//! The seating hot loop allocates nothing: a counting global allocator
+//! (per thread, so that other tests of this binary do not disturb the
+//! count) around seatings of scenes 01, 02 and 06 in a reused
+//! [`Workspace`]. After one warm-up seating has grown the workspace's
+//! buffers, the next seatings (other friction vectors, every increment and
+//! Newton iteration of them, at 20 and at 60 increments) must make zero
+//! allocations, and give the same bits as a seating in a fresh workspace
+//! (the reuse carries nothing over from one seating to the next). A
+//! seating in a fresh workspace, with its per-contact report, does
+//! allocate: the counter sees the seating's allocations.
+
+mod common;
+use common::load;
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+use kinrepro::solve::quasistatic::{SeatingSetup, Workspace, seat_in, seat_prepared};
+use kinrepro::solve::{SeatingPath, SolverOptions};
+
+struct Counting;
+
+thread_local! {
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+
+fn count() {
+    // `try_with`: the thread's counter may already be gone at thread exit.
+    let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
+}
+
+// SAFETY: every call is forwarded unchanged to the system allocator.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        count();
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        count();
+        unsafe { System.alloc_zeroed(layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        count();
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+fn allocations() -> usize {
+    ALLOCATIONS.with(Cell::get)
+}
+
+/// Friction vectors in mu0 +- spread (fixed, so the count is reproducible).
+fn frictions(mu0: f64, spread: f64, n: usize) -> Vec<Vec<f64>> {
+    (0..8)
+        .map(|k| {
+            (0..n)
+                .map(|i| {
+                    let u = ((7 * k + 3 * i + 1) % 11) as f64 / 10.0;
+                    mu0 + spread * (2.0 * u - 1.0)
+                })
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn a_seating_in_a_reused_workspace_allocates_nothing() {
+    let opts = SolverOptions::default();
+    for name in [
+        "01_maxwell_vgroove_steel.toml",
+        "02_maxwell_pins_steel.toml",
+        "06_kelvin_steel.toml",
+    ] {
+        let c = load(name);
+        let f = &c.scene.friction;
+        let mus = frictions(f.mu_static, f.spread, c.contacts.len());
+        let setup = SeatingSetup::new(&c);
+        let mut ws = Workspace::new();
+        seat_in(&setup, &mus[0], &opts, &mut ws).unwrap();
+        let before = allocations();
+        seat_prepared(&setup, &mus[0], &opts).unwrap();
+        assert!(
+            allocations() > before,
+            "{name}: a fresh workspace allocates"
+        );
+        // The buffers depend on the contact count only: the count stays
+        // zero with three times the increments (and Newton iterations).
+        for increments in [opts.increments, 3 * opts.increments] {
+            let opts = SolverOptions { increments, ..opts };
+            let mut poses = Vec::with_capacity(mus.len());
+            let before = allocations();
+            for mu in &mus[1..] {
+                poses.push(seat_in(&setup, mu, &opts, &mut ws).unwrap());
+            }
+            let made = allocations() - before;
+            assert_eq!(
+                made, 0,
+                "{name}, {increments} increments: {made} allocations"
+            );
+            for (mu, seated) in mus[1..].iter().zip(&poses) {
+                assert_eq!(seated.path, SeatingPath::Uniform, "{name}: {mu:?}");
+                assert!(seated.increments >= increments, "{name}");
+                let fresh = seat_prepared(&setup, mu, &opts).unwrap();
+                assert_eq!(fresh.seated_pose(), *seated, "{name}: {mu:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn the_counter_sees_an_allocation() {
+    // The check of the check: a heap allocation on this thread is counted.
+    let before = allocations();
+    let v = std::hint::black_box(vec![1.0f64; 16]);
+    assert_eq!(allocations() - before, 1);
+    drop(v);
+}
