@@ -27,6 +27,7 @@
 
 use nalgebra::Vector3;
 
+use super::fixed3::{mat_mat, mat_vec};
 use super::friction::{FrictionLaw, SlideInput, Sliding};
 use super::mindlin::{PrincipalStiffness, project_tangential};
 use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, TangentialState};
@@ -43,7 +44,7 @@ pub(super) fn update(
     principal: Option<&PrincipalStiffness>,
 ) -> TangentialResponse {
     let fr = input.friction;
-    let trial = old.force + input.stiffness * du;
+    let trial = old.force + mat_vec(&input.stiffness, du);
     let norm = trial.norm();
     // The switch law reads no stiffness (`friction::slide`).
     let k_along = match fr.law {
@@ -76,7 +77,7 @@ pub(super) fn update(
             },
             slip: SlipState::Stick,
             d_force_d_du: input.stiffness,
-            d_force_d_fn: input.d_stiffness_d_fn * du,
+            d_force_d_fn: mat_vec(&input.d_stiffness_d_fn, du),
         },
         Some(s) => slide_response(old, &trial, du, input, &s, principal),
     }
@@ -106,11 +107,11 @@ fn slide_response(
         Some(p) => p.project(&input.normal, trial, mu * f_n),
         None => project_tangential(k, &input.normal, trial, mu * f_n),
     };
-    let dk_du = dk * du;
+    let dk_du = mat_vec(dk, du);
     let (d_force_d_du, d_force_d_fn) =
         if s.d_mu_d_trial == 0.0 && s.d_mu_d_fn == 0.0 && s.d_mu_d_k == 0.0 {
             // A constant coefficient (the switch law, a sliding decay contact).
-            (d_trial * k, mu * d_limit + d_trial * dk_du)
+            (mat_mat(&d_trial, k), mu * d_limit + mat_vec(&d_trial, &dk_du))
         } else {
             let t = trial.normalize();
             let dmu_dfn =

@@ -26,6 +26,7 @@ use nalgebra::{Matrix2, Matrix3, Matrix3x2, Vector2, Vector3};
 use std::f64::consts::PI;
 
 use super::elliptic::EllipticIntegrals;
+use super::fixed3;
 use crate::material::Material;
 
 /// k_t / a along the major and the minor axis [N/m^2] for the materials of
@@ -63,20 +64,25 @@ pub struct PrincipalStiffness {
 impl PrincipalStiffness {
     /// Principal values `k` (major, minor) about the unit normal `n`, the
     /// major axis along `major_axis` projected into the tangent plane.
+    #[inline]
     pub fn new(k: [f64; 2], n: &Vector3<f64>, major_axis: &Vector3<f64>) -> Self {
         // A circular contact: equal principal values (to rounding: the two
         // may be computed by different formulas), or no major axis to orient
         // an ellipse by. Both values are then the mean, K_t = k (I - n n^T).
-        let in_plane = (Matrix3::identity() - n * n.transpose()) * major_axis;
-        let length = in_plane.norm();
+        // 0.5 (k + k) is k exactly: equal values stay bit for bit.
+        let circle = PrincipalStiffness {
+            k: [0.5 * (k[0] + k[1]); 2],
+            axes: None,
+        };
         let round = (k[0] - k[1]).abs() <= 1e-12 * k[0].abs().max(k[1].abs());
-        if round || length <= 1e-12 * major_axis.norm() {
-            // 0.5 (k + k) is k exactly: equal values stay bit for bit.
-            let mean = 0.5 * (k[0] + k[1]);
-            return PrincipalStiffness {
-                k: [mean, mean],
-                axes: None,
-            };
+        if round || *major_axis == Vector3::zeros() {
+            // (The zero axis would fail the length test below as well.)
+            return circle;
+        }
+        let in_plane = fixed3::mat_vec(&fixed3::tangent_projector(n), major_axis);
+        let length = in_plane.norm();
+        if length <= 1e-12 * major_axis.norm() {
+            return circle;
         }
         let e1 = in_plane / length;
         PrincipalStiffness {
@@ -86,10 +92,16 @@ impl PrincipalStiffness {
     }
 
     /// The 3x3 tensor K_t in the tangent plane of `n`.
+    #[inline]
     pub fn tensor(&self, n: &Vector3<f64>) -> Matrix3<f64> {
         match self.axes {
-            None => self.k[0] * (Matrix3::identity() - n * n.transpose()),
-            Some([e1, e2]) => self.k[0] * e1 * e1.transpose() + self.k[1] * e2 * e2.transpose(),
+            // k (I - n n^T) and k1 e1 e1^T + k2 e2 e2^T, each entry as nalgebra forms it.
+            None => Matrix3::from_fn(|i, j| {
+                self.k[0] * (if i == j { 1.0 } else { 0.0 } - n[i] * n[j])
+            }),
+            Some([e1, e2]) => Matrix3::from_fn(|i, j| {
+                self.k[0] * e1[i] * e1[j] + self.k[1] * e2[i] * e2[j]
+            }),
         }
     }
 
@@ -104,6 +116,7 @@ impl PrincipalStiffness {
     /// ```
     /// An elliptical contact projects in its principal axes by
     /// [`project_on_circle`]. Returns (F, dF/dF_trial, dF/dL).
+    #[inline]
     pub fn project(
         &self,
         n: &Vector3<f64>,
@@ -115,15 +128,25 @@ impl PrincipalStiffness {
                 let in_plane = trial - n * n.dot(trial);
                 let norm = in_plane.norm();
                 let t = in_plane / norm;
-                let a = limit.max(0.0) / norm;
-                let d_trial = a * (Matrix3::identity() - n * n.transpose() - t * t.transpose());
-                (t * limit.max(0.0), d_trial, t)
+                let limit = limit.max(0.0);
+                let a = limit / norm;
+                // a ((I - n n^T) - t t^T), entry by entry as nalgebra forms it.
+                let d_trial = Matrix3::from_fn(|i, j| {
+                    a * (if i == j { 1.0 } else { 0.0 } - n[i] * n[j] - t[i] * t[j])
+                });
+                (t * limit, d_trial, t)
             }
             Some([e1, e2]) => {
-                let e = Matrix3x2::from_columns(&[e1, e2]);
                 let local = Vector2::new(e1.dot(trial), e2.dot(trial));
-                let (f, d_trial, d_limit) = project_on_circle(self.k, &local, limit);
-                (e * f, e * d_trial * e.transpose(), e * d_limit)
+                let (f, d, d_limit) = project_on_circle(self.k, &local, limit);
+                // E f, E d E^T and E d_limit with E = [e1 e2] (3x2), in
+                // nalgebra's order: (E d)_ik = e1_i d_0k + e2_i d_1k, then
+                // (E d E^T)_ij = (E d)_i0 e1_j + (E d)_i1 e2_j.
+                let in_3d = |v: &Vector2<f64>| Vector3::from_fn(|i, _| e1[i] * v.x + e2[i] * v.y);
+                let column = |k: usize| Vector2::new(d[(0, k)], d[(1, k)]);
+                let ed = [in_3d(&column(0)), in_3d(&column(1))];
+                let d_trial = Matrix3::from_fn(|i, j| ed[0][i] * e1[j] + ed[1][i] * e2[j]);
+                (in_3d(&f), d_trial, in_3d(&d_limit))
             }
         }
     }

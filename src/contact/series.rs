@@ -22,11 +22,19 @@ pub struct SeriesNormal {
     pub hertz: HertzLaw,
     /// Support compliance c >= 0 [m/N].
     pub compliance: f64,
+    /// q = K^(-2/3) of `hertz`, computed once in [`Self::new`] (the Newton
+    /// iteration of [`Self::force_and_stiffness`] reads it at every
+    /// evaluation; kinrepro never changes a law after building it).
+    q: f64,
 }
 
 impl SeriesNormal {
     pub fn new(hertz: HertzLaw, compliance: f64) -> Self {
-        SeriesNormal { hertz, compliance }
+        SeriesNormal {
+            hertz,
+            compliance,
+            q: hertz.hertz_constant.powf(-2.0 / 3.0),
+        }
     }
 
     /// Total approach delta(F) = (F/K)^(2/3) + c F for a load F >= 0.
@@ -45,13 +53,26 @@ impl SeriesNormal {
     }
 
     /// Normal force F(delta) (0 for delta <= 0) and stiffness dF/d delta.
+    #[inline]
     pub fn force_and_stiffness(&self, approach: f64) -> (f64, f64) {
         let h = &self.hertz;
         let c = self.compliance;
         if c == 0.0 || approach <= 0.0 {
-            return (h.force(approach), h.stiffness(approach));
+            // Hertz alone (HertzLaw::force and ::stiffness, one square root).
+            if !(approach > 0.0) {
+                return (0.0, 0.0);
+            }
+            let root = approach.sqrt();
+            return (h.hertz_constant * approach * root, 1.5 * h.hertz_constant * root);
         }
-        let q = h.hertz_constant.powf(-2.0 / 3.0);
+        self.series_force_and_stiffness(approach)
+    }
+
+    /// [`Self::force_and_stiffness`] with a compliance c > 0 and delta > 0:
+    /// the Newton iteration of the module docs.
+    fn series_force_and_stiffness(&self, approach: f64) -> (f64, f64) {
+        let c = self.compliance;
+        let q = self.q;
         let mut t = (approach / q).sqrt().min((approach / c).cbrt());
         for _ in 0..100 {
             let r = c * t * t * t + q * t * t - approach;
