@@ -87,13 +87,24 @@ impl Row {
     /// Cell j's limit of |q| at load p and radius a: delta* times the cell
     /// average of (1 - x^2/a^2) over its part in contact.
     fn limit(&self, j: usize, p: f64, a: f64) -> f64 {
+        self.limit_at(j, a, self.delta_star(p, a))
+    }
+
+    /// delta* = 3 mu p / (16 G* a), the part of [`Self::limit`] common to
+    /// all cells (computed once per sweep over the row).
+    fn delta_star(&self, p: f64, a: f64) -> f64 {
+        3.0 * self.mu * p / (16.0 * self.g_star * a)
+    }
+
+    /// [`Self::limit`] with delta* given.
+    fn limit_at(&self, j: usize, a: f64, delta_star: f64) -> f64 {
         let x0 = j as f64 * self.h;
         let x1 = ((j + 1) as f64 * self.h).min(a);
         if x1 <= x0 {
             return 0.0;
         }
         let integral = (x1 - x0) - (x1.powi(3) - x0.powi(3)) / (3.0 * a * a);
-        3.0 * self.mu * p / (16.0 * self.g_star * a) * integral / self.h
+        delta_star * integral / self.h
     }
 
     /// Cap cell j at `limit`, chaining the derivative: the closest point in
@@ -138,6 +149,7 @@ impl Row {
     /// Normal stage: the radius goes from `self.a` to `a` at load `p`.
     fn normal(&mut self, p: f64, a: f64) {
         self.fit(a);
+        let delta_star = self.delta_star(p, a);
         for j in 0..SPRINGS {
             let (w_old, w_new) = (self.weight(j, self.a), self.weight(j, a));
             if w_new == 0.0 {
@@ -151,7 +163,7 @@ impl Row {
                 self.q[j] *= s;
                 self.d[j] *= s;
             }
-            let l = self.limit(j, p, a);
+            let l = self.limit_at(j, a, delta_star);
             self.cap(j, l);
         }
         self.a = a;
@@ -161,6 +173,7 @@ impl Row {
     /// whether every cell in contact is then at its limit (gross slip).
     fn tangential(&mut self, p: f64, c: &Matrix2<f64>, du: &Vector2<f64>) -> bool {
         let mut all_capped = true;
+        let delta_star = self.delta_star(p, self.a);
         for j in 0..SPRINGS {
             let w = self.weight(j, self.a);
             if w == 0.0 {
@@ -168,7 +181,7 @@ impl Row {
             }
             self.q[j] += w * c * du;
             self.d[j] += w * c;
-            let l = self.limit(j, p, self.a);
+            let l = self.limit_at(j, self.a, delta_star);
             all_capped &= self.cap(j, l) || self.q[j].norm() >= l * (1.0 - 1e-12);
         }
         all_capped
@@ -294,11 +307,17 @@ fn d_force_d_load(row: &Row, p: f64, basis: &Matrix3x2<f64>) -> Vector3<f64> {
         row.a * ((p - eps) / p).cbrt(),
     );
     let mut sum = Vector2::zeros();
+    let delta_star = [
+        row.delta_star(p, row.a),
+        row.delta_star(p + eps, a_p),
+        row.delta_star(p - eps, a_m),
+    ];
     for j in 0..SPRINGS {
-        let l = row.limit(j, p, row.a);
+        let l = row.limit_at(j, row.a, delta_star[0]);
         let norm = row.q[j].norm();
         if l > 0.0 && norm >= l * (1.0 - 1e-12) {
-            let dl = (row.limit(j, p + eps, a_p) - row.limit(j, p - eps, a_m)) / (2.0 * eps);
+            let dl = (row.limit_at(j, a_p, delta_star[1]) - row.limit_at(j, a_m, delta_star[2]))
+                / (2.0 * eps);
             sum += row.q[j] / norm * dl;
         }
     }
