@@ -111,7 +111,10 @@ fn slide_response(
     let (d_force_d_du, d_force_d_fn) =
         if s.d_mu_d_trial == 0.0 && s.d_mu_d_fn == 0.0 && s.d_mu_d_k == 0.0 {
             // A constant coefficient (the switch law, a sliding decay contact).
-            (mat_mat(&d_trial, k), mu * d_limit + mat_vec(&d_trial, &dk_du))
+            (
+                mat_mat(&d_trial, k),
+                mu * d_limit + mat_vec(&d_trial, &dk_du),
+            )
         } else {
             let t = trial.normalize();
             let dmu_dfn =

@@ -96,12 +96,12 @@ impl PrincipalStiffness {
     pub fn tensor(&self, n: &Vector3<f64>) -> Matrix3<f64> {
         match self.axes {
             // k (I - n n^T) and k1 e1 e1^T + k2 e2 e2^T, each entry as nalgebra forms it.
-            None => Matrix3::from_fn(|i, j| {
-                self.k[0] * (if i == j { 1.0 } else { 0.0 } - n[i] * n[j])
-            }),
-            Some([e1, e2]) => Matrix3::from_fn(|i, j| {
-                self.k[0] * e1[i] * e1[j] + self.k[1] * e2[i] * e2[j]
-            }),
+            None => {
+                Matrix3::from_fn(|i, j| self.k[0] * (if i == j { 1.0 } else { 0.0 } - n[i] * n[j]))
+            }
+            Some([e1, e2]) => {
+                Matrix3::from_fn(|i, j| self.k[0] * e1[i] * e1[j] + self.k[1] * e2[i] * e2[j])
+            }
         }
     }
 

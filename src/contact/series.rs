@@ -59,11 +59,14 @@ impl SeriesNormal {
         let c = self.compliance;
         if c == 0.0 || approach <= 0.0 {
             // Hertz alone (HertzLaw::force and ::stiffness, one square root).
-            if !(approach > 0.0) {
-                return (0.0, 0.0);
+            if approach > 0.0 {
+                let root = approach.sqrt();
+                return (
+                    h.hertz_constant * approach * root,
+                    1.5 * h.hertz_constant * root,
+                );
             }
-            let root = approach.sqrt();
-            return (h.hertz_constant * approach * root, 1.5 * h.hertz_constant * root);
+            return (0.0, 0.0);
         }
         self.series_force_and_stiffness(approach)
     }
