@@ -37,6 +37,7 @@ use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, Ta
 /// The decay law's slip increment uses the stiffness along the trial force,
 /// k = t^T K_t t (t = F_trial/|F_trial|): exact for a circular contact, the
 /// stiffness of the load direction for an elliptical one.
+#[inline]
 pub(super) fn update(
     old: &TangentialState,
     du: &Vector3<f64>,
@@ -92,6 +93,7 @@ pub(super) fn update(
 /// dF/d(du) = (dF/dF_trial) K + (dF/dL) F_n (dmu/dT) t^T K,
 /// dF/dF_n = (dF/dL) (mu + F_n dmu/dF_n) + (dF/dF_trial) (dK/dF_n) du,
 /// dmu/dF_n total through T (dT/dF_n = t . K' du), F_n and k (dk/dF_n = t^T K' t).
+#[inline]
 fn slide_response(
     old: &TangentialState,
     trial: &Vector3<f64>,
