@@ -287,6 +287,66 @@ mod tests {
         assert!((dl - d_limit).norm() < 1e-8);
     }
 
+    /// The entry-by-entry K_t and projections against the same formulas in
+    /// nalgebra's matrix expressions, bit for bit, for circles and ellipses
+    /// about many normals: the seating's answers do not depend on which of
+    /// the two is compiled.
+    #[test]
+    fn written_out_tensor_and_projections_are_the_matrix_expressions_bit_for_bit() {
+        let bits = |m: &[f64]| m.iter().map(|e| e.to_bits()).collect::<Vec<_>>();
+        let mut s: u64 = 0x853C_49E6_748F_EA9B;
+        let mut next = move || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        for case in 0..4000 {
+            let n = Vector3::new(next(), next(), next()).normalize();
+            let axis = Vector3::new(next(), next(), next());
+            let k = if case % 2 == 0 {
+                [3.1e7, 3.1e7]
+            } else {
+                [2.9e7 * (1.0 + next()), 3.3e7]
+            };
+            let p = PrincipalStiffness::new(k, &n, &axis);
+            let proj = Matrix3::identity() - n * n.transpose();
+            let tensor = match p.axes {
+                None => p.k[0] * proj,
+                Some([e1, e2]) => {
+                    let in_plane = proj * axis;
+                    assert_eq!(
+                        bits(e1.as_slice()),
+                        bits((in_plane / in_plane.norm()).as_slice())
+                    );
+                    assert_eq!(bits(e2.as_slice()), bits(n.cross(&e1).as_slice()));
+                    p.k[0] * e1 * e1.transpose() + p.k[1] * e2 * e2.transpose()
+                }
+            };
+            assert_eq!(bits(p.tensor(&n).as_slice()), bits(tensor.as_slice()));
+            let trial = Vector3::new(next(), next(), next()) * 4.0;
+            let limit = 0.1 + 0.2 * next().abs();
+            let (f, d_trial, d_limit) = p.project(&n, &trial, limit);
+            let (g, g_trial, g_limit) = match p.axes {
+                None => {
+                    let in_plane = trial - n * n.dot(&trial);
+                    let t = in_plane / in_plane.norm();
+                    let a = limit / in_plane.norm();
+                    (t * limit, a * (proj - t * t.transpose()), t)
+                }
+                Some([e1, e2]) => {
+                    let e = Matrix3x2::from_columns(&[e1, e2]);
+                    let local = Vector2::new(e1.dot(&trial), e2.dot(&trial));
+                    let (f, d, dl) = project_on_circle(p.k, &local, limit);
+                    (e * f, e * d * e.transpose(), e * dl)
+                }
+            };
+            assert_eq!(bits(f.as_slice()), bits(g.as_slice()), "{case}");
+            assert_eq!(bits(d_trial.as_slice()), bits(g_trial.as_slice()), "{case}");
+            assert_eq!(bits(d_limit.as_slice()), bits(g_limit.as_slice()), "{case}");
+        }
+    }
+
     /// Principal values equal but for rounding, or a major axis along the
     /// normal (none in the tangent plane), are a circular contact: the
     /// radial return, finite, never an ellipse oriented by a zero vector.

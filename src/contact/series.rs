@@ -105,3 +105,35 @@ impl SeriesNormal {
         0.4 * self.hertz.hertz_constant * dh * dh * dh.sqrt() + 0.5 * self.compliance * f * f
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Without a compliance the law is Hertz's own F and dF/d delta, bit for
+    /// bit (one square root shared instead of two); with one, the stored
+    /// K^(-2/3) is the one computed at every call before.
+    #[test]
+    fn hertz_alone_bit_for_bit_and_the_series_root_on_its_equation() {
+        let hertz = HertzLaw::circular(5e-3, 115.4e9);
+        let alone = SeriesNormal::new(hertz, 0.0);
+        for delta in [-1e-9, 0.0, 1e-12, 3.3e-7, 5e-7, 2e-6, f64::NAN] {
+            let (f, k) = alone.force_and_stiffness(delta);
+            assert_eq!(f.to_bits(), hertz.force(delta).to_bits(), "{delta}");
+            assert_eq!(k.to_bits(), hertz.stiffness(delta).to_bits(), "{delta}");
+        }
+        let c = 2.5e-8;
+        let series = SeriesNormal::new(hertz, c);
+        assert_eq!(
+            series.q.to_bits(),
+            hertz.hertz_constant.powf(-2.0 / 3.0).to_bits()
+        );
+        for delta in [1e-9, 3.3e-7, 5e-7, 2e-6] {
+            // delta(F) = (F/K)^(2/3) + c F, springs in series.
+            let (f, k) = series.force_and_stiffness(delta);
+            assert!((series.approach(f) / delta - 1.0).abs() < 1e-13, "{delta}");
+            let k_hertz = hertz.stiffness(hertz.approach(f));
+            assert!((k / (k_hertz / (1.0 + c * k_hertz)) - 1.0).abs() < 1e-12);
+        }
+    }
+}
