@@ -1,52 +1,73 @@
-//! One Hertz + tangential update per iteration, for each contact shape and
-//! law: Coulomb with the switch and the decay friction law, and
-//! Mindlin-Deresiewicz with its 128 springs.
+//! The contact laws, for each contact shape and law: Coulomb with the switch
+//! and the decay friction law, and Mindlin-Deresiewicz with its 128 springs.
+//!
+//! - `hertz+LAW update/SHAPE`: Hertz force, semi-axes, K_t by its principal
+//!   axes, the tensor and the tangential update, all in the timed loop (the
+//!   figures of earlier notes refer to these names).
+//! - `update alone/LAW/SHAPE/STATE`: only `TangentialState::update_with`, its
+//!   input prepared once as the solver's contact layer prepares it
+//!   (`solve::contact_layer::evaluate_moved`), from a committed state that
+//!   sticks (`stick`) or slides (`slide`: the trial force leaves the cone).
+//! - `law work per evaluation/LAW/SHAPE/slide`: everything the contact layer
+//!   asks of `contact` at one evaluation: F_n and k_n (Hertz in series with
+//!   a support compliance), a = c_a F^(1/3) by the fast cube root, K_t by
+//!   its principal axes, its tensor and dK_t/dF_n, and the update.
 
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::contact::{
-    ContactPair, ContactShape, Friction, FrictionLaw, PrincipalStiffness, TangentialInput,
-    TangentialLaw, TangentialState, tangential_tensor,
+    ContactLaw, ContactPair, ContactShape, Friction, FrictionLaw, PrincipalStiffness, SeriesNormal,
+    TangentialInput, TangentialLaw, TangentialState, tangential_tensor,
 };
 use kinrepro::material::Material;
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
+
+/// The pair of each shape: a 5 mm steel ball on a flat, a 2 mm ball, a
+/// 6 mm seat or a 2 mm pin.
+fn law_of(shape: ContactShape) -> ContactLaw {
+    let steel = Material::builtin("steel").unwrap();
+    ContactPair {
+        shape,
+        radius1: 5e-3,
+        radius2: Some(if shape == ContactShape::SphereSeat {
+            6e-3
+        } else {
+            2e-3
+        }),
+        material1: steel.clone(),
+        material2: steel,
+    }
+    .law()
+    .unwrap()
+}
+
+/// The three laws benched: (tangential law, friction, label).
+fn laws() -> [(TangentialLaw, Friction, &'static str); 3] {
+    let decay = Friction {
+        law: FrictionLaw::Decay { coefficient: 1e6 },
+        ..Friction::switch(0.5, 0.4)
+    };
+    [
+        (
+            TangentialLaw::Coulomb,
+            Friction::switch(0.5, 0.4),
+            "coulomb",
+        ),
+        (TangentialLaw::Coulomb, decay, "coulomb (decay friction)"),
+        (
+            TangentialLaw::MindlinDeresiewicz,
+            Friction::switch(0.5, 0.4),
+            "mindlin-deresiewicz",
+        ),
+    ]
+}
 
 fn contact_update(c: &mut Criterion) {
-    let steel = Material::builtin("steel").unwrap();
     for shape in ContactShape::ALL {
-        let law = ContactPair {
-            shape,
-            radius1: 5e-3,
-            radius2: Some(if shape == ContactShape::SphereSeat {
-                6e-3
-            } else {
-                2e-3
-            }),
-            material1: steel.clone(),
-            material2: steel.clone(),
-        }
-        .law()
-        .unwrap();
+        let law = law_of(shape);
         let normal = Vector3::new(0.0, 1.0, 1.0).normalize();
-        let decay = Friction {
-            law: FrictionLaw::Decay { coefficient: 1e6 },
-            ..Friction::switch(0.5, 0.4)
-        };
-        let laws = [
-            (
-                TangentialLaw::Coulomb,
-                Friction::switch(0.5, 0.4),
-                "coulomb",
-            ),
-            (TangentialLaw::Coulomb, decay, "coulomb (decay friction)"),
-            (
-                TangentialLaw::MindlinDeresiewicz,
-                Friction::switch(0.5, 0.4),
-                "mindlin-deresiewicz",
-            ),
-        ];
-        for (tl, friction, label) in laws {
+        for (tl, friction, label) in laws() {
             let fn0 = law.hertz.force(4.9e-7);
             let state = TangentialState {
                 normal_force: fn0,
@@ -86,5 +107,182 @@ fn contact_update(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, contact_update);
+/// One contact as the contact layer sees it: the normal and the major axis
+/// (along the pin for sphere-cylinder, none otherwise), the committed normal
+/// force and this evaluation's approach, and the tangential increment.
+struct Setting {
+    normal: Vector3<f64>,
+    major_axis: Vector3<f64>,
+    committed_fn: f64,
+    approach: f64,
+    du: Vector3<f64>,
+}
+
+impl Setting {
+    fn new(shape: ContactShape, law: &ContactLaw) -> Self {
+        // The normal turned slightly since the last commit (as in a seating).
+        let normal = Vector3::new(0.0, 0.7072, 0.7070).normalize();
+        let major_axis = if shape == ContactShape::SphereCylinder {
+            Vector3::new(1.0, 0.0, 0.0)
+        } else {
+            Vector3::zeros()
+        };
+        Setting {
+            normal,
+            major_axis,
+            committed_fn: law.hertz.force(4.9e-7),
+            approach: 5e-7,
+            du: Vector3::new(0.8, 0.6, -0.6).normalize() * 1e-8,
+        }
+    }
+
+    /// The contact layer's preparation (`evaluate_moved`): K_t at the mean
+    /// normal force of the increment, its derivative, the MDR shape.
+    fn input(
+        &self,
+        law: &ContactLaw,
+        normal_law: &SeriesNormal,
+        tl: TangentialLaw,
+        friction: Friction,
+    ) -> (TangentialInput, PrincipalStiffness) {
+        let (fn_, _) = normal_law.force_and_stiffness(self.approach);
+        let f_mid = 0.5 * (self.committed_fn + fn_);
+        let a_mid = law.hertz.major_semi_axis_fast(f_mid);
+        let principal = PrincipalStiffness::new(
+            law.mindlin.map(|c| c * a_mid),
+            &self.normal,
+            &self.major_axis,
+        );
+        let kt = principal.tensor(&self.normal);
+        let dkt = kt * (1.0 / (6.0 * f_mid));
+        let (contact_radius, mindlin_shape) = match tl {
+            TangentialLaw::Coulomb => (0.0, Matrix3::zeros()),
+            TangentialLaw::MindlinDeresiewicz => {
+                let [a, b] = law.hertz.semi_axes(fn_);
+                let shape = law
+                    .mindlin
+                    .map(|c| c / (8.0 * law.g_star * law.hertz.axis_ratio.sqrt()));
+                (
+                    (a * b).sqrt(),
+                    tangential_tensor(shape, &self.normal, &self.major_axis),
+                )
+            }
+        };
+        let input = TangentialInput {
+            normal: self.normal,
+            du: self.du,
+            normal_force: fn_,
+            stiffness: kt,
+            d_stiffness_d_fn: dkt,
+            contact_radius,
+            g_star: law.g_star,
+            mindlin_shape,
+            friction: friction.during(0.05),
+        };
+        (input, principal)
+    }
+
+    /// A committed state of the old normal that sticks (`slide` false: no
+    /// force yet) or slides on (sliding at 0.99 mu_s F_n, so the trial force
+    /// leaves the mu_d cone), after one committed update so that a
+    /// Mindlin-Deresiewicz contact carries its spring row.
+    fn committed(
+        &self,
+        tl: TangentialLaw,
+        input: &TangentialInput,
+        principal: &PrincipalStiffness,
+        slide: bool,
+    ) -> TangentialState {
+        let old_normal = Vector3::new(0.0, 1.0, 1.0).normalize();
+        let tangent = (self.du - old_normal * old_normal.dot(&self.du)).normalize();
+        let first = TangentialState {
+            normal_force: self.committed_fn,
+            ..TangentialState::new(old_normal)
+        };
+        let mut state = if tl == TangentialLaw::MindlinDeresiewicz {
+            // Load the row once (a step that ends at the committed force).
+            let step = TangentialInput {
+                normal: old_normal,
+                du: tangent * if slide { 1e-6 } else { 1e-9 },
+                normal_force: self.committed_fn,
+                ..*input
+            };
+            first.update_with(tl, &step, Some(principal)).state
+        } else {
+            TangentialState {
+                force: tangent
+                    * if slide {
+                        0.99 * 0.5 * self.committed_fn
+                    } else {
+                        0.0
+                    },
+                sliding: slide,
+                // The decay law's coefficient at 1 um/s: 0.4 + 0.1 / e.
+                slip_velocity: if slide { 1e-6 } else { 0.0 },
+                ..first
+            }
+        };
+        state.normal = old_normal;
+        state.normal_force = self.committed_fn;
+        state
+    }
+}
+
+fn update_alone(c: &mut Criterion) {
+    for shape in ContactShape::ALL {
+        let law = law_of(shape);
+        let normal_law = SeriesNormal::new(law.hertz, 0.0);
+        let setting = Setting::new(shape, &law);
+        for (tl, friction, label) in laws() {
+            let (input, principal) = setting.input(&law, &normal_law, tl, friction);
+            for slide in [false, true] {
+                let state = setting.committed(tl, &input, &principal, slide);
+                let which = if slide { "slide" } else { "stick" };
+                let want = if slide {
+                    kinrepro::contact::SlipState::Slip
+                } else {
+                    kinrepro::contact::SlipState::Stick
+                };
+                assert_eq!(
+                    state.update_with(tl, &input, Some(&principal)).slip,
+                    want,
+                    "{label} {} {which}",
+                    shape.name()
+                );
+                let name = format!("update alone/{label}/{}/{which}", shape.name());
+                c.bench_function(&name, |b| {
+                    b.iter(|| {
+                        black_box(&state).update_with(
+                            tl,
+                            black_box(&input),
+                            Some(black_box(&principal)),
+                        )
+                    })
+                });
+            }
+        }
+    }
+}
+
+fn per_evaluation(c: &mut Criterion) {
+    for shape in ContactShape::ALL {
+        let law = law_of(shape);
+        let normal_law = SeriesNormal::new(law.hertz, 0.0);
+        let setting = Setting::new(shape, &law);
+        for (tl, friction, label) in laws() {
+            let (input, principal) = setting.input(&law, &normal_law, tl, friction);
+            let state = setting.committed(tl, &input, &principal, true);
+            let name = format!("law work per evaluation/{label}/{}/slide", shape.name());
+            c.bench_function(&name, |b| {
+                b.iter(|| {
+                    let (input, principal) =
+                        black_box(&setting).input(&law, &normal_law, tl, friction);
+                    black_box(&state).update_with(tl, &input, Some(&principal))
+                })
+            });
+        }
+    }
+}
+
+criterion_group!(benches, contact_update, update_alone, per_evaluation);
 criterion_main!(benches);

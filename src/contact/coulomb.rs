@@ -27,6 +27,7 @@
 
 use nalgebra::Vector3;
 
+use super::fixed3::{mat_mat, mat_vec};
 use super::friction::{FrictionLaw, SlideInput, Sliding};
 use super::mindlin::{PrincipalStiffness, project_tangential};
 use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, TangentialState};
@@ -36,6 +37,7 @@ use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, Ta
 /// The decay law's slip increment uses the stiffness along the trial force,
 /// k = t^T K_t t (t = F_trial/|F_trial|): exact for a circular contact, the
 /// stiffness of the load direction for an elliptical one.
+#[inline]
 pub(super) fn update(
     old: &TangentialState,
     du: &Vector3<f64>,
@@ -43,7 +45,7 @@ pub(super) fn update(
     principal: Option<&PrincipalStiffness>,
 ) -> TangentialResponse {
     let fr = input.friction;
-    let trial = old.force + input.stiffness * du;
+    let trial = old.force + mat_vec(&input.stiffness, du);
     let norm = trial.norm();
     // The switch law reads no stiffness (`friction::slide`).
     let k_along = match fr.law {
@@ -76,7 +78,7 @@ pub(super) fn update(
             },
             slip: SlipState::Stick,
             d_force_d_du: input.stiffness,
-            d_force_d_fn: input.d_stiffness_d_fn * du,
+            d_force_d_fn: mat_vec(&input.d_stiffness_d_fn, du),
         },
         Some(s) => slide_response(old, &trial, du, input, &s, principal),
     }
@@ -91,6 +93,7 @@ pub(super) fn update(
 /// dF/d(du) = (dF/dF_trial) K + (dF/dL) F_n (dmu/dT) t^T K,
 /// dF/dF_n = (dF/dL) (mu + F_n dmu/dF_n) + (dF/dF_trial) (dK/dF_n) du,
 /// dmu/dF_n total through T (dT/dF_n = t . K' du), F_n and k (dk/dF_n = t^T K' t).
+#[inline]
 fn slide_response(
     old: &TangentialState,
     trial: &Vector3<f64>,
@@ -106,11 +109,14 @@ fn slide_response(
         Some(p) => p.project(&input.normal, trial, mu * f_n),
         None => project_tangential(k, &input.normal, trial, mu * f_n),
     };
-    let dk_du = dk * du;
+    let dk_du = mat_vec(dk, du);
     let (d_force_d_du, d_force_d_fn) =
         if s.d_mu_d_trial == 0.0 && s.d_mu_d_fn == 0.0 && s.d_mu_d_k == 0.0 {
             // A constant coefficient (the switch law, a sliding decay contact).
-            (d_trial * k, mu * d_limit + d_trial * dk_du)
+            (
+                mat_mat(&d_trial, k),
+                mu * d_limit + mat_vec(&d_trial, &dk_du),
+            )
         } else {
             let t = trial.normalize();
             let dmu_dfn =

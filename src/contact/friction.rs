@@ -123,6 +123,7 @@ pub struct SlideInput {
 }
 
 /// Stick (`None`) or slide with the returned coefficient.
+#[inline]
 pub fn slide(x: &SlideInput) -> Option<Sliding> {
     match x.law {
         FrictionLaw::Switch => {

@@ -76,6 +76,9 @@ struct Row {
     /// Principal values and axes (columns) of the shape C in the frame.
     c: [f64; 2],
     axes: Matrix2<f64>,
+    /// Each cell's weight and limit at the end of the normal stage (the
+    /// tangential stage, at the same load and radius, reads them).
+    stage: [(f64, f64); SPRINGS],
 }
 
 impl Row {
@@ -87,33 +90,45 @@ impl Row {
     /// Cell j's limit of |q| at load p and radius a: delta* times the cell
     /// average of (1 - x^2/a^2) over its part in contact.
     fn limit(&self, j: usize, p: f64, a: f64) -> f64 {
+        self.limit_at(j, a, self.delta_star(p, a))
+    }
+
+    /// delta* = 3 mu p / (16 G* a), the part of [`Self::limit`] common to
+    /// all cells (computed once per sweep over the row).
+    fn delta_star(&self, p: f64, a: f64) -> f64 {
+        3.0 * self.mu * p / (16.0 * self.g_star * a)
+    }
+
+    /// [`Self::limit`] with delta* given.
+    fn limit_at(&self, j: usize, a: f64, delta_star: f64) -> f64 {
         let x0 = j as f64 * self.h;
         let x1 = ((j + 1) as f64 * self.h).min(a);
         if x1 <= x0 {
             return 0.0;
         }
         let integral = (x1 - x0) - (x1.powi(3) - x0.powi(3)) / (3.0 * a * a);
-        3.0 * self.mu * p / (16.0 * self.g_star * a) * integral / self.h
+        delta_star * integral / self.h
     }
 
     /// Cap cell j at `limit`, chaining the derivative: the closest point in
     /// the complementary-energy norm of C (`mindlin::project_on_circle`; radial for a
     /// circle), so that a spring slides opposite to its force.
-    fn cap(&mut self, j: usize, limit: f64) -> bool {
+    /// Returns whether it capped, and |q| before.
+    fn cap(&mut self, j: usize, limit: f64) -> (bool, f64) {
         let norm = self.q[j].norm();
         if norm <= limit {
-            return false;
+            return (false, norm);
         }
         if limit <= 0.0 {
             self.q[j] = Vector2::zeros();
             self.d[j] = Matrix2::zeros();
-            return true;
+            return (true, norm);
         }
         let r = self.axes;
         let (f, m, _) = project_on_circle(self.c, &(r.transpose() * self.q[j]), limit);
         self.q[j] = r * f;
         self.d[j] = r * m * r.transpose() * self.d[j];
-        true
+        (true, norm)
     }
 
     /// Merge cells in pairs until the row (width SPRINGS h) holds radius a.
@@ -138,8 +153,10 @@ impl Row {
     /// Normal stage: the radius goes from `self.a` to `a` at load `p`.
     fn normal(&mut self, p: f64, a: f64) {
         self.fit(a);
+        let delta_star = self.delta_star(p, a);
         for j in 0..SPRINGS {
             let (w_old, w_new) = (self.weight(j, self.a), self.weight(j, a));
+            self.stage[j].0 = w_new;
             if w_new == 0.0 {
                 self.q[j] = Vector2::zeros();
                 self.d[j] = Matrix2::zeros();
@@ -151,25 +168,28 @@ impl Row {
                 self.q[j] *= s;
                 self.d[j] *= s;
             }
-            let l = self.limit(j, p, a);
+            let l = self.limit_at(j, a, delta_star);
+            self.stage[j].1 = l;
             self.cap(j, l);
         }
         self.a = a;
     }
 
-    /// Tangential stage: every cell in contact moves by w C du. Returns
-    /// whether every cell in contact is then at its limit (gross slip).
-    fn tangential(&mut self, p: f64, c: &Matrix2<f64>, du: &Vector2<f64>) -> bool {
+    /// Tangential stage, after [`Self::normal`] (whose end load and radius
+    /// it keeps: each cell's weight and limit are the normal stage's):
+    /// every cell in contact moves by w C du. Returns whether every cell in
+    /// contact is then at its limit (gross slip).
+    fn tangential(&mut self, c: &Matrix2<f64>, du: &Vector2<f64>) -> bool {
         let mut all_capped = true;
         for j in 0..SPRINGS {
-            let w = self.weight(j, self.a);
+            let (w, l) = self.stage[j];
             if w == 0.0 {
                 continue;
             }
             self.q[j] += w * c * du;
             self.d[j] += w * c;
-            let l = self.limit(j, p, self.a);
-            all_capped &= self.cap(j, l) || self.q[j].norm() >= l * (1.0 - 1e-12);
+            let (capped, norm) = self.cap(j, l);
+            all_capped &= capped || norm >= l * (1.0 - 1e-12);
         }
         all_capped
     }
@@ -239,6 +259,7 @@ pub(super) fn update(
         g_star: input.g_star,
         c: c_principal,
         axes: c_axes,
+        stage: [(0.0, 0.0); SPRINGS],
     };
     if fresh && old.force.norm() > 0.0 {
         rebuild(&mut row, &(basis.transpose() * old.force), old.normal_force);
@@ -246,7 +267,7 @@ pub(super) fn update(
     // The normal load first, then the tangential increment at the end load
     // (so a sliding spring ends exactly at its limit mu p(x)).
     row.normal(p, a_now);
-    let gross = row.tangential(p, &c, &du2);
+    let gross = row.tangential(&c, &du2);
     if gross && !old.sliding && friction.mu_d < friction.mu_s {
         // Sudden static-to-dynamic switch: every spring drops to mu_d.
         let s = friction.mu_d / friction.mu_s;
@@ -294,11 +315,17 @@ fn d_force_d_load(row: &Row, p: f64, basis: &Matrix3x2<f64>) -> Vector3<f64> {
         row.a * ((p - eps) / p).cbrt(),
     );
     let mut sum = Vector2::zeros();
+    let delta_star = [
+        row.delta_star(p, row.a),
+        row.delta_star(p + eps, a_p),
+        row.delta_star(p - eps, a_m),
+    ];
     for j in 0..SPRINGS {
-        let l = row.limit(j, p, row.a);
+        let l = row.limit_at(j, row.a, delta_star[0]);
         let norm = row.q[j].norm();
         if l > 0.0 && norm >= l * (1.0 - 1e-12) {
-            let dl = (row.limit(j, p + eps, a_p) - row.limit(j, p - eps, a_m)) / (2.0 * eps);
+            let dl = (row.limit_at(j, a_p, delta_star[1]) - row.limit_at(j, a_m, delta_star[2]))
+                / (2.0 * eps);
             sum += row.q[j] / norm * dl;
         }
     }

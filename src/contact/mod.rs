@@ -10,6 +10,7 @@
 
 pub mod coulomb;
 pub mod elliptic;
+pub mod fixed3;
 pub mod friction;
 pub mod hertz;
 pub mod history;

@@ -22,11 +22,19 @@ pub struct SeriesNormal {
     pub hertz: HertzLaw,
     /// Support compliance c >= 0 [m/N].
     pub compliance: f64,
+    /// q = K^(-2/3) of `hertz`, computed once in [`Self::new`] (the Newton
+    /// iteration of [`Self::force_and_stiffness`] reads it at every
+    /// evaluation; kinrepro never changes a law after building it).
+    q: f64,
 }
 
 impl SeriesNormal {
     pub fn new(hertz: HertzLaw, compliance: f64) -> Self {
-        SeriesNormal { hertz, compliance }
+        SeriesNormal {
+            hertz,
+            compliance,
+            q: hertz.hertz_constant.powf(-2.0 / 3.0),
+        }
     }
 
     /// Total approach delta(F) = (F/K)^(2/3) + c F for a load F >= 0.
@@ -45,13 +53,29 @@ impl SeriesNormal {
     }
 
     /// Normal force F(delta) (0 for delta <= 0) and stiffness dF/d delta.
+    #[inline]
     pub fn force_and_stiffness(&self, approach: f64) -> (f64, f64) {
         let h = &self.hertz;
         let c = self.compliance;
         if c == 0.0 || approach <= 0.0 {
-            return (h.force(approach), h.stiffness(approach));
+            // Hertz alone (HertzLaw::force and ::stiffness, one square root).
+            if approach > 0.0 {
+                let root = approach.sqrt();
+                return (
+                    h.hertz_constant * approach * root,
+                    1.5 * h.hertz_constant * root,
+                );
+            }
+            return (0.0, 0.0);
         }
-        let q = h.hertz_constant.powf(-2.0 / 3.0);
+        self.series_force_and_stiffness(approach)
+    }
+
+    /// [`Self::force_and_stiffness`] with a compliance c > 0 and delta > 0:
+    /// the Newton iteration of the module docs.
+    fn series_force_and_stiffness(&self, approach: f64) -> (f64, f64) {
+        let c = self.compliance;
+        let q = self.q;
         let mut t = (approach / q).sqrt().min((approach / c).cbrt());
         for _ in 0..100 {
             let r = c * t * t * t + q * t * t - approach;
@@ -79,5 +103,37 @@ impl SeriesNormal {
         }
         let dh = self.hertz_approach(f);
         0.4 * self.hertz.hertz_constant * dh * dh * dh.sqrt() + 0.5 * self.compliance * f * f
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Without a compliance the law is Hertz's own F and dF/d delta, bit for
+    /// bit (one square root shared instead of two); with one, the stored
+    /// K^(-2/3) is the one computed at every call before.
+    #[test]
+    fn hertz_alone_bit_for_bit_and_the_series_root_on_its_equation() {
+        let hertz = HertzLaw::circular(5e-3, 115.4e9);
+        let alone = SeriesNormal::new(hertz, 0.0);
+        for delta in [-1e-9, 0.0, 1e-12, 3.3e-7, 5e-7, 2e-6, f64::NAN] {
+            let (f, k) = alone.force_and_stiffness(delta);
+            assert_eq!(f.to_bits(), hertz.force(delta).to_bits(), "{delta}");
+            assert_eq!(k.to_bits(), hertz.stiffness(delta).to_bits(), "{delta}");
+        }
+        let c = 2.5e-8;
+        let series = SeriesNormal::new(hertz, c);
+        assert_eq!(
+            series.q.to_bits(),
+            hertz.hertz_constant.powf(-2.0 / 3.0).to_bits()
+        );
+        for delta in [1e-9, 3.3e-7, 5e-7, 2e-6] {
+            // delta(F) = (F/K)^(2/3) + c F, springs in series.
+            let (f, k) = series.force_and_stiffness(delta);
+            assert!((series.approach(f) / delta - 1.0).abs() < 1e-13, "{delta}");
+            let k_hertz = hertz.stiffness(hertz.approach(f));
+            assert!((k / (k_hertz / (1.0 + c * k_hertz)) - 1.0).abs() < 1e-12);
+        }
     }
 }

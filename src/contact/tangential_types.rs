@@ -180,6 +180,7 @@ impl TangentialState {
     /// This state with its vectors rotated into the tangent plane of `normal`
     /// by the smallest rotation that takes the old normal to the new one
     /// (Rodrigues), so magnitudes are kept exactly.
+    #[inline]
     pub fn rotated_to(&self, normal: &Vector3<f64>) -> Self {
         if *normal == self.normal {
             return self.clone();
@@ -237,6 +238,7 @@ pub struct Rotation {
 }
 
 impl Rotation {
+    #[inline]
     pub fn between(from: &Vector3<f64>, to: &Vector3<f64>) -> Self {
         Rotation {
             w: from.cross(to),
@@ -244,6 +246,7 @@ impl Rotation {
         }
     }
 
+    #[inline]
     pub fn apply(&self, v: &Vector3<f64>) -> Vector3<f64> {
         if self.c <= -1.0 + 1e-12 {
             // Opposite normals never occur between two steps of a seating;
