@@ -19,6 +19,7 @@
 use super::error::CalibrateError;
 use crate::assembly::Coupling;
 use crate::assembly::constraint::frictionless_preload_forces;
+use crate::contact::SeriesNormal;
 use crate::scene::resolve::MU_MAX;
 
 /// The parameters `--fit` may name, in the order they are fitted and reported.
@@ -104,7 +105,7 @@ impl Param {
                     s.support_compliance = v;
                 }
                 for c in &mut coupling.contacts {
-                    c.normal.compliance = v;
+                    c.normal = SeriesNormal::new(c.normal.hertz, v);
                 }
             }
         }

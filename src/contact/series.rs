@@ -24,7 +24,8 @@ pub struct SeriesNormal {
     pub compliance: f64,
     /// q = K^(-2/3) of `hertz`, computed once in [`Self::new`] (the Newton
     /// iteration of [`Self::force_and_stiffness`] reads it at every
-    /// evaluation; kinrepro never changes a law after building it).
+    /// evaluation; it depends on `hertz` alone, so a change of `compliance`
+    /// keeps it valid, and a new Hertz law needs a new `SeriesNormal`).
     q: f64,
 }
 
