@@ -5,13 +5,15 @@
 //! the scenes. The report reads each scene file again (by the path in the
 //! JSON, as given to `study`, else relative to the JSON file's folder),
 //! checks that it is the scene the study ran (the fingerprint's
-//! `scene_content` hash), and seats it once at nominal friction for the
+//! `scene_content` hash; for a prediction, with the calibrated parameters
+//! applied, [`super::prediction`]), and seats it once at nominal friction for the
 //! drawing, the contact forces, stresses and stiffnesses. That seating is
 //! deterministic; nothing random is re-run.
 
 use std::path::{Path, PathBuf};
 
 use super::HtmlError;
+use super::prediction::PredictionInput;
 use crate::assembly::Coupling;
 use crate::report::provenance::{Fingerprint, SCHEMA_VERSION};
 use crate::report::study::StudyReport;
@@ -32,6 +34,8 @@ pub struct StudyInput {
     pub source: String,
     pub report: StudyReport,
     pub scenes: Vec<SceneInput>,
+    /// The calibration and measured sigma of a prediction (empty for a study).
+    pub prediction: PredictionInput,
 }
 
 /// The scene of an assembled coupling, its text read from `coupling.scene.file`.
@@ -64,6 +68,8 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
     if report.variants.is_empty() {
         return Err(input("no variants: nothing to report".into()));
     }
+    let prediction = PredictionInput::parse(&text)
+        .map_err(|e| input(format!("not a kinrepro study or prediction JSON: {e}")))?;
     let dir = path.parent().unwrap_or(Path::new("."));
     let mut scenes = Vec::new();
     for v in &report.variants {
@@ -86,6 +92,8 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
             file: v.scene.clone(),
             source,
         })?;
+        // A prediction ran the scene with the calibrated parameters.
+        let coupling = prediction.applied(coupling);
         let now = Fingerprint::new(&coupling, &StudyOptions::default(), &v.design).scene_content;
         if now != v.fingerprint.scene_content {
             return Err(input(format!(
@@ -101,6 +109,7 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
         source,
         report,
         scenes,
+        prediction,
     })
 }
 

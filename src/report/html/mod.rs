@@ -21,6 +21,7 @@ mod drawing;
 pub mod inputs;
 mod mechanics;
 mod page;
+pub mod prediction;
 pub mod reference;
 mod svg;
 mod tables;
@@ -96,7 +97,13 @@ impl HtmlReport {
             .iter()
             .flat_map(|s| s.report.variants.iter())
             .collect();
-        let charts = charts::study_charts(&variants, &self.references)?;
+        // Reference rows: the --reference file's, then the measured sigma
+        // of a prediction's calibrated design.
+        let mut references = self.references.clone();
+        for st in &self.studies {
+            references.extend(st.prediction.measured.iter().cloned());
+        }
+        let charts = charts::study_charts(&variants, &references)?;
         let mut body = String::new();
         let mut toc: Vec<(String, String)> = Vec::new();
         if !self.studies.is_empty() {
@@ -118,7 +125,7 @@ impl HtmlReport {
         }
         self.header(&mut body, &toc);
         if !self.studies.is_empty() {
-            self.results(&mut body, &variants);
+            self.results(&mut body, &variants, &references);
         }
         if !charts.is_empty() {
             body.push_str("<section id=\"charts\"><h2>Charts</h2>\n");
@@ -190,17 +197,14 @@ impl HtmlReport {
         body.push_str("<section id=\"run\"><h2>Run</h2>\n");
         for st in &self.studies {
             body.push_str(&tables::metadata(&st.source, &st.report));
+            body.push_str(&st.prediction.html());
         }
         body.push_str("</section>\n");
     }
 
-    fn results(&self, body: &mut String, variants: &[&VariantReport]) {
+    fn results(&self, body: &mut String, variants: &[&VariantReport], references: &[ReferenceRow]) {
         body.push_str("<section id=\"sigma\"><h2>σ tables</h2>\n<h3>Re-seating scatter (one pair of halves)</h3>\n");
-        body.push_str(&tables::sigma_table(
-            variants,
-            |v| &v.points,
-            &self.references,
-        ));
+        body.push_str(&tables::sigma_table(variants, |v| &v.points, references));
         if let Some(src) = &self.reference_source {
             let _ = writeln!(
                 body,

@@ -71,6 +71,7 @@ pub fn study_html(
         source: "this run".into(),
         report: report.clone(),
         scenes,
+        prediction: Default::default(),
     };
     write_html(vec![study], Vec::new(), reference, out, force)
 }
