@@ -131,6 +131,11 @@ pub fn calibration_table(c: &Calibration) -> String {
     for (name, v) in &c.fixed {
         s += &format!("{name}: {} (held at the scene's value)\n", value(name, *v));
     }
+    if !c.fixed.is_empty() {
+        s += "  the intervals are conditional on the held values: a held value that is wrong \
+              moves the fitted ones (a fitted support_compliance or mu_static can absorb a wrong \
+              spread); fit them together to see whether the data separate them\n";
+    }
     if let Some(r) = &c.correlation {
         s += &correlation_lines(r);
     }
