@@ -32,7 +32,7 @@ use super::friction::{FrictionLaw, SlideInput, Sliding};
 use super::mindlin::{PrincipalStiffness, project_tangential};
 use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, TangentialState};
 
-/// Coulomb return mapping; the sliding coefficient comes from the friction
+/// Coulomb return mapping into `out`; the sliding coefficient comes from the friction
 /// law ([`super::friction::slide`]: the sudden switch, or the decay law).
 /// The decay law's slip increment uses the stiffness along the trial force,
 /// k = t^T K_t t (t = F_trial/|F_trial|): exact for a circular contact, the
@@ -43,7 +43,8 @@ pub(super) fn update(
     du: &Vector3<f64>,
     input: &TangentialInput,
     principal: Option<&PrincipalStiffness>,
-) -> TangentialResponse {
+    out: &mut TangentialResponse,
+) {
     let fr = input.friction;
     let trial = old.force + mat_vec(&input.stiffness, du);
     let norm = trial.norm();
@@ -67,20 +68,14 @@ pub(super) fn update(
         previous_velocity: old.slip_velocity,
     });
     match sliding {
-        None => TangentialResponse {
-            force: trial,
-            state: TangentialState {
-                force: trial,
-                sliding: false,
-                slip_velocity: 0.0,
-                row: old.row.clone(),
-                ..*old
-            },
-            slip: SlipState::Stick,
-            d_force_d_du: input.stiffness,
-            d_force_d_fn: mat_vec(&input.d_stiffness_d_fn, du),
-        },
-        Some(s) => slide_response(old, &trial, du, input, &s, principal),
+        None => {
+            out.force = trial;
+            out.state.assign_from(old, trial, false, 0.0);
+            out.slip = SlipState::Stick;
+            out.d_force_d_du = input.stiffness;
+            out.d_force_d_fn = mat_vec(&input.d_stiffness_d_fn, du);
+        }
+        Some(s) => slide_response(old, &trial, du, input, &s, principal, out),
     }
 }
 
@@ -101,7 +96,8 @@ fn slide_response(
     input: &TangentialInput,
     s: &Sliding,
     principal: Option<&PrincipalStiffness>,
-) -> TangentialResponse {
+    out: &mut TangentialResponse,
+) {
     let f_n = input.normal_force;
     let (k, dk) = (&input.stiffness, &input.d_stiffness_d_fn);
     let mu = s.mu;
@@ -127,17 +123,10 @@ fn slide_response(
                 (mu + f_n * dmu_dfn) * d_limit + d_trial * dk_du,
             )
         };
-    TangentialResponse {
-        force,
-        state: TangentialState {
-            force,
-            sliding: true,
-            slip_velocity: s.slip / input.friction.duration,
-            row: old.row.clone(),
-            ..*old
-        },
-        slip: SlipState::Slip,
-        d_force_d_du,
-        d_force_d_fn,
-    }
+    out.force = force;
+    out.state
+        .assign_from(old, force, true, s.slip / input.friction.duration);
+    out.slip = SlipState::Slip;
+    out.d_force_d_du = d_force_d_du;
+    out.d_force_d_fn = d_force_d_fn;
 }

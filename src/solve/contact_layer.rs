@@ -43,6 +43,28 @@ pub struct ContactEval {
 }
 
 impl ContactEval {
+    /// A slot for [`evaluate_moved_into`]: an open contact at `geometry`.
+    pub fn open(geometry: ContactGeometry) -> Self {
+        ContactEval {
+            geometry,
+            approach: -geometry.gap,
+            normal_force: 0.0,
+            normal_stiffness: 0.0,
+            tangential: TangentialResponse::open(geometry.normal),
+            force: Vector3::zeros(),
+            stiffness: Matrix3::zeros(),
+        }
+    }
+
+    /// An empty slot (open, zero geometry) for the solvers' buffers.
+    pub fn empty() -> Self {
+        Self::open(ContactGeometry {
+            gap: 0.0,
+            normal: Vector3::zeros(),
+            point: Vector3::zeros(),
+        })
+    }
+
     pub fn slip(&self) -> SlipState {
         self.tangential.slip
     }
@@ -144,7 +166,6 @@ pub fn evaluate_at(
 
 /// [`evaluate_at`] with the tangential increment du = p - p_c of the
 /// contact point given (the solver forms [`Motion`] once per pose).
-#[inline]
 pub fn evaluate_moved(
     coupling: &Coupling,
     i: usize,
@@ -153,6 +174,23 @@ pub fn evaluate_moved(
     committed: &TangentialState,
     friction: Friction,
 ) -> ContactEval {
+    let mut out = ContactEval::open(g);
+    evaluate_moved_into(&mut out, coupling, i, g, du, committed, friction);
+    out
+}
+
+/// [`evaluate_moved`] written into the slot `out` (the solvers' buffers,
+/// reused across iterations: no evaluation is built and then moved).
+#[inline]
+pub fn evaluate_moved_into(
+    out: &mut ContactEval,
+    coupling: &Coupling,
+    i: usize,
+    g: ContactGeometry,
+    du: Vector3<f64>,
+    committed: &TangentialState,
+    friction: Friction,
+) {
     let contact = &coupling.contacts[i];
     let approach = -g.gap;
     let hertz = &contact.law.hertz;
@@ -201,22 +239,19 @@ pub fn evaluate_moved(
         mindlin_shape,
         friction,
     };
-    let mut tangential = committed.update_with(tangential_law, &input, Some(&principal));
+    let tangential = &mut out.tangential;
+    committed.update_into(tangential_law, &input, Some(&principal), tangential);
     tangential.state.normal_force = fn_;
     let n = g.normal;
     // d(approach) = -n . dp, so d(F_n n) = -k_n n n^T dp and
     // d(F_t) = T dp + (dF_t/dF_n)(-k_n n^T dp); the force on the body is F_n n - F_t:
     // K = -k_n (n - dF_t/dF_n) n^T - T.
-    let stiffness = (tangential.d_force_d_fn - n) * (kn * n).transpose() - tangential.d_force_d_du;
-    ContactEval {
-        geometry: g,
-        approach,
-        normal_force: fn_,
-        normal_stiffness: kn,
-        force: n * fn_ - tangential.force,
-        tangential,
-        stiffness,
-    }
+    out.stiffness = (tangential.d_force_d_fn - n) * (kn * n).transpose() - tangential.d_force_d_du;
+    out.force = n * fn_ - tangential.force;
+    out.geometry = g;
+    out.approach = approach;
+    out.normal_force = fn_;
+    out.normal_stiffness = kn;
 }
 
 #[cfg(test)]

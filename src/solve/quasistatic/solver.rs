@@ -22,7 +22,7 @@ use super::lu6::solve6;
 use crate::assembly::constraint::frictionless_preload_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
-use crate::solve::contact_layer::{ContactEval, GeometrySource, Motion, evaluate_moved};
+use crate::solve::contact_layer::{ContactEval, GeometrySource, Motion, evaluate_moved_into};
 use crate::solve::{ContactResult, SolveError, SolverOptions};
 
 /// Ball centres held on the stack by [`Solver::evaluate_all`] (a kinematic
@@ -157,7 +157,8 @@ impl<'a> Solver<'a> {
         }
     }
 
-    /// Every contact at `pose` into `out` (cleared first).
+    /// Every contact at `pose` into `out`, one slot per contact (the slots
+    /// are made once, then written in place).
     pub fn evaluate_all(
         &self,
         pose: &BodyPose,
@@ -166,14 +167,14 @@ impl<'a> Solver<'a> {
         duration: f64,
         out: &mut Vec<ContactEval>,
     ) {
-        out.clear();
+        out.resize_with(states.len(), ContactEval::empty);
         let motion = Motion::between(pose, committed_pose);
         let mut centres = [Vector3::zeros(); MAX_BALLS];
         let balls = &self.coupling.balls;
         for (c, ball) in centres.iter_mut().zip(balls) {
             *c = pose.apply(&ball.centre);
         }
-        for (i, state) in states.iter().enumerate() {
+        for (i, (state, slot)) in states.iter().zip(out.iter_mut()).enumerate() {
             let ball = self.coupling.contacts[i].ball;
             let centre = match centres.get(ball) {
                 Some(c) => *c,
@@ -184,7 +185,7 @@ impl<'a> Solver<'a> {
                 .geometry_with_centre(self.coupling, i, pose, &centre);
             let du = motion.displacement(&g.point);
             let fr = self.friction[i].during(duration);
-            out.push(evaluate_moved(self.coupling, i, g, du, state, fr));
+            evaluate_moved_into(slot, self.coupling, i, g, du, state, fr);
         }
     }
 
