@@ -36,18 +36,22 @@ impl TangentialState {
         principal: Option<&PrincipalStiffness>,
     ) -> TangentialResponse {
         let mut out = TangentialResponse::open(input.normal);
-        self.update_into(law, input, principal, &mut out);
+        self.update_into(law, input, principal, true, &mut out);
         out
     }
 
     /// [`Self::update_with`] written into `out` (the solvers' buffers: no
-    /// response is built on the stack and moved; a Mindlin-Deresiewicz
-    /// row reuses `out`'s allocation). The same operations, the same bits.
+    /// response is built on the stack and moved). With `tangent` false the
+    /// consistent tangent (`d_force_d_du`, `d_force_d_fn`) is not formed
+    /// and `out`'s are left as they were (a Newton iterate that converges
+    /// never reads it); force, state and slip are formed by the same
+    /// operations either way, the same bits.
     pub fn update_into(
         &self,
         law: TangentialLaw,
         input: &TangentialInput,
         principal: Option<&PrincipalStiffness>,
+        tangent: bool,
         out: &mut TangentialResponse,
     ) {
         let n = input.normal;
@@ -60,11 +64,11 @@ impl TangentialState {
         match law {
             TangentialLaw::Coulomb => {
                 let du = input.du - n * n.dot(&input.du);
-                coulomb::update(&old, &du, input, principal, out);
+                coulomb::update(&old, &du, input, principal, tangent, out);
             }
             TangentialLaw::MindlinDeresiewicz => {
                 let proj = Matrix3::identity() - n * n.transpose();
-                *out = mindlin_deresiewicz::update(&old, &proj, &(proj * input.du), input);
+                *out = mindlin_deresiewicz::update(&old, &proj, &(proj * input.du), input, tangent);
             }
         }
     }
