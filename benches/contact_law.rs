@@ -8,6 +8,12 @@
 //!   input prepared once as the solver's contact layer prepares it
 //!   (`solve::contact_layer::evaluate_moved`), from a committed state that
 //!   sticks (`stick`) or slides (`slide`: the trial force leaves the cone).
+//! - `update in place/LAW/SHAPE/slide/{tangent,forces}`: the update as the
+//!   quasi-static solver calls it now, `TangentialState::update_into` into a
+//!   response slot reused from call to call, with its consistent tangent
+//!   (`tangent`) or without it (`forces`: a Newton iterate that converges,
+//!   see `solve/quasistatic/solver.rs`); `update_with` above builds a fresh
+//!   response per call.
 //! - `law work per evaluation/LAW/SHAPE/slide`: everything the contact layer
 //!   asks of `contact` at one evaluation: F_n and k_n (Hertz in series with
 //!   a support compliance), a = c_a F^(1/3) by the fast cube root, K_t by
@@ -264,6 +270,34 @@ fn update_alone(c: &mut Criterion) {
     }
 }
 
+fn update_in_place(c: &mut Criterion) {
+    for shape in ContactShape::ALL {
+        let law = law_of(shape);
+        let normal_law = SeriesNormal::new(law.hertz, 0.0);
+        let setting = Setting::new(shape, &law);
+        for (tl, friction, label) in laws() {
+            let (input, principal) = setting.input(&law, &normal_law, tl, friction);
+            let state = setting.committed(tl, &input, &principal, true);
+            let mut slot = state.update_with(tl, &input, Some(&principal));
+            for (tangent, which) in [(true, "tangent"), (false, "forces")] {
+                let name = format!("update in place/{label}/{}/slide/{which}", shape.name());
+                c.bench_function(&name, |b| {
+                    b.iter(|| {
+                        black_box(&state).update_into(
+                            tl,
+                            black_box(&input),
+                            Some(black_box(&principal)),
+                            tangent,
+                            &mut slot,
+                        );
+                        black_box(&slot.force);
+                    })
+                });
+            }
+        }
+    }
+}
+
 fn per_evaluation(c: &mut Criterion) {
     for shape in ContactShape::ALL {
         let law = law_of(shape);
@@ -284,5 +318,11 @@ fn per_evaluation(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, contact_update, update_alone, per_evaluation);
+criterion_group!(
+    benches,
+    contact_update,
+    update_alone,
+    update_in_place,
+    per_evaluation
+);
 criterion_main!(benches);
