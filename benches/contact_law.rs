@@ -270,34 +270,6 @@ fn update_alone(c: &mut Criterion) {
     }
 }
 
-fn update_in_place(c: &mut Criterion) {
-    for shape in ContactShape::ALL {
-        let law = law_of(shape);
-        let normal_law = SeriesNormal::new(law.hertz, 0.0);
-        let setting = Setting::new(shape, &law);
-        for (tl, friction, label) in laws() {
-            let (input, principal) = setting.input(&law, &normal_law, tl, friction);
-            let state = setting.committed(tl, &input, &principal, true);
-            let mut slot = state.update_with(tl, &input, Some(&principal));
-            for (tangent, which) in [(true, "tangent"), (false, "forces")] {
-                let name = format!("update in place/{label}/{}/slide/{which}", shape.name());
-                c.bench_function(&name, |b| {
-                    b.iter(|| {
-                        black_box(&state).update_into(
-                            tl,
-                            black_box(&input),
-                            Some(black_box(&principal)),
-                            tangent,
-                            &mut slot,
-                        );
-                        black_box(&slot.force);
-                    })
-                });
-            }
-        }
-    }
-}
-
 fn per_evaluation(c: &mut Criterion) {
     for shape in ContactShape::ALL {
         let law = law_of(shape);
@@ -306,6 +278,14 @@ fn per_evaluation(c: &mut Criterion) {
         for (tl, friction, label) in laws() {
             let (input, principal) = setting.input(&law, &normal_law, tl, friction);
             let state = setting.committed(tl, &input, &principal, true);
+            in_place(
+                c,
+                &format!("{label}/{}", shape.name()),
+                &state,
+                tl,
+                &input,
+                &principal,
+            );
             let name = format!("law work per evaluation/{label}/{}/slide", shape.name());
             c.bench_function(&name, |b| {
                 b.iter(|| {
@@ -318,11 +298,31 @@ fn per_evaluation(c: &mut Criterion) {
     }
 }
 
-criterion_group!(
-    benches,
-    contact_update,
-    update_alone,
-    update_in_place,
-    per_evaluation
-);
+/// `update in place/WHAT/slide/{tangent,forces}` (module docs).
+fn in_place(
+    c: &mut Criterion,
+    what: &str,
+    state: &TangentialState,
+    tl: TangentialLaw,
+    input: &TangentialInput,
+    principal: &PrincipalStiffness,
+) {
+    let mut slot = state.update_with(tl, input, Some(principal));
+    for (tangent, which) in [(true, "tangent"), (false, "forces")] {
+        c.bench_function(&format!("update in place/{what}/slide/{which}"), |b| {
+            b.iter(|| {
+                black_box(state).update_into(
+                    tl,
+                    black_box(input),
+                    Some(black_box(principal)),
+                    tangent,
+                    &mut slot,
+                );
+                black_box(&slot.force);
+            })
+        });
+    }
+}
+
+criterion_group!(benches, contact_update, update_alone, per_evaluation);
 criterion_main!(benches);
