@@ -8,6 +8,12 @@
 //!   input prepared once as the solver's contact layer prepares it
 //!   (`solve::contact_layer::evaluate_moved`), from a committed state that
 //!   sticks (`stick`) or slides (`slide`: the trial force leaves the cone).
+//! - `update in place/LAW/SHAPE/slide/{tangent,forces}`: the update as the
+//!   quasi-static solver calls it now, `TangentialState::update_into` into a
+//!   response slot reused from call to call, with its consistent tangent
+//!   (`tangent`) or without it (`forces`: a Newton iterate that converges,
+//!   see `solve/quasistatic/solver.rs`); `update_with` above builds a fresh
+//!   response per call.
 //! - `law work per evaluation/LAW/SHAPE/slide`: everything the contact layer
 //!   asks of `contact` at one evaluation: F_n and k_n (Hertz in series with
 //!   a support compliance), a = c_a F^(1/3) by the fast cube root, K_t by
@@ -272,6 +278,14 @@ fn per_evaluation(c: &mut Criterion) {
         for (tl, friction, label) in laws() {
             let (input, principal) = setting.input(&law, &normal_law, tl, friction);
             let state = setting.committed(tl, &input, &principal, true);
+            in_place(
+                c,
+                &format!("{label}/{}", shape.name()),
+                &state,
+                tl,
+                &input,
+                &principal,
+            );
             let name = format!("law work per evaluation/{label}/{}/slide", shape.name());
             c.bench_function(&name, |b| {
                 b.iter(|| {
@@ -281,6 +295,32 @@ fn per_evaluation(c: &mut Criterion) {
                 })
             });
         }
+    }
+}
+
+/// `update in place/WHAT/slide/{tangent,forces}` (module docs).
+fn in_place(
+    c: &mut Criterion,
+    what: &str,
+    state: &TangentialState,
+    tl: TangentialLaw,
+    input: &TangentialInput,
+    principal: &PrincipalStiffness,
+) {
+    let mut slot = state.update_with(tl, input, Some(principal));
+    for (tangent, which) in [(true, "tangent"), (false, "forces")] {
+        c.bench_function(&format!("update in place/{what}/slide/{which}"), |b| {
+            b.iter(|| {
+                black_box(state).update_into(
+                    tl,
+                    black_box(input),
+                    Some(black_box(principal)),
+                    tangent,
+                    &mut slot,
+                );
+                black_box(&slot.force);
+            })
+        });
     }
 }
 

@@ -883,3 +883,74 @@ fn anisotropic_slip_return_is_associated_and_its_tangent_is_consistent() {
         }
     }
 }
+
+/// The solver's lazy tangent (`TangentialState::update_into` with
+/// `tangent` false): force, state and slip bit for bit those of the full
+/// update (`update_with`), for both laws, stick, partial slip and slip,
+/// the switch and the decay friction law, circular and elliptical K_t;
+/// the derivatives of the slot are left as they were (a Newton iterate
+/// that converges never reads them), and with `tangent` the whole response
+/// equals `update_with`'s.
+#[test]
+fn the_tangent_free_update_gives_the_full_updates_force_and_state() {
+    use kinrepro::contact::{FrictionLaw, PrincipalStiffness, TangentialResponse};
+    let bits = |v: &Vector3<f64>| v.map(f64::to_bits);
+    let slid = TangentialState::new(Vector3::z())
+        .update(
+            TangentialLaw::Coulomb,
+            &input(10.0, Vector3::new(1e-5, 2e-6, 0.0), 0.5, 0.4),
+        )
+        .state;
+    let stuck = TangentialState {
+        normal_force: 9.0,
+        ..TangentialState::new(Vector3::z())
+    };
+    let (mut cases, mut slips) = (0, 0);
+    for law in TangentialLaw::ALL {
+        for friction in [FrictionLaw::Switch, FrictionLaw::Decay { coefficient: 1e6 }] {
+            if law == TangentialLaw::MindlinDeresiewicz && friction != FrictionLaw::Switch {
+                continue; // the decay law works with Coulomb only
+            }
+            for k in [[4e7, 4e7], [5e7, 3e7]] {
+                let principal = PrincipalStiffness::new(k, &Vector3::z(), &Vector3::x());
+                for (old, du) in [
+                    (&stuck, Vector3::new(1e-7, 3e-8, 0.0)),
+                    (&stuck, Vector3::new(2e-7, -4e-7, 0.0)),
+                    (&slid, Vector3::new(2e-6, 1e-6, 0.0)),
+                ] {
+                    let mut inp = input(10.0, du, 0.5, 0.4);
+                    inp.stiffness = principal.tensor(&Vector3::z());
+                    inp.d_stiffness_d_fn = inp.stiffness / 30.0;
+                    inp.friction.law = friction;
+                    inp.friction.duration = 1e-3;
+                    let full = old.update_with(law, &inp, Some(&principal));
+                    // A slot holding another contact's response.
+                    let mut slot = TangentialResponse {
+                        d_force_d_du: Matrix3::from_element(7.0),
+                        d_force_d_fn: Vector3::repeat(-3.0),
+                        ..slid.update(law, &input(10.0, Vector3::new(-3e-6, 0.0, 0.0), 0.5, 0.4))
+                    };
+                    old.update_into(law, &inp, Some(&principal), false, &mut slot);
+                    assert_eq!(bits(&slot.force), bits(&full.force), "{law:?} {friction:?}");
+                    assert_eq!(bits(&slot.state.force), bits(&full.state.force));
+                    assert_eq!(slot.state, full.state);
+                    assert_eq!(
+                        slot.state.slip_velocity.to_bits(),
+                        full.state.slip_velocity.to_bits()
+                    );
+                    assert_eq!(slot.slip, full.slip);
+                    if law == TangentialLaw::Coulomb {
+                        assert_eq!(slot.d_force_d_du, Matrix3::from_element(7.0));
+                        assert_eq!(slot.d_force_d_fn, Vector3::repeat(-3.0));
+                    }
+                    old.update_into(law, &inp, Some(&principal), true, &mut slot);
+                    assert_eq!(slot, full);
+                    cases += 1;
+                    slips += usize::from(full.slip == SlipState::Slip);
+                }
+            }
+        }
+    }
+    assert_eq!(cases, 18);
+    assert!((6..18).contains(&slips), "{slips} of the cases slip");
+}

@@ -25,14 +25,16 @@
 //! surface (a spring stretched by du). The friction force on the moving
 //! body is its negative.
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Vector3};
 
 use super::fixed3::{mat_mat, mat_vec};
 use super::friction::{FrictionLaw, SlideInput, Sliding};
 use super::mindlin::{PrincipalStiffness, project_tangential};
 use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, TangentialState};
 
-/// Coulomb return mapping; the sliding coefficient comes from the friction
+/// Coulomb return mapping into `out`, with its consistent tangent if
+/// `tangent` (else `out`'s derivatives are left as they were; the force and
+/// state are formed by the same operations either way); the sliding coefficient comes from the friction
 /// law ([`super::friction::slide`]: the sudden switch, or the decay law).
 /// The decay law's slip increment uses the stiffness along the trial force,
 /// k = t^T K_t t (t = F_trial/|F_trial|): exact for a circular contact, the
@@ -43,7 +45,9 @@ pub(super) fn update(
     du: &Vector3<f64>,
     input: &TangentialInput,
     principal: Option<&PrincipalStiffness>,
-) -> TangentialResponse {
+    tangent: bool,
+    out: &mut TangentialResponse,
+) {
     let fr = input.friction;
     let trial = old.force + mat_vec(&input.stiffness, du);
     let norm = trial.norm();
@@ -67,48 +71,60 @@ pub(super) fn update(
         previous_velocity: old.slip_velocity,
     });
     match sliding {
-        None => TangentialResponse {
-            force: trial,
-            state: TangentialState {
-                force: trial,
-                sliding: false,
-                slip_velocity: 0.0,
-                row: old.row.clone(),
-                ..*old
-            },
-            slip: SlipState::Stick,
-            d_force_d_du: input.stiffness,
-            d_force_d_fn: mat_vec(&input.d_stiffness_d_fn, du),
-        },
-        Some(s) => slide_response(old, &trial, du, input, &s, principal),
+        None => {
+            out.force = trial;
+            out.state.assign_from(old, trial, false, 0.0);
+            out.slip = SlipState::Stick;
+            if tangent {
+                out.d_force_d_du = input.stiffness;
+                out.d_force_d_fn = mat_vec(&input.d_stiffness_d_fn, du);
+            }
+        }
+        Some(s) => {
+            let (force, d_trial, d_limit) = match principal {
+                Some(p) => p.project(&input.normal, &trial, s.mu * input.normal_force),
+                None => project_tangential(
+                    &input.stiffness,
+                    &input.normal,
+                    &trial,
+                    s.mu * input.normal_force,
+                ),
+            };
+            out.force = force;
+            out.state
+                .assign_from(old, force, true, s.slip / input.friction.duration);
+            out.slip = SlipState::Slip;
+            if tangent {
+                slide_tangent(&trial, du, input, &s, &d_trial, &d_limit, out);
+            }
+        }
     }
 }
 
-/// Gross sliding: F on the circle |F| = mu F_n closest to F_trial in the
-/// complementary-energy norm of K (`mindlin::project_tangential`; the radial
-/// return F = mu F_n F_trial/|F_trial| for a circular contact), so that the
+/// The tangent of gross sliding. The force F is the point on the circle
+/// |F| = mu F_n closest to F_trial in the complementary-energy norm of K
+/// (`mindlin::project_tangential`; the radial return
+/// F = mu F_n F_trial/|F_trial| for a circular contact), so that the
 /// friction force opposes the slip also for an elliptical K; mu from the
-/// friction law (`s`; constant mu_d for the switch law). Tangent, with
+/// friction law (`s`; constant mu_d for the switch law); `d_trial` and
+/// `d_limit` are the projection's dF/dF_trial and dF/dL. Tangent, with
 /// T = |F_trial|, t = F_trial/T and L = mu F_n the limit:
 /// dF/d(du) = (dF/dF_trial) K + (dF/dL) F_n (dmu/dT) t^T K,
 /// dF/dF_n = (dF/dL) (mu + F_n dmu/dF_n) + (dF/dF_trial) (dK/dF_n) du,
 /// dmu/dF_n total through T (dT/dF_n = t . K' du), F_n and k (dk/dF_n = t^T K' t).
 #[inline]
-fn slide_response(
-    old: &TangentialState,
+fn slide_tangent(
     trial: &Vector3<f64>,
     du: &Vector3<f64>,
     input: &TangentialInput,
     s: &Sliding,
-    principal: Option<&PrincipalStiffness>,
-) -> TangentialResponse {
+    d_trial: &Matrix3<f64>,
+    d_limit: &Vector3<f64>,
+    out: &mut TangentialResponse,
+) {
     let f_n = input.normal_force;
     let (k, dk) = (&input.stiffness, &input.d_stiffness_d_fn);
-    let mu = s.mu;
-    let (force, d_trial, d_limit) = match principal {
-        Some(p) => p.project(&input.normal, trial, mu * f_n),
-        None => project_tangential(k, &input.normal, trial, mu * f_n),
-    };
+    let (mu, d_trial, d_limit) = (s.mu, *d_trial, *d_limit);
     let dk_du = mat_vec(dk, du);
     let (d_force_d_du, d_force_d_fn) =
         if s.d_mu_d_trial == 0.0 && s.d_mu_d_fn == 0.0 && s.d_mu_d_k == 0.0 {
@@ -127,17 +143,6 @@ fn slide_response(
                 (mu + f_n * dmu_dfn) * d_limit + d_trial * dk_du,
             )
         };
-    TangentialResponse {
-        force,
-        state: TangentialState {
-            force,
-            sliding: true,
-            slip_velocity: s.slip / input.friction.duration,
-            row: old.row.clone(),
-            ..*old
-        },
-        slip: SlipState::Slip,
-        d_force_d_du,
-        d_force_d_fn,
-    }
+    out.d_force_d_du = d_force_d_du;
+    out.d_force_d_fn = d_force_d_fn;
 }

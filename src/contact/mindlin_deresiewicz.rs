@@ -222,6 +222,7 @@ pub(super) fn update(
     proj: &Matrix3<f64>,
     du: &Vector3<f64>,
     input: &TangentialInput,
+    tangent: bool,
 ) -> TangentialResponse {
     let n = input.normal;
     let p = input.normal_force;
@@ -277,7 +278,7 @@ pub(super) fn update(
     }
     let (f2, d2) = row.force();
     let force = basis * f2;
-    let d_fn = d_force_d_load(&row, p, &basis);
+    let (d_force_d_du, d_fn) = tangent_of(tangent, &row, p, &basis, &d2, proj);
     let mut q = [[0.0; 2]; SPRINGS];
     for (dst, src) in q.iter_mut().zip(&row.q) {
         *dst = [src.x, src.y];
@@ -300,9 +301,30 @@ pub(super) fn update(
         } else {
             SlipState::Stick
         },
-        d_force_d_du: basis * d2 * basis.transpose() * proj,
+        d_force_d_du,
         d_force_d_fn: d_fn,
     }
+}
+
+/// The consistent tangent (dQ/d(du), dQ/dP) of the row at the end of the
+/// step if `tangent` (zeros otherwise: a converged Newton iterate never
+/// reads it): E D E^T P from the 2-D tangent D of the springs, and
+/// [`d_force_d_load`].
+fn tangent_of(
+    tangent: bool,
+    row: &Row,
+    p: f64,
+    basis: &Matrix3x2<f64>,
+    d2: &Matrix2<f64>,
+    proj: &Matrix3<f64>,
+) -> (Matrix3<f64>, Vector3<f64>) {
+    if !tangent {
+        return (Matrix3::zeros(), Vector3::zeros());
+    }
+    (
+        basis * d2 * basis.transpose() * proj,
+        d_force_d_load(row, p, basis),
+    )
 }
 
 /// dQ/dP at fixed displacement from the springs at their limit at the end

@@ -10,7 +10,7 @@
 //! surface (a spring stretched by du). The friction force on the moving
 //! body is its negative.
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Matrix3;
 
 use super::mindlin::PrincipalStiffness;
 pub use super::tangential_types::{
@@ -35,26 +35,40 @@ impl TangentialState {
         input: &TangentialInput,
         principal: Option<&PrincipalStiffness>,
     ) -> TangentialResponse {
+        let mut out = TangentialResponse::open(input.normal);
+        self.update_into(law, input, principal, true, &mut out);
+        out
+    }
+
+    /// [`Self::update_with`] written into `out` (the solvers' buffers: no
+    /// response is built on the stack and moved). With `tangent` false the
+    /// consistent tangent (`d_force_d_du`, `d_force_d_fn`) is not formed
+    /// and `out`'s are left as they were (a Newton iterate that converges
+    /// never reads it); force, state and slip are formed by the same
+    /// operations either way, the same bits.
+    pub fn update_into(
+        &self,
+        law: TangentialLaw,
+        input: &TangentialInput,
+        principal: Option<&PrincipalStiffness>,
+        tangent: bool,
+        out: &mut TangentialResponse,
+    ) {
         let n = input.normal;
         if input.normal_force <= 0.0 {
             // No normal force, no friction; history is lost when a contact opens.
-            return TangentialResponse {
-                force: Vector3::zeros(),
-                state: TangentialState::new(n),
-                slip: SlipState::Stick,
-                d_force_d_du: Matrix3::zeros(),
-                d_force_d_fn: Vector3::zeros(),
-            };
+            *out = TangentialResponse::open(n);
+            return;
         }
         let old = self.rotated_to(&n);
         match law {
             TangentialLaw::Coulomb => {
                 let du = input.du - n * n.dot(&input.du);
-                coulomb::update(&old, &du, input, principal)
+                coulomb::update(&old, &du, input, principal, tangent, out);
             }
             TangentialLaw::MindlinDeresiewicz => {
                 let proj = Matrix3::identity() - n * n.transpose();
-                mindlin_deresiewicz::update(&old, &proj, &(proj * input.du), input)
+                *out = mindlin_deresiewicz::update(&old, &proj, &(proj * input.du), input, tangent);
             }
         }
     }

@@ -141,6 +141,20 @@ pub struct TangentialResponse {
     pub d_force_d_fn: Vector3<f64>,
 }
 
+impl TangentialResponse {
+    /// The response of an open contact (F_n <= 0): no force, a fresh
+    /// sticking state tangent to `normal`, a zero tangent.
+    pub fn open(normal: Vector3<f64>) -> Self {
+        TangentialResponse {
+            force: Vector3::zeros(),
+            state: TangentialState::new(normal),
+            slip: SlipState::Stick,
+            d_force_d_du: Matrix3::zeros(),
+            d_force_d_fn: Vector3::zeros(),
+        }
+    }
+}
+
 /// Inputs of one update besides the state.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TangentialInput {
@@ -175,6 +189,25 @@ impl TangentialState {
             normal_force: 0.0,
             slip_velocity: 0.0,
         }
+    }
+
+    /// Set `self` to `old` with a new force, sliding flag and slip velocity
+    /// (the struct update `TangentialState { force, sliding, slip_velocity,
+    /// row: old.row.clone(), ..*old }` in place, the row into `self`'s box).
+    #[inline]
+    pub fn assign_from(
+        &mut self,
+        old: &TangentialState,
+        force: Vector3<f64>,
+        sliding: bool,
+        slip_velocity: f64,
+    ) {
+        self.normal = old.normal;
+        self.force = force;
+        self.sliding = sliding;
+        self.row.clone_from(&old.row);
+        self.normal_force = old.normal_force;
+        self.slip_velocity = slip_velocity;
     }
 
     /// This state with its vectors rotated into the tangent plane of `normal`

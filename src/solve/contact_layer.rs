@@ -21,8 +21,8 @@ use nalgebra::{Matrix3, Vector3};
 use crate::assembly::geometry::closed_form;
 use crate::assembly::{BodyPose, ContactGeometry, Coupling};
 use crate::contact::{
-    Friction, PrincipalStiffness, SlipState, TangentialInput, TangentialLaw, TangentialResponse,
-    TangentialState, tangential_tensor,
+    ContactLaw, Friction, PrincipalStiffness, SlipState, TangentialInput, TangentialLaw,
+    TangentialResponse, TangentialState, tangential_tensor,
 };
 use crate::scene::SurfaceGeometry;
 
@@ -40,9 +40,37 @@ pub struct ContactEval {
     pub force: Vector3<f64>,
     /// d(force)/d(displacement of the contact point) [N/m].
     pub stiffness: Matrix3<f64>,
+    /// Whether `stiffness` (and the tangential response's derivatives) are
+    /// this evaluation's ([`evaluate_moved_into`] without the tangent
+    /// leaves them as they were).
+    pub tangent: bool,
 }
 
 impl ContactEval {
+    /// A slot for [`evaluate_moved_into`]: an open contact at `geometry`
+    /// (no tangent formed yet).
+    pub fn open(geometry: ContactGeometry) -> Self {
+        ContactEval {
+            geometry,
+            approach: -geometry.gap,
+            normal_force: 0.0,
+            normal_stiffness: 0.0,
+            tangential: TangentialResponse::open(geometry.normal),
+            force: Vector3::zeros(),
+            stiffness: Matrix3::zeros(),
+            tangent: false,
+        }
+    }
+
+    /// An empty slot (open, zero geometry) for the solvers' buffers.
+    pub fn empty() -> Self {
+        Self::open(ContactGeometry {
+            gap: 0.0,
+            normal: Vector3::zeros(),
+            point: Vector3::zeros(),
+        })
+    }
+
     pub fn slip(&self) -> SlipState {
         self.tangential.slip
     }
@@ -144,7 +172,6 @@ pub fn evaluate_at(
 
 /// [`evaluate_at`] with the tangential increment du = p - p_c of the
 /// contact point given (the solver forms [`Motion`] once per pose).
-#[inline]
 pub fn evaluate_moved(
     coupling: &Coupling,
     i: usize,
@@ -153,6 +180,48 @@ pub fn evaluate_moved(
     committed: &TangentialState,
     friction: Friction,
 ) -> ContactEval {
+    let mut out = ContactEval::open(g);
+    let moved = Moved {
+        geometry: g,
+        du,
+        committed,
+        friction,
+    };
+    evaluate_moved_into(&mut out, coupling, i, &moved, true);
+    out
+}
+
+/// The arguments of [`evaluate_moved`]: contact geometry at the trial
+/// pose, tangential increment du, committed state and friction.
+#[derive(Debug, Clone, Copy)]
+pub struct Moved<'s> {
+    pub geometry: ContactGeometry,
+    pub du: Vector3<f64>,
+    pub committed: &'s TangentialState,
+    pub friction: Friction,
+}
+
+/// [`evaluate_moved`] written into the slot `out` (the solvers' buffers,
+/// reused across iterations: no evaluation is built and then moved). With
+/// `tangent` false the tangent (`stiffness`, dK_t/dF_n and the law's
+/// derivatives) is not formed: `out.tangent` says whether `out.stiffness`
+/// belongs to this evaluation. Everything else is formed by the same
+/// operations either way (the same bits), so a Newton iterate that
+/// converges, whose tangent nobody reads, skips it.
+#[inline]
+pub fn evaluate_moved_into(
+    out: &mut ContactEval,
+    coupling: &Coupling,
+    i: usize,
+    moved: &Moved,
+    tangent: bool,
+) {
+    let Moved {
+        geometry: g,
+        du,
+        committed,
+        friction,
+    } = *moved;
     let contact = &coupling.contacts[i];
     let approach = -g.gap;
     let hertz = &contact.law.hertz;
@@ -169,27 +238,14 @@ pub fn evaluate_moved(
     let principal = PrincipalStiffness::new(law.mindlin.map(|c| c * a_mid), &g.normal, &major_axis);
     let kt = principal.tensor(&g.normal);
     // dK_t/dF_n = K_t / (3 F_mid) d(F_mid)/dF_n, with d(F_mid)/dF_n = 1/2.
-    let dkt = if f_mid > 0.0 {
+    let dkt = if tangent && f_mid > 0.0 {
         kt * (1.0 / (6.0 * f_mid))
     } else {
         Matrix3::zeros()
     };
-    // Mindlin-Deresiewicz: the equal-area radius and the shape K_t / (8 G* sqrt(ab))
-    // (the Coulomb law reads neither: they are left at zero for it).
     let tangential_law = coupling.scene.friction.tangential_law;
-    let (contact_radius, mindlin_shape) = match tangential_law {
-        TangentialLaw::Coulomb => (0.0, Matrix3::zeros()),
-        TangentialLaw::MindlinDeresiewicz => {
-            let [a, b] = hertz.semi_axes(fn_);
-            let shape = law
-                .mindlin
-                .map(|c| c / (8.0 * law.g_star * hertz.axis_ratio.sqrt()));
-            (
-                (a * b).sqrt(),
-                tangential_tensor(shape, &g.normal, &major_axis),
-            )
-        }
-    };
+    let (contact_radius, mindlin_shape) =
+        mindlin_deresiewicz_inputs(tangential_law, law, fn_, &g.normal, &major_axis);
     let input = TangentialInput {
         normal: g.normal,
         du,
@@ -201,21 +257,52 @@ pub fn evaluate_moved(
         mindlin_shape,
         friction,
     };
-    let mut tangential = committed.update_with(tangential_law, &input, Some(&principal));
+    let tangential = &mut out.tangential;
+    committed.update_into(
+        tangential_law,
+        &input,
+        Some(&principal),
+        tangent,
+        tangential,
+    );
     tangential.state.normal_force = fn_;
     let n = g.normal;
     // d(approach) = -n . dp, so d(F_n n) = -k_n n n^T dp and
     // d(F_t) = T dp + (dF_t/dF_n)(-k_n n^T dp); the force on the body is F_n n - F_t:
     // K = -k_n (n - dF_t/dF_n) n^T - T.
-    let stiffness = (tangential.d_force_d_fn - n) * (kn * n).transpose() - tangential.d_force_d_du;
-    ContactEval {
-        geometry: g,
-        approach,
-        normal_force: fn_,
-        normal_stiffness: kn,
-        force: n * fn_ - tangential.force,
-        tangential,
-        stiffness,
+    if tangent {
+        out.stiffness =
+            (tangential.d_force_d_fn - n) * (kn * n).transpose() - tangential.d_force_d_du;
+    }
+    out.tangent = tangent;
+    out.force = n * fn_ - tangential.force;
+    out.geometry = g;
+    out.approach = approach;
+    out.normal_force = fn_;
+    out.normal_stiffness = kn;
+}
+
+/// Mindlin-Deresiewicz: the equal-area radius sqrt(ab) at `fn_` and the
+/// shape K_t / (8 G* sqrt(ab)) (the Coulomb law reads neither: they are
+/// left at zero for it).
+#[inline]
+fn mindlin_deresiewicz_inputs(
+    tangential_law: TangentialLaw,
+    law: &ContactLaw,
+    fn_: f64,
+    normal: &Vector3<f64>,
+    major_axis: &Vector3<f64>,
+) -> (f64, Matrix3<f64>) {
+    match tangential_law {
+        TangentialLaw::Coulomb => (0.0, Matrix3::zeros()),
+        TangentialLaw::MindlinDeresiewicz => {
+            let hertz = &law.hertz;
+            let [a, b] = hertz.semi_axes(fn_);
+            let shape = law
+                .mindlin
+                .map(|c| c / (8.0 * law.g_star * hertz.axis_ratio.sqrt()));
+            ((a * b).sqrt(), tangential_tensor(shape, normal, major_axis))
+        }
     }
 }
 

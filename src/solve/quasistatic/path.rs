@@ -131,7 +131,7 @@ impl Solver<'_> {
             iterations: 0,
         };
         if !seating {
-            self.evaluate_all(&start, &start, w.states, self.ramp_time, w.evals);
+            self.evaluate_all(&start, &start, w.states, self.ramp_time, true, w.evals);
         }
         let ctx = Context {
             start,
