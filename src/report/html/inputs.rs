@@ -96,8 +96,14 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
         let coupling = prediction.applied(coupling);
         let now = Fingerprint::new(&coupling, &StudyOptions::default(), &v.design).scene_content;
         if now != v.fingerprint.scene_content {
+            let why = if prediction.calibration.is_some() {
+                "with the calibrated parameters applied, it is not the scene the prediction ran: \
+                 the scene file or the JSON's calibration block changed since `predict`; rerun predict"
+            } else {
+                "the scene file changed since the study ran; rerun the study"
+            };
             return Err(input(format!(
-                "{}: scene_content {} differs from the study's {}: the scene file changed since the study ran; rerun the study",
+                "{}: scene_content {} differs from the study's {}: {why}",
                 scene_path.display(),
                 now,
                 v.fingerprint.scene_content
