@@ -27,7 +27,7 @@ use kinrepro::contact::{
     TangentialInput, TangentialLaw, TangentialState, tangential_tensor,
 };
 use kinrepro::material::Material;
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 
 /// The pair of each shape: a 5 mm steel ball on a flat, a 2 mm ball, a
 /// 6 mm seat or a 2 mm pin.
@@ -142,8 +142,9 @@ impl Setting {
         }
     }
 
-    /// The contact layer's preparation (`evaluate_moved`): K_t at the mean
-    /// normal force of the increment, its derivative, the MDR shape.
+    /// The contact layer's preparation (`evaluate_moved_into`, with the
+    /// same `ContactLaw` calls): K_t at the mean normal force of the
+    /// increment, its derivative, the MDR shape.
     fn input(
         &self,
         law: &ContactLaw,
@@ -152,28 +153,10 @@ impl Setting {
         friction: Friction,
     ) -> (TangentialInput, PrincipalStiffness) {
         let (fn_, _) = normal_law.force_and_stiffness(self.approach);
-        let f_mid = 0.5 * (self.committed_fn + fn_);
-        let a_mid = law.hertz.major_semi_axis_fast(f_mid);
-        let principal = PrincipalStiffness::new(
-            law.mindlin.map(|c| c * a_mid),
-            &self.normal,
-            &self.major_axis,
-        );
-        let kt = principal.tensor(&self.normal);
-        let dkt = kt * (1.0 / (6.0 * f_mid));
-        let (contact_radius, mindlin_shape) = match tl {
-            TangentialLaw::Coulomb => (0.0, Matrix3::zeros()),
-            TangentialLaw::MindlinDeresiewicz => {
-                let [a, b] = law.hertz.semi_axes(fn_);
-                let shape = law
-                    .mindlin
-                    .map(|c| c / (8.0 * law.g_star * law.hertz.axis_ratio.sqrt()));
-                (
-                    (a * b).sqrt(),
-                    tangential_tensor(shape, &self.normal, &self.major_axis),
-                )
-            }
-        };
+        let (principal, kt, dkt) =
+            law.midpoint_stiffness(self.committed_fn, fn_, &self.normal, &self.major_axis, true);
+        let (contact_radius, mindlin_shape) =
+            law.mindlin_deresiewicz_inputs(tl, fn_, &self.normal, &self.major_axis);
         let input = TangentialInput {
             normal: self.normal,
             du: self.du,

@@ -22,6 +22,7 @@ pub mod stress;
 pub mod tangential;
 pub mod tangential_types;
 
+use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
@@ -253,5 +254,58 @@ impl ContactLaw {
         let [k1, k2] = self.tangential_stiffness_axes(load);
         let kt = (k1 * k2).sqrt();
         (kt, kt / (3.0 * load))
+    }
+
+    /// K_t of an increment from normal force `committed_fn` to `fn_`, at
+    /// the mean force F_mid = (committed_fn + fn_)/2 (midpoint rule, module
+    /// docs of `solve::contact_layer`): Mindlin's principal stiffnesses
+    /// k = coef a(F_mid) (the fast cube root) about `major_axis` (zero:
+    /// circular), the 3x3 tensor in the plane of `normal`, and, if
+    /// `tangent`, dK_t/dF_n = K_t / (3 F_mid) d(F_mid)/dF_n = K_t / (6 F_mid)
+    /// (zero otherwise, or unloaded).
+    #[inline]
+    pub fn midpoint_stiffness(
+        &self,
+        committed_fn: f64,
+        fn_: f64,
+        normal: &Vector3<f64>,
+        major_axis: &Vector3<f64>,
+        tangent: bool,
+    ) -> (PrincipalStiffness, Matrix3<f64>, Matrix3<f64>) {
+        let f_mid = 0.5 * (committed_fn + fn_);
+        let a_mid = self.hertz.major_semi_axis_fast(f_mid);
+        let principal =
+            PrincipalStiffness::new(self.mindlin.map(|c| c * a_mid), normal, major_axis);
+        let kt = principal.tensor(normal);
+        let dkt = if tangent && f_mid > 0.0 {
+            kt * (1.0 / (6.0 * f_mid))
+        } else {
+            Matrix3::zeros()
+        };
+        (principal, kt, dkt)
+    }
+
+    /// Mindlin-Deresiewicz: the equal-area radius sqrt(ab) at `fn_` and the
+    /// shape K_t / (8 G* sqrt(ab)) (the Coulomb law reads neither: they are
+    /// left at zero for it).
+    #[inline]
+    pub fn mindlin_deresiewicz_inputs(
+        &self,
+        tangential_law: TangentialLaw,
+        fn_: f64,
+        normal: &Vector3<f64>,
+        major_axis: &Vector3<f64>,
+    ) -> (f64, Matrix3<f64>) {
+        match tangential_law {
+            TangentialLaw::Coulomb => (0.0, Matrix3::zeros()),
+            TangentialLaw::MindlinDeresiewicz => {
+                let hertz = &self.hertz;
+                let [a, b] = hertz.semi_axes(fn_);
+                let shape = self
+                    .mindlin
+                    .map(|c| c / (8.0 * self.g_star * hertz.axis_ratio.sqrt()));
+                ((a * b).sqrt(), tangential_tensor(shape, normal, major_axis))
+            }
+        }
     }
 }

@@ -20,10 +20,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use crate::assembly::geometry::closed_form;
 use crate::assembly::{BodyPose, ContactGeometry, Coupling};
-use crate::contact::{
-    ContactLaw, Friction, PrincipalStiffness, SlipState, TangentialInput, TangentialLaw,
-    TangentialResponse, TangentialState, tangential_tensor,
-};
+use crate::contact::{Friction, SlipState, TangentialInput, TangentialResponse, TangentialState};
 use crate::scene::SurfaceGeometry;
 
 /// One contact evaluated at a trial pose.
@@ -224,28 +221,18 @@ pub fn evaluate_moved_into(
     } = *moved;
     let contact = &coupling.contacts[i];
     let approach = -g.gap;
-    let hertz = &contact.law.hertz;
     // Hertz in series with the support compliance (`contact::series`).
     let (fn_, kn) = contact.normal.force_and_stiffness(approach);
-    let f_mid = 0.5 * (committed.normal_force + fn_);
     let major_axis = match contact.surface {
         SurfaceGeometry::Cylinder { direction, .. } => direction,
         _ => Vector3::zeros(), // circular: K_t is isotropic
     };
     let law = &contact.law;
-    // ContactLaw::tangential_stiffness_axes (k = coef a) with the fast cube root.
-    let a_mid = hertz.major_semi_axis_fast(f_mid);
-    let principal = PrincipalStiffness::new(law.mindlin.map(|c| c * a_mid), &g.normal, &major_axis);
-    let kt = principal.tensor(&g.normal);
-    // dK_t/dF_n = K_t / (3 F_mid) d(F_mid)/dF_n, with d(F_mid)/dF_n = 1/2.
-    let dkt = if tangent && f_mid > 0.0 {
-        kt * (1.0 / (6.0 * f_mid))
-    } else {
-        Matrix3::zeros()
-    };
+    let (principal, kt, dkt) =
+        law.midpoint_stiffness(committed.normal_force, fn_, &g.normal, &major_axis, tangent);
     let tangential_law = coupling.scene.friction.tangential_law;
     let (contact_radius, mindlin_shape) =
-        mindlin_deresiewicz_inputs(tangential_law, law, fn_, &g.normal, &major_axis);
+        law.mindlin_deresiewicz_inputs(tangential_law, fn_, &g.normal, &major_axis);
     let input = TangentialInput {
         normal: g.normal,
         du,
@@ -280,30 +267,6 @@ pub fn evaluate_moved_into(
     out.approach = approach;
     out.normal_force = fn_;
     out.normal_stiffness = kn;
-}
-
-/// Mindlin-Deresiewicz: the equal-area radius sqrt(ab) at `fn_` and the
-/// shape K_t / (8 G* sqrt(ab)) (the Coulomb law reads neither: they are
-/// left at zero for it).
-#[inline]
-fn mindlin_deresiewicz_inputs(
-    tangential_law: TangentialLaw,
-    law: &ContactLaw,
-    fn_: f64,
-    normal: &Vector3<f64>,
-    major_axis: &Vector3<f64>,
-) -> (f64, Matrix3<f64>) {
-    match tangential_law {
-        TangentialLaw::Coulomb => (0.0, Matrix3::zeros()),
-        TangentialLaw::MindlinDeresiewicz => {
-            let hertz = &law.hertz;
-            let [a, b] = hertz.semi_axes(fn_);
-            let shape = law
-                .mindlin
-                .map(|c| c / (8.0 * law.g_star * hertz.axis_ratio.sqrt()));
-            ((a * b).sqrt(), tangential_tensor(shape, normal, major_axis))
-        }
-    }
 }
 
 #[cfg(test)]
