@@ -197,29 +197,16 @@ impl Variation {
 /// Sets tolerance `input` to b (2u - 1) = `b` * `c` (its bound times c) and
 /// returns the value; NaN for an input that is not a tolerance.
 fn set_tolerance(t: &mut Tolerances, input: Input, b: &VariationBounds, c: f64) -> f64 {
-    match input {
-        Input::BallDiameter(k) => {
-            t.ball_diameter[k] = b.ball_diameter_m * c;
-            t.ball_diameter[k]
-        }
-        Input::BallPosition(k, a) => {
-            t.ball_position[k][a] = b.ball_position_m[a] * c;
-            t.ball_position[k][a]
-        }
-        Input::SurfaceNormal(i) => {
-            t.surface_normal[i] = b.surface_normal_m * c;
-            t.surface_normal[i]
-        }
-        Input::SurfaceTilt(i) => {
-            t.surface_tilt[i] = b.surface_tilt_rad * c;
-            t.surface_tilt[i]
-        }
-        Input::GroovePosition(k, a) => {
-            t.groove_position[k][a] = b.groove_position_m[a] * c;
-            t.groove_position[k][a]
-        }
-        _ => f64::NAN,
-    }
+    let (slot, bound) = match input {
+        Input::BallDiameter(k) => (&mut t.ball_diameter[k], b.ball_diameter_m),
+        Input::BallPosition(k, a) => (&mut t.ball_position[k][a], b.ball_position_m[a]),
+        Input::SurfaceNormal(i) => (&mut t.surface_normal[i], b.surface_normal_m),
+        Input::SurfaceTilt(i) => (&mut t.surface_tilt[i], b.surface_tilt_rad),
+        Input::GroovePosition(k, a) => (&mut t.groove_position[k][a], b.groove_position_m[a]),
+        _ => return f64::NAN,
+    };
+    *slot = bound * c;
+    *slot
 }
 
 /// The physical values of the start inputs: the offset and tilt of `start`.
