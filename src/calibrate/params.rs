@@ -47,7 +47,8 @@ impl Param {
         PARAMETERS[self as usize]
     }
 
-    fn from_name(name: &str) -> Option<Param> {
+    /// The parameter of a `--fit` name.
+    pub fn from_name(name: &str) -> Option<Param> {
         [
             Param::Spread,
             Param::MuStatic,

@@ -28,7 +28,7 @@ use std::collections::BTreeMap;
 use super::error::CalibrateError;
 use super::file::{Calibration, DofFit, design_hash};
 use super::model::model_options;
-use super::params::{PARAMETERS, Param, admissible};
+use super::params::{Param, admissible};
 use crate::assembly::Coupling;
 use crate::report::study::{Dofs, PointStats, VariantReport};
 use crate::solve::Method;
@@ -47,17 +47,11 @@ pub struct Prediction {
     pub measured: Option<(String, Vec<DofFit>)>,
 }
 
-/// The scene with the calibrated `values` set (names of [`PARAMETERS`]).
+/// The scene with the calibrated `values` set (names of [`super::params::PARAMETERS`]; other names are ignored).
 pub fn with_parameters(coupling: &Coupling, values: &BTreeMap<String, f64>) -> Coupling {
     let mut c = coupling.clone();
-    for (i, name) in PARAMETERS.iter().enumerate() {
-        if let Some(v) = values.get(*name) {
-            let p = [
-                Param::Spread,
-                Param::MuStatic,
-                Param::DynamicRatio,
-                Param::SupportCompliance,
-            ][i];
+    for (name, v) in values {
+        if let Some(p) = Param::from_name(name) {
             p.set(&mut c, *v);
         }
     }
