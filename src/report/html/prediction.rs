@@ -19,7 +19,7 @@ use super::page::escape;
 use super::reference::ReferenceRow;
 use crate::assembly::Coupling;
 use crate::calibrate::predict::with_parameters;
-use crate::calibrate::units::DOFS;
+use crate::calibrate::units::{DOFS, human_unit};
 
 /// The `calibration` block of a prediction.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
@@ -168,9 +168,10 @@ fn number(v: f64) -> String {
 
 /// The measured block as a reference row (nm, nrad).
 fn measured_row(scene: &str, m: &MeasuredBlock) -> ReferenceRow {
-    let sigma = DOFS.map(|d| {
-        let unit = if d.starts_with("phi") { "nrad" } else { "nm" };
-        m.sigma.get(&format!("{d}_{unit}")).copied()
+    let sigma = std::array::from_fn(|i| {
+        m.sigma
+            .get(&format!("{}_{}", DOFS[i], human_unit(i)))
+            .copied()
     });
     ReferenceRow {
         label: match m.cycles {
