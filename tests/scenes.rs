@@ -184,6 +184,48 @@ fn parry_contact_matches_closed_form() {
 }
 
 #[test]
+fn parry_inline_is_parrys_query_bit_for_bit() {
+    // The fast path's geometry (parry's arithmetic written out) against
+    // parry's query, for every contact of every bundled scene, with the ball
+    // centre moved at random by up to 2 um along the normal (separation and
+    // penetration) and 20 um in any direction: the same gap, normal and point
+    // bit for bit (== on f64, so an exact zero may differ in sign only), and
+    // the written-out path serves every case (no fallback to parry).
+    use kinrepro::assembly::{PREDICTION, parry_inline};
+    use rand::{Rng, SeedableRng};
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+    let mut cases = 0;
+    for name in PAPER_SCENES {
+        let c = kinrepro::error::read_coupling(&scene_path(name)).unwrap();
+        for (i, contact) in c.contacts.iter().enumerate() {
+            let ball = &c.balls[contact.ball];
+            let n0 = closed_form(&contact.surface, &ball.centre, ball.radius).normal;
+            for _ in 0..500 {
+                let mut r = || rng.random_range(-1.0..1.0);
+                let shift = Vector3::new(r(), r(), r()) * 2e-5 + n0 * (r() * 2e-6);
+                let centre = ball.centre + shift;
+                let parry = contact
+                    .fixed
+                    .contact(&centre, ball.radius, PREDICTION)
+                    .unwrap();
+                let inline =
+                    parry_inline::contact(&contact.fixed, &centre, ball.radius, PREDICTION)
+                        .unwrap_or_else(|| panic!("{name} contact {}: not served", i + 1));
+                assert!(
+                    inline.gap == parry.gap
+                        && inline.normal == parry.normal
+                        && inline.point == parry.point,
+                    "{name} contact {}: {inline:?} vs parry {parry:?}",
+                    i + 1
+                );
+                cases += 1;
+            }
+        }
+    }
+    assert_eq!(cases, 7 * 6 * 500);
+}
+
+#[test]
 fn friction_limit_is_scale_free_and_grows_with_groove_steepness() {
     let base = std::fs::read_to_string(scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
     let limit = |src: &str| {

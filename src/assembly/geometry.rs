@@ -1,8 +1,11 @@
 //! Contact geometry of a moving ball against a fixed surface, from parry3d-f64.
 //!
-//! parry's exact paths are used: ball-halfspace, ball-ball and ball-cylinder
-//! (analytic projection). GJK/EPA, which loses ~1e-14 m near contact, is
-//! never reached: [`FixedShape`] only holds those three shapes, and the test
+//! parry's exact paths are used: ball-halfspace, ball-ball and ball-capsule
+//! (analytic projection; a pin is parry's capsule of the pin's radius about
+//! a segment on its axis, whose side is the pin's cylinder, long enough
+//! that a ball never reaches its ends). GJK/EPA, which loses ~1e-14 m near
+//! contact, is never reached: [`FixedShape`] only holds those three shapes,
+//! and the test
 //! `parry_contact_matches_closed_form` checks every pair against the closed
 //! forms below at separations and penetrations from 1 nm to 1 um (agreement
 //! below 1e-12 m is required; observed ~1e-17 m).
@@ -16,9 +19,9 @@
 //! ```
 
 use nalgebra::Vector3;
-use parry3d_f64::math::{Pose as DPose3, Rotation as DQuat, Vector as DVec3};
+use parry3d_f64::math::{Pose as DPose3, Vector as DVec3};
 use parry3d_f64::query;
-use parry3d_f64::shape::{Ball, Cylinder, HalfSpace, Shape};
+use parry3d_f64::shape::{Ball, Capsule, HalfSpace, Shape};
 
 use crate::scene::SurfaceGeometry;
 
@@ -37,7 +40,9 @@ pub struct ContactGeometry {
 #[derive(Debug, Clone)]
 pub enum FixedShape {
     Plane(HalfSpace, DPose3),
-    Cylinder(Cylinder, DPose3),
+    /// A pin: a capsule about a segment of its axis, in world coordinates
+    /// (its pose the identity, so that no rotation enters its contacts).
+    Cylinder(Capsule, DPose3),
     Sphere(Ball, DPose3),
 }
 
@@ -63,12 +68,12 @@ impl FixedShape {
                 direction,
                 radius,
             } => FixedShape::Cylinder(
-                Cylinder::new(half_length, radius),
-                // parry's cylinder axis is its local y.
-                DPose3::from_parts(
-                    dvec(&axis_point),
-                    DQuat::from_rotation_arc(DVec3::Y, dvec(&direction)),
+                Capsule::new(
+                    dvec(&(axis_point - direction * half_length)),
+                    dvec(&(axis_point + direction * half_length)),
+                    radius,
                 ),
+                DPose3::IDENTITY,
             ),
             SurfaceGeometry::Sphere { centre, radius } => {
                 FixedShape::Sphere(Ball::new(radius), DPose3::from_translation(dvec(&centre)))

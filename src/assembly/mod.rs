@@ -3,6 +3,7 @@
 
 pub mod constraint;
 pub mod geometry;
+pub mod parry_inline;
 
 use nalgebra::{Matrix6, UnitQuaternion, Vector3, Vector6};
 use thiserror::Error;
@@ -112,6 +113,10 @@ pub enum AssemblyError {
 /// Ball centres are placed at most this far from touching (before the
 /// touching pose is solved) [m].
 pub const TOUCH_TOLERANCE: f64 = 1e-6;
+
+/// Prediction distance of the contact queries [m]: far beyond any seating
+/// motion, so that an opening contact still reports its gap.
+pub const PREDICTION: f64 = 1e-2;
 
 impl Coupling {
     /// Assemble a validated scene: laws, parry shapes, exact-constraint check,
@@ -240,14 +245,26 @@ impl Coupling {
 
     /// Geometry of contact `i` with the moving half at `pose`.
     pub fn geometry(&self, i: usize, pose: &BodyPose) -> ContactGeometry {
+        let centre = pose.apply(&self.balls[self.contacts[i].ball].centre);
+        self.geometry_at(i, &centre)
+    }
+
+    /// [`Self::geometry`] with the world position of the contact's ball
+    /// centre given: parry's query.
+    pub fn geometry_at(&self, i: usize, centre: &Vector3<f64>) -> ContactGeometry {
         let c = &self.contacts[i];
-        let ball = &self.balls[c.ball];
-        let centre = pose.apply(&ball.centre);
-        // Prediction distance: far beyond any seating motion, so that an
-        // opening contact still reports its gap.
+        let radius = self.balls[c.ball].radius;
         c.fixed
-            .contact(&centre, ball.radius, 1e-2)
-            .unwrap_or_else(|| geometry::closed_form(&c.surface, &centre, ball.radius))
+            .contact(centre, radius, PREDICTION)
+            .unwrap_or_else(|| geometry::closed_form(&c.surface, centre, radius))
+    }
+
+    /// [`Self::geometry_at`] by parry's arithmetic written out
+    /// ([`parry_inline`]): the same bits, without parry's dispatch.
+    pub fn geometry_inline_at(&self, i: usize, centre: &Vector3<f64>) -> ContactGeometry {
+        let c = &self.contacts[i];
+        parry_inline::contact(&c.fixed, centre, self.balls[c.ball].radius, PREDICTION)
+            .unwrap_or_else(|| self.geometry_at(i, centre))
     }
 
     /// Constraint rows w_i = [n_i; c_i x n_i] at `pose` (c_i the ball centre):

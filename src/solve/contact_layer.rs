@@ -18,7 +18,6 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use crate::assembly::geometry::closed_form;
 use crate::assembly::{BodyPose, ContactGeometry, Coupling};
 use crate::contact::{Friction, SlipState, TangentialInput, TangentialResponse, TangentialState};
 use crate::scene::SurfaceGeometry;
@@ -87,38 +86,35 @@ pub fn evaluate(
     evaluate_at(coupling, i, g, pose, committed_pose, committed, friction)
 }
 
-/// Where the contact geometry of an evaluation comes from.
+/// Where the contact geometry of an evaluation comes from. Both give the
+/// same bits (`tests/scenes.rs`, `parry_inline_is_parrys_query_bit_for_bit`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum GeometrySource {
     /// parry's contact query ([`Coupling::geometry`]).
     Parry,
-    /// The closed forms of `assembly::geometry` (plane, cylinder, sphere),
-    /// which parry's exact paths match to ~1e-17 m.
-    ClosedForm,
+    /// parry's arithmetic written out ([`crate::assembly::parry_inline`]):
+    /// no shape dispatch, no rotations by the identity.
+    Inline,
 }
 
 impl GeometrySource {
     /// Geometry of contact `i` at `pose`.
     pub fn geometry(self, coupling: &Coupling, i: usize, pose: &BodyPose) -> ContactGeometry {
         let centre = coupling.balls[coupling.contacts[i].ball].centre;
-        self.geometry_with_centre(coupling, i, pose, &pose.apply(&centre))
+        self.geometry_with_centre(coupling, i, &pose.apply(&centre))
     }
 
     /// [`Self::geometry`] with the world position of the contact's ball
-    /// centre at `pose` given (shared by the contacts of one ball).
+    /// centre given (shared by the contacts of one ball).
     pub fn geometry_with_centre(
         self,
         coupling: &Coupling,
         i: usize,
-        pose: &BodyPose,
         centre: &Vector3<f64>,
     ) -> ContactGeometry {
         match self {
-            GeometrySource::Parry => coupling.geometry(i, pose),
-            GeometrySource::ClosedForm => {
-                let c = &coupling.contacts[i];
-                closed_form(&c.surface, centre, coupling.balls[c.ball].radius)
-            }
+            GeometrySource::Parry => coupling.geometry_at(i, centre),
+            GeometrySource::Inline => coupling.geometry_inline_at(i, centre),
         }
     }
 }

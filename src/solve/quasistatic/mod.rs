@@ -87,8 +87,9 @@ pub fn seat(
 pub struct SeatingSetup<'a> {
     coupling: &'a Coupling,
     x1: Vector6<f64>,
-    /// Closed-form normals (the uniform path), parry's (the adaptive path).
-    virgin_closed_form: Vec<TangentialState>,
+    /// The normals of parry's arithmetic written out (the uniform path)
+    /// and of parry's query (the adaptive path): the same bits.
+    virgin_inline: Vec<TangentialState>,
     virgin_parry: OnceLock<Vec<TangentialState>>,
 }
 
@@ -97,7 +98,7 @@ impl<'a> SeatingSetup<'a> {
         SeatingSetup {
             coupling,
             x1: solver::predictor(coupling),
-            virgin_closed_form: virgin_states(coupling, GeometrySource::ClosedForm),
+            virgin_inline: virgin_states(coupling, GeometrySource::Inline),
             virgin_parry: OnceLock::new(),
         }
     }

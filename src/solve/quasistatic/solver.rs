@@ -202,7 +202,7 @@ impl<'a> Solver<'a> {
             };
             let g = self
                 .geometry
-                .geometry_with_centre(self.coupling, i, pose, &centre);
+                .geometry_with_centre(self.coupling, i, &centre);
             let du = motion.displacement(&g.point);
             let fr = self.friction[i].during(duration);
             let moved = Moved {
