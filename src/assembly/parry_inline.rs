@@ -1,36 +1,40 @@
-//! parry's contact query of a ball against a fixed plane, cylinder or
-//! sphere, written out operation for operation: the same IEEE operations in
+//! parry's contact query of a ball against a fixed plane, pin (a capsule)
+//! or sphere, written out operation for operation: the same IEEE operations in
 //! the same order as `parry3d_f64::query::contact` (parry 0.31 on glam
-//! 0.33), so the same bits, without the shape dispatcher, the boxed shapes
-//! and the rotations by the identity that parry's general path performs.
+//! 0.33), so the same bits, without the shape dispatcher and the rotations
+//! by the identity that parry's general path performs.
 //! The fast seating path ([`crate::solve::contact_layer::GeometrySource`])
 //! uses it so that it evaluates the very functions the adaptive path
 //! evaluates with parry; `tests/scenes.rs` (`parry_inline_is_parrys_query_bit_for_bit`)
-//! checks it against parry's query bit for bit.
+//! checks it against parry's query bit for bit, so a parry or glam upgrade
+//! that changes their arithmetic fails there, not silently in a study.
 //!
 //! parry computes a contact in the fixed shape's frame: pos12 = pos1^-1 pos2
 //! (pos1 the shape's pose, pos2 = (c, I) the ball's), the pair's contact
 //! there, then points and normal back to the world (`Contact::transform_by_mut`).
-//! With the identity rotation of a plane's and a sphere's pose, every
-//! rotation in that chain is by the unit quaternion (0, 0, 0, 1), which glam's
-//! v (w^2 - b.b) + b 2(v.b) + (b x v) 2w returns exactly (up to the sign of
-//! an exact zero), so those rotations are left out. A pin's pose carries a
-//! rotation q; its three rotations are glam's formula above.
+//! Every fixed shape here has the identity rotation (a plane and a sphere
+//! are placed by a translation, a pin is a capsule in world coordinates),
+//! so every rotation in that chain is by the unit quaternion (0, 0, 0, 1),
+//! which glam's v (w^2 - b.b) + b 2(v.b) + (b x v) 2w returns exactly (up
+//! to the sign of an exact zero): those rotations are left out.
 //!
-//! The chains (c ball centre, r ball radius, "+", "-" and "*" componentwise):
+//! The chains (c ball centre, r ball radius, vector operations componentwise,
+//! dot products summed x, y, z):
 //! ```text
 //! plane (pose (p, I), normal n):  t = c - p;  d = t - n r;  gap = n.d;
 //!                                 point1 = (d - n gap) + p;  point2 = (d - t) + c
 //! sphere (pose (s, I), radius R): t = c - s;  gap = sqrt(t.t) - (R + r);  n = t (1/sqrt(t.t));
 //!                                 point1 = n R + s;  point2 = c - n r
-//! pin (pose (a, q), radius R):    t = q^-1 (c - a);  (e, l) = normalize_and_length(t_x, t_z);
-//!                                 m = (R e_x, t_y, R e_z);  (u, k) = normalize_and_length(m - t);
-//!                                 gap = k - r;  n = q (-u);  point1 = q m + a;  point2 = c - n r
+//! pin (capsule a-b, radius R):    o = a + (b - a) ((b - a).(c - a) / (b - a).(b - a));
+//!                                 e = (c - o) / |c - o|;  m = o + e R;
+//!                                 u = (m - c) / |m - c|;  gap = |m - c| - r;  n = -u;
+//!                                 point1 = m;  point2 = u r + c
 //! ```
-//! and point = (point1 + point2) 0.5. Where parry would take another branch
-//! (a ball centre inside a pin or beyond its ends, a degenerate normal,
-//! beyond the prediction distance) this returns `None` and the caller asks
-//! parry itself.
+//! with x / |x| formed as x (1/|x|), and point = (point1 + point2) 0.5.
+//! Where parry would take another branch (a ball centre inside a pin or
+//! beyond its segment, a degenerate normal, beyond the prediction distance,
+//! a shape posed otherwise) this returns `None` and the caller asks parry
+//! itself.
 
 use nalgebra::Vector3;
 
@@ -133,8 +137,8 @@ pub fn contact(
     }
 }
 
-/// Whether a fixed shape's pose has exactly the identity rotation (the
-/// plane's and the sphere's, built from a translation).
+/// Whether a fixed shape's pose has exactly the identity rotation (all of
+/// `FixedShape::new`'s).
 fn is_identity(pose: &parry3d_f64::math::Pose) -> bool {
     let q = pose.rotation;
     q.w == 1.0 && q.x == 0.0 && q.y == 0.0 && q.z == 0.0
