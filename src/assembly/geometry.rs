@@ -26,7 +26,7 @@ use parry3d_f64::shape::{Ball, Capsule, HalfSpace, Shape};
 use crate::scene::SurfaceGeometry;
 
 /// Contact geometry of one ball against one fixed surface.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ContactGeometry {
     /// Signed distance [m]; negative = overlap (the Hertz approach is -gap).
     pub gap: f64,

@@ -261,6 +261,7 @@ impl Coupling {
 
     /// [`Self::geometry_at`] by parry's arithmetic written out
     /// ([`parry_inline`]): the same bits, without parry's dispatch.
+    #[inline]
     pub fn geometry_inline_at(&self, i: usize, centre: &Vector3<f64>) -> ContactGeometry {
         let c = &self.contacts[i];
         parry_inline::contact(&c.fixed, centre, self.balls[c.ball].radius, PREDICTION)

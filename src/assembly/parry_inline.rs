@@ -58,6 +58,7 @@ fn normalize_and_length(v: &Vector3<f64>) -> Option<(Vector3<f64>, f64)> {
 /// parry's contact of a ball of `radius` centred at `centre` with `shape`,
 /// or `None` where parry takes a branch not written out here (module docs):
 /// then the caller asks parry.
+#[inline]
 pub fn contact(
     shape: &FixedShape,
     centre: &Vector3<f64>,

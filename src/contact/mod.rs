@@ -272,8 +272,31 @@ impl ContactLaw {
         major_axis: &Vector3<f64>,
         tangent: bool,
     ) -> (PrincipalStiffness, Matrix3<f64>, Matrix3<f64>) {
+        let (f_mid, a_mid) = self.midpoint_semi_axis(committed_fn, fn_);
+        self.midpoint_stiffness_at(f_mid, a_mid, normal, major_axis, tangent)
+    }
+
+    /// The mean normal force F_mid = (committed_fn + fn_)/2 of an increment
+    /// and the major semi-axis a(F_mid) (the fast cube root) of
+    /// [`Self::midpoint_stiffness`]: its long-latency part, which the
+    /// solver forms for all contacts before the rest.
+    #[inline]
+    pub fn midpoint_semi_axis(&self, committed_fn: f64, fn_: f64) -> (f64, f64) {
         let f_mid = 0.5 * (committed_fn + fn_);
-        let a_mid = self.hertz.major_semi_axis_fast(f_mid);
+        (f_mid, self.hertz.major_semi_axis_fast(f_mid))
+    }
+
+    /// [`Self::midpoint_stiffness`] from F_mid and a(F_mid)
+    /// ([`Self::midpoint_semi_axis`]).
+    #[inline]
+    pub fn midpoint_stiffness_at(
+        &self,
+        f_mid: f64,
+        a_mid: f64,
+        normal: &Vector3<f64>,
+        major_axis: &Vector3<f64>,
+        tangent: bool,
+    ) -> (PrincipalStiffness, Matrix3<f64>, Matrix3<f64>) {
         let principal =
             PrincipalStiffness::new(self.mindlin.map(|c| c * a_mid), normal, major_axis);
         let kt = principal.tensor(normal);

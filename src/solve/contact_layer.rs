@@ -106,6 +106,7 @@ impl GeometrySource {
 
     /// [`Self::geometry`] with the world position of the contact's ball
     /// centre given (shared by the contacts of one ball).
+    #[inline]
     pub fn geometry_with_centre(
         self,
         coupling: &Coupling,
@@ -194,6 +195,48 @@ pub struct Moved<'s> {
     pub friction: Friction,
 }
 
+/// The normal part of one contact's evaluation: approach, Hertz (with the
+/// support compliance) force and stiffness, and the increment's mean normal
+/// force and semi-axis for K_t. It holds the evaluation's long chains of
+/// dependent operations (square root, cube root); [`Solver::evaluate_all`]
+/// forms it for every contact before the rest of any, so that the
+/// processor overlaps the contacts' chains (the same operations per
+/// contact, the same bits).
+///
+/// [`Solver::evaluate_all`]: crate::solve::quasistatic
+#[derive(Debug, Clone, Copy, Default)]
+pub struct NormalPart {
+    pub approach: f64,
+    pub normal_force: f64,
+    pub normal_stiffness: f64,
+    pub f_mid: f64,
+    pub a_mid: f64,
+}
+
+impl NormalPart {
+    /// Contact `i` of `coupling` at geometry `g`, from the committed state.
+    #[inline]
+    pub fn new(
+        coupling: &Coupling,
+        i: usize,
+        g: &ContactGeometry,
+        committed: &TangentialState,
+    ) -> Self {
+        let contact = &coupling.contacts[i];
+        let approach = -g.gap;
+        // Hertz in series with the support compliance (`contact::series`).
+        let (fn_, kn) = contact.normal.force_and_stiffness(approach);
+        let (f_mid, a_mid) = contact.law.midpoint_semi_axis(committed.normal_force, fn_);
+        NormalPart {
+            approach,
+            normal_force: fn_,
+            normal_stiffness: kn,
+            f_mid,
+            a_mid,
+        }
+    }
+}
+
 /// [`evaluate_moved`] written into the slot `out` (the solvers' buffers,
 /// reused across iterations: no evaluation is built and then moved). With
 /// `tangent` false the tangent (`stiffness`, dK_t/dF_n and the law's
@@ -209,6 +252,20 @@ pub fn evaluate_moved_into(
     moved: &Moved,
     tangent: bool,
 ) {
+    let normal = NormalPart::new(coupling, i, &moved.geometry, moved.committed);
+    evaluate_prepared_into(out, coupling, i, moved, &normal, tangent);
+}
+
+/// [`evaluate_moved_into`] with the contact's [`NormalPart`] formed.
+#[inline]
+pub fn evaluate_prepared_into(
+    out: &mut ContactEval,
+    coupling: &Coupling,
+    i: usize,
+    moved: &Moved,
+    normal: &NormalPart,
+    tangent: bool,
+) {
     let Moved {
         geometry: g,
         du,
@@ -216,16 +273,20 @@ pub fn evaluate_moved_into(
         friction,
     } = *moved;
     let contact = &coupling.contacts[i];
-    let approach = -g.gap;
-    // Hertz in series with the support compliance (`contact::series`).
-    let (fn_, kn) = contact.normal.force_and_stiffness(approach);
+    let NormalPart {
+        approach,
+        normal_force: fn_,
+        normal_stiffness: kn,
+        f_mid,
+        a_mid,
+    } = *normal;
     let major_axis = match contact.surface {
         SurfaceGeometry::Cylinder { direction, .. } => direction,
         _ => Vector3::zeros(), // circular: K_t is isotropic
     };
     let law = &contact.law;
     let (principal, kt, dkt) =
-        law.midpoint_stiffness(committed.normal_force, fn_, &g.normal, &major_axis, tangent);
+        law.midpoint_stiffness_at(f_mid, a_mid, &g.normal, &major_axis, tangent);
     let tangential_law = coupling.scene.friction.tangential_law;
     let (contact_radius, mindlin_shape) =
         law.mindlin_deresiewicz_inputs(tangential_law, fn_, &g.normal, &major_axis);

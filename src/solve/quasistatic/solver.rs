@@ -35,17 +35,22 @@ use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
 use super::external::ExternalLoad;
 use super::lu6::solve6;
+use crate::assembly::ContactGeometry;
 use crate::assembly::constraint::frictionless_preload_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
 use crate::solve::contact_layer::{
-    ContactEval, GeometrySource, Motion, Moved, evaluate_moved_into,
+    ContactEval, GeometrySource, Motion, Moved, NormalPart, evaluate_prepared_into,
 };
 use crate::solve::{ContactResult, SolveError, SolverOptions};
 
 /// Ball centres held on the stack by [`Solver::evaluate_all`] (a kinematic
 /// coupling has three balls; more are placed one by one).
 const MAX_BALLS: usize = 8;
+
+/// Contacts evaluated together by [`Solver::evaluate_all`] (a kinematic
+/// coupling has six).
+const GROUP: usize = 8;
 
 /// A force and the world point it acts at (moving with the body).
 type PointForce = (Vector3<f64>, Vector3<f64>);
@@ -194,24 +199,44 @@ impl<'a> Solver<'a> {
         for (c, ball) in centres.iter_mut().zip(balls) {
             *c = pose.apply(&ball.centre);
         }
-        for (i, (state, slot)) in states.iter().zip(out.iter_mut()).enumerate() {
-            let ball = self.coupling.contacts[i].ball;
-            let centre = match centres.get(ball) {
-                Some(c) => *c,
-                None => pose.apply(&balls[ball].centre),
-            };
-            let g = self
-                .geometry
-                .geometry_with_centre(self.coupling, i, &centre);
-            let du = motion.displacement(&g.point);
-            let fr = self.friction[i].during(duration);
-            let moved = Moved {
-                geometry: g,
-                du,
-                committed: state,
-                friction: fr,
-            };
-            evaluate_moved_into(slot, self.coupling, i, &moved, tangent);
+        // Two passes over each group of contacts: first geometry and the
+        // normal part (the long square- and cube-root chains) of every
+        // contact of the group, then the tangential law and the tangent, so
+        // that the chains of different contacts overlap in the processor
+        // (`contact_layer::NormalPart`; the same operations per contact).
+        let mut geometry = [ContactGeometry::default(); GROUP];
+        let mut normal = [NormalPart::default(); GROUP];
+        for start in (0..states.len()).step_by(GROUP) {
+            let end = (start + GROUP).min(states.len());
+            for i in start..end {
+                let ball = self.coupling.contacts[i].ball;
+                let centre = match centres.get(ball) {
+                    Some(c) => *c,
+                    None => pose.apply(&balls[ball].centre),
+                };
+                let g = self
+                    .geometry
+                    .geometry_with_centre(self.coupling, i, &centre);
+                normal[i - start] = NormalPart::new(self.coupling, i, &g, &states[i]);
+                geometry[i - start] = g;
+            }
+            for i in start..end {
+                let g = geometry[i - start];
+                let moved = Moved {
+                    geometry: g,
+                    du: motion.displacement(&g.point),
+                    committed: &states[i],
+                    friction: self.friction[i].during(duration),
+                };
+                evaluate_prepared_into(
+                    &mut out[i],
+                    self.coupling,
+                    i,
+                    &moved,
+                    &normal[i - start],
+                    tangent,
+                );
+            }
         }
     }
 
