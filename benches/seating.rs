@@ -4,7 +4,10 @@
 //! alone: today's algorithm, the reference of the fast one); and the fast
 //! path with the coupling's set-up shared as in a study (`seat_prepared`),
 //! and as a study runs it: set-up shared and the buffers of one reused
-//! workspace, pose only (`seat_in`).
+//! workspace, pose only (`seat_in`). And one contact's geometry (the first
+//! contact of each scene: a plane, a pin, a seat plane) by parry's query
+//! (the adaptive path's) and by parry's arithmetic written out
+//! (`assembly::parry_inline`, the fast path's; the same bits).
 
 use std::hint::black_box;
 use std::path::Path;
@@ -14,6 +17,7 @@ use kinrepro::solve::quasistatic::{
     SeatingSetup, Workspace, seat, seat_adaptive, seat_in, seat_prepared,
 };
 use kinrepro::solve::{SeatingPath, SolverOptions};
+use nalgebra::Vector3;
 
 fn seating(c: &mut Criterion) {
     for name in [
@@ -47,6 +51,22 @@ fn seating(c: &mut Criterion) {
         c.bench_function(&format!("quasi-static seating/adaptive/{name}"), |b| {
             b.iter(|| seat_adaptive(black_box(&coupling), black_box(&mu), &opts).unwrap())
         });
+        // The ball pressed 0.5 um into its first surface and moved sideways.
+        let ball = &coupling.balls[coupling.contacts[0].ball];
+        let n = coupling.geometry(0, &coupling.touching_pose).normal;
+        let centre = ball.centre - n * 5e-7 + Vector3::new(1e-7, -2e-7, 0.0);
+        for (label, inline) in [("parry", false), ("inline", true)] {
+            c.bench_function(&format!("contact geometry/{label}/{name}"), |b| {
+                b.iter(|| {
+                    let centre = black_box(&centre);
+                    if inline {
+                        coupling.geometry_inline_at(0, centre)
+                    } else {
+                        coupling.geometry_at(0, centre)
+                    }
+                })
+            });
+        }
     }
 }
 
