@@ -55,9 +55,11 @@ fn nvec(v: DVec3) -> Vector3<f64> {
 }
 
 impl FixedShape {
-    /// Build the parry shape of a surface. `half_length` is the half-length
-    /// of a pin (long enough that the ball never reaches its ends).
-    pub fn new(surface: &SurfaceGeometry, half_length: f64) -> Self {
+    /// Build the parry shape of a surface. A pin's capsule reaches
+    /// `half_length` either way along its axis from the foot of the ball
+    /// centre `ball` (long enough that the ball never reaches its ends,
+    /// wherever on the axis the scene put `axis_point`).
+    pub fn new(surface: &SurfaceGeometry, half_length: f64, ball: &Vector3<f64>) -> Self {
         match *surface {
             SurfaceGeometry::Plane { point, normal } => FixedShape::Plane(
                 HalfSpace::new(dvec(&normal)),
@@ -67,14 +69,17 @@ impl FixedShape {
                 axis_point,
                 direction,
                 radius,
-            } => FixedShape::Cylinder(
-                Capsule::new(
-                    dvec(&(axis_point - direction * half_length)),
-                    dvec(&(axis_point + direction * half_length)),
-                    radius,
-                ),
-                DPose3::IDENTITY,
-            ),
+            } => {
+                let foot = axis_point + direction * direction.dot(&(ball - axis_point));
+                FixedShape::Cylinder(
+                    Capsule::new(
+                        dvec(&(foot - direction * half_length)),
+                        dvec(&(foot + direction * half_length)),
+                        radius,
+                    ),
+                    DPose3::IDENTITY,
+                )
+            }
             SurfaceGeometry::Sphere { centre, radius } => {
                 FixedShape::Sphere(Ball::new(radius), DPose3::from_translation(dvec(&centre)))
             }

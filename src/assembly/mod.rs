@@ -189,7 +189,7 @@ impl Coupling {
                 normal: SeriesNormal::new(law.hertz, s.support_compliance),
                 pair,
                 law,
-                fixed: FixedShape::new(&s.geometry, half_length),
+                fixed: FixedShape::new(&s.geometry, half_length, &ball.centre),
             });
         }
         let mut coupling = Coupling {
