@@ -29,7 +29,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::fixed3::{mat_mat, mat_vec};
 use super::friction::{FrictionLaw, SlideInput, Sliding};
-use super::mindlin::{PrincipalStiffness, project_tangential};
+use super::mindlin::{PrincipalStiffness, RadialReturn, project_tangential};
 use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, TangentialState};
 
 /// Coulomb return mapping into `out`, with its consistent tangent if
@@ -39,6 +39,10 @@ use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, Ta
 /// The decay law's slip increment uses the stiffness along the trial force,
 /// k = t^T K_t t (t = F_trial/|F_trial|): exact for a circular contact, the
 /// stiffness of the load direction for an elliptical one.
+///
+/// A circular contact (`principal` without axes, K_t = k (I - n n^T)) uses
+/// K_t's closed forms ([`Circle`]) instead of the 3x3 tensor: the same
+/// mathematics, different rounding.
 #[inline]
 pub(super) fn update(
     old: &TangentialState,
@@ -49,12 +53,18 @@ pub(super) fn update(
     out: &mut TangentialResponse,
 ) {
     let fr = input.friction;
-    let trial = old.force + mat_vec(&input.stiffness, du);
+    let circle = principal.and_then(Circle::of);
+    let trial = old.force
+        + match circle {
+            Some(c) => c.times(du),
+            None => mat_vec(&input.stiffness, du),
+        };
     let norm = trial.norm();
     // The switch law reads no stiffness (`friction::slide`).
-    let k_along = match fr.law {
-        FrictionLaw::Switch => 0.0,
-        FrictionLaw::Decay { .. } => {
+    let k_along = match (fr.law, circle) {
+        (FrictionLaw::Switch, _) => 0.0,
+        (FrictionLaw::Decay { .. }, Some(c)) => c.along(norm),
+        (FrictionLaw::Decay { .. }, None) => {
             let t = if norm > 0.0 { trial / norm } else { trial };
             t.dot(&(input.stiffness * t))
         }
@@ -70,33 +80,117 @@ pub(super) fn update(
         was_sliding: old.sliding,
         previous_velocity: old.slip_velocity,
     });
-    match sliding {
-        None => {
-            out.force = trial;
-            out.state.assign_from(old, trial, false, 0.0);
-            out.slip = SlipState::Stick;
-            if tangent {
-                out.d_force_d_du = input.stiffness;
-                out.d_force_d_fn = mat_vec(&input.d_stiffness_d_fn, du);
-            }
-        }
-        Some(s) => {
-            let (force, d_trial, d_limit) = match principal {
-                Some(p) => p.project(&input.normal, &trial, s.mu * input.normal_force),
-                None => project_tangential(
-                    &input.stiffness,
-                    &input.normal,
-                    &trial,
-                    s.mu * input.normal_force,
-                ),
+    let Some(s) = sliding else {
+        out.force = trial;
+        out.state.assign_from(old, trial, false, 0.0);
+        out.slip = SlipState::Stick;
+        if tangent {
+            out.d_force_d_du = input.stiffness;
+            out.d_force_d_fn = match circle {
+                Some(_) => du * Circle::d_k_d_fn(input),
+                None => mat_vec(&input.d_stiffness_d_fn, du),
             };
-            out.force = force;
-            out.state
-                .assign_from(old, force, true, s.slip / input.friction.duration);
-            out.slip = SlipState::Slip;
+        }
+        return;
+    };
+    let limit = s.mu * input.normal_force;
+    let force = match (circle, principal) {
+        (Some(c), _) => {
+            let r = RadialReturn::new(&input.normal, &trial, limit);
+            if tangent {
+                c.slide_tangent(&r, du, input, &s, out);
+            }
+            r.force()
+        }
+        (None, p) => {
+            let (force, d_trial, d_limit) = match p {
+                Some(p) => p.project(&input.normal, &trial, limit),
+                None => project_tangential(&input.stiffness, &input.normal, &trial, limit),
+            };
             if tangent {
                 slide_tangent(&trial, du, input, &s, &d_trial, &d_limit, out);
             }
+            force
+        }
+    };
+    out.force = force;
+    out.state
+        .assign_from(old, force, true, s.slip / input.friction.duration);
+    out.slip = SlipState::Slip;
+}
+
+/// The elastic stiffness of a circular contact, K_t = k (I - n n^T)
+/// (Mindlin's k_major = k_minor, [`PrincipalStiffness`] without axes), by
+/// its one value k. The closed forms below are exact mathematically
+/// because every vector the law applies K_t to lies in the tangent plane
+/// (n . v = 0, so (I - n n^T) v = v): the increment du (its normal part
+/// removed by `TangentialState::update_into`), the old force (rotated
+/// into the plane) and so the trial force and its direction t.
+#[derive(Debug, Clone, Copy)]
+struct Circle {
+    k: f64,
+}
+
+impl Circle {
+    #[inline]
+    fn of(p: &PrincipalStiffness) -> Option<Self> {
+        p.axes.is_none().then_some(Circle { k: p.k[0] })
+    }
+
+    /// K_t v = k v for v in the tangent plane.
+    #[inline]
+    fn times(self, v: &Vector3<f64>) -> Vector3<f64> {
+        v * self.k
+    }
+
+    /// t^T K_t t = k (1 - (n . t)^2) = k for the unit direction t of a
+    /// nonzero in-plane trial force of length `norm` (0 for a zero one,
+    /// whose t is the zero vector).
+    #[inline]
+    fn along(self, norm: f64) -> f64 {
+        if norm > 0.0 { self.k } else { 0.0 }
+    }
+
+    /// c of dK_t/dF_n = c (I - n n^T): K_t = k(F_n) (I - n n^T) with n
+    /// independent of F_n, and trace(I - n n^T) = 3 - |n|^2 = 2, so
+    /// c = trace(dK_t/dF_n) / 2 (then dK_t/dF_n v = c v in the plane).
+    #[inline]
+    fn d_k_d_fn(input: &TangentialInput) -> f64 {
+        let dk = &input.d_stiffness_d_fn;
+        0.5 * (dk[(0, 0)] + dk[(1, 1)] + dk[(2, 2)])
+    }
+
+    /// [`slide_tangent`] for a circular contact, from the radial return
+    /// `r` (L = mu F_n, T = |F_trial|, t in the plane, so that
+    /// dF/dF_trial = (L/T) (I - n n^T - t t^T) =: (L/T) Q and dF/dL = t).
+    /// With Q (I - n n^T) = Q, t^T (I - n n^T) = t^T, Q du = du - t (t . du)
+    /// and dK_t/dF_n = c (I - n n^T):
+    /// ```text
+    /// dF/d(du) = (L/T) k Q + F_n (dmu/dT) k t t^T
+    /// dF/dF_n  = (mu + F_n dmu/dF_n) t + (L/T) c (du - t (t . du))
+    /// dmu/dF_n = dmu/dT c (t . du) + dmu/dF_n|_T,k + dmu/dk c
+    /// ```
+    #[inline]
+    fn slide_tangent(
+        self,
+        r: &RadialReturn,
+        du: &Vector3<f64>,
+        input: &TangentialInput,
+        s: &Sliding,
+        out: &mut TangentialResponse,
+    ) {
+        let (f_n, t, k) = (input.normal_force, r.t, self.k);
+        let c = Self::d_k_d_fn(input);
+        let t_du = t.dot(du);
+        let in_plane = (du - t * t_du) * (r.ratio * c);
+        out.d_force_d_du = r.scaled_plane(&input.normal, r.ratio * k);
+        if s.d_mu_d_trial == 0.0 && s.d_mu_d_fn == 0.0 && s.d_mu_d_k == 0.0 {
+            // A constant coefficient (the switch law, a sliding decay contact).
+            out.d_force_d_fn = s.mu * t + in_plane;
+        } else {
+            let dmu_dfn = s.d_mu_d_trial * c * t_du + s.d_mu_d_fn + s.d_mu_d_k * c;
+            out.d_force_d_du += (t * (f_n * s.d_mu_d_trial * k)) * t.transpose();
+            out.d_force_d_fn = (s.mu + f_n * dmu_dfn) * t + in_plane;
         }
     }
 }

@@ -125,16 +125,8 @@ impl PrincipalStiffness {
     ) -> (Vector3<f64>, Matrix3<f64>, Vector3<f64>) {
         match self.axes {
             None => {
-                let in_plane = trial - n * n.dot(trial);
-                let norm = in_plane.norm();
-                let t = in_plane / norm;
-                let limit = limit.max(0.0);
-                let a = limit / norm;
-                // a ((I - n n^T) - t t^T), entry by entry as nalgebra forms it.
-                let d_trial = Matrix3::from_fn(|i, j| {
-                    a * (if i == j { 1.0 } else { 0.0 } - n[i] * n[j] - t[i] * t[j])
-                });
-                (t * limit, d_trial, t)
+                let r = RadialReturn::new(n, trial, limit);
+                (r.force(), r.scaled_plane(n, r.ratio), r.t)
             }
             Some([e1, e2]) => {
                 let local = Vector2::new(e1.dot(trial), e2.dot(trial));
@@ -149,6 +141,48 @@ impl PrincipalStiffness {
                 (in_3d(&f), d_trial, in_3d(&d_limit))
             }
         }
+    }
+}
+
+/// The radial return of a circular contact onto |F| = L
+/// ([`PrincipalStiffness::project`] without axes): the unit direction
+/// t = (F_trial - n (n . F_trial)) / T of the trial force in the tangent
+/// plane, T its length, the limit L (negative taken as 0) and the ratio
+/// L/T, so that F = L t and dF/dF_trial = (L/T) (I - n n^T - t t^T).
+#[derive(Debug, Clone, Copy)]
+pub struct RadialReturn {
+    pub t: Vector3<f64>,
+    pub limit: f64,
+    /// L / T.
+    pub ratio: f64,
+}
+
+impl RadialReturn {
+    #[inline]
+    pub fn new(n: &Vector3<f64>, trial: &Vector3<f64>, limit: f64) -> Self {
+        let in_plane = trial - n * n.dot(trial);
+        let norm = in_plane.norm();
+        let limit = limit.max(0.0);
+        RadialReturn {
+            t: in_plane / norm,
+            limit,
+            ratio: limit / norm,
+        }
+    }
+
+    /// F = L t.
+    #[inline]
+    pub fn force(&self) -> Vector3<f64> {
+        self.t * self.limit
+    }
+
+    /// s (I - n n^T - t t^T), entry by entry as nalgebra forms
+    /// s ((I - n n^T) - t t^T): the projector onto the tangent plane
+    /// without t, scaled (s = L/T is dF/dF_trial).
+    #[inline]
+    pub fn scaled_plane(&self, n: &Vector3<f64>, s: f64) -> Matrix3<f64> {
+        let t = &self.t;
+        Matrix3::from_fn(|i, j| s * (if i == j { 1.0 } else { 0.0 } - n[i] * n[j] - t[i] * t[j]))
     }
 }
 
