@@ -254,13 +254,9 @@ mod tests {
     /// and the decay law (whose dmu terms the closed form carries too).
     #[test]
     fn circular_closed_forms_are_the_tensor_route() {
-        let mut s: u64 = 0x9E37_79B9_7F4A_7C15;
-        let mut next = move || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x9E37_79B9);
+        let mut next = move || rng.random_range(-0.5..0.5);
         let close = |a: &[f64], b: &[f64], scale: f64| {
             a.iter().zip(b).all(|(x, y)| (x - y).abs() <= 1e-12 * scale)
         };
