@@ -11,7 +11,7 @@
 mod common;
 
 use kinrepro::assembly::Coupling;
-use kinrepro::calibrate::fit::{CalibrateOptions, fit_with, observed};
+use kinrepro::calibrate::fit::{fit_with, observed};
 use kinrepro::calibrate::likelihood::{goodness_of_fit, model_covariance};
 use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED, model_options, with_spread};
 use kinrepro::calibrate::{Measurement, ModelStudy, calibrate, predict};
@@ -132,28 +132,13 @@ fn transfer_to_scenes_01_and_04_contains_direct_studies() {
         "syn02.csv",
     )
     .unwrap();
-    let opts = CalibrateOptions {
-        fit: vec!["spread".into()],
-        noise: [None; 6],
-        point: None,
-        samples: MODEL_SAMPLES,
-        seed: MODEL_SEED,
-        method: Method::default(),
-    };
+    let opts = common::synthetic::calibrate_options(&["spread"]);
     let cal = calibrate(&c02, &m, &opts).unwrap();
     let sp = cal.spread().expect("the spread is fitted");
     eprintln!("spread {} [{}, {}]", sp.estimate, sp.low, sp.high);
     assert!(cal.goodness_of_fit.ok);
-    for name in [
-        "01_maxwell_vgroove_steel.toml",
-        "04_maxwell_balls_steel.toml",
-    ] {
-        let c = common::load(name);
-        let p = predict(&c, &cal, MODEL_SAMPLES, MODEL_SEED, Method::default()).unwrap();
-        assert!(p.measured.is_none(), "{name} is not the calibrated design");
-        // The direct study: 2000 Monte Carlo samples at the true spread, another seed.
-        assert_direct_inside(name, &p, &with_spread(&c, TRUE_SPREAD));
-    }
+    // The direct studies: at the true spread.
+    assert_transfer(&cal, |c| with_spread(c, TRUE_SPREAD));
     // The calibrated design itself carries its measured values.
     let p = predict(&c02, &cal, 200, MODEL_SEED, Method::default()).unwrap();
     let (point, dofs) = p.measured.expect("scene 02 is the calibrated design");
@@ -183,13 +168,21 @@ fn joint_transfer_to_scenes_01_and_04_contains_direct_studies() {
     let cal = calibrate(&c02, &m, &opts).unwrap();
     eprintln!("{:?}", cal.parameters);
     assert!(cal.goodness_of_fit.ok);
+    assert_transfer(&cal, |c| with_values(c, &params, &truth));
+}
+
+/// The prediction of `cal` for scenes 01 and 04, neither of them the
+/// calibrated design, contains sigma of the direct study of `truth` applied
+/// to each ([`assert_direct_inside`]).
+fn assert_transfer(cal: &kinrepro::calibrate::Calibration, truth: impl Fn(&Coupling) -> Coupling) {
     for name in [
         "01_maxwell_vgroove_steel.toml",
         "04_maxwell_balls_steel.toml",
     ] {
         let c = common::load(name);
-        let p = predict(&c, &cal, MODEL_SAMPLES, MODEL_SEED, Method::default()).unwrap();
-        assert_direct_inside(name, &p, &with_values(&c, &params, &truth));
+        let p = predict(&c, cal, MODEL_SAMPLES, MODEL_SEED, Method::default()).unwrap();
+        assert!(p.measured.is_none(), "{name} is not the calibrated design");
+        assert_direct_inside(name, &p, &truth(&c));
     }
 }
 
