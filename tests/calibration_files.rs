@@ -129,10 +129,8 @@ fn cli_calibrate_and_predict() {
     let s01 = common::scene("01_maxwell_vgroove_steel.toml")
         .display()
         .to_string();
-    let measured = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/docs/calibration/measured_02.csv"
-    );
+    let measured = common::worked_measurement().display().to_string();
+    let measured = measured.as_str();
     // A bad file: one error line, non-zero exit.
     std::fs::write(path("bad.csv"), "x_nm,y_nm\n1,2\n3,zz\n4,5\n").unwrap();
     let (ok, _, e) = common::kinrepro(&["calibrate", &s02, "--measured", &path("bad.csv")]);

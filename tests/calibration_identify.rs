@@ -154,8 +154,7 @@ fn joint_misfit_is_flagged() {
 #[test]
 fn bad_fit_lists_give_one_error_line() {
     let scene = common::scene("02_maxwell_pins_steel.toml");
-    let measured =
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/calibration/measured_02.csv");
+    let measured = common::worked_measurement();
     for (fit, want) in [
         ("spread,mu", "--fit mu: unknown parameter"),
         ("", "--fit: empty parameter name"),

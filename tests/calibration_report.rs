@@ -29,10 +29,8 @@ fn report_of_a_prediction_names_its_calibration_and_shows_the_measurement() {
     let s02 = common::scene("02_maxwell_pins_steel.toml")
         .display()
         .to_string();
-    let measured = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/docs/calibration/measured_02.csv"
-    );
+    let measured = common::worked_measurement().display().to_string();
+    let measured = measured.as_str();
     let cal = path("cal.json");
     let (ok, _, e) = common::kinrepro(&[
         "calibrate",

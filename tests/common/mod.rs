@@ -27,6 +27,11 @@ pub fn scene(name: &str) -> PathBuf {
         .join(name)
 }
 
+/// The worked 50-cycle measurement of scene 02 (docs/calibration/).
+pub fn worked_measurement() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/calibration/measured_02.csv")
+}
+
 /// Load and assemble a bundled scene.
 pub fn load(name: &str) -> kinrepro::assembly::Coupling {
     kinrepro::error::read_coupling(&scene(name)).unwrap()
