@@ -116,6 +116,7 @@ fn contact_update(c: &mut Criterion) {
 /// One contact as the contact layer sees it: the normal and the major axis
 /// (along the pin for sphere-cylinder, none otherwise), the committed normal
 /// force and this evaluation's approach, and the tangential increment.
+#[derive(Clone, Copy)]
 struct Setting {
     normal: Vector3<f64>,
     major_axis: Vector3<f64>,
@@ -217,67 +218,101 @@ impl Setting {
     }
 }
 
-fn update_alone(c: &mut Criterion) {
+/// One shape and law as the contact layer prepares them ([`Setting`]).
+struct Case {
+    shape: ContactShape,
+    law: ContactLaw,
+    normal_law: SeriesNormal,
+    setting: Setting,
+    tl: TangentialLaw,
+    friction: Friction,
+    label: &'static str,
+    input: TangentialInput,
+    principal: PrincipalStiffness,
+}
+
+/// Every shape with every law of [`laws`].
+fn cases() -> Vec<Case> {
+    let mut out = Vec::new();
     for shape in ContactShape::ALL {
         let law = law_of(shape);
         let normal_law = SeriesNormal::new(law.hertz, 0.0);
         let setting = Setting::new(shape, &law);
         for (tl, friction, label) in laws() {
             let (input, principal) = setting.input(&law, &normal_law, tl, friction);
-            for slide in [false, true] {
-                let state = setting.committed(tl, &input, &principal, slide);
-                let which = if slide { "slide" } else { "stick" };
-                let want = if slide {
-                    kinrepro::contact::SlipState::Slip
-                } else {
-                    kinrepro::contact::SlipState::Stick
-                };
-                assert_eq!(
-                    state.update_with(tl, &input, Some(&principal)).slip,
-                    want,
-                    "{label} {} {which}",
-                    shape.name()
-                );
-                let name = format!("update alone/{label}/{}/{which}", shape.name());
-                c.bench_function(&name, |b| {
-                    b.iter(|| {
-                        black_box(&state).update_with(
-                            tl,
-                            black_box(&input),
-                            Some(black_box(&principal)),
-                        )
-                    })
-                });
-            }
+            out.push(Case {
+                shape,
+                law,
+                normal_law,
+                setting,
+                tl,
+                friction,
+                label,
+                input,
+                principal,
+            });
+        }
+    }
+    out
+}
+
+fn update_alone(c: &mut Criterion) {
+    for case in cases() {
+        let (tl, label, input, principal) = (case.tl, case.label, &case.input, &case.principal);
+        for slide in [false, true] {
+            let state = case.setting.committed(tl, input, principal, slide);
+            let which = if slide { "slide" } else { "stick" };
+            let want = if slide {
+                kinrepro::contact::SlipState::Slip
+            } else {
+                kinrepro::contact::SlipState::Stick
+            };
+            assert_eq!(
+                state.update_with(tl, input, Some(principal)).slip,
+                want,
+                "{label} {} {which}",
+                case.shape.name()
+            );
+            let name = format!("update alone/{label}/{}/{which}", case.shape.name());
+            c.bench_function(&name, |b| {
+                b.iter(|| {
+                    black_box(&state).update_with(tl, black_box(input), Some(black_box(principal)))
+                })
+            });
         }
     }
 }
 
 fn per_evaluation(c: &mut Criterion) {
-    for shape in ContactShape::ALL {
-        let law = law_of(shape);
-        let normal_law = SeriesNormal::new(law.hertz, 0.0);
-        let setting = Setting::new(shape, &law);
-        for (tl, friction, label) in laws() {
-            let (input, principal) = setting.input(&law, &normal_law, tl, friction);
-            let state = setting.committed(tl, &input, &principal, true);
-            in_place(
-                c,
-                &format!("{label}/{}", shape.name()),
-                &state,
-                tl,
-                &input,
-                &principal,
-            );
-            let name = format!("law work per evaluation/{label}/{}/slide", shape.name());
-            c.bench_function(&name, |b| {
-                b.iter(|| {
-                    let (input, principal) =
-                        black_box(&setting).input(&law, &normal_law, tl, friction);
-                    black_box(&state).update_with(tl, &input, Some(&principal))
-                })
-            });
-        }
+    for case in cases() {
+        let Case {
+            shape,
+            law,
+            normal_law,
+            setting,
+            tl,
+            friction,
+            label,
+            input,
+            principal,
+        } = &case;
+        let (tl, friction) = (*tl, *friction);
+        let state = setting.committed(tl, input, principal, true);
+        in_place(
+            c,
+            &format!("{label}/{}", shape.name()),
+            &state,
+            tl,
+            input,
+            principal,
+        );
+        let name = format!("law work per evaluation/{label}/{}/slide", shape.name());
+        c.bench_function(&name, |b| {
+            b.iter(|| {
+                let (input, principal) = black_box(setting).input(law, normal_law, tl, friction);
+                black_box(&state).update_with(tl, &input, Some(&principal))
+            })
+        });
     }
 }
 
