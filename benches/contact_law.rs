@@ -285,31 +285,17 @@ fn update_alone(c: &mut Criterion) {
 
 fn per_evaluation(c: &mut Criterion) {
     for case in cases() {
-        let Case {
-            shape,
-            law,
-            normal_law,
-            setting,
-            tl,
-            friction,
-            label,
-            input,
-            principal,
-        } = &case;
-        let (tl, friction) = (*tl, *friction);
-        let state = setting.committed(tl, input, principal, true);
-        in_place(
-            c,
-            &format!("{label}/{}", shape.name()),
-            &state,
-            tl,
-            input,
-            principal,
-        );
-        let name = format!("law work per evaluation/{label}/{}/slide", shape.name());
+        let (tl, friction, label, shape) = (case.tl, case.friction, case.label, case.shape.name());
+        let state = case
+            .setting
+            .committed(tl, &case.input, &case.principal, true);
+        let what = format!("{label}/{shape}");
+        in_place(c, &what, &state, tl, &case.input, &case.principal);
+        let name = format!("law work per evaluation/{label}/{shape}/slide");
         c.bench_function(&name, |b| {
             b.iter(|| {
-                let (input, principal) = black_box(setting).input(law, normal_law, tl, friction);
+                let (input, principal) =
+                    black_box(&case.setting).input(&case.law, &case.normal_law, tl, friction);
                 black_box(&state).update_with(tl, &input, Some(&principal))
             })
         });
