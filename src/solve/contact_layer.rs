@@ -98,14 +98,8 @@ pub enum GeometrySource {
 }
 
 impl GeometrySource {
-    /// Geometry of contact `i` at `pose`.
-    pub fn geometry(self, coupling: &Coupling, i: usize, pose: &BodyPose) -> ContactGeometry {
-        let centre = coupling.balls[coupling.contacts[i].ball].centre;
-        self.geometry_with_centre(coupling, i, &pose.apply(&centre))
-    }
-
-    /// [`Self::geometry`] with the world position of the contact's ball
-    /// centre given (shared by the contacts of one ball).
+    /// Geometry of contact `i` with its ball's centre at `centre` (world
+    /// position; the solver forms it once per ball).
     #[inline]
     pub fn geometry_with_centre(
         self,

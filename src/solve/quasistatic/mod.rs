@@ -59,14 +59,11 @@ pub use load::{LoadPath, apply_load, at_rest_states};
 use path::{Buffers, End};
 use solver::{Program, Solver, contact_results};
 
-use std::sync::OnceLock;
-
 use nalgebra::Vector6;
 
 use super::{SeatedPose, Seating, SeatingPath, SolveError, SolverOptions, frictions_into};
 use crate::assembly::Coupling;
 use crate::contact::{Friction, TangentialState};
-use crate::solve::contact_layer::GeometrySource;
 
 /// Seat the coupling with static coefficients `mu_s` (contact order): the
 /// uniform fast path where it serves, else the adaptive path; the same
@@ -82,15 +79,14 @@ pub fn seat(
 /// What every seating of one coupling computes before its first
 /// increment, computed once and shared (it is `Sync`) by the seatings of a
 /// study: the frictionless predictor x_1 and the virgin contact states
-/// (zero force, tangent to the normals at the touching pose) of either
-/// path. [`seat_prepared`] with it gives the bits of [`seat`].
+/// (zero force, tangent to the normals at the touching pose), the same for
+/// both paths (their geometries give the same bits). [`seat_prepared`] with
+/// it gives the bits of [`seat`].
 pub struct SeatingSetup<'a> {
     coupling: &'a Coupling,
     x1: Vector6<f64>,
-    /// The normals of parry's arithmetic written out (the uniform path)
-    /// and of parry's query (the adaptive path): the same bits.
-    virgin_inline: Vec<TangentialState>,
-    virgin_parry: OnceLock<Vec<TangentialState>>,
+    /// Virgin states at parry's normals of the touching pose.
+    virgin: Vec<TangentialState>,
 }
 
 impl<'a> SeatingSetup<'a> {
@@ -98,18 +94,12 @@ impl<'a> SeatingSetup<'a> {
         SeatingSetup {
             coupling,
             x1: solver::predictor(coupling),
-            virgin_inline: virgin_states(coupling, GeometrySource::Inline),
-            virgin_parry: OnceLock::new(),
+            virgin: virgin_states(coupling),
         }
     }
 
     pub fn coupling(&self) -> &'a Coupling {
         self.coupling
-    }
-
-    fn virgin_parry(&self) -> &[TangentialState] {
-        self.virgin_parry
-            .get_or_init(|| virgin_states(self.coupling, GeometrySource::Parry))
     }
 }
 
@@ -189,19 +179,18 @@ fn adaptive(
 ) -> Result<SeatedPose, SolveError> {
     let c = setup.coupling;
     let solver = Solver::with_predictor(c, fr, *opts, Program::Seat, setup.x1);
-    bufs.states.clear();
-    bufs.states.extend_from_slice(setup.virgin_parry());
+    bufs.states.clone_from(&setup.virgin);
     let end = solver.run(c.touching_pose, bufs)?;
     let end = end.expect("the adaptive path never declines");
     Ok(seated(end, SeatingPath::Adaptive))
 }
 
 /// Zero tangential force at every contact, tangent to its normal at the
-/// touching pose (the geometry from `source`).
-fn virgin_states(coupling: &Coupling, source: GeometrySource) -> Vec<TangentialState> {
+/// touching pose (parry's geometry).
+fn virgin_states(coupling: &Coupling) -> Vec<TangentialState> {
     let pose = coupling.touching_pose;
     (0..coupling.contacts.len())
-        .map(|i| TangentialState::new(source.geometry(coupling, i, &pose).normal))
+        .map(|i| TangentialState::new(coupling.geometry(i, &pose).normal))
         .collect()
 }
 

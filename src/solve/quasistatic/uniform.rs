@@ -75,6 +75,6 @@ pub(super) fn seat(
     let mut solver = Solver::with_predictor(coupling, friction, *opts, Program::Seat, setup.x1);
     solver.geometry = GeometrySource::Inline;
     solver.uniform = true;
-    bufs.states.clone_from(&setup.virgin_inline);
+    bufs.states.clone_from(&setup.virgin);
     solver.run(coupling.touching_pose, bufs).ok().flatten()
 }
