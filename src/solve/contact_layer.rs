@@ -60,11 +60,7 @@ impl ContactEval {
 
     /// An empty slot (open, zero geometry) for the solvers' buffers.
     pub fn empty() -> Self {
-        Self::open(ContactGeometry {
-            gap: 0.0,
-            normal: Vector3::zeros(),
-            point: Vector3::zeros(),
-        })
+        Self::open(ContactGeometry::default())
     }
 
     pub fn slip(&self) -> SlipState {
