@@ -182,7 +182,7 @@ impl<'a> Solver<'a> {
 
     /// Every contact at `pose` into `out`, one slot per contact (the slots
     /// are made once, then written in place), with the tangent if `tangent`
-    /// ([`evaluate_moved_into`]).
+    /// ([`evaluate_prepared_into`]).
     pub fn evaluate_all(
         &self,
         pose: &BodyPose,
