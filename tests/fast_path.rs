@@ -159,6 +159,9 @@ fn run_json_says_which_path_seated() {
         assert!(ok, "{err}");
         let v: serde_json::Value = serde_json::from_str(&out).unwrap();
         assert_eq!(v["seating_path"], expected, "{args:?}");
+        // And what produced it.
+        assert_eq!(v["kinrepro_version"], env!("CARGO_PKG_VERSION"), "{args:?}");
+        assert_eq!(v["schema_version"], 2, "{args:?}");
     }
 }
 

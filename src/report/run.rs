@@ -19,6 +19,9 @@ pub struct PointReport {
 /// Everything `kinrepro run` reports.
 #[derive(Debug, Clone, Serialize)]
 pub struct RunReport {
+    /// What produced it (`report::provenance`).
+    pub kinrepro_version: String,
+    pub schema_version: u32,
     pub scene: String,
     pub name: String,
     pub solver: String,
@@ -58,6 +61,8 @@ impl RunReport {
             })
             .collect();
         RunReport {
+            kinrepro_version: crate::report::provenance::VERSION.to_string(),
+            schema_version: crate::report::provenance::SCHEMA_VERSION,
             scene: coupling.scene.file.clone(),
             name: coupling.scene.name.clone(),
             solver: solver.to_string(),
