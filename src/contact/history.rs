@@ -18,8 +18,8 @@ use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 use thiserror::Error;
 
 use super::{
-    ContactLaw, Friction, SlipState, TangentialInput, TangentialLaw, TangentialState,
-    tangential_tensor,
+    ContactLaw, Friction, PrincipalStiffness, SlipState, TangentialInput, TangentialLaw,
+    TangentialResponse, TangentialState, tangential_tensor,
 };
 
 /// One row of a load history: P [N] and Q = (Qx, Qy) [N].
@@ -119,7 +119,8 @@ fn step_input(
     let n = Vector3::z();
     let x = Vector3::x();
     let f_mid = 0.5 * (state.normal_force + p);
-    let kt = tangential_tensor(law.tangential_stiffness_axes(f_mid), &n, &x);
+    let principal = PrincipalStiffness::new(law.tangential_stiffness_axes(f_mid), &n, &x);
+    let kt = principal.tensor(&n);
     let [a, b] = law.hertz.semi_axes(p);
     let shape = law
         .mindlin
@@ -129,6 +130,7 @@ fn step_input(
         du: Vector3::zeros(),
         normal_force: p,
         stiffness: kt,
+        principal,
         d_stiffness_d_fn: kt / (6.0 * f_mid),
         contact_radius: (a * b).sqrt(),
         g_star: law.g_star,
@@ -144,13 +146,14 @@ fn solve_step(
     input: &TangentialInput,
     q: &Vector3<f64>,
     limit: f64,
-) -> Result<(Vector3<f64>, super::TangentialResponse), f64> {
+) -> Result<(Vector3<f64>, TangentialResponse), f64> {
     let tol = 1e-12 * q.norm().max(limit);
     let plane = |m: &Matrix3<f64>| Matrix2::new(m[(0, 0)], m[(0, 1)], m[(1, 0)], m[(1, 1)]);
     let mut du = Vector3::zeros();
     let mut residual = f64::INFINITY;
+    let mut r = TangentialResponse::open(input.normal);
     for _ in 0..200 {
-        let r = state.update(law, &TangentialInput { du, ..*input });
+        state.update(law, &TangentialInput { du, ..*input }, true, &mut r);
         let res = q - r.force;
         residual = res.norm();
         if residual <= tol {

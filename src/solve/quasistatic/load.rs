@@ -75,14 +75,12 @@ pub fn apply_load(
         load: *load,
         factor,
     };
-    let solver = Solver::adaptive(coupling, &fr, *opts, program);
+    let solver = Solver::new(coupling, &fr, *opts, program);
     let mut bufs = Buffers {
         states: states.to_vec(),
         ..Buffers::default()
     };
-    let end = solver
-        .run(*start, &mut bufs)?
-        .expect("the adaptive path never declines");
+    let end = solver.run(*start, &mut bufs)?;
     Ok(LoadPath {
         factor: end.reached * factor,
         pose: end.pose,

@@ -39,9 +39,7 @@ use crate::assembly::ContactGeometry;
 use crate::assembly::constraint::frictionless_preload_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
-use crate::solve::contact_layer::{
-    ContactEval, GeometrySource, Motion, Moved, NormalPart, evaluate_prepared_into,
-};
+use crate::solve::contact_layer::{ContactEval, Motion, Moved, NormalPart, evaluate_into};
 use crate::solve::{ContactResult, SolveError, SolverOptions};
 
 /// Ball centres held on the stack by [`Solver::evaluate_all`] (a kinematic
@@ -99,15 +97,11 @@ pub(super) struct Solver<'a> {
     pub max_travel: f64,
     /// Duration of the whole path, s from 0 to 1 (`[preload] ramp_time`) [s].
     pub ramp_time: f64,
-    /// Where the contact geometry comes from.
-    pub geometry: GeometrySource,
-    /// The uniform (fast) path: give up where the adaptive path would halve.
-    pub uniform: bool,
 }
 
 impl<'a> Solver<'a> {
-    /// The adaptive path follower with parry's geometry (today's algorithm).
-    pub fn adaptive(
+    /// The path follower of `program`.
+    pub fn new(
         coupling: &'a Coupling,
         friction: &'a [Friction],
         opts: SolverOptions,
@@ -116,7 +110,7 @@ impl<'a> Solver<'a> {
         Self::with_predictor(coupling, friction, opts, program, predictor(coupling))
     }
 
-    /// [`Self::adaptive`] with the seating predictor x_1 ([`predictor`]) given.
+    /// [`Self::new`] with the seating predictor x_1 ([`predictor`]) given.
     pub fn with_predictor(
         coupling: &'a Coupling,
         friction: &'a [Friction],
@@ -145,8 +139,6 @@ impl<'a> Solver<'a> {
             x1,
             max_travel: coupling.slide_away_travel(),
             ramp_time: coupling.scene.preload.ramp_time,
-            geometry: GeometrySource::Parry,
-            uniform: false,
         }
     }
 
@@ -182,7 +174,7 @@ impl<'a> Solver<'a> {
 
     /// Every contact at `pose` into `out`, one slot per contact (the slots
     /// are made once, then written in place), with the tangent if `tangent`
-    /// ([`evaluate_prepared_into`]).
+    /// ([`evaluate_into`]).
     pub fn evaluate_all(
         &self,
         pose: &BodyPose,
@@ -214,9 +206,7 @@ impl<'a> Solver<'a> {
                     Some(c) => *c,
                     None => pose.apply(&balls[ball].centre),
                 };
-                let g = self
-                    .geometry
-                    .geometry_with_centre(self.coupling, i, &centre);
+                let g = self.coupling.geometry_at(i, &centre);
                 normal[i - start] = NormalPart::new(self.coupling, i, &g, &states[i]);
                 geometry[i - start] = g;
             }
@@ -228,7 +218,7 @@ impl<'a> Solver<'a> {
                     committed: &states[i],
                     friction: self.friction[i].during(duration),
                 };
-                evaluate_prepared_into(
+                evaluate_into(
                     &mut out[i],
                     self.coupling,
                     i,
