@@ -4,7 +4,6 @@
 
 use std::f64::consts::PI;
 
-use kinrepro::contact::elliptic::hamrock_brewe;
 use kinrepro::contact::{
     ContactPair, ContactShape, Friction, HertzLaw, PrincipalStiffness, SlipState, TangentialInput,
     TangentialLaw, TangentialResponse, TangentialState,
@@ -108,6 +107,29 @@ fn elliptical_law_tends_to_circular_as_cylinder_radius_grows() {
     }
 }
 
+/// Hamrock & Brewe (1983) curve fits (J. Lubrication Technol.
+/// 105:171-177; stated accuracy a few percent) for load `f`: the semi-axes
+/// a > b and the approach, `rx` < `ry` the relative radii of curvature:
+/// ```text
+/// kappa = 1.0339 (Ry/Rx)^0.6360,  Eps = 1.0003 + 0.5968 Rx/Ry,
+/// Fi = 1.5277 + 0.6023 ln(Ry/Rx), 1/R = 1/Rx + 1/Ry, E' = 2 E*,
+/// a = (6 kappa^2 Eps f R / (pi E'))^(1/3),  b = (6 Eps f R / (pi kappa E'))^(1/3),
+/// delta = Fi (9/(2 Eps R) (f / (pi kappa E'))^2)^(1/3)
+/// ```
+fn hamrock_brewe(rx: f64, ry: f64, e_star: f64, f: f64) -> [f64; 3] {
+    let alpha = ry / rx;
+    let kappa = 1.0339 * alpha.powf(0.6360);
+    let eps = 1.0003 + 0.5968 / alpha;
+    let fi = 1.5277 + 0.6023 * alpha.ln();
+    let r = 1.0 / (1.0 / rx + 1.0 / ry);
+    let ep = 2.0 * e_star;
+    [
+        (6.0 * kappa * kappa * eps * f * r / (PI * ep)).cbrt(),
+        (6.0 * eps * f * r / (PI * kappa * ep)).cbrt(),
+        fi * (9.0 / (2.0 * eps * r) * (f / (PI * kappa * ep)).powi(2)).cbrt(),
+    ]
+}
+
 #[test]
 fn hamrock_brewe_agrees_within_its_stated_accuracy() {
     // Hamrock & Brewe's curve fits are a few percent off: their kappa(1) =
@@ -119,17 +141,17 @@ fn hamrock_brewe_agrees_within_its_stated_accuracy() {
         let ry = rx * ratio;
         let law = HertzLaw::elliptical(rx, ry, e_star);
         let f = 10.0;
-        let hb = hamrock_brewe(rx, ry, e_star, f);
+        let [hb_a, hb_b, hb_approach] = hamrock_brewe(rx, ry, e_star, f);
         let [a, b] = law.semi_axes(f);
         let tol = if (2.0..=20.0).contains(&ratio) {
             0.015
         } else {
             0.06
         };
-        assert!(rel(hb.a, a) < tol, "ratio {ratio}: a {} vs {}", hb.a, a);
-        assert!(rel(hb.b, b) < tol, "ratio {ratio}: b {} vs {}", hb.b, b);
+        assert!(rel(hb_a, a) < tol, "ratio {ratio}: a {hb_a} vs {a}");
+        assert!(rel(hb_b, b) < tol, "ratio {ratio}: b {hb_b} vs {b}");
         assert!(
-            rel(hb.approach, law.approach(f)) < tol,
+            rel(hb_approach, law.approach(f)) < tol,
             "ratio {ratio}: delta"
         );
     }

@@ -139,8 +139,7 @@ pub struct Moved<'s> {
 /// force and semi-axis for K_t. It holds the evaluation's long chains of
 /// dependent operations (square root, cube root); [`Solver::evaluate_all`]
 /// forms it for every contact before the rest of any, so that the
-/// processor overlaps the contacts' chains (the same operations per
-/// contact, the same bits).
+/// processor overlaps the contacts' chains.
 ///
 /// [`Solver::evaluate_all`]: crate::solve::quasistatic
 #[derive(Debug, Clone, Copy, Default)]

@@ -25,9 +25,8 @@
 //! only once the iterate has failed it, by evaluating the same pose again
 //! with the tangent (measured: 0 to 4 % of the corrected iterates of
 //! scenes 01, 02, 06). Forces and states are formed by the same operations
-//! with or without the tangent, so both evaluations give the same bits,
-//! and so does the seating; the rule only decides where the tangent work
-//! is spent.
+//! with or without the tangent, so the seating does not depend on the
+//! rule; it only decides where the tangent work is spent.
 
 use std::ops::{AddAssign, SubAssign};
 
