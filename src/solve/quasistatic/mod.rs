@@ -144,7 +144,7 @@ pub fn seat_in(
 ) -> Result<SeatedPose, SolveError> {
     let c = setup.coupling;
     frictions_into(c, mu_s, &mut ws.friction)?;
-    let solver = Solver::with_predictor(c, &ws.friction, *opts, Program::Seat, setup.x1);
+    let solver = Solver::new(c, &ws.friction, *opts, Program::Seat, setup.x1);
     ws.bufs.states.clone_from(&setup.virgin);
     let end = solver.run(c.touching_pose, &mut ws.bufs)?;
     Ok(SeatedPose {

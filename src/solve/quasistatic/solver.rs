@@ -99,18 +99,10 @@ pub(super) struct Solver<'a> {
 }
 
 impl<'a> Solver<'a> {
-    /// The path follower of `program`.
+    /// The path follower of `program`, with the seating predictor x_1
+    /// ([`predictor`]; a load path, which starts from its start pose, reads
+    /// none).
     pub fn new(
-        coupling: &'a Coupling,
-        friction: &'a [Friction],
-        opts: SolverOptions,
-        program: Program,
-    ) -> Self {
-        Self::with_predictor(coupling, friction, opts, program, predictor(coupling))
-    }
-
-    /// [`Self::new`] with the seating predictor x_1 ([`predictor`]) given.
-    pub fn with_predictor(
         coupling: &'a Coupling,
         friction: &'a [Friction],
         opts: SolverOptions,
@@ -339,11 +331,6 @@ impl<'a> Solver<'a> {
                 .add_assign(&(fx * p.cross_matrix()));
         }
         j
-    }
-
-    /// The reported contacts of evaluations `evals` (contact order).
-    pub fn results(&self, evals: &[ContactEval]) -> Vec<ContactResult> {
-        contact_results(self.coupling, self.friction, evals)
     }
 }
 
