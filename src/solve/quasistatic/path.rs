@@ -1,4 +1,4 @@
-//! The adaptive path follower ([`Solver::run`]): increments in the path
+//! The path follower ([`Solver::run`]): increments in the path
 //! parameter s, halved on Newton failure and on a stick/slip change of a
 //! loaded contact, doubled back to the nominal size after a quiet one
 //! (module docs of [`super`]). The contact states and evaluations live in
