@@ -27,7 +27,7 @@ pub use super::paths::{PathTally, SeatingPaths};
 use super::stats::SampleRecord;
 pub use super::variation::{START_CLEARANCE, Sample, StartBounds, Variation, lifted_clear};
 use super::{DesignSpec, Sampler, Shard};
-use crate::assembly::{AssemblyError, Coupling};
+use crate::assembly::{AssemblyError, BodyPose, Coupling};
 
 use crate::solve::dynamic::StartPose;
 use crate::solve::quasistatic::{SeatingSetup, Workspace, seat_in};
@@ -407,6 +407,12 @@ pub fn evaluate_rows<'a>(
         .iter()
         .map(|p| p.position)
         .collect();
+    // Every evaluation point's six components from the nominal seating to `pose`.
+    let reference = nominal.pose;
+    let relative = |pose: BodyPose| {
+        let pose_of = move |p| PointPose::between(&reference, &pose, p).components();
+        points.iter().flat_map(pose_of)
+    };
     let setup = SeatingSetup::new(coupling);
     // One workspace per rayon job, reused by the samples it seats.
     rows.into_par_iter()
@@ -417,11 +423,7 @@ pub fn evaluate_rows<'a>(
                 let s = reseat(&setup, opts, &sample, ws)
                     .map_err(|e| seat_err(index, &sample.mu, e))?;
                 progress.record(s.path);
-                outputs.extend(
-                    points
-                        .iter()
-                        .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).components()),
-                );
+                outputs.extend(relative(s.pose));
             }
             if let Some(t) = &sample.tolerances {
                 let perturbed = t.coupling(coupling).map_err(|source| RunError::Perturbed {
@@ -434,11 +436,7 @@ pub fn evaluate_rows<'a>(
                     .seat(&perturbed, &nominal_mu, &StartPose::touching())
                     .map_err(|e| seat_err(index, &nominal_mu, e))?;
                 progress.record(s.path);
-                outputs.extend(
-                    points
-                        .iter()
-                        .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).components()),
-                );
+                outputs.extend(relative(s.pose));
             }
             (progress.tick)();
             Ok(SampleRecord {
