@@ -334,7 +334,7 @@ impl<'a> Solver<'a> {
     }
 }
 
-/// a x b (the component formulas of nalgebra's `cross`).
+/// a x b on arrays.
 #[inline(always)]
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [
@@ -351,9 +351,8 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
 /// [ K        -K [p]x                      ]
 /// [ [p]x K - [f]x    -[p]x K [p]x + m f^T - (f . m) I ]
 /// ```
-/// ([f]x [m]x = m f^T - (f . m) I). Written out on the components, each
-/// entry formed by the same operations as the 3x3 matrix products it
-/// replaces.
+/// ([f]x [m]x = m f^T - (f . m) I), written out on the components (no 3x3
+/// products formed).
 #[inline(always)]
 fn add_contact(
     j: &mut Matrix6<f64>,
