@@ -4,16 +4,15 @@
 //! - `hertz+LAW update/SHAPE`: Hertz force, semi-axes, K_t by its principal
 //!   axes, the tensor and the tangential update, all in the timed loop (the
 //!   figures of earlier notes refer to these names).
-//! - `update alone/LAW/SHAPE/STATE`: only `TangentialState::update_with`, its
-//!   input prepared once as the solver's contact layer prepares it
-//!   (`solve::contact_layer::evaluate_moved`), from a committed state that
-//!   sticks (`stick`) or slides (`slide`: the trial force leaves the cone).
+//! - `update alone/LAW/SHAPE/STATE`: only `TangentialState::update` into a
+//!   fresh response, its input prepared once as the solver's contact layer
+//!   prepares it (`solve::contact_layer::evaluate_into`), from a committed
+//!   state that sticks (`stick`) or slides (`slide`: the trial force leaves
+//!   the cone).
 //! - `update in place/LAW/SHAPE/slide/{tangent,forces}`: the update as the
-//!   quasi-static solver calls it now, `TangentialState::update_into` into a
-//!   response slot reused from call to call, with its consistent tangent
-//!   (`tangent`) or without it (`forces`: a Newton iterate that converges,
-//!   see `solve/quasistatic/solver.rs`); `update_with` above builds a fresh
-//!   response per call.
+//!   quasi-static solver calls it, into a response slot reused from call to
+//!   call, with its consistent tangent (`tangent`) or without it (`forces`:
+//!   a Newton iterate that converges, see `solve/quasistatic/solver.rs`).
 //! - `law work per evaluation/LAW/SHAPE/slide`: everything the contact layer
 //!   asks of `contact` at one evaluation: F_n and k_n (Hertz in series with
 //!   a support compliance), a = c_a F^(1/3) by the fast cube root, K_t by
@@ -24,7 +23,7 @@ use std::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::contact::{
     ContactLaw, ContactPair, ContactShape, Friction, FrictionLaw, PrincipalStiffness, SeriesNormal,
-    TangentialInput, TangentialLaw, TangentialState, tangential_tensor,
+    TangentialInput, TangentialLaw, TangentialResponse, TangentialState, tangential_tensor,
 };
 use kinrepro::material::Material;
 use nalgebra::Vector3;
@@ -100,13 +99,14 @@ fn contact_update(c: &mut Criterion) {
                         du: black_box(Vector3::new(1e-8, 2e-9, -3e-9)),
                         normal_force: fn_,
                         stiffness: kt,
+                        principal,
                         d_stiffness_d_fn: kt / (3.0 * fn_),
                         contact_radius: (a * bb).sqrt(),
                         g_star: law.g_star,
                         mindlin_shape: tangential_tensor(shape, &normal, &Vector3::x()),
                         friction: friction.during(0.05),
                     };
-                    black_box(state.update_with(tl, &input, Some(&principal)))
+                    black_box(respond(&state, tl, &input))
                 })
             });
         }
@@ -143,33 +143,34 @@ impl Setting {
         }
     }
 
-    /// The contact layer's preparation (`evaluate_moved_into`, with the
-    /// same `ContactLaw` calls): K_t at the mean normal force of the
-    /// increment, its derivative, the MDR shape.
+    /// The contact layer's preparation (`evaluate_into`, with the same
+    /// `ContactLaw` calls): K_t at the mean normal force of the increment,
+    /// its derivative, the MDR shape.
     fn input(
         &self,
         law: &ContactLaw,
         normal_law: &SeriesNormal,
         tl: TangentialLaw,
         friction: Friction,
-    ) -> (TangentialInput, PrincipalStiffness) {
+    ) -> TangentialInput {
         let (fn_, _) = normal_law.force_and_stiffness(self.approach);
+        let (f_mid, a_mid) = law.midpoint_semi_axis(self.committed_fn, fn_);
         let (principal, kt, dkt) =
-            law.midpoint_stiffness(self.committed_fn, fn_, &self.normal, &self.major_axis, true);
+            law.midpoint_stiffness(f_mid, a_mid, &self.normal, &self.major_axis, true);
         let (contact_radius, mindlin_shape) =
             law.mindlin_deresiewicz_inputs(tl, fn_, &self.normal, &self.major_axis);
-        let input = TangentialInput {
+        TangentialInput {
             normal: self.normal,
             du: self.du,
             normal_force: fn_,
             stiffness: kt,
+            principal,
             d_stiffness_d_fn: dkt,
             contact_radius,
             g_star: law.g_star,
             mindlin_shape,
             friction: friction.during(0.05),
-        };
-        (input, principal)
+        }
     }
 
     /// A committed state of the old normal that sticks (`slide` false: no
@@ -180,7 +181,6 @@ impl Setting {
         &self,
         tl: TangentialLaw,
         input: &TangentialInput,
-        principal: &PrincipalStiffness,
         slide: bool,
     ) -> TangentialState {
         let old_normal = Vector3::new(0.0, 1.0, 1.0).normalize();
@@ -197,7 +197,7 @@ impl Setting {
                 normal_force: self.committed_fn,
                 ..*input
             };
-            first.update_with(tl, &step, Some(principal)).state
+            respond(&first, tl, &step).state
         } else {
             TangentialState {
                 force: tangent
@@ -228,7 +228,6 @@ struct Case {
     friction: Friction,
     label: &'static str,
     input: TangentialInput,
-    principal: PrincipalStiffness,
 }
 
 /// Every shape with every law of [`laws`].
@@ -239,7 +238,7 @@ fn cases() -> Vec<Case> {
         let normal_law = SeriesNormal::new(law.hertz, 0.0);
         let setting = Setting::new(shape, &law);
         for (tl, friction, label) in laws() {
-            let (input, principal) = setting.input(&law, &normal_law, tl, friction);
+            let input = setting.input(&law, &normal_law, tl, friction);
             out.push(Case {
                 shape,
                 law,
@@ -249,7 +248,6 @@ fn cases() -> Vec<Case> {
                 friction,
                 label,
                 input,
-                principal,
             });
         }
     }
@@ -258,9 +256,9 @@ fn cases() -> Vec<Case> {
 
 fn update_alone(c: &mut Criterion) {
     for case in cases() {
-        let (tl, label, input, principal) = (case.tl, case.label, &case.input, &case.principal);
+        let (tl, label, input) = (case.tl, case.label, &case.input);
         for slide in [false, true] {
-            let state = case.setting.committed(tl, input, principal, slide);
+            let state = case.setting.committed(tl, input, slide);
             let which = if slide { "slide" } else { "stick" };
             let want = if slide {
                 kinrepro::contact::SlipState::Slip
@@ -268,16 +266,14 @@ fn update_alone(c: &mut Criterion) {
                 kinrepro::contact::SlipState::Stick
             };
             assert_eq!(
-                state.update_with(tl, input, Some(principal)).slip,
+                respond(&state, tl, input).slip,
                 want,
                 "{label} {} {which}",
                 case.shape.name()
             );
             let name = format!("update alone/{label}/{}/{which}", case.shape.name());
             c.bench_function(&name, |b| {
-                b.iter(|| {
-                    black_box(&state).update_with(tl, black_box(input), Some(black_box(principal)))
-                })
+                b.iter(|| respond(black_box(&state), tl, black_box(input)))
             });
         }
     }
@@ -286,17 +282,15 @@ fn update_alone(c: &mut Criterion) {
 fn per_evaluation(c: &mut Criterion) {
     for case in cases() {
         let (tl, friction, label, shape) = (case.tl, case.friction, case.label, case.shape.name());
-        let state = case
-            .setting
-            .committed(tl, &case.input, &case.principal, true);
+        let state = case.setting.committed(tl, &case.input, true);
         let what = format!("{label}/{shape}");
-        in_place(c, &what, &state, tl, &case.input, &case.principal);
+        in_place(c, &what, &state, tl, &case.input);
         let name = format!("law work per evaluation/{label}/{shape}/slide");
         c.bench_function(&name, |b| {
             b.iter(|| {
-                let (input, principal) =
+                let input =
                     black_box(&case.setting).input(&case.law, &case.normal_law, tl, friction);
-                black_box(&state).update_with(tl, &input, Some(&principal))
+                respond(black_box(&state), tl, &input)
             })
         });
     }
@@ -309,23 +303,27 @@ fn in_place(
     state: &TangentialState,
     tl: TangentialLaw,
     input: &TangentialInput,
-    principal: &PrincipalStiffness,
 ) {
-    let mut slot = state.update_with(tl, input, Some(principal));
+    let mut slot = respond(state, tl, input);
     for (tangent, which) in [(true, "tangent"), (false, "forces")] {
         c.bench_function(&format!("update in place/{what}/slide/{which}"), |b| {
             b.iter(|| {
-                black_box(state).update_into(
-                    tl,
-                    black_box(input),
-                    Some(black_box(principal)),
-                    tangent,
-                    &mut slot,
-                );
+                black_box(state).update(tl, black_box(input), tangent, &mut slot);
                 black_box(&slot.force);
             })
         });
     }
+}
+
+/// The law's response with its tangent, in a fresh slot.
+fn respond(
+    state: &TangentialState,
+    tl: TangentialLaw,
+    input: &TangentialInput,
+) -> TangentialResponse {
+    let mut out = TangentialResponse::open(input.normal);
+    state.update(tl, input, true, &mut out);
+    out
 }
 
 criterion_group!(benches, contact_update, update_alone, per_evaluation);

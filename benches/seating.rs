@@ -1,23 +1,22 @@
 //! One quasi-static seating of scenes 01 (Maxwell, V-grooves), 02 (Maxwell,
-//! pins) and 06 (Kelvin) on each path: `seat` (the uniform fast path, which
-//! serves these friction vectors) and `seat_adaptive` (the adaptive path
-//! alone: today's algorithm, the reference of the fast one); and the fast
-//! path with the coupling's set-up shared as in a study (`seat_prepared`),
-//! and as a study runs it: set-up shared and the buffers of one reused
-//! workspace, pose only (`seat_in`). And one contact's geometry (the first
-//! contact of each scene: a plane, a pin, a seat plane) by parry's query
-//! (the adaptive path's) and by parry's arithmetic written out
-//! (`assembly::parry_inline`, the fast path's; the same bits).
+//! pins) and 06 (Kelvin): `seat` (set-up, a fresh workspace and the
+//! per-contact report included) and the seat kernel as a study runs it
+//! (`seat_in`: set-up shared, the buffers of one reused workspace, pose
+//! only). And one contact's geometry (the first contact of each scene: a
+//! plane, a pin, a seat plane) by the closed form the solvers call
+//! (`assembly::geometry::contact`) and by parry's query, its reference.
 
 use std::hint::black_box;
 use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use kinrepro::solve::quasistatic::{
-    SeatingSetup, Workspace, seat, seat_adaptive, seat_in, seat_prepared,
-};
+use kinrepro::assembly::geometry::{contact, parry_shape};
+use kinrepro::solve::quasistatic::{SeatingSetup, Workspace, seat, seat_in};
 use kinrepro::solve::{SeatingPath, SolverOptions};
 use nalgebra::Vector3;
+use parry3d_f64::math::{Pose, Vector};
+use parry3d_f64::query;
+use parry3d_f64::shape::Ball;
 
 fn seating(c: &mut Criterion) {
     for name in [
@@ -32,41 +31,32 @@ fn seating(c: &mut Criterion) {
         let mu = [0.46, 0.53, 0.51, 0.47, 0.545, 0.455];
         let opts = SolverOptions::default();
         let served = seat(&coupling, &mu, &opts).unwrap().path;
-        assert_eq!(
-            served,
-            SeatingPath::Uniform,
-            "{name}: the fast path declined"
-        );
-        c.bench_function(&format!("quasi-static seating/uniform/{name}"), |b| {
+        assert_eq!(served, SeatingPath::Uniform, "{name}: an increment halved");
+        c.bench_function(&format!("quasi-static seating/seat/{name}"), |b| {
             b.iter(|| seat(black_box(&coupling), black_box(&mu), &opts).unwrap())
         });
         let setup = SeatingSetup::new(&coupling);
-        c.bench_function(&format!("quasi-static seating/shared-setup/{name}"), |b| {
-            b.iter(|| seat_prepared(black_box(&setup), black_box(&mu), &opts).unwrap())
-        });
         let mut ws = Workspace::new();
         c.bench_function(&format!("quasi-static seating/workspace/{name}"), |b| {
             b.iter(|| seat_in(black_box(&setup), black_box(&mu), &opts, &mut ws).unwrap())
         });
-        c.bench_function(&format!("quasi-static seating/adaptive/{name}"), |b| {
-            b.iter(|| seat_adaptive(black_box(&coupling), black_box(&mu), &opts).unwrap())
-        });
         // The ball pressed 0.5 um into its first surface and moved sideways.
-        let ball = &coupling.balls[coupling.contacts[0].ball];
+        let k = &coupling.contacts[0];
+        let ball = &coupling.balls[k.ball];
         let n = coupling.geometry(0, &coupling.touching_pose).normal;
         let centre = ball.centre - n * 5e-7 + Vector3::new(1e-7, -2e-7, 0.0);
-        for (label, inline) in [("parry", false), ("inline", true)] {
-            c.bench_function(&format!("contact geometry/{label}/{name}"), |b| {
-                b.iter(|| {
-                    let centre = black_box(&centre);
-                    if inline {
-                        coupling.geometry_inline_at(0, centre)
-                    } else {
-                        coupling.geometry_at(0, centre)
-                    }
-                })
-            });
-        }
+        c.bench_function(&format!("contact geometry/closed form/{name}"), |b| {
+            b.iter(|| contact(&k.surface, black_box(&centre), ball.radius))
+        });
+        let (shape, pose) = parry_shape(&k.surface, &ball.centre, 0.05);
+        let sphere = Ball::new(ball.radius);
+        c.bench_function(&format!("contact geometry/parry/{name}"), |b| {
+            b.iter(|| {
+                let at = black_box(&centre);
+                let at = Pose::from_translation(Vector::new(at.x, at.y, at.z));
+                query::contact(&pose, &*shape, &at, &sphere, 1e-2)
+            })
+        });
     }
 }
 

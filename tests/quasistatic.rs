@@ -7,7 +7,7 @@ mod common;
 use common::load;
 use std::path::Path;
 
-use kinrepro::assembly::geometry::closed_form;
+use kinrepro::assembly::geometry::contact;
 use kinrepro::assembly::{BodyPose, Coupling};
 use kinrepro::contact::SlipState;
 use kinrepro::solve::quasistatic::seat;
@@ -131,7 +131,7 @@ fn all_sliding_equilibrium(c: &Coupling, mu_d: &[f64], start: &BodyPose) -> Body
         add(fp, pp);
         for (i, k) in c.contacts.iter().enumerate() {
             let ball = &c.balls[k.ball];
-            let g = closed_form(&k.surface, &pose.apply(&ball.centre), ball.radius);
+            let g = contact(&k.surface, &pose.apply(&ball.centre), ball.radius);
             let fn_ = k.law.hertz.force(-g.gap);
             let body = pose.rotation.inverse() * (g.point - pose.translation);
             let slip = g.point - c.touching_pose.apply(&body);

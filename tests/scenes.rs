@@ -1,10 +1,9 @@
 //! Bundled scenes: load, expand and load back identically; exactly
 //! constrained; contact normals at the angles of MODEL.md §1a; balls touch
-//! at zero gap; parry's contact geometry equals the closed forms.
+//! at zero gap (the geometry itself: tests/geometry.rs).
 
 use std::path::{Path, PathBuf};
 
-use kinrepro::assembly::geometry::closed_form;
 use kinrepro::assembly::{BodyPose, Coupling, constraint};
 use kinrepro::scene::{Scene, SurfaceGeometry};
 use nalgebra::Vector3;
@@ -140,89 +139,6 @@ fn contact_normals_follow_the_conventions() {
             assert!((angle - expect).abs() < 1e-12, "{name} contact {}", i + 1);
         }
     }
-}
-
-#[test]
-fn parry_contact_matches_closed_form() {
-    // One of each pair type, from the bundled scenes, with the ball moved
-    // along the normal to separations and penetrations from 1 nm to 1 um,
-    // and sideways so the normal changes.
-    for name in [
-        "01_maxwell_vgroove_steel.toml",
-        "02_maxwell_pins_steel.toml",
-        "04_maxwell_balls_steel.toml",
-    ] {
-        let c = kinrepro::error::read_coupling(&scene_path(name)).unwrap();
-        for (i, contact) in c.contacts.iter().enumerate() {
-            let ball = &c.balls[contact.ball];
-            let n0 = closed_form(&contact.surface, &ball.centre, ball.radius).normal;
-            let side = n0.cross(&Vector3::z()).normalize();
-            for d in [1e-9, 1e-8, 1e-7, 1e-6, -1e-9, -1e-8, -1e-7, -1e-6] {
-                for lateral in [0.0, 3e-7] {
-                    let centre = ball.centre + n0 * d + side * lateral;
-                    let exact = closed_form(&contact.surface, &centre, ball.radius);
-                    let parry = contact.fixed.contact(&centre, ball.radius, 1e-3).unwrap();
-                    // Rounding only: gaps down to 1 nm agree to 1e-16 m.
-                    assert!(
-                        (parry.gap - exact.gap).abs() < 1e-16,
-                        "{name} contact {}: d {d:e}: parry {:e} vs {:e}",
-                        i + 1,
-                        parry.gap,
-                        exact.gap
-                    );
-                    assert!((parry.normal - exact.normal).norm() < 1e-12);
-                    assert!((parry.point - exact.point).norm() < 1e-12);
-                    if lateral == 0.0
-                        && !matches!(contact.surface, SurfaceGeometry::Cylinder { .. })
-                    {
-                        assert!((exact.gap - d).abs() < 1e-17);
-                    }
-                }
-            }
-        }
-    }
-}
-
-#[test]
-fn parry_inline_is_parrys_query_bit_for_bit() {
-    // The fast path's geometry (parry's arithmetic written out) against
-    // parry's query, for every contact of every bundled scene, with the ball
-    // centre moved at random by up to 2 um along the normal (separation and
-    // penetration) and 20 um in any direction: the same gap, normal and point
-    // bit for bit (== on f64, so an exact zero may differ in sign only), and
-    // the written-out path serves every case (no fallback to parry).
-    use kinrepro::assembly::{PREDICTION, parry_inline};
-    use rand::{Rng, SeedableRng};
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
-    let mut cases = 0;
-    for name in PAPER_SCENES {
-        let c = kinrepro::error::read_coupling(&scene_path(name)).unwrap();
-        for (i, contact) in c.contacts.iter().enumerate() {
-            let ball = &c.balls[contact.ball];
-            let n0 = closed_form(&contact.surface, &ball.centre, ball.radius).normal;
-            for _ in 0..500 {
-                let mut r = || rng.random_range(-1.0..1.0);
-                let shift = Vector3::new(r(), r(), r()) * 2e-5 + n0 * (r() * 2e-6);
-                let centre = ball.centre + shift;
-                let parry = contact
-                    .fixed
-                    .contact(&centre, ball.radius, PREDICTION)
-                    .unwrap();
-                let inline =
-                    parry_inline::contact(&contact.fixed, &centre, ball.radius, PREDICTION)
-                        .unwrap_or_else(|| panic!("{name} contact {}: not served", i + 1));
-                assert!(
-                    inline.gap == parry.gap
-                        && inline.normal == parry.normal
-                        && inline.point == parry.point,
-                    "{name} contact {}: {inline:?} vs parry {parry:?}",
-                    i + 1
-                );
-                cases += 1;
-            }
-        }
-    }
-    assert_eq!(cases, 7 * 6 * 500);
 }
 
 #[test]

@@ -1,9 +1,8 @@
-//! The coupling assembly: moving balls, fixed parry shapes and the contact
+//! The coupling assembly: moving balls, fixed surfaces and the contact
 //! laws of each pair, in the contact order of MODEL.md §1a (the `--mu` order).
 
 pub mod constraint;
 pub mod geometry;
-pub mod parry_inline;
 
 use nalgebra::{Matrix6, UnitQuaternion, Vector3, Vector6};
 use thiserror::Error;
@@ -13,7 +12,7 @@ use crate::contact::{ContactError, ContactLaw, ContactPair, ContactShape, Series
 use crate::material::Material;
 use crate::scene::{Scene, SurfaceGeometry};
 pub use constraint::{ConstraintReport, FrictionLimit};
-pub use geometry::{ContactGeometry, FixedShape};
+pub use geometry::ContactGeometry;
 
 /// Pose of the moving half: world = rotation * body + translation. The body
 /// frame coincides with the world frame in the scene as written.
@@ -60,7 +59,6 @@ pub struct Contact {
     pub normal: SeriesNormal,
     /// tau_max/p0 of the two bodies (for the stress check).
     pub shear: ShearRatios,
-    pub fixed: FixedShape,
 }
 
 /// A moving ball.
@@ -114,12 +112,8 @@ pub enum AssemblyError {
 /// touching pose is solved) [m].
 pub const TOUCH_TOLERANCE: f64 = 1e-6;
 
-/// Prediction distance of the contact queries [m]: far beyond any seating
-/// motion, so that an opening contact still reports its gap.
-pub const PREDICTION: f64 = 1e-2;
-
 impl Coupling {
-    /// Assemble a validated scene: laws, parry shapes, exact-constraint check,
+    /// Assemble a validated scene: laws, exact-constraint check,
     /// touching pose, and the check that the preload loads every contact.
     pub fn new(scene: &Scene) -> Result<Coupling, AssemblyError> {
         Coupling::assemble(scene, TOUCH_TOLERANCE)
@@ -180,7 +174,6 @@ impl Coupling {
                 contact: i + 1,
                 source,
             })?;
-            let half_length = 4.0 * (ball.radius + radius2.unwrap_or(0.0));
             contacts.push(Contact {
                 ball: s.ball,
                 surface: s.geometry,
@@ -189,7 +182,6 @@ impl Coupling {
                 normal: SeriesNormal::new(law.hertz, s.support_compliance),
                 pair,
                 law,
-                fixed: FixedShape::new(&s.geometry, half_length, &ball.centre),
             });
         }
         let mut coupling = Coupling {
@@ -250,22 +242,11 @@ impl Coupling {
     }
 
     /// [`Self::geometry`] with the world position of the contact's ball
-    /// centre given: parry's query.
+    /// centre given (the solver forms it once per ball): [`geometry::contact`].
+    #[inline]
     pub fn geometry_at(&self, i: usize, centre: &Vector3<f64>) -> ContactGeometry {
         let c = &self.contacts[i];
-        let radius = self.balls[c.ball].radius;
-        c.fixed
-            .contact(centre, radius, PREDICTION)
-            .unwrap_or_else(|| geometry::closed_form(&c.surface, centre, radius))
-    }
-
-    /// [`Self::geometry_at`] by parry's arithmetic written out
-    /// ([`parry_inline`]): the same bits, without parry's dispatch.
-    #[inline]
-    pub fn geometry_inline_at(&self, i: usize, centre: &Vector3<f64>) -> ContactGeometry {
-        let c = &self.contacts[i];
-        parry_inline::contact(&c.fixed, centre, self.balls[c.ball].radius, PREDICTION)
-            .unwrap_or_else(|| self.geometry_at(i, centre))
+        geometry::contact(&c.surface, centre, self.balls[c.ball].radius)
     }
 
     /// Constraint rows w_i = [n_i; c_i x n_i] at `pose` (c_i the ball centre):

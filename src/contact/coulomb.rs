@@ -27,37 +27,39 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::fixed3::{mat_mat, mat_vec};
 use super::friction::{FrictionLaw, SlideInput, Sliding};
-use super::mindlin::{PrincipalStiffness, RadialReturn, project_tangential};
+use super::mindlin::{PrincipalStiffness, RadialReturn};
 use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, TangentialState};
 
 /// Coulomb return mapping into `out`, with its consistent tangent if
 /// `tangent` (else `out`'s derivatives are left as they were; the force and
-/// state are formed by the same operations either way); the sliding coefficient comes from the friction
-/// law ([`super::friction::slide`]: the sudden switch, or the decay law).
-/// The decay law's slip increment uses the stiffness along the trial force,
-/// k = t^T K_t t (t = F_trial/|F_trial|): exact for a circular contact, the
-/// stiffness of the load direction for an elliptical one.
+/// state are formed by the same operations either way); the sliding
+/// coefficient comes from the friction law ([`super::friction::slide`]:
+/// the sudden switch, or the decay law). The increment is `input.du`
+/// without its normal part. The decay law's slip increment uses the
+/// stiffness along the trial force, k = t^T K_t t (t = F_trial/|F_trial|):
+/// exact for a circular contact, the stiffness of the load direction for
+/// an elliptical one.
 ///
-/// A circular contact (`principal` without axes, K_t = k (I - n n^T)) uses
-/// K_t's closed forms ([`Circle`]) instead of the 3x3 tensor: the same
-/// mathematics, different rounding.
+/// A circular contact (`input.principal` without axes, K_t = k (I - n n^T))
+/// uses K_t's closed forms ([`Circle`]) instead of the 3x3 tensor; an
+/// elliptical one projects in its principal axes
+/// ([`PrincipalStiffness::project`]).
 #[inline]
 pub(super) fn update(
     old: &TangentialState,
-    du: &Vector3<f64>,
     input: &TangentialInput,
-    principal: Option<&PrincipalStiffness>,
     tangent: bool,
     out: &mut TangentialResponse,
 ) {
+    let n = input.normal;
+    let du = &(input.du - n * n.dot(&input.du));
     let fr = input.friction;
-    let circle = principal.and_then(Circle::of);
+    let circle = Circle::of(&input.principal);
     let trial = old.force
         + match circle {
             Some(c) => c.times(du),
-            None => mat_vec(&input.stiffness, du),
+            None => input.stiffness * du,
         };
     let norm = trial.norm();
     // The switch law reads no stiffness (`friction::slide`).
@@ -88,25 +90,22 @@ pub(super) fn update(
             out.d_force_d_du = input.stiffness;
             out.d_force_d_fn = match circle {
                 Some(_) => du * Circle::d_k_d_fn(input),
-                None => mat_vec(&input.d_stiffness_d_fn, du),
+                None => input.d_stiffness_d_fn * du,
             };
         }
         return;
     };
     let limit = s.mu * input.normal_force;
-    let force = match (circle, principal) {
-        (Some(c), _) => {
+    let force = match circle {
+        Some(c) => {
             let r = RadialReturn::new(&input.normal, &trial, limit);
             if tangent {
                 c.slide_tangent(&r, du, input, &s, out);
             }
             r.force()
         }
-        (None, p) => {
-            let (force, d_trial, d_limit) = match p {
-                Some(p) => p.project(&input.normal, &trial, limit),
-                None => project_tangential(&input.stiffness, &input.normal, &trial, limit),
-            };
+        None => {
+            let (force, d_trial, d_limit) = input.principal.project(&input.normal, &trial, limit);
             if tangent {
                 slide_tangent(&trial, du, input, &s, &d_trial, &d_limit, out);
             }
@@ -124,7 +123,7 @@ pub(super) fn update(
 /// its one value k. The closed forms below are exact mathematically
 /// because every vector the law applies K_t to lies in the tangent plane
 /// (n . v = 0, so (I - n n^T) v = v): the increment du (its normal part
-/// removed by `TangentialState::update_into`), the old force (rotated
+/// removed by [`update`]), the old force (rotated
 /// into the plane) and so the trial force and its direction t.
 #[derive(Debug, Clone, Copy)]
 struct Circle {
@@ -197,7 +196,7 @@ impl Circle {
 
 /// The tangent of gross sliding. The force F is the point on the circle
 /// |F| = mu F_n closest to F_trial in the complementary-energy norm of K
-/// (`mindlin::project_tangential`; the radial return
+/// ([`PrincipalStiffness::project`]; the radial return
 /// F = mu F_n F_trial/|F_trial| for a circular contact), so that the
 /// friction force opposes the slip also for an elliptical K; mu from the
 /// friction law (`s`; constant mu_d for the switch law); `d_trial` and
@@ -219,14 +218,11 @@ fn slide_tangent(
     let f_n = input.normal_force;
     let (k, dk) = (&input.stiffness, &input.d_stiffness_d_fn);
     let (mu, d_trial, d_limit) = (s.mu, *d_trial, *d_limit);
-    let dk_du = mat_vec(dk, du);
+    let dk_du = dk * du;
     let (d_force_d_du, d_force_d_fn) =
         if s.d_mu_d_trial == 0.0 && s.d_mu_d_fn == 0.0 && s.d_mu_d_k == 0.0 {
             // A constant coefficient (the switch law, a sliding decay contact).
-            (
-                mat_mat(&d_trial, k),
-                mu * d_limit + mat_vec(&d_trial, &dk_du),
-            )
+            (d_trial * k, mu * d_limit + d_trial * dk_du)
         } else {
             let t = trial.normalize();
             let dmu_dfn =
@@ -246,14 +242,15 @@ mod tests {
     use super::*;
     use crate::contact::tangential_types::Friction;
 
-    /// The closed forms of a circular contact ([`Circle`]) against the 3x3
-    /// tensor route (`principal` None: K_t and dK_t/dF_n as matrices, the
-    /// eigen projection), which `tests/contact_laws.rs` checks by finite
+    /// The closed forms of a circular contact ([`Circle`]) against the
+    /// elliptical route with two equal principal values (K_t and dK_t/dF_n
+    /// as matrices, the projection in principal axes and its general
+    /// tangent), which `tests/contact_laws.rs` checks by finite
     /// differences: force and both tangents agree to rounding, about many
     /// normals, sticking, sliding on and starting to slide, for the switch
     /// and the decay law (whose dmu terms the closed form carries too).
     #[test]
-    fn circular_closed_forms_are_the_tensor_route() {
+    fn circular_closed_forms_are_the_elliptical_route() {
         use rand::{Rng, SeedableRng};
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x9E37_79B9);
         let mut next = move || rng.random_range(-0.5..0.5);
@@ -265,6 +262,11 @@ mod tests {
             let n = Vector3::new(next(), next(), next()).normalize();
             let p = PrincipalStiffness::new([3e7, 3e7], &n, &Vector3::x());
             let in_plane = |v: Vector3<f64>| v - n * n.dot(&v);
+            let e1 = in_plane(Vector3::x()).normalize();
+            let axes = PrincipalStiffness {
+                axes: Some([e1, n.cross(&e1)]),
+                ..p
+            };
             let du = in_plane(Vector3::new(next(), next(), next()) * 4e-7);
             let old = TangentialState {
                 force: in_plane(Vector3::new(next(), next(), next()) * 8.0),
@@ -284,6 +286,7 @@ mod tests {
                 du,
                 normal_force: 10.0,
                 stiffness,
+                principal: p,
                 d_stiffness_d_fn: stiffness / 60.0,
                 contact_radius: 0.0,
                 g_star: 0.0,
@@ -296,8 +299,12 @@ mod tests {
             };
             let mut got = TangentialResponse::open(n);
             let mut want = TangentialResponse::open(n);
-            update(&old, &du, &input, Some(&p), true, &mut got);
-            update(&old, &du, &input, None, true, &mut want);
+            update(&old, &input, true, &mut got);
+            let elliptical = TangentialInput {
+                principal: axes,
+                ..input
+            };
+            update(&old, &elliptical, true, &mut want);
             assert_eq!(got.slip, want.slip, "{case}");
             let f = want.force.norm().max(1e-3);
             assert!(

@@ -1,6 +1,6 @@
-//! Complete elliptic integrals by the arithmetic-geometric mean, the
-//! ellipticity of a Hertz contact, and the Hamrock-Brewe approximation kept
-//! as a cross-check.
+//! Complete elliptic integrals by the arithmetic-geometric mean and the
+//! ellipticity of a Hertz contact (Hamrock & Brewe's curve fits, a
+//! cross-check, are in tests/contact_laws.rs).
 //!
 //! Notation: a >= b are the semi-axes of the contact ellipse, k' = b/a,
 //! m = e^2 = 1 - k'^2 the parameter, K(m) and E(m) the complete elliptic
@@ -113,42 +113,6 @@ pub fn solve_kp(curvature_ratio: f64) -> f64 {
         }
     }
     0.5 * (lo + hi)
-}
-
-/// Hamrock & Brewe (1983) curve fits, for cross-checking only
-/// (J. Lubrication Technol. 105:171-177; stated accuracy a few percent).
-/// `rx` < `ry` are the relative radii of curvature (r = 1/(2 * curvature)).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct HamrockBrewe {
-    /// Larger semi-axis a [m] (along y, the direction of the larger radius).
-    pub a: f64,
-    /// Smaller semi-axis b [m].
-    pub b: f64,
-    /// Approach delta [m].
-    pub approach: f64,
-}
-
-/// Hamrock-Brewe approximation for load `f`, effective modulus `e_star`.
-///
-/// ```text
-/// kappa = 1.0339 (Ry/Rx)^0.6360,  Eps = 1.0003 + 0.5968 Rx/Ry,
-/// Fi = 1.5277 + 0.6023 ln(Ry/Rx), 1/R = 1/Rx + 1/Ry, E' = 2 E*,
-/// a = (6 kappa^2 Eps f R / (pi E'))^(1/3),  b = (6 Eps f R / (pi kappa E'))^(1/3),
-/// delta = Fi (9/(2 Eps R) (f / (pi kappa E'))^2)^(1/3)
-/// ```
-pub fn hamrock_brewe(rx: f64, ry: f64, e_star: f64, f: f64) -> HamrockBrewe {
-    let (rx, ry) = if rx <= ry { (rx, ry) } else { (ry, rx) };
-    let alpha = ry / rx;
-    let kappa = 1.0339 * alpha.powf(0.6360);
-    let eps = 1.0003 + 0.5968 / alpha;
-    let fi = 1.5277 + 0.6023 * alpha.ln();
-    let r = 1.0 / (1.0 / rx + 1.0 / ry);
-    let ep = 2.0 * e_star;
-    HamrockBrewe {
-        a: (6.0 * kappa * kappa * eps * f * r / (PI * ep)).cbrt(),
-        b: (6.0 * eps * f * r / (PI * kappa * ep)).cbrt(),
-        approach: fi * (9.0 / (2.0 * eps * r) * (f / (PI * kappa * ep)).powi(2)).cbrt(),
-    }
 }
 
 #[cfg(test)]

@@ -18,8 +18,8 @@ use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
 use thiserror::Error;
 
 use super::{
-    ContactLaw, Friction, SlipState, TangentialInput, TangentialLaw, TangentialState,
-    tangential_tensor,
+    ContactLaw, Friction, SlipState, TangentialInput, TangentialLaw, TangentialResponse,
+    TangentialState,
 };
 
 /// One row of a load history: P [N] and Q = (Qx, Qy) [N].
@@ -94,7 +94,7 @@ pub fn drive(
                 limit: mu * p,
             });
         }
-        let input = step_input(law, &state, p, friction);
+        let input = step_input(law, tangential, &state, p, friction);
         let (du, response) = solve_step(&state, tangential, &input, &q, mu * p)
             .map_err(|residual| HistoryError::NoConvergence { step, residual })?;
         state = response.state;
@@ -109,30 +109,30 @@ pub fn drive(
     Ok(out)
 }
 
-/// The law's input at load `p` from `state` (zero increment).
+/// The law's input at load `p` from `state` (zero increment), K_t at the
+/// step's mean normal force as the solvers' contact layer forms it.
 fn step_input(
     law: &ContactLaw,
+    tangential: TangentialLaw,
     state: &TangentialState,
     p: f64,
     friction: Friction,
 ) -> TangentialInput {
-    let n = Vector3::z();
-    let x = Vector3::x();
-    let f_mid = 0.5 * (state.normal_force + p);
-    let kt = tangential_tensor(law.tangential_stiffness_axes(f_mid), &n, &x);
-    let [a, b] = law.hertz.semi_axes(p);
-    let shape = law
-        .mindlin
-        .map(|c| c / (8.0 * law.g_star * law.hertz.axis_ratio.sqrt()));
+    let (n, x) = (Vector3::z(), Vector3::x());
+    let (f_mid, a_mid) = law.midpoint_semi_axis(state.normal_force, p);
+    let (principal, stiffness, d_stiffness_d_fn) =
+        law.midpoint_stiffness(f_mid, a_mid, &n, &x, true);
+    let (contact_radius, mindlin_shape) = law.mindlin_deresiewicz_inputs(tangential, p, &n, &x);
     TangentialInput {
         normal: n,
         du: Vector3::zeros(),
         normal_force: p,
-        stiffness: kt,
-        d_stiffness_d_fn: kt / (6.0 * f_mid),
-        contact_radius: (a * b).sqrt(),
+        stiffness,
+        principal,
+        d_stiffness_d_fn,
+        contact_radius,
         g_star: law.g_star,
-        mindlin_shape: tangential_tensor(shape, &n, &x),
+        mindlin_shape,
         friction,
     }
 }
@@ -144,13 +144,14 @@ fn solve_step(
     input: &TangentialInput,
     q: &Vector3<f64>,
     limit: f64,
-) -> Result<(Vector3<f64>, super::TangentialResponse), f64> {
+) -> Result<(Vector3<f64>, TangentialResponse), f64> {
     let tol = 1e-12 * q.norm().max(limit);
     let plane = |m: &Matrix3<f64>| Matrix2::new(m[(0, 0)], m[(0, 1)], m[(1, 0)], m[(1, 1)]);
     let mut du = Vector3::zeros();
     let mut residual = f64::INFINITY;
+    let mut r = TangentialResponse::open(input.normal);
     for _ in 0..200 {
-        let r = state.update(law, &TangentialInput { du, ..*input });
+        state.update(law, &TangentialInput { du, ..*input }, true, &mut r);
         let res = q - r.force;
         residual = res.norm();
         if residual <= tol {

@@ -194,6 +194,14 @@ impl Row {
         all_capped
     }
 
+    /// The sudden static-to-dynamic switch: every spring's value (and its
+    /// derivative) scaled by mu_d / mu_s = `scale`, the limits to `mu_d`.
+    fn switch_to(&mut self, scale: f64, mu_d: f64) {
+        self.q.iter_mut().for_each(|q| *q *= scale);
+        self.d.iter_mut().for_each(|d| *d *= scale);
+        self.mu = mu_d;
+    }
+
     /// Q in the frame: 8 G* h sum q, and its derivative by du.
     fn force(&self) -> (Vector2<f64>, Matrix2<f64>) {
         let k = 8.0 * self.g_star * self.h;
@@ -217,30 +225,22 @@ fn tangent_frame(n: &Vector3<f64>, hint: &Vector3<f64>) -> Vector3<f64> {
     (e - n * n.dot(&e)).normalize()
 }
 
+/// The row's response to a trial increment (module docs) into `out`, with
+/// its consistent tangent if `tangent`; the increment is `input.du`
+/// without its normal part.
 pub(super) fn update(
     old: &TangentialState,
-    proj: &Matrix3<f64>,
-    du: &Vector3<f64>,
     input: &TangentialInput,
     tangent: bool,
-) -> TangentialResponse {
+    out: &mut TangentialResponse,
+) {
     let n = input.normal;
+    let proj = &(Matrix3::identity() - n * n.transpose());
+    let du = &(proj * input.du);
     let p = input.normal_force;
     let a_now = input.contact_radius;
     let radius_at = |load: f64| a_now * (load.max(0.0) / p).cbrt();
-    let mut st = old.row.as_deref().copied().unwrap_or_default();
-    let fresh = st.h == 0.0;
-    if fresh {
-        st.frame = tangent_frame(
-            &n,
-            &if old.force.norm() > 0.0 {
-                old.force
-            } else {
-                *du
-            },
-        );
-        st.h = a_now / (FIRST_FILL * SPRINGS as f64);
-    }
+    let (st, fresh) = committed_row(old, du, a_now);
     let t1 = tangent_frame(&n, &st.frame);
     let basis = Matrix3x2::from_columns(&[t1, n.cross(&t1)]);
     let c = basis.transpose() * input.mindlin_shape * basis;
@@ -270,11 +270,7 @@ pub(super) fn update(
     row.normal(p, a_now);
     let gross = row.tangential(&c, &du2);
     if gross && !old.sliding && friction.mu_d < friction.mu_s {
-        // Sudden static-to-dynamic switch: every spring drops to mu_d.
-        let s = friction.mu_d / friction.mu_s;
-        row.q.iter_mut().for_each(|q| *q *= s);
-        row.d.iter_mut().for_each(|d| *d *= s);
-        row.mu = friction.mu_d;
+        row.switch_to(friction.mu_d / friction.mu_s, friction.mu_d);
     }
     let (f2, d2) = row.force();
     let force = basis * f2;
@@ -283,7 +279,7 @@ pub(super) fn update(
     for (dst, src) in q.iter_mut().zip(&row.q) {
         *dst = [src.x, src.y];
     }
-    TangentialResponse {
+    *out = TangentialResponse {
         force,
         state: TangentialState {
             force,
@@ -303,7 +299,26 @@ pub(super) fn update(
         },
         d_force_d_du,
         d_force_d_fn: d_fn,
+    };
+}
+
+/// The committed spring row of `old`, and whether it is fresh: at first
+/// contact a row with its frame along the old force (or the increment
+/// `du`) and cells so wide that the contact of radius `a_now` fills
+/// `FIRST_FILL` of it.
+fn committed_row(old: &TangentialState, du: &Vector3<f64>, a_now: f64) -> (SpringRow, bool) {
+    let mut st = old.row.as_deref().copied().unwrap_or_default();
+    let fresh = st.h == 0.0;
+    if fresh {
+        let hint = if old.force.norm() > 0.0 {
+            old.force
+        } else {
+            *du
+        };
+        st.frame = tangent_frame(&old.normal, &hint);
+        st.h = a_now / (FIRST_FILL * SPRINGS as f64);
     }
+    (st, fresh)
 }
 
 /// The consistent tangent (dQ/d(du), dQ/dP) of the row at the end of the

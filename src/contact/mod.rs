@@ -10,7 +10,6 @@
 
 pub mod coulomb;
 pub mod elliptic;
-pub mod fixed3;
 pub mod friction;
 pub mod hertz;
 pub mod history;
@@ -256,40 +255,25 @@ impl ContactLaw {
         (kt, kt / (3.0 * load))
     }
 
-    /// K_t of an increment from normal force `committed_fn` to `fn_`, at
-    /// the mean force F_mid = (committed_fn + fn_)/2 (midpoint rule, module
-    /// docs of `solve::contact_layer`): Mindlin's principal stiffnesses
-    /// k = coef a(F_mid) (the fast cube root) about `major_axis` (zero:
-    /// circular), the 3x3 tensor in the plane of `normal`, and, if
-    /// `tangent`, dK_t/dF_n = K_t / (3 F_mid) d(F_mid)/dF_n = K_t / (6 F_mid)
-    /// (zero otherwise, or unloaded).
-    #[inline]
-    pub fn midpoint_stiffness(
-        &self,
-        committed_fn: f64,
-        fn_: f64,
-        normal: &Vector3<f64>,
-        major_axis: &Vector3<f64>,
-        tangent: bool,
-    ) -> (PrincipalStiffness, Matrix3<f64>, Matrix3<f64>) {
-        let (f_mid, a_mid) = self.midpoint_semi_axis(committed_fn, fn_);
-        self.midpoint_stiffness_at(f_mid, a_mid, normal, major_axis, tangent)
-    }
-
     /// The mean normal force F_mid = (committed_fn + fn_)/2 of an increment
-    /// and the major semi-axis a(F_mid) (the fast cube root) of
-    /// [`Self::midpoint_stiffness`]: its long-latency part, which the
-    /// solver forms for all contacts before the rest.
+    /// from `committed_fn` to `fn_` (midpoint rule, module docs of
+    /// `solve::contact_layer`) and the major semi-axis a(F_mid) (the fast
+    /// cube root): the long-latency part of [`Self::midpoint_stiffness`],
+    /// which the solver forms for all contacts before the rest.
     #[inline]
     pub fn midpoint_semi_axis(&self, committed_fn: f64, fn_: f64) -> (f64, f64) {
         let f_mid = 0.5 * (committed_fn + fn_);
         (f_mid, self.hertz.major_semi_axis_fast(f_mid))
     }
 
-    /// [`Self::midpoint_stiffness`] from F_mid and a(F_mid)
-    /// ([`Self::midpoint_semi_axis`]).
+    /// K_t of an increment from F_mid and a(F_mid)
+    /// ([`Self::midpoint_semi_axis`]): Mindlin's principal stiffnesses
+    /// k = coef a(F_mid) about `major_axis` (zero: circular), the 3x3
+    /// tensor in the plane of `normal`, and, if `tangent`,
+    /// dK_t/dF_n = K_t / (3 F_mid) d(F_mid)/dF_n = K_t / (6 F_mid) (zero
+    /// otherwise, or unloaded).
     #[inline]
-    pub fn midpoint_stiffness_at(
+    pub fn midpoint_stiffness(
         &self,
         f_mid: f64,
         a_mid: f64,

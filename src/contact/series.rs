@@ -12,7 +12,7 @@
 //! cbrt(delta/c)) is an upper bound of the root (either term alone reaches
 //! delta there), so Newton from t0 descends monotonically onto the root
 //! (quadratic convergence; a handful of steps). With c = 0 the Hertz law
-//! is used as it is (bit-identical results).
+//! is used as it is.
 
 use super::hertz::HertzLaw;
 
@@ -111,24 +111,22 @@ impl SeriesNormal {
 mod tests {
     use super::*;
 
-    /// Without a compliance the law is Hertz's own F and dF/d delta, bit for
-    /// bit (one square root shared instead of two); with one, the stored
-    /// K^(-2/3) is the one computed at every call before.
+    /// Without a compliance the law is Hertz's own F and dF/d delta (one
+    /// square root shared instead of two; zero when open); with one, the
+    /// stored q is K^(-2/3) and F solves the series equation.
     #[test]
-    fn hertz_alone_bit_for_bit_and_the_series_root_on_its_equation() {
+    fn hertz_alone_and_the_series_root_on_its_equation() {
         let hertz = HertzLaw::circular(5e-3, 115.4e9);
         let alone = SeriesNormal::new(hertz, 0.0);
+        let close = |a: f64, b: f64| (a.is_nan() && b.is_nan()) || (a - b).abs() <= 1e-12 * b.abs();
         for delta in [-1e-9, 0.0, 1e-12, 3.3e-7, 5e-7, 2e-6, f64::NAN] {
             let (f, k) = alone.force_and_stiffness(delta);
-            assert_eq!(f.to_bits(), hertz.force(delta).to_bits(), "{delta}");
-            assert_eq!(k.to_bits(), hertz.stiffness(delta).to_bits(), "{delta}");
+            assert!(close(f, hertz.force(delta)), "{delta}");
+            assert!(close(k, hertz.stiffness(delta)), "{delta}");
         }
         let c = 2.5e-8;
         let series = SeriesNormal::new(hertz, c);
-        assert_eq!(
-            series.q.to_bits(),
-            hertz.hertz_constant.powf(-2.0 / 3.0).to_bits()
-        );
+        assert!(close(series.q, hertz.hertz_constant.powf(-2.0 / 3.0)));
         for delta in [1e-9, 3.3e-7, 5e-7, 2e-6] {
             // delta(F) = (F/K)^(2/3) + c F, springs in series.
             let (f, k) = series.force_and_stiffness(delta);

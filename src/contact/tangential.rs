@@ -10,9 +10,6 @@
 //! surface (a spring stretched by du). The friction force on the moving
 //! body is its negative.
 
-use nalgebra::Matrix3;
-
-use super::mindlin::PrincipalStiffness;
 pub use super::tangential_types::{
     Friction, Rotation, SlipState, TangentialInput, TangentialLaw, TangentialResponse,
     TangentialState, UnknownLaw,
@@ -20,55 +17,30 @@ pub use super::tangential_types::{
 use super::{coulomb, mindlin_deresiewicz};
 
 impl TangentialState {
-    /// Evaluate the chosen law for a trial increment. Pure: `self` is not changed.
-    pub fn update(&self, law: TangentialLaw, input: &TangentialInput) -> TangentialResponse {
-        self.update_with(law, input, None)
-    }
-
-    /// [`Self::update`] with K_t (`input.stiffness`) also given by its
-    /// principal values and axes: the Coulomb return mapping then projects
-    /// without an eigen-decomposition, in closed form for a circular
-    /// contact ([`PrincipalStiffness::project`], the same map).
-    pub fn update_with(
+    /// The chosen law's response to a trial increment, written into `out`
+    /// (the solvers' buffers: no response is built and then moved). Pure:
+    /// `self`, the committed state, is not changed. With `tangent` false
+    /// the consistent tangent (`d_force_d_du`, `d_force_d_fn`) is not
+    /// formed and `out`'s are left as they were (a Newton iterate that
+    /// converges never reads it); force, state and slip are formed by the
+    /// same operations either way.
+    pub fn update(
         &self,
         law: TangentialLaw,
         input: &TangentialInput,
-        principal: Option<&PrincipalStiffness>,
-    ) -> TangentialResponse {
-        let mut out = TangentialResponse::open(input.normal);
-        self.update_into(law, input, principal, true, &mut out);
-        out
-    }
-
-    /// [`Self::update_with`] written into `out` (the solvers' buffers: no
-    /// response is built on the stack and moved). With `tangent` false the
-    /// consistent tangent (`d_force_d_du`, `d_force_d_fn`) is not formed
-    /// and `out`'s are left as they were (a Newton iterate that converges
-    /// never reads it); force, state and slip are formed by the same
-    /// operations either way, the same bits.
-    pub fn update_into(
-        &self,
-        law: TangentialLaw,
-        input: &TangentialInput,
-        principal: Option<&PrincipalStiffness>,
         tangent: bool,
         out: &mut TangentialResponse,
     ) {
-        let n = input.normal;
         if input.normal_force <= 0.0 {
             // No normal force, no friction; history is lost when a contact opens.
-            *out = TangentialResponse::open(n);
+            *out = TangentialResponse::open(input.normal);
             return;
         }
-        let old = self.rotated_to(&n);
+        let old = self.rotated_to(&input.normal);
         match law {
-            TangentialLaw::Coulomb => {
-                let du = input.du - n * n.dot(&input.du);
-                coulomb::update(&old, &du, input, principal, tangent, out);
-            }
+            TangentialLaw::Coulomb => coulomb::update(&old, input, tangent, out),
             TangentialLaw::MindlinDeresiewicz => {
-                let proj = Matrix3::identity() - n * n.transpose();
-                *out = mindlin_deresiewicz::update(&old, &proj, &(proj * input.du), input, tangent);
+                mindlin_deresiewicz::update(&old, input, tangent, out)
             }
         }
     }

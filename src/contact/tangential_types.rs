@@ -2,12 +2,15 @@
 //! coefficients, the state a contact carries between increments (with the
 //! Mindlin-Deresiewicz spring row), the inputs of one update and the
 //! response. The laws themselves (`coulomb`, `mindlin_deresiewicz`) import
-//! only this module; `tangential` dispatches between them.
+//! only this module (and Mindlin's stiffness); `tangential` dispatches
+//! between them, each law's `update` having the one signature
+//! `(old, input, tangent, out)`.
 
 use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
 
 use super::friction::FrictionLaw;
+use super::mindlin::PrincipalStiffness;
 
 /// Which tangential law a contact follows (scene key `tangential_law`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -166,8 +169,10 @@ pub struct TangentialInput {
     /// Current normal force [N].
     pub normal_force: f64,
     /// Mindlin's tangential stiffness tensor K_t [N/m] (in the tangent
-    /// plane) and its derivative dK_t/dF_n [1/m].
+    /// plane), the same by its principal values and axes (the Coulomb
+    /// return mapping projects in them), and dK_t/dF_n [1/m].
     pub stiffness: Matrix3<f64>,
+    pub principal: PrincipalStiffness,
     pub d_stiffness_d_fn: Matrix3<f64>,
     /// Mindlin-Deresiewicz: equal-area radius sqrt(a b) at `normal_force`
     /// [m], G* [Pa] and the shape C = K_t / (8 G* sqrt(a b)) (I - n n^T

@@ -120,11 +120,6 @@ impl HexMesh {
         i + self.dims[0] * (j + self.dims[1] * k)
     }
 
-    /// Number of nodes per element, `(order + 1)³`.
-    pub fn nodes_per_element(&self) -> usize {
-        (self.order + 1).pow(3)
-    }
-
     /// Number of elements.
     pub fn n_elements(&self) -> usize {
         self.elem_dims.iter().product()

@@ -294,11 +294,6 @@ impl Factor {
         Ok(Self { symbolic, values })
     }
 
-    /// Number of stored values of the factor.
-    pub fn factor_len(&self) -> usize {
-        self.values.len()
-    }
-
     /// Solves `K X = B` in place for a block of right-hand sides.
     pub fn solve_in_place(&self, rhs: MatMut<'_, f64>) {
         let mut mem = MemBuffer::new(

@@ -107,21 +107,3 @@ pub fn write_file(target: &Path, text: &str, force: bool) -> Result<(), WriteErr
         .map_err(|e| WriteError::io(target, e))?;
     f.commit()
 }
-
-/// Write `target` through `produce`, which writes the file at the path it is
-/// given (e.g. a plotting backend); renamed over `target` when it succeeds.
-pub fn write_with<E: std::fmt::Display>(
-    target: &Path,
-    force: bool,
-    produce: impl FnOnce(&Path) -> Result<(), E>,
-) -> Result<(), WriteError> {
-    check_overwrite(target, force)?;
-    let ext = target
-        .extension()
-        .map_or(String::new(), |e| format!(".{}", e.to_string_lossy()));
-    let tmp = temp_next_to(target, &ext)?;
-    produce(tmp.path()).map_err(|e| WriteError::io(target, e))?;
-    tmp.persist(target)
-        .map_err(|e| WriteError::io(target, e.error))?;
-    Ok(())
-}

@@ -37,13 +37,13 @@ pub struct ContactEval {
     /// d(force)/d(displacement of the contact point) [N/m].
     pub stiffness: Matrix3<f64>,
     /// Whether `stiffness` (and the tangential response's derivatives) are
-    /// this evaluation's ([`evaluate_moved_into`] without the tangent
+    /// this evaluation's ([`evaluate_into`] without the tangent
     /// leaves them as they were).
     pub tangent: bool,
 }
 
 impl ContactEval {
-    /// A slot for [`evaluate_moved_into`]: an open contact at `geometry`
+    /// A slot for [`evaluate_into`]: an open contact at `geometry`
     /// (no tangent formed yet).
     pub fn open(geometry: ContactGeometry) -> Self {
         ContactEval {
@@ -69,7 +69,9 @@ impl ContactEval {
 }
 
 /// Evaluate contact `i` of `coupling` at `pose`, from the committed pose
-/// and tangential state, with the geometry from parry.
+/// and tangential state, with the tangent: [`evaluate_into`] into a fresh
+/// slot, for callers that evaluate one contact at a time (the dynamic
+/// solver, the stiffness of a seated coupling).
 pub fn evaluate(
     coupling: &Coupling,
     i: usize,
@@ -79,35 +81,16 @@ pub fn evaluate(
     friction: Friction,
 ) -> ContactEval {
     let g = coupling.geometry(i, pose);
-    evaluate_at(coupling, i, g, pose, committed_pose, committed, friction)
-}
-
-/// Where the contact geometry of an evaluation comes from. Both give the
-/// same bits (`tests/scenes.rs`, `parry_inline_is_parrys_query_bit_for_bit`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum GeometrySource {
-    /// parry's contact query ([`Coupling::geometry`]).
-    Parry,
-    /// parry's arithmetic written out ([`crate::assembly::parry_inline`]):
-    /// no shape dispatch, no rotations by the identity.
-    Inline,
-}
-
-impl GeometrySource {
-    /// Geometry of contact `i` with its ball's centre at `centre` (world
-    /// position; the solver forms it once per ball).
-    #[inline]
-    pub fn geometry_with_centre(
-        self,
-        coupling: &Coupling,
-        i: usize,
-        centre: &Vector3<f64>,
-    ) -> ContactGeometry {
-        match self {
-            GeometrySource::Parry => coupling.geometry_at(i, centre),
-            GeometrySource::Inline => coupling.geometry_inline_at(i, centre),
-        }
-    }
+    let moved = Moved {
+        geometry: g,
+        du: Motion::between(pose, committed_pose).displacement(&g.point),
+        committed,
+        friction,
+    };
+    let normal = NormalPart::new(coupling, i, &g, committed);
+    let mut out = ContactEval::open(g);
+    evaluate_into(&mut out, coupling, i, &moved, &normal, true);
+    out
 }
 
 /// The rigid motion that takes the moving half from a trial pose T back to
@@ -140,43 +123,9 @@ impl Motion {
     }
 }
 
-/// [`evaluate`] with the geometry `g` of the contact at `pose` given.
-pub fn evaluate_at(
-    coupling: &Coupling,
-    i: usize,
-    g: ContactGeometry,
-    pose: &BodyPose,
-    committed_pose: &BodyPose,
-    committed: &TangentialState,
-    friction: Friction,
-) -> ContactEval {
-    let du = Motion::between(pose, committed_pose).displacement(&g.point);
-    evaluate_moved(coupling, i, g, du, committed, friction)
-}
-
-/// [`evaluate_at`] with the tangential increment du = p - p_c of the
-/// contact point given (the solver forms [`Motion`] once per pose).
-pub fn evaluate_moved(
-    coupling: &Coupling,
-    i: usize,
-    g: ContactGeometry,
-    du: Vector3<f64>,
-    committed: &TangentialState,
-    friction: Friction,
-) -> ContactEval {
-    let mut out = ContactEval::open(g);
-    let moved = Moved {
-        geometry: g,
-        du,
-        committed,
-        friction,
-    };
-    evaluate_moved_into(&mut out, coupling, i, &moved, true);
-    out
-}
-
-/// The arguments of [`evaluate_moved`]: contact geometry at the trial
-/// pose, tangential increment du, committed state and friction.
+/// The arguments of an evaluation: contact geometry at the trial pose,
+/// tangential increment du = p - p_c of the contact point ([`Motion`]),
+/// committed state and friction.
 #[derive(Debug, Clone, Copy)]
 pub struct Moved<'s> {
     pub geometry: ContactGeometry,
@@ -190,8 +139,7 @@ pub struct Moved<'s> {
 /// force and semi-axis for K_t. It holds the evaluation's long chains of
 /// dependent operations (square root, cube root); [`Solver::evaluate_all`]
 /// forms it for every contact before the rest of any, so that the
-/// processor overlaps the contacts' chains (the same operations per
-/// contact, the same bits).
+/// processor overlaps the contacts' chains.
 ///
 /// [`Solver::evaluate_all`]: crate::solve::quasistatic
 #[derive(Debug, Clone, Copy, Default)]
@@ -227,28 +175,15 @@ impl NormalPart {
     }
 }
 
-/// [`evaluate_moved`] written into the slot `out` (the solvers' buffers,
-/// reused across iterations: no evaluation is built and then moved). With
-/// `tangent` false the tangent (`stiffness`, dK_t/dF_n and the law's
-/// derivatives) is not formed: `out.tangent` says whether `out.stiffness`
-/// belongs to this evaluation. Everything else is formed by the same
-/// operations either way (the same bits), so a Newton iterate that
+/// Contact `i` evaluated into the slot `out` (the solvers' buffers,
+/// reused across iterations: no evaluation is built and then moved), from
+/// its [`NormalPart`]. With `tangent` false the tangent (`stiffness`,
+/// dK_t/dF_n and the law's derivatives) is not formed: `out.tangent` says
+/// whether `out.stiffness` belongs to this evaluation. Everything else is
+/// formed by the same operations either way, so a Newton iterate that
 /// converges, whose tangent nobody reads, skips it.
 #[inline]
-pub fn evaluate_moved_into(
-    out: &mut ContactEval,
-    coupling: &Coupling,
-    i: usize,
-    moved: &Moved,
-    tangent: bool,
-) {
-    let normal = NormalPart::new(coupling, i, &moved.geometry, moved.committed);
-    evaluate_prepared_into(out, coupling, i, moved, &normal, tangent);
-}
-
-/// [`evaluate_moved_into`] with the contact's [`NormalPart`] formed.
-#[inline]
-pub fn evaluate_prepared_into(
+pub fn evaluate_into(
     out: &mut ContactEval,
     coupling: &Coupling,
     i: usize,
@@ -276,7 +211,7 @@ pub fn evaluate_prepared_into(
     };
     let law = &contact.law;
     let (principal, kt, dkt) =
-        law.midpoint_stiffness_at(f_mid, a_mid, &g.normal, &major_axis, tangent);
+        law.midpoint_stiffness(f_mid, a_mid, &g.normal, &major_axis, tangent);
     let tangential_law = coupling.scene.friction.tangential_law;
     let (contact_radius, mindlin_shape) =
         law.mindlin_deresiewicz_inputs(tangential_law, fn_, &g.normal, &major_axis);
@@ -285,6 +220,7 @@ pub fn evaluate_prepared_into(
         du,
         normal_force: fn_,
         stiffness: kt,
+        principal,
         d_stiffness_d_fn: dkt,
         contact_radius,
         g_star: law.g_star,
@@ -292,13 +228,7 @@ pub fn evaluate_prepared_into(
         friction,
     };
     let tangential = &mut out.tangential;
-    committed.update_into(
-        tangential_law,
-        &input,
-        Some(&principal),
-        tangent,
-        tangential,
-    );
+    committed.update(tangential_law, &input, tangent, tangential);
     tangential.state.normal_force = fn_;
     let n = g.normal;
     // d(approach) = -n . dp, so d(F_n n) = -k_n n n^T dp and

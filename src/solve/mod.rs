@@ -231,10 +231,11 @@ impl Seating {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum SeatingPath {
-    /// The quasi-static fast path: nominal increments, no halving,
-    /// closed-form geometry (`quasistatic::uniform`).
+    /// The quasi-static path took the nominal increments s_k = k/N
+    /// without halving one.
     Uniform,
-    /// The quasi-static adaptive path (halving at stick/slip changes).
+    /// The quasi-static path halved an increment (at a stick/slip change
+    /// or where Newton failed).
     Adaptive,
     /// The dynamic solver.
     Dynamic,
@@ -386,37 +387,6 @@ impl Method {
                     ..*o
                 },
             ),
-        }
-    }
-
-    /// [`Method::seat`] of `setup`'s coupling, reusing the quasi-static
-    /// set-up across the seatings of a study (the same bits).
-    pub fn seat_prepared(
-        &self,
-        setup: &quasistatic::SeatingSetup,
-        mu_s: &[f64],
-        start: &dynamic::StartPose,
-    ) -> Result<Seating, SolveError> {
-        match self {
-            Method::QuasiStatic(o) => quasistatic::seat_prepared(setup, mu_s, o),
-            Method::Dynamic(_) => self.seat(setup.coupling(), mu_s, start),
-        }
-    }
-
-    /// [`Method::seat_prepared`]'s pose, in the reused buffers of `ws`
-    /// (quasi-static: no allocation once `ws` has served one seating).
-    pub fn seat_in(
-        &self,
-        setup: &quasistatic::SeatingSetup,
-        mu_s: &[f64],
-        start: &dynamic::StartPose,
-        ws: &mut quasistatic::Workspace,
-    ) -> Result<SeatedPose, SolveError> {
-        match self {
-            Method::QuasiStatic(o) => quasistatic::seat_in(setup, mu_s, o, ws),
-            Method::Dynamic(_) => self
-                .seat(setup.coupling(), mu_s, start)
-                .map(|s| s.seated_pose()),
         }
     }
 }

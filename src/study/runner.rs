@@ -27,11 +27,11 @@ pub use super::paths::{PathTally, SeatingPaths};
 use super::stats::SampleRecord;
 pub use super::variation::{START_CLEARANCE, Sample, StartBounds, Variation, lifted_clear};
 use super::{DesignSpec, Sampler, Shard};
-use crate::assembly::{AssemblyError, Coupling};
+use crate::assembly::{AssemblyError, BodyPose, Coupling};
 
 use crate::solve::dynamic::StartPose;
-use crate::solve::quasistatic::{SeatingSetup, Workspace};
-use crate::solve::{Method, PointPose, SeatedPose, SolveError, nominal_mu};
+use crate::solve::quasistatic::{SeatingSetup, Workspace, seat_in};
+use crate::solve::{Method, PointPose, SeatedPose, SeatingPath, SolveError, nominal_mu};
 
 /// Output components per evaluation point (relative to the nominal seating,
 /// SI): translation of the point and rotation vector, phi_z being the
@@ -66,6 +66,43 @@ impl Default for StudyOptions {
             sensitivity: false,
             replicates: None,
         }
+    }
+}
+
+/// What a run reports as it goes: `tick` once per finished sample, and
+/// the path of every sample seating counted into `tally` where one is
+/// given. A closure alone is a `Progress` without a tally.
+#[derive(Clone, Copy)]
+pub struct Progress<'a> {
+    pub tick: &'a (dyn Fn() + Sync),
+    pub tally: Option<&'a PathTally>,
+}
+
+impl<'a> Progress<'a> {
+    /// `tick` per sample, the seating paths counted into `tally`.
+    pub fn with_tally(tick: &'a (dyn Fn() + Sync), tally: &'a PathTally) -> Self {
+        Progress {
+            tick,
+            tally: Some(tally),
+        }
+    }
+
+    fn record(&self, path: SeatingPath) {
+        if let Some(t) = self.tally {
+            t.record(path);
+        }
+    }
+}
+
+impl<'a, F: Fn() + Sync> From<&'a F> for Progress<'a> {
+    fn from(tick: &'a F) -> Self {
+        Progress { tick, tally: None }
+    }
+}
+
+impl<'a> From<&'a (dyn Fn() + Sync + 'a)> for Progress<'a> {
+    fn from(tick: &'a (dyn Fn() + Sync + 'a)) -> Self {
+        Progress { tick, tally: None }
     }
 }
 
@@ -225,7 +262,7 @@ pub fn check_options(coupling: &Coupling, opts: &StudyOptions) -> Result<(), Run
     Ok(())
 }
 
-/// Run this shard's samples of one scene. `tick` is called once per finished sample.
+/// Run this shard's samples of one scene, reporting to `progress`.
 ///
 /// Per sample: with friction, preload or start varied, the nominal
 /// coupling is seated with the sample's friction, preload and start, and
@@ -233,26 +270,16 @@ pub fn check_options(coupling: &Coupling, opts: &StudyOptions) -> Result<(), Run
 /// with tolerances varied, the sample's perturbed coupling is also seated
 /// at nominal friction and preload, and its pose recorded relative to the
 /// same nominal seating (interchangeability, `interchange/...` outputs).
-pub fn run_variant(
+pub fn run_variant<'a>(
     coupling: &Coupling,
     opts: &StudyOptions,
-    tick: &(dyn Fn() + Sync),
-) -> Result<VariantRun, RunError> {
-    run_variant_tallied(coupling, opts, tick, &PathTally::default())
-}
-
-/// [`run_variant`], counting the seating paths in `tally`.
-pub fn run_variant_tallied(
-    coupling: &Coupling,
-    opts: &StudyOptions,
-    tick: &(dyn Fn() + Sync),
-    tally: &PathTally,
+    progress: impl Into<Progress<'a>>,
 ) -> Result<VariantRun, RunError> {
     let (design, range) = shard_design(coupling, opts)?;
     let rows = design
         .range(range.clone())
         .map_err(|source| design_error(coupling, source))?;
-    let records = evaluate_rows_tallied(coupling, opts, range.zip(rows).collect(), tick, tally)?;
+    let records = evaluate_rows(coupling, opts, range.zip(rows).collect(), progress)?;
     Ok(VariantRun {
         design,
         shard: opts.shard,
@@ -318,37 +345,25 @@ pub fn friction_moves_pose(coupling: &Coupling, method: &Method) -> Result<bool,
 /// chunk), handing each chunk's records to `sink` in sample-index order:
 /// bounded memory for any sample count, and results that do not depend on
 /// the number of threads. Returns the design.
-pub fn run_chunked(
+pub fn run_chunked<'a>(
     coupling: &Coupling,
     opts: &StudyOptions,
     chunk: usize,
-    tick: &(dyn Fn() + Sync),
+    progress: impl Into<Progress<'a>>,
     sink: &mut dyn FnMut(Vec<SampleRecord>) -> Result<(), RunError>,
 ) -> Result<DesignSpec, RunError> {
-    run_chunked_tallied(coupling, opts, chunk, tick, &PathTally::default(), sink)
-}
-
-/// [`run_chunked`], counting the seating paths in `tally`.
-pub fn run_chunked_tallied(
-    coupling: &Coupling,
-    opts: &StudyOptions,
-    chunk: usize,
-    tick: &(dyn Fn() + Sync),
-    tally: &PathTally,
-    sink: &mut dyn FnMut(Vec<SampleRecord>) -> Result<(), RunError>,
-) -> Result<DesignSpec, RunError> {
+    let progress = progress.into();
     let (design, range) = shard_design(coupling, opts)?;
     let design_err = |source| design_error(coupling, source);
     let mut start = range.start;
     while start < range.end {
         let end = (start + chunk.max(1)).min(range.end);
         let rows = design.range(start..end).map_err(design_err)?;
-        sink(evaluate_rows_tallied(
+        sink(evaluate_rows(
             coupling,
             opts,
             (start..end).zip(rows).collect(),
-            tick,
-            tally,
+            progress,
         )?)?;
         start = end;
     }
@@ -360,24 +375,14 @@ pub fn run_chunked_tallied(
 /// the nominal seating (nominal friction and preload, touching start, same
 /// solver). Any design over `opts.variation`'s inputs may be passed (a
 /// study's design, or e.g. the matrices of a variance-based sensitivity
-/// analysis). `tick` is called once per finished row.
-pub fn evaluate_rows(
+/// analysis). `progress` ticks once per finished row.
+pub fn evaluate_rows<'a>(
     coupling: &Coupling,
     opts: &StudyOptions,
     rows: Vec<(usize, Vec<f64>)>,
-    tick: &(dyn Fn() + Sync),
+    progress: impl Into<Progress<'a>>,
 ) -> Result<Vec<SampleRecord>, RunError> {
-    evaluate_rows_tallied(coupling, opts, rows, tick, &PathTally::default())
-}
-
-/// [`evaluate_rows`], counting the seating paths of the rows in `tally`.
-pub fn evaluate_rows_tallied(
-    coupling: &Coupling,
-    opts: &StudyOptions,
-    rows: Vec<(usize, Vec<f64>)>,
-    tick: &(dyn Fn() + Sync),
-    tally: &PathTally,
-) -> Result<Vec<SampleRecord>, RunError> {
+    let progress = progress.into();
     let file = coupling.scene.file.clone();
     let var = opts.variation;
     let seat_err = |index: usize, mu: &[f64], source| RunError::Seating {
@@ -402,6 +407,12 @@ pub fn evaluate_rows_tallied(
         .iter()
         .map(|p| p.position)
         .collect();
+    // Every evaluation point's six components from the nominal seating to `pose`.
+    let reference = nominal.pose;
+    let relative = |pose: BodyPose| {
+        let pose_of = move |p| PointPose::between(&reference, &pose, p).components();
+        points.iter().flat_map(pose_of)
+    };
     let setup = SeatingSetup::new(coupling);
     // One workspace per rayon job, reused by the samples it seats.
     rows.into_par_iter()
@@ -411,12 +422,8 @@ pub fn evaluate_rows_tallied(
             if var.reseating() {
                 let s = reseat(&setup, opts, &sample, ws)
                     .map_err(|e| seat_err(index, &sample.mu, e))?;
-                tally.record(s.path);
-                outputs.extend(
-                    points
-                        .iter()
-                        .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).components()),
-                );
+                progress.record(s.path);
+                outputs.extend(relative(s.pose));
             }
             if let Some(t) = &sample.tolerances {
                 let perturbed = t.coupling(coupling).map_err(|source| RunError::Perturbed {
@@ -427,15 +434,11 @@ pub fn evaluate_rows_tallied(
                 let s = opts
                     .method
                     .seat(&perturbed, &nominal_mu, &StartPose::touching())
-                    .map(|s| tally.count(s))
                     .map_err(|e| seat_err(index, &nominal_mu, e))?;
-                outputs.extend(
-                    points
-                        .iter()
-                        .flat_map(|p| PointPose::between(&nominal.pose, &s.pose, p).components()),
-                );
+                progress.record(s.path);
+                outputs.extend(relative(s.pose));
             }
-            tick();
+            (progress.tick)();
             Ok(SampleRecord {
                 index,
                 inputs: row,
@@ -446,21 +449,26 @@ pub fn evaluate_rows_tallied(
 }
 
 /// The re-seating of one sample: the nominal coupling with the sample's
-/// friction, preload and start; in the reused workspace `ws` unless the
-/// preload varies (then the coupling differs from `setup`'s).
+/// friction, preload and start; quasi-static in the reused workspace `ws`
+/// unless the preload varies (then the coupling differs from `setup`'s).
 fn reseat(
     setup: &SeatingSetup,
     opts: &StudyOptions,
     sample: &Sample,
     ws: &mut Workspace,
 ) -> Result<SeatedPose, SolveError> {
-    if opts.variation.preload {
-        let mut c = setup.coupling().clone();
-        c.scene.preload = sample.preload;
+    let seat = |c: &Coupling| {
         opts.method
-            .seat(&c, &sample.mu, &sample.start)
+            .seat(c, &sample.mu, &sample.start)
             .map(|s| s.seated_pose())
-    } else {
-        opts.method.seat_in(setup, &sample.mu, &sample.start, ws)
+    };
+    match opts.method {
+        _ if opts.variation.preload => {
+            let mut c = setup.coupling().clone();
+            c.scene.preload = sample.preload;
+            seat(&c)
+        }
+        Method::QuasiStatic(o) => seat_in(setup, &sample.mu, &o, ws),
+        Method::Dynamic(_) => seat(setup.coupling()),
     }
 }

@@ -1,17 +1,18 @@
 //! Seating dynamics (MODEL.md §3, the design card): the moving half is a
 //! rapier3d-f64 dynamic body ([`world`]), the fixed surfaces are parry
-//! shapes, and the compliant contact layer ([`crate::solve::contact_layer`],
-//! shared with the quasi-static solver) supplies every contact force,
-//! plus the dashpots of [`forces`] that let the motion settle.
+//! shapes (colliders that touch nothing), and the compliant contact layer
+//! ([`crate::solve::contact_layer`], shared with the quasi-static solver)
+//! supplies every contact force, plus the dashpots of [`forces`] that let
+//! the motion settle.
 //!
 //! Each time step n (length dt):
 //! 1. read the pose x_n and velocity of the body from rapier;
-//! 2. for each contact, parry gives gap, normal and point at x_n (rapier's
-//!    own manifolds are one step stale and its rigid contact is off); the
-//!    contact layer gives the Hertz force and the stick/slip tangential
-//!    force from the tangential state committed at step n-1 and the
-//!    displacement of the contact point since x_(n-1); the dashpots add
-//!    damping;
+//! 2. for each contact, `assembly::geometry` gives gap, normal and point
+//!    at x_n (rapier's own manifolds are one step stale and its rigid
+//!    contact is off); the contact layer gives the Hertz force and the
+//!    stick/slip tangential force from the tangential state committed at
+//!    step n-1 and the displacement of the contact point since x_(n-1);
+//!    the dashpots add damping;
 //! 3. the preload F(t) = lambda(t) F_p acts at its body point;
 //! 4. the forces are set as user forces (reset first: rapier keeps them
 //!    across steps), the tangential states and x_n are committed, and

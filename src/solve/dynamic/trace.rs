@@ -64,9 +64,4 @@ impl Energy {
     pub fn total(&self) -> f64 {
         self.kinetic_synchronized + self.hertz - self.preload_work
     }
-
-    /// The same with rapier's unsynchronized velocity.
-    pub fn total_unsynchronized(&self) -> f64 {
-        self.kinetic + self.hertz - self.preload_work
-    }
 }

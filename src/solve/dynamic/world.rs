@@ -28,11 +28,12 @@ use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use rapier3d_f64::math::{Pose as DPose3, Rotation as DQuat, Vector as DVec3};
 use rapier3d_f64::prelude::{
     ColliderBuilder, Group, InteractionGroups, InteractionTestMode, MassProperties, PhysicsWorld,
-    RigidBodyBuilder, RigidBodyHandle, SharedShape,
+    RigidBodyBuilder, RigidBodyHandle,
 };
 
 use super::mass::MassModel;
-use crate::assembly::{BodyPose, Coupling, FixedShape};
+use crate::assembly::geometry::parry_shape;
+use crate::assembly::{BodyPose, Coupling};
 
 pub(crate) fn dvec(v: &Vector3<f64>) -> DVec3 {
     DVec3::new(v.x, v.y, v.z)
@@ -106,11 +107,9 @@ pub(crate) fn build(
     }
     let ground = world.insert_body(RigidBodyBuilder::fixed());
     for c in &coupling.contacts {
-        let (shape, pose) = match &c.fixed {
-            FixedShape::Plane(s, p) => (SharedShape::new(*s), *p),
-            FixedShape::Cylinder(s, p) => (SharedShape::new(*s), *p),
-            FixedShape::Sphere(s, p) => (SharedShape::new(*s), *p),
-        };
+        let ball = &coupling.balls[c.ball];
+        let reach = 4.0 * (ball.radius + c.pair.radius2.unwrap_or(0.0));
+        let (shape, pose) = parry_shape(&c.surface, &ball.centre, reach);
         world.insert_collider(
             ColliderBuilder::new(shape)
                 .position(pose)

@@ -2,11 +2,11 @@
 //! states and the path of the external wrench (its data types are in
 //! `external`).
 
-use nalgebra::Vector3;
+use nalgebra::{Vector3, Vector6};
 
 use super::external::{ExternalLoad, LoadEvent, LoadEventKind};
 use super::path::{Buffers, Walk};
-use super::solver::{Program, Solver};
+use super::solver::{Program, Solver, contact_results};
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{SlipState, TangentialState};
 use crate::solve::contact_layer::ContactEval;
@@ -75,18 +75,16 @@ pub fn apply_load(
         load: *load,
         factor,
     };
-    let solver = Solver::adaptive(coupling, &fr, *opts, program);
+    let solver = Solver::new(coupling, &fr, *opts, program, Vector6::zeros());
     let mut bufs = Buffers {
         states: states.to_vec(),
         ..Buffers::default()
     };
-    let end = solver
-        .run(*start, &mut bufs)?
-        .expect("the adaptive path never declines");
+    let end = solver.run(*start, &mut bufs)?;
     Ok(LoadPath {
         factor: end.reached * factor,
         pose: end.pose,
-        contacts: solver.results(&bufs.evals),
+        contacts: contact_results(coupling, &fr, &bufs.evals),
         states: bufs.states,
         first_event: end.event,
         stopped: end.stopped,

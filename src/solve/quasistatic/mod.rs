@@ -11,7 +11,7 @@
 //! - Corrector: Newton on R(x) = sum_i [F_i; p_i x F_i] + [P; p_P x P] = 0
 //!   with the consistent tangent of the contact layer plus the geometric
 //!   terms of moving points; finite rotations (quaternions), contact points
-//!   and normals from parry at the current pose. Converged when
+//!   and normals at the current pose (`assembly::geometry`). Converged when
 //!   |R_F| < tol F_p and |R_M| < tol F_p L (L the coupling radius).
 //! - Time: the path parameter s runs from 0 to 1 in `[preload] ramp_time`
 //!   T (t = s T, so lambda = (t/T)^(3/2): a uniform rate of Hertz
@@ -32,31 +32,35 @@
 //! a [`LoadEvent`]; a separation that leaves no equilibrium (the coupling
 //! lifts off) ends the path there.
 //!
-//! A seating first tries the uniform fast path ([`uniform`]): the same
-//! increments without halving, closed-form contact geometry; where the
-//! adaptive path would halve, it declines and the adaptive path runs
-//! (`Seating::path` says which one served). [`seat_adaptive`] always takes
-//! the adaptive path (today's algorithm, the reference of the fast one).
+//! A seating that never halves takes the nominal increments s_k = k/N
+//! (`Seating::path` is then [`SeatingPath::Uniform`], else
+//! [`SeatingPath::Adaptive`]). Fewer increments, or a direct solve of the
+//! final equilibrium, give another answer: the Coulomb force of an
+//! increment points along R F_old + K_t du, so the final force carries the
+//! history of the slip direction, which is not straight (finite rotations,
+//! the contact point wandering over the ball, a pin's normal turning, the
+//! support compliance).
+//!
 //! A study seats one coupling many times: [`SeatingSetup`] holds what
 //! every seating of it computes first (the predictor x_1, the virgin
-//! contact states), and [`seat_prepared`] reuses it with the same bits.
-//! A [`Workspace`] holds the buffers of one seating; [`seat_in`] reuses
-//! them (one workspace per rayon worker in a study), so that a seating
-//! allocates nothing once they have grown (tests/alloc_free.rs), and
-//! returns the pose-level [`SeatedPose`] (the per-contact report,
-//! [`Workspace::seating`], is built only on request).
+//! contact states), and a [`Workspace`] the buffers of one seating;
+//! [`seat_in`], the seat kernel, reuses both (one workspace per rayon
+//! worker in a study), so that a seating allocates nothing once they have
+//! grown (tests/alloc_free.rs), and returns the pose-level [`SeatedPose`]
+//! (the per-contact report, [`Workspace::seating`], is built only on
+//! request). [`seat`] is the one-seating convenience that builds both and
+//! the report.
 
 mod external;
 mod load;
 mod lu6;
 mod path;
 mod solver;
-pub mod uniform;
 
 pub use external::{ExternalLoad, LoadEvent, LoadEventKind};
 pub use load::{LoadPath, apply_load, at_rest_states};
 
-use path::{Buffers, End};
+use path::Buffers;
 use solver::{Program, Solver, contact_results};
 
 use nalgebra::Vector6;
@@ -65,27 +69,26 @@ use super::{SeatedPose, Seating, SeatingPath, SolveError, SolverOptions, frictio
 use crate::assembly::Coupling;
 use crate::contact::{Friction, TangentialState};
 
-/// Seat the coupling with static coefficients `mu_s` (contact order): the
-/// uniform fast path where it serves, else the adaptive path; the same
-/// answer either way (to rounding, [`uniform`]).
+/// Seat the coupling with static coefficients `mu_s` (contact order), with
+/// the per-contact report: [`seat_in`] in a fresh workspace.
 pub fn seat(
     coupling: &Coupling,
     mu_s: &[f64],
     opts: &SolverOptions,
 ) -> Result<Seating, SolveError> {
-    seat_prepared(&SeatingSetup::new(coupling), mu_s, opts)
+    let mut ws = Workspace::new();
+    let seated = seat_in(&SeatingSetup::new(coupling), mu_s, opts, &mut ws)?;
+    Ok(ws.seating(coupling, seated))
 }
 
 /// What every seating of one coupling computes before its first
 /// increment, computed once and shared (it is `Sync`) by the seatings of a
 /// study: the frictionless predictor x_1 and the virgin contact states
-/// (zero force, tangent to the normals at the touching pose), the same for
-/// both paths (their geometries give the same bits). [`seat_prepared`] with
-/// it gives the bits of [`seat`].
+/// (zero force, tangent to the normals at the touching pose).
 pub struct SeatingSetup<'a> {
     coupling: &'a Coupling,
     x1: Vector6<f64>,
-    /// Virgin states at parry's normals of the touching pose.
+    /// Virgin states at the normals of the touching pose.
     virgin: Vec<TangentialState>,
 }
 
@@ -130,75 +133,37 @@ impl Workspace {
     }
 }
 
-/// [`seat`] of `setup`'s coupling.
-pub fn seat_prepared(
-    setup: &SeatingSetup,
-    mu_s: &[f64],
-    opts: &SolverOptions,
-) -> Result<Seating, SolveError> {
-    let mut ws = Workspace::new();
-    let seated = seat_in(setup, mu_s, opts, &mut ws)?;
-    Ok(ws.seating(setup.coupling, seated))
-}
-
-/// [`seat_prepared`] in the reused buffers of `ws`, without the
-/// per-contact report: the same pose, increments and path, and no
-/// allocation once `ws` has served one seating of this coupling.
+/// The seat kernel: seat `setup`'s coupling with static coefficients
+/// `mu_s` in the reused buffers of `ws`, without the per-contact report
+/// (no allocation once `ws` has served one seating of this coupling).
 pub fn seat_in(
     setup: &SeatingSetup,
     mu_s: &[f64],
     opts: &SolverOptions,
     ws: &mut Workspace,
 ) -> Result<SeatedPose, SolveError> {
-    frictions_into(setup.coupling, mu_s, &mut ws.friction)?;
-    if let Some(end) = uniform::seat(setup, &ws.friction, opts, &mut ws.bufs) {
-        return Ok(seated(end, SeatingPath::Uniform));
-    }
-    adaptive(setup, &ws.friction, opts, &mut ws.bufs)
-}
-
-/// Seat by the adaptive path only (today's algorithm, parry's geometry):
-/// the reference of the fast path in tests and benches.
-pub fn seat_adaptive(
-    coupling: &Coupling,
-    mu_s: &[f64],
-    opts: &SolverOptions,
-) -> Result<Seating, SolveError> {
-    let setup = SeatingSetup::new(coupling);
-    let mut ws = Workspace::new();
-    frictions_into(coupling, mu_s, &mut ws.friction)?;
-    let seated = adaptive(&setup, &ws.friction, opts, &mut ws.bufs)?;
-    Ok(ws.seating(coupling, seated))
-}
-
-fn adaptive(
-    setup: &SeatingSetup,
-    fr: &[Friction],
-    opts: &SolverOptions,
-    bufs: &mut Buffers,
-) -> Result<SeatedPose, SolveError> {
     let c = setup.coupling;
-    let solver = Solver::with_predictor(c, fr, *opts, Program::Seat, setup.x1);
-    bufs.states.clone_from(&setup.virgin);
-    let end = solver.run(c.touching_pose, bufs)?;
-    let end = end.expect("the adaptive path never declines");
-    Ok(seated(end, SeatingPath::Adaptive))
+    frictions_into(c, mu_s, &mut ws.friction)?;
+    let solver = Solver::new(c, &ws.friction, *opts, Program::Seat, setup.x1);
+    ws.bufs.states.clone_from(&setup.virgin);
+    let end = solver.run(c.touching_pose, &mut ws.bufs)?;
+    Ok(SeatedPose {
+        pose: end.pose,
+        increments: end.increments,
+        newton_iterations: end.newton_iterations,
+        path: if end.halved {
+            SeatingPath::Adaptive
+        } else {
+            SeatingPath::Uniform
+        },
+    })
 }
 
 /// Zero tangential force at every contact, tangent to its normal at the
-/// touching pose (parry's geometry).
+/// touching pose.
 fn virgin_states(coupling: &Coupling) -> Vec<TangentialState> {
     let pose = coupling.touching_pose;
     (0..coupling.contacts.len())
         .map(|i| TangentialState::new(coupling.geometry(i, &pose).normal))
         .collect()
-}
-
-fn seated(end: End, path: SeatingPath) -> SeatedPose {
-    SeatedPose {
-        pose: end.pose,
-        increments: end.increments,
-        newton_iterations: end.newton_iterations,
-        path,
-    }
 }

@@ -1,4 +1,4 @@
-//! The adaptive path follower ([`Solver::run`]): increments in the path
+//! The path follower ([`Solver::run`]): increments in the path
 //! parameter s, halved on Newton failure and on a stick/slip change of a
 //! loaded contact, doubled back to the nominal size after a quiet one
 //! (module docs of [`super`]). The contact states and evaluations live in
@@ -36,6 +36,9 @@ pub(super) struct End {
     pub stopped: Option<SolveError>,
     pub increments: usize,
     pub newton_iterations: usize,
+    /// Whether an increment was halved (else the path took the nominal
+    /// increments s_k = k/N).
+    pub halved: bool,
 }
 
 /// The committed state of a path between increments.
@@ -50,6 +53,7 @@ pub(super) struct Walk<'w> {
     /// Accepted increments and Newton iterations so far.
     pub accepted: usize,
     pub iterations: usize,
+    pub halved: bool,
 }
 
 /// What stays fixed along a path.
@@ -108,14 +112,8 @@ fn stick_slip_changed(w: &Walk, trial: &[ContactEval]) -> bool {
 }
 
 impl Solver<'_> {
-    /// Follow the path from `start`. `Ok(None)` only on the uniform path
-    /// (`self.uniform`), where the adaptive path would halve an increment.
-    /// The start states are `bufs.states`.
-    pub(super) fn run(
-        &self,
-        start: BodyPose,
-        bufs: &mut Buffers,
-    ) -> Result<Option<End>, SolveError> {
+    /// Follow the path from `start`; the start states are `bufs.states`.
+    pub(super) fn run(&self, start: BodyPose, bufs: &mut Buffers) -> Result<End, SolveError> {
         let seating = self.program == Program::Seat;
         let nominal = 1.0 / self.opts.increments.max(1) as f64;
         let h_min = nominal / f64::powi(2.0, self.opts.max_splits as i32);
@@ -129,6 +127,7 @@ impl Solver<'_> {
             event: None,
             accepted: 0,
             iterations: 0,
+            halved: false,
         };
         if !seating {
             self.evaluate_all(&start, &start, w.states, self.ramp_time, true, w.evals);
@@ -152,9 +151,6 @@ impl Solver<'_> {
             let verdict = match step {
                 Step::Failed(_) if can_halve => Verdict::Halve,
                 Step::Failed(residual) => {
-                    if self.uniform {
-                        return Ok(None);
-                    }
                     let load = loads.lambda.max(loads.extra);
                     return self.dead_end(&ctx, w, s_next, load, residual);
                 }
@@ -170,9 +166,11 @@ impl Solver<'_> {
                 }
             };
             match verdict {
-                Verdict::Halve if self.uniform => return Ok(None),
-                Verdict::Halve => h *= 0.5,
-                Verdict::Stop(err) => return self.stop(err, w).map(Some),
+                Verdict::Halve => {
+                    h *= 0.5;
+                    w.halved = true;
+                }
+                Verdict::Stop(err) => return self.stop(err, w),
                 Verdict::Accept(changed) => {
                     let Step::Converged(new_pose, _) = step else {
                         unreachable!("only a converged increment is accepted")
@@ -184,7 +182,7 @@ impl Solver<'_> {
                 }
             }
         }
-        Ok(Some(self.end(w)))
+        Ok(self.end(w))
     }
 
     /// The predictor and the loads of the increment from `w.s` to `s_next`.
@@ -264,15 +262,15 @@ impl Solver<'_> {
         s_next: f64,
         load: f64,
         residual: f64,
-    ) -> Result<Option<End>, SolveError> {
+    ) -> Result<End, SolveError> {
         if !ctx.seating
             && let Some(e) = self.lift_off(&w, &ctx.start_fn, s_next, ctx.factor)
         {
             w.event = w.event.or(Some(e));
-            return Ok(Some(self.end(w)));
+            return Ok(self.end(w));
         }
         let err = self.failure(load, residual, &w.pose, &ctx.start);
-        self.stop(err, w).map(Some)
+        self.stop(err, w)
     }
 
     /// A path that cannot go on: after a load event it ends there (the
@@ -295,6 +293,7 @@ impl Solver<'_> {
             stopped: None,
             increments: w.accepted,
             newton_iterations: w.iterations,
+            halved: w.halved,
         }
     }
 }

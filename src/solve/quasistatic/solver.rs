@@ -25,9 +25,8 @@
 //! only once the iterate has failed it, by evaluating the same pose again
 //! with the tangent (measured: 0 to 4 % of the corrected iterates of
 //! scenes 01, 02, 06). Forces and states are formed by the same operations
-//! with or without the tangent, so both evaluations give the same bits,
-//! and so does the seating; the rule only decides where the tangent work
-//! is spent.
+//! with or without the tangent, so the seating does not depend on the
+//! rule; it only decides where the tangent work is spent.
 
 use std::ops::{AddAssign, SubAssign};
 
@@ -39,9 +38,7 @@ use crate::assembly::ContactGeometry;
 use crate::assembly::constraint::frictionless_preload_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
-use crate::solve::contact_layer::{
-    ContactEval, GeometrySource, Motion, Moved, NormalPart, evaluate_prepared_into,
-};
+use crate::solve::contact_layer::{ContactEval, Motion, Moved, NormalPart, evaluate_into};
 use crate::solve::{ContactResult, SolveError, SolverOptions};
 
 /// Ball centres held on the stack by [`Solver::evaluate_all`] (a kinematic
@@ -99,25 +96,13 @@ pub(super) struct Solver<'a> {
     pub max_travel: f64,
     /// Duration of the whole path, s from 0 to 1 (`[preload] ramp_time`) [s].
     pub ramp_time: f64,
-    /// Where the contact geometry comes from.
-    pub geometry: GeometrySource,
-    /// The uniform (fast) path: give up where the adaptive path would halve.
-    pub uniform: bool,
 }
 
 impl<'a> Solver<'a> {
-    /// The adaptive path follower with parry's geometry (today's algorithm).
-    pub fn adaptive(
-        coupling: &'a Coupling,
-        friction: &'a [Friction],
-        opts: SolverOptions,
-        program: Program,
-    ) -> Self {
-        Self::with_predictor(coupling, friction, opts, program, predictor(coupling))
-    }
-
-    /// [`Self::adaptive`] with the seating predictor x_1 ([`predictor`]) given.
-    pub fn with_predictor(
+    /// The path follower of `program`, with the seating predictor x_1
+    /// ([`predictor`]; a load path, which starts from its start pose, reads
+    /// none).
+    pub fn new(
         coupling: &'a Coupling,
         friction: &'a [Friction],
         opts: SolverOptions,
@@ -145,8 +130,6 @@ impl<'a> Solver<'a> {
             x1,
             max_travel: coupling.slide_away_travel(),
             ramp_time: coupling.scene.preload.ramp_time,
-            geometry: GeometrySource::Parry,
-            uniform: false,
         }
     }
 
@@ -182,7 +165,7 @@ impl<'a> Solver<'a> {
 
     /// Every contact at `pose` into `out`, one slot per contact (the slots
     /// are made once, then written in place), with the tangent if `tangent`
-    /// ([`evaluate_prepared_into`]).
+    /// ([`evaluate_into`]).
     pub fn evaluate_all(
         &self,
         pose: &BodyPose,
@@ -214,9 +197,7 @@ impl<'a> Solver<'a> {
                     Some(c) => *c,
                     None => pose.apply(&balls[ball].centre),
                 };
-                let g = self
-                    .geometry
-                    .geometry_with_centre(self.coupling, i, &centre);
+                let g = self.coupling.geometry_at(i, &centre);
                 normal[i - start] = NormalPart::new(self.coupling, i, &g, &states[i]);
                 geometry[i - start] = g;
             }
@@ -228,7 +209,7 @@ impl<'a> Solver<'a> {
                     committed: &states[i],
                     friction: self.friction[i].during(duration),
                 };
-                evaluate_prepared_into(
+                evaluate_into(
                     &mut out[i],
                     self.coupling,
                     i,
@@ -351,14 +332,9 @@ impl<'a> Solver<'a> {
         }
         j
     }
-
-    /// The reported contacts of evaluations `evals` (contact order).
-    pub fn results(&self, evals: &[ContactEval]) -> Vec<ContactResult> {
-        contact_results(self.coupling, self.friction, evals)
-    }
 }
 
-/// a x b (the component formulas of nalgebra's `cross`).
+/// a x b on arrays.
 #[inline(always)]
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [
@@ -375,9 +351,8 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
 /// [ K        -K [p]x                      ]
 /// [ [p]x K - [f]x    -[p]x K [p]x + m f^T - (f . m) I ]
 /// ```
-/// ([f]x [m]x = m f^T - (f . m) I). Written out on the components, each
-/// entry formed by the same operations as the 3x3 matrix products it
-/// replaces.
+/// ([f]x [m]x = m f^T - (f . m) I), written out on the components (no 3x3
+/// products formed).
 #[inline(always)]
 fn add_contact(
     j: &mut Matrix6<f64>,

@@ -6,8 +6,8 @@ use kinrepro::report::study_files::{SamplesCsv, samples_file_name};
 use kinrepro::report::study_stream::{STREAM_ABOVE, StreamStats, streams};
 use kinrepro::study::Shard;
 use kinrepro::study::runner::{
-    PathTally, StartBounds, StudyOptions, VariantRun, Variation, design_for, recorded_output_names,
-    run_chunked_tallied, run_variant_tallied,
+    PathTally, Progress, StartBounds, StudyOptions, VariantRun, Variation, design_for,
+    recorded_output_names, run_chunked, run_variant,
 };
 
 use super::*;
@@ -59,7 +59,7 @@ pub fn study(args: StudyArgs) -> Result<(), CliError> {
             pending_csv.extend(csv);
         } else {
             let tally = PathTally::default();
-            let run = run_variant_tallied(c, &opts, &|| bar.inc(1), &tally)?;
+            let run = run_variant(c, &opts, Progress::with_tally(&|| bar.inc(1), &tally))?;
             let mut v = VariantReport::new(c, run, &opts).context(&c.scene.file)?;
             v.seating_paths = Some(tally.counts());
             if sobol {
@@ -144,7 +144,8 @@ fn streamed_variant(
     let mut st = StreamStats::new(names.len());
     let mut failure: Option<CliError> = None;
     let tally = PathTally::default();
-    let run = run_chunked_tallied(c, opts, CHUNK, tick, &tally, &mut |records| {
+    let progress = Progress::with_tally(tick, &tally);
+    let run = run_chunked(c, opts, CHUNK, progress, &mut |records| {
         let step = st
             .push(&records, &names)
             .context(file)

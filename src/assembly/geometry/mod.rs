@@ -1,0 +1,105 @@
+//! Contact geometry of a moving ball against a fixed surface: one closed
+//! form per shape pair (one file each, like parry's `query::contact`),
+//! behind one dispatcher ([`contact`]) that every solver path calls.
+//!
+//! With c the ball centre, r its radius and n the unit normal from the
+//! fixed surface into the ball, each pair gives the signed distance (gap)
+//! and n; the contact point is midway between the two surface points,
+//! p = c - n (r + gap/2) (the ball's surface point c - n r and the fixed
+//! surface's c - n (r + gap)).
+//!
+//! parry3d-f64 is the reference: `tests/geometry.rs` checks each closed
+//! form against parry's `query::contact` with the shapes of
+//! [`parry_shape`] on random poses at the coupling's scale. The closed
+//! forms replace parry's query in the solvers because the query's shape
+//! dispatch and pose transforms cost several times the arithmetic.
+
+mod ball_ball;
+mod ball_pin;
+mod ball_plane;
+
+use nalgebra::Vector3;
+use parry3d_f64::math::{Pose, Vector};
+use parry3d_f64::shape::{Ball, Capsule, HalfSpace, SharedShape};
+
+use crate::scene::SurfaceGeometry;
+
+/// Contact geometry of one ball against one fixed surface.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactGeometry {
+    /// Signed distance [m]; negative = overlap (the Hertz approach is -gap).
+    pub gap: f64,
+    /// Unit normal from the fixed surface into the ball.
+    pub normal: Vector3<f64>,
+    /// Contact point: midway between the two surface points [m].
+    pub point: Vector3<f64>,
+}
+
+impl ContactGeometry {
+    /// The geometry of a ball (centre `centre`, radius `radius`) at `gap`
+    /// along the unit `normal`, with the point midway (module docs).
+    #[inline(always)]
+    fn midway(centre: &Vector3<f64>, radius: f64, gap: f64, normal: Vector3<f64>) -> Self {
+        ContactGeometry {
+            gap,
+            normal,
+            point: centre - normal * (radius + 0.5 * gap),
+        }
+    }
+}
+
+/// The geometry of a ball of `radius` centred at `centre` (world
+/// coordinates) against the fixed `surface`.
+#[inline]
+pub fn contact(surface: &SurfaceGeometry, centre: &Vector3<f64>, radius: f64) -> ContactGeometry {
+    match surface {
+        SurfaceGeometry::Plane { point, normal } => {
+            ball_plane::contact(centre, radius, point, normal)
+        }
+        SurfaceGeometry::Cylinder {
+            axis_point,
+            direction,
+            radius: pin,
+        } => ball_pin::contact(centre, radius, axis_point, direction, *pin),
+        SurfaceGeometry::Sphere {
+            centre: fixed,
+            radius: r_fixed,
+        } => ball_ball::contact(centre, radius, fixed, *r_fixed),
+    }
+}
+
+/// A fixed surface as a parry shape and its pose: a half-space, a ball, or
+/// for a pin a capsule of the pin's radius about the part of its axis that
+/// reaches `half_length` either way from the foot of `ball_centre` (a
+/// capsule's side is the cylinder, and no ball reaches its ends). The
+/// dynamic solver's colliders, and the reference of the closed forms.
+pub fn parry_shape(
+    surface: &SurfaceGeometry,
+    ball_centre: &Vector3<f64>,
+    half_length: f64,
+) -> (SharedShape, Pose) {
+    let v = |v: &Vector3<f64>| Vector::new(v.x, v.y, v.z);
+    match *surface {
+        SurfaceGeometry::Plane { point, normal } => (
+            SharedShape::new(HalfSpace::new(v(&normal))),
+            Pose::from_translation(v(&point)),
+        ),
+        SurfaceGeometry::Cylinder {
+            axis_point,
+            direction,
+            radius,
+        } => {
+            let foot = axis_point + direction * direction.dot(&(ball_centre - axis_point));
+            let (a, b) = (
+                foot - direction * half_length,
+                foot + direction * half_length,
+            );
+            let capsule = Capsule::new(v(&a), v(&b), radius);
+            (SharedShape::new(capsule), Pose::IDENTITY)
+        }
+        SurfaceGeometry::Sphere { centre, radius } => (
+            SharedShape::new(Ball::new(radius)),
+            Pose::from_translation(v(&centre)),
+        ),
+    }
+}
