@@ -6,14 +6,16 @@
 //! G from node to node carries little sampling noise; between the nodes G
 //! is interpolated entry by entry with Catmull-Rom cubics (exact for
 //! quadratics; in the end intervals the missing outer node is the quadratic
-//! extrapolation x_{-1} = 3 x_0 - 3 x_1 + x_2).
+//! extrapolation x_{-1} = 3 x_0 - 3 x_1 + x_2). With no grid parameter (the
+//! spread alone) the grid is one study.
 //!
-//! Each node's study runs at spread s_node = min(s_g, mu_node / 2) and G =
-//! C / s_node^2 (sigma close to linear in the spread, within 1 % while
-//! spread <= 0.3 mu0; the calibration re-runs the grid at the first
-//! estimate, so the linear law spans only the interval). The interpolation
-//! and the linear law together are checked against a direct study at the
-//! final estimate (`GridInfo::check`).
+//! Each node's study runs at spread s_g and G = C / s_g^2 (sigma close to
+//! linear in the spread, within 1 % while spread <= 0.3 mu0; the
+//! calibration re-runs the grid at the first estimate, so the linear law
+//! spans only the interval). Where mu_static is a grid parameter, a node
+//! runs at min(s_g, mu_node / 2), so that the low-mu nodes stay where the
+//! linear law holds. The interpolation and the linear law together are
+//! checked against a direct study at the final estimate (`GridInfo::check`).
 
 use nalgebra::DMatrix;
 
@@ -65,7 +67,8 @@ pub struct ModelGrid {
 pub struct GridInfo {
     pub parameters: Vec<String>,
     pub nodes: Vec<Vec<f64>>,
-    /// The spread the node studies ran at (capped at mu_static / 2 per node).
+    /// The spread the node studies ran at (capped at mu_static / 2 per node
+    /// where mu_static is a grid parameter).
     pub spread: f64,
     /// Largest relative difference, over the measured DOFs, between sigma
     /// from the interpolated grid (scaled by s^2) and sigma of a direct
@@ -81,7 +84,8 @@ impl ModelGrid {
         ranges: &[(f64, f64)],
         spread: f64,
     ) -> Result<Self, CalibrateError> {
-        let k = NODES[params.len() - 1];
+        let k = params.len().checked_sub(1).map_or(1, |i| NODES[i]);
+        let cap = params.contains(&Param::MuStatic);
         let nodes: Vec<Vec<f64>> = ranges
             .iter()
             .map(|&(a, b)| {
@@ -95,7 +99,7 @@ impl ModelGrid {
             let values = node_values(&nodes, flat);
             let mut c = with_values(spec.coupling, params, &values);
             let mu = c.scene.friction.mu_static;
-            let s = spread.min(0.5 * mu);
+            let s = if cap { spread.min(0.5 * mu) } else { spread };
             Param::Spread.set(&mut c, s);
             g.push(spec.run(&c)?.per_unit(spec.dofs));
         }
@@ -131,7 +135,7 @@ impl ModelGrid {
             .zip(phi)
             .map(|(n, &v)| weights(n, v))
             .collect();
-        let k = self.nodes[0].len();
+        let k = self.nodes.first().map_or(1, Vec::len);
         let p = self.g[0].nrows();
         let mut out = DMatrix::zeros(p, p);
         let mut idx = vec![0usize; per_dim.len()];
@@ -165,7 +169,7 @@ impl ModelGrid {
 
 /// The parameter values of node number `flat` (last parameter fastest).
 fn node_values(nodes: &[Vec<f64>], mut flat: usize) -> Vec<f64> {
-    let k = nodes[0].len();
+    let k = nodes.first().map_or(1, Vec::len);
     let mut v = vec![0.0; nodes.len()];
     for d in (0..nodes.len()).rev() {
         v[d] = nodes[d][flat % k];

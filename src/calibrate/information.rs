@@ -5,12 +5,10 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::joint::JointModel;
+use super::joint::{JointModel, S_MIN_REL};
 use super::likelihood::Observed;
+use super::model::covariance;
 use super::params::Param;
-
-/// Relative step of the spread's finite differences (as its search floor).
-const S_MIN_REL: f64 = 1e-4;
 
 /// The information matrices at theta: H (what the Wishart / chi-square law
 /// assumes), J (the true variance of the score, with the pose's fourth
@@ -90,9 +88,16 @@ pub fn information(m: &JointModel, theta: &[f64], x: &[Vec<f64>]) -> Option<Info
     let nv = DMatrix::from_diagonal(&DVector::from_column_slice(&m.noise_var));
     let (j, mm) = match m.obs {
         Observed::Covariance { n, .. } => {
-            let forms: Vec<Vec<f64>> = w.iter().map(|wa| quadratic_forms(&xs, wa)).collect();
-            let sx = sample_cov(&xs);
-            let c = DMatrix::from_fn(q, q, |a, b| covariance(&forms[a], &forms[b]));
+            // Per sample the quadratic forms x' W_a x of every parameter.
+            let forms: Vec<Vec<f64>> = xs
+                .iter()
+                .map(|r| {
+                    let v = DVector::from_column_slice(r);
+                    w.iter().map(|wa| (v.transpose() * wa * &v)[(0, 0)]).collect()
+                })
+                .collect();
+            let sx = covariance(&xs);
+            let c = covariance(&forms);
             let noise = DMatrix::from_fn(q, q, |a, b| {
                 4.0 * (&w[a] * &nv * &w[b] * &sx).trace()
                     + 2.0 * (&w[a] * &nv * &w[b] * &nv).trace()
@@ -100,11 +105,12 @@ pub fn information(m: &JointModel, theta: &[f64], x: &[Vec<f64>]) -> Option<Info
             ((&c + noise) / (*n as f64 - 1.0), c / nx)
         }
         Observed::Sigmas { cycles, .. } => {
-            let sq: Vec<Vec<f64>> = (0..p)
-                .map(|u| xs.iter().map(|r| r[u] * r[u]).collect())
+            let sq: Vec<Vec<f64>> = xs
+                .iter()
+                .map(|r| r.iter().map(|v| v * v).collect())
                 .collect();
-            let c = DMatrix::from_fn(p, p, |u, v| covariance(&sq[u], &sq[v]));
-            let mean = |u: usize| sq[u].iter().sum::<f64>() / nx;
+            let c = covariance(&sq);
+            let mean = |u: usize| sq.iter().map(|r| r[u]).sum::<f64>() / nx;
             let cy = DMatrix::from_fn(p, p, |u, v| {
                 let extra = if u == v {
                     4.0 * mean(u) * m.noise_var[u] + 2.0 * m.noise_var[u].powi(2)
@@ -138,34 +144,6 @@ fn centred(x: &[Vec<f64>]) -> Vec<Vec<f64>> {
     x.iter()
         .map(|r| (0..p).map(|j| r[j] - mean[j]).collect())
         .collect()
-}
-
-fn quadratic_forms(xs: &[Vec<f64>], a: &DMatrix<f64>) -> Vec<f64> {
-    xs.iter()
-        .map(|r| {
-            let v = DVector::from_column_slice(r);
-            (v.transpose() * a * &v)[(0, 0)]
-        })
-        .collect()
-}
-
-fn sample_cov(xs: &[Vec<f64>]) -> DMatrix<f64> {
-    let p = xs.first().map_or(0, Vec::len);
-    let n = xs.len() as f64;
-    DMatrix::from_fn(p, p, |a, b| {
-        xs.iter().map(|r| r[a] * r[b]).sum::<f64>() / (n - 1.0)
-    })
-}
-
-/// Sample covariance (divisor n - 1) of two equally long series.
-fn covariance(a: &[f64], b: &[f64]) -> f64 {
-    let n = a.len() as f64;
-    let (ma, mb) = (a.iter().sum::<f64>() / n, b.iter().sum::<f64>() / n);
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - ma) * (y - mb))
-        .sum::<f64>()
-        / (n - 1.0)
 }
 
 /// What the information gives per parameter: the sandwich factor k_a, the
@@ -214,9 +192,9 @@ impl Information {
 
 #[cfg(test)]
 mod tests {
-    use super::super::chi2::CHI2_1_90;
     use super::super::grid::ModelGrid;
     use super::super::joint::{estimate, profile_end};
+    use super::super::likelihood::wilks_threshold;
     use super::*;
     use rand::{Rng, SeedableRng};
 
@@ -283,7 +261,7 @@ mod tests {
             let r = a / (s * s);
             let d = (n as f64 - 1.0) * (r - r.ln() - 1.0);
             assert!(
-                !e.at_bound && (d - CHI2_1_90).abs() < 1e-4,
+                !e.at_bound && (d - wilks_threshold()).abs() < 1e-4,
                 "{dir}: s {s}, {d}"
             );
         }

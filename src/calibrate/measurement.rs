@@ -289,18 +289,6 @@ impl Measurement {
         let MeasuredData::Cycles(rows) = &self.data else {
             return None;
         };
-        let (n, p) = (rows.len(), self.dofs.len());
-        let mean: Vec<f64> = (0..p)
-            .map(|j| rows.iter().map(|r| r[j]).sum::<f64>() / n as f64)
-            .collect();
-        let mut s = DMatrix::zeros(p, p);
-        for r in rows {
-            for a in 0..p {
-                for b in 0..p {
-                    s[(a, b)] += (r[a] - mean[a]) * (r[b] - mean[b]);
-                }
-            }
-        }
-        Some(s / (n as f64 - 1.0))
+        Some(super::model::covariance(rows))
     }
 }

@@ -103,14 +103,19 @@ impl ModelStudy {
     }
 }
 
-/// Sample covariance (divisor n - 1) of rows of six values.
-pub fn covariance(rows: &[[f64; 6]]) -> DMatrix<f64> {
+/// Sample covariance matrix (divisor n - 1) of rows of equal length (the
+/// columns are the variables).
+pub fn covariance<R: AsRef<[f64]>>(rows: &[R]) -> DMatrix<f64> {
     let n = rows.len() as f64;
-    let mean: [f64; 6] = std::array::from_fn(|j| rows.iter().map(|r| r[j]).sum::<f64>() / n);
-    let mut c = DMatrix::zeros(6, 6);
+    let p = rows.first().map_or(0, |r| r.as_ref().len());
+    let mean: Vec<f64> = (0..p)
+        .map(|j| rows.iter().map(|r| r.as_ref()[j]).sum::<f64>() / n)
+        .collect();
+    let mut c = DMatrix::zeros(p, p);
     for r in rows {
-        for a in 0..6 {
-            for b in 0..6 {
+        let r = r.as_ref();
+        for a in 0..p {
+            for b in 0..p {
                 c[(a, b)] += (r[a] - mean[a]) * (r[b] - mean[b]);
             }
         }
