@@ -7,10 +7,9 @@ mod common;
 
 use common::synthetic::{csv, noise_var, synthetic};
 use kinrepro::calibrate::Measurement;
-use kinrepro::calibrate::fit::observed;
+use kinrepro::calibrate::fit::{fit_at, observed};
 use kinrepro::calibrate::grid::{ModelGrid, StudySpec};
 use kinrepro::calibrate::joint::{JointModel, estimate};
-use kinrepro::calibrate::joint_fit::fit_at;
 use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED};
 use kinrepro::calibrate::params::{Param, with_values};
 use kinrepro::solve::Method;

@@ -225,6 +225,11 @@ mod tests {
 
     /// Rows of two independent DOFs with variances (0.04, 0.024): normal or uniform.
     fn samples(n: usize, uniform: bool) -> Vec<Vec<f64>> {
+        scaled_samples(n, uniform, &[0.2, 0.024f64.sqrt()])
+    }
+
+    /// Rows of independent DOFs with standard deviations `sd`: normal or uniform.
+    fn scaled_samples(n: usize, uniform: bool, sd: &[f64]) -> Vec<Vec<f64>> {
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(11);
         let mut unit = || {
             if uniform {
@@ -235,8 +240,59 @@ mod tests {
             }
         };
         (0..n)
-            .map(|_| vec![0.2 * unit(), 0.024f64.sqrt() * unit()])
+            .map(|_| sd.iter().map(|s| s * unit()).collect())
             .collect()
+    }
+
+    /// The spread alone on one DOF, G = 1, no noise, S = 0.09 from 40
+    /// cycles, as a cycles file and as a summary: the maximum is s^2 = S,
+    /// the Wilks ends solve 39 (r - ln r - 1) = chi^2_1(0.90), r = S / s^2,
+    /// the sandwich factor is 1 for normal and 2 / Var(u^2) = 2.5 for
+    /// uniform scatter (unit-variance u), and the model error of ln s from
+    /// N normal samples is sqrt(1 / (2 N)).
+    #[test]
+    fn one_parameter_closed_forms() {
+        let grid = ModelGrid::from_parts(vec![], vec![], vec![DMatrix::identity(1, 1)], 0.3);
+        for obs in [
+            Observed::Covariance {
+                s: DMatrix::from_element(1, 1, 0.09),
+                n: 40,
+            },
+            Observed::Sigmas {
+                sigma: vec![0.3],
+                cycles: vec![40],
+            },
+        ] {
+            let jm = JointModel {
+                obs: &obs,
+                grid: &grid,
+                params: vec![Param::Spread],
+                ranges: vec![(0.0, 1.0)],
+                spread_fixed: 0.0,
+                mu_fixed: 1.0,
+                noise_var: vec![0.0],
+            };
+            let (u_hat, l_max) = estimate(&jm);
+            let theta = jm.theta(&u_hat);
+            // Nelder-Mead stops where l is flat to 1e-12: s to about 1e-7.
+            assert!((theta[0] - 0.3).abs() < 1e-6, "{obs:?}: {theta:?}");
+            for dir in [-1.0, 1.0] {
+                let e = profile_end(&jm, 0, 1.0, &u_hat, l_max, dir);
+                let r = 0.09 / jm.theta(&e.point)[0].powi(2);
+                let d = 39.0 * (r - r.ln() - 1.0);
+                assert!((d - wilks_threshold()).abs() < 1e-6, "{obs:?} {dir}: {d}");
+            }
+            for (uniform, want) in [(false, 1.0), (true, 2.5)] {
+                let x = scaled_samples(200_000, uniform, &[0.3]);
+                let k = information(&jm, &theta, &x).unwrap().derived().k[0];
+                assert!((k / want - 1.0).abs() < 0.02, "uniform {uniform}: k {k}");
+            }
+            let nx = 20_000;
+            let x = scaled_samples(nx, false, &[0.3]);
+            let sd = information(&jm, &theta, &x).unwrap().derived().model_sd[0] / theta[0];
+            let rel = sd / (1.0 / (2.0 * nx as f64)).sqrt();
+            assert!((rel - 1.0).abs() < 0.03, "model sd ratio {rel}");
+        }
     }
 
     #[test]
