@@ -15,7 +15,7 @@ fn calibration(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let coupling =
         kinrepro::error::read_coupling(&root.join("scenes/02_maxwell_pins_steel.toml")).unwrap();
-    let m = Measurement::load(&root.join("docs/calibration/measured_02.csv")).unwrap();
+    let m = Measurement::load(&root.join("docs/calibration/measured_02.csv"), None).unwrap();
     let opts = CalibrateOptions {
         fit: vec!["spread".into()],
         noise: [None; 6],

@@ -11,8 +11,8 @@
 mod common;
 
 use kinrepro::assembly::Coupling;
-use kinrepro::calibrate::fit::{fit_at, observed};
 use kinrepro::calibrate::file::Parameter;
+use kinrepro::calibrate::fit::{fit_at, observed};
 use kinrepro::calibrate::grid::{ModelGrid, StudySpec};
 use kinrepro::calibrate::joint::{JointModel, estimate};
 use kinrepro::calibrate::likelihood::{GoodnessOfFit, goodness_of_fit};
@@ -136,11 +136,11 @@ fn recovery_coverage_of_the_spread_interval() {
     let (mut flagged, mut covered_summary) = (0, 0);
     for _ in 0..reps {
         let rows = synthetic(&c, TRUE_SPREAD, 50, &mut rng);
-        let m = Measurement::parse(&csv(&rows), "synthetic.csv").unwrap();
+        let m = Measurement::parse(&csv(&rows), "synthetic.csv", None).unwrap();
         let (f, gof) = model.fit(&c, &m);
         flagged += usize::from(!gof.ok);
         // The same cycles as a summary file (sigma per DOF, DOFs taken as independent).
-        let sm = Measurement::parse(&summary(&m), "summary.csv").unwrap();
+        let sm = Measurement::parse(&summary(&m), "summary.csv", None).unwrap();
         let (fs, _) = model.fit(&c, &sm);
         covered_summary += usize::from(fs.low <= TRUE_SPREAD && TRUE_SPREAD <= fs.high);
         assert!(f.low < f.estimate && f.estimate < f.high);
@@ -171,6 +171,7 @@ fn transfer_to_scenes_01_and_04_contains_direct_studies() {
     let m = Measurement::parse(
         &csv(&synthetic(&c02, TRUE_SPREAD, 50, &mut rng)),
         "syn02.csv",
+        None,
     )
     .unwrap();
     let opts = common::synthetic::calibrate_options(&["spread"]);
@@ -204,7 +205,7 @@ fn joint_transfer_to_scenes_01_and_04_contains_direct_studies() {
         50,
         &mut rng,
     );
-    let m = Measurement::parse(&csv(&rows), "syn02.csv").unwrap();
+    let m = Measurement::parse(&csv(&rows), "syn02.csv", None).unwrap();
     let opts = common::synthetic::calibrate_options(&["spread", "mu_static"]);
     let cal = calibrate(&c02, &m, &opts).unwrap();
     eprintln!("{:?}", cal.parameters);
@@ -270,12 +271,12 @@ fn misfit_sigma_z_three_times_sigma_x_is_flagged() {
         let m = r.iter().map(|x| x[j]).sum::<f64>() / r.len() as f64;
         (r.iter().map(|x| (x[j] - m).powi(2)).sum::<f64>() / (r.len() as f64 - 1.0)).sqrt()
     };
-    let good = Measurement::parse(&csv(&rows), "good.csv").unwrap();
+    let good = Measurement::parse(&csv(&rows), "good.csv", None).unwrap();
     let scale = 3.0 * sd(0, &rows) / sd(2, &rows);
     for r in &mut rows {
         r[2] *= scale;
     }
-    let bad = Measurement::parse(&csv(&rows), "bad.csv").unwrap();
+    let bad = Measurement::parse(&csv(&rows), "bad.csv", None).unwrap();
     let (g_good, g_bad) = (model.fit(&c, &good).1, model.fit(&c, &bad).1);
     eprintln!("p good {:?}, p bad {:?}", g_good.p_value, g_bad.p_value);
     assert!(g_good.ok, "data drawn from the model flagged: {g_good:?}");

@@ -86,7 +86,13 @@ pub fn calibrate(
     let direct = at_estimate.per_unit(&m.dofs);
     let phi_hat = jm.phi(&theta);
     let linearity = sigma_difference(&reference.at(&phi_hat), &direct);
-    let info = model_info(opts, s_ref, grid, linearity, sigma_difference(&g_hat, &direct));
+    let info = model_info(
+        opts,
+        s_ref,
+        grid,
+        linearity,
+        sigma_difference(&g_hat, &direct),
+    );
     let mut cal = skeleton(
         coupling,
         m,

@@ -93,7 +93,9 @@ pub fn information(m: &JointModel, theta: &[f64], x: &[Vec<f64>]) -> Option<Info
                 .iter()
                 .map(|r| {
                     let v = DVector::from_column_slice(r);
-                    w.iter().map(|wa| (v.transpose() * wa * &v)[(0, 0)]).collect()
+                    w.iter()
+                        .map(|wa| (v.transpose() * wa * &v)[(0, 0)])
+                        .collect()
                 })
                 .collect();
             let sx = covariance(&xs);

@@ -277,11 +277,7 @@ const BISECTIONS: usize = 30;
 /// start for the next point) or None outside. The crossing is located by
 /// bisection of the step; returns the last value inside, its state, and
 /// whether the walk reached `end` without leaving.
-fn boundary<S>(
-    start: (f64, S),
-    end: f64,
-    inside: impl Fn(f64, &S) -> Option<S>,
-) -> (f64, S, bool) {
+fn boundary<S>(start: (f64, S), end: f64, inside: impl Fn(f64, &S) -> Option<S>) -> (f64, S, bool) {
     let mut last = start;
     let span = end - last.0;
     let from = last.0;

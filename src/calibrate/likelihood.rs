@@ -148,9 +148,7 @@ pub fn goodness_of_fit(obs: &Observed, fitted: &DMatrix<f64>, q: usize) -> Goodn
         }
     };
     let p_value = match stat {
-        Some(x) if df > 0 => ChiSquared::new(df as f64)
-            .ok()
-            .map(|c| c.sf(x.max(0.0))),
+        Some(x) if df > 0 => ChiSquared::new(df as f64).ok().map(|c| c.sf(x.max(0.0))),
         _ => None,
     };
     let test = match (stat, df) {
