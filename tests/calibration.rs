@@ -13,12 +13,14 @@ mod common;
 use kinrepro::assembly::Coupling;
 use kinrepro::calibrate::file::Parameter;
 use kinrepro::calibrate::fit::{fit_at, observed};
-use kinrepro::calibrate::grid::{ModelGrid, StudySpec};
+use kinrepro::calibrate::grid::ModelGrid;
 use kinrepro::calibrate::joint::{JointModel, estimate};
 use kinrepro::calibrate::likelihood::{GoodnessOfFit, goodness_of_fit};
-use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED, model_options, with_spread};
+use kinrepro::calibrate::model::{
+    MODEL_SAMPLES, MODEL_SEED, StudySpec, model_options, with_spread,
+};
 use kinrepro::calibrate::params::Param;
-use kinrepro::calibrate::{Measurement, ModelStudy, calibrate, predict};
+use kinrepro::calibrate::{Measurement, calibrate, predict};
 use kinrepro::solve::Method;
 use kinrepro::study::runner::{evaluate_rows, run_variant};
 use rand::{Rng, SeedableRng};
@@ -107,8 +109,7 @@ impl FixedModel {
             method: Method::default(),
         };
         let grid = ModelGrid::build(&spec, &[], &[], S_REF).unwrap();
-        let study = ModelStudy::run(c, 0, S_REF, MODEL_SAMPLES, MODEL_SEED, Method::default());
-        let samples = study.unwrap().samples_of(&dofs);
+        let samples = spec.run(&with_spread(c, S_REF)).unwrap().samples_of(&dofs);
         FixedModel { grid, samples }
     }
 

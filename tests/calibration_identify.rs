@@ -6,8 +6,8 @@
 mod common;
 
 use common::synthetic::{calibrate_options, csv, synthetic};
-use kinrepro::calibrate::grid::{ModelGrid, StudySpec};
-use kinrepro::calibrate::model::MODEL_SEED;
+use kinrepro::calibrate::grid::ModelGrid;
+use kinrepro::calibrate::model::{MODEL_SEED, StudySpec};
 use kinrepro::calibrate::params::{Param, with_values};
 use kinrepro::calibrate::{Measurement, calibrate};
 use kinrepro::solve::Method;

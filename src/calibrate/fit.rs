@@ -24,11 +24,12 @@ pub use super::file::{
     CalibrateOptions, Calibration, Correlation, DofFit, ModelInfo, Parameter, dof_fits, noise_of,
     observed, point_index, skeleton,
 };
-use super::grid::{GridInfo, ModelGrid, StudySpec};
+use super::grid::{GridInfo, ModelGrid};
 use super::information::{Derived, information};
 use super::joint::{End, JointModel, estimate, profile_end, ray_end};
 use super::likelihood::{LEVEL, Observed, goodness_of_fit, wilks_threshold};
 use super::measurement::Measurement;
+use super::model::StudySpec;
 use super::params::{Param, parse_fit, with_values};
 use crate::assembly::Coupling;
 use crate::study::stats::quantile::normal_quantile;
