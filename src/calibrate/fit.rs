@@ -185,14 +185,7 @@ pub struct JointFit {
 pub fn fit_at(jm: &JointModel, u_hat: &[f64], l_max: f64, x: &[Vec<f64>]) -> JointFit {
     let q = jm.params.len();
     let theta = jm.theta(u_hat);
-    let derived = information(jm, &theta, x).map_or(
-        Derived {
-            k: vec![1.0; q],
-            model_sd: vec![0.0; q],
-            covariance: None,
-        },
-        |i| i.derived(),
-    );
+    let derived = information(jm, &theta, x).map_or(Derived::unadjusted(q), |i| i.derived());
     let (parameters, ends) = intervals(jm, u_hat, l_max, &derived);
     JointFit {
         region: region(jm, u_hat, l_max, &derived, &ends, &parameters),
@@ -256,27 +249,26 @@ fn intervals(
                 jm.theta(&e.point)[a]
             }
         };
-        let (mut low, mut high) = (value(&lo), value(&hi));
         let est = theta[a];
-        let h = z * d.model_sd[a];
-        if spread {
-            let hl = h / est;
-            if !lo.at_bound {
-                low = est * (-(est / low).ln().hypot(hl)).exp();
+        // The model error widens the interval in quadrature: on ln s for
+        // the spread (its model_error is the sd of ln s), linearly otherwise.
+        let (f, f_inv): (fn(f64) -> f64, fn(f64) -> f64) = match spread {
+            true => (f64::ln, f64::exp),
+            false => (|x| x, |x| x),
+        };
+        let model_error = d.model_sd[a] / if spread { est } else { 1.0 };
+        let widen = |end: &End, dir: f64| {
+            let v = value(end);
+            let h = (f(v) - f(est)).abs().hypot(z * model_error);
+            if end.at_bound {
+                v
+            } else {
+                f_inv(f(est) + dir * h)
             }
-            if !hi.at_bound {
-                high = (est * (high / est).ln().hypot(hl).exp()).min(r1);
-            }
-        } else {
-            if !lo.at_bound {
-                low = (est - (est - low).hypot(h)).max(r0);
-            }
-            if !hi.at_bound {
-                high = (est + (high - est).hypot(h)).min(r1);
-            }
-        }
+        };
+        let (low, high) = (widen(&lo, -1.0).max(r0), widen(&hi, 1.0).min(r1));
         // Widening by the model error may also reach a range end.
-        let low_at = lo.at_bound || (!spread && low <= r0);
+        let low_at = lo.at_bound || low <= r0;
         let high_at = hi.at_bound || high >= r1;
         out.push(Parameter {
             estimate: est,
@@ -285,14 +277,10 @@ fn intervals(
             level: LEVEL,
             method: method_text(*p, jm),
             sandwich_factor: d.k[a],
-            model_error: if spread {
-                d.model_sd[a] / est
-            } else {
-                d.model_sd[a]
-            },
+            model_error,
             low_at_bound: low_at,
             high_at_bound: high_at,
-            range: Some([if spread { 0.0 } else { r0 }, r1]),
+            range: Some([r0, r1]),
             determined: !low_at && !high_at,
         });
         ends.push((lo, hi));

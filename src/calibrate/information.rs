@@ -158,17 +158,25 @@ pub struct Derived {
     pub covariance: Option<DMatrix<f64>>,
 }
 
+impl Derived {
+    /// Without the information: k = 1 (the unadjusted, wider interval), no
+    /// model error, no correlation.
+    pub fn unadjusted(q: usize) -> Self {
+        Derived {
+            k: vec![1.0; q],
+            model_sd: vec![0.0; q],
+            covariance: None,
+        }
+    }
+}
+
 impl Information {
-    /// k_a = (H^-1)_aa / V_aa with V = H^-1 J H^-1 (1 where H is singular,
-    /// the unadjusted, wider interval); model sd_a = sqrt((H^-1 M H^-1)_aa).
+    /// k_a = (H^-1)_aa / V_aa with V = H^-1 J H^-1 (H singular:
+    /// [`Derived::unadjusted`]); model sd_a = sqrt((H^-1 M H^-1)_aa).
     pub fn derived(&self) -> Derived {
         let q = self.h.nrows();
         let Some(hi) = self.h.clone().try_inverse() else {
-            return Derived {
-                k: vec![1.0; q],
-                model_sd: vec![0.0; q],
-                covariance: None,
-            };
+            return Derived::unadjusted(q);
         };
         let v = &hi * &self.j * &hi;
         let vm = &hi * &self.m * &hi;
