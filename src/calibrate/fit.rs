@@ -80,7 +80,7 @@ pub fn calibrate(
     let at_estimate = spec.run(&with_values(coupling, &params, &theta))?;
     let fit = fit_at(&jm, &u_hat, l_max, &at_estimate.samples_of(&m.dofs));
     let fitted = jm.sigma(&theta).ok_or_else(|| singular(m))?;
-    let s_hat = fitted_spread(&params, &theta, f.spread);
+    let s_hat = jm.spread(&theta);
     let g_hat = (&fitted - DMatrix::from_diagonal(&DVector::from_column_slice(&noise_var)))
         / (s_hat * s_hat);
     let gof = goodness_of_fit(&obs, &fitted, params.len());
@@ -206,13 +206,6 @@ fn singular(m: &Measurement) -> CalibrateError {
     }
 }
 
-fn fitted_spread(params: &[Param], theta: &[f64], fixed: f64) -> f64 {
-    params
-        .iter()
-        .position(|p| *p == Param::Spread)
-        .map_or(fixed, |i| theta[i])
-}
-
 /// Largest relative difference of sigma between two model covariances per
 /// unit spread^2 (`b` the direct study's).
 fn sigma_difference(a: &DMatrix<f64>, b: &DMatrix<f64>) -> f64 {
@@ -252,10 +245,8 @@ fn intervals(
         let est = theta[a];
         // The model error widens the interval in quadrature: on ln s for
         // the spread (its model_error is the sd of ln s), linearly otherwise.
-        let (f, f_inv): (fn(f64) -> f64, fn(f64) -> f64) = match spread {
-            true => (f64::ln, f64::exp),
-            false => (|x| x, |x| x),
-        };
+        let f = |x: f64| if spread { x.ln() } else { x };
+        let f_inv = |x: f64| if spread { x.exp() } else { x };
         let model_error = d.model_sd[a] / if spread { est } else { 1.0 };
         let widen = |end: &End, dir: f64| {
             let v = value(end);

@@ -72,9 +72,7 @@ impl<'a> JointModel<'a> {
 
     /// Sigma(theta); None where theta is not admissible.
     pub fn sigma(&self, theta: &[f64]) -> Option<DMatrix<f64>> {
-        let s = self
-            .index(Param::Spread)
-            .map_or(self.spread_fixed, |i| theta[i]);
+        let s = self.spread(theta);
         let mu = self
             .index(Param::MuStatic)
             .map_or(self.mu_fixed, |i| theta[i]);
@@ -88,6 +86,11 @@ impl<'a> JointModel<'a> {
         ))
     }
 
+    /// The spread at theta (fitted or fixed).
+    pub fn spread(&self, theta: &[f64]) -> f64 {
+        (self.index(Param::Spread)).map_or(self.spread_fixed, |i| theta[i])
+    }
+
     /// The values of the grid parameters phi in theta.
     pub fn phi(&self, theta: &[f64]) -> Vec<f64> {
         self.grid
@@ -99,12 +102,10 @@ impl<'a> JointModel<'a> {
 
     /// l(theta), -inf where not admissible or singular.
     pub fn log_likelihood(&self, theta: &[f64]) -> f64 {
-        self.sigma(theta)
-            .and_then(|sg| {
-                // Sigma given whole: G = Sigma, s = 1, no extra noise.
-                log_likelihood(self.obs, &sg, &vec![0.0; sg.nrows()], 1.0)
-            })
-            .unwrap_or(f64::NEG_INFINITY)
+        let l = self
+            .sigma(theta)
+            .and_then(|sg| log_likelihood(self.obs, &sg));
+        l.unwrap_or(f64::NEG_INFINITY)
     }
 
     /// theta of the unit coordinates u (the spread on a log scale).

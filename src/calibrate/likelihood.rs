@@ -68,12 +68,12 @@ fn ln_det_inverse(m: &DMatrix<f64>) -> Option<(f64, DMatrix<f64>)> {
     Some((ln_det, ch.inverse()))
 }
 
-/// Log-likelihood of the observation at spread `s` (None: Sigma singular).
-pub fn log_likelihood(obs: &Observed, g: &DMatrix<f64>, noise_var: &[f64], s: f64) -> Option<f64> {
-    let sigma = model_covariance(g, noise_var, s);
+/// Log-likelihood of the observation under the covariance `sigma` (None:
+/// singular).
+pub fn log_likelihood(obs: &Observed, sigma: &DMatrix<f64>) -> Option<f64> {
     match obs {
         Observed::Covariance { s: sm, n } => {
-            let (ln_det, inv) = ln_det_inverse(&sigma)?;
+            let (ln_det, inv) = ln_det_inverse(sigma)?;
             let tr = (inv * sm).trace();
             Some(-0.5 * (*n as f64 - 1.0) * (ln_det + tr))
         }
