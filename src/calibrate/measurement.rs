@@ -74,7 +74,7 @@ impl Measurement {
                     metadata.push((k, v));
                 }
             } else if !line.is_empty() {
-                lines.push((i + 1, line));
+                lines.push((i + 1, raw));
             }
         }
         let Some(&(header_line, header)) = lines.first() else {

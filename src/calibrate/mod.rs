@@ -1,6 +1,6 @@
 //! Calibration of the friction spread on measured re-seating scatter, and
-//! prediction of other designs with the calibrated spread (issue 15; the
-//! paper's remedy: "the variation of the coefficient of friction in the
+//! prediction of other designs with the calibrated spread (the paper's
+//! remedy: "the variation of the coefficient of friction in the
 //! model can be refined based on measurement results").
 //!
 //! * [`measurement`]: the measured-data formats (docs/measurements.md).
