@@ -8,7 +8,9 @@ use kinrepro::calibrate::Measurement;
 use kinrepro::calibrate::predict::PREDICTION_METHOD;
 
 fn err(text: &str) -> String {
-    Measurement::parse(text, "m.csv").unwrap_err().to_string()
+    Measurement::parse(text, "m.csv", None)
+        .unwrap_err()
+        .to_string()
 }
 
 #[test]
@@ -97,6 +99,7 @@ fn units_convert_to_si() {
     let m = Measurement::parse(
         "# noise: x=2nm, phi_y=0.05urad\npoint,x_um,phi_y_urad\nc,0.001,0.1\nc,0.003,0.3\nc,0.002,0.2\n",
         "u.csv",
+        None,
     )
     .unwrap();
     assert_eq!(m.point.as_deref(), Some("c"));
@@ -112,6 +115,7 @@ fn units_convert_to_si() {
     let sm = Measurement::parse(
         "dof,unit,sigma,cycles\nz,um,0.004,30\nphi_z,nrad,150,30\n",
         "s.csv",
+        None,
     )
     .unwrap();
     assert_eq!(sm.dofs, vec![2, 5]);

@@ -6,8 +6,8 @@
 mod common;
 
 use common::synthetic::{calibrate_options, csv, synthetic};
-use kinrepro::calibrate::grid::{ModelGrid, StudySpec};
-use kinrepro::calibrate::model::MODEL_SEED;
+use kinrepro::calibrate::grid::ModelGrid;
+use kinrepro::calibrate::model::{MODEL_SEED, StudySpec};
 use kinrepro::calibrate::params::{Param, with_values};
 use kinrepro::calibrate::{Measurement, calibrate};
 use kinrepro::solve::Method;
@@ -67,7 +67,7 @@ fn support_compliance_beside_the_spread_is_flagged_not_determined() {
     let c = common::load("02_maxwell_pins_steel.toml");
     let truth = with_values(&c, &[Param::Spread], &[0.08]);
     let mut rng = ChaCha8Rng::seed_from_u64(152);
-    let m = Measurement::parse(&csv(&synthetic(&truth, 50, &mut rng)), "syn.csv").unwrap();
+    let m = Measurement::parse(&csv(&synthetic(&truth, 50, &mut rng)), "syn.csv", None).unwrap();
     let alone = calibrate(&c, &m, &calibrate_options(&["spread"])).unwrap();
     let joint = calibrate(
         &c,
@@ -120,7 +120,7 @@ fn joint_misfit_is_flagged() {
     let opts = calibrate_options(&["spread", "mu_static"]);
     let good = calibrate(
         &c,
-        &Measurement::parse(&csv(&rows), "good.csv").unwrap(),
+        &Measurement::parse(&csv(&rows), "good.csv", None).unwrap(),
         &opts,
     )
     .unwrap();
@@ -134,7 +134,7 @@ fn joint_misfit_is_flagged() {
     }
     let bad = calibrate(
         &c,
-        &Measurement::parse(&csv(&rows), "bad.csv").unwrap(),
+        &Measurement::parse(&csv(&rows), "bad.csv", None).unwrap(),
         &opts,
     )
     .unwrap();

@@ -7,11 +7,10 @@ mod common;
 
 use common::synthetic::{csv, noise_var, synthetic};
 use kinrepro::calibrate::Measurement;
-use kinrepro::calibrate::fit::observed;
-use kinrepro::calibrate::grid::{ModelGrid, StudySpec};
+use kinrepro::calibrate::fit::{fit_at, observed};
+use kinrepro::calibrate::grid::ModelGrid;
 use kinrepro::calibrate::joint::{JointModel, estimate};
-use kinrepro::calibrate::joint_fit::fit_at;
-use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED};
+use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED, StudySpec};
 use kinrepro::calibrate::params::{Param, with_values};
 use kinrepro::solve::Method;
 use rand::SeedableRng;
@@ -44,8 +43,12 @@ fn joint_spread_and_mu_static_intervals_cover_the_truth() {
     let reps = 100;
     let (mut covered, mut err, mut flagged) = ([0usize; 2], [0.0f64; 2], 0usize);
     for _ in 0..reps {
-        let m =
-            Measurement::parse(&csv(&synthetic(&truth_scene, 50, &mut rng)), "syn.csv").unwrap();
+        let m = Measurement::parse(
+            &csv(&synthetic(&truth_scene, 50, &mut rng)),
+            "syn.csv",
+            None,
+        )
+        .unwrap();
         let obs = observed(&m);
         let jm = JointModel::new(&obs, &grid, &params, &c, &noise_var());
         let (u_hat, l_max) = estimate(&jm);

@@ -1,8 +1,7 @@
 //! The calibration file (docs/measurements.md, schema
-//! [`CALIBRATION_SCHEMA_VERSION`]) and what the spread-alone fit
-//! ([`super::fit`]) and the joint fit ([`super::joint_fit`]) share: the
-//! options, the observation, the evaluation point, the sensor noise and the
-//! measured-against-fitted table.
+//! [`CALIBRATION_SCHEMA_VERSION`]) and the parts of it the fit
+//! ([`super::fit`]) fills in: the options, the observation, the evaluation
+//! point, the sensor noise and the measured-against-fitted table.
 
 use std::collections::BTreeMap;
 
@@ -106,8 +105,9 @@ pub struct ModelInfo {
     pub seed: u64,
     pub samples: usize,
     pub reference_spread: f64,
-    /// Largest relative change over the six DOFs of sigma / spread between
-    /// the reference study and the study at the estimate.
+    /// Largest relative change over the measured DOFs of sigma / spread
+    /// between the reference (the first model grid, at the reference
+    /// spread) and the direct study at the estimate.
     pub linearity: f64,
     /// The model grid over the fitted parameters other than the spread.
     #[serde(default)]

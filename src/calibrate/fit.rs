@@ -1,66 +1,40 @@
-//! `kinrepro calibrate`: fit the friction spread of a scene alone to a measured
-//! scatter (several parameters: `joint_fit`) and build the calibration file.
+//! `kinrepro calibrate --fit`: the fit of one or several parameters (the
+//! spread alone is the case of one parameter and a grid of no node
+//! parameters) and its calibration file.
 //!
-//! Steps: (1) the model covariance G per unit spread^2 from a Monte Carlo
-//! study at the scene's spread (the reference); (2) the maximum-likelihood
-//! spread under Sigma(s) = s^2 G + N (`likelihood`); (3) a second study at
-//! that estimate with the same design rows, G taken from it, and the fit
-//! repeated, so that the linear scaling is only used across the interval
-//! and not from the reference to the estimate; the change of G between the
-//! two studies is reported as `model.linearity`; (4) the goodness of fit.
+//! Steps: (1) the model grid ([`super::grid`]) over the fitted parameters
+//! other than the spread, at the scene's spread (or 0.1 mu0 if it is 0):
+//! the reference; (2) the maximum-likelihood estimate ([`super::joint`]);
+//! (3) with the spread fitted, the grid again at the estimated spread, and
+//! the estimate again, so that sigma ∝ spread spans only the interval;
+//! (4) a direct study at the estimate: the check of grid and linear law
+//! (`model.grid.check`), the change of sigma / spread from the reference
+//! (`model.linearity`) and the pose samples for the information; (5) per
+//! parameter the adjusted profile interval, widened in quadrature by the
+//! model study's error (on ln s for the spread, linearly for the others);
+//! (6) the region points for `predict`; (7) the goodness of fit with
+//! p(p + 1)/2 - q degrees of freedom.
 
 use std::collections::BTreeMap;
 
+use nalgebra::{DMatrix, DVector};
+
 use super::error::CalibrateError;
 pub use super::file::{
-    CALIBRATION_SCHEMA_VERSION, CalibrateOptions, Calibration, Correlation, DofFit,
-    GoodnessOfFitReport, ModelInfo, PARAMETERS, Parameter, READABLE_SCHEMA_VERSIONS, design_hash,
-    dof_fits, noise_of, observed, point_index, skeleton,
+    CalibrateOptions, Calibration, Correlation, DofFit, ModelInfo, Parameter, dof_fits, noise_of,
+    observed, point_index, skeleton,
 };
-use super::likelihood::{
-    SpreadFit, fit_spread, goodness_of_fit, model_covariance, model_error_sd, sandwich_factor,
-};
+use super::grid::{GridInfo, ModelGrid};
+use super::information::{Derived, information};
+use super::joint::{End, JointModel, estimate, profile_end, ray_end};
+use super::likelihood::{LEVEL, Observed, goodness_of_fit, wilks_threshold};
 use super::measurement::Measurement;
-use super::model::ModelStudy;
-use super::params::{Param, parse_fit};
+use super::model::StudySpec;
+use super::params::{Param, parse_fit, with_values};
 use crate::assembly::Coupling;
+use crate::study::stats::quantile::normal_quantile;
 
-/// Fit with the model covariance of `model`; an error if the model
-/// covariance plus noise is singular.
-pub fn fit_with(
-    m: &Measurement,
-    model: &ModelStudy,
-    noise_var: &[f64],
-    s_max: f64,
-) -> Result<SpreadFit, CalibrateError> {
-    let obs = observed(m);
-    let g = model.per_unit(&m.dofs);
-    let x = model.samples_of(&m.dofs);
-    let k = |s: f64| sandwich_factor(&obs, &g, noise_var, s, &x, model.spread);
-    let mut fit =
-        fit_spread(&obs, &g, noise_var, s_max, &k).ok_or_else(|| CalibrateError::Model {
-            file: m.file.clone(),
-            reason: "the model covariance of the measured DOFs plus the sensor noise is singular: \
-                 give the sensor noise of every measured DOF (--noise)"
-                .into(),
-        })?;
-    // Carry the model study's own sampling error: widen in quadrature on ln s.
-    fit.model_error = model_error_sd(&obs, &g, noise_var, fit.estimate, &x);
-    let h = Z_90 * fit.model_error;
-    if !fit.low_at_bound {
-        fit.low = fit.estimate * (-(fit.estimate / fit.low).ln().hypot(h)).exp();
-    }
-    if !fit.high_at_bound {
-        fit.high = (fit.estimate * (fit.high / fit.estimate).ln().hypot(h).exp()).min(s_max);
-    }
-    Ok(fit)
-}
-
-/// The two-sided 90 % normal quantile, 1.6449.
-const Z_90: f64 = 1.644_853_626_951_472_2;
-
-/// Calibrate the parameters `opts.fit` of the scene on measurement `m`:
-/// the spread alone here, several in [`super::joint_fit`].
+/// Calibrate the parameters `opts.fit` of the scene on measurement `m`.
 pub fn calibrate(
     coupling: &Coupling,
     m: &Measurement,
@@ -69,87 +43,341 @@ pub fn calibrate(
     let params = parse_fit(&opts.fit)?;
     let point_name = opts.point.as_deref().or(m.point.as_deref());
     let point = point_index(coupling, point_name, &m.file)?;
-    if params != [Param::Spread] {
-        return super::joint_fit::calibrate_joint(coupling, m, opts, &params, point);
+    let f = coupling.scene.friction;
+    let fit_spread = params.contains(&Param::Spread);
+    if !fit_spread && f.spread == 0.0 {
+        return Err(CalibrateError::Model {
+            file: m.file.clone(),
+            reason: "the scene's friction spread is 0, so the model has no scatter: \
+                     fit the spread too (--fit spread,...)"
+                .into(),
+        });
     }
     let noise = noise_of(m, opts);
     let noise_var: Vec<f64> = noise.iter().map(|v| v * v).collect();
-    let f = &coupling.scene.friction;
-    let s_max = f.mu_static;
+    let obs = observed(m);
+    let spec = StudySpec {
+        coupling,
+        point,
+        dofs: &m.dofs,
+        samples: opts.samples,
+        seed: opts.seed,
+        method: opts.method,
+    };
     let s_ref = if f.spread > 0.0 {
         f.spread
     } else {
         0.1 * f.mu_static
     };
-    let run = |s| ModelStudy::run(coupling, point, s, opts.samples, opts.seed, opts.method);
-    let reference = run(s_ref)?;
-    let first = fit_with(m, &reference, &noise_var, s_max)?;
-    let at_estimate = run(first.estimate)?;
-    let fit = fit_with(m, &at_estimate, &noise_var, s_max)?;
-    let g = at_estimate.per_unit(&m.dofs);
-    let fitted = model_covariance(&g, &noise_var, fit.estimate);
-    let gof = goodness_of_fit(&observed(m), &fitted);
-    let model = ModelInfo {
+    let (reference, grid) = two_pass_grid(&spec, &obs, &params, &noise_var, s_ref)?;
+    let grid = grid.as_ref().unwrap_or(&reference);
+    let jm = JointModel::new(&obs, grid, &params, coupling, &noise_var);
+    let (u_hat, l_max) = estimate(&jm);
+    if !l_max.is_finite() {
+        return Err(singular(m));
+    }
+    let theta = jm.theta(&u_hat);
+    let at_estimate = spec.run(&with_values(coupling, &params, &theta))?;
+    let fit = fit_at(&jm, &u_hat, l_max, &at_estimate.samples_of(&m.dofs));
+    let fitted = jm.sigma(&theta).ok_or_else(|| singular(m))?;
+    let s_hat = jm.spread(&theta);
+    let g_hat = (&fitted - DMatrix::from_diagonal(&DVector::from_column_slice(&noise_var)))
+        / (s_hat * s_hat);
+    let gof = goodness_of_fit(&obs, &fitted, params.len());
+    let direct = at_estimate.per_unit(&m.dofs);
+    let phi_hat = jm.phi(&theta);
+    let linearity = sigma_difference(&reference.at(&phi_hat), &direct);
+    let info = model_info(
+        opts,
+        s_ref,
+        grid,
+        linearity,
+        sigma_difference(&g_hat, &direct),
+    );
+    let mut cal = skeleton(
+        coupling,
+        m,
+        point,
+        gof,
+        info,
+        at_estimate.fingerprint.clone(),
+    );
+    cal.dofs = dof_fits(m, &noise, &fitted, &g_hat, s_hat);
+    let named = |t: &Vec<f64>| params.iter().map(|p| p.name().to_string()).zip(t.clone());
+    cal.region = fit.region.iter().map(|t| named(t).collect()).collect();
+    cal.parameters = params
+        .iter()
+        .map(|p| p.name().to_string())
+        .zip(fit.parameters)
+        .collect();
+    cal.correlation = fit.correlation;
+    cal.fixed = fixed(coupling, &params);
+    Ok(cal)
+}
+
+/// The model grid over the fitted parameters other than the spread at
+/// `s_ref` (the reference), and with the spread fitted the grid again at
+/// the first estimate of the spread.
+fn two_pass_grid(
+    spec: &StudySpec,
+    obs: &Observed,
+    params: &[Param],
+    noise_var: &[f64],
+    s_ref: f64,
+) -> Result<(ModelGrid, Option<ModelGrid>), CalibrateError> {
+    let grid_params: Vec<Param> = params
+        .iter()
+        .copied()
+        .filter(|p| *p != Param::Spread)
+        .collect();
+    let fit_mu = params.contains(&Param::MuStatic);
+    let ranges: Vec<(f64, f64)> = grid_params
+        .iter()
+        .map(|p| p.range(spec.coupling, fit_mu))
+        .collect();
+    let reference = ModelGrid::build(spec, &grid_params, &ranges, s_ref)?;
+    if !params.contains(&Param::Spread) {
+        return Ok((reference, None));
+    }
+    let jm = JointModel::new(obs, &reference, params, spec.coupling, noise_var);
+    let s1 = jm.theta(&estimate(&jm).0)[0];
+    let grid = ModelGrid::build(spec, &grid_params, &ranges, s1)?;
+    Ok((reference, Some(grid)))
+}
+
+/// The `model` block: the grid if there are grid parameters.
+fn model_info(
+    opts: &CalibrateOptions,
+    s_ref: f64,
+    grid: &ModelGrid,
+    linearity: f64,
+    check: f64,
+) -> ModelInfo {
+    ModelInfo {
         solver: opts.method.name().into(),
         sampler: "mc".into(),
         seed: opts.seed,
         samples: opts.samples,
         reference_spread: s_ref,
-        linearity: linearity(&reference, &at_estimate),
-        grid: None,
-    };
-    let mut cal = skeleton(coupling, m, point, gof, model, at_estimate.fingerprint);
-    cal.dofs = dof_fits(m, &noise, &fitted, &g, fit.estimate);
-    let mut parameter = parameter(&fit);
-    parameter.range = Some([0.0, s_max]);
-    cal.region = [(fit.low > 0.0).then_some(fit.low), Some(fit.high)]
-        .into_iter()
-        .flatten()
-        .map(|v| BTreeMap::from([("spread".to_string(), v)]))
-        .collect();
-    cal.parameters = BTreeMap::from([("spread".to_string(), parameter)]);
-    cal.correlation = Some(Correlation {
-        parameters: vec!["spread".into()],
-        matrix: vec![vec![1.0]],
-    });
-    cal.fixed = BTreeMap::from([
-        ("mu_static".to_string(), f.mu_static),
-        ("dynamic_ratio".to_string(), f.dynamic_ratio),
-        (
-            "support_compliance".to_string(),
-            Param::SupportCompliance.value(coupling),
-        ),
-    ]);
-    Ok(cal)
+        linearity,
+        grid: (!grid.params.is_empty()).then(|| GridInfo {
+            parameters: grid.params.iter().map(|p| p.name().to_string()).collect(),
+            nodes: grid.nodes.clone(),
+            spread: grid.spread,
+            check,
+        }),
+    }
 }
 
-/// Largest relative change of sigma / spread over the six DOFs between two model studies.
-fn linearity(a: &ModelStudy, b: &ModelStudy) -> f64 {
-    (0..6)
+/// The fit at the estimate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct JointFit {
+    /// Per fitted parameter (in the model's order): estimate and interval.
+    pub parameters: Vec<Parameter>,
+    /// The region points (parameter values in the model's order).
+    pub region: Vec<Vec<f64>>,
+    pub correlation: Option<Correlation>,
+}
+
+/// Intervals, correlation and region points at the estimate `u_hat` (unit
+/// coordinates, l_max its log-likelihood), `x` the pose samples of the
+/// measured DOFs from a model study at the estimate.
+pub fn fit_at(jm: &JointModel, u_hat: &[f64], l_max: f64, x: &[Vec<f64>]) -> JointFit {
+    let q = jm.params.len();
+    let theta = jm.theta(u_hat);
+    let derived = information(jm, &theta, x).map_or(Derived::unadjusted(q), |i| i.derived());
+    let (parameters, ends) = intervals(jm, u_hat, l_max, &derived);
+    JointFit {
+        region: region(jm, u_hat, l_max, &derived, &ends, &parameters),
+        parameters,
+        correlation: derived
+            .covariance
+            .as_ref()
+            .map(|v| correlation(&jm.params, v)),
+    }
+}
+
+fn singular(m: &Measurement) -> CalibrateError {
+    CalibrateError::Model {
+        file: m.file.clone(),
+        reason: "the model covariance of the measured DOFs plus the sensor noise is singular \
+                 everywhere in the searched range: give the sensor noise of every measured DOF (--noise)"
+            .into(),
+    }
+}
+
+/// Largest relative difference of sigma between two model covariances per
+/// unit spread^2 (`b` the direct study's).
+fn sigma_difference(a: &DMatrix<f64>, b: &DMatrix<f64>) -> f64 {
+    (0..a.nrows())
         .map(|j| {
-            let x = a.cov[(j, j)].sqrt() / a.spread;
-            let y = b.cov[(j, j)].sqrt() / b.spread;
-            if x > 0.0 { (y / x - 1.0).abs() } else { 0.0 }
+            let (x, y) = (a[(j, j)].sqrt(), b[(j, j)].sqrt());
+            if y > 0.0 { (x / y - 1.0).abs() } else { 0.0 }
         })
         .fold(0.0, f64::max)
 }
 
-/// The spread's entry of `parameters`.
-fn parameter(fit: &SpreadFit) -> Parameter {
-    Parameter {
-        estimate: fit.estimate,
-        low: fit.low,
-        high: fit.high,
-        level: fit.level,
-        method: "adjusted profile likelihood (k 2 (l_max - l) <= chi^2_1(0.90) = 2.7055, \
-                 k the sandwich factor), widened in quadrature on ln s by the model study's \
-                 sampling error"
-            .into(),
-        sandwich_factor: fit.sandwich,
-        model_error: fit.model_error,
-        low_at_bound: fit.low_at_bound,
-        high_at_bound: fit.high_at_bound,
-        range: None,
-        determined: !fit.low_at_bound && !fit.high_at_bound,
+/// The profile interval of every parameter, widened by the model error,
+/// and the profile ends (low, high) per parameter.
+fn intervals(
+    jm: &JointModel,
+    u_hat: &[f64],
+    l_max: f64,
+    d: &Derived,
+) -> (Vec<Parameter>, Vec<(End, End)>) {
+    let theta = jm.theta(u_hat);
+    // The two-sided normal quantile of the level (1.645 at 90 %).
+    let z = normal_quantile(0.5 + 0.5 * LEVEL).expect("level in (0, 1)");
+    let mut ends = Vec::new();
+    let mut out = Vec::new();
+    for (a, p) in jm.params.iter().enumerate() {
+        let lo = profile_end(jm, a, d.k[a], u_hat, l_max, -1.0);
+        let hi = profile_end(jm, a, d.k[a], u_hat, l_max, 1.0);
+        let (r0, r1) = jm.ranges[a];
+        let spread = *p == Param::Spread;
+        let value = |e: &End| {
+            if spread && e.at_bound && e.u == 0.0 {
+                0.0
+            } else {
+                jm.theta(&e.point)[a]
+            }
+        };
+        let est = theta[a];
+        // The model error widens the interval in quadrature: on ln s for
+        // the spread (its model_error is the sd of ln s), linearly otherwise.
+        let f = |x: f64| if spread { x.ln() } else { x };
+        let f_inv = |x: f64| if spread { x.exp() } else { x };
+        let model_error = d.model_sd[a] / if spread { est } else { 1.0 };
+        let widen = |end: &End, dir: f64| {
+            let v = value(end);
+            let h = (f(v) - f(est)).abs().hypot(z * model_error);
+            if end.at_bound {
+                v
+            } else {
+                f_inv(f(est) + dir * h)
+            }
+        };
+        let (low, high) = (widen(&lo, -1.0).max(r0), widen(&hi, 1.0).min(r1));
+        // Widening by the model error may also reach a range end.
+        let low_at = lo.at_bound || low <= r0;
+        let high_at = hi.at_bound || high >= r1;
+        out.push(Parameter {
+            estimate: est,
+            low,
+            high,
+            level: LEVEL,
+            method: method_text(*p, jm),
+            sandwich_factor: d.k[a],
+            model_error,
+            low_at_bound: low_at,
+            high_at_bound: high_at,
+            range: Some([r0, r1]),
+            determined: !low_at && !high_at,
+        });
+        ends.push((lo, hi));
     }
+    (out, ends)
+}
+
+/// How parameter `p`'s interval was found.
+fn method_text(p: Param, jm: &JointModel) -> String {
+    let chi2 = wilks_threshold();
+    let rule = if jm.params.len() > 1 {
+        format!(
+            "the other fitted parameters maximised at each point; k 2 (l_max - l_p) <= \
+             chi^2_1(0.90) = {chi2:.4}, k the sandwich factor of this parameter"
+        )
+    } else {
+        format!("k 2 (l_max - l) <= chi^2_1(0.90) = {chi2:.4}, k the sandwich factor")
+    };
+    let scale = if p == Param::Spread {
+        "on ln s"
+    } else {
+        "linearly"
+    };
+    let grid = if jm.grid.params.is_empty() {
+        ""
+    } else {
+        "; model covariance interpolated on a common-random-number grid"
+    };
+    format!(
+        "adjusted profile likelihood ({rule}), widened in quadrature {scale} by the model \
+         study's sampling error{grid}"
+    )
+}
+
+/// The region points: each profile end (the other parameters at their
+/// profile maximum, the parameter itself at its interval's end, so that the
+/// model error's widening is carried) and, for several parameters, both
+/// ends of each principal axis of the sandwich covariance (in unit
+/// coordinates) where they leave the region min_a k_a 2 (l_max - l) <=
+/// chi^2_1(0.90) or the searched box. For one parameter that axis is the
+/// parameter itself, whose ends are the interval's.
+fn region(
+    jm: &JointModel,
+    u_hat: &[f64],
+    l_max: f64,
+    d: &Derived,
+    ends: &[(End, End)],
+    parameters: &[Parameter],
+) -> Vec<Vec<f64>> {
+    let mut pts: Vec<Vec<f64>> = Vec::new();
+    for (a, ((lo, hi), p)) in ends.iter().zip(parameters).enumerate() {
+        for (e, v) in [(lo, p.low), (hi, p.high)] {
+            let mut t = jm.theta(&e.point);
+            t[a] = v;
+            pts.push(t);
+        }
+    }
+    let k = d.k.iter().copied().fold(f64::INFINITY, f64::min);
+    let Some(v) = d.covariance.as_ref().filter(|_| jm.params.len() > 1) else {
+        return pts;
+    };
+    let theta = jm.theta(u_hat);
+    // du/dtheta per parameter (the spread on a log scale).
+    let jac: Vec<f64> = (0..theta.len())
+        .map(|a| {
+            let h = 1e-6 * jm.ranges[a].1;
+            (jm.unit(a, theta[a] + h) - jm.unit(a, theta[a] - h)) / (2.0 * h)
+        })
+        .collect();
+    let vu = DMatrix::from_fn(v.nrows(), v.ncols(), |a, b| jac[a] * v[(a, b)] * jac[b]);
+    let eig = vu.symmetric_eigen();
+    for c in 0..eig.eigenvectors.ncols() {
+        let e: Vec<f64> = eig.eigenvectors.column(c).iter().copied().collect();
+        if e.iter().all(|x| x.is_finite()) {
+            let neg: Vec<f64> = e.iter().map(|x| -x).collect();
+            pts.push(jm.theta(&ray_end(jm, u_hat, &e, k, l_max)));
+            pts.push(jm.theta(&ray_end(jm, u_hat, &neg, k, l_max)));
+        }
+    }
+    pts
+}
+
+fn correlation(params: &[Param], v: &DMatrix<f64>) -> Correlation {
+    let q = params.len();
+    Correlation {
+        parameters: params.iter().map(|p| p.name().to_string()).collect(),
+        matrix: (0..q)
+            .map(|a| {
+                (0..q)
+                    .map(|b| v[(a, b)] / (v[(a, a)] * v[(b, b)]).sqrt())
+                    .collect()
+            })
+            .collect(),
+    }
+}
+
+/// The parameters not fitted, at the scene's values.
+fn fixed(coupling: &Coupling, params: &[Param]) -> BTreeMap<String, f64> {
+    [
+        Param::Spread,
+        Param::MuStatic,
+        Param::DynamicRatio,
+        Param::SupportCompliance,
+    ]
+    .into_iter()
+    .filter(|p| !params.contains(p))
+    .map(|p| (p.name().to_string(), p.value(coupling)))
+    .collect()
 }

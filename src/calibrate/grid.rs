@@ -6,43 +6,22 @@
 //! G from node to node carries little sampling noise; between the nodes G
 //! is interpolated entry by entry with Catmull-Rom cubics (exact for
 //! quadratics; in the end intervals the missing outer node is the quadratic
-//! extrapolation x_{-1} = 3 x_0 - 3 x_1 + x_2).
+//! extrapolation x_{-1} = 3 x_0 - 3 x_1 + x_2). With no grid parameter (the
+//! spread alone) the grid is one study.
 //!
-//! Each node's study runs at spread s_node = min(s_g, mu_node / 2) and G =
-//! C / s_node^2 (sigma close to linear in the spread, within 1 % while
-//! spread <= 0.3 mu0; the calibration re-runs the grid at the first
-//! estimate, so the linear law spans only the interval). The interpolation
-//! and the linear law together are checked against a direct study at the
-//! final estimate (`GridInfo::check`).
+//! Each node's study runs at spread s_g and G = C / s_g^2 (sigma close to
+//! linear in the spread, within 1 % while spread <= 0.3 mu0; the
+//! calibration re-runs the grid at the first estimate, so the linear law
+//! spans only the interval). Where mu_static is a grid parameter, a node
+//! runs at min(s_g, mu_node / 2), so that the low-mu nodes stay where the
+//! linear law holds. The interpolation and the linear law together are
+//! checked against a direct study at the final estimate (`GridInfo::check`).
 
 use nalgebra::DMatrix;
 
 use super::error::CalibrateError;
-use super::model::ModelStudy;
+use super::model::StudySpec;
 use super::params::{Param, with_values};
-use crate::assembly::Coupling;
-use crate::solve::Method;
-
-/// What every model study of a calibration shares.
-#[derive(Debug, Clone, Copy)]
-pub struct StudySpec<'a> {
-    pub coupling: &'a Coupling,
-    /// Index of the measured evaluation point.
-    pub point: usize,
-    /// The measured DOFs.
-    pub dofs: &'a [usize],
-    pub samples: usize,
-    pub seed: u64,
-    pub method: Method,
-}
-
-impl StudySpec<'_> {
-    /// The model study of `c` (a variant of the scene) at its own spread.
-    pub fn run(&self, c: &Coupling) -> Result<ModelStudy, CalibrateError> {
-        let s = c.scene.friction.spread;
-        ModelStudy::run(c, self.point, s, self.samples, self.seed, self.method)
-    }
-}
 
 /// Nodes per parameter for 1, 2 and 3 grid parameters.
 pub const NODES: [usize; 3] = [9, 6, 4];
@@ -65,7 +44,8 @@ pub struct ModelGrid {
 pub struct GridInfo {
     pub parameters: Vec<String>,
     pub nodes: Vec<Vec<f64>>,
-    /// The spread the node studies ran at (capped at mu_static / 2 per node).
+    /// The spread the node studies ran at (capped at mu_static / 2 per node
+    /// where mu_static is a grid parameter).
     pub spread: f64,
     /// Largest relative difference, over the measured DOFs, between sigma
     /// from the interpolated grid (scaled by s^2) and sigma of a direct
@@ -81,7 +61,8 @@ impl ModelGrid {
         ranges: &[(f64, f64)],
         spread: f64,
     ) -> Result<Self, CalibrateError> {
-        let k = NODES[params.len() - 1];
+        let k = params.len().checked_sub(1).map_or(1, |i| NODES[i]);
+        let cap = params.contains(&Param::MuStatic);
         let nodes: Vec<Vec<f64>> = ranges
             .iter()
             .map(|&(a, b)| {
@@ -92,10 +73,12 @@ impl ModelGrid {
             .collect();
         let mut g = Vec::new();
         for flat in 0..k.pow(params.len() as u32) {
-            let values = node_values(&nodes, flat);
+            let values: Vec<f64> = (node_indices(nodes.len(), k, flat).iter().zip(&nodes))
+                .map(|(&i, n)| n[i])
+                .collect();
             let mut c = with_values(spec.coupling, params, &values);
             let mu = c.scene.friction.mu_static;
-            let s = spread.min(0.5 * mu);
+            let s = if cap { spread.min(0.5 * mu) } else { spread };
             Param::Spread.set(&mut c, s);
             g.push(spec.run(&c)?.per_unit(spec.dofs));
         }
@@ -123,64 +106,45 @@ impl ModelGrid {
         }
     }
 
-    /// G at the grid-parameter values `phi` (interpolated).
+    /// G at the grid-parameter values `phi` (interpolated): the sum over
+    /// the nodes of G times the product of the per-parameter weights.
     pub fn at(&self, phi: &[f64]) -> DMatrix<f64> {
-        let per_dim: Vec<Vec<(usize, f64)>> = self
-            .nodes
-            .iter()
-            .zip(phi)
+        let w: Vec<Vec<f64>> = (self.nodes.iter().zip(phi))
             .map(|(n, &v)| weights(n, v))
             .collect();
-        let k = self.nodes[0].len();
         let p = self.g[0].nrows();
         let mut out = DMatrix::zeros(p, p);
-        let mut idx = vec![0usize; per_dim.len()];
-        loop {
-            let mut w = 1.0;
-            let mut flat = 0;
-            for (d, &i) in idx.iter().enumerate() {
-                let (node, wd) = per_dim[d][i];
-                w *= wd;
-                flat = flat * k + node;
-            }
-            if w != 0.0 {
-                out += &self.g[flat] * w;
-            }
-            // Next index combination.
-            let mut d = per_dim.len();
-            loop {
-                if d == 0 {
-                    return out;
-                }
-                d -= 1;
-                idx[d] += 1;
-                if idx[d] < per_dim[d].len() {
-                    break;
-                }
-                idx[d] = 0;
+        for (flat, g) in self.g.iter().enumerate() {
+            let idx = node_indices(self.nodes.len(), w.first().map_or(1, Vec::len), flat);
+            let wf: f64 = idx.iter().zip(&w).map(|(&i, wd)| wd[i]).product();
+            if wf != 0.0 {
+                out += g * wf;
             }
         }
+        out
     }
 }
 
-/// The parameter values of node number `flat` (last parameter fastest).
-fn node_values(nodes: &[Vec<f64>], mut flat: usize) -> Vec<f64> {
-    let k = nodes[0].len();
-    let mut v = vec![0.0; nodes.len()];
-    for d in (0..nodes.len()).rev() {
-        v[d] = nodes[d][flat % k];
+/// The node index per parameter of node number `flat` (`d` parameters of
+/// `k` nodes each, the last parameter fastest).
+fn node_indices(d: usize, k: usize, mut flat: usize) -> Vec<usize> {
+    let mut idx = vec![0; d];
+    for i in idx.iter_mut().rev() {
+        *i = flat % k;
         flat /= k;
     }
-    v
+    idx
 }
 
 /// Catmull-Rom weights of the nodes for the value `v` (clamped to the
-/// nodes' range): (node index, weight), the weights summing to 1.
-pub fn weights(nodes: &[f64], v: f64) -> Vec<(usize, f64)> {
+/// nodes' range), one per node, summing to 1.
+pub fn weights(nodes: &[f64], v: f64) -> Vec<f64> {
     let k = nodes.len();
     let h = (nodes[k - 1] - nodes[0]) / (k - 1) as f64;
     if h <= 0.0 {
-        return vec![(0, 1.0)];
+        let mut w = vec![0.0; k];
+        w[0] = 1.0;
+        return w;
     }
     let x = ((v - nodes[0]) / h).clamp(0.0, (k - 1) as f64);
     let i = (x.floor() as usize).min(k - 2);
@@ -209,10 +173,7 @@ pub fn weights(nodes: &[f64], v: f64) -> Vec<(usize, f64)> {
             acc[n as usize] += wj;
         }
     }
-    acc.into_iter()
-        .enumerate()
-        .filter(|(_, w)| *w != 0.0)
-        .collect()
+    acc
 }
 
 #[cfg(test)]
@@ -227,8 +188,8 @@ mod tests {
         let f = |x: f64| 2.0 - 3.0 * x + 5.0 * x * x;
         for v in [0.1, 0.13, 0.2, 0.5, 0.77, 0.8] {
             let w = weights(&nodes, v);
-            let sum: f64 = w.iter().map(|(_, w)| w).sum();
-            let interp: f64 = w.iter().map(|&(i, w)| w * f(nodes[i])).sum();
+            let sum: f64 = w.iter().sum();
+            let interp: f64 = w.iter().zip(&nodes).map(|(w, &x)| w * f(x)).sum();
             assert!((sum - 1.0).abs() < 1e-12);
             assert!((interp - f(v)).abs() < 1e-12, "{v}: {interp} vs {}", f(v));
         }

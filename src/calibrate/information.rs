@@ -5,12 +5,10 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::joint::JointModel;
+use super::joint::{JointModel, S_MIN_REL};
 use super::likelihood::Observed;
+use super::model::covariance;
 use super::params::Param;
-
-/// Relative step of the spread's finite differences (as its search floor).
-const S_MIN_REL: f64 = 1e-4;
 
 /// The information matrices at theta: H (what the Wishart / chi-square law
 /// assumes), J (the true variance of the score, with the pose's fourth
@@ -90,9 +88,18 @@ pub fn information(m: &JointModel, theta: &[f64], x: &[Vec<f64>]) -> Option<Info
     let nv = DMatrix::from_diagonal(&DVector::from_column_slice(&m.noise_var));
     let (j, mm) = match m.obs {
         Observed::Covariance { n, .. } => {
-            let forms: Vec<Vec<f64>> = w.iter().map(|wa| quadratic_forms(&xs, wa)).collect();
-            let sx = sample_cov(&xs);
-            let c = DMatrix::from_fn(q, q, |a, b| covariance(&forms[a], &forms[b]));
+            // Per sample the quadratic forms x' W_a x of every parameter.
+            let forms: Vec<Vec<f64>> = xs
+                .iter()
+                .map(|r| {
+                    let v = DVector::from_column_slice(r);
+                    w.iter()
+                        .map(|wa| (v.transpose() * wa * &v)[(0, 0)])
+                        .collect()
+                })
+                .collect();
+            let sx = covariance(&xs);
+            let c = covariance(&forms);
             let noise = DMatrix::from_fn(q, q, |a, b| {
                 4.0 * (&w[a] * &nv * &w[b] * &sx).trace()
                     + 2.0 * (&w[a] * &nv * &w[b] * &nv).trace()
@@ -100,11 +107,12 @@ pub fn information(m: &JointModel, theta: &[f64], x: &[Vec<f64>]) -> Option<Info
             ((&c + noise) / (*n as f64 - 1.0), c / nx)
         }
         Observed::Sigmas { cycles, .. } => {
-            let sq: Vec<Vec<f64>> = (0..p)
-                .map(|u| xs.iter().map(|r| r[u] * r[u]).collect())
+            let sq: Vec<Vec<f64>> = xs
+                .iter()
+                .map(|r| r.iter().map(|v| v * v).collect())
                 .collect();
-            let c = DMatrix::from_fn(p, p, |u, v| covariance(&sq[u], &sq[v]));
-            let mean = |u: usize| sq[u].iter().sum::<f64>() / nx;
+            let c = covariance(&sq);
+            let mean = |u: usize| sq.iter().map(|r| r[u]).sum::<f64>() / nx;
             let cy = DMatrix::from_fn(p, p, |u, v| {
                 let extra = if u == v {
                     4.0 * mean(u) * m.noise_var[u] + 2.0 * m.noise_var[u].powi(2)
@@ -140,34 +148,6 @@ fn centred(x: &[Vec<f64>]) -> Vec<Vec<f64>> {
         .collect()
 }
 
-fn quadratic_forms(xs: &[Vec<f64>], a: &DMatrix<f64>) -> Vec<f64> {
-    xs.iter()
-        .map(|r| {
-            let v = DVector::from_column_slice(r);
-            (v.transpose() * a * &v)[(0, 0)]
-        })
-        .collect()
-}
-
-fn sample_cov(xs: &[Vec<f64>]) -> DMatrix<f64> {
-    let p = xs.first().map_or(0, Vec::len);
-    let n = xs.len() as f64;
-    DMatrix::from_fn(p, p, |a, b| {
-        xs.iter().map(|r| r[a] * r[b]).sum::<f64>() / (n - 1.0)
-    })
-}
-
-/// Sample covariance (divisor n - 1) of two equally long series.
-fn covariance(a: &[f64], b: &[f64]) -> f64 {
-    let n = a.len() as f64;
-    let (ma, mb) = (a.iter().sum::<f64>() / n, b.iter().sum::<f64>() / n);
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - ma) * (y - mb))
-        .sum::<f64>()
-        / (n - 1.0)
-}
-
 /// What the information gives per parameter: the sandwich factor k_a, the
 /// standard deviation of the estimate due to the model study, and the
 /// correlation of the estimates (from H^-1 J H^-1).
@@ -178,17 +158,25 @@ pub struct Derived {
     pub covariance: Option<DMatrix<f64>>,
 }
 
+impl Derived {
+    /// Without the information: k = 1 (the unadjusted, wider interval), no
+    /// model error, no correlation.
+    pub fn unadjusted(q: usize) -> Self {
+        Derived {
+            k: vec![1.0; q],
+            model_sd: vec![0.0; q],
+            covariance: None,
+        }
+    }
+}
+
 impl Information {
-    /// k_a = (H^-1)_aa / V_aa with V = H^-1 J H^-1 (1 where H is singular,
-    /// the unadjusted, wider interval); model sd_a = sqrt((H^-1 M H^-1)_aa).
+    /// k_a = (H^-1)_aa / V_aa with V = H^-1 J H^-1 (H singular:
+    /// [`Derived::unadjusted`]); model sd_a = sqrt((H^-1 M H^-1)_aa).
     pub fn derived(&self) -> Derived {
         let q = self.h.nrows();
         let Some(hi) = self.h.clone().try_inverse() else {
-            return Derived {
-                k: vec![1.0; q],
-                model_sd: vec![0.0; q],
-                covariance: None,
-            };
+            return Derived::unadjusted(q);
         };
         let v = &hi * &self.j * &hi;
         let vm = &hi * &self.m * &hi;
@@ -214,9 +202,9 @@ impl Information {
 
 #[cfg(test)]
 mod tests {
-    use super::super::chi2::CHI2_1_90;
     use super::super::grid::ModelGrid;
     use super::super::joint::{estimate, profile_end};
+    use super::super::likelihood::wilks_threshold;
     use super::*;
     use rand::{Rng, SeedableRng};
 
@@ -247,6 +235,11 @@ mod tests {
 
     /// Rows of two independent DOFs with variances (0.04, 0.024): normal or uniform.
     fn samples(n: usize, uniform: bool) -> Vec<Vec<f64>> {
+        scaled_samples(n, uniform, &[0.2, 0.024f64.sqrt()])
+    }
+
+    /// Rows of independent DOFs with standard deviations `sd`: normal or uniform.
+    fn scaled_samples(n: usize, uniform: bool, sd: &[f64]) -> Vec<Vec<f64>> {
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(11);
         let mut unit = || {
             if uniform {
@@ -257,8 +250,59 @@ mod tests {
             }
         };
         (0..n)
-            .map(|_| vec![0.2 * unit(), 0.024f64.sqrt() * unit()])
+            .map(|_| sd.iter().map(|s| s * unit()).collect())
             .collect()
+    }
+
+    /// The spread alone on one DOF, G = 1, no noise, S = 0.09 from 40
+    /// cycles, as a cycles file and as a summary: the maximum is s^2 = S,
+    /// the Wilks ends solve 39 (r - ln r - 1) = chi^2_1(0.90), r = S / s^2,
+    /// the sandwich factor is 1 for normal and 2 / Var(u^2) = 2.5 for
+    /// uniform scatter (unit-variance u), and the model error of ln s from
+    /// N normal samples is sqrt(1 / (2 N)).
+    #[test]
+    fn one_parameter_closed_forms() {
+        let grid = ModelGrid::from_parts(vec![], vec![], vec![DMatrix::identity(1, 1)], 0.3);
+        for obs in [
+            Observed::Covariance {
+                s: DMatrix::from_element(1, 1, 0.09),
+                n: 40,
+            },
+            Observed::Sigmas {
+                sigma: vec![0.3],
+                cycles: vec![40],
+            },
+        ] {
+            let jm = JointModel {
+                obs: &obs,
+                grid: &grid,
+                params: vec![Param::Spread],
+                ranges: vec![(0.0, 1.0)],
+                spread_fixed: 0.0,
+                mu_fixed: 1.0,
+                noise_var: vec![0.0],
+            };
+            let (u_hat, l_max) = estimate(&jm);
+            let theta = jm.theta(&u_hat);
+            // Nelder-Mead stops where l is flat to 1e-12: s to about 1e-7.
+            assert!((theta[0] - 0.3).abs() < 1e-6, "{obs:?}: {theta:?}");
+            for dir in [-1.0, 1.0] {
+                let e = profile_end(&jm, 0, 1.0, &u_hat, l_max, dir);
+                let r = 0.09 / jm.theta(&e.point)[0].powi(2);
+                let d = 39.0 * (r - r.ln() - 1.0);
+                assert!((d - wilks_threshold()).abs() < 1e-6, "{obs:?} {dir}: {d}");
+            }
+            for (uniform, want) in [(false, 1.0), (true, 2.5)] {
+                let x = scaled_samples(200_000, uniform, &[0.3]);
+                let k = information(&jm, &theta, &x).unwrap().derived().k[0];
+                assert!((k / want - 1.0).abs() < 0.02, "uniform {uniform}: k {k}");
+            }
+            let nx = 20_000;
+            let x = scaled_samples(nx, false, &[0.3]);
+            let sd = information(&jm, &theta, &x).unwrap().derived().model_sd[0] / theta[0];
+            let rel = sd / (1.0 / (2.0 * nx as f64)).sqrt();
+            assert!((rel - 1.0).abs() < 0.03, "model sd ratio {rel}");
+        }
     }
 
     #[test]
@@ -283,7 +327,7 @@ mod tests {
             let r = a / (s * s);
             let d = (n as f64 - 1.0) * (r - r.ln() - 1.0);
             assert!(
-                !e.at_bound && (d - CHI2_1_90).abs() < 1e-4,
+                !e.at_bound && (d - wilks_threshold()).abs() < 1e-4,
                 "{dir}: s {s}, {d}"
             );
         }

@@ -1,8 +1,8 @@
-//! The joint likelihood of several parameters theta (the spread s and any
-//! of mu_static, dynamic_ratio, support_compliance, phi):
-//! Sigma(theta) = s^2 G(phi) + N with G(phi) from the model grid
-//! ([`super::grid`]) and the same Wishart / chi-square likelihood as the
-//! spread alone ([`super::likelihood::log_likelihood`]).
+//! The likelihood of the fitted parameters theta (any of the spread s and
+//! mu_static, dynamic_ratio, support_compliance, phi; the spread alone is
+//! the case of one parameter and no phi): Sigma(theta) = s^2 G(phi) + N
+//! with G(phi) from the model grid ([`super::grid`]) and the Wishart /
+//! chi-square likelihood of [`super::likelihood::log_likelihood`].
 //!
 //! * Estimate: the maximum of l over the searched box (a coarse grid, then
 //!   Nelder-Mead), with spread <= mu_static.
@@ -14,19 +14,19 @@
 //!   k_a = (H^-1)_aa / (H^-1 J H^-1)_aa (Chandler & Bate 2007, Biometrika 94,
 //!   167, §3), H the information the Wishart law assumes and J the true
 //!   variance of the score (from the pose samples' fourth moments, see
-//!   [`information`]); for one parameter this is the spread's k = H / J.
+//!   [`super::information`]); for one parameter k = H / J.
 //! * Where the profile stays below the threshold up to an end of the range,
 //!   the interval ends there and is flagged: the data do not determine it.
 
 use nalgebra::DMatrix;
 
-use super::chi2::CHI2_1_90;
 use super::grid::ModelGrid;
-use super::likelihood::{Observed, log_likelihood, model_covariance};
+use super::likelihood::{Observed, log_likelihood, model_covariance, wilks_threshold};
 use super::params::{Param, admissible};
 
-/// Relative lower end of the searched spread (as for the spread alone).
-const S_MIN_REL: f64 = 1e-4;
+/// Lower end of the searched spread relative to its upper end (the spread
+/// is searched on a log scale, from S_MIN_REL s_max to s_max).
+pub const S_MIN_REL: f64 = 1e-4;
 
 /// The likelihood of theta for one observation.
 pub struct JointModel<'a> {
@@ -72,32 +72,40 @@ impl<'a> JointModel<'a> {
 
     /// Sigma(theta); None where theta is not admissible.
     pub fn sigma(&self, theta: &[f64]) -> Option<DMatrix<f64>> {
-        let s = self
-            .index(Param::Spread)
-            .map_or(self.spread_fixed, |i| theta[i]);
+        let s = self.spread(theta);
         let mu = self
             .index(Param::MuStatic)
             .map_or(self.mu_fixed, |i| theta[i]);
         if !admissible(s, mu) {
             return None;
         }
-        let phi: Vec<f64> = self
-            .grid
+        Some(model_covariance(
+            &self.grid.at(&self.phi(theta)),
+            &self.noise_var,
+            s,
+        ))
+    }
+
+    /// The spread at theta (fitted or fixed).
+    pub fn spread(&self, theta: &[f64]) -> f64 {
+        (self.index(Param::Spread)).map_or(self.spread_fixed, |i| theta[i])
+    }
+
+    /// The values of the grid parameters phi in theta.
+    pub fn phi(&self, theta: &[f64]) -> Vec<f64> {
+        self.grid
             .params
             .iter()
             .map(|p| theta[self.index(*p).expect("grid parameters are fitted")])
-            .collect();
-        Some(model_covariance(&self.grid.at(&phi), &self.noise_var, s))
+            .collect()
     }
 
     /// l(theta), -inf where not admissible or singular.
     pub fn log_likelihood(&self, theta: &[f64]) -> f64 {
-        self.sigma(theta)
-            .and_then(|sg| {
-                // Sigma given whole: G = Sigma, s = 1, no extra noise.
-                log_likelihood(self.obs, &sg, &vec![0.0; sg.nrows()], 1.0)
-            })
-            .unwrap_or(f64::NEG_INFINITY)
+        let l = self
+            .sigma(theta)
+            .and_then(|sg| log_likelihood(self.obs, &sg));
+        l.unwrap_or(f64::NEG_INFINITY)
     }
 
     /// theta of the unit coordinates u (the spread on a log scale).
@@ -260,47 +268,53 @@ pub struct End {
     pub at_bound: bool,
 }
 
-/// Profile steps from the estimate to each range end.
-const PROFILE_STEPS: usize = 40;
+/// Steps from the estimate to a range end, and bisections of the step
+/// where the boundary of a region is crossed.
+const BOUNDARY_STEPS: usize = 40;
+const BISECTIONS: usize = 30;
+
+/// Where a walk from `start` (inside a region, with its state) to `end`
+/// first leaves the region: `inside(v, state)` is the state at v (a warm
+/// start for the next point) or None outside. The crossing is located by
+/// bisection of the step; returns the last value inside, its state, and
+/// whether the walk reached `end` without leaving.
+fn boundary<S>(start: (f64, S), end: f64, inside: impl Fn(f64, &S) -> Option<S>) -> (f64, S, bool) {
+    let mut last = start;
+    let span = end - last.0;
+    let from = last.0;
+    for i in 1..=BOUNDARY_STEPS {
+        let v = from + span * i as f64 / BOUNDARY_STEPS as f64;
+        match inside(v, &last.1) {
+            Some(state) => last = (v, state),
+            None => {
+                let mut out = v;
+                for _ in 0..BISECTIONS {
+                    let mid = 0.5 * (last.0 + out);
+                    match inside(mid, &last.1) {
+                        Some(state) => last = (mid, state),
+                        None => out = mid,
+                    }
+                }
+                return (last.0, last.1, false);
+            }
+        }
+    }
+    (last.0, last.1, true)
+}
 
 /// The end of the adjusted profile interval of parameter `a` towards
 /// `dir` (-1: low, +1: high): k 2 (l_max - l_p) = chi^2_1(0.90).
 pub fn profile_end(m: &JointModel, a: usize, k: f64, u_hat: &[f64], l_max: f64, dir: f64) -> End {
-    let drop = |l: f64| k * 2.0 * (l_max - l) - CHI2_1_90;
+    let threshold = wilks_threshold();
     let target = if dir < 0.0 { 0.0 } else { 1.0 };
-    let span = target - u_hat[a];
-    let mut prev = (u_hat[a], u_hat.to_vec());
-    for i in 1..=PROFILE_STEPS {
-        let v = u_hat[a] + span * i as f64 / PROFILE_STEPS as f64;
-        let (pt, l) = profile(m, a, v, &prev.1, u_hat);
-        if drop(l) > 0.0 {
-            // Bisect between prev (inside) and v (outside).
-            let (mut lo, mut hi, mut inside) = (prev.0, v, prev.1.clone());
-            for _ in 0..30 {
-                let mid = 0.5 * (lo + hi);
-                let (p, l) = profile(m, a, mid, &inside, u_hat);
-                if drop(l) > 0.0 {
-                    hi = mid;
-                } else {
-                    lo = mid;
-                    inside = p;
-                }
-            }
-            return End {
-                u: lo,
-                point: inside,
-                at_bound: false,
-            };
-        }
-        prev = (v, pt);
+    let (u, mut point, at_bound) = boundary((u_hat[a], u_hat.to_vec()), target, |v, warm| {
+        let (pt, l) = profile(m, a, v, warm, u_hat);
+        (k * 2.0 * (l_max - l) <= threshold).then_some(pt)
+    });
+    if at_bound {
+        point[a] = target;
     }
-    let mut point = prev.1;
-    point[a] = target;
-    End {
-        u: target,
-        point,
-        at_bound: true,
-    }
+    End { u, point, at_bound }
 }
 
 /// The point where the ray u_hat + t e (t > 0) leaves the adjusted
@@ -326,24 +340,9 @@ pub fn ray_end(m: &JointModel, u_hat: &[f64], e: &[f64], k: f64, l_max: f64) -> 
             .map(|(u, d)| (u + t * d).clamp(0.0, 1.0))
             .collect()
     };
-    let outside = |t: f64| k * 2.0 * (l_max - m.l_unit(&at(t))) > CHI2_1_90;
-    let steps = PROFILE_STEPS;
-    let mut prev = 0.0;
-    for i in 1..=steps {
-        let t = t_max * i as f64 / steps as f64;
-        if outside(t) {
-            let (mut lo, mut hi) = (prev, t);
-            for _ in 0..40 {
-                let mid = 0.5 * (lo + hi);
-                if outside(mid) {
-                    hi = mid;
-                } else {
-                    lo = mid;
-                }
-            }
-            return at(lo);
-        }
-        prev = t;
-    }
-    at(t_max)
+    let threshold = wilks_threshold();
+    let (t, _, _) = boundary((0.0, ()), t_max, |t, _| {
+        (k * 2.0 * (l_max - m.l_unit(&at(t))) <= threshold).then_some(())
+    });
+    at(t)
 }

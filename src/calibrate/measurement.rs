@@ -2,7 +2,10 @@
 //! per re-seating cycle, one column per measured DOF with its unit) or a
 //! summary file (one row per DOF: its sigma and the number of cycles).
 //! `#` lines carry metadata (`# key: value`); `# noise: x=1nm, ...` gives
-//! the sensor noise per DOF.
+//! the sensor noise per DOF. Every other line is one CSV record (the `csv`
+//! crate: quoted fields, cells trimmed), separated by commas, semicolons or
+//! tabs: the delimiter is the one of the three the header line holds most
+//! of (commas on a tie or none), unless given.
 
 use std::path::Path;
 
@@ -39,18 +42,19 @@ pub struct Measurement {
 }
 
 impl Measurement {
-    /// Read a measurement file.
-    pub fn load(path: &Path) -> Result<Self, CalibrateError> {
+    /// Read a measurement file with fields separated by `delimiter` (None:
+    /// detected from the header line).
+    pub fn load(path: &Path, delimiter: Option<u8>) -> Result<Self, CalibrateError> {
         let file = path.display().to_string();
         let text = std::fs::read_to_string(path).map_err(|e| CalibrateError::Read {
             file: file.clone(),
             reason: e.to_string(),
         })?;
-        Self::parse(&text, &file)
+        Self::parse(&text, &file, delimiter)
     }
 
-    /// Parse the text of a measurement file named `file`.
-    pub fn parse(text: &str, file: &str) -> Result<Self, CalibrateError> {
+    /// Parse the text of a measurement file named `file` (see [`Self::load`]).
+    pub fn parse(text: &str, file: &str, delimiter: Option<u8>) -> Result<Self, CalibrateError> {
         // A spreadsheet's byte-order mark is not part of the first header.
         let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let mut noise = [None; 6];
@@ -70,7 +74,7 @@ impl Measurement {
                     metadata.push((k, v));
                 }
             } else if !line.is_empty() {
-                lines.push((i + 1, line));
+                lines.push((i + 1, raw));
             }
         }
         let Some(&(header_line, header)) = lines.first() else {
@@ -80,7 +84,11 @@ impl Measurement {
                 reason: "no header line (e.g. `x_nm,y_nm,phi_x_nrad`)".into(),
             });
         };
-        let names: Vec<&str> = header.split(',').map(str::trim).collect();
+        let delimiter = delimiter.unwrap_or_else(|| detect_delimiter(header));
+        let records: Vec<(usize, Vec<String>)> = (lines.iter())
+            .map(|&(line, text)| (line, split(text, delimiter)))
+            .collect();
+        let names = records[0].1.clone();
         let base = Measurement {
             file: file.into(),
             point: None,
@@ -89,28 +97,28 @@ impl Measurement {
             noise,
             metadata,
         };
-        if names.contains(&"sigma") {
-            base.parse_summary(header_line, &names, &lines[1..])
+        if names.iter().any(|n| n == "sigma") {
+            base.parse_summary(header_line, &names, &records[1..])
         } else {
-            base.parse_cycles(header_line, &names, &lines[1..])
+            base.parse_cycles(header_line, &names, &records[1..])
         }
     }
 
     fn parse_cycles(
         mut self,
         header_line: usize,
-        names: &[&str],
-        rows: &[(usize, &str)],
+        names: &[String],
+        rows: &[(usize, Vec<String>)],
     ) -> Result<Self, CalibrateError> {
         let mut columns = Vec::new();
         let mut point_col = None;
         for (c, name) in names.iter().enumerate() {
-            if *name == "point" {
+            if name == "point" {
                 point_col = Some(c);
                 continue;
             }
-            let (d, f) =
-                parse_column(name).map_err(|r| self.err(header_line, c, name, r.to_string()))?;
+            let (d, f) = parse_column(name)
+                .map_err(|r| self.err(header_line, c, name, with_hint(r.to_string(), name)))?;
             if self.dofs.contains(&d) {
                 let r = format!("{} measured twice", DOFS[d]);
                 return Err(self.err(header_line, c, name, r));
@@ -122,18 +130,15 @@ impl Measurement {
             return Err(self.whole(header_line, "no measured DOF column".into()));
         }
         let mut data = Vec::new();
-        for &(line, text) in rows {
-            let cells: Vec<&str> = text.split(',').map(str::trim).collect();
-            if cells.len() != names.len() {
-                let r = format!("{} values, the header has {}", cells.len(), names.len());
-                return Err(self.whole(line, r));
-            }
+        for (line, cells) in rows {
+            let line = *line;
+            self.check_length(line, cells, names)?;
             if let Some(pc) = point_col {
-                self.check_point(line, pc, cells[pc])?;
+                self.check_point(line, pc, &cells[pc])?;
             }
             let mut row = Vec::with_capacity(columns.len());
             for &(c, f) in &columns {
-                row.push(self.number(line, c, names[c], cells[c])? * f);
+                row.push(self.number(line, c, &names[c], &cells[c])? * f);
             }
             data.push(row);
         }
@@ -145,7 +150,7 @@ impl Measurement {
                 "{} cycle(s), need at least {MIN_CYCLES} re-seating cycles",
                 data.len()
             );
-            return Err(self.err(last, c, names[c], r));
+            return Err(self.err(last, c, &names[c], r));
         }
         self.data = MeasuredData::Cycles(data);
         Ok(self)
@@ -154,10 +159,10 @@ impl Measurement {
     fn parse_summary(
         mut self,
         header_line: usize,
-        names: &[&str],
-        rows: &[(usize, &str)],
+        names: &[String],
+        rows: &[(usize, Vec<String>)],
     ) -> Result<Self, CalibrateError> {
-        let col = |n: &str| names.iter().position(|h| *h == n);
+        let col = |n: &str| names.iter().position(|h| h == n);
         let (Some(cd), Some(cu), Some(cs), Some(cn)) =
             (col("dof"), col("unit"), col("sigma"), col("cycles"))
         else {
@@ -166,27 +171,24 @@ impl Measurement {
         };
         let cp = col("point");
         let (mut sigma, mut cycles) = (Vec::new(), Vec::new());
-        for &(line, text) in rows {
-            let cells: Vec<&str> = text.split(',').map(str::trim).collect();
-            if cells.len() != names.len() {
-                let r = format!("{} values, the header has {}", cells.len(), names.len());
-                return Err(self.whole(line, r));
-            }
+        for (line, cells) in rows {
+            let line = *line;
+            self.check_length(line, cells, names)?;
             if let Some(pc) = cp {
-                self.check_point(line, pc, cells[pc])?;
+                self.check_point(line, pc, &cells[pc])?;
             }
-            let d = dof_index(cells[cd]).ok_or_else(|| {
+            let d = dof_index(&cells[cd]).ok_or_else(|| {
                 let r = format!("unknown DOF `{}` (one of {})", cells[cd], DOFS.join(", "));
                 self.err(line, cd, "dof", r)
             })?;
             if self.dofs.contains(&d) {
                 return Err(self.err(line, cd, "dof", format!("{} given twice", DOFS[d])));
             }
-            let unit = cells[cu];
+            let unit = cells[cu].as_str();
             if unit.is_empty() {
                 return Err(self.err(line, cu, "unit", "missing unit".into()));
             }
-            let s = self.number(line, cs, "sigma", cells[cs])?;
+            let s = self.number(line, cs, "sigma", &cells[cs])?;
             let f = super::units::unit_factor(d, unit).ok_or_else(|| {
                 let r = format!(
                     "unit `{unit}` does not fit {} (use {})",
@@ -214,14 +216,33 @@ impl Measurement {
         Ok(self)
     }
 
+    /// A data row has one cell per header name.
+    fn check_length(
+        &self,
+        line: usize,
+        cells: &[String],
+        names: &[String],
+    ) -> Result<(), CalibrateError> {
+        if cells.len() == names.len() {
+            return Ok(());
+        }
+        let r = format!("{} values, the header has {}", cells.len(), names.len());
+        Err(self.whole(line, with_hint(r, &cells.join(""))))
+    }
+
     /// A finite number in a cell.
     fn number(&self, line: usize, c: usize, name: &str, cell: &str) -> Result<f64, CalibrateError> {
         if cell.is_empty() {
             return Err(self.err(line, c, name, "empty value".into()));
         }
-        let v: f64 = cell
-            .parse()
-            .map_err(|_| self.err(line, c, name, format!("`{cell}` is not a number")))?;
+        let v: f64 = cell.parse().map_err(|_| {
+            let comma = if cell.contains(',') {
+                " (a decimal comma? write a decimal point)"
+            } else {
+                ""
+            };
+            self.err(line, c, name, format!("`{cell}` is not a number{comma}"))
+        })?;
         if !v.is_finite() {
             let r = format!("`{cell}` is not a finite measured value");
             return Err(self.err(line, c, name, r));
@@ -289,18 +310,41 @@ impl Measurement {
         let MeasuredData::Cycles(rows) = &self.data else {
             return None;
         };
-        let (n, p) = (rows.len(), self.dofs.len());
-        let mean: Vec<f64> = (0..p)
-            .map(|j| rows.iter().map(|r| r[j]).sum::<f64>() / n as f64)
-            .collect();
-        let mut s = DMatrix::zeros(p, p);
-        for r in rows {
-            for a in 0..p {
-                for b in 0..p {
-                    s[(a, b)] += (r[a] - mean[a]) * (r[b] - mean[b]);
-                }
-            }
+        Some(super::model::covariance(rows))
+    }
+}
+
+/// The delimiter a header line is separated by: the most frequent of comma,
+/// semicolon and tab (a comma on a tie or when there is none).
+pub fn detect_delimiter(header: &str) -> u8 {
+    let count = |d: u8| header.bytes().filter(|b| *b == d).count();
+    [b';', b'\t'].into_iter().fold(
+        b',',
+        |best, d| if count(d) > count(best) { d } else { best },
+    )
+}
+
+/// The cells of one line as a CSV record, trimmed. Reading a line of text
+/// cannot fail (no I/O, valid UTF-8, any number of fields).
+fn split(line: &str, delimiter: u8) -> Vec<String> {
+    let mut reader = csv::ReaderBuilder::new()
+        .delimiter(delimiter)
+        .has_headers(false)
+        .flexible(true)
+        .trim(csv::Trim::All)
+        .from_reader(line.as_bytes());
+    let record = reader.records().next().and_then(Result::ok);
+    record.map_or_else(Vec::new, |r| r.iter().map(str::to_string).collect())
+}
+
+/// `reason`, with a hint at `--delimiter` if `text` holds a delimiter other
+/// than the one the file was split by.
+fn with_hint(reason: String, text: &str) -> String {
+    match [',', ';', '\t'].into_iter().find(|d| text.contains(*d)) {
+        Some(d) => {
+            let d = d.escape_default();
+            format!("{reason} (`{d}` in it: a file separated by `{d}`? see --delimiter)")
         }
-        Some(s / (n as f64 - 1.0))
+        None => reason,
     }
 }

@@ -1,6 +1,7 @@
-//! The model's covariance of one evaluation point's pose at a given
-//! friction spread, from a Monte Carlo study (`study::runner::run_variant`)
-//! of the scene with `[friction] spread` replaced.
+//! The model studies of a calibration: Monte Carlo studies
+//! (`study::runner::run_variant`) of the scene with fitted parameters
+//! replaced, giving the pose samples of one evaluation point and their
+//! covariance.
 
 use nalgebra::DMatrix;
 
@@ -19,16 +20,23 @@ pub const MODEL_SAMPLES: usize = 2000;
 /// Seed of the model studies (`--seed`); a synthetic measurement must use another.
 pub const MODEL_SEED: u64 = 15_015;
 
-/// The covariance of one point's six DOFs at one spread.
+/// What every model study of a calibration shares.
+#[derive(Debug, Clone, Copy)]
+pub struct StudySpec<'a> {
+    pub coupling: &'a Coupling,
+    /// Index of the measured evaluation point.
+    pub point: usize,
+    /// The measured DOFs.
+    pub dofs: &'a [usize],
+    pub samples: usize,
+    pub seed: u64,
+    pub method: Method,
+}
+
+/// The pose samples of one point at one spread.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ModelStudy {
     pub spread: f64,
-    pub samples: usize,
-    pub seed: u64,
-    /// Index of the evaluation point.
-    pub point: usize,
-    /// 6x6 covariance (divisor N - 1) of x, y, z, phi_x, phi_y, phi_z [SI].
-    pub cov: DMatrix<f64>,
     /// The pose samples of the point (x, y, z, phi_x, phi_y, phi_z) [SI].
     pub rows: Vec<[f64; 6]>,
     pub fingerprint: Fingerprint,
@@ -53,42 +61,21 @@ pub fn model_options(samples: usize, seed: u64, method: Method) -> StudyOptions 
     }
 }
 
-impl ModelStudy {
-    /// Run the model study of point `point` at `spread`. The same seed
-    /// draws the same design rows at every spread (common random numbers),
-    /// so the ratio of two model studies carries little sampling noise.
-    pub fn run(
-        coupling: &Coupling,
-        point: usize,
-        spread: f64,
-        samples: usize,
-        seed: u64,
-        method: Method,
-    ) -> Result<Self, CalibrateError> {
-        let c = with_spread(coupling, spread);
-        let opts = model_options(samples, seed, method);
-        let run = run_variant(&c, &opts, &|| {})?;
-        let rows: Vec<[f64; 6]> = run
-            .records
-            .iter()
-            .map(|r| std::array::from_fn(|j| r.outputs[6 * point + j]))
-            .collect();
+impl StudySpec<'_> {
+    /// The model study of `c` (a variant of the scene) at its own spread.
+    /// The same seed draws the same design rows at every spread and node
+    /// (common random numbers), so the ratio of two model studies carries
+    /// little sampling noise.
+    pub fn run(&self, c: &Coupling) -> Result<ModelStudy, CalibrateError> {
+        let opts = model_options(self.samples, self.seed, self.method);
+        let run = run_variant(c, &opts, &|| {})?;
+        let point = self.point;
         Ok(ModelStudy {
-            spread,
-            samples,
-            seed,
-            point,
-            cov: covariance(&rows),
-            rows,
-            fingerprint: Fingerprint::new(&c, &opts, &run.design),
-        })
-    }
-
-    /// Covariance per unit spread^2 of the DOFs `dofs`: G = C / s^2.
-    pub fn per_unit(&self, dofs: &[usize]) -> DMatrix<f64> {
-        let s2 = self.spread * self.spread;
-        DMatrix::from_fn(dofs.len(), dofs.len(), |a, b| {
-            self.cov[(dofs[a], dofs[b])] / s2
+            spread: c.scene.friction.spread,
+            rows: (run.records.iter())
+                .map(|r| std::array::from_fn(|j| r.outputs[6 * point + j]))
+                .collect(),
+            fingerprint: Fingerprint::new(c, &opts, &run.design),
         })
     }
 }
@@ -101,16 +88,26 @@ impl ModelStudy {
             .map(|r| dofs.iter().map(|&d| r[d]).collect())
             .collect()
     }
+
+    /// Covariance per unit spread^2 of the DOFs `dofs`: G = C / s^2.
+    pub fn per_unit(&self, dofs: &[usize]) -> DMatrix<f64> {
+        covariance(&self.samples_of(dofs)) / (self.spread * self.spread)
+    }
 }
 
-/// Sample covariance (divisor n - 1) of rows of six values.
-pub fn covariance(rows: &[[f64; 6]]) -> DMatrix<f64> {
+/// Sample covariance matrix (divisor n - 1) of rows of equal length (the
+/// columns are the variables).
+pub fn covariance<R: AsRef<[f64]>>(rows: &[R]) -> DMatrix<f64> {
     let n = rows.len() as f64;
-    let mean: [f64; 6] = std::array::from_fn(|j| rows.iter().map(|r| r[j]).sum::<f64>() / n);
-    let mut c = DMatrix::zeros(6, 6);
+    let p = rows.first().map_or(0, |r| r.as_ref().len());
+    let mean: Vec<f64> = (0..p)
+        .map(|j| rows.iter().map(|r| r.as_ref()[j]).sum::<f64>() / n)
+        .collect();
+    let mut c = DMatrix::zeros(p, p);
     for r in rows {
-        for a in 0..6 {
-            for b in 0..6 {
+        let r = r.as_ref();
+        for a in 0..p {
+            for b in 0..p {
                 c[(a, b)] += (r[a] - mean[a]) * (r[b] - mean[b]);
             }
         }

@@ -3,10 +3,11 @@
 //!
 //! Per scene Monte Carlo studies with the same design rows (common random
 //! numbers): at the estimate theta_hat and at each point of the
-//! calibration's `region` (spread alone: the ends s_lo, s_hi of its
-//! interval; several parameters: the profile-interval ends with the other
-//! parameters at their profile maximum, and the ends of the principal axes
-//! of the joint region, see `joint_fit`). The interval of sigma carries
+//! calibration's `region` (per parameter the ends of its interval, the
+//! other parameters at their profile maximum; for several parameters also
+//! the ends of the principal axes of the joint region; see `fit`; a
+//! schema-1 file: the ends s_lo, s_hi of the spread's interval). The
+//! interval of sigma carries
 //! * the parameter uncertainty: the range of sigma over those points,
 //!   ln sigma(theta_hat) - ln min below and ln max - ln sigma(theta_hat)
 //!   above (studies at the points, so no linearity is assumed; the range

@@ -13,8 +13,8 @@
 //! is an error, never a NaN result.
 //!
 //! Shards are merged at the level of per-sample records ([`records`]): the statistics of a
-//! merged study are recomputed from the records sorted by sample index, so they equal those of a
-//! single run bit for bit.
+//! merged study are recomputed from the records sorted by sample index, so they are those of a
+//! single run.
 
 pub mod bootstrap;
 pub mod convergence;

@@ -17,7 +17,7 @@ use serde::{Deserialize, Serialize};
 
 use super::super::error::{Result, StudyError};
 use super::super::rng::{DOMAIN_BOOT, below, chacha};
-use super::interval::Interval;
+use super::interval::{Interval, check_level};
 use super::{check_values, mean_sigma_unchecked};
 
 /// Fixed seed of the bootstrap resampling.
@@ -52,12 +52,7 @@ pub fn bootstrap_sigma(values: &[f64], cfg: &BootstrapConfig) -> Result<Interval
             "bootstrap needs at least 2 resamples".into(),
         ));
     }
-    if !(cfg.level > 0.0 && cfg.level < 1.0) {
-        return Err(StudyError::InvalidParameter(format!(
-            "bootstrap level {} not in (0, 1)",
-            cfg.level
-        )));
-    }
+    check_level(cfg.level)?;
     let n = values.len();
     let mut rng = chacha(cfg.seed, DOMAIN_BOOT);
     let mut resample = vec![0.0; n];

@@ -1,7 +1,7 @@
 //! Convergence of sigma with the number of samples: sigma of the first k samples, k = 2..=n.
 //!
-//! Computed in one pass with Welford's (1962) update, which is numerically stable; the value at
-//! k = n may differ in the last bits from the two-pass sigma of [`super::Summary`].
+//! Computed in one pass with Welford's (1962) update of [`Moments`], which is numerically stable;
+//! the value at k = n may differ in the last bits from the two-pass sigma of [`super::Summary`].
 //!
 //! For Latin hypercube designs, a prefix of the design (its first k rows) is **not** itself a
 //! Latin hypercube: its k points do not fill k strata per dimension, so the curve shows how
@@ -12,6 +12,7 @@ use serde::{Deserialize, Serialize};
 
 use super::super::error::Result;
 use super::check_values;
+use super::moments::Moments;
 
 /// Sigma of the first `k` samples.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -23,19 +24,14 @@ pub struct ConvergencePoint {
 /// Sigma of every prefix of `values` with at least 2 samples (n - 1 points).
 pub fn sigma_convergence(values: &[f64]) -> Result<Vec<ConvergencePoint>> {
     check_values(values)?;
-    let mut out = Vec::with_capacity(values.len() - 1);
-    let (mut mean, mut m2) = (0.0f64, 0.0f64);
-    for (i, &v) in values.iter().enumerate() {
-        let k = (i + 1) as f64;
-        let d = v - mean;
-        mean += d / k;
-        m2 += d * (v - mean);
-        if i >= 1 {
-            out.push(ConvergencePoint {
+    let mut m = Moments::new();
+    Ok((values.iter().enumerate())
+        .filter_map(|(i, &v)| {
+            m.push(v);
+            (i >= 1).then(|| ConvergencePoint {
                 k: i + 1,
-                sigma: (m2.max(0.0) / (k - 1.0)).sqrt(),
-            });
-        }
-    }
-    Ok(out)
+                sigma: m.sigma(),
+            })
+        })
+        .collect())
 }

@@ -51,7 +51,8 @@ pub const METHOD_REPLICATED_LHS: &str = "replicated-lhs t on ln sigma^2";
 /// What corner designs print instead of an interval.
 pub const METHOD_NONE_CORNERS: &str = "none (corner design: deterministic, not a sample)";
 
-fn check_level(level: f64) -> Result<()> {
+/// A level in (0, 1).
+pub(super) fn check_level(level: f64) -> Result<()> {
     if level > 0.0 && level < 1.0 {
         Ok(())
     } else {

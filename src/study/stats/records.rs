@@ -4,7 +4,7 @@
 //! shard (`i/N`), the names of the output quantities and one [`SampleRecord`] per sample it
 //! computed. [`merge`] concatenates the records of all shard files, sorts them by sample index
 //! and checks that they form exactly the samples 0..n of one design: statistics recomputed from
-//! the merged records equal those of a single run bit for bit.
+//! the merged records are those of a single run (the same values in the same order).
 //!
 //! Bit-exactness needs a lossless file format: with serde_json enable its `float_roundtrip`
 //! feature, otherwise parsing may change the last bit of an f64 (observed in this crate's tests).
@@ -127,7 +127,7 @@ pub fn merge(shards: impl IntoIterator<Item = ShardFile>) -> Result<MergedStudy>
     })
 }
 
-/// Regenerates the design and checks that every stored input row matches it bit for bit
+/// Regenerates the design and checks that every stored input row equals it exactly
 /// (catches files written by another version of the samplers).
 pub fn verify_inputs(study: &MergedStudy) -> Result<()> {
     let rows = study.design.rows()?;

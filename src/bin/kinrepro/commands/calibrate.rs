@@ -34,6 +34,10 @@ pub struct CalibrateArgs {
     /// x_nm, phi_x_nrad), or a summary (dof,unit,sigma,cycles).
     #[arg(long)]
     pub measured: PathBuf,
+    /// Field separator of the measurement file: `,`, `;`, `tab` (or any one
+    /// ASCII character); default: detected from its header line.
+    #[arg(long, value_parser = parse_delimiter)]
+    pub delimiter: Option<u8>,
     /// Parameters to fit, comma-separated: any of spread, mu_static,
     /// dynamic_ratio, support_compliance (the others held at the scene's
     /// values; docs/calibration.md gives the searched ranges).
@@ -94,6 +98,19 @@ pub struct PredictArgs {
     pub jobs: Option<usize>,
 }
 
+/// `--delimiter`: one ASCII character, or `tab`, `comma`, `semicolon`.
+fn parse_delimiter(s: &str) -> Result<u8, String> {
+    match s {
+        "tab" | "\\t" => Ok(b'\t'),
+        "comma" => Ok(b','),
+        "semicolon" => Ok(b';'),
+        _ if s.len() == 1 && s.is_ascii() && s != "\"" && s != "#" => Ok(s.as_bytes()[0]),
+        _ => Err(format!(
+            "`{s}`: give one character such as `,` or `;`, or `tab` (not `\"` or `#`)"
+        )),
+    }
+}
+
 fn check_samples(flag: &str, n: usize) -> Result<(), CliError> {
     if n < MIN_MODEL_SAMPLES {
         return Err(CliError::Usage(format!(
@@ -110,7 +127,7 @@ pub fn calibrate_cmd(args: CalibrateArgs) -> Result<(), CliError> {
         parse_noise(n, &mut noise).map_err(|e| CliError::Usage(format!("--noise: {e}")))?;
     }
     let coupling = kinrepro::error::read_coupling(&args.scene)?;
-    let m = Measurement::load(&args.measured)?;
+    let m = Measurement::load(&args.measured, args.delimiter)?;
     if let Some(out) = &args.out {
         kinrepro::report::atomic::check_overwrite(out, args.force)?;
     }
