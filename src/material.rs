@@ -91,7 +91,7 @@ pub const BUILTIN: &[BuiltinMaterial] = &[
         density: 7810.0,
         allowable_pressure: Some(4.2e9),
         sources: MaterialSources {
-            elastic: "the paper's values (TU Ilmenau, Model-based determination of the reproducibility of kinematic couplings); AISI 52100 datasheets give E 190-210 GPa, v 0.27-0.30",
+            elastic: "AISI 52100 / 100Cr6 datasheets give E 190-210 GPa, v 0.27-0.30 (e.g. AZoM, 'AISI 52100 Alloy Steel (UNS G52986)'); E 210 GPa and v 0.30 are the top of that range and the design values for steel of EN 1993-1-1:2005, 3.2.6",
             density: "AISI 52100 datasheet (e.g. ASM / MatWeb 'AISI 52100 Steel'): 7.81 g/cm^3",
             allowable_pressure: "ISO 76:2006 (static load ratings of rolling bearings): 4200 MPa for ball contacts",
         },
@@ -104,7 +104,7 @@ pub const BUILTIN: &[BuiltinMaterial] = &[
         density: 3160.0,
         allowable_pressure: None,
         sources: MaterialSources {
-            elastic: "the paper's values; cf. Munro, J. Phys. Chem. Ref. Data 26 (1997) 1195 (sintered alpha-SiC)",
+            elastic: "Saint-Gobain Hexoloy SA data sheet (pressureless-sintered alpha-SiC): E 410 GPa, v 0.14",
             density: "Munro, J. Phys. Chem. Ref. Data 26 (1997) 1195; NIST SRD 150 (sintered alpha-SiC): 3.16 g/cm^3",
             allowable_pressure: NO_CERAMIC_PRESSURE,
         },
@@ -290,7 +290,7 @@ mod tests {
         // G* = G / (2 (2 - v)), G = E / 2.6.
         let g_star = (210e9 / 2.6) / (2.0 * 1.7);
         assert!((effective_shear_modulus(&s, &s) / g_star - 1.0).abs() < 1e-15);
-        // 4 G*/E* for steel/steel is ~0.82 (MODEL.md section 3).
+        // 4 G*/E* for steel/steel is ~0.82 (docs/model.md, 'What to expect in a groove').
         let ratio = 4.0 * g_star / e_star;
         assert!((ratio - 0.8235).abs() < 1e-3, "{ratio}");
     }

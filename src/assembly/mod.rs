@@ -1,5 +1,5 @@
 //! The coupling assembly: moving balls, fixed surfaces and the contact
-//! laws of each pair, in the contact order of MODEL.md §1a (the `--mu` order).
+//! laws of each pair, in the contact order of docs/model.md (the `--mu` order).
 
 pub mod constraint;
 pub mod geometry;

@@ -1,6 +1,6 @@
 //! Friction readings: which coefficient acts while a contact slides.
 //!
-//! Two laws (`[friction] law` in a scene, MODEL.md §2):
+//! Two laws (`[friction] law` in a scene, docs/model.md):
 //! - **switch** (the paper's written set-up): static mu_s while sticking, a
 //!   sudden switch to mu_d = dynamic_ratio * mu_s once the contact slides.
 //! - **decay** (the exponential law of FE codes: ANSYS's FACT/DC, LS-DYNA's

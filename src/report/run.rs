@@ -37,7 +37,7 @@ pub struct RunReport {
     /// path), `adaptive` (quasi-static with halving) or `dynamic`.
     pub seating_path: SeatingPath,
     /// Pose components reported but not evaluated for reproducibility
-    /// (MODEL.md §1: rotation about z).
+    /// (rotation about z, which the paper leaves out; docs/model.md).
     pub not_evaluated: Vec<&'static str>,
 }
 

@@ -1,5 +1,5 @@
 //! Expansion of the high-level form into the explicit one, following the
-//! axes and contact numbering of MODEL.md §1a.
+//! axes and contact numbering of docs/model.md.
 //!
 //! With alpha = 90 deg - opening/2 the angle between a contact normal and z:
 //! - Maxwell, ball k with radial unit vector e_r and s = e_z x e_r: contact

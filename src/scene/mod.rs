@@ -1,7 +1,7 @@
 //! Scenes: the TOML file format (high-level and explicit forms), the
 //! expansion of the high-level form, and validation into a [`Scene`].
 //!
-//! Axes and contact numbering follow MODEL.md §1a: origin at the centre of
+//! Axes and contact numbering follow docs/model.md: origin at the centre of
 //! the circle of ball centres in their plane (unloaded touching pose), z from
 //! the fixed to the moving half, balls 1, 2, 3 at azimuths 90, 210 and 330
 //! degrees; contacts are numbered ball by ball, which is the order of `--mu`.

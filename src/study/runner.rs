@@ -4,7 +4,7 @@
 //!
 //! Inputs: the row u_i of the design on [0, 1]^d maps to the varied
 //! quantities in order: with friction varied, mu_s,k = mu0 + spread
-//! (2 u_ik - 1) for contact k (MODEL.md §4, rectangular distribution); with
+//! (2 u_ik - 1) for contact k (docs/model.md, rectangular distribution); with
 //! the start varied (dynamic solver), an offset x, y in +-b_x, +-b_y, z in
 //! [0, b_z] above the seat and a tilt in +-b_phi per axis. A row depends only
 //! on (sampler, n, seed, i), so shards of the sample range computed anywhere
@@ -35,8 +35,8 @@ use crate::solve::{Method, PointPose, SeatedPose, SeatingPath, SolveError, nomin
 
 /// Output components per evaluation point (relative to the nominal seating,
 /// SI): translation of the point and rotation vector, phi_z being the
-/// clocking about z (evaluated since output schema 2; MODEL.md §2's "not
-/// evaluated" is superseded).
+/// clocking about z (evaluated since output schema 2; docs/model.md, "The
+/// coupling").
 pub const COMPONENTS: [&str; 6] = ["x_m", "y_m", "z_m", "phi_x_rad", "phi_y_rad", "phi_z_rad"];
 
 /// How to run a study; `None` takes the scene's study settings.

@@ -1,4 +1,4 @@
-//! Seating dynamics (MODEL.md §3, the design card): the moving half is a
+//! Seating dynamics (docs/model.md, "Seating dynamics"): the moving half is a
 //! rapier3d-f64 dynamic body ([`world`]), the fixed surfaces are parry
 //! shapes (colliders that touch nothing), and the compliant contact layer
 //! ([`crate::solve::contact_layer`], shared with the quasi-static solver)

@@ -1,6 +1,6 @@
 //! Quasi-static seating: the preload ramps from 0 to F_p; at each increment
 //! Newton solves the six pose unknowns of the moving half so that the
-//! preload and the contact forces balance (MODEL.md §3).
+//! preload and the contact forces balance (docs/model.md).
 //!
 //! - Load schedule: lambda = s^(3/2) with s in uniform steps, so that every
 //!   increment adds about the same Hertz approach (delta ~ F^(2/3)).
