@@ -8,7 +8,7 @@ mod common;
 use std::path::PathBuf;
 
 use kinrepro::report::html::charts::study_charts;
-use kinrepro::report::study::VariantReport;
+use kinrepro::study::VariantReport;
 use kinrepro::study::plot::{
     ConvergenceSeries, Dof, VariantScatter, VariantSigma, convergence_svg, plot_convergence,
     plot_sigma_bars, plot_xy_scatter, sigma_bars_svg,

@@ -9,10 +9,10 @@
 mod common;
 use common::load;
 
-use kinrepro::report::study_stream::StreamStats;
 use kinrepro::study::Sampler;
 use kinrepro::study::runner::{StudyOptions, output_names, run_chunked, run_variant};
 use kinrepro::study::stats::SampleRecord;
+use kinrepro::study::stream::StreamStats;
 
 fn mc(samples: usize) -> StudyOptions {
     StudyOptions {

@@ -14,7 +14,7 @@
 //!
 //! Shards are merged at the level of per-sample records ([`records`]): the statistics of a
 //! merged study are recomputed from the records sorted by sample index, so they equal those of a
-//! single run bit for bit.
+//! single run.
 
 pub mod bootstrap;
 pub mod convergence;
@@ -181,6 +181,29 @@ fn summary(
         upper_3sigma: mean + 3.0 * sigma,
         sigma_interval,
         sigma_interval_method,
+    })
+}
+
+/// Summary of one quantity from its streamed moments (independent samples): sigma with
+/// divisor n - 1 and Bonett's interval from the moments ([`sigma_interval_from_moments`]).
+pub fn summarize_moments(m: &Moments) -> Result<Summary> {
+    let sigma = m.sigma();
+    if !(m.mean.is_finite() && sigma.is_finite()) {
+        return Err(StudyError::NonFinite {
+            what: "mean or sigma (overflow)".into(),
+        });
+    }
+    Ok(Summary {
+        n: m.n as usize,
+        mean: m.mean,
+        min: m.min,
+        max: m.max,
+        sigma,
+        three_sigma: 3.0 * sigma,
+        lower_3sigma: m.mean - 3.0 * sigma,
+        upper_3sigma: m.mean + 3.0 * sigma,
+        sigma_interval: Some(sigma_interval_from_moments(m, interval::LEVEL)?),
+        sigma_interval_method: SigmaMethod::Iid.describe(),
     })
 }
 

@@ -7,7 +7,6 @@
 use std::path::Path;
 
 use crate::report::html::reference::ReferenceRow;
-use crate::report::study::{PointStats, VariantReport};
 use crate::report::study_text::truncate;
 use crate::study::StudyError;
 use crate::study::plot::{
@@ -16,6 +15,7 @@ use crate::study::plot::{
 };
 use crate::study::runner::INTERCHANGE_PREFIX;
 use crate::study::stats::sigma_convergence;
+use crate::study::{PointStats, VariantReport};
 
 /// One chart: the file name `--out` gives it, a title and the SVG text.
 #[derive(Debug, Clone, PartialEq)]

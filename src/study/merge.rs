@@ -3,14 +3,15 @@
 //! fingerprints ([`Fingerprint`]); a refusal names the part and the field
 //! that differs, or the shards (and their sample ranges) that are missing.
 //! The statistics are recomputed from the records sorted by sample index, so
-//! the merged result equals one run bit for bit.
+//! the merged result equals the one of a single run.
 
 use thiserror::Error;
 
-use crate::report::provenance::{Fingerprint, SCHEMA_VERSION};
-use crate::report::study::{StudyRecord, StudyReport, VariantReport};
-use crate::study::stats::{ShardFile, merge, verify_inputs};
-use crate::study::{Shard, StudyError};
+use super::provenance::{Fingerprint, SCHEMA_VERSION};
+use super::record::StudyRecord;
+use super::result::{StudyReport, VariantReport};
+use super::stats::{ShardFile, merge, verify_inputs};
+use super::{Shard, StudyError};
 
 /// Why parts could not be merged (one line each).
 #[derive(Debug, Error)]
@@ -190,8 +191,7 @@ fn merge_variant(
     v.partial = false;
     v.shard = Shard::whole();
     v.records = records;
-    v.seating_paths =
-        crate::study::paths::SeatingPaths::total(parts.iter().map(|p| p.seating_paths));
+    v.seating_paths = super::paths::SeatingPaths::total(parts.iter().map(|p| p.seating_paths));
     v.finish()?;
     Ok(v)
 }
