@@ -6,27 +6,19 @@ use thiserror::Error;
 
 use super::run::SweepReport;
 use crate::study::Shard;
+use crate::study::merge::{MergeError, check_shards};
 
 /// Sweep parts that do not merge.
 #[derive(Debug, Error)]
 pub enum SweepMergeError {
-    #[error("no parts")]
-    Empty,
     #[error("{part}: not a part of the sweep of {first}: {field} differs")]
     Different {
         part: String,
         first: String,
         field: String,
     },
-    #[error("{part}: shard {shard} given twice")]
-    Duplicate { part: String, shard: Shard },
-    #[error("shard {index}/{count} (design points {start}..{end}) missing")]
-    Missing {
-        index: usize,
-        count: usize,
-        start: usize,
-        end: usize,
-    },
+    #[error(transparent)]
+    Shards(#[from] MergeError),
     #[error("{part}: shard {shard} should hold design points {expected:?}")]
     Rows {
         part: String,
@@ -37,37 +29,20 @@ pub enum SweepMergeError {
 
 /// Merge the parts of a sharded sweep into exactly the single run's document.
 pub fn merge_sweeps(parts: Vec<(String, SweepReport)>) -> Result<SweepReport, SweepMergeError> {
-    let (first_name, first) = parts.first().ok_or(SweepMergeError::Empty)?;
+    let shards: Vec<(&str, Shard)> = parts.iter().map(|(f, p)| (f.as_str(), p.shard)).collect();
+    let n = parts.first().map_or(0, |(_, p)| p.design_points);
+    check_shards(&shards, n, "design points")?;
+    let (first_name, first) = &parts[0];
     let fp = serde_json::to_value(&first.fingerprint).unwrap_or_default();
-    let count = first.shard.count;
-    let mut seen: Vec<Option<&str>> = vec![None; count];
     for (name, p) in &parts {
         let other = serde_json::to_value(&p.fingerprint).unwrap_or_default();
-        let differs = |field: String| SweepMergeError::Different {
-            part: name.clone(),
-            first: first_name.clone(),
-            field,
-        };
         if let Some(field) = first_difference(&fp, &other, "fingerprint") {
-            return Err(differs(field));
-        }
-        if p.shard.count != count {
-            return Err(differs(format!(
-                "shard count ({} vs {count})",
-                p.shard.count
-            )));
-        }
-        if p.shard.index == 0 || p.shard.index > count {
-            return Err(differs(format!("shard {} (not in 1..={count})", p.shard)));
-        }
-        let slot = &mut seen[p.shard.index - 1];
-        if slot.is_some() {
-            return Err(SweepMergeError::Duplicate {
+            return Err(SweepMergeError::Different {
                 part: name.clone(),
-                shard: p.shard,
+                first: first_name.clone(),
+                field,
             });
         }
-        *slot = Some(name);
         let expected = p.shard.range(p.design_points).unwrap_or(0..0);
         if !p.designs.iter().map(|d| d.index).eq(expected.clone()) {
             return Err(SweepMergeError::Rows {
@@ -76,17 +51,6 @@ pub fn merge_sweeps(parts: Vec<(String, SweepReport)>) -> Result<SweepReport, Sw
                 expected,
             });
         }
-    }
-    if let Some(i) = seen.iter().position(Option::is_none) {
-        let r = Shard::new(i + 1, count)
-            .and_then(|s| s.range(first.design_points))
-            .unwrap_or(0..0);
-        return Err(SweepMergeError::Missing {
-            index: i + 1,
-            count,
-            start: r.start,
-            end: r.end,
-        });
     }
     let mut parts: Vec<SweepReport> = parts.into_iter().map(|(_, p)| p).collect();
     parts.sort_by_key(|p| p.shard.index);
