@@ -68,21 +68,13 @@ impl VariantReport {
         if streams(&self.design) {
             let mut st = StreamStats::new(self.output_names.len());
             for r in &self.records {
-                st.push(std::slice::from_ref(&r.sample()), &self.output_names)?;
+                st.push(&[r.sample()], &self.output_names)?;
             }
             self.set_moment_stats(&st)?;
         } else {
+            let samples: Vec<SampleRecord> = self.records.iter().map(StudyRecord::sample).collect();
             let method = SigmaMethod::for_design(&self.design);
-            let outputs: Vec<SampleRecord> = self
-                .records
-                .iter()
-                .map(|r| SampleRecord {
-                    index: r.index,
-                    inputs: Vec::new(),
-                    outputs: r.outputs.clone(),
-                })
-                .collect();
-            let summaries = summarize_outputs(&outputs, method)?;
+            let summaries = summarize_outputs(&samples, method)?;
             (self.points, self.interchangeability) = split_points(&self.output_names, &summaries);
             self.cannot_seat = self.zero_scatter();
         }
