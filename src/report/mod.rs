@@ -1,5 +1,6 @@
-//! Human-facing text: tables with labelled units. Every number comes from
-//! the library's result types; nothing here computes physics.
+//! Renders the results: text tables with labelled units, CSV, JSON, SVG
+//! plots and the HTML report. Every number comes from the library's result
+//! types; nothing here computes physics, runs a study or runs in parallel.
 
 pub mod analysis;
 pub mod atomic;
@@ -9,6 +10,7 @@ pub mod check;
 pub mod contact;
 pub mod html;
 pub mod materials;
+pub mod plot;
 pub mod run;
 pub mod safety;
 pub mod sensitivity;

@@ -17,9 +17,9 @@ use thiserror::Error;
 use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
 use crate::report::atomic::{WriteError, check_overwrite, write_file};
+use crate::report::plot::{Dof, color};
 use crate::report::sweep_text::short as tick;
 use crate::study::PointStats;
-use crate::study::plot::{Dof, color};
 
 /// A chart could not be drawn or written.
 #[derive(Debug, Error)]

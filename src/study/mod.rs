@@ -1,6 +1,6 @@
 //! Reproducibility studies: sampling designs over the varied inputs, the seatings of every
-//! sample, the study document with its statistics (the numbers every output renders), merging
-//! of sharded runs and SVG plots.
+//! sample, the study document with its statistics (the numbers every output renders) and
+//! merging of sharded runs; `report` renders them (text, CSV, SVG, HTML).
 //!
 //! * [`document`]: a study of several scenes into one [`StudyReport`] (plan and run);
 //!   [`runner`]: one scene's seatings; [`stream`]: large Monte Carlo studies in bounded memory.
@@ -16,7 +16,6 @@
 //!   shard merging.
 //! * [`sensitivity`]: SRC shares (linear regression) and first-order and total Sobol indices
 //!   (Saltelli matrices seated with [`runner::evaluate_rows`]) with bootstrap intervals.
-//! * [`plot`]: sigma per variant and DOF, x-y scatter, convergence of sigma (SVG, plotters).
 //!
 //! # Scaling out with shards
 //!
@@ -47,7 +46,6 @@ pub mod error;
 pub mod inputs;
 pub mod merge;
 pub mod paths;
-pub mod plot;
 pub mod provenance;
 pub mod record;
 pub mod result;
