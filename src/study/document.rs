@@ -5,12 +5,12 @@
 //! or, for a large unsharded Monte Carlo design, streamed into moments
 //! ([`super::stream`]).
 
+use super::DesignSpec;
 use super::result::{StudyReport, StudyRunError, VariantReport};
 use super::runner::{PathTally, StudyOptions, check_options, design_for, run_variant_tallied};
 use super::sensitivity::sobol_run::run_sobol;
 use super::stream::{RecordSink, run_streamed, streams};
 use super::summary::attach_sobol;
-use super::{DesignSpec, StudyError};
 use crate::assembly::Coupling;
 
 /// The scenes of a study, their checked designs and what the run will do.
@@ -36,16 +36,16 @@ impl<'a> StudyPlan<'a> {
         sobol_samples: Option<usize>,
     ) -> Result<Self, StudyRunError> {
         let sobol = sobol_samples.filter(|_| opts.shard.count == 1);
-        let in_context = |context: &str| {
-            let context = context.to_string();
-            move |source| StudyRunError::Study { context, source }
-        };
         let mut designs = Vec::new();
         let mut seatings = 0;
         for c in couplings {
             check_options(c, &opts)?;
-            let d = design_for(c, &opts).map_err(in_context(&c.scene.file))?;
-            seatings += opts.shard.range(d.n).map_err(in_context("--shard"))?.len();
+            let d = design_for(c, &opts).map_err(StudyRunError::at(&c.scene.file))?;
+            seatings += opts
+                .shard
+                .range(d.n)
+                .map_err(StudyRunError::at("--shard"))?
+                .len();
             seatings += sobol.map_or(0, |n| n * (d.dims + 2));
             designs.push(d);
         }
@@ -98,12 +98,8 @@ impl<'a> StudyPlan<'a> {
     fn kept(&self, c: &Coupling, tick: &(dyn Fn() + Sync)) -> Result<VariantReport, StudyRunError> {
         let tally = PathTally::default();
         let run = run_variant_tallied(c, &self.opts, tick, &tally)?;
-        let mut v = VariantReport::new(c, run, &self.opts).map_err(|source: StudyError| {
-            StudyRunError::Study {
-                context: c.scene.file.clone(),
-                source,
-            }
-        })?;
+        let mut v =
+            VariantReport::new(c, run, &self.opts).map_err(StudyRunError::at(&c.scene.file))?;
         v.seating_paths = Some(tally.counts());
         if let Some(n) = self.sobol {
             attach_sobol(&mut v, &run_sobol(c, &self.opts, n, tick)?);

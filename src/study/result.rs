@@ -36,6 +36,14 @@ pub enum StudyRunError {
 }
 
 impl StudyRunError {
+    /// `source` with where it happened (a scene file, an option).
+    pub(crate) fn at(context: &str) -> impl FnOnce(StudyError) -> Self + '_ {
+        move |source| StudyRunError::Study {
+            context: context.to_string(),
+            source,
+        }
+    }
+
     pub(crate) fn sink(e: impl std::error::Error + Send + Sync + 'static) -> Self {
         StudyRunError::Sink(Box::new(e))
     }

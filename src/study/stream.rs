@@ -91,13 +91,9 @@ pub fn run_streamed<S: RecordSink>(
     open: impl FnOnce(&VariantReport) -> Result<Option<S>, S::Error>,
 ) -> Result<(VariantReport, Option<S>), StudyRunError> {
     let file = &coupling.scene.file;
-    let in_file = |source| StudyRunError::Study {
-        context: file.clone(),
-        source,
-    };
     let names = recorded_output_names(coupling, &opts.variation);
     let shell = VariantRun {
-        design: design_for(coupling, opts).map_err(in_file)?,
+        design: design_for(coupling, opts).map_err(StudyRunError::at(file))?,
         shard: opts.shard,
         output_names: names.clone(),
         records: Vec::new(),
@@ -108,7 +104,7 @@ pub fn run_streamed<S: RecordSink>(
     let mut failure = None;
     let tally = PathTally::default();
     let run = run_chunked_tallied(coupling, opts, CHUNK, tick, &tally, &mut |records| {
-        let pushed = st.push(&records, &names).map_err(in_file);
+        let pushed = st.push(&records, &names).map_err(StudyRunError::at(file));
         let step = pushed.and_then(|()| match sink.as_mut() {
             Some(s) => records.into_iter().try_for_each(|r| {
                 s.push(&StudyRecord::new(coupling, &opts.variation, r))
@@ -128,6 +124,6 @@ pub fn run_streamed<S: RecordSink>(
         return Err(failure.take().unwrap_or(e.into()));
     }
     v.seating_paths = Some(tally.counts());
-    v.set_moment_stats(&st).map_err(in_file)?;
+    v.set_moment_stats(&st).map_err(StudyRunError::at(file))?;
     Ok((v, sink))
 }
