@@ -23,8 +23,8 @@
 //! ([`sampling::shard::shard_range`], 1-based `--shard i/N`). Every shard regenerates the same
 //! design from `(sampler, dims, n, seed)` — Monte Carlo rows are computed individually from
 //! `(seed, index)`, an LHS design is recomputed whole (milliseconds) and sliced — evaluates only
-//! its rows, and writes a [`stats::ShardFile`] carrying the design spec, its shard and one
-//! record per sample. No communication between shards is needed, so they map directly onto a
+//! its rows, and writes its [`StudyReport`] carrying the design spec, its shard and one record
+//! per sample. No communication between shards is needed, so they map directly onto a
 //! batch scheduler's job array, e.g. Slurm:
 //!
 //! ```text
