@@ -1,15 +1,15 @@
 //! Studies: the seven bundled scenes at 25 LHS samples (a full Table 2
 //! study), the seven at 2000 Monte Carlo samples, and 10^5 Monte Carlo
 //! samples of scene 01 streamed into moments (chunks of 8192, the route of
-//! large studies, `report::study_stream`). rayon uses every core.
+//! large studies, `study::stream`). rayon uses every core.
 
 use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::assembly::Coupling;
-use kinrepro::report::study_stream::StreamStats;
 use kinrepro::study::Sampler;
 use kinrepro::study::runner::{StudyOptions, output_names, run_chunked, run_variant};
+use kinrepro::study::stream::StreamStats;
 
 const SCENES: [&str; 7] = [
     "01_maxwell_vgroove_steel.toml",

@@ -5,8 +5,8 @@
 use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use kinrepro::explore::run::run;
 use kinrepro::explore::{DesignKind, SweepSpec};
-use kinrepro::report::sweep::run;
 use kinrepro::study::Sampler;
 use kinrepro::study::runner::{StudyOptions, Variation};
 

@@ -10,8 +10,8 @@
 use std::path::Path;
 
 use kinrepro::calibrate::model::{model_options, with_spread};
-use kinrepro::report::provenance::VERSION;
 use kinrepro::solve::Method;
+use kinrepro::study::provenance::VERSION;
 use kinrepro::study::runner::evaluate_rows;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

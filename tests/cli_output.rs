@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use common::{kinrepro, scene};
-use kinrepro::report::study::StudyReport;
+use kinrepro::study::StudyReport;
 
 fn s01() -> String {
     scene("01_maxwell_vgroove_steel.toml")
@@ -474,7 +474,7 @@ fn phi_z_is_the_rotation_seen_by_two_points() {
 #[test]
 fn a_streamed_mc_study_equals_its_merged_shards_and_writes_its_csv() {
     // Above STREAM_ABOVE Monte Carlo samples the study keeps no records.
-    let n = (kinrepro::report::study_stream::STREAM_ABOVE + 1).to_string();
+    let n = (kinrepro::study::stream::STREAM_ABOVE + 1).to_string();
     let dir = tempfile::tempdir().unwrap();
     let s = s01();
     let out = dir.path().join("out");

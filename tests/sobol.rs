@@ -6,14 +6,14 @@ mod common;
 
 use std::f64::consts::PI;
 
-use kinrepro::report::sensitivity::attach_sobol;
-use kinrepro::report::study::VariantReport;
 use kinrepro::study::Sampler;
+use kinrepro::study::VariantReport;
 use kinrepro::study::runner::{StudyOptions, run_variant};
 use kinrepro::study::sensitivity::sobol::{
     DEFAULT_BASE_SAMPLES, saltelli_rows, sobol_bootstrap, sobol_indices,
 };
 use kinrepro::study::sensitivity::sobol_run::run_sobol;
+use kinrepro::study::summary::attach_sobol;
 
 const A: f64 = 7.0;
 const B: f64 = 0.1;

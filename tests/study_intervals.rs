@@ -7,10 +7,10 @@
 mod common;
 
 use kinrepro::assembly::Coupling;
-use kinrepro::report::study::{PointStats, VariantReport};
 use kinrepro::study::runner::{StudyOptions, VariantRun, evaluate_rows, recorded_output_names};
 use kinrepro::study::stats::{BootstrapConfig, bootstrap_sigma};
 use kinrepro::study::{DesignSpec, Sampler, Shard};
+use kinrepro::study::{PointStats, VariantReport};
 
 const DESIGNS: u64 = 300;
 const POPULATION: usize = 20_000;

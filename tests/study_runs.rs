@@ -5,7 +5,7 @@ mod common;
 use common::kinrepro;
 use common::scene;
 
-use kinrepro::report::study::VariantReport;
+use kinrepro::study::VariantReport;
 use kinrepro::study::runner::{StudyOptions, run_variant};
 use kinrepro::study::{Sampler, Shard};
 

@@ -7,8 +7,8 @@ mod common;
 use common::{kinrepro, scene};
 
 use kinrepro::assembly::Coupling;
-use kinrepro::report::study::VariantReport;
 use kinrepro::solve::{PointPose, SolverOptions, quasistatic};
+use kinrepro::study::VariantReport;
 use kinrepro::study::runner::{StudyOptions, Tolerances, Variation, run_variant};
 use kinrepro::study::sensitivity::regression;
 use kinrepro::study::{Sampler, design};

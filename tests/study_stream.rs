@@ -9,10 +9,10 @@
 mod common;
 use common::load;
 
-use kinrepro::report::study_stream::StreamStats;
 use kinrepro::study::Sampler;
 use kinrepro::study::runner::{StudyOptions, output_names, run_chunked, run_variant};
 use kinrepro::study::stats::SampleRecord;
+use kinrepro::study::stream::StreamStats;
 
 fn mc(samples: usize) -> StudyOptions {
     StudyOptions {
@@ -98,5 +98,83 @@ fn streamed_statistics_equal_the_two_pass_statistics() {
             // Scatter there is: the comparison is not of zeros.
             assert!(stats.moments.iter().any(|m| m.sigma() > 0.0), "{name}");
         }
+    }
+}
+
+/// A study's statistics from its records (two passes) and from the same
+/// records streamed into moments (one pass) are one set of evaluation
+/// points: the same names in the same order, re-seating and
+/// interchangeability split alike, and equal n, mean, extremes and sigma
+/// to rounding (the two summaries are computed independently).
+#[test]
+fn kept_and_streamed_statistics_give_the_same_points() {
+    use kinrepro::study::runner::Variation;
+    use kinrepro::study::{StudyRecord, VariantReport};
+    let tolerances = Variation {
+        friction: true,
+        tolerances: true,
+        ..Default::default()
+    };
+    for (name, variation) in [
+        ("01_maxwell_vgroove_steel.toml", Variation::default()),
+        ("tolerances_maxwell_vgroove.toml", tolerances),
+    ] {
+        let c = load(name);
+        let opts = StudyOptions {
+            variation,
+            ..mc(200)
+        };
+        let kept = VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap(), &opts).unwrap();
+        let mut stats = StreamStats::new(kept.output_names.len());
+        let samples: Vec<SampleRecord> = kept.records.iter().map(StudyRecord::sample).collect();
+        stats.push(&samples, &kept.output_names).unwrap();
+        let mut streamed = kept.clone();
+        streamed.set_moment_stats(&stats).unwrap();
+        assert!(streamed.streamed && !kept.streamed);
+        assert_eq!(
+            kept.interchangeability.is_empty(),
+            name.starts_with("01"),
+            "{name}"
+        );
+        let pairs = kept.points.iter().zip(&streamed.points).chain(
+            kept.interchangeability
+                .iter()
+                .zip(&streamed.interchangeability),
+        );
+        assert_eq!(streamed.points.len(), kept.points.len());
+        assert_eq!(
+            streamed.interchangeability.len(),
+            kept.interchangeability.len()
+        );
+        for (a, b) in pairs {
+            assert_eq!((&a.name, a.n), (&b.name, b.n), "{name}");
+            assert_eq!(a.sigma_interval_method, b.sigma_interval_method);
+            let (sa, sb) = (a.sigma.values(), b.sigma.values());
+            for k in 0..6 {
+                let scale = sa[k].max(f64::MIN_POSITIVE);
+                let close = |x: f64, y: f64, tol: f64| (x - y).abs() <= tol * scale;
+                assert!(
+                    close(sa[k], sb[k], 1e-10),
+                    "{name} {} dof {k}: sigma",
+                    a.name
+                );
+                let mean = a.mean.values()[k].abs();
+                assert!(
+                    (a.mean.values()[k] - b.mean.values()[k]).abs() <= 1e-12 * (scale + mean),
+                    "{name} {} dof {k}: mean",
+                    a.name
+                );
+                assert_eq!(a.min.values()[k], b.min.values()[k]);
+                assert_eq!(a.max.values()[k], b.max.values()[k]);
+                assert!(close(a.three_sigma.values()[k], 3.0 * sb[k], 1e-10));
+                // Each route's interval brackets its sigma.
+                for p in [a, b] {
+                    let (lo, hi) = (p.sigma_ci90_low.unwrap(), p.sigma_ci90_high.unwrap());
+                    assert!(lo.values()[k] <= p.sigma.values()[k]);
+                    assert!(p.sigma.values()[k] <= hi.values()[k]);
+                }
+            }
+        }
+        assert!(kept.points.iter().any(|p| p.sigma.x_nm > 0.0), "{name}");
     }
 }

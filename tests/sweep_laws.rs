@@ -8,8 +8,9 @@
 
 mod common;
 
+use kinrepro::explore::run::run;
 use kinrepro::explore::{DesignKind, SweepSpec};
-use kinrepro::report::sweep::{DesignReport, SweepReport, run};
+use kinrepro::explore::{DesignReport, SweepReport};
 use kinrepro::study::runner::{StudyOptions, Variation};
 
 fn scene01() -> String {

@@ -1,15 +1,18 @@
 #!/usr/bin/env python3
-"""Check that src/ imports point down the layers and that no two files
-import each other (docs/architecture.md).
+"""Check that src/ imports point down the layers, that no two files import
+each other and that the modules import each other without a cycle
+(docs/architecture.md).
 
 Layers, low to high (a file may import its own layer or a lower one):
   0 material, contact   1 scene   2 assembly, error   3 solve
-  4 analysis, fe        5 study   6 explore (sweeps)
-  7 report, calibrate (calibration builds on the study document types and
-    the report renders it; no two of their files import each other)
-  8 bin (the CLI)
+  4 analysis, fe        5 study   6 explore, calibrate
+  7 report (renders the results of all below)   8 bin (the CLI)
 An import is any `crate::a::b` or `super::...` path in a file (use lines
 and paths in code alike), resolved to the file that defines the module.
+Module cycles are looked for among the top-level modules (`report` imports
+`calibrate` if any file of report/ imports one of calibrate/) and among the
+submodules of every module (e.g. `study::summary` and `study::stream`);
+a module importing its own parent or child is no cycle.
 Run from the repository root: python3 tools/layers.py
 """
 
@@ -20,7 +23,7 @@ import sys
 LAYER = {
     "material": 0, "contact": 0, "scene": 1, "assembly": 2, "error": 2,
     "solve": 3, "analysis": 4, "fe": 4, "study": 5, "explore": 6,
-    "report": 7, "calibrate": 7, "bin": 8,
+    "calibrate": 6, "report": 7, "bin": 8,
 }
 
 
@@ -83,6 +86,75 @@ def layer(path):
     return LAYER.get(top[0]) if top else None
 
 
+def module_edges(graph):
+    """Edges between sibling modules: {parent: {(a, b): (file, imported)}},
+    `a` and `b` children of `parent` (a module path as a tuple)."""
+    edges = {}
+    for f, deps in graph.items():
+        mf = module_of(f)
+        for d in deps:
+            md = module_of(d)
+            n = 0
+            while n < min(len(mf), len(md)) and mf[n] == md[n]:
+                n += 1
+            if n < len(mf) and n < len(md):
+                key = (mf[n], md[n])
+                edges.setdefault(tuple(mf[:n]), {}).setdefault(key, (f, d))
+    return edges
+
+
+def cycles(edges):
+    """One cycle per strongly connected component of more than one node
+    (Tarjan), as a list of nodes with the first repeated at the end."""
+    succ = {}
+    for a, b in edges:
+        succ.setdefault(a, []).append(b)
+        succ.setdefault(b, [])
+    index, low, stack, on, comps = {}, {}, [], set(), []
+
+    def visit(v):
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        on.add(v)
+        for w in sorted(succ[v]):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            comp = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                comp.append(w)
+                if w == v:
+                    break
+            if len(comp) > 1:
+                comps.append(set(comp))
+
+    for v in sorted(succ):
+        if v not in index:
+            visit(v)
+    out = []
+    for comp in comps:
+        # The shortest way back to the first node (breadth first).
+        start = min(comp)
+        prev, todo = {start: None}, [start]
+        while todo:
+            v = todo.pop(0)
+            for w in sorted(succ[v]):
+                if w in comp and w not in prev:
+                    prev[w] = v
+                    todo.append(w)
+        last = min(v for v in comp if start in succ[v] and v in prev)
+        path = [last]
+        while prev[path[-1]] is not None:
+            path.append(prev[path[-1]])
+        out.append(path[::-1] + [start])
+    return out
+
+
 def main():
     files = []
     for root, _, names in os.walk("src"):
@@ -101,6 +173,13 @@ def main():
                 bad.append(f"up: {f} (layer {lf}) imports {d} (layer {ld})")
             if f in graph.get(d, ()) and f < d:
                 bad.append(f"cycle: {f} <-> {d}")
+    for parent, edges in sorted(module_edges(graph).items()):
+        for c in cycles(edges):
+            name = lambda m: "::".join(parent + (m,))
+            via = "; ".join(
+                f"{edges[(a, b)][0]} imports {edges[(a, b)][1]}" for a, b in zip(c, c[1:])
+            )
+            bad.append(f"module cycle: {' -> '.join(map(name, c))} ({via})")
     for b in bad:
         print(b)
     print(f"{len(graph)} files, {sum(len(d) for d in graph.values())} imports, {len(bad)} problems")

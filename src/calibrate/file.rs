@@ -14,8 +14,8 @@ use super::likelihood::{GOF_THRESHOLD, GoodnessOfFit, Observed};
 use super::measurement::{MeasuredData, Measurement};
 use super::units::{DOFS, si_unit};
 use crate::assembly::Coupling;
-use crate::report::provenance::{Fingerprint, VERSION, fnv1a64};
 use crate::solve::Method;
+use crate::study::provenance::{Fingerprint, VERSION, fnv1a64};
 
 /// Version of the calibration file's schema (docs/measurements.md).
 pub const CALIBRATION_SCHEMA_VERSION: u32 = 2;

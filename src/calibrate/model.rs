@@ -7,9 +7,9 @@ use nalgebra::DMatrix;
 
 use super::error::CalibrateError;
 use crate::assembly::Coupling;
-use crate::report::provenance::Fingerprint;
 use crate::solve::Method;
 use crate::study::Sampler;
+use crate::study::provenance::Fingerprint;
 use crate::study::runner::{StudyOptions, run_variant};
 
 /// Samples of the model studies (`--model-samples`): the relative standard

@@ -31,9 +31,9 @@ use super::file::{Calibration, DofFit, design_hash};
 use super::model::model_options;
 use super::params::{Param, admissible};
 use crate::assembly::Coupling;
-use crate::report::study::{Dofs, PointStats, VariantReport};
 use crate::solve::Method;
 use crate::study::runner::run_variant;
+use crate::study::{Dofs, PointStats, VariantReport};
 
 /// The interval method named in `sigma_interval_method`.
 pub const PREDICTION_METHOD: &str = "calibrated prediction: range of sigma over the calibration's 90 % profile-likelihood parameter region (studies at its points, common random numbers) and Bonett's 90 % interval of the Monte Carlo study at the estimate, combined in quadrature on ln sigma";

@@ -7,15 +7,20 @@
 //! same design (same seed: common random numbers across the designs), plus
 //! the nominal seating's principal stiffnesses, smallest safety factor
 //! against the allowable pressure, friction limit and approach. [`pareto`]
-//! marks the designs no other design beats.
+//! marks the designs no other design beats. [`run`] runs the design points
+//! (rayon across them) into the sweep's document; [`merge`] joins its
+//! shards.
 //!
 //! Data flow: scene -> assembly -> solve -> study -> explore; the sweep's
-//! document, tables, CSV and charts are in `report::sweep*`.
+//! tables, CSV and charts are in `report::sweep_text` and
+//! `report::sweep_plot`.
 
 pub mod design;
 pub mod evaluate;
 pub mod field;
+pub mod merge;
 pub mod pareto;
+pub mod run;
 pub mod values;
 
 use thiserror::Error;
@@ -23,6 +28,8 @@ use thiserror::Error;
 pub use design::{DesignKind, DesignPoint, design_points};
 pub use evaluate::{Evaluation, Nominal, Outcome, evaluate, point_text};
 pub use field::{FieldError, FieldKind, SweptValue};
+pub use merge::{SweepMergeError, merge_sweeps};
+pub use run::{DesignReport, SweepError, SweepReport};
 pub use values::{Levels, Set, ValuesError};
 
 /// A sweep that cannot be set up (the whole command fails with this line;

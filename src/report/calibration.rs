@@ -7,9 +7,9 @@ use serde_json::{Map, Value, json};
 use crate::calibrate::fit::{Calibration, Correlation, DofFit};
 use crate::calibrate::predict::Prediction;
 use crate::calibrate::units::{DOFS, dof_index, human_unit};
-use crate::report::provenance::VERSION;
-use crate::report::study::StudyReport;
 use crate::study::Shard;
+use crate::study::StudyReport;
+use crate::study::provenance::VERSION;
 
 /// The first line of a calibration's table.
 pub fn calibration_produced_by(c: &Calibration) -> String {

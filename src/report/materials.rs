@@ -7,8 +7,8 @@ use std::fmt::Write;
 use serde::Serialize;
 
 use crate::material::{BUILTIN, BuiltinMaterial};
-use crate::report::provenance::{SCHEMA_VERSION, VERSION};
 use crate::report::study_text::csv_field;
+use crate::study::provenance::{SCHEMA_VERSION, VERSION};
 
 /// Header of `kinrepro materials --format csv` (SI units).
 pub const MATERIALS_HEADER: &str = "kinrepro_version,name,description,youngs_modulus_pa,poisson_ratio,density_kg_per_m3,allowable_pressure_pa,source_elastic,source_density,source_allowable_pressure";

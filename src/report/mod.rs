@@ -1,5 +1,6 @@
-//! Human-facing text: tables with labelled units. Every number comes from
-//! the library's result types; nothing here computes physics.
+//! Renders the results: text tables with labelled units, CSV, JSON, SVG
+//! plots and the HTML report. Every number comes from the library's result
+//! types; nothing here computes physics, runs a study or runs in parallel.
 
 pub mod analysis;
 pub mod atomic;
@@ -9,20 +10,13 @@ pub mod check;
 pub mod contact;
 pub mod html;
 pub mod materials;
-pub mod merge;
-pub mod provenance;
+pub mod plot;
 pub mod run;
 pub mod safety;
 pub mod sensitivity;
-pub mod study;
-pub mod study_checks;
 pub mod study_files;
-pub mod study_record;
-pub mod study_stats;
-pub mod study_stream;
 pub mod study_table;
 pub mod study_text;
-pub mod sweep;
 pub mod sweep_plot;
 pub mod sweep_text;
 pub mod trace;

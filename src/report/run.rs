@@ -19,7 +19,7 @@ pub struct PointReport {
 /// Everything `kinrepro run` reports.
 #[derive(Debug, Clone, Serialize)]
 pub struct RunReport {
-    /// What produced it (`report::provenance`).
+    /// What produced it (`study::provenance`).
     pub kinrepro_version: String,
     pub schema_version: u32,
     pub scene: String,
@@ -61,8 +61,8 @@ impl RunReport {
             })
             .collect();
         RunReport {
-            kinrepro_version: crate::report::provenance::VERSION.to_string(),
-            schema_version: crate::report::provenance::SCHEMA_VERSION,
+            kinrepro_version: crate::study::provenance::VERSION.to_string(),
+            schema_version: crate::study::provenance::SCHEMA_VERSION,
             scene: coupling.scene.file.clone(),
             name: coupling.scene.name.clone(),
             solver: solver.to_string(),

@@ -1,41 +1,12 @@
-//! Sobol indices in a study report: attaching them to the variant's
-//! sensitivity blocks (JSON `variants[i].sensitivity[k].sobol`) and the text
-//! table, one per block: per input (e.g. each contact's friction coefficient
-//! mu_k) and DOF, the first-order index S and the total index ST with their
-//! 90 % bootstrap intervals (see [`crate::study::sensitivity::sobol`]).
+//! Sobol indices in a study report: the text table, one per sensitivity
+//! block: per input (e.g. each contact's friction coefficient mu_k) and DOF,
+//! the first-order index S and the total index ST with their 90 % bootstrap
+//! intervals (see [`crate::study::sensitivity::sobol`]).
 
 use std::fmt::Write;
 
-use crate::report::study::VariantReport;
 use crate::study::sensitivity::SensitivityBlock;
-use crate::study::sensitivity::sobol::{SobolDof, SobolRun};
-
-/// Fill `sobol` of every sensitivity block of `v` from the seated Saltelli
-/// matrices `run` (same outputs and inputs as the block's SRC table).
-pub fn attach_sobol(v: &mut VariantReport, run: &SobolRun) {
-    let inputs = v.inputs.clone();
-    let Some(blocks) = v.sensitivity.as_mut() else {
-        return;
-    };
-    for b in blocks.iter_mut() {
-        let cols: Vec<usize> = b
-            .inputs
-            .iter()
-            .filter_map(|name| inputs.iter().position(|n| n == name))
-            .collect();
-        let outputs: Vec<(usize, String)> = b
-            .dofs
-            .iter()
-            .filter_map(|d| {
-                run.output_names
-                    .iter()
-                    .position(|n| *n == d.output)
-                    .map(|k| (k, d.output.clone()))
-            })
-            .collect();
-        b.sobol = Some(run.block(&cols, &outputs));
-    }
-}
+use crate::study::sensitivity::sobol::SobolDof;
 
 /// DOF label of an output name `point/x_m` -> `x`.
 fn dof_label(output: &str) -> String {

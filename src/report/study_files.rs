@@ -8,10 +8,11 @@ use std::path::Path;
 
 use crate::report::atomic::{self, AtomicFile, WriteError};
 use crate::report::html::charts::study_charts;
-use crate::report::provenance::{SCHEMA_VERSION, VERSION, produced_by};
-use crate::report::study::{StudyRecord, StudyReport, VariantReport};
 use crate::report::study_text::{csv_field, point_csv_fields};
+use crate::study::provenance::{SCHEMA_VERSION, VERSION, produced_by};
 use crate::study::runner::INTERCHANGE_PREFIX;
+use crate::study::stream::RecordSink;
+use crate::study::{StudyRecord, StudyReport, VariantReport};
 
 /// Header of the summary CSV: provenance columns, then the statistics (SI).
 pub const SUMMARY_HEADER: &str = "kinrepro_version,schema_version,solver,sampler,seed,samples,vary,scene,name,point,dof,unit,n,mean,min,max,sigma,three_sigma,sigma_ci90_low,sigma_ci90_high,sigma_interval_method";
@@ -121,7 +122,7 @@ impl SamplesCsv {
                 &v.sampler.to_string(),
                 &v.seed.to_string(),
                 &v.samples.to_string(),
-                &crate::report::study::varied_kinds(&v.variation()).join("+"),
+                &crate::study::result::varied_kinds(&v.variation()).join("+"),
             ),
             v.scene
         );
@@ -150,8 +151,17 @@ impl SamplesCsv {
             })
     }
 
+    /// Complete the file (rename over the target).
+    pub fn commit(self) -> Result<(), WriteError> {
+        self.file.commit()
+    }
+}
+
+impl RecordSink for SamplesCsv {
+    type Error = WriteError;
+
     /// One sample's row.
-    pub fn push(&mut self, r: &StudyRecord) -> Result<(), WriteError> {
+    fn push(&mut self, r: &StudyRecord) -> Result<(), WriteError> {
         let mut t = format!("{}", r.index);
         for m in &r.physical {
             let _ = write!(t, ",{m:e}");
@@ -161,10 +171,5 @@ impl SamplesCsv {
         }
         t.push('\n');
         self.write(t.as_bytes())
-    }
-
-    /// Complete the file (rename over the target).
-    pub fn commit(self) -> Result<(), WriteError> {
-        self.file.commit()
     }
 }

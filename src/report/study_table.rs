@@ -4,10 +4,10 @@
 use std::fmt::Write;
 
 use crate::contact::FrictionLaw;
-use crate::report::study::{StudyReport, VariantReport};
 use crate::report::study_text::{bounds_text, detail, sigma_table, varied};
 use crate::study::runner::INTERCHANGE_PREFIX;
 use crate::study::sensitivity::{self, SensitivityBlock};
+use crate::study::{StudyReport, VariantReport};
 
 impl StudyReport {
     /// The text table: the variants side by side as in the paper's Table 2,

@@ -3,9 +3,10 @@
 
 use std::fmt::Write;
 
-use crate::report::study::{Dofs, PointStats, VariantReport, varied_kinds};
 use crate::scene::VariationBounds;
+use crate::study::result::varied_kinds;
 use crate::study::runner::COMPONENTS;
+use crate::study::{Dofs, PointStats, VariantReport};
 
 /// The Table 2 style sigma table of `points(v)` for every variant.
 pub(crate) fn sigma_table(

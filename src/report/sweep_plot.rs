@@ -15,11 +15,11 @@ use plotters::prelude::*;
 use thiserror::Error;
 
 use crate::explore::SweptValue;
+use crate::explore::{DesignReport, SweepReport};
 use crate::report::atomic::{WriteError, check_overwrite, write_file};
-use crate::report::study::PointStats;
-use crate::report::sweep::{DesignReport, SweepReport};
+use crate::report::plot::{Dof, color};
 use crate::report::sweep_text::short as tick;
-use crate::study::plot::{Dof, color};
+use crate::study::PointStats;
 
 /// A chart could not be drawn or written.
 #[derive(Debug, Error)]
@@ -195,9 +195,8 @@ fn sigma_chart(r: &SweepReport, k: usize, area: &Area) -> Result<(), SweepPlotEr
                     .iter()
                     .filter_map(|(x, d)| {
                         let p = point(r, d)?;
-                        let ci = |c: &Option<crate::report::study::Dofs>| {
-                            c.map_or(f64::NAN, |c| c.values()[j])
-                        };
+                        let ci =
+                            |c: &Option<crate::study::Dofs>| c.map_or(f64::NAN, |c| c.values()[j]);
                         Some([
                             *x,
                             p.sigma.values()[j],

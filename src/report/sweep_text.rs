@@ -3,9 +3,9 @@
 use std::fmt::Write;
 
 use crate::explore::SweptValue;
-use crate::report::provenance::{SCHEMA_VERSION, VERSION};
+use crate::explore::{DesignReport, SweepReport};
 use crate::report::study_text::{csv_field, point_csv_fields, truncate};
-use crate::report::sweep::{DesignReport, SweepReport};
+use crate::study::provenance::{SCHEMA_VERSION, VERSION};
 
 /// A number in at most 4 significant digits, no trailing zeros (tables
 /// and chart ticks; the JSON and CSV keep every digit).

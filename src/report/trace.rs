@@ -15,9 +15,9 @@
 use std::io::Write;
 
 use crate::assembly::Coupling;
-use crate::report::provenance::{SCHEMA_VERSION, VERSION};
 use crate::solve::PointPose;
 use crate::solve::dynamic::TraceSample;
+use crate::study::provenance::{SCHEMA_VERSION, VERSION};
 
 /// Writes trace samples as CSV rows.
 pub struct TraceWriter<W: Write> {

@@ -1,6 +1,12 @@
-//! Statistics part of `kinrepro`: sampling designs over the per-contact friction coefficients,
-//! descriptive statistics of the re-seating scatter, merging of sharded runs and SVG plots.
+//! Reproducibility studies: sampling designs over the varied inputs, the seatings of every
+//! sample, the study document with its statistics (the numbers every output renders) and
+//! merging of sharded runs; `report` renders them (text, CSV, SVG, HTML).
 //!
+//! * [`document`]: a study of several scenes into one [`StudyReport`] (plan and run);
+//!   [`runner`]: one scene's seatings; [`stream`]: large Monte Carlo studies in bounded memory.
+//! * [`result`], [`record`]: the document's types ([`StudyReport`], [`VariantReport`],
+//!   [`PointStats`], [`StudyRecord`]); [`summary`]: their statistics; [`merge`]: shard parts
+//!   into one document; [`provenance`]: schema version and the fingerprint of a study.
 //! * [`sampling`]: optimised Latin hypercube (replicated: r independent LHS of n/r points),
 //!   plain Monte Carlo and full-factorial corners over [0, 1]^d, each a pure function of
 //!   `(sampler, dims, n, seed, replicates)`; shard ranges.
@@ -10,7 +16,6 @@
 //!   shard merging.
 //! * [`sensitivity`]: SRC shares (linear regression) and first-order and total Sobol indices
 //!   (Saltelli matrices seated with [`runner::evaluate_rows`]) with bootstrap intervals.
-//! * [`plot`]: sigma per variant and DOF, x-y scatter, convergence of sigma (SVG, plotters).
 //!
 //! # Scaling out with shards
 //!
@@ -18,8 +23,8 @@
 //! ([`sampling::shard::shard_range`], 1-based `--shard i/N`). Every shard regenerates the same
 //! design from `(sampler, dims, n, seed)` — Monte Carlo rows are computed individually from
 //! `(seed, index)`, an LHS design is recomputed whole (milliseconds) and sliced — evaluates only
-//! its rows, and writes a [`stats::ShardFile`] carrying the design spec, its shard and one
-//! record per sample. No communication between shards is needed, so they map directly onto a
+//! its rows, and writes its [`StudyReport`] carrying the design spec, its shard and one record
+//! per sample. No communication between shards is needed, so they map directly onto a
 //! batch scheduler's job array, e.g. Slurm:
 //!
 //! ```text
@@ -31,25 +36,31 @@
 //! kinrepro merge part_*.json
 //! ```
 //!
-//! `merge` ([`stats::merge`]) checks that all parts share one design and output list and that
-//! the sample indices 0..n appear exactly once, sorts the records by index and recomputes the
-//! statistics, so the merged result is bit-for-bit the one of a single run. A failed array task
-//! is simply re-run with the same `--shard`.
-//!
-//! The module refers to its parts only through `super::` paths so that it can be moved to
-//! `src/study/` of the kinrepro crate unchanged (this file becoming `src/study/mod.rs`).
+//! `merge` ([`merge::merge_parts`], [`stats::merge`]) checks that all parts share one design and
+//! output list and that the sample indices 0..n appear exactly once, sorts the records by index
+//! and recomputes the statistics, so the merged result is the one of a single run. A failed
+//! array task is simply re-run with the same `--shard`.
 
+pub mod document;
 pub mod error;
 pub mod inputs;
+pub mod merge;
 pub mod paths;
-pub mod plot;
+pub mod provenance;
+pub mod record;
+pub mod result;
 mod rng;
 pub mod runner;
 pub mod sampling;
 pub mod sensitivity;
 pub mod stats;
+pub mod stream;
+pub mod summary;
 pub mod variation;
 
+pub use document::StudyPlan;
 pub use error::{Result, StudyError};
+pub use record::{Dofs, PointStats, StudyRecord};
+pub use result::{StudyReport, StudyRunError, VariantReport};
 pub use sampling::shard::{Shard, shard_range};
 pub use sampling::{DesignSpec, Sampler, design, sample_range};

@@ -136,14 +136,12 @@ pub(crate) fn mean_sigma_unchecked(values: &[f64]) -> (f64, f64) {
 /// Full summary of one quantity (values in design order), with the interval of `method`.
 pub fn summarize(values: &[f64], method: SigmaMethod) -> Result<Summary> {
     let (mean, sigma) = mean_sigma(values)?;
+    let min = values.iter().copied().fold(f64::INFINITY, f64::min);
+    let max = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let summary =
+        |sigma, interval, how| summary(values.len(), mean, sigma, [min, max], interval, how);
     if method == SigmaMethod::Iid && values.len() < 3 {
-        return summary(
-            values,
-            mean,
-            sigma,
-            None,
-            "none (fewer than 3 samples)".into(),
-        );
+        return summary(sigma, None, "none (fewer than 3 samples)".into());
     }
     let (sigma, sigma_interval) = match method {
         SigmaMethod::Iid => (sigma, Some(sigma_interval_iid(values, interval::LEVEL)?)),
@@ -153,13 +151,25 @@ pub fn summarize(values: &[f64], method: SigmaMethod) -> Result<Summary> {
         }
         SigmaMethod::Corners | SigmaMethod::SingleLhs => (sigma, None),
     };
-    summary(values, mean, sigma, sigma_interval, method.describe())
+    summary(sigma, sigma_interval, method.describe())
+}
+
+/// Summary of one quantity from its streamed moments (independent samples): sigma with
+/// divisor n - 1 and Bonett's interval from the moments ([`sigma_interval_from_moments`]).
+pub fn summarize_moments(m: &Moments) -> Result<Summary> {
+    let (n, sigma, how) = (m.n as usize, m.sigma(), SigmaMethod::Iid.describe());
+    let s = summary(n, m.mean, sigma, [m.min, m.max], None, how)?;
+    Ok(Summary {
+        sigma_interval: Some(sigma_interval_from_moments(m, interval::LEVEL)?),
+        ..s
+    })
 }
 
 fn summary(
-    values: &[f64],
+    n: usize,
     mean: f64,
     sigma: f64,
+    [min, max]: [f64; 2],
     sigma_interval: Option<Interval>,
     sigma_interval_method: String,
 ) -> Result<Summary> {
@@ -168,10 +178,8 @@ fn summary(
             what: "mean or sigma (overflow)".into(),
         });
     }
-    let min = values.iter().copied().fold(f64::INFINITY, f64::min);
-    let max = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     Ok(Summary {
-        n: values.len(),
+        n,
         mean,
         min,
         max,

@@ -19,19 +19,19 @@ use kinrepro::calibrate::CalibrateError;
 use kinrepro::contact::ContactError;
 use kinrepro::contact::history::{HistoryCsvError, HistoryError};
 use kinrepro::explore::ExploreError;
+use kinrepro::explore::{SweepError, SweepMergeError};
 use kinrepro::fe::FeError;
 use kinrepro::material::MaterialError;
 use kinrepro::report::analysis::ReportError;
 use kinrepro::report::atomic::WriteError;
 use kinrepro::report::calibration_plot::PlotError as CalibrationPlotError;
 use kinrepro::report::html::HtmlError;
-use kinrepro::report::merge::MergeError;
-use kinrepro::report::sweep::{SweepError, SweepMergeError};
 use kinrepro::report::sweep_plot::SweepPlotError;
 use kinrepro::scene::SceneError;
 use kinrepro::solve::SolveError;
-use kinrepro::study::StudyError;
+use kinrepro::study::merge::MergeError;
 use kinrepro::study::runner::RunError;
+use kinrepro::study::{StudyError, StudyRunError};
 use thiserror::Error;
 
 #[derive(Debug, Error)]
@@ -61,6 +61,8 @@ pub enum CliError {
     Study(#[from] StudyError),
     #[error("{0}")]
     Run(#[from] RunError),
+    #[error("{0}")]
+    StudyRun(#[from] StudyRunError),
     #[error("{0}")]
     Report(#[from] ReportError),
     #[error("{0}")]

@@ -7,15 +7,15 @@
 use std::path::Path;
 
 use crate::report::html::reference::ReferenceRow;
-use crate::report::study::{PointStats, VariantReport};
-use crate::report::study_text::truncate;
-use crate::study::StudyError;
-use crate::study::plot::{
+use crate::report::plot::{
     ConvergenceSeries, Dof, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
     xy_scatter_svg,
 };
+use crate::report::study_text::truncate;
+use crate::study::StudyError;
 use crate::study::runner::INTERCHANGE_PREFIX;
 use crate::study::stats::sigma_convergence;
+use crate::study::{PointStats, VariantReport};
 
 /// One chart: the file name `--out` gives it, a title and the SVG text.
 #[derive(Debug, Clone, PartialEq)]

@@ -15,9 +15,9 @@ use std::path::{Path, PathBuf};
 use super::HtmlError;
 use super::prediction::PredictionInput;
 use crate::assembly::Coupling;
-use crate::report::provenance::{Fingerprint, SCHEMA_VERSION};
-use crate::report::study::StudyReport;
 use crate::scene::Scene;
+use crate::study::StudyReport;
+use crate::study::provenance::{Fingerprint, SCHEMA_VERSION};
 use crate::study::runner::StudyOptions;
 
 /// One scene of a study: its file text and its coupling.

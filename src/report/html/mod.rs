@@ -32,11 +32,11 @@ use thiserror::Error;
 
 use crate::analysis::stiffness::CouplingStiffness;
 use crate::assembly::AssemblyError;
-use crate::report::provenance::VERSION;
-use crate::report::study::VariantReport;
 use crate::scene::{Scene, SceneError};
 use crate::solve::SolveError;
 use crate::study::StudyError;
+use crate::study::VariantReport;
+use crate::study::provenance::VERSION;
 pub use inputs::{SceneInput, StudyInput, load_study, scene_input};
 use page::escape;
 pub use reference::{ReferenceRow, load_reference, parse_reference};

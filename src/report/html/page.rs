@@ -3,7 +3,7 @@
 //! Security Policy that allows only inline styles and data: images keeps
 //! the browser from fetching anything.
 
-use crate::report::provenance::VERSION;
+use crate::study::provenance::VERSION;
 
 /// Escape text for HTML element content and attribute values.
 pub fn escape(s: &str) -> String {

@@ -16,7 +16,7 @@
 use std::path::Path;
 
 use crate::report::html::HtmlError;
-use crate::report::study::VariantReport;
+use crate::study::VariantReport;
 
 /// The header a reference file must have.
 pub const REFERENCE_HEADER: &str =

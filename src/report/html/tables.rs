@@ -5,8 +5,8 @@ use std::fmt::Write;
 
 use super::page::{escape, num};
 use super::reference::ReferenceRow;
-use crate::report::study::varied_kinds;
-use crate::report::study::{PointStats, StudyReport, VariantReport};
+use crate::study::result::varied_kinds;
+use crate::study::{PointStats, StudyReport, VariantReport};
 
 /// The provenance of one study: version, schema, solver, sampler, seed,
 /// samples, what varied, shard; then one row per scene.

@@ -10,7 +10,7 @@ mod seat;
 mod study;
 pub mod sweep;
 
-use kinrepro::report::study::StudyReport;
+use kinrepro::study::StudyReport;
 
 use crate::args::{Command, Format};
 use crate::error::CliError;

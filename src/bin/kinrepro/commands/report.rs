@@ -9,7 +9,7 @@ use kinrepro::assembly::Coupling;
 use kinrepro::report::html::{
     HtmlReport, Section, StudyInput, load_reference, load_study, scene_input,
 };
-use kinrepro::report::study::StudyReport;
+use kinrepro::study::StudyReport;
 
 use super::*;
 use crate::args::Format;
@@ -79,7 +79,7 @@ pub fn study_html(
 /// `sweep --html FILE`: the sweep's design charts (each carries its
 /// provenance line) as sections of a self-contained HTML report.
 pub fn sweep_html(
-    report: &kinrepro::report::sweep::SweepReport,
+    report: &kinrepro::explore::SweepReport,
     out: &Path,
     force: bool,
 ) -> Result<(), CliError> {

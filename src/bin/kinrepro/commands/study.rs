@@ -1,21 +1,13 @@
 //! `kinrepro study` and `kinrepro merge`: reproducibility studies.
 
-use kinrepro::assembly::Coupling;
-use kinrepro::report::study::{StudyReport, VariantReport};
 use kinrepro::report::study_files::{SamplesCsv, samples_file_name};
-use kinrepro::report::study_stream::{STREAM_ABOVE, StreamStats, streams};
-use kinrepro::study::Shard;
-use kinrepro::study::runner::{
-    PathTally, Progress, StartBounds, StudyOptions, VariantRun, Variation, design_for,
-    recorded_output_names, run_chunked, run_variant,
-};
+use kinrepro::study::runner::{StartBounds, StudyOptions, Variation};
+use kinrepro::study::stream::STREAM_ABOVE;
+use kinrepro::study::{Shard, StudyPlan, StudyReport};
 
 use super::*;
 use crate::args::*;
-use crate::error::{CliError, Context};
-
-/// Rows seated per chunk of a streamed study.
-const CHUNK: usize = 8192;
+use crate::error::CliError;
 
 pub fn study(args: StudyArgs) -> Result<(), CliError> {
     let opts = options(&args)?;
@@ -29,60 +21,37 @@ pub fn study(args: StudyArgs) -> Result<(), CliError> {
             "--sobol-samples: the base sample size must be at least 2".into(),
         ));
     }
-    // Sobol indices need the whole design in one run (not per shard).
-    let sobol = args.sensitivity && opts.shard.count == 1;
-    let mut total = 0;
-    let mut streamed = false;
-    for c in &couplings {
-        kinrepro::study::runner::check_options(c, &opts)?;
-        let d = design_for(c, &opts).context(&c.scene.file)?;
-        total += opts.shard.range(d.n).context("--shard")?.len();
-        streamed |= streams(&d) && opts.shard.count == 1;
-        if sobol {
-            total += args.sobol_samples * (d.dims + 2);
-        }
-    }
-    if streamed && opts.sensitivity {
+    let plan = StudyPlan::new(
+        &couplings,
+        opts,
+        args.sensitivity.then_some(args.sobol_samples),
+    )?;
+    if plan.streamed() && opts.sensitivity {
         return Err(CliError::Usage(format!(
             "--sensitivity keeps every sample in memory: not available for Monte Carlo studies above {STREAM_ABOVE} samples"
         )));
     }
-    set_jobs(args.jobs, total)?;
-    let bar = progress(total)?;
-    let mut variants = Vec::new();
-    let mut pending_csv = Vec::new();
-    for (i, c) in couplings.iter().enumerate() {
-        let d = design_for(c, &opts).context(&c.scene.file)?;
-        if streams(&d) && opts.shard.count == 1 {
-            let (v, csv) = streamed_variant(i, c, &opts, &args, &|| bar.inc(1))?;
-            variants.push(v);
-            pending_csv.extend(csv);
-        } else {
-            let tally = PathTally::default();
-            let run = run_variant(c, &opts, Progress::with_tally(&|| bar.inc(1), &tally))?;
-            let mut v = VariantReport::new(c, run, &opts).context(&c.scene.file)?;
-            v.seating_paths = Some(tally.counts());
-            if sobol {
-                let r = kinrepro::study::sensitivity::sobol_run::run_sobol(
-                    c,
-                    &opts,
-                    args.sobol_samples,
-                    &|| bar.inc(1),
-                )?;
-                kinrepro::report::sensitivity::attach_sobol(&mut v, &r);
-            }
-            variants.push(v);
-        }
+    set_jobs(args.jobs, plan.seatings)?;
+    let bar = progress(plan.seatings)?;
+    // A streamed study writes its per-sample CSV as the samples arrive.
+    let samples_dir = args.out.as_deref().filter(|_| plan.streamed());
+    if let Some(dir) = samples_dir {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| CliError::file(dir.display(), "cannot create the folder: ", e))?;
     }
+    let (report, pending_csv) = plan.run(&|| bar.inc(1), |i, v| {
+        samples_dir
+            .map(|dir| SamplesCsv::create(&dir.join(samples_file_name(i, v)), v, args.force))
+            .transpose()
+    })?;
     bar.finish_and_clear();
-    let report = StudyReport::new(variants, opts.shard);
     // Results first: a failed file write must not lose them.
     print_study(&report, args.format)?;
     for csv in pending_csv {
         csv.commit()?;
     }
     if let Some(dir) = &args.out {
-        for f in report.write_files(dir, args.force, streamed)? {
+        for f in report.write_files(dir, args.force, plan.streamed())? {
             eprintln!("wrote {f}");
         }
     }
@@ -111,71 +80,6 @@ fn refuse_unseated(report: &StudyReport, allow: bool) -> Result<(), CliError> {
         return Ok(());
     }
     Err(CliError::CannotSeat(bad.join("; ")))
-}
-
-/// One scene's Monte Carlo study streamed in chunks: moments in sample
-/// order, the per-sample CSV (if `--out`) written as it goes.
-fn streamed_variant(
-    i: usize,
-    c: &Coupling,
-    opts: &StudyOptions,
-    args: &StudyArgs,
-    tick: &(dyn Fn() + Sync),
-) -> Result<(VariantReport, Option<SamplesCsv>), CliError> {
-    let file = &c.scene.file;
-    let d = design_for(c, opts).context(file)?;
-    let names = recorded_output_names(c, &opts.variation);
-    let shell = VariantRun {
-        design: d,
-        shard: opts.shard,
-        output_names: names.clone(),
-        records: Vec::new(),
-    };
-    let mut v = VariantReport::unfinished(c, shell, opts);
-    let mut csv = match &args.out {
-        Some(dir) => {
-            std::fs::create_dir_all(dir)
-                .map_err(|e| CliError::file(dir.display(), "cannot create the folder: ", e))?;
-            let path = dir.join(samples_file_name(i, &v));
-            Some(SamplesCsv::create(&path, &v, args.force)?)
-        }
-        None => None,
-    };
-    let mut st = StreamStats::new(names.len());
-    let mut failure: Option<CliError> = None;
-    let tally = PathTally::default();
-    let progress = Progress::with_tally(tick, &tally);
-    let run = run_chunked(c, opts, CHUNK, progress, &mut |records| {
-        let step = st
-            .push(&records, &names)
-            .context(file)
-            .and_then(|()| match csv.as_mut() {
-                Some(w) => records.iter().try_for_each(|r| {
-                    w.push(&kinrepro::report::study::StudyRecord {
-                        index: r.index,
-                        physical: opts.variation.sample(c, &r.inputs).physical,
-                        inputs: r.inputs.clone(),
-                        outputs: r.outputs.clone(),
-                    })
-                    .map_err(CliError::from)
-                }),
-                None => Ok(()),
-            });
-        if let Err(e) = step {
-            failure = Some(e);
-            return Err(kinrepro::study::runner::RunError::Options {
-                file: file.clone(),
-                reason: "stopped".into(),
-            });
-        }
-        Ok(())
-    });
-    if let Err(e) = run {
-        return Err(failure.take().unwrap_or_else(|| e.into()));
-    }
-    v.seating_paths = Some(tally.counts());
-    v.set_moment_stats(&st).context(file)?;
-    Ok((v, csv))
 }
 
 /// The study options from the command line.
@@ -260,7 +164,7 @@ pub fn merge(args: MergeArgs) -> Result<(), CliError> {
         return super::sweep::merge(&parts, first, format);
     }
     let docs = read_json_parts::<StudyReport>(&parts, first, "study")?;
-    let merged = kinrepro::report::merge::merge_parts(docs)?;
+    let merged = kinrepro::study::merge::merge_parts(docs)?;
     print_study(&merged, format)?;
     refuse_unseated(&merged, true)
 }

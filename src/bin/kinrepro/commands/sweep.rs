@@ -1,11 +1,12 @@
 //! `kinrepro sweep`: reproducibility, stiffness and safety over a grid or
-//! an LHS of scene fields (library: `explore`, `report::sweep*`).
+//! an LHS of scene fields (library: `explore`; output: `report::sweep_text`, `report::sweep_plot`).
 
 use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
+use kinrepro::explore::run::run;
 use kinrepro::explore::{DesignKind, SweepSpec};
-use kinrepro::report::sweep::{SweepReport, merge_sweeps, run};
+use kinrepro::explore::{SweepReport, merge_sweeps};
 use kinrepro::study::runner::{StudyOptions, Variation};
 use kinrepro::study::{Sampler, Shard};
 

@@ -4,7 +4,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::study::stats::SampleRecord;
+use super::runner::Variation;
+use super::stats::SampleRecord;
+use crate::assembly::Coupling;
 
 /// Six DOFs in human units: x, y, z [nm], phi_x, phi_y, phi_z [nrad]
 /// (phi_z: clocking about z).
@@ -63,6 +65,17 @@ pub struct StudyRecord {
 }
 
 impl StudyRecord {
+    /// The record of a seated sample, with the physical values its design
+    /// row maps to under `variation`.
+    pub fn new(coupling: &Coupling, variation: &Variation, r: SampleRecord) -> Self {
+        StudyRecord {
+            index: r.index,
+            physical: variation.sample(coupling, &r.inputs).physical,
+            inputs: r.inputs,
+            outputs: r.outputs,
+        }
+    }
+
     /// The statistics' view of this record (design coordinates and outputs).
     pub fn sample(&self) -> SampleRecord {
         SampleRecord {

@@ -14,8 +14,8 @@
 //!   evaluation point (each named), common axes.
 //! * [`convergence_svg`]: sigma of the first k samples against k, one panel per DOF (all six).
 //!
-//! Each `*_svg` function returns the SVG text (for the HTML report); the `plot_*` functions
-//! write it to a file.
+//! Each `*_svg` function returns the SVG text (`kinrepro study --out` writes it to a file,
+//! the HTML report inlines it; both through `html::charts::study_charts`).
 //!
 //! Colours: the Okabe & Ito (2008) colour-blind-safe palette (then four of Paul Tol's), by
 //! variant (or series) order.
@@ -24,17 +24,15 @@ mod bars;
 mod convergence;
 mod scatter;
 
-pub use bars::{plot_sigma_bars, sigma_bars_svg};
-pub use convergence::{convergence_svg, plot_convergence};
-pub use scatter::{plot_xy_scatter, xy_scatter_svg};
-
-use std::path::Path;
+pub use bars::sigma_bars_svg;
+pub use convergence::convergence_svg;
+pub use scatter::xy_scatter_svg;
 
 use plotters::style::RGBColor;
 use serde::{Deserialize, Serialize};
 
-use super::error::{Result, StudyError};
-use super::stats::ConvergencePoint;
+use crate::study::stats::ConvergencePoint;
+use crate::study::{Result, StudyError};
 
 /// The degrees of freedom of the re-seating error that kinrepro reports.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -132,11 +130,6 @@ const PALETTE: [RGBColor; 12] = [
     RGBColor(153, 153, 51),
     RGBColor(136, 136, 136),
 ];
-
-/// Write an SVG text to `path`.
-pub(crate) fn write_svg(path: &Path, svg: &str) -> Result<()> {
-    std::fs::write(path, svg).map_err(|e| StudyError::Plot(format!("{}: {e}", path.display())))
-}
 
 pub(crate) fn color(i: usize) -> RGBColor {
     PALETTE[i % PALETTE.len()]

@@ -1,17 +1,10 @@
 //! x-y scatter of the errors of the samples, one panel per variant and
 //! evaluation point.
 
-use std::path::Path;
-
 use plotters::prelude::*;
 
-use super::super::error::{Result, StudyError};
-use super::{VariantScatter, check_finite, color, headroom, plot_err, write_svg};
-
-/// Writes [`xy_scatter_svg`] to `path`.
-pub fn plot_xy_scatter(path: &Path, data: &[VariantScatter]) -> Result<()> {
-    write_svg(path, &xy_scatter_svg(data)?)
-}
+use super::{VariantScatter, check_finite, color, headroom, plot_err};
+use crate::study::{Result, StudyError};
 
 /// An SVG with one square panel per variant and evaluation point (grid),
 /// captioned `variant · point (n samples)`, all with the same symmetric axes

@@ -3,14 +3,15 @@
 //! fingerprints ([`Fingerprint`]); a refusal names the part and the field
 //! that differs, or the shards (and their sample ranges) that are missing.
 //! The statistics are recomputed from the records sorted by sample index, so
-//! the merged result equals one run bit for bit.
+//! the merged result equals the one of a single run.
 
 use thiserror::Error;
 
-use crate::report::provenance::{Fingerprint, SCHEMA_VERSION};
-use crate::report::study::{StudyRecord, StudyReport, VariantReport};
-use crate::study::stats::{ShardFile, merge, verify_inputs};
-use crate::study::{Shard, StudyError};
+use super::provenance::{Fingerprint, SCHEMA_VERSION};
+use super::record::StudyRecord;
+use super::result::{StudyReport, VariantReport};
+use super::stats::{ShardFile, merge, verify_inputs};
+use super::{Shard, StudyError};
 
 /// Why parts could not be merged (one line each).
 #[derive(Debug, Error)]
@@ -73,7 +74,9 @@ pub fn merge_parts(parts: Vec<(String, StudyReport)>) -> Result<StudyReport, Mer
         }
         check_same_study(first_file, first, file, p)?;
     }
-    check_shards(&parts)?;
+    let shards: Vec<(&str, Shard)> = parts.iter().map(|(f, p)| (f.as_str(), p.shard)).collect();
+    let n = first.variants.first().map_or(0, |v| v.samples);
+    check_shards(&shards, n, "samples")?;
     let mut variants = Vec::new();
     for (j, proto) in first.variants.iter().enumerate() {
         let mine: Vec<&VariantReport> = parts.iter().map(|(_, p)| &p.variants[j]).collect();
@@ -116,47 +119,50 @@ fn check_same_study(
     Ok(())
 }
 
-/// Every shard 1..=N exactly once, N the same in every part.
-fn check_shards(parts: &[(String, StudyReport)]) -> Result<(), MergeError> {
-    let (first_file, first) = &parts[0];
-    let count = first.shard.count;
+/// Every shard 1..=N exactly once, N the same in every part (file name and
+/// shard); a missing shard is named with its range of the `n` `unit`
+/// (`samples` of a study, `design points` of a sweep).
+pub fn check_shards(parts: &[(&str, Shard)], n: usize, unit: &str) -> Result<(), MergeError> {
+    let Some(&(first_file, first)) = parts.first() else {
+        return Err(MergeError::Empty);
+    };
+    let count = first.count;
     let mut seen: Vec<Option<&str>> = vec![None; count];
-    for (file, p) in parts {
-        if p.shard.count != count {
+    for &(file, shard) in parts {
+        if shard.count != count {
             return Err(MergeError::ShardCount {
-                file: file.clone(),
-                first: first_file.clone(),
-                shard: p.shard,
-                count: p.shard.count,
+                file: file.to_string(),
+                first: first_file.to_string(),
+                shard,
+                count: shard.count,
                 expected: count,
             });
         }
-        if p.shard.index == 0 || p.shard.index > count {
+        if shard.index == 0 || shard.index > count {
             return Err(MergeError::BadShard {
-                file: file.clone(),
-                shard: p.shard,
+                file: file.to_string(),
+                shard,
             });
         }
-        let slot = &mut seen[p.shard.index - 1];
+        let slot = &mut seen[shard.index - 1];
         if let Some(other) = slot {
             return Err(MergeError::DuplicateShard {
-                file: file.clone(),
+                file: file.to_string(),
                 other: other.to_string(),
-                shard: p.shard,
+                shard,
             });
         }
         *slot = Some(file);
     }
-    let n = first.variants.first().map_or(0, |v| v.samples);
     let missing: Vec<String> = (1..=count)
         .filter(|i| seen[i - 1].is_none())
         .map(|i| {
             let s = Shard { index: i, count };
             match s.range(n) {
                 Ok(r) if !r.is_empty() => {
-                    format!("shard {s} (samples {}..{})", r.start, r.end - 1)
+                    format!("shard {s} ({unit} {}..{})", r.start, r.end - 1)
                 }
-                _ => format!("shard {s} (no samples)"),
+                _ => format!("shard {s} (no {unit})"),
             }
         })
         .collect();
@@ -190,8 +196,7 @@ fn merge_variant(
     v.partial = false;
     v.shard = Shard::whole();
     v.records = records;
-    v.seating_paths =
-        crate::study::paths::SeatingPaths::total(parts.iter().map(|p| p.seating_paths));
+    v.seating_paths = super::paths::SeatingPaths::total(parts.iter().map(|p| p.seating_paths));
     v.finish()?;
     Ok(v)
 }

@@ -1,18 +1,11 @@
 //! Grouped bar chart of sigma per variant and DOF, with the 90 % interval of
 //! each sigma as an error bar and reference values as black ticks.
 
-use std::path::Path;
-
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
-use super::super::error::{Result, StudyError};
-use super::{Dof, VariantSigma, check_finite, color, headroom, legend_room, plot_err, write_svg};
-
-/// Writes [`sigma_bars_svg`] of the re-seating sigma to `path`.
-pub fn plot_sigma_bars(path: &Path, data: &[VariantSigma]) -> Result<()> {
-    write_svg(path, &sigma_bars_svg(data, "re-seating σ")?)
-}
+use super::{Dof, VariantSigma, check_finite, color, headroom, legend_room, plot_err};
+use crate::study::{Result, StudyError};
 
 /// An SVG with two panels, translations \[nm\] and rotations \[nrad\]: one
 /// group of bars per DOF, one bar per variant, a vertical error bar from the

@@ -1,18 +1,9 @@
 //! Convergence of sigma with the number of samples, one panel per DOF.
 
-use std::path::Path;
-
 use plotters::prelude::*;
 
-use super::super::error::{Result, StudyError};
-use super::{
-    ConvergenceSeries, Dof, check_finite, color, headroom, legend_room, plot_err, write_svg,
-};
-
-/// Writes [`convergence_svg`] to `path`.
-pub fn plot_convergence(path: &Path, data: &[ConvergenceSeries]) -> Result<()> {
-    write_svg(path, &convergence_svg(data)?)
-}
+use super::{ConvergenceSeries, Dof, check_finite, color, headroom, legend_room, plot_err};
+use crate::study::{Result, StudyError};
 
 /// An SVG of sigma of the first k samples against k: one panel per DOF that
 /// has series (in the order x, y, z, phi_x, phi_y, phi_z; three per row),

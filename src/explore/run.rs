@@ -1,10 +1,11 @@
-//! The sweep document (`kinrepro sweep --format json`, docs/output.md,
-//! "Sweeps"): one entry per design point with its swept values, its
-//! status, the study statistics of every evaluation point exactly as a
-//! study's `points`, the nominal seating's stiffness, safety factor,
-//! friction limit and approach, and the Pareto mark. Running a sweep
-//! ([`run`]), shard merging ([`merge_sweeps`]). Table and CSV:
-//! `sweep_text`; charts: `sweep_plot`.
+//! Running a sweep ([`run`]: the design points in parallel, each point's
+//! study by the study's own machinery) into its document (`kinrepro sweep
+//! --format json`, docs/output.md, "Sweeps"): one entry per design point
+//! with its swept values, its status, the study statistics of every
+//! evaluation point exactly as a study's `points`, the nominal seating's
+//! stiffness, safety factor, friction limit and approach, and the Pareto
+//! mark. Shard merging: [`super::merge`]; table, CSV and charts:
+//! `report::sweep_text`, `report::sweep_plot`.
 
 use std::collections::BTreeMap;
 
@@ -12,14 +13,13 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use super::pareto::{Objectives, front};
+use super::{DesignKind, Evaluation, FieldKind, Outcome, SweepSpec, SweptValue};
+use super::{ExploreError, evaluate, point_text};
 use crate::assembly::Coupling;
-use crate::explore::pareto::{Objectives, front};
-use crate::explore::{DesignKind, Evaluation, FieldKind, Outcome, SweepSpec, SweptValue};
-use crate::explore::{ExploreError, evaluate, point_text};
-use crate::report::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, fnv1a64, produced_by};
-use crate::report::study::{PointStats, VariantReport};
+use crate::study::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, fnv1a64, produced_by};
 use crate::study::runner::{StudyOptions, design_for};
-use crate::study::{Sampler, Shard};
+use crate::study::{PointStats, Sampler, Shard, VariantReport};
 
 /// One `--set` as given.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -294,115 +294,5 @@ impl SweepReport {
             self.design_points,
             self.shard
         )
-    }
-}
-
-/// Sweep parts that do not merge.
-#[derive(Debug, Error)]
-pub enum SweepMergeError {
-    #[error("no parts")]
-    Empty,
-    #[error("{part}: not a part of the sweep of {first}: {field} differs")]
-    Different {
-        part: String,
-        first: String,
-        field: String,
-    },
-    #[error("{part}: shard {shard} given twice")]
-    Duplicate { part: String, shard: Shard },
-    #[error("shard {index}/{count} (design points {start}..{end}) missing")]
-    Missing {
-        index: usize,
-        count: usize,
-        start: usize,
-        end: usize,
-    },
-    #[error("{part}: shard {shard} should hold design points {expected:?}")]
-    Rows {
-        part: String,
-        shard: Shard,
-        expected: std::ops::Range<usize>,
-    },
-}
-
-/// Merge the parts of a sharded sweep into exactly the single run's document.
-pub fn merge_sweeps(parts: Vec<(String, SweepReport)>) -> Result<SweepReport, SweepMergeError> {
-    let (first_name, first) = parts.first().ok_or(SweepMergeError::Empty)?;
-    let fp = serde_json::to_value(&first.fingerprint).unwrap_or_default();
-    let count = first.shard.count;
-    let mut seen: Vec<Option<&str>> = vec![None; count];
-    for (name, p) in &parts {
-        let other = serde_json::to_value(&p.fingerprint).unwrap_or_default();
-        let differs = |field: String| SweepMergeError::Different {
-            part: name.clone(),
-            first: first_name.clone(),
-            field,
-        };
-        if let Some(field) = first_difference(&fp, &other, "fingerprint") {
-            return Err(differs(field));
-        }
-        if p.shard.count != count {
-            return Err(differs(format!(
-                "shard count ({} vs {count})",
-                p.shard.count
-            )));
-        }
-        if p.shard.index == 0 || p.shard.index > count {
-            return Err(differs(format!("shard {} (not in 1..={count})", p.shard)));
-        }
-        let slot = &mut seen[p.shard.index - 1];
-        if slot.is_some() {
-            return Err(SweepMergeError::Duplicate {
-                part: name.clone(),
-                shard: p.shard,
-            });
-        }
-        *slot = Some(name);
-        let expected = p.shard.range(p.design_points).unwrap_or(0..0);
-        if !p.designs.iter().map(|d| d.index).eq(expected.clone()) {
-            return Err(SweepMergeError::Rows {
-                part: name.clone(),
-                shard: p.shard,
-                expected,
-            });
-        }
-    }
-    if let Some(i) = seen.iter().position(Option::is_none) {
-        let r = Shard::new(i + 1, count)
-            .and_then(|s| s.range(first.design_points))
-            .unwrap_or(0..0);
-        return Err(SweepMergeError::Missing {
-            index: i + 1,
-            count,
-            start: r.start,
-            end: r.end,
-        });
-    }
-    let mut parts: Vec<SweepReport> = parts.into_iter().map(|(_, p)| p).collect();
-    parts.sort_by_key(|p| p.shard.index);
-    let mut merged = parts[0].clone();
-    merged.designs = parts.into_iter().flat_map(|p| p.designs).collect();
-    merged.shard = Shard::whole();
-    merged.mark_pareto();
-    Ok(merged)
-}
-
-/// The dotted path of the first field where two JSON values differ.
-fn first_difference(a: &serde_json::Value, b: &serde_json::Value, at: &str) -> Option<String> {
-    use serde_json::Value::Object;
-    match (a, b) {
-        (Object(x), Object(y)) => x
-            .iter()
-            .find_map(|(k, v)| match y.get(k) {
-                Some(w) => first_difference(v, w, &format!("{at}.{k}")),
-                None => Some(format!("{at}.{k}")),
-            })
-            .or_else(|| {
-                y.keys()
-                    .find(|k| !x.contains_key(*k))
-                    .map(|k| format!("{at}.{k}"))
-            }),
-        _ if a == b => None,
-        _ => Some(format!("{at} ({a} vs {b})")),
     }
 }

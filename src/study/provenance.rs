@@ -10,9 +10,9 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::DesignSpec;
+use super::runner::StudyOptions;
 use crate::assembly::Coupling;
-use crate::study::DesignSpec;
-use crate::study::runner::StudyOptions;
 
 /// Version of the output schema (docs/output.md). 2: phi_z evaluated, JSON
 /// records with `inputs_si` and `design_u`, provenance and fingerprint.
@@ -93,71 +93,40 @@ impl Fingerprint {
         }
     }
 
-    /// The first field in which `other` differs, as `name (this vs other)`;
-    /// the named settings come before the scene content, so that a changed
-    /// friction coefficient is named as such.
+    /// The first field in which `other` differs, as `name (this vs other)`.
     pub fn first_difference(&self, other: &Fingerprint) -> Option<String> {
-        let fields: [(&str, String, String); 19] = [
-            (
-                "kinrepro_version",
-                q(&self.kinrepro_version),
-                q(&other.kinrepro_version),
-            ),
-            ("solver", q(&self.solver), q(&other.solver)),
-            (
-                "solver_settings",
-                q(&self.solver_settings),
-                q(&other.solver_settings),
-            ),
-            ("sampler", q(&self.sampler), q(&other.sampler)),
-            ("seed", d(&self.seed), d(&other.seed)),
-            ("samples", d(&self.samples), d(&other.samples)),
-            ("replicates", d(&self.replicates), d(&other.replicates)),
-            ("vary", d(&self.vary), d(&other.vary)),
-            ("mu_static", d(&self.mu_static), d(&other.mu_static)),
-            ("spread", d(&self.spread), d(&other.spread)),
-            (
-                "dynamic_ratio",
-                d(&self.dynamic_ratio),
-                d(&other.dynamic_ratio),
-            ),
-            (
-                "tangential_law",
-                q(&self.tangential_law),
-                q(&other.tangential_law),
-            ),
-            (
-                "friction_law",
-                q(&self.friction_law),
-                q(&other.friction_law),
-            ),
-            ("preload force", d(&self.preload_n), d(&other.preload_n)),
-            (
-                "preload point",
-                d(&self.preload_point_m),
-                d(&other.preload_point_m),
-            ),
-            (
-                "preload direction",
-                d(&self.preload_direction),
-                d(&other.preload_direction),
-            ),
-            (
-                "start_bounds",
-                d(&self.start_bounds),
-                d(&other.start_bounds),
-            ),
-            ("scene name", q(&self.scene_name), q(&other.scene_name)),
-            (
-                "scene content",
-                q(&self.scene_content),
-                q(&other.scene_content),
-            ),
-        ];
-        fields
+        self.settings()
             .into_iter()
-            .find(|(_, a, b)| a != b)
-            .map(|(name, a, b)| format!("{name} ({a} vs {b})"))
+            .zip(other.settings())
+            .find(|((_, a), (_, b))| a != b)
+            .map(|((name, a), (_, b))| format!("{name} ({a} vs {b})"))
+    }
+
+    /// Every field by name, as `first_difference` compares and prints them:
+    /// the named settings before the scene content, so that a changed
+    /// friction coefficient is named as such.
+    fn settings(&self) -> [(&'static str, String); 19] {
+        [
+            ("kinrepro_version", q(&self.kinrepro_version)),
+            ("solver", q(&self.solver)),
+            ("solver_settings", q(&self.solver_settings)),
+            ("sampler", q(&self.sampler)),
+            ("seed", d(&self.seed)),
+            ("samples", d(&self.samples)),
+            ("replicates", d(&self.replicates)),
+            ("vary", d(&self.vary)),
+            ("mu_static", d(&self.mu_static)),
+            ("spread", d(&self.spread)),
+            ("dynamic_ratio", d(&self.dynamic_ratio)),
+            ("tangential_law", q(&self.tangential_law)),
+            ("friction_law", q(&self.friction_law)),
+            ("preload force", d(&self.preload_n)),
+            ("preload point", d(&self.preload_point_m)),
+            ("preload direction", d(&self.preload_direction)),
+            ("start_bounds", d(&self.start_bounds)),
+            ("scene name", q(&self.scene_name)),
+            ("scene content", q(&self.scene_content)),
+        ]
     }
 }
 

@@ -1,19 +1,53 @@
-//! Study results: the JSON document (SI records plus nm/nrad statistics,
-//! docs/output.md). Its statistics are computed in `study_stats`, the Table 2
-//! style text table is in `study_table` (helpers in `study_text`), the CSV
-//! and the files of `--out` in `study_files`, shard merging in `merge`,
-//! result checks in `study_checks`.
+//! The study document (`kinrepro study --format json`, docs/output.md): one
+//! [`VariantReport`] per scene (SI records, nm/nrad statistics) in a
+//! [`StudyReport`], and the error of running one. The records and
+//! statistics are in [`super::record`], their summarising in
+//! [`super::summary`], streamed studies in [`super::stream`], shard merging
+//! in [`super::merge`]; `report` renders the document.
 
 use serde::{Deserialize, Serialize};
+use thiserror::Error;
 
+use super::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, produced_by};
+use super::record::{PointStats, StudyRecord};
+use super::runner::{RunError, StartBounds, StudyOptions, VariantRun, Variation};
+use super::sensitivity::SensitivityBlock;
+use super::{DesignSpec, Sampler, Shard, StudyError};
 use crate::assembly::Coupling;
 use crate::contact::FrictionLaw;
-use crate::report::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, produced_by};
-pub use crate::report::study_record::{Dofs, PointStats, StudyRecord};
 use crate::scene::{DEFAULT_RAMP_TIME, VariationBounds};
-use crate::study::runner::{StartBounds, StudyOptions, VariantRun, Variation};
-use crate::study::sensitivity::SensitivityBlock;
-use crate::study::{DesignSpec, Sampler, Shard, StudyError};
+
+/// A study of one or several scenes could not be run.
+#[derive(Debug, Error)]
+pub enum StudyRunError {
+    #[error(transparent)]
+    Run(#[from] RunError),
+    /// The design or the statistics of one scene (`context`: its file), or
+    /// an option (`context`: its name).
+    #[error("{context}: {source}")]
+    Study {
+        context: String,
+        #[source]
+        source: StudyError,
+    },
+    /// The sink of a streamed study's records failed (e.g. its CSV file).
+    #[error(transparent)]
+    Sink(Box<dyn std::error::Error + Send + Sync>),
+}
+
+impl StudyRunError {
+    /// `source` with where it happened (a scene file, an option).
+    pub(crate) fn at(context: &str) -> impl FnOnce(StudyError) -> Self + '_ {
+        move |source| StudyRunError::Study {
+            context: context.to_string(),
+            source,
+        }
+    }
+
+    pub(crate) fn sink(e: impl std::error::Error + Send + Sync + 'static) -> Self {
+        StudyRunError::Sink(Box::new(e))
+    }
+}
 
 /// One scene's study.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -21,7 +55,7 @@ pub struct VariantReport {
     /// The settings this variant's numbers depend on (`merge` compares them).
     pub fingerprint: Fingerprint,
     /// True if the statistics come from streaming moments (Monte Carlo above
-    /// `study_stream::STREAM_ABOVE` samples; see docs/output.md).
+    /// `stream::STREAM_ABOVE` samples; see docs/output.md).
     #[serde(default)]
     pub streamed: bool,
     /// Set when the coupling could not seat (nothing slid): the reason.
@@ -29,7 +63,7 @@ pub struct VariantReport {
     pub cannot_seat: Option<String>,
     /// Sample seatings per solver path (absent from `merge` output).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub seating_paths: Option<crate::study::paths::SeatingPaths>,
+    pub seating_paths: Option<super::paths::SeatingPaths>,
     pub scene: String,
     pub name: String,
     /// Samples in the whole design.
@@ -151,12 +185,7 @@ impl VariantReport {
         let records = run
             .records
             .into_iter()
-            .map(|r| StudyRecord {
-                index: r.index,
-                physical: var.sample(coupling, &r.inputs).physical,
-                inputs: r.inputs,
-                outputs: r.outputs,
-            })
+            .map(|r| StudyRecord::new(coupling, var, r))
             .collect();
         VariantReport {
             fingerprint: Fingerprint::new(coupling, opts, &run.design),

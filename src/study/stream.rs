@@ -1,0 +1,135 @@
+//! Large Monte Carlo studies streamed in bounded memory.
+//!
+//! Above [`STREAM_ABOVE`] Monte Carlo samples a study keeps no per-sample
+//! records: the samples are seated in chunks ([`run_streamed`]), each
+//! chunk's records are pushed, in sample-index order, into one [`Moments`]
+//! per output (Welford/Pebay one-pass update, see `study::stats::moments`)
+//! and handed to a [`RecordSink`] (the per-sample CSV), then dropped. The
+//! same rule decides how a merged study of that design is summarised
+//! (records pushed in index order), so shards + merge equal one run. The
+//! interval of sigma is Bonett's (2006) from the moments
+//! (`study::stats::summarize_moments`), valid for independent samples.
+
+use super::record::StudyRecord;
+use super::result::{StudyRunError, VariantReport};
+use super::runner::{
+    PathTally, Progress, RunError, StudyOptions, VariantRun, design_for, recorded_output_names,
+    run_chunked,
+};
+use super::stats::{Moments, SampleRecord};
+use super::{DesignSpec, Sampler, StudyError};
+use crate::assembly::Coupling;
+
+/// Monte Carlo studies of more samples than this are summarised from
+/// streaming moments and keep no records in memory.
+pub const STREAM_ABOVE: usize = 100_000;
+
+/// Rows seated per chunk of a streamed study.
+const CHUNK: usize = 8192;
+
+/// True if a study of this design is summarised from streaming moments.
+pub fn streams(design: &DesignSpec) -> bool {
+    design.sampler == Sampler::MonteCarlo && design.n > STREAM_ABOVE
+}
+
+/// One accumulator per output, fed in sample-index order.
+#[derive(Debug, Clone)]
+pub struct StreamStats {
+    pub moments: Vec<Moments>,
+}
+
+impl StreamStats {
+    pub fn new(outputs: usize) -> Self {
+        StreamStats {
+            moments: vec![Moments::new(); outputs],
+        }
+    }
+
+    /// Push records (sorted by index); a non-finite output is an error
+    /// naming the sample and the output.
+    pub fn push(&mut self, records: &[SampleRecord], names: &[String]) -> Result<(), StudyError> {
+        for r in records {
+            check_record(r.index, &r.outputs, names)?;
+            for (m, &x) in self.moments.iter_mut().zip(&r.outputs) {
+                m.push(x);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A NaN or infinite output is an error naming the sample.
+pub fn check_record(index: usize, outputs: &[f64], names: &[String]) -> Result<(), StudyError> {
+    match outputs.iter().position(|x| !x.is_finite()) {
+        None => Ok(()),
+        Some(k) => Err(StudyError::NonFinite {
+            what: format!(
+                "sample {index}: output {} = {}",
+                names.get(k).map_or("?", |s| s.as_str()),
+                outputs[k]
+            ),
+        }),
+    }
+}
+
+/// Where the records of a streamed study go as they are seated, in
+/// sample-index order (e.g. the per-sample CSV of `kinrepro study --out`).
+pub trait RecordSink {
+    type Error: std::error::Error + Send + Sync + 'static;
+    fn push(&mut self, record: &StudyRecord) -> Result<(), Self::Error>;
+}
+
+/// One scene's Monte Carlo study streamed in chunks of [`CHUNK`] rows
+/// (rayon within a chunk): moments in sample order, and every record handed
+/// to the sink that `open` gives for the report (before any sample is
+/// seated; `None`: records are dropped). Returns the report with its
+/// statistics and the sink, still to be completed by the caller.
+pub fn run_streamed<S: RecordSink>(
+    coupling: &Coupling,
+    opts: &StudyOptions,
+    tick: &(dyn Fn() + Sync),
+    open: impl FnOnce(&VariantReport) -> Result<Option<S>, S::Error>,
+) -> Result<(VariantReport, Option<S>), StudyRunError> {
+    let file = &coupling.scene.file;
+    let names = recorded_output_names(coupling, &opts.variation);
+    let shell = VariantRun {
+        design: design_for(coupling, opts).map_err(StudyRunError::at(file))?,
+        shard: opts.shard,
+        output_names: names.clone(),
+        records: Vec::new(),
+    };
+    let mut v = VariantReport::unfinished(coupling, shell, opts);
+    let mut sink = open(&v).map_err(StudyRunError::sink)?;
+    let mut st = StreamStats::new(names.len());
+    let mut failure = None;
+    let tally = PathTally::default();
+    let run = run_chunked(
+        coupling,
+        opts,
+        CHUNK,
+        Progress::with_tally(tick, &tally),
+        &mut |records| {
+            let pushed = st.push(&records, &names).map_err(StudyRunError::at(file));
+            let step = pushed.and_then(|()| match sink.as_mut() {
+                Some(s) => records.into_iter().try_for_each(|r| {
+                    s.push(&StudyRecord::new(coupling, &opts.variation, r))
+                        .map_err(StudyRunError::sink)
+                }),
+                None => Ok(()),
+            });
+            step.map_err(|e| {
+                failure = Some(e);
+                RunError::Options {
+                    file: file.clone(),
+                    reason: "stopped".into(),
+                }
+            })
+        },
+    );
+    if let Err(e) = run {
+        return Err(failure.take().unwrap_or(e.into()));
+    }
+    v.seating_paths = Some(tally.counts());
+    v.set_moment_stats(&st).map_err(StudyRunError::at(file))?;
+    Ok((v, sink))
+}

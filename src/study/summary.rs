@@ -1,0 +1,212 @@
+//! The statistics of a study's variant: sigma, its interval and the
+//! extremes per evaluation point, built from one [`Summary`] per output
+//! whether the summaries come from the records (two passes) or from
+//! streamed moments; the checks around them (non-finite outputs before, a
+//! coupling that did not seat after); the regression sensitivity of the
+//! first point and the Sobol indices attached to it.
+
+use super::StudyError;
+use super::record::{Dofs, PointStats, StudyRecord};
+use super::result::{VariantReport, is_tolerance_input};
+use super::runner::{COMPONENTS, INTERCHANGE_PREFIX};
+use super::sensitivity::sobol::SobolRun;
+use super::sensitivity::{self, SensitivityBlock};
+use super::stats::{SampleRecord, SigmaMethod, Summary, summarize_moments, summarize_outputs};
+use super::stream::{StreamStats, check_record, streams};
+
+/// Re-seating statistics per evaluation point from one summary per output
+/// (in `names` order), and interchangeability statistics from the
+/// `interchange/...` outputs after them.
+fn split_points(names: &[String], summaries: &[Summary]) -> (Vec<PointStats>, Vec<PointStats>) {
+    let k = names
+        .iter()
+        .position(|n| n.starts_with(INTERCHANGE_PREFIX))
+        .unwrap_or(names.len());
+    (
+        point_stats(&names[..k], &summaries[..k]),
+        point_stats(&names[k..], &summaries[k..]),
+    )
+}
+
+/// One [`PointStats`] per six outputs (`point/x_m` ... `point/phi_z_rad`),
+/// in nm and nrad; an interval of sigma only where every DOF has one.
+fn point_stats(names: &[String], summaries: &[Summary]) -> Vec<PointStats> {
+    names
+        .chunks(COMPONENTS.len())
+        .zip(summaries.chunks(COMPONENTS.len()))
+        .map(|(n, c)| {
+            let pick =
+                |f: &dyn Fn(&Summary) -> f64| Dofs::from_si(std::array::from_fn(|k| f(&c[k])));
+            let bound = |f: fn(&super::stats::Interval) -> f64| {
+                c.iter()
+                    .all(|s| s.sigma_interval.is_some())
+                    .then(|| pick(&|s| s.sigma_interval.as_ref().map_or(f64::NAN, f)))
+            };
+            let name = n[0].trim_start_matches(INTERCHANGE_PREFIX);
+            PointStats {
+                name: name.rsplit_once('/').map_or(name, |(p, _)| p).to_string(),
+                n: c[0].n,
+                sigma: pick(&|s| s.sigma),
+                sigma_ci90_low: bound(|i| i.lower),
+                sigma_ci90_high: bound(|i| i.upper),
+                sigma_interval_method: c[0].sigma_interval_method.clone(),
+                three_sigma: pick(&|s| s.three_sigma),
+                mean: pick(&|s| s.mean),
+                min: pick(&|s| s.min),
+                max: pick(&|s| s.max),
+            }
+        })
+        .collect()
+}
+
+impl VariantReport {
+    /// Statistics (and sensitivity, if asked for) from the records: from
+    /// their moments in index order where the design streams
+    /// ([`streams`]), so that merged shards equal one streamed run.
+    pub(crate) fn finish(&mut self) -> Result<(), StudyError> {
+        check_finite_records(&self.records, &self.output_names)?;
+        if streams(&self.design) {
+            let mut st = StreamStats::new(self.output_names.len());
+            for r in &self.records {
+                st.push(&[r.sample()], &self.output_names)?;
+            }
+            self.set_moment_stats(&st)?;
+        } else {
+            let samples: Vec<SampleRecord> = self.records.iter().map(StudyRecord::sample).collect();
+            let method = SigmaMethod::for_design(&self.design);
+            let summaries = summarize_outputs(&samples, method)?;
+            (self.points, self.interchangeability) = split_points(&self.output_names, &summaries);
+            self.cannot_seat = self.zero_scatter();
+        }
+        if self.sensitivity.is_some() {
+            self.sensitivity = Some(sensitivity_blocks(self));
+        }
+        Ok(())
+    }
+
+    /// Statistics of a streamed study from its moments (one per output).
+    pub fn set_moment_stats(&mut self, st: &StreamStats) -> Result<(), StudyError> {
+        let summaries = self
+            .output_names
+            .iter()
+            .zip(&st.moments)
+            .map(|(name, m)| {
+                summarize_moments(m).map_err(|e| match e {
+                    StudyError::NonFinite { what } => StudyError::NonFinite {
+                        what: format!("{name}: {what}"),
+                    },
+                    e => e,
+                })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        (self.points, self.interchangeability) = split_points(&self.output_names, &summaries);
+        self.streamed = true;
+        self.cannot_seat = self.zero_scatter();
+        Ok(())
+    }
+
+    /// The reason the coupling did not seat, if every re-seating sigma is
+    /// exactly zero although the inputs vary (friction with a spread, or
+    /// anything else): every sample stopped at the nominal pose and nothing
+    /// slid (above the friction limit every contact sticks from the first
+    /// load increment).
+    fn zero_scatter(&self) -> Option<String> {
+        let var = self.variation();
+        let varies = (var.friction && self.spread > 0.0) || var.preload || var.start.is_some();
+        let zero = !self.points.is_empty()
+            && self
+                .points
+                .iter()
+                .all(|p| p.sigma.values().iter().all(|s| *s == 0.0));
+        (varies && zero).then(|| {
+            "zero scatter: every sample seated at exactly the nominal pose, nothing slid; the coupling cannot seat (friction at or above its seating limit, see `kinrepro check`)".to_string()
+        })
+    }
+}
+
+/// Every output finite, and no column so large that its sum of squares
+/// overflows (that would make sigma NaN): otherwise an error naming the
+/// sample.
+fn check_finite_records(records: &[StudyRecord], names: &[String]) -> Result<(), StudyError> {
+    for r in records {
+        check_record(r.index, &r.outputs, names)?;
+    }
+    let n = records.len() as f64;
+    for (k, name) in names.iter().enumerate() {
+        let worst = records
+            .iter()
+            .max_by(|a, b| a.outputs[k].abs().total_cmp(&b.outputs[k].abs()));
+        if let Some(r) = worst
+            && !(r.outputs[k] * r.outputs[k] * n).is_finite()
+        {
+            return Err(StudyError::NonFinite {
+                what: format!(
+                    "sample {}: output {} = {:e} overflows the variance",
+                    r.index, name, r.outputs[k]
+                ),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// SRC tables of the first evaluation point: re-seating outputs on the
+/// friction, preload and start inputs; interchangeability outputs on the
+/// tolerance inputs.
+fn sensitivity_blocks(v: &VariantReport) -> Vec<SensitivityBlock> {
+    let samples: Vec<(&[f64], &[f64])> = v
+        .records
+        .iter()
+        .map(|r| (r.inputs.as_slice(), r.outputs.as_slice()))
+        .collect();
+    let mut blocks = Vec::new();
+    for (kind, tolerance) in [("reseating", false), ("interchangeability", true)] {
+        let inputs: Vec<(usize, String)> = v
+            .inputs
+            .iter()
+            .enumerate()
+            .filter(|(_, n)| is_tolerance_input(n) == tolerance)
+            .map(|(j, n)| (j, n.clone()))
+            .collect();
+        let first = v
+            .output_names
+            .iter()
+            .position(|n| n.starts_with(INTERCHANGE_PREFIX) == tolerance);
+        let (Some(first), false) = (first, inputs.is_empty()) else {
+            continue;
+        };
+        let outputs: Vec<(usize, String)> = (first..first + COMPONENTS.len())
+            .map(|k| (k, v.output_names[k].clone()))
+            .collect();
+        blocks.push(sensitivity::block(kind, &inputs, &outputs, &samples));
+    }
+    blocks
+}
+
+/// Fill `sobol` of every sensitivity block of `v` (JSON
+/// `variants[i].sensitivity[k].sobol`) from the seated Saltelli matrices
+/// `run` (same outputs and inputs as the block's SRC table).
+pub fn attach_sobol(v: &mut VariantReport, run: &SobolRun) {
+    let inputs = v.inputs.clone();
+    let Some(blocks) = v.sensitivity.as_mut() else {
+        return;
+    };
+    for b in blocks.iter_mut() {
+        let cols: Vec<usize> = b
+            .inputs
+            .iter()
+            .filter_map(|name| inputs.iter().position(|n| n == name))
+            .collect();
+        let outputs: Vec<(usize, String)> = b
+            .dofs
+            .iter()
+            .filter_map(|d| {
+                run.output_names
+                    .iter()
+                    .position(|n| *n == d.output)
+                    .map(|k| (k, d.output.clone()))
+            })
+            .collect();
+        b.sobol = Some(run.block(&cols, &outputs));
+    }
+}
