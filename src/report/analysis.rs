@@ -4,7 +4,7 @@
 use std::fmt::Write;
 
 use crate::report::run::{pose_cells, pose_table};
-use crate::report::table::{Column, Table, cells};
+use crate::report::table::{Table, cells};
 
 use nalgebra::Vector3;
 use serde::Serialize;
@@ -139,12 +139,7 @@ impl StiffnessReport {
             mu.join(", ")
         );
         let _ = writeln!(s);
-        let mut t = Table::new(vec![
-            Column::right("#"),
-            Column::right("F_n [N]").fixed(5),
-            Column::right("k_n [N/um]").fixed(4),
-            Column::right("k_t [N/um]").fixed(4),
-        ]);
+        let mut t = Table::new(">#; >F_n [N]:.5; >k_n [N/um]:.4; >k_t [N/um]:.4");
         for (i, c) in self.contacts.iter().enumerate() {
             t.row(cells![
                 i + 1,
@@ -323,7 +318,7 @@ impl LoadReport {
 
     /// The deflection of each point [nm, nrad].
     fn deflections(&self, s: &mut String) {
-        let mut t = pose_table(&[Column::left("deflection")], "");
+        let mut t = pose_table("<deflection", "");
         for q in &self.points {
             t.row(pose_cells(cells![&q.name], &q.deflection));
         }
@@ -332,15 +327,9 @@ impl LoadReport {
 
     /// Each contact before and after the load.
     fn contact_rows(&self, s: &mut String) {
-        let mut t = Table::new(vec![
-            Column::right("#"),
-            Column::right("F_n0 [N]").fixed(6),
-            Column::right("F_n [N]").fixed(6),
-            Column::right("|F_t| [N]").fixed(6),
-            Column::right("|F_t|/F_n").fixed(6),
-            Column::right("|F_t|/mu_sF_n").fixed(4),
-            Column::right("state"),
-        ]);
+        let mut t = Table::new(
+            ">#; >F_n0 [N]:.6; >F_n [N]:.6; >|F_t| [N]:.6; >|F_t|/F_n:.6; >|F_t|/mu_sF_n:.4; >state",
+        );
         for (i, (c, c0)) in self.contacts.iter().zip(&self.seated_contacts).enumerate() {
             let loaded = c.normal_force_n > 0.0;
             let ratio = if loaded {

@@ -84,9 +84,8 @@ fn correlation_lines(r: &Correlation) -> String {
     if r.parameters.len() < 2 {
         return String::new();
     }
-    let mut columns = vec![Column::left("")];
-    columns.extend(r.parameters.iter().map(|n| Column::right(n).fixed(3)));
-    let mut t = Table::new(columns).indent(2);
+    let params = r.parameters.iter().map(|n| Column::right(n).fixed(3));
+    let mut t = Table::new("<").with(params).indent(2);
     for (n, row) in r.parameters.iter().zip(&r.matrix) {
         t.row(
             std::iter::once(n.into())
@@ -159,14 +158,9 @@ pub fn calibration_table(c: &Calibration) -> String {
             }
         }
     }
-    let mut t = Table::new(vec![
-        Column::left("dof"),
-        Column::right("cycles"),
-        Column::right("measured sigma"),
-        Column::right("noise sigma"),
-        Column::right("fitted sigma"),
-        Column::right("model sigma (no noise)"),
-    ]);
+    let mut t = Table::new(
+        "<dof; >cycles; >measured sigma; >noise sigma; >fitted sigma; >model sigma (no noise)",
+    );
     for d in &c.dofs {
         t.row(cells![
             d.dof.name(),
@@ -276,15 +270,9 @@ impl PredictionReport {
         for p in &self.predictions {
             let v = &p.variant;
             s += &format!("{} ({})\n", v.scene, v.name);
-            let mut t = Table::new(vec![
-                Column::left("point"),
-                Column::left("dof"),
-                Column::right("sigma").fixed(3),
-                Column::left(""),
-                Column::right("90 % interval"),
-                Column::left("measured (raw, noise)"),
-            ])
-            .indent(2);
+            let mut t =
+                Table::new("<point; <dof; >sigma:.3; <; >90 % interval; <measured (raw, noise)")
+                    .indent(2);
             let measured = p.measured.as_ref();
             for pt in &v.points {
                 let (m, lo, hi) = (pt.sigma, pt.sigma_ci90_low, pt.sigma_ci90_high);

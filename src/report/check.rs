@@ -5,7 +5,7 @@ use std::fmt::Write;
 use crate::assembly::Coupling;
 use crate::assembly::constraint::{analyse, friction_limit, frictionless_preload_forces};
 use crate::contact::stress::contact_stress;
-use crate::report::table::{Column, Table, cells};
+use crate::report::table::{Table, cells};
 
 /// What the friction limit means for this scene, given whether friction
 /// moves the seated pose from the touching pose (`friction_moves`, see
@@ -70,21 +70,7 @@ pub fn check_summary(c: &Coupling) -> String {
 /// moduli, peak stresses and safety factors, with the notes.
 fn contact_rows(out: &mut String, c: &Coupling) {
     let forces = frictionless_preload_forces(c);
-    let mut t = Table::new(vec![
-        Column::right("#"),
-        Column::right("ball"),
-        Column::left("pair"),
-        Column::right("normal (x, y, z)"),
-        Column::right("Rx, Ry [mm]"),
-        Column::right("E* [GPa]").fixed(2),
-        Column::right("G* [GPa]").fixed(2),
-        Column::right("F_n(mu=0) [N]").fixed(4),
-        Column::right("p0 [MPa]").fixed(2),
-        Column::right("tau_max [MPa]").fixed(2),
-        Column::right("SF_p").fixed(2),
-        Column::right("SF_tau").fixed(2),
-        Column::right("SF").fixed(2),
-    ])
+    let mut t = Table::new(">#; >ball; <pair; >normal (x, y, z); >Rx, Ry [mm]; >E* [GPa]:.2; >G* [GPa]:.2; >F_n(mu=0) [N]:.4; >p0 [MPa]:.2; >tau_max [MPa]:.2; >SF_p:.2; >SF_tau:.2; >SF:.2")
     .indent(2);
     let mut left_out = Vec::new();
     for (i, k) in c.contacts.iter().enumerate() {

@@ -115,7 +115,7 @@ pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
         "# force control, one step per row from the unloaded state; x = major axis of the contact ellipse (along the pin), SI units"
     );
     let header = ["step", "P_N", "Qx_N", "Qy_N", "sx_m", "sy_m", "slip"];
-    let mut t = Table::new(header.map(|h| Column::left(h).format(Format::Exp)).into());
+    let mut t = Table::of(header.map(|h| Column::left(h).format(Format::Exp)));
     for (i, st) in steps.iter().enumerate() {
         let (q, d) = (st.load.tangential_force, st.displacement);
         let n = st.load.normal_force;

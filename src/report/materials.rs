@@ -36,7 +36,7 @@ pub fn materials_doc() -> MaterialsDoc {
 /// none is built in. Numbers in Rust's shortest round-trip form, so that
 /// they read back exactly.
 pub fn materials_csv() -> String {
-    let mut t = Table::new(MATERIALS_HEADER.split(',').map(Column::left).collect());
+    let mut t = Table::of(MATERIALS_HEADER.split(',').map(Column::left));
     for m in BUILTIN {
         let e = format!("{:e}", m.youngs_modulus);
         let p = m
@@ -62,14 +62,9 @@ pub fn materials_csv() -> String {
 pub fn materials_table() -> String {
     let mut s =
         format!("kinrepro {VERSION}: built-in materials (use their names in scene files)\n\n");
-    let mut t = Table::new(vec![
-        Column::left("name"),
-        Column::right("E [GPa]").fixed(0),
-        Column::right("nu").fixed(2),
-        Column::right("density [kg/m3]").fixed(0),
-        Column::right("p_allow [MPa]").fixed(0),
-        Column::left("description"),
-    ]);
+    let mut t = Table::new(
+        "<name; >E [GPa]:.0; >nu:.2; >density [kg/m3]:.0; >p_allow [MPa]:.0; <description",
+    );
     for m in BUILTIN {
         t.row(cells![
             m.name,

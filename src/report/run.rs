@@ -6,7 +6,7 @@ use serde::Serialize;
 
 use crate::assembly::Coupling;
 use crate::dof::{Dof, nano};
-use crate::report::table::{Cell, Column, Format, Table, cells};
+use crate::report::table::{Cell, Column, Table, cells};
 use crate::solve::{ContactResult, PointPose, Seating, SeatingPath};
 
 /// Pose of one evaluation point, from the touching pose and from the nominal seating.
@@ -117,7 +117,7 @@ impl RunReport {
 
     /// The pose of each point, from touching and relative to nominal mu.
     fn pose_rows(&self, s: &mut String) {
-        let mut t = pose_table(&[Column::left("point"), Column::left("pose")], "*");
+        let mut t = pose_table("<point; <pose", "*");
         for p in &self.points {
             for (label, q) in [
                 ("from touching", &p.pose),
@@ -136,21 +136,9 @@ impl RunReport {
 
     /// Each contact: forces, state, stresses and safety factors, with notes.
     fn contact_rows(&self, s: &mut String) {
-        let mut t = Table::new(vec![
-            Column::right("#"),
-            Column::right("mu_s").fixed(4),
-            Column::right("mu_d").fixed(4),
-            Column::right("F_n [N]").fixed(6),
-            Column::right("|F_t| [N]").fixed(6),
-            Column::right("|F_t|/F_n").fixed(6),
-            Column::right("state"),
-            Column::right("approach[nm]").fixed(4),
-            Column::right("p0 [MPa]").fixed(2),
-            Column::right("tau_max [MPa]").fixed(2),
-            Column::right("SF_p").fixed(2),
-            Column::right("SF_tau").fixed(2),
-            Column::right("SF").fixed(2),
-        ]);
+        let mut t = Table::new(
+            ">#; >mu_s:.4; >mu_d:.4; >F_n [N]:.6; >|F_t| [N]:.6; >|F_t|/F_n:.6; >state; >approach[nm]:.4; >p0 [MPa]:.2; >tau_max [MPa]:.2; >SF_p:.2; >SF_tau:.2; >SF:.2",
+        );
         for (i, c) in self.contacts.iter().enumerate() {
             t.row(cells![
                 i + 1,
@@ -186,14 +174,12 @@ impl RunReport {
 
 /// A table of poses after the columns `first`: the six DOFs in nm and nrad
 /// (`mark` after the header of the one not evaluated).
-pub(crate) fn pose_table(first: &[Column], mark: &str) -> Table {
-    let mut columns = first.to_vec();
-    columns.extend(Dof::ALL.map(|d| {
+pub(crate) fn pose_table(first: &str, mark: &str) -> Table {
+    Table::new(first).with(Dof::ALL.map(|d| {
         let m = if d == Dof::PhiZ { mark } else { "" };
         let p = if d.is_rotation() { 3 } else { 4 };
         Column::right(d.header("") + m).fixed(p)
-    }));
-    Table::new(columns)
+    }))
 }
 
 /// `first`, then the six DOFs of `q` in nm and nrad.
@@ -209,13 +195,7 @@ fn support_split(s: &mut String, contacts: &[ContactResult]) {
         return;
     }
     s.push_str("approach = Hertz + support (series support compliance c):\n");
-    let mut t = Table::new(vec![
-        Column::right("#"),
-        Column::right("c [m/N]").format(Format::Sci(4)),
-        Column::right("Hertz [nm]").fixed(4),
-        Column::right("support [nm]").fixed(4),
-        Column::right("total [nm]").fixed(4),
-    ]);
+    let mut t = Table::new(">#; >c [m/N]:.4e; >Hertz [nm]:.4; >support [nm]:.4; >total [nm]:.4");
     for (i, c) in contacts.iter().enumerate() {
         t.row(cells![
             i + 1,

@@ -23,11 +23,12 @@ pub fn sobol_table(b: &SensitivityBlock) -> String {
          bootstrap interval below; base sample size N = {}, {} seatings, seed {} ({})\n",
         b.kind, sob.base_samples, sob.evaluations, sob.seed, sob.estimator
     );
-    let mut columns = vec![Column::left("input")];
+    let t = Table::new("<input");
     // The block's outputs are the six DOFs of one point, in order.
     let dofs = Dof::ALL.iter().take(sob.dofs.len());
-    columns.extend(dofs.map(|d| Column::right(format!("{} (S | ST)", d.name()))));
-    let mut t = Table::new(columns).indent(2);
+    let mut t = t
+        .with(dofs.map(|d| Column::right(format!("{} (S | ST)", d.name()))))
+        .indent(2);
     let cells = |f: &dyn Fn(&SobolDof) -> String| -> Vec<Cell> {
         sob.dofs.iter().map(|d| f(d).into()).collect()
     };

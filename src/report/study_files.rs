@@ -22,7 +22,7 @@ impl StudyReport {
     /// units); each row names the version, solver, sampler, seed, samples
     /// and the varied quantities.
     pub fn csv(&self) -> String {
-        let mut t = Table::new(SUMMARY_HEADER.split(',').map(Column::left).collect());
+        let mut t = Table::of(SUMMARY_HEADER.split(',').map(Column::left));
         let vary = self.vary.join("+");
         for v in self.variants.iter().filter(|v| !v.partial) {
             let interchange = v.interchangeability.iter().map(|p| {

@@ -103,9 +103,8 @@ fn sensitivity_table(b: &SensitivityBlock) -> String {
         "  sensitivity of the {} scatter at {point}: share of each DOF's variance per input (normalised SRC^2: R^2 SRC_j^2 / sum SRC^2; R^2 of the linear fit)\n",
         b.kind
     );
-    let mut columns = vec![Column::left("input")];
-    columns.extend(Dof::ALL.map(|d| Column::right(d.name()).fixed(3)));
-    let mut t = Table::new(columns).indent(2);
+    let dofs = Dof::ALL.map(|d| Column::right(d.name()).fixed(3));
+    let mut t = Table::new("<input").with(dofs).indent(2);
     let row = |label: String, f: &dyn Fn(&DofSensitivity) -> Option<f64>| {
         let mut r = cells![label];
         r.extend(b.dofs.iter().map(|d| Cell::from(f(d))));

@@ -32,14 +32,7 @@ pub(crate) fn sigma_table(
     variants: &[VariantReport],
     points: impl Fn(&VariantReport) -> &Vec<PointStats>,
 ) -> String {
-    let mut columns = vec![
-        Column::left("#"),
-        Column::left("variant"),
-        Column::left("point"),
-        Column::right("n"),
-    ];
-    columns.extend(sigma_columns(|d| d.header("sigma_")));
-    let mut t = Table::new(columns);
+    let mut t = Table::new("<#; <variant; <point; >n").with(sigma_columns(|d| d.header("sigma_")));
     for (i, v) in variants.iter().enumerate() {
         if v.partial {
             t.note(format!(
@@ -71,16 +64,11 @@ pub(crate) fn sigma_table(
 pub(crate) fn detail(points: &[PointStats]) -> String {
     let mut s = String::new();
     for p in points {
-        let mut t = Table::new(vec![
-            Column::left(&p.name),
-            Column::left(""),
-            Column::right("mean").fixed(3),
-            Column::right("min").fixed(3),
-            Column::right("max").fixed(3),
-            Column::right("sigma").fixed(3),
-            Column::right("+-3 sigma").fixed(3),
-        ])
-        .indent(2);
+        let mut t = Table::of([Column::left(&p.name)])
+            .with(Column::list(
+                "<; >mean:.3; >min:.3; >max:.3; >sigma:.3; >+-3 sigma:.3",
+            ))
+            .indent(2);
         let values = [p.mean, p.min, p.max, p.sigma, p.three_sigma].map(|d| d.values());
         for d in Dof::ALL {
             let mut row = cells!["", d.header("")];

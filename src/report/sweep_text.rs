@@ -41,7 +41,7 @@ impl SweepReport {
     pub fn csv(&self) -> String {
         let fields = self.sets.iter().map(|s| s.field.as_str());
         let header = CSV_HEAD.split(',').chain(fields).chain(CSV_TAIL.split(','));
-        let mut t = Table::new(header.map(Column::left).collect());
+        let mut t = Table::of(header.map(Column::left));
         for d in &self.designs {
             let values = self.sets.iter().map(|f| match d.values.get(&f.field) {
                 Some(SweptValue::Number(x)) => format!("{x}"),
@@ -109,21 +109,9 @@ impl SweepReport {
             self.pareto_point
         );
         let _ = writeln!(s);
-        let mut columns = vec![
-            Column::left("#"),
-            Column::left("values"),
-            Column::left("point"),
-        ];
-        columns.extend(sigma_columns(|d| format!("σ{} [{}]", d.symbol(), d.unit())));
-        columns.extend([
-            Column::right("k_min").fixed(2),
-            Column::right("SF_p").fixed(2),
-            Column::right("mu_lim").fixed(4),
-            Column::right("margin").fixed(4),
-            Column::right("appr [nm]").fixed(1),
-            Column::left("P"),
-        ]);
-        let mut t = Table::new(columns);
+        let sigma = sigma_columns(|d| format!("σ{} [{}]", d.symbol(), d.unit()));
+        let tail = Column::list(">k_min:.2; >SF_p:.2; >mu_lim:.4; >margin:.4; >appr [nm]:.1; <P");
+        let mut t = Table::new("<#; <values; <point").with(sigma).with(tail);
         for d in &self.designs {
             self.design_rows(&mut t, d);
         }

@@ -69,6 +69,35 @@ impl Column {
     pub fn format(self, format: Format) -> Self {
         Column { format, ..self }
     }
+
+    /// Columns from their specs, separated by `;`.
+    pub fn list(specs: &str) -> Vec<Column> {
+        specs.split(';').map(Column::parse).collect()
+    }
+
+    /// A column from its spec: `<` (left) or `>` (right), the header, then
+    /// optionally `:` and the number format: `.N` (N decimals), `.Ne` (N
+    /// decimals with an exponent) or `e` (shortest with an exponent), as
+    /// in Rust's format strings. E.g. `>F_n [N]:.6`, `<point`.
+    pub fn parse(spec: &str) -> Self {
+        let spec = spec.trim();
+        let (head, format) = match spec.rsplit_once(':') {
+            Some((h, f)) if f == "e" || f.starts_with('.') => (h, f),
+            _ => (spec, ""),
+        };
+        let digits = |f: &str| f.trim_start_matches('.').trim_end_matches('e').parse().ok();
+        let format = match (format, digits(format)) {
+            ("e", _) => Format::Exp,
+            (f, Some(p)) if f.ends_with('e') => Format::Sci(p),
+            (_, Some(p)) => Format::Fixed(p),
+            _ => Format::Plain,
+        };
+        let col = match head.strip_prefix('>') {
+            Some(h) => Column::right(h),
+            None => Column::left(head.strip_prefix('<').unwrap_or(head)),
+        };
+        col.format(format)
+    }
 }
 
 /// One cell: a number (written in its column's format), text, or a
@@ -161,12 +190,23 @@ pub struct Table {
 }
 
 impl Table {
-    pub fn new(columns: Vec<Column>) -> Self {
+    /// A table of the columns `specs` ([`Column::list`]).
+    pub fn new(specs: &str) -> Self {
+        Table::of(Column::list(specs))
+    }
+
+    pub fn of(columns: impl IntoIterator<Item = Column>) -> Self {
         Table {
-            columns,
+            columns: columns.into_iter().collect(),
             lines: Vec::new(),
             indent: 0,
         }
+    }
+
+    /// More columns after these.
+    pub fn with(mut self, columns: impl IntoIterator<Item = Column>) -> Self {
+        self.columns.extend(columns);
+        self
     }
 
     /// Indent every text line by `n` spaces.

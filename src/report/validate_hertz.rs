@@ -1,7 +1,7 @@
 //! The table printed by `kinrepro validate-hertz`.
 
 use crate::fe::pairs::PairValidation;
-use crate::report::table::{Column, Table, cells};
+use crate::report::table::{Table, cells};
 
 /// `a, b` with two decimals.
 fn pair(a: f64, b: f64) -> String {
@@ -13,19 +13,9 @@ pub fn table(rows: &[PairValidation]) -> String {
     let s = String::from(
         "FE (27-node hexahedra, Boussinesq far field, frictionless Signorini contact) against kinrepro's Hertz law,\nat the largest normal load each pair reaches in the nominal seating. Errors are FE/Hertz - 1.\n\n",
     );
-    let mut t = Table::new(vec![
-        Column::left("pair"),
-        Column::right("radii [mm]"),
-        Column::left("materials"),
-        Column::right("F_n [N]").fixed(4),
-        Column::right("approach [nm]").fixed(3),
-        Column::right("err [%]").fixed(3),
-        Column::right("semi-axes [um]"),
-        Column::right("err x, y [%]"),
-        Column::right("h [um]").fixed(2),
-        Column::right("DOFs"),
-        Column::right("t [s]").fixed(1),
-    ]);
+    let mut t = Table::new(
+        "<pair; >radii [mm]; <materials; >F_n [N]:.4; >approach [nm]:.3; >err [%]:.3; >semi-axes [um]; >err x, y [%]; >h [um]:.2; >DOFs; >t [s]:.1",
+    );
     for r in rows {
         let radii = match r.radii_m {
             [Some(a), Some(b)] => format!("{:.2}/{:.2}", a * 1e3, b * 1e3),
@@ -49,14 +39,8 @@ pub fn table(rows: &[PairValidation]) -> String {
         if r.convergence.is_empty() {
             continue;
         }
-        let mut c = Table::new(vec![
-            Column::right("h [um]").fixed(2),
-            Column::right("b/h").fixed(1),
-            Column::right("DOFs"),
-            Column::right("approach [%]").fixed(3),
-            Column::right("semi-axes [%]"),
-            Column::right("t [s]").fixed(1),
-        ]);
+        let mut c =
+            Table::new(">h [um]:.2; >b/h:.1; >DOFs; >approach [%]:.3; >semi-axes [%]; >t [s]:.1");
         for k in &r.convergence {
             let e = k.semi_axis_error_rel;
             c.row(cells![
