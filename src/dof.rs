@@ -183,31 +183,3 @@ impl Dofs {
         self.values().map(|v| v * (1.0 / NANO))
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn names_units_and_keys_agree() {
-        for d in Dof::ALL {
-            assert_eq!(Dof::ALL[d.index()], d);
-            assert_eq!(Dof::from_name(d.name()), Some(d));
-            assert_eq!(d.si_key(), format!("{}_{}", d.name(), d.si_unit()));
-            assert_eq!(serde_json::to_value(d).unwrap(), d.name());
-        }
-        // The JSON keys of `Dofs` are the DOFs' keys, in order.
-        let v = serde_json::to_value(Dofs::from_si([1e-9; 6])).unwrap();
-        for d in Dof::ALL {
-            assert_eq!(v[d.key()], 1.0, "{}", d.key());
-        }
-        let p = serde_json::to_value(PointPose::from_components([2.0; 6])).unwrap();
-        let keys: Vec<&String> = p.as_object().unwrap().keys().collect();
-        assert_eq!(keys.len(), 6);
-        for d in Dof::ALL {
-            assert_eq!(p[d.si_key()], 2.0, "{}", d.si_key());
-        }
-        assert_eq!(Dof::PhiY.header("sigma_"), "sigma_phi_y[nrad]");
-        assert_eq!(Dof::Y.header(""), "y [nm]");
-    }
-}

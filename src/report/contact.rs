@@ -5,7 +5,7 @@ use std::fmt::Write;
 use crate::contact::ContactEvaluation;
 use crate::contact::history::HistoryStep;
 use crate::dof::nano;
-use crate::report::table::{Column, Format, Table, cells};
+use crate::report::table::{Table, cells};
 
 /// A readable table of one contact evaluation (SI values with engineering units).
 pub fn contact_table(e: &ContactEvaluation) -> String {
@@ -114,8 +114,7 @@ pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
         s,
         "# force control, one step per row from the unloaded state; x = major axis of the contact ellipse (along the pin), SI units"
     );
-    let header = ["step", "P_N", "Qx_N", "Qy_N", "sx_m", "sy_m", "slip"];
-    let mut t = Table::of(header.map(|h| Column::left(h).format(Format::Exp)));
+    let mut t = Table::new("<step; <P_N:e; <Qx_N:e; <Qy_N:e; <sx_m:e; <sy_m:e; <slip");
     for (i, st) in steps.iter().enumerate() {
         let (q, d) = (st.load.tangential_force, st.displacement);
         let n = st.load.normal_force;

@@ -66,7 +66,7 @@ impl Column {
         self.format(Format::Fixed(p))
     }
 
-    pub fn format(self, format: Format) -> Self {
+    fn format(self, format: Format) -> Self {
         Column { format, ..self }
     }
 
@@ -121,29 +121,17 @@ impl From<Option<f64>> for Cell {
     }
 }
 
-impl From<String> for Cell {
-    fn from(v: String) -> Self {
-        Cell::Text(v)
-    }
+/// Text cells from strings and counts.
+macro_rules! text_cell {
+    ($($t:ty),*) => {$(
+        impl From<$t> for Cell {
+            fn from(v: $t) -> Self {
+                Cell::Text(v.to_string())
+            }
+        }
+    )*};
 }
-
-impl From<&str> for Cell {
-    fn from(v: &str) -> Self {
-        Cell::Text(v.to_string())
-    }
-}
-
-impl From<&String> for Cell {
-    fn from(v: &String) -> Self {
-        Cell::Text(v.clone())
-    }
-}
-
-impl From<usize> for Cell {
-    fn from(v: usize) -> Self {
-        Cell::Text(v.to_string())
-    }
-}
+text_cell!(String, &str, &String, usize);
 
 /// A row's cells from values of mixed types: `cells![i + 1, name, x]`.
 macro_rules! cells {
@@ -234,11 +222,6 @@ impl Table {
         self.lines.push(Line::Note(text.into()));
     }
 
-    /// True without rows or notes.
-    pub fn is_empty(&self) -> bool {
-        self.lines.is_empty()
-    }
-
     /// The cells of a row as text; `missing` for a missing value.
     fn texts(&self, row: &Row, missing: &str) -> Vec<String> {
         (row.cells.iter().zip(&self.columns))
@@ -290,18 +273,21 @@ impl Table {
     }
 
     /// CSV: the header, then every row and the cells under it (notes are
-    /// left out), quoted where a cell needs it.
+    /// left out), quoted where a cell needs it (the `csv` crate).
     pub fn csv(&self) -> String {
-        let mut s = csv_record(self.columns.iter().map(|c| &c.header)) + "\n";
+        let mut w = csv::Writer::from_writer(Vec::new());
+        let mut rows = vec![self.columns.iter().map(|c| c.header.clone()).collect()];
         for line in &self.lines {
             if let Line::Row(r) = line {
-                s += &(csv_record(self.texts(r, "")) + "\n");
-                if !r.under.is_empty() {
-                    s += &(csv_record(&r.under) + "\n");
-                }
+                rows.push(self.texts(r, ""));
+                rows.extend((!r.under.is_empty()).then(|| r.under.clone()));
             }
         }
-        s
+        // Writing to memory cannot fail, and the cells are UTF-8.
+        for r in rows {
+            let _ = w.write_record(r);
+        }
+        String::from_utf8(w.into_inner().unwrap_or_default()).unwrap_or_default()
     }
 
     /// An HTML table (`class` on the table element, "" for none): the
@@ -347,16 +333,4 @@ impl Table {
         s.push_str("</tbody></table></div>\n");
         s
     }
-}
-
-/// A CSV record of `cells` (quoted where needed, by the `csv` crate),
-/// without the line end.
-pub fn csv_record<I: AsRef<[u8]>>(cells: impl IntoIterator<Item = I>) -> String {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    // Writing to memory cannot fail, and the cells are UTF-8.
-    let _ = w.write_record(cells);
-    let bytes = w.into_inner().unwrap_or_default();
-    String::from_utf8_lossy(&bytes)
-        .trim_end_matches('\n')
-        .to_string()
 }
