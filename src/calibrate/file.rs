@@ -12,8 +12,8 @@ use super::error::CalibrateError;
 use super::grid::GridInfo;
 use super::likelihood::{GOF_THRESHOLD, GoodnessOfFit, Observed};
 use super::measurement::{MeasuredData, Measurement};
-use super::units::{DOFS, si_unit};
 use crate::assembly::Coupling;
+use crate::dof::Dof;
 use crate::solve::Method;
 use crate::study::provenance::{Fingerprint, VERSION, fnv1a64};
 
@@ -86,7 +86,7 @@ pub struct GoodnessOfFitReport {
 /// Measured against fitted sigma of one DOF [SI].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct DofFit {
-    pub dof: String,
+    pub dof: Dof,
     pub unit: String,
     pub cycles: usize,
     pub measured_sigma: f64,
@@ -264,8 +264,8 @@ pub fn dof_fits(
         .iter()
         .enumerate()
         .map(|(j, &d)| DofFit {
-            dof: DOFS[d].into(),
-            unit: si_unit(d).into(),
+            dof: Dof::ALL[d],
+            unit: Dof::ALL[d].si_unit().into(),
             cycles: cycles[j],
             measured_sigma: measured[j],
             noise_sigma: noise[j],

@@ -37,7 +37,7 @@ pub struct StudySpec<'a> {
 #[derive(Debug, Clone, PartialEq)]
 pub struct ModelStudy {
     pub spread: f64,
-    /// The pose samples of the point (x, y, z, phi_x, phi_y, phi_z) [SI].
+    /// The pose samples of the point (the six DOFs of [`crate::dof::Dof::ALL`]) [SI].
     pub rows: Vec<[f64; 6]>,
     pub fingerprint: Fingerprint,
 }

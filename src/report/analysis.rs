@@ -3,6 +3,9 @@
 
 use std::fmt::Write;
 
+use crate::report::run::{pose_cells, pose_table};
+use crate::report::table::{Table, cells};
+
 use nalgebra::Vector3;
 use serde::Serialize;
 
@@ -136,21 +139,16 @@ impl StiffnessReport {
             mu.join(", ")
         );
         let _ = writeln!(s);
-        let _ = writeln!(
-            s,
-            "{:>2} {:>10} {:>14} {:>14}",
-            "#", "F_n [N]", "k_n [N/um]", "k_t [N/um]"
-        );
+        let mut t = Table::new(">#; >F_n [N]:.5; >k_n [N/um]:.4; >k_t [N/um]:.4");
         for (i, c) in self.contacts.iter().enumerate() {
-            let _ = writeln!(
-                s,
-                "{:>2} {:>10.5} {:>14.4} {:>14.4}",
+            t.row(cells![
                 i + 1,
                 c.normal_force_n,
                 c.normal_stiffness_n_per_m * 1e-6,
-                c.tangential_stiffness_n_per_m * 1e-6
-            );
+                c.tangential_stiffness_n_per_m * 1e-6,
+            ]);
         }
+        s += &t.text();
         for p in &self.points {
             let _ = writeln!(s);
             let _ = writeln!(
@@ -320,62 +318,38 @@ impl LoadReport {
 
     /// The deflection of each point [nm, nrad].
     fn deflections(&self, s: &mut String) {
-        let _ = writeln!(
-            s,
-            "{:<16} {:>10} {:>10} {:>10} {:>11} {:>11} {:>11}",
-            "deflection", "x [nm]", "y [nm]", "z [nm]", "phi_x[nrad]", "phi_y[nrad]", "phi_z[nrad]"
-        );
+        let mut t = pose_table("<deflection", "");
         for q in &self.points {
-            let d = &q.deflection;
-            let _ = writeln!(
-                s,
-                "{:<16} {:>10.4} {:>10.4} {:>10.4} {:>11.3} {:>11.3} {:>11.3}",
-                q.name,
-                d.x_m * 1e9,
-                d.y_m * 1e9,
-                d.z_m * 1e9,
-                d.phi_x_rad * 1e9,
-                d.phi_y_rad * 1e9,
-                d.phi_z_rad * 1e9
-            );
+            t.row(pose_cells(cells![&q.name], &q.deflection));
         }
+        *s += &t.text();
     }
 
     /// Each contact before and after the load.
     fn contact_rows(&self, s: &mut String) {
-        let _ = writeln!(
-            s,
-            "{:>2} {:>11} {:>11} {:>10} {:>10} {:>13} {:>6}",
-            "#", "F_n0 [N]", "F_n [N]", "|F_t| [N]", "|F_t|/F_n", "|F_t|/mu_sF_n", "state"
+        let mut t = Table::new(
+            ">#; >F_n0 [N]:.6; >F_n [N]:.6; >|F_t| [N]:.6; >|F_t|/F_n:.6; >|F_t|/mu_sF_n:.4; >state",
         );
         for (i, (c, c0)) in self.contacts.iter().zip(&self.seated_contacts).enumerate() {
-            let use_ratio = if c.mu_static > 0.0 && c.normal_force_n > 0.0 {
-                format!(
-                    "{:.4}",
-                    c.tangential_force_n / (c.mu_static * c.normal_force_n)
-                )
+            let loaded = c.normal_force_n > 0.0;
+            let ratio = if loaded {
+                c.tangential_force_n / c.normal_force_n
             } else {
-                "-".to_string()
+                0.0
             };
-            let _ = writeln!(
-                s,
-                "{:>2} {:>11.6} {:>11.6} {:>10.6} {:>10.6} {:>13} {:>6}",
+            let used = (c.mu_static > 0.0 && loaded)
+                .then(|| c.tangential_force_n / (c.mu_static * c.normal_force_n));
+            t.row(cells![
                 i + 1,
                 c0.normal_force_n,
                 c.normal_force_n,
                 c.tangential_force_n,
-                if c.normal_force_n > 0.0 {
-                    c.tangential_force_n / c.normal_force_n
-                } else {
-                    0.0
-                },
-                use_ratio,
-                match c.state {
-                    crate::contact::SlipState::Stick => "stick",
-                    crate::contact::SlipState::Slip => "slip",
-                }
-            );
+                ratio,
+                used,
+                c.state.name(),
+            ]);
         }
+        *s += &t.text();
     }
 
     /// The safe load envelope and where the given load lies in it.

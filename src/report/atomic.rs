@@ -75,6 +75,16 @@ impl AtomicFile {
     }
 }
 
+impl Write for AtomicFile {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.writer.write(buf)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.writer.flush()
+    }
+}
+
 /// A new empty temporary file in `target`'s folder (`.name.XXXX.suffix`).
 pub fn temp_next_to(target: &Path, suffix: &str) -> Result<NamedTempFile, WriteError> {
     let dir = match target.parent() {

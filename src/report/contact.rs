@@ -2,8 +2,10 @@
 
 use std::fmt::Write;
 
+use crate::contact::ContactEvaluation;
 use crate::contact::history::HistoryStep;
-use crate::contact::{ContactEvaluation, SlipState};
+use crate::dof::nano;
+use crate::report::table::{Table, cells};
 
 /// A readable table of one contact evaluation (SI values with engineering units).
 pub fn contact_table(e: &ContactEvaluation) -> String {
@@ -31,7 +33,7 @@ pub fn contact_table(e: &ContactEvaluation) -> String {
             "Hertz constant K (F = K d^1.5)",
             format!("{:.6e} N/m^1.5", e.hertz_constant),
         ),
-        ("approach", format!("{:.4} nm", e.approach_m * 1e9)),
+        ("approach", format!("{:.4} nm", nano(e.approach_m))),
         (
             "semi-axes a, b",
             format!(
@@ -112,22 +114,11 @@ pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
         s,
         "# force control, one step per row from the unloaded state; x = major axis of the contact ellipse (along the pin), SI units"
     );
-    s.push_str("step,P_N,Qx_N,Qy_N,sx_m,sy_m,slip\n");
+    let mut t = Table::new("<step; <P_N:e; <Qx_N:e; <Qy_N:e; <sx_m:e; <sy_m:e; <slip");
     for (i, st) in steps.iter().enumerate() {
-        let _ = writeln!(
-            s,
-            "{},{:e},{:e},{:e},{:e},{:e},{}",
-            i + 1,
-            st.load.normal_force,
-            st.load.tangential_force[0],
-            st.load.tangential_force[1],
-            st.displacement[0],
-            st.displacement[1],
-            match st.slip {
-                SlipState::Stick => "stick",
-                SlipState::Slip => "slip",
-            }
-        );
+        let (q, d) = (st.load.tangential_force, st.displacement);
+        let n = st.load.normal_force;
+        t.row(cells![i + 1, n, q[0], q[1], d[0], d[1], st.slip.name()]);
     }
-    s
+    s + &t.csv()
 }

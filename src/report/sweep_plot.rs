@@ -14,10 +14,11 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use thiserror::Error;
 
+use crate::dof::Dof;
 use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
 use crate::report::atomic::{WriteError, check_overwrite, write_file};
-use crate::report::plot::{Dof, color};
+use crate::report::plot::color;
 use crate::report::sweep_text::short as tick;
 use crate::study::PointStats;
 
@@ -249,7 +250,7 @@ fn dof_panel(
         .label_style(("sans-serif", 12))
         .x_label_formatter(&fmt)
         .x_desc(r.sets[k].field.as_str())
-        .y_desc(format!("σ_{} [{}]", dof.label(), dof.unit()))
+        .y_desc(format!("σ_{} [{}]", dof.symbol(), dof.unit()))
         .draw()
         .map_err(draw_err)?;
     for (gi, (label, g)) in series.iter().enumerate() {

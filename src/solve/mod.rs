@@ -252,51 +252,17 @@ impl SeatingPath {
     }
 }
 
-/// Pose of an evaluation point relative to a reference pose: translation of
-/// the point and the rotation vector of R R_ref^-1 (finite rotation). All
-/// six components enter a study ([`PointPose::components`]); phi_z is the
-/// clocking about the coupling axis.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct PointPose {
-    pub x_m: f64,
-    pub y_m: f64,
-    pub z_m: f64,
-    pub phi_x_rad: f64,
-    pub phi_y_rad: f64,
-    pub phi_z_rad: f64,
-}
+/// Pose of an evaluation point relative to a reference pose.
+pub use crate::dof::PointPose;
 
 impl PointPose {
-    /// Motion of body point `p` (scene coordinates) from pose `from` to pose `to`.
+    /// Motion of body point `p` (scene coordinates) from pose `from` to pose
+    /// `to`: translation of the point and the rotation vector of
+    /// R R_ref^-1 (finite rotation).
     pub fn between(from: &BodyPose, to: &BodyPose, p: &Vector3<f64>) -> Self {
         let d = to.apply(p) - from.apply(p);
         let phi = (to.rotation * from.rotation.inverse()).scaled_axis();
-        PointPose {
-            x_m: d.x,
-            y_m: d.y,
-            z_m: d.z,
-            phi_x_rad: phi.x,
-            phi_y_rad: phi.y,
-            phi_z_rad: phi.z,
-        }
-    }
-
-    /// The five components [x, y, z, phi_x, phi_y] of the paper's Table 2.
-    pub fn evaluated(&self) -> [f64; 5] {
-        [self.x_m, self.y_m, self.z_m, self.phi_x_rad, self.phi_y_rad]
-    }
-
-    /// All six components [x, y, z, phi_x, phi_y, phi_z] (m, rad), the
-    /// order of `study::runner::COMPONENTS`.
-    pub fn components(&self) -> [f64; 6] {
-        [
-            self.x_m,
-            self.y_m,
-            self.z_m,
-            self.phi_x_rad,
-            self.phi_y_rad,
-            self.phi_z_rad,
-        ]
+        PointPose::from_components([d.x, d.y, d.z, phi.x, phi.y, phi.z])
     }
 }
 

@@ -11,10 +11,11 @@
 use serde::{Deserialize, Serialize};
 
 use super::DesignSpec;
+use super::inputs::Input;
 use super::runner::StudyOptions;
 use crate::assembly::Coupling;
 
-/// Version of the output schema (docs/output.md). 2: phi_z evaluated, JSON
+/// Version of the output schema (docs/output.md). 2: the clocking about z evaluated, JSON
 /// records with `inputs_si` and `design_u`, provenance and fingerprint.
 pub const SCHEMA_VERSION: u32 = 2;
 
@@ -77,7 +78,12 @@ impl Fingerprint {
             seed: design.seed,
             samples: design.n,
             replicates: design.replicates,
-            vary: opts.variation.input_names(coupling),
+            vary: opts
+                .variation
+                .inputs(coupling)
+                .iter()
+                .map(Input::name)
+                .collect(),
             mu_static: s.friction.mu_static,
             spread: s.friction.spread,
             dynamic_ratio: s.friction.dynamic_ratio,

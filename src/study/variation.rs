@@ -114,11 +114,6 @@ impl Variation {
         v
     }
 
-    /// Names of the design dimensions, in row order.
-    pub fn input_names(&self, coupling: &Coupling) -> Vec<String> {
-        self.inputs(coupling).iter().map(Input::name).collect()
-    }
-
     /// True if one pair of halves re-seats differently from sample to
     /// sample (friction, preload or start varied).
     pub fn reseating(&self) -> bool {
@@ -126,7 +121,7 @@ impl Variation {
     }
 
     /// Static coefficients and start pose of one design row (of
-    /// `input_names().len()` coordinates).
+    /// `inputs().len()` coordinates).
     pub fn map(&self, coupling: &Coupling, row: &[f64]) -> (Vec<f64>, StartPose) {
         let s = self.sample(coupling, row);
         (s.mu, s.start)

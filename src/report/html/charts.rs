@@ -6,9 +6,10 @@
 
 use std::path::Path;
 
+use crate::dof::{Dof, nano};
 use crate::report::html::reference::ReferenceRow;
 use crate::report::plot::{
-    ConvergenceSeries, Dof, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
+    ConvergenceSeries, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
     xy_scatter_svg,
 };
 use crate::report::study_text::truncate;
@@ -88,7 +89,7 @@ fn scatter(variants: &[&VariantReport], interchange: bool) -> Vec<VariantScatter
                 xy: v
                     .records
                     .iter()
-                    .map(|r| (r.outputs[k] * 1e9, r.outputs[k + 1] * 1e9))
+                    .map(|r| (nano(r.outputs[k]), nano(r.outputs[k + 1])))
                     .collect(),
             });
         }
@@ -110,7 +111,7 @@ fn convergence(variants: &[&VariantReport]) -> Result<Vec<ConvergenceSeries>, St
             .collect();
         for &(k0, point) in &starts {
             for (j, &dof) in Dof::ALL.iter().enumerate() {
-                let values: Vec<f64> = v.records.iter().map(|r| r.outputs[k0 + j] * 1e9).collect();
+                let values: Vec<f64> = v.records.iter().map(|r| nano(r.outputs[k0 + j])).collect();
                 out.push(ConvergenceSeries {
                     variant: series_label(v, point, starts.len()),
                     dof,

@@ -20,7 +20,7 @@ pub mod charts;
 mod drawing;
 pub mod inputs;
 mod mechanics;
-mod page;
+pub(crate) mod page;
 pub mod prediction;
 pub mod reference;
 mod svg;

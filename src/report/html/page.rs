@@ -106,12 +106,3 @@ pub fn strip_xml_prolog(svg: &str) -> &str {
         None => s,
     }
 }
-
-/// Number in a table: `digits` decimals, or `-` where not finite.
-pub fn num(v: f64, digits: usize) -> String {
-    if v.is_finite() {
-        format!("{v:.digits$}")
-    } else {
-        "-".to_string()
-    }
-}
