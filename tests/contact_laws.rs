@@ -387,7 +387,7 @@ proptest! {
     ) {
         let shape = ContactShape::ALL[shape_i];
         let r2 = if shape == ContactShape::SphereSeat { r1 * (1.0 + r2 * 10.0) } else { r2 };
-        // Independent moduli (MODEL.md 2; Johnson 1985 eq. 4.22 and 7.18):
+        // Independent moduli (docs/model.md, Hertz; Johnson 1985 eq. 4.22 and 7.18):
         // 1/E* = sum (1 - v^2)/E, 1/G* = sum (2 - v)/G, G = E / (2 (1 + v)).
         let e_star = 1.0 / [&m1, &m2].iter().map(|m| (1.0 - m.poisson_ratio.powi(2)) / m.youngs_modulus).sum::<f64>();
         let g_star = 1.0 / [&m1, &m2].iter()
@@ -404,7 +404,7 @@ proptest! {
         prop_assert!(rel(e.max_pressure_pa, 3.0 * f / (2.0 * PI * e.semi_axes_m[0] * e.semi_axes_m[1])) < 1e-12);
         prop_assert!(rel(e.effective_modulus_pa, e_star) < 1e-12);
         prop_assert!(rel(e.effective_shear_modulus_pa, g_star) < 1e-12);
-        // Relative radii from the shapes (MODEL.md 2): plane R = r1, convex
+        // Relative radii from the shapes (docs/model.md, Hertz): plane R = r1, convex
         // ball 1/R = 1/r1 + 1/r2, concave seat 1/R = 1/r1 - 1/r2; crossed
         // cylinder: 1/(1/r1 + 1/r2) across the axis and r1 along it.
         let across = 1.0 / (1.0 / r1 + 1.0 / r2);
@@ -643,7 +643,7 @@ fn proportional_loading_has_the_mindlin_deresiewicz_compliance() {
 /// ellipse with semi-axes a = 1 >= b = kp, per body, by the trapezoidal rule
 /// (periodic integrand: spectral convergence) over the Cerruti kernel:
 /// C = 1/(8 pi a b G) int_0^2pi R(theta) [(1 - nu) + nu cos^2(theta)] dtheta
-/// (sin^2 across), R(theta) = a b / sqrt(b^2 cos^2 + a^2 sin^2) (MODEL.md §2;
+/// (sin^2 across), R(theta) = a b / sqrt(b^2 cos^2 + a^2 sin^2) (docs/model.md, Hertz;
 /// Johnson 1985 §7.2 with Cerruti's point-force displacement, eq. 3.86a).
 fn cerruti_compliance(m: &Material, kp: f64, along_major: bool) -> f64 {
     let (a, b) = (1.0, kp);

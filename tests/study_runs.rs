@@ -114,7 +114,7 @@ fn maxwell_scatter_is_symmetric_in_x_y_and_centred() {
             s.phi_x_nrad,
             s.phi_y_nrad
         );
-        // sigma_z below sigma_x and sigma_y (MODEL.md section 6).
+        // sigma_z below sigma_x and sigma_y, the paper's trend (docs/paper.md, "What agrees").
         assert!(s.z_nm < s.x_nm.min(s.y_nm));
         // Mean displacement relative to nominal is small against sigma.
         let m = p.mean.values();
