@@ -264,7 +264,7 @@ pub fn design(sampler: Sampler, dims: usize, n: usize, seed: u64) -> Result<Vec<
     sample_range(sampler, dims, n, seed, 0..n)
 }
 
-/// Rows `range` of the design `(sampler, dims, n, seed)`: equal to `design(..)[range]`, bit for bit.
+/// Rows `range` of the design `(sampler, dims, n, seed)`: `design(..)[range]`, computed the same way.
 ///
 /// MC and corners compute only the requested rows. An LHS design depends as a whole on
 /// `(seed, n)`, so it is computed completely and sliced (cheap for the sizes LHS is used for).
