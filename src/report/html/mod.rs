@@ -32,13 +32,13 @@ use thiserror::Error;
 
 use crate::analysis::stiffness::CouplingStiffness;
 use crate::assembly::AssemblyError;
+use crate::report::table::escape;
 use crate::scene::{Scene, SceneError};
 use crate::solve::SolveError;
 use crate::study::StudyError;
 use crate::study::VariantReport;
 use crate::study::provenance::VERSION;
 pub use inputs::{SceneInput, StudyInput, load_study, scene_input};
-use page::escape;
 pub use reference::{ReferenceRow, load_reference, parse_reference};
 
 /// The report could not be made.

@@ -4,7 +4,7 @@
 
 use std::fmt::Write;
 
-use super::page::escape;
+use crate::report::table::escape;
 
 pub const BALL: &str = "#0072b2";
 pub const FIXED: &str = "#8c959f";
