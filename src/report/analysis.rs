@@ -67,13 +67,7 @@ pub struct StiffnessReport {
 }
 
 fn rows(m: &nalgebra::Matrix6<f64>) -> [[f64; 6]; 6] {
-    let mut out = [[0.0; 6]; 6];
-    for (r, row) in out.iter_mut().enumerate() {
-        for (c, v) in row.iter_mut().enumerate() {
-            *v = m[(r, c)];
-        }
-    }
-    out
+    std::array::from_fn(|r| std::array::from_fn(|c| m[(r, c)]))
 }
 
 impl StiffnessReport {
@@ -151,11 +145,8 @@ impl StiffnessReport {
         s += &t.text();
         for p in &self.points {
             let _ = writeln!(s);
-            let _ = writeln!(
-                s,
-                "point {} at ({:.4}, {:.4}, {:.4}) m",
-                p.name, p.position_m[0], p.position_m[1], p.position_m[2]
-            );
+            let [x, y, z] = p.position_m;
+            let _ = writeln!(s, "point {} at ({x:.4}, {y:.4}, {z:.4}) m", p.name);
             let _ = writeln!(
                 s,
                 "  stiffness matrix (u [m], phi [rad]) -> (F [N], M [N m]), SI:"
@@ -178,14 +169,8 @@ impl StiffnessReport {
             ] {
                 let _ = writeln!(s, "  {title}");
                 for r in rows {
-                    let _ = writeln!(
-                        s,
-                        "    {:>12.4} {unit} ({:>7.4}, {:>7.4}, {:>7.4})",
-                        r.stiffness * 1e-6,
-                        r.direction[0],
-                        r.direction[1],
-                        r.direction[2]
-                    );
+                    let ([x, y, z], k) = (r.direction, r.stiffness * 1e-6);
+                    let _ = writeln!(s, "    {k:>12.4} {unit} ({x:>7.4}, {y:>7.4}, {z:>7.4})");
                 }
             }
         }
@@ -286,21 +271,11 @@ impl LoadReport {
     fn header(&self, s: &mut String) {
         let _ = writeln!(s, "{}  ({})", self.scene, self.name);
         let mu: Vec<String> = self.mu_static.iter().map(|m| format!("{m:.4}")).collect();
-        let f = self.force_n;
-        let p = self.point_m;
-        let m = self.moment_n_m;
+        let [f, p, m] = [self.force_n, self.point_m, self.moment_n_m]
+            .map(|[x, y, z]| format!("({x}, {y}, {z})"));
         let _ = writeln!(
             s,
-            "load after seating (preload held): F = ({}, {}, {}) N at ({}, {}, {}) m, M = ({}, {}, {}) N m; mu_s = [{}]",
-            f[0],
-            f[1],
-            f[2],
-            p[0],
-            p[1],
-            p[2],
-            m[0],
-            m[1],
-            m[2],
+            "load after seating (preload held): F = {f} N at {p} m, M = {m} N m; mu_s = [{}]",
             mu.join(", ")
         );
         if self.factor_reached < 1.0 {
@@ -356,20 +331,16 @@ impl LoadReport {
     fn envelope_text(&self, s: &mut String) {
         match (&self.envelope.event, self.envelope.factor) {
             (Some(e), Some(f)) => {
+                let [fl, ml] = [self.force_n, self.moment_n_m]
+                    .map(|v| v.map(|c| f * c))
+                    .map(|[x, y, z]| format!("({x:.5}, {y:.5}, {z:.5})"));
                 let _ = writeln!(
                     s,
-                    "safe load envelope: contact {} {} at load factor {:.5} (bracket [{:.6}, {:.6}]) = F ({:.5}, {:.5}, {:.5}) N, M ({:.5}, {:.5}, {:.5}) N m",
+                    "safe load envelope: contact {} {} at load factor {f:.5} (bracket [{:.6}, {:.6}]) = F {fl} N, M {ml} N m",
                     e.contact,
                     e.kind.name(),
-                    f,
                     e.previous,
                     e.factor,
-                    f * self.force_n[0],
-                    f * self.force_n[1],
-                    f * self.force_n[2],
-                    f * self.moment_n_m[0],
-                    f * self.moment_n_m[1],
-                    f * self.moment_n_m[2]
                 );
                 let _ = writeln!(
                     s,

@@ -19,7 +19,7 @@ pub enum WriteError {
 }
 
 impl WriteError {
-    fn io(path: &Path, e: impl std::fmt::Display) -> Self {
+    pub(crate) fn io(path: &Path, e: impl std::fmt::Display) -> Self {
         WriteError::Io {
             path: path.display().to_string(),
             reason: e.to_string(),

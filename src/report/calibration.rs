@@ -42,31 +42,25 @@ fn value(name: &str, v: f64) -> String {
 fn parameter_lines(c: &Calibration) -> String {
     let mut s = String::new();
     for (name, p) in &c.parameters {
+        let alone = name == "spread" && c.parameters.len() == 1;
+        let low = match (p.low_at_bound, name == "spread") {
+            (false, _) => "",
+            (true, true) => "  (low end: no lower bound)",
+            (true, false) => "  (low end: at the range end)",
+        };
+        let high = match (p.high_at_bound, alone) {
+            (false, _) => "",
+            (true, true) => "  (high end: at mu_static)",
+            (true, false) => "  (high end: at the range end)",
+        };
         s += &format!(
-            "{name}: {}   {:.0} % interval [{}, {}]{}{}   ({})\n",
+            "{name}: {}   {:.0} % interval [{}, {}]{low}{high}   ({})\n",
             value(name, p.estimate),
             p.level * 100.0,
             value(name, p.low),
             value(name, p.high),
-            if !p.low_at_bound {
-                ""
-            } else if name == "spread" {
-                "  (low end: no lower bound)"
-            } else {
-                "  (low end: at the range end)"
-            },
-            if p.high_at_bound {
-                if name == "spread" && c.parameters.len() == 1 {
-                    "  (high end: at mu_static)".to_string()
-                } else {
-                    "  (high end: at the range end)".to_string()
-                }
-            } else {
-                String::new()
-            },
             p.method
         );
-        let alone = name == "spread" && c.parameters.len() == 1;
         if !alone && (p.low_at_bound || p.high_at_bound) {
             let r = p.range.map_or(String::new(), |[a, b]| {
                 format!(" [{}, {}]", value(name, a), value(name, b))

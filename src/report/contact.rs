@@ -10,72 +10,44 @@ use crate::report::table::{Table, cells};
 /// A readable table of one contact evaluation (SI values with engineering units).
 pub fn contact_table(e: &ContactEvaluation) -> String {
     let mut s = String::new();
-    let rows: [(&str, String); 14] = [
-        ("shape", e.shape.name().to_string()),
-        ("normal load", format!("{:.6} N", e.load_n)),
-        (
-            "effective modulus E*",
-            format!("{:.4} GPa", e.effective_modulus_pa / 1e9),
-        ),
-        (
-            "effective shear modulus G*",
-            format!("{:.4} GPa", e.effective_shear_modulus_pa / 1e9),
-        ),
-        (
-            "relative radii Rx, Ry",
-            format!(
-                "{:.6}, {:.6} mm",
-                e.relative_radii_m[0] * 1e3,
-                e.relative_radii_m[1] * 1e3
-            ),
-        ),
-        (
-            "Hertz constant K (F = K d^1.5)",
-            format!("{:.6e} N/m^1.5", e.hertz_constant),
-        ),
-        ("approach", format!("{:.4} nm", nano(e.approach_m))),
-        (
-            "semi-axes a, b",
-            format!(
-                "{:.4}, {:.4} um",
-                e.semi_axes_m[0] * 1e6,
-                e.semi_axes_m[1] * 1e6
-            ),
-        ),
-        (
-            "peak pressure p0",
-            format!("{:.4} MPa", e.max_pressure_pa / 1e6),
-        ),
-        (
-            "normal stiffness dF/dd",
-            format!("{:.6e} N/m", e.normal_stiffness_n_per_m),
-        ),
-        (
-            "tangential stiffness k_t",
-            format!(
-                "{:.6e} N/m (geometric mean)",
-                e.tangential_stiffness_n_per_m
-            ),
-        ),
-        (
-            "k_t along a, along b (Mindlin)",
-            format!(
-                "{:.6e}, {:.6e} N/m",
-                e.tangential_stiffness_major_n_per_m, e.tangential_stiffness_minor_n_per_m
-            ),
-        ),
-        (
-            "max subsurface shear tau_max",
-            format!("{:.4} MPa", e.max_shear_stress_pa / 1e6),
-        ),
-        (
-            "depth of tau_max",
-            format!("{:.4} um", e.max_shear_depth_m * 1e6),
-        ),
-    ];
-    for (k, v) in rows {
+    let mut row = |k: &str, v: String| {
         let _ = writeln!(s, "{k:<32} {v}");
-    }
+    };
+    let [rx, ry] = e.relative_radii_m.map(|r| r * 1e3);
+    let [a, b] = e.semi_axes_m.map(|r| r * 1e6);
+    row("shape", e.shape.name().to_string());
+    row("normal load", format!("{:.6} N", e.load_n));
+    let gpa = |v: f64| format!("{:.4} GPa", v / 1e9);
+    row("effective modulus E*", gpa(e.effective_modulus_pa));
+    row(
+        "effective shear modulus G*",
+        gpa(e.effective_shear_modulus_pa),
+    );
+    row("relative radii Rx, Ry", format!("{rx:.6}, {ry:.6} mm"));
+    let k = e.hertz_constant;
+    row("Hertz constant K (F = K d^1.5)", format!("{k:.6e} N/m^1.5"));
+    row("approach", format!("{:.4} nm", nano(e.approach_m)));
+    row("semi-axes a, b", format!("{a:.4}, {b:.4} um"));
+    let mpa = |v: f64| format!("{:.4} MPa", v / 1e6);
+    row("peak pressure p0", mpa(e.max_pressure_pa));
+    let k = e.normal_stiffness_n_per_m;
+    row("normal stiffness dF/dd", format!("{k:.6e} N/m"));
+    let k = e.tangential_stiffness_n_per_m;
+    row(
+        "tangential stiffness k_t",
+        format!("{k:.6e} N/m (geometric mean)"),
+    );
+    let (ka, kb) = (
+        e.tangential_stiffness_major_n_per_m,
+        e.tangential_stiffness_minor_n_per_m,
+    );
+    row(
+        "k_t along a, along b (Mindlin)",
+        format!("{ka:.6e}, {kb:.6e} N/m"),
+    );
+    row("max subsurface shear tau_max", mpa(e.max_shear_stress_pa));
+    let d = e.max_shear_depth_m * 1e6;
+    row("depth of tau_max", format!("{d:.4} um"));
     s
 }
 

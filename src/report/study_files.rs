@@ -59,10 +59,8 @@ impl StudyReport {
         force: bool,
         samples_written: bool,
     ) -> Result<Vec<String>, WriteError> {
-        std::fs::create_dir_all(dir).map_err(|e| WriteError::Io {
-            path: dir.display().to_string(),
-            reason: format!("cannot create the folder: {e}"),
-        })?;
+        std::fs::create_dir_all(dir)
+            .map_err(|e| WriteError::io(dir, format!("cannot create the folder: {e}")))?;
         let mut written = Vec::new();
         if !samples_written {
             for (i, v) in self.variants.iter().enumerate() {
@@ -84,10 +82,7 @@ impl StudyReport {
     /// interchangeability when tolerances vary).
     fn write_plots(&self, dir: &Path, force: bool) -> Result<Vec<String>, WriteError> {
         let variants: Vec<&VariantReport> = self.variants.iter().collect();
-        let charts = study_charts(&variants, &[]).map_err(|e| WriteError::Io {
-            path: dir.display().to_string(),
-            reason: e.to_string(),
-        })?;
+        let charts = study_charts(&variants, &[]).map_err(|e| WriteError::io(dir, e))?;
         let mut written = Vec::new();
         for c in charts {
             let path = dir.join(c.file_name);
@@ -118,10 +113,6 @@ pub struct SamplesCsv {
 impl SamplesCsv {
     /// Start the file with its provenance and header lines.
     pub fn create(path: &Path, v: &VariantReport, force: bool) -> Result<Self, WriteError> {
-        let io = |e: &dyn std::fmt::Display| WriteError::Io {
-            path: path.display().to_string(),
-            reason: e.to_string(),
-        };
         let mut file = AtomicFile::create(path, force)?;
         writeln!(
             file,
@@ -135,7 +126,7 @@ impl SamplesCsv {
             ),
             v.scene
         )
-        .map_err(|e| io(&e))?;
+        .map_err(|e| WriteError::io(path, e))?;
         let mut csv = SamplesCsv {
             out: csv::Writer::from_writer(file),
             path: path.display().to_string(),
@@ -150,19 +141,17 @@ impl SamplesCsv {
     }
 
     fn record(&mut self, cells: impl IntoIterator<Item = String>) -> Result<(), WriteError> {
-        self.out.write_record(cells).map_err(|e| WriteError::Io {
-            path: self.path.clone(),
-            reason: e.to_string(),
-        })
+        let path = Path::new(&self.path);
+        self.out
+            .write_record(cells)
+            .map_err(|e| WriteError::io(path, e))
     }
 
     /// Complete the file (rename over the target).
     pub fn commit(self) -> Result<(), WriteError> {
-        let file = self.out.into_inner().map_err(|e| WriteError::Io {
-            path: self.path,
-            reason: e.error().to_string(),
-        })?;
-        file.commit()
+        let path = Path::new(&self.path);
+        let file = self.out.into_inner();
+        file.map_err(|e| WriteError::io(path, e.error()))?.commit()
     }
 }
 

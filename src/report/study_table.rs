@@ -5,11 +5,11 @@ use std::fmt::Write;
 
 use crate::contact::FrictionLaw;
 use crate::dof::Dof;
-use crate::report::study_text::{bounds_text, detail, sigma_table, varied};
+use crate::report::study_text::{bounds_text, detail, interval_methods, sigma_table, varied};
 use crate::report::table::{Cell, Column, Table, cells};
+use crate::study::StudyReport;
 use crate::study::runner::INTERCHANGE_PREFIX;
 use crate::study::sensitivity::{DofSensitivity, SensitivityBlock};
-use crate::study::{StudyReport, VariantReport};
 
 impl StudyReport {
     /// The text table: the variants side by side as in the paper's Table 2,
@@ -28,7 +28,10 @@ impl StudyReport {
             let _ = writeln!(
                 s,
                 "Standard deviation of the seated pose relative to the nominal seating (nominal friction and preload, touching start; divisor n-1, for a replicated LHS the unbiased replicate estimate); below each row the 90 % interval of sigma, by a method valid for the design: {}.",
-                interval_methods(&self.variants)
+                interval_methods(
+                    self.variants.iter().flat_map(|v| &v.points),
+                    "per variant, after merging"
+                )
             );
             let _ = writeln!(s);
             s += &sigma_table(&self.variants, |v| &v.points);
@@ -39,20 +42,15 @@ impl StudyReport {
             .any(|v| !v.interchangeability.is_empty())
         {
             if self.variants.iter().any(|v| !v.points.is_empty()) {
-                let _ = writeln!(s);
+                s.push('\n');
             }
-            let _ = writeln!(
-                s,
-                "Interchangeability (manufacturing tolerances): standard deviation (and its interval) as above, of the seated pose of each perturbed coupling at nominal friction and preload, relative to the nominal geometry's seating."
-            );
-            let _ = writeln!(s);
+            s += "Interchangeability (manufacturing tolerances): standard deviation (and its interval) as above, of the seated pose of each perturbed coupling at nominal friction and preload, relative to the nominal geometry's seating.\n\n";
             s += &sigma_table(&self.variants, |v| &v.interchangeability);
         }
         for v in self.variants.iter().filter(|v| !v.partial) {
-            let _ = writeln!(s);
             let _ = writeln!(
                 s,
-                "{} ({}): {} samples, {} seed {}, mu_s = {} +- {} uniform, mu_d = {} mu_s, {}",
+                "\n{} ({}): {} samples, {} seed {}, mu_s = {} +- {} uniform, mu_d = {} mu_s, {}",
                 v.name,
                 v.scene,
                 v.samples,
@@ -138,20 +136,5 @@ fn friction_law_text(law: &FrictionLaw, ramp_time: f64) -> String {
         FrictionLaw::Decay { coefficient } => format!(
             "decay mu = mu_d + (mu_s - mu_d) exp(-{coefficient} s/m * v_slip), ramp {ramp_time} s"
         ),
-    }
-}
-
-/// The distinct interval methods of the variants' points, in order.
-fn interval_methods(variants: &[VariantReport]) -> String {
-    let mut methods: Vec<&str> = Vec::new();
-    for p in variants.iter().flat_map(|v| &v.points) {
-        if !methods.contains(&p.sigma_interval_method.as_str()) {
-            methods.push(&p.sigma_interval_method);
-        }
-    }
-    if methods.is_empty() {
-        "per variant, after merging".to_string()
-    } else {
-        methods.join("; ")
     }
 }

@@ -86,16 +86,37 @@ pub(crate) fn varied(v: &VariantReport) -> String {
     format!("{} ({} inputs)", parts.join(", "), v.inputs.len())
 }
 
+/// The distinct interval methods of `points`, in order, joined by `; `
+/// (`none` where there are none).
+pub(crate) fn interval_methods<'a>(
+    points: impl IntoIterator<Item = &'a PointStats>,
+    none: &str,
+) -> String {
+    let mut m: Vec<&str> = Vec::new();
+    for p in points {
+        if !m.contains(&p.sigma_interval_method.as_str()) {
+            m.push(&p.sigma_interval_method);
+        }
+    }
+    if m.is_empty() {
+        none.to_string()
+    } else {
+        m.join("; ")
+    }
+}
+
 /// The non-zero `[variation]` bounds, in um and mrad.
 pub(crate) fn bounds_text(b: &VariationBounds) -> String {
     let um = |x: f64| format!("{}", x * 1e6);
+    let pm = |v: &[f64]| {
+        v.iter()
+            .map(|x| format!("+-{}", um(*x)))
+            .collect::<Vec<_>>()
+    };
     let mut parts = Vec::new();
     if b.preload_offset_m.iter().any(|x| *x > 0.0) {
-        parts.push(format!(
-            "preload offset +-{}, +-{} um",
-            um(b.preload_offset_m[0]),
-            um(b.preload_offset_m[1])
-        ));
+        let p = pm(&b.preload_offset_m).join(", ");
+        parts.push(format!("preload offset {p} um"));
     }
     if b.preload_tilt_rad > 0.0 {
         parts.push(format!(
@@ -107,13 +128,8 @@ pub(crate) fn bounds_text(b: &VariationBounds) -> String {
         parts.push(format!("ball diameter +-{} um", um(b.ball_diameter_m)));
     }
     if b.ball_position_m.iter().any(|x| *x > 0.0) {
-        let p = b.ball_position_m;
-        parts.push(format!(
-            "ball position +-{}, +-{}, +-{} um",
-            um(p[0]),
-            um(p[1]),
-            um(p[2])
-        ));
+        let p = pm(&b.ball_position_m).join(", ");
+        parts.push(format!("ball position {p} um"));
     }
     if b.surface_normal_m > 0.0 {
         parts.push(format!("surface normal +-{} um", um(b.surface_normal_m)));
@@ -122,11 +138,8 @@ pub(crate) fn bounds_text(b: &VariationBounds) -> String {
         parts.push(format!("surface tilt +-{} mrad", b.surface_tilt_rad * 1e3));
     }
     if b.groove_position_m.iter().any(|x| *x > 0.0) {
-        parts.push(format!(
-            "groove position +-{}, +-{} um",
-            um(b.groove_position_m[0]),
-            um(b.groove_position_m[1])
-        ));
+        let p = pm(&b.groove_position_m).join(", ");
+        parts.push(format!("groove position {p} um"));
     }
     if parts.is_empty() {
         "none".to_string()

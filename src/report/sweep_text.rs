@@ -5,7 +5,9 @@ use std::fmt::Write;
 use crate::dof::nano;
 use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
-use crate::report::study_text::{point_csv_rows, sigma_cells, sigma_columns, truncate};
+use crate::report::study_text::{
+    interval_methods, point_csv_rows, sigma_cells, sigma_columns, truncate,
+};
 use crate::report::table::{Cell, Column, Table, cells};
 use crate::study::provenance::{SCHEMA_VERSION, VERSION};
 
@@ -105,7 +107,10 @@ impl SweepReport {
             self.name,
             self.scene,
             sets.join("; "),
-            self.interval_method(),
+            interval_methods(
+                self.designs.iter().flat_map(|d| &d.points),
+                "no design evaluated"
+            ),
             self.pareto_point
         );
         let _ = writeln!(s);
@@ -161,21 +166,6 @@ impl SweepReport {
                 }
                 None => t.note(format!("  (no interval: {})", p.sigma_interval_method)),
             }
-        }
-    }
-
-    /// The interval methods of the evaluated designs.
-    fn interval_method(&self) -> String {
-        let mut m: Vec<&str> = Vec::new();
-        for p in self.designs.iter().flat_map(|d| &d.points) {
-            if !m.contains(&p.sigma_interval_method.as_str()) {
-                m.push(&p.sigma_interval_method);
-            }
-        }
-        if m.is_empty() {
-            "no design evaluated".to_string()
-        } else {
-            m.join("; ")
         }
     }
 }

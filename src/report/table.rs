@@ -9,8 +9,6 @@ use std::fmt::Write as _;
 
 use comfy_table::{CellAlignment, presets::NOTHING};
 
-use crate::report::html::page::escape;
-
 /// How a column's numbers are written.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Format {
@@ -333,4 +331,20 @@ impl Table {
         s.push_str("</tbody></table></div>\n");
         s
     }
+}
+
+/// Escape text for HTML element content and attribute values.
+pub fn escape(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            c => out.push(c),
+        }
+    }
+    out
 }

@@ -135,53 +135,48 @@ pub fn study_charts(
         .filter(|v| !v.partial && (!v.points.is_empty() || !v.interchangeability.is_empty()))
         .collect();
     let mut charts = Vec::new();
-    let reseat: Vec<&VariantReport> = full
-        .iter()
-        .copied()
-        .filter(|v| !v.points.is_empty())
-        .collect();
+    let mut add = |file_name, title: &str, svg| {
+        let title = title.into();
+        charts.push(Chart {
+            file_name,
+            title,
+            svg,
+        });
+    };
+    let with = |f: fn(&VariantReport) -> bool| full.iter().copied().filter(|v| f(v)).collect();
+    let reseat: Vec<&VariantReport> = with(|v| !v.points.is_empty());
     if !reseat.is_empty() {
-        charts.push(Chart {
-            file_name: "sigma_bars.svg",
-            title: "Re-seating σ per DOF, with 90 % intervals".into(),
-            svg: sigma_bars_svg(&bars(&reseat, |v| &v.points, references), "re-seating σ")?,
-        });
+        let svg = sigma_bars_svg(&bars(&reseat, |v| &v.points, references), "re-seating σ")?;
+        add(
+            "sigma_bars.svg",
+            "Re-seating σ per DOF, with 90 % intervals",
+            svg,
+        );
     }
-    let inter: Vec<&VariantReport> = full
-        .iter()
-        .copied()
-        .filter(|v| !v.interchangeability.is_empty())
-        .collect();
+    let inter: Vec<&VariantReport> = with(|v| !v.interchangeability.is_empty());
     if !inter.is_empty() {
-        charts.push(Chart {
-            file_name: "interchange_sigma_bars.svg",
-            title: "Interchangeability σ (manufacturing tolerances), with 90 % intervals".into(),
-            svg: sigma_bars_svg(
-                &bars(&inter, |v| &v.interchangeability, &[]),
-                "interchange σ",
-            )?,
-        });
+        let svg = sigma_bars_svg(
+            &bars(&inter, |v| &v.interchangeability, &[]),
+            "interchange σ",
+        )?;
+        let title = "Interchangeability σ (manufacturing tolerances), with 90 % intervals";
+        add("interchange_sigma_bars.svg", title, svg);
     }
     let xy = scatter(&reseat, false);
     if !xy.is_empty() {
-        charts.push(Chart {
-            file_name: "scatter_xy.svg",
-            title: "Re-seating x-y scatter of every sample, per evaluation point".into(),
-            svg: xy_scatter_svg(&xy)?,
-        });
-        charts.push(Chart {
-            file_name: "sigma_convergence.svg",
-            title: "Convergence of σ with the number of samples, all six DOFs".into(),
-            svg: convergence_svg(&convergence(&reseat)?)?,
-        });
+        let title = "Re-seating x-y scatter of every sample, per evaluation point";
+        add("scatter_xy.svg", title, xy_scatter_svg(&xy)?);
+        let title = "Convergence of σ with the number of samples, all six DOFs";
+        add(
+            "sigma_convergence.svg",
+            title,
+            convergence_svg(&convergence(&reseat)?)?,
+        );
     }
     let xy = scatter(&inter, true);
     if !xy.is_empty() {
-        charts.push(Chart {
-            file_name: "interchange_scatter_xy.svg",
-            title: "Interchangeability x-y scatter, per evaluation point".into(),
-            svg: xy_scatter_svg(&xy)?,
-        });
+        let title = "Interchangeability x-y scatter, per evaluation point";
+        add("interchange_scatter_xy.svg", title, xy_scatter_svg(&xy)?);
     }
     Ok(charts)
 }

@@ -15,11 +15,11 @@ use std::path::Path;
 
 use serde::Deserialize;
 
-use super::page::escape;
 use super::reference::ReferenceRow;
 use crate::assembly::Coupling;
 use crate::calibrate::predict::with_parameters;
 use crate::dof::Dof;
+use crate::report::table::escape;
 
 /// The `calibration` block of a prediction.
 #[derive(Debug, Clone, PartialEq, Deserialize)]

@@ -1,9 +1,9 @@
 //! The run's metadata and the sigma tables (nm, nrad) with the 90 %
 //! interval of each sigma under it, and the reference values that match.
 
-use super::page::escape;
 use super::reference::ReferenceRow;
-use crate::report::study_text::{sigma_cells, sigma_columns};
+use crate::report::study_text::{interval_methods, sigma_cells, sigma_columns};
+use crate::report::table::escape;
 use crate::report::table::{Cell, Table, cells};
 use crate::study::result::varied_kinds;
 use crate::study::{PointStats, StudyReport, VariantReport};
@@ -60,7 +60,6 @@ pub fn sigma_table(
 ) -> String {
     let sigma = sigma_columns(|d| format!("σ_{} [{}]", d.symbol(), d.unit()));
     let mut t = Table::new(">#; <variant; <point; >n").with(sigma);
-    let mut methods: Vec<&str> = Vec::new();
     for (i, v) in variants.iter().enumerate() {
         if v.partial {
             t.note(format!(
@@ -74,9 +73,6 @@ pub fn sigma_table(
             t.note(format!("{} {}: CANNOT SEAT: {reason}", i + 1, v.name));
         }
         for p in stats(v) {
-            if !methods.contains(&p.sigma_interval_method.as_str()) {
-                methods.push(&p.sigma_interval_method);
-            }
             let (sigma, under) = sigma_cells(p);
             let mut row = cells![i + 1, &v.name, &p.name, p.n];
             row.extend(sigma);
@@ -92,11 +88,11 @@ pub fn sigma_table(
             }
         }
     }
-    let methods = if methods.is_empty() {
-        "none".to_string()
-    } else {
-        methods.join("; ")
-    };
+    let points = variants
+        .iter()
+        .filter(|v| !v.partial)
+        .flat_map(|v| stats(v));
+    let methods = interval_methods(points, "none");
     t.html("sigma")
         + &format!(
             "<p class=\"note\">σ: standard deviation of the seated pose relative to the nominal seating (divisor n − 1; for a replicated LHS the unbiased replicate estimate). Below each σ its 90 % interval, by a method valid for the design: {}.</p>\n",

@@ -116,10 +116,7 @@ pub fn read_json_parts<T: serde::de::DeserializeOwned>(
     parts
         .iter()
         .map(|p| {
-            let text = match first.take() {
-                Some(t) => t,
-                None => read_text(p)?,
-            };
+            let text = first.take().map_or_else(|| read_text(p), Ok)?;
             let doc = serde_json::from_str::<T>(&text)
                 .context(format!("{}: not a kinrepro {what} JSON", p.display()))?;
             Ok((p.display().to_string(), doc))
