@@ -73,10 +73,10 @@ fn bars(
 /// The x-y scatter [nm] of every variant and evaluation point, of the
 /// re-seating outputs or (`interchange`) of the interchangeability outputs.
 fn scatter(variants: &[&VariantReport], interchange: bool) -> Vec<VariantScatter> {
-    let mut out = Vec::new();
+    let (mut out, x) = (Vec::new(), format!("/{}", Dof::X.si_key()));
     for v in variants.iter().filter(|v| !v.records.is_empty()) {
         for (k, name) in v.output_names.iter().enumerate() {
-            let Some(point) = name.strip_suffix("/x_m") else {
+            let Some(point) = name.strip_suffix(&x) else {
                 continue;
             };
             if point.starts_with(INTERCHANGE_PREFIX) != interchange {
@@ -100,13 +100,13 @@ fn scatter(variants: &[&VariantReport], interchange: bool) -> Vec<VariantScatter
 /// Sigma of the first k samples for all six DOFs of every re-seating
 /// evaluation point.
 fn convergence(variants: &[&VariantReport]) -> Result<Vec<ConvergenceSeries>, StudyError> {
-    let mut out = Vec::new();
+    let (mut out, x) = (Vec::new(), format!("/{}", Dof::X.si_key()));
     for v in variants.iter().filter(|v| !v.records.is_empty()) {
         let starts: Vec<(usize, &str)> = v
             .output_names
             .iter()
             .enumerate()
-            .filter_map(|(k, n)| n.strip_suffix("/x_m").map(|p| (k, p)))
+            .filter_map(|(k, n)| n.strip_suffix(&x).map(|p| (k, p)))
             .filter(|(_, p)| !p.starts_with(INTERCHANGE_PREFIX))
             .collect();
         for &(k0, point) in &starts {
