@@ -159,31 +159,3 @@ pub fn parse_fit(fit: &[String]) -> Result<Vec<Param>, CalibrateError> {
     out.sort();
     Ok(out)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn names(v: &[&str]) -> Vec<String> {
-        v.iter().map(|s| s.to_string()).collect()
-    }
-
-    #[test]
-    fn fit_lists() {
-        let p = parse_fit(&names(&["support_compliance", "spread"])).unwrap();
-        assert_eq!(p, vec![Param::Spread, Param::SupportCompliance]);
-        assert!(matches!(
-            parse_fit(&names(&["spread", "spread"])),
-            Err(CalibrateError::DuplicateParameter(_))
-        ));
-        assert!(matches!(
-            parse_fit(&names(&["mu"])),
-            Err(CalibrateError::UnknownParameter(_))
-        ));
-        assert!(matches!(parse_fit(&[]), Err(CalibrateError::EmptyFit)));
-        assert!(matches!(
-            parse_fit(&names(&["spread", ""])),
-            Err(CalibrateError::EmptyFit)
-        ));
-    }
-}

@@ -258,26 +258,3 @@ impl HexMesh {
         out
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn graded_edges_reach_total_and_grow() {
-        let e = graded_edges(0.1, 5, 1.5, 10.0).unwrap();
-        assert!((e[5] - 0.5).abs() < 1e-12);
-        assert_eq!(*e.last().unwrap(), 10.0);
-        let s: Vec<f64> = e.windows(2).map(|w| w[1] - w[0]).collect();
-        assert!(s[5..].windows(2).all(|w| w[1] > w[0]));
-    }
-
-    #[test]
-    fn structured_counts() {
-        let m = HexMesh::structured(2, &[0.0, 1.0, 2.0], &[0.0, 1.0], &[-1.0, 0.0]).unwrap();
-        assert_eq!(m.dims, [5, 3, 3]);
-        assert_eq!(m.n_elements(), 2);
-        let a: f64 = m.top_tributary_areas().iter().sum();
-        assert!((a - 2.0).abs() < 1e-12);
-    }
-}

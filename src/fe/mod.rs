@@ -21,8 +21,6 @@ pub mod hertz_ref;
 pub mod mesh;
 pub mod pairs;
 pub mod system;
-#[cfg(test)]
-mod system_tests;
 pub mod validate;
 
 pub use hertz_ref::{HertzSolution, hertz};

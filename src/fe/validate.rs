@@ -331,38 +331,3 @@ pub fn run_convergence_with(
         })
         .collect()
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Rollers on x = 0 and y = 0 fix one DOF each; the far faces (x, y
-    /// maximal, the bottom) fix all three. Counted on a 3 x 4 x 3 node grid
-    /// from the grid alone: (nx-1)(ny-1)(nz-1) nodes lie off the far faces,
-    /// of which (ny-1)(nz-1) have x = 0 and (nx-1)(nz-1) have y = 0 (the
-    /// z axis node counts in both).
-    #[test]
-    fn boundary_conditions_fix_rollers_and_far_faces() {
-        let mesh = HexMesh::structured(
-            1,
-            &[0.0, 1.0, 2.0],
-            &[0.0, 1.0, 2.0, 3.0],
-            &[-2.0, -1.0, 0.0],
-        )
-        .unwrap();
-        let [nx, ny, nz] = mesh.dims;
-        assert_eq!([nx, ny, nz], [3, 4, 3]);
-        let mat = Material { e: 2e11, nu: 0.3 };
-        let (fixed, vals) = boundary_conditions(&mesh, &mat).unwrap();
-        let inner = (nx - 1) * (ny - 1) * (nz - 1);
-        let far = nx * ny * nz - inner;
-        let rollers = (ny - 1) * (nz - 1) + (nx - 1) * (nz - 1);
-        assert_eq!(fixed.iter().filter(|&&f| f).count(), 3 * far + rollers);
-        // A roller is held at zero; the far field moves (Boussinesq: the
-        // surface sinks under a downward load, u_z < 0 on the top face).
-        let roller = mesh.node_index(0, 1, nz - 1);
-        assert!(fixed[3 * roller] && !fixed[3 * roller + 1] && vals[3 * roller] == 0.0);
-        let far_top = mesh.node_index(nx - 1, 0, nz - 1);
-        assert!(fixed[3 * far_top + 2] && vals[3 * far_top + 2] < 0.0);
-    }
-}

@@ -169,18 +169,3 @@ impl SweepReport {
         }
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::short;
-
-    #[test]
-    fn short_numbers() {
-        assert_eq!(short(5.0), "5");
-        assert_eq!(short(16.666666666666664), "16.67");
-        assert_eq!(short(0.005), "0.005");
-        assert_eq!(short(0.0), "0");
-        assert_eq!(short(-2.5), "-2.5");
-        assert_eq!(short(2.1e11), "2.100e11");
-    }
-}

@@ -164,16 +164,3 @@ pub fn produced_by(solver: &str, sampler: &str, seed: &str, samples: &str, vary:
         "kinrepro {VERSION} (output schema {SCHEMA_VERSION}), solver {solver}, sampler {sampler}, seed {seed}, samples {samples}, vary {vary}"
     )
 }
-
-#[cfg(test)]
-mod tests {
-    use super::fnv1a64;
-
-    #[test]
-    fn fnv1a64_matches_published_vectors() {
-        // Test vectors of the FNV reference (Noll, "FNV hash", test suite).
-        assert_eq!(fnv1a64(b""), 0xcbf2_9ce4_8422_2325);
-        assert_eq!(fnv1a64(b"a"), 0xaf63_dc4c_8601_ec8c);
-        assert_eq!(fnv1a64(b"foobar"), 0x8594_4171_f739_67e8);
-    }
-}
