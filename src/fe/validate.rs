@@ -8,21 +8,20 @@ use crate::fe::elasticity::Material;
 use crate::fe::hertz_ref::hertz;
 use crate::fe::mesh::{HexMesh, graded_edges};
 use crate::fe::system::{Factor, FreeSystem, assemble};
-use crate::fe::{FeCase, FeError, FeResult, MeshOptions, boussinesq};
+use crate::fe::{ConvergenceRow, FeCase, FeError, FeResult, MeshOptions, boussinesq};
 use faer::Mat;
 use std::time::Instant;
 
 /// Number of right-hand sides solved at once when building the compliance matrix.
 const BATCH: usize = 48;
 
-/// Solves one contact case with the FE model (see [`crate::fe::solve_case`]):
-/// mesh, boundary conditions, contact candidates, their compliance, the
-/// force-approach curve, and the outputs at the target load.
-pub fn run_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError> {
+/// Solves one contact case with the FE model: mesh, boundary conditions,
+/// contact candidates, their compliance, the force-approach curve, and the
+/// outputs at the target load. The case is checked by [`hertz`].
+pub fn solve_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError> {
     let t0 = Instant::now();
-    case.check()?;
-    opt.check()?;
     let hz = hertz(case.rx, case.ry, case.e_star, case.load)?;
+    opt.check()?;
     let [ax, ay] = hz.semi_axes;
     let nu = opt.poisson;
     // Rigid indenter, frictionless: only E/(1-ν²) = E* enters the normal problem.
@@ -292,32 +291,20 @@ fn outputs(top: &TopNodes, st: &ContactState) -> Result<([f64; 2], f64, f64), Fe
     Ok((semi_axes, peak_pressure, min_pressure))
 }
 
-/// Mesh-convergence study: runs [`run_case`] at each relative element size in
-/// `levels` (element size at the contact / Hertz semi-axis) with otherwise default
-/// options, and reports the relative errors against Hertz.
-pub fn run_convergence(
-    case: &FeCase,
-    levels: &[f64],
-) -> Result<Vec<crate::fe::ConvergenceRow>, FeError> {
-    run_convergence_with(case, levels, &MeshOptions::default())
-}
-
-/// As [`run_convergence`], with the other mesh options taken from `base`.
-pub fn run_convergence_with(
-    case: &FeCase,
-    levels: &[f64],
-    base: &MeshOptions,
-) -> Result<Vec<crate::fe::ConvergenceRow>, FeError> {
+/// Mesh-convergence study: [`solve_case`] at each relative element size in
+/// `levels` (element size at the contact / Hertz semi-axis) with otherwise
+/// default options, and the relative errors against Hertz.
+pub fn convergence_study(case: &FeCase, levels: &[f64]) -> Result<Vec<ConvergenceRow>, FeError> {
     let hz = hertz(case.rx, case.ry, case.e_star, case.load)?;
     levels
         .iter()
         .map(|&rel| {
             let opt = MeshOptions {
                 element_size_rel: rel,
-                ..*base
+                ..Default::default()
             };
-            let r = run_case(case, &opt)?;
-            Ok(crate::fe::ConvergenceRow {
+            let r = solve_case(case, &opt)?;
+            Ok(ConvergenceRow {
                 element_size: r.element_size,
                 element_size_over_a: rel,
                 dofs: r.dofs,
