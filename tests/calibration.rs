@@ -72,7 +72,7 @@ fn summary(m: &Measurement) -> String {
         let unit = if d < 3 { "nm" } else { "nrad" };
         s += &format!(
             "{},{unit},{},{}\n",
-            kinrepro::calibrate::units::DOFS[d],
+            kinrepro::dof::Dof::ALL[d].name(),
             sg * 1e9,
             m.cycles()[j]
         );
