@@ -84,17 +84,11 @@ pub fn boundary_conditions(
                 if i == nx - 1 || j == ny - 1 || k == 0 {
                     let u = boussinesq::displacement(1.0, mat.e, mat.nu, mesh.nodes[a])
                         .ok_or(FeError::InvalidInput("Boussinesq at origin".into()))?;
-                    for c in 0..3 {
-                        fixed[3 * a + c] = true;
-                        vals[3 * a + c] = u[c];
-                    }
+                    fixed[3 * a..3 * a + 3].fill(true);
+                    vals[3 * a..3 * a + 3].copy_from_slice(&u);
                 } else {
-                    if i == 0 {
-                        fixed[3 * a] = true;
-                    }
-                    if j == 0 {
-                        fixed[3 * a + 1] = true;
-                    }
+                    fixed[3 * a] = i == 0;
+                    fixed[3 * a + 1] = j == 0;
                 }
             }
         }
@@ -130,15 +124,8 @@ impl<'a> TopNodes<'a> {
             other: Vec::new(),
         };
         let [nx, ny, _] = mesh.dims;
-        for j in 0..ny {
-            for i in 0..nx {
-                if t.is_cand(i, j) {
-                    t.cand.push((i, j));
-                } else {
-                    t.other.push((i, j));
-                }
-            }
-        }
+        let nodes = (0..ny).flat_map(|j| (0..nx).map(move |i| (i, j)));
+        (t.cand, t.other) = nodes.partition(|&(i, j)| t.is_cand(i, j));
         t
     }
 
@@ -180,10 +167,7 @@ fn contact_model(case: &FeCase, top: &TopNodes, fac: &Factor, vals: &[f64]) -> C
         let e = top.zeq(i, j);
         if e == usize::MAX { 0.0 } else { sol[(e, col)] }
     };
-    let mut ub = Mat::<f64>::zeros(sys.n_eq, 1);
-    for e in 0..sys.n_eq {
-        ub[(e, 0)] = sys.rhs_fixed[e];
-    }
+    let mut ub = Mat::<f64>::from_fn(sys.n_eq, 1, |e, _| sys.rhs_fixed[e]);
     fac.solve_in_place(ub.as_mut());
     let w_b = |i: usize, j: usize| {
         let e = top.zeq(i, j);
@@ -309,10 +293,7 @@ pub fn convergence_study(case: &FeCase, levels: &[f64]) -> Result<Vec<Convergenc
                 element_size_over_a: rel,
                 dofs: r.dofs,
                 approach_error_rel: r.approach / hz.approach - 1.0,
-                semi_axis_error_rel: [
-                    r.semi_axes[0] / hz.semi_axes[0] - 1.0,
-                    r.semi_axes[1] / hz.semi_axes[1] - 1.0,
-                ],
+                semi_axis_error_rel: [0, 1].map(|k| r.semi_axes[k] / hz.semi_axes[k] - 1.0),
                 seconds: r.seconds,
             })
         })
