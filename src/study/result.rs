@@ -141,20 +141,15 @@ pub struct StudyReport {
 
 /// The `--vary` names of what a variation varies.
 pub fn varied_kinds(var: &Variation) -> Vec<&'static str> {
-    let mut parts = Vec::new();
-    if var.friction {
-        parts.push("friction");
-    }
-    if var.preload {
-        parts.push("preload");
-    }
-    if var.start.is_some() {
-        parts.push("start");
-    }
-    if var.tolerances {
-        parts.push("tolerances");
-    }
-    parts
+    [
+        (var.friction, "friction"),
+        (var.preload, "preload"),
+        (var.start.is_some(), "start"),
+        (var.tolerances, "tolerances"),
+    ]
+    .into_iter()
+    .filter_map(|(on, kind)| on.then_some(kind))
+    .collect()
 }
 
 impl VariantReport {

@@ -237,22 +237,14 @@ pub fn validate(sampler: Sampler, dims: usize, n: usize) -> Result<()> {
                 });
             }
         }
-        Sampler::Lhs => {
-            if n == 0 {
-                return Err(StudyError::ZeroSamples);
-            }
-            if n > lhs::MAX_LHS_SAMPLES {
-                return Err(StudyError::LhsTooLarge {
-                    n,
-                    max: lhs::MAX_LHS_SAMPLES,
-                });
-            }
+        _ if n == 0 => return Err(StudyError::ZeroSamples),
+        Sampler::Lhs if n > lhs::MAX_LHS_SAMPLES => {
+            return Err(StudyError::LhsTooLarge {
+                n,
+                max: lhs::MAX_LHS_SAMPLES,
+            });
         }
-        Sampler::MonteCarlo => {
-            if n == 0 {
-                return Err(StudyError::ZeroSamples);
-            }
-        }
+        _ => {}
     }
     Ok(())
 }
