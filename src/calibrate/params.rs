@@ -42,6 +42,14 @@ pub enum Param {
 }
 
 impl Param {
+    /// All four, in the order of [`PARAMETERS`].
+    pub const ALL: [Param; 4] = [
+        Param::Spread,
+        Param::MuStatic,
+        Param::DynamicRatio,
+        Param::SupportCompliance,
+    ];
+
     /// Its `--fit` name.
     pub fn name(self) -> &'static str {
         PARAMETERS[self as usize]
@@ -49,14 +57,7 @@ impl Param {
 
     /// The parameter of a `--fit` name.
     pub fn from_name(name: &str) -> Option<Param> {
-        [
-            Param::Spread,
-            Param::MuStatic,
-            Param::DynamicRatio,
-            Param::SupportCompliance,
-        ]
-        .into_iter()
-        .find(|p| p.name() == name)
+        Param::ALL.into_iter().find(|p| p.name() == name)
     }
 
     /// Its value in `coupling` (the compliance of the first contact).
