@@ -160,7 +160,7 @@ impl ContactResult {
         );
         ContactResult {
             normal_force_n: e.normal_force,
-            tangential_force: [ft.x, ft.y, ft.z],
+            tangential_force: ft.into(),
             tangential_force_n: ft.norm(),
             approach_m: e.approach,
             hertz_approach_m: contact.normal.hertz_approach(e.normal_force),
@@ -178,12 +178,8 @@ impl ContactResult {
             shear_safety_factor: stress.shear_safety_factor,
             safety_factor: stress.safety_factor,
             safety_factor_left_out: stress.left_out,
-            point_m: [e.geometry.point.x, e.geometry.point.y, e.geometry.point.z],
-            normal: [
-                e.geometry.normal.x,
-                e.geometry.normal.y,
-                e.geometry.normal.z,
-            ],
+            point_m: e.geometry.point.into(),
+            normal: e.geometry.normal.into(),
         }
     }
 }
