@@ -127,10 +127,6 @@ impl<'a> Simulation<'a> {
         self.ramp_time
     }
 
-    pub fn frequencies(&self) -> Frequencies {
-        self.freq
-    }
-
     pub fn mass(&self) -> &MassModel {
         &self.mass
     }
