@@ -49,7 +49,6 @@ pub enum MaterialError {
 pub struct MaterialSources {
     /// Source of Young's modulus and Poisson's ratio.
     pub elastic: &'static str,
-    /// Source of the density.
     pub density: &'static str,
     /// Source of the allowable contact pressure, or why there is none.
     pub allowable_pressure: &'static str,

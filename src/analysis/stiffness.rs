@@ -57,10 +57,8 @@ pub struct ContactSpring {
     pub tangent: Matrix3<f64>,
 }
 
-/// The stiffness of a seated coupling.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CouplingStiffness {
-    /// The seated pose.
     pub pose: BodyPose,
     pub springs: Vec<ContactSpring>,
 }

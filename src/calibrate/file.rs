@@ -25,7 +25,6 @@ pub const READABLE_SCHEMA_VERSIONS: [u32; 2] = [1, 2];
 
 pub use super::params::PARAMETERS;
 
-/// How to calibrate.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CalibrateOptions {
     /// Parameters to fit (any of [`PARAMETERS`], each once).
@@ -39,7 +38,6 @@ pub struct CalibrateOptions {
     pub method: Method,
 }
 
-/// One fitted parameter.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Parameter {
     pub estimate: f64,
@@ -72,7 +70,6 @@ pub struct Correlation {
     pub matrix: Vec<Vec<f64>>,
 }
 
-/// The goodness-of-fit block.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct GoodnessOfFitReport {
     pub statistic: Option<f64>,
@@ -114,7 +111,6 @@ pub struct ModelInfo {
     pub grid: Option<GridInfo>,
 }
 
-/// The calibration file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Calibration {
     pub schema_version: u32,

@@ -169,7 +169,6 @@ fn model_info(
     }
 }
 
-/// The fit at the estimate.
 #[derive(Debug, Clone, PartialEq)]
 pub struct JointFit {
     /// Per fitted parameter (in the model's order): estimate and interval.

@@ -50,7 +50,6 @@ impl Param {
         Param::SupportCompliance,
     ];
 
-    /// Its `--fit` name.
     pub fn name(self) -> &'static str {
         PARAMETERS[self as usize]
     }
@@ -95,7 +94,6 @@ impl Param {
         }
     }
 
-    /// Set this parameter to `v` in `coupling`.
     pub fn set(self, coupling: &mut Coupling, v: f64) {
         let f = &mut coupling.scene.friction;
         match self {

@@ -116,7 +116,6 @@ impl HexMesh {
         i + self.dims[0] * (j + self.dims[1] * k)
     }
 
-    /// Number of elements.
     pub fn n_elements(&self) -> usize {
         self.elem_dims.iter().product()
     }

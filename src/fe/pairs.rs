@@ -16,7 +16,6 @@ pub struct PairCase {
     pub pair: ContactPair,
     /// Largest normal force of this pair in the nominal seatings [N].
     pub load: f64,
-    /// Scenes it occurs in.
     pub scenes: Vec<String>,
 }
 

@@ -150,7 +150,6 @@ fn ball_centres(diameter: f64) -> Vec<Vector3<f64>> {
 
 /// One contact of the expanded coupling.
 struct ContactSpec {
-    /// Index of its ball.
     ball: usize,
     /// Contact normal (unit, from the fixed element to the ball).
     normal: Vector3<f64>,

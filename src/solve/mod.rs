@@ -184,7 +184,6 @@ impl ContactResult {
     }
 }
 
-/// The result of one seating.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Seating {
     /// Final pose of the moving half.
@@ -233,7 +232,6 @@ pub enum SeatingPath {
     /// The quasi-static path halved an increment (at a stick/slip change
     /// or where Newton failed).
     Adaptive,
-    /// The dynamic solver.
     Dynamic,
 }
 

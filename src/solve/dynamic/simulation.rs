@@ -34,7 +34,6 @@ pub struct Simulation<'a> {
     body: RigidBodyHandle,
     dt: f64,
     pub(super) ramp_time: f64,
-    /// Steps taken.
     pub(super) steps: usize,
     committed_pose: BodyPose,
     states: Vec<TangentialState>,

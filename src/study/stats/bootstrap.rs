@@ -14,7 +14,6 @@ use serde::{Deserialize, Serialize};
 /// Fixed seed of the bootstrap resampling.
 pub const BOOTSTRAP_SEED: u64 = 0x6b69_6e72_6570_726f; // "kinrepro"
 
-/// Bootstrap settings.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BootstrapConfig {
     /// Number of resamples B (>= 2).
