@@ -330,7 +330,6 @@ impl Calibration {
             .unwrap_or_default()
     }
 
-    /// The estimates of all fitted parameters.
     pub fn estimates(&self) -> BTreeMap<String, f64> {
         self.parameters
             .iter()

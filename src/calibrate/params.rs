@@ -32,7 +32,6 @@ pub const DYNAMIC_RATIO_RANGE: (f64, f64) = (0.3, 1.0);
 /// Upper end of `support_compliance` in units of the largest Hertz compliance.
 pub const SUPPORT_COMPLIANCE_HERTZ_MULTIPLE: f64 = 4.0;
 
-/// One parameter of the model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Param {
     Spread,

@@ -79,7 +79,6 @@ pub enum UnitError {
         unit: String,
         dof: usize,
     },
-    /// A value that is not a number.
     #[error("`{text}` is not a number (with an optional unit)")]
     NotANumber { text: String },
     /// A value that is negative, infinite or NaN.

@@ -15,7 +15,6 @@ use crate::fe::FeError;
 pub struct HexMesh {
     /// Element order: 1 (8-node) or 2 (27-node).
     pub order: usize,
-    /// Node coordinates.
     pub nodes: Vec<[f64; 3]>,
     /// Node-grid dimensions.
     pub dims: [usize; 3],

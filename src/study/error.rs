@@ -76,5 +76,4 @@ pub enum StudyError {
     Plot(String),
 }
 
-/// Result alias of the study module.
 pub type Result<T> = std::result::Result<T, StudyError>;

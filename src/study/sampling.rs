@@ -186,7 +186,6 @@ impl DesignSpec {
         self.range(0..self.n)
     }
 
-    /// Rows `range` of the design.
     pub fn range(&self, range: Range<usize>) -> Result<Vec<Vec<f64>>> {
         self.check_replicates()?;
         if self.replicates == 1 {

@@ -11,7 +11,6 @@
 
 use serde::{Deserialize, Serialize};
 
-/// Fixed seed of the bootstrap resampling.
 pub const BOOTSTRAP_SEED: u64 = 0x6b69_6e72_6570_726f; // "kinrepro"
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -20,7 +19,6 @@ pub struct BootstrapConfig {
     pub resamples: usize,
     /// Coverage level in (0, 1), e.g. 0.90.
     pub level: f64,
-    /// Seed of the resampling stream.
     pub seed: u64,
 }
 
