@@ -10,7 +10,7 @@ use serde::{Deserialize, Serialize};
 
 use super::error::CalibrateError;
 use super::grid::GridInfo;
-use super::likelihood::{GOF_THRESHOLD, GoodnessOfFit, Observed};
+use super::likelihood::{GoodnessOfFit, Observed};
 use super::measurement::{MeasuredData, Measurement};
 use crate::assembly::Coupling;
 use crate::dof::Dof;
@@ -68,16 +68,6 @@ pub struct Parameter {
 pub struct Correlation {
     pub parameters: Vec<String>,
     pub matrix: Vec<Vec<f64>>,
-}
-
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct GoodnessOfFitReport {
-    pub statistic: Option<f64>,
-    pub df: usize,
-    pub p_value: Option<f64>,
-    pub ok: bool,
-    pub threshold: f64,
-    pub test: String,
 }
 
 /// Measured against fitted sigma of one DOF [SI].
@@ -138,7 +128,7 @@ pub struct Calibration {
     pub region: Vec<BTreeMap<String, f64>>,
     /// The parameters held at the scene's values.
     pub fixed: BTreeMap<String, f64>,
-    pub goodness_of_fit: GoodnessOfFitReport,
+    pub goodness_of_fit: GoodnessOfFit,
     pub dofs: Vec<DofFit>,
     pub model: ModelInfo,
     pub fingerprint: Fingerprint,
@@ -232,14 +222,7 @@ pub fn skeleton(
         correlation: None,
         region: Vec::new(),
         fixed: BTreeMap::new(),
-        goodness_of_fit: GoodnessOfFitReport {
-            statistic: gof.statistic,
-            df: gof.df,
-            p_value: gof.p_value,
-            ok: gof.ok,
-            threshold: GOF_THRESHOLD,
-            test: gof.test,
-        },
+        goodness_of_fit: gof,
         dofs: Vec::new(),
         model,
         fingerprint,
