@@ -133,7 +133,7 @@ pub fn hertz_compliance(coupling: &Coupling) -> f64 {
         .iter()
         .zip(&coupling.contacts)
         .filter(|(f, _)| **f > 0.0)
-        .map(|(f, c)| 2.0 * c.normal.hertz_approach(*f) / (3.0 * f))
+        .map(|(f, c)| 2.0 * c.normal.hertz.approach(*f) / (3.0 * f))
         .fold(0.0, f64::max)
 }
 

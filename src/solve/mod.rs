@@ -163,7 +163,7 @@ impl ContactResult {
             tangential_force: ft.into(),
             tangential_force_n: ft.norm(),
             approach_m: e.approach,
-            hertz_approach_m: contact.normal.hertz_approach(e.normal_force),
+            hertz_approach_m: contact.normal.hertz.approach(e.normal_force),
             support_approach_m: contact.normal.support_approach(e.normal_force),
             support_compliance_m_per_n: contact.normal.compliance,
             state: e.slip(),
