@@ -48,7 +48,6 @@ impl Dof {
         ["x", "y", "z", "φx", "φy", "φz"][self.index()]
     }
 
-    /// The DOF called `name`.
     pub fn from_name(name: &str) -> Option<Dof> {
         Dof::ALL.into_iter().find(|d| d.name() == name)
     }

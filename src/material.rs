@@ -49,7 +49,6 @@ pub enum MaterialError {
 pub struct MaterialSources {
     /// Source of Young's modulus and Poisson's ratio.
     pub elastic: &'static str,
-    /// Source of the density.
     pub density: &'static str,
     /// Source of the allowable contact pressure, or why there is none.
     pub allowable_pressure: &'static str,
@@ -232,23 +231,15 @@ impl Material {
                 "must lie in (-1, 0.5)",
             ));
         }
-        if let Some(p) = self.allowable_pressure
-            && !(p.is_finite() && p > 0.0)
-        {
-            return Err(bad(
-                "allowable_pressure",
-                p,
-                "must be a positive number of pascals",
-            ));
-        }
-        if let Some(t) = self.allowable_shear_stress
-            && !(t.is_finite() && t > 0.0)
-        {
-            return Err(bad(
-                "allowable_shear_stress",
-                t,
-                "must be a positive number of pascals",
-            ));
+        for (field, v) in [
+            ("allowable_pressure", self.allowable_pressure),
+            ("allowable_shear_stress", self.allowable_shear_stress),
+        ] {
+            if let Some(v) = v
+                && !(v.is_finite() && v > 0.0)
+            {
+                return Err(bad(field, v, "must be a positive number of pascals"));
+            }
         }
         Ok(())
     }

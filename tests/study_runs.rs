@@ -238,7 +238,7 @@ fn dynamic_studies_with_random_start_poses() {
     };
     // Every drawn start lies above the seat: clear of all surfaces, within the bounds.
     for row in kinrepro::study::design(Sampler::Lhs, 6, 12, 3).unwrap() {
-        let (mu, start) = variation.map(&c, &row);
+        let kinrepro::study::runner::Sample { mu, start, .. } = variation.sample(&c, &row);
         assert_eq!(mu, vec![0.2; 6]);
         assert!(start.offset.x.abs() <= 20e-6 && start.offset.y.abs() <= 20e-6);
         assert!(start.tilt.iter().all(|t| t.abs() <= 1e-4));

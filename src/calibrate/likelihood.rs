@@ -94,15 +94,17 @@ pub fn log_likelihood(obs: &Observed, sigma: &DMatrix<f64>) -> Option<f64> {
 /// p below which the model is taken not to explain the data.
 pub const GOF_THRESHOLD: f64 = 0.01;
 
-/// Whether the fitted model can explain the measured covariance's shape.
-#[derive(Debug, Clone, PartialEq)]
+/// Whether the fitted model can explain the measured covariance's shape
+/// (the `goodness_of_fit` block of the calibration file).
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct GoodnessOfFit {
     /// Bartlett-corrected likelihood-ratio statistic (None: not testable).
     pub statistic: Option<f64>,
     pub df: usize,
     pub p_value: Option<f64>,
-    /// False when p < [`GOF_THRESHOLD`].
+    /// False when p < `threshold` ([`GOF_THRESHOLD`]).
     pub ok: bool,
+    pub threshold: f64,
     pub test: String,
 }
 
@@ -163,6 +165,7 @@ pub fn goodness_of_fit(obs: &Observed, fitted: &DMatrix<f64>, q: usize) -> Goodn
         df,
         p_value,
         ok: p_value.is_none_or(|pv| pv >= GOF_THRESHOLD),
+        threshold: GOF_THRESHOLD,
         test,
     }
 }

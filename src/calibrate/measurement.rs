@@ -16,7 +16,6 @@ use crate::dof::Dof;
 /// Fewest re-seating cycles a measurement may have.
 pub const MIN_CYCLES: usize = 3;
 
-/// The measured values.
 #[derive(Debug, Clone, PartialEq)]
 pub enum MeasuredData {
     /// One row per cycle, one value per measured DOF [SI].

@@ -26,7 +26,6 @@ pub struct StudySpec<'a> {
     pub coupling: &'a Coupling,
     /// Index of the measured evaluation point.
     pub point: usize,
-    /// The measured DOFs.
     pub dofs: &'a [usize],
     pub samples: usize,
     pub seed: u64,
@@ -81,7 +80,6 @@ impl StudySpec<'_> {
 }
 
 impl ModelStudy {
-    /// The pose samples of the DOFs `dofs`.
     pub fn samples_of(&self, dofs: &[usize]) -> Vec<Vec<f64>> {
         self.rows
             .iter()

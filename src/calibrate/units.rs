@@ -34,24 +34,23 @@ fn noise_example() -> String {
 
 /// The units a DOF accepts, as text for messages.
 pub fn unit_names(dof: usize) -> String {
-    units(dof)
-        .iter()
-        .map(|(u, _)| *u)
-        .collect::<Vec<_>>()
-        .join(", ")
+    units(dof).map(|(u, _)| u).join(", ")
 }
 
-fn units(dof: usize) -> &'static [(&'static str, f64)] {
+fn units(dof: usize) -> [(&'static str, f64); 4] {
     if Dof::ALL[dof].is_rotation() {
-        &ANGLE_UNITS
+        ANGLE_UNITS
     } else {
-        &LENGTH_UNITS
+        LENGTH_UNITS
     }
 }
 
 /// Factor from `unit` to SI for this DOF, or None if the unit does not fit it.
 pub fn unit_factor(dof: usize, unit: &str) -> Option<f64> {
-    units(dof).iter().find(|(u, _)| *u == unit).map(|(_, f)| *f)
+    units(dof)
+        .into_iter()
+        .find(|(u, _)| *u == unit)
+        .map(|(_, f)| f)
 }
 
 /// Why a column header, a value or a `--noise` entry was not understood.
@@ -80,7 +79,6 @@ pub enum UnitError {
         unit: String,
         dof: usize,
     },
-    /// A value that is not a number.
     #[error("`{text}` is not a number (with an optional unit)")]
     NotANumber { text: String },
     /// A value that is negative, infinite or NaN.
@@ -96,11 +94,7 @@ pub enum UnitError {
 
 /// `header_m, header_mm, ...`: the column names a bare DOF header could be.
 fn with_units(header: &str, dof: usize) -> String {
-    units(dof)
-        .iter()
-        .map(|(u, _)| format!("{header}_{u}"))
-        .collect::<Vec<_>>()
-        .join(", ")
+    units(dof).map(|(u, _)| format!("{header}_{u}")).join(", ")
 }
 
 /// A column header `<dof>_<unit>`: the DOF index and the factor to SI, or

@@ -88,7 +88,6 @@ fn shape_names() -> String {
     names.join(", ")
 }
 
-/// Bad contact input.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ContactError {
     #[error("{field} = {value} m is invalid: a radius must be a positive, finite length")]

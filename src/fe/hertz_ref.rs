@@ -5,7 +5,6 @@
 use crate::contact::HertzLaw;
 use crate::fe::FeError;
 
-/// Hertz solution for one contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HertzSolution {
     /// Contact semi-axes `[along x, along y]` (m).

@@ -15,7 +15,6 @@ use crate::fe::FeError;
 pub struct HexMesh {
     /// Element order: 1 (8-node) or 2 (27-node).
     pub order: usize,
-    /// Node coordinates.
     pub nodes: Vec<[f64; 3]>,
     /// Node-grid dimensions.
     pub dims: [usize; 3],
@@ -91,11 +90,7 @@ impl HexMesh {
                 return Err(FeError::InvalidInput("edges must ascend".into()));
             }
         }
-        let (ax, ay, az) = (
-            axis_nodes(xe, order),
-            axis_nodes(ye, order),
-            axis_nodes(ze, order),
-        );
+        let [ax, ay, az] = [xe, ye, ze].map(|e| axis_nodes(e, order));
         let dims = [ax.len(), ay.len(), az.len()];
         let mut nodes = Vec::with_capacity(dims[0] * dims[1] * dims[2]);
         for &z in &az {
@@ -120,7 +115,6 @@ impl HexMesh {
         i + self.dims[0] * (j + self.dims[1] * k)
     }
 
-    /// Number of elements.
     pub fn n_elements(&self) -> usize {
         self.elem_dims.iter().product()
     }
@@ -249,12 +243,8 @@ impl HexMesh {
             w
         };
         let (wx, wy) = (w1(&self.edges[0]), w1(&self.edges[1]));
-        let mut out = Vec::with_capacity(wx.len() * wy.len());
-        for y in &wy {
-            for x in &wx {
-                out.push(x * y);
-            }
-        }
-        out
+        wy.iter()
+            .flat_map(|y| wx.iter().map(move |x| x * y))
+            .collect()
     }
 }

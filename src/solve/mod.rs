@@ -160,10 +160,10 @@ impl ContactResult {
         );
         ContactResult {
             normal_force_n: e.normal_force,
-            tangential_force: [ft.x, ft.y, ft.z],
+            tangential_force: ft.into(),
             tangential_force_n: ft.norm(),
             approach_m: e.approach,
-            hertz_approach_m: contact.normal.hertz_approach(e.normal_force),
+            hertz_approach_m: contact.normal.hertz.approach(e.normal_force),
             support_approach_m: contact.normal.support_approach(e.normal_force),
             support_compliance_m_per_n: contact.normal.compliance,
             state: e.slip(),
@@ -178,17 +178,12 @@ impl ContactResult {
             shear_safety_factor: stress.shear_safety_factor,
             safety_factor: stress.safety_factor,
             safety_factor_left_out: stress.left_out,
-            point_m: [e.geometry.point.x, e.geometry.point.y, e.geometry.point.z],
-            normal: [
-                e.geometry.normal.x,
-                e.geometry.normal.y,
-                e.geometry.normal.z,
-            ],
+            point_m: e.geometry.point.into(),
+            normal: e.geometry.normal.into(),
         }
     }
 }
 
-/// The result of one seating.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Seating {
     /// Final pose of the moving half.
@@ -237,7 +232,6 @@ pub enum SeatingPath {
     /// The quasi-static path halved an increment (at a stick/slip change
     /// or where Newton failed).
     Adaptive,
-    /// The dynamic solver.
     Dynamic,
 }
 

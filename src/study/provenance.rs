@@ -37,7 +37,7 @@ pub struct Fingerprint {
     pub seed: u64,
     pub samples: usize,
     /// Independent LHS replicates of the design (1 for MC, corners, a single LHS).
-    #[serde(default = "one")]
+    #[serde(default = "super::sampling::one")]
     pub replicates: usize,
     /// Names of the varied inputs (design columns), in row order.
     pub vary: Vec<String>,
@@ -134,10 +134,6 @@ impl Fingerprint {
             ("scene content", q(&self.scene_content)),
         ]
     }
-}
-
-fn one() -> usize {
-    1
 }
 
 fn q(s: &str) -> String {

@@ -81,7 +81,6 @@ pub struct VariantReport {
     /// Preload ramp duration [s] (the time base of the decay law's slip velocity).
     #[serde(default = "default_ramp_time")]
     pub ramp_time_s: f64,
-    /// The seating solver.
     pub solver: String,
     /// What varied: the design dimensions, in row order.
     pub inputs: Vec<Input>,
@@ -121,7 +120,6 @@ pub struct StudyReport {
     /// schema versions existed.
     #[serde(default)]
     pub schema_version: u32,
-    /// The kinrepro that wrote it.
     #[serde(default)]
     pub kinrepro_version: String,
     /// Solver, seed, sampler and sample count of every variant (null if the
@@ -141,20 +139,15 @@ pub struct StudyReport {
 
 /// The `--vary` names of what a variation varies.
 pub fn varied_kinds(var: &Variation) -> Vec<&'static str> {
-    let mut parts = Vec::new();
-    if var.friction {
-        parts.push("friction");
-    }
-    if var.preload {
-        parts.push("preload");
-    }
-    if var.start.is_some() {
-        parts.push("start");
-    }
-    if var.tolerances {
-        parts.push("tolerances");
-    }
-    parts
+    [
+        (var.friction, "friction"),
+        (var.preload, "preload"),
+        (var.start.is_some(), "start"),
+        (var.tolerances, "tolerances"),
+    ]
+    .into_iter()
+    .filter_map(|(on, kind)| on.then_some(kind))
+    .collect()
 }
 
 impl VariantReport {

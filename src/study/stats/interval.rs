@@ -138,11 +138,7 @@ pub fn sigma_interval_from_moments(m: &Moments, level: f64) -> Result<Interval> 
         });
     }
     let n = m.n as f64;
-    let g = if m.m2 > 0.0 {
-        n * m.m4 / (m.m2 * m.m2)
-    } else {
-        0.0
-    };
+    let g = if m.m2 > 0.0 { m.kurtosis() } else { 0.0 };
     bonett(n, m.m2 / (n - 1.0), g, level)
 }
 

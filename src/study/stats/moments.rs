@@ -54,7 +54,6 @@ impl Moments {
         Self::default()
     }
 
-    /// Add one value.
     pub fn push(&mut self, x: f64) {
         let n0 = self.n as f64;
         self.n += 1;
