@@ -153,7 +153,7 @@ pub fn dynamics(d: &DynamicsFile, fx: &Fields) -> Result<DynamicsSettings, Scene
             i.x,
             i.y,
             i.z,
-            ["x", "y", "z"][k]
+            crate::dof::Dof::axis(k)
         )));
     }
     let centre_of_mass = match &d.centre_of_mass {
