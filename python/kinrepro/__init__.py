@@ -9,7 +9,7 @@ in nm and nrad, as their keys say (``x_nm``, ``phi_x_nrad``).
 
 from __future__ import annotations
 
-from typing import Any, Iterable, Mapping, Sequence, Union
+from typing import Iterable, List, Mapping, Optional, Tuple, Union
 
 from ._kinrepro import (
     SCHEMA_VERSION,
@@ -61,15 +61,36 @@ def _set_arg(field: str, values: SetValues) -> str:
     return f"{field}=" + ",".join(str(v) for v in values)
 
 
-def sweep(scene: Scene, sets: Mapping[str, SetValues], **options: Any) -> Sweep:
-    """Sweep scene fields (``kinrepro sweep``).
+def sweep(
+    scene: Scene,
+    sets: Mapping[str, SetValues],
+    points: Optional[int] = None,
+    pareto_point: Optional[str] = None,
+    samples: Optional[int] = None,
+    sampler: Optional[str] = None,
+    seed: Optional[int] = None,
+    shard: Union[str, Tuple[int, int], None] = None,
+    jobs: Optional[int] = None,
+    increments: int = 20,
+    replicates: Optional[int] = None,
+) -> Sweep:
+    """Sweep scene fields (``kinrepro sweep``): every design point's
+    reproducibility study (friction varied, the same seed for all: common
+    random numbers), nominal stiffness, safety and friction limit.
 
-    ``sets`` maps a TOML path (the fields of ``Scene.set``) to its values:
-    a list of numbers or material names, or a string in the CLI's syntax
-    (``"5,10,20"``, a range ``"5:20:4"``, ``"log:1e-3:1e-1:5"``). Keyword
-    options: ``points`` (an LHS of that many design points instead of the
-    grid), ``pareto_point``, ``samples``, ``sampler``, ``seed``, ``shard``,
-    ``jobs``, ``increments``, ``replicates`` (as for :func:`study`).
+    ``sets`` maps a TOML path (the fields of ``Scene.set``, e.g.
+    ``"preload.force"`` [N]) to its values: a list of numbers (SI) or
+    material names, or a string in the CLI's syntax (``"5,10,20"``, a range
+    ``"5:20:4"``, ``"log:1e-3:1e-1:5"``). The grid of all combinations, or
+    an LHS of ``points`` design points. ``pareto_point``: the evaluation
+    point of the Pareto objective (None: the first). ``samples``,
+    ``sampler``, ``seed``, ``shard``, ``jobs``, ``increments``,
+    ``replicates``: as for :func:`study`. ``Sweep.to_dict()["designs"]``
+    holds one entry per design point (sigma in nm and nrad).
     """
-    args: Sequence[str] = [_set_arg(f, v) for f, v in sets.items()]
-    return _sweep(scene, list(args), **options)
+    args: List[str] = [_set_arg(f, v) for f, v in sets.items()]
+    return _sweep(
+        scene, args, points=points, pareto_point=pareto_point, samples=samples,
+        sampler=sampler, seed=seed, shard=shard, jobs=jobs, increments=increments,
+        replicates=replicates,
+    )

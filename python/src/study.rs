@@ -183,12 +183,14 @@ impl Study {
 
     fn __repr__(&self) -> String {
         let names: Vec<&str> = self.report.variants.iter().map(|v| v.scene.as_str()).collect();
+        let r = &self.report;
+        let or_none = |v: Option<String>| v.unwrap_or_else(|| "None".into());
         format!(
-            "Study(scenes={names:?}, samples={:?}, sampler={:?}, seed={:?}, shard={})",
-            self.report.samples,
-            self.report.sampler.map(|s| format!("{s:?}")),
-            self.report.seed,
-            self.report.shard
+            "Study(scenes={names:?}, samples={}, sampler={}, seed={}, shard=\"{}\")",
+            or_none(r.samples.map(|n| n.to_string())),
+            or_none(r.sampler.and_then(|s| serde_json::to_string(&s).ok())),
+            or_none(r.seed.map(|n| n.to_string())),
+            r.shard
         )
     }
 

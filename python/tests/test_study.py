@@ -136,3 +136,13 @@ def test_pickle_round_trip(scene01, study01):
 
     assert pickle.loads(pickle.dumps(scene01)) == scene01
     assert pickle.loads(pickle.dumps(study01)) == study01
+
+
+def test_several_scenes_are_the_cli_study_of_several(cli):
+    files = ["scenes/01_maxwell_vgroove_steel.toml", "scenes/02_maxwell_pins_steel.toml"]
+    s = kinrepro.study([kinrepro.Scene.load(f) for f in files], samples=10, seed=2)
+    assert len(s) == 2
+    theirs = cli("study", *files, "--samples", 10, "--seed", 2, "--format", "json")
+    assert json.loads(s.to_json()) == theirs
+    assert s.sigma(variant=1) == theirs["variants"][1]["points"][0]["sigma"]
+    assert "samples=10" in repr(s) and '"lhs"' in repr(s)
