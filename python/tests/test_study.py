@@ -104,7 +104,14 @@ def test_bad_scene_raises_the_library_message(tmp_path):
     with pytest.raises(kinrepro.KinreproError) as e:
         kinrepro.Scene.load(bad)
     msg = str(e.value)
-    assert msg.startswith(f"{bad}:") and "preload" in msg
+    assert msg.startswith(f"{bad}:") and "preload.force" in msg
+    # The CLI prints the same line: `error: <message>`.
+    from conftest import cli_path
+    import subprocess
+    if cli_path().is_file():
+        r = subprocess.run([str(cli_path()), "check", str(bad)], capture_output=True, text=True)
+        assert r.returncode != 0
+        assert f"error: {msg}" in r.stderr.splitlines()
     with pytest.raises(ValueError):
         kinrepro.Scene.from_toml("not toml [")
     with pytest.raises(kinrepro.KinreproError, match="cannot read"):
