@@ -1,0 +1,96 @@
+"""kinrepro: friction-induced re-seating scatter of kinematic couplings.
+
+Python bindings of the kinrepro library (docs/python.md). Every number comes
+from the library; every document (``Study.to_json()``, ``Sweep.to_json()``)
+is the JSON the ``kinrepro`` command line writes. Units are SI (m, rad, N)
+for arrays and inputs; the statistics of the study document (``sigma``) are
+in nm and nrad, as their keys say (``x_nm``, ``phi_x_nrad``).
+"""
+
+from __future__ import annotations
+
+from typing import Iterable, List, Mapping, Optional, Tuple, Union
+
+from ._kinrepro import (
+    SCHEMA_VERSION,
+    Calibration,
+    KinreproError,
+    Scene,
+    Seating,
+    Study,
+    Sweep,
+    __version__,
+    calibrate,
+    merge,
+    predict,
+    seat,
+    stiffness,
+    study,
+)
+from ._kinrepro import sweep as _sweep
+
+__all__ = [
+    "SCHEMA_VERSION",
+    "Calibration",
+    "KinreproError",
+    "Scene",
+    "Seating",
+    "Study",
+    "Sweep",
+    "__version__",
+    "calibrate",
+    "merge",
+    "predict",
+    "seat",
+    "stiffness",
+    "study",
+    "sweep",
+]
+
+SetValues = Union[str, float, int, Iterable[Union[float, int, str]]]
+
+
+def _set_arg(field: str, values: SetValues) -> str:
+    """One ``--set FIELD=VALUES`` argument: a string is passed as written
+    (``"5,10,20"``, ``"5:20:4"``, ``"log:1e-3:1e-1:5"``); a number or a list
+    of numbers or names is joined by commas."""
+    if isinstance(values, str):
+        return f"{field}={values}"
+    if isinstance(values, (int, float)):
+        return f"{field}={values}"
+    return f"{field}=" + ",".join(str(v) for v in values)
+
+
+def sweep(
+    scene: Scene,
+    sets: Mapping[str, SetValues],
+    points: Optional[int] = None,
+    pareto_point: Optional[str] = None,
+    samples: Optional[int] = None,
+    sampler: Optional[str] = None,
+    seed: Optional[int] = None,
+    shard: Union[str, Tuple[int, int], None] = None,
+    jobs: Optional[int] = None,
+    increments: int = 20,
+    replicates: Optional[int] = None,
+) -> Sweep:
+    """Sweep scene fields (``kinrepro sweep``): every design point's
+    reproducibility study (friction varied, the same seed for all: common
+    random numbers), nominal stiffness, safety and friction limit.
+
+    ``sets`` maps a TOML path (the fields of ``Scene.set``, e.g.
+    ``"preload.force"`` [N]) to its values: a list of numbers (SI) or
+    material names, or a string in the CLI's syntax (``"5,10,20"``, a range
+    ``"5:20:4"``, ``"log:1e-3:1e-1:5"``). The grid of all combinations, or
+    an LHS of ``points`` design points. ``pareto_point``: the evaluation
+    point of the Pareto objective (None: the first). ``samples``,
+    ``sampler``, ``seed``, ``shard``, ``jobs``, ``increments``,
+    ``replicates``: as for :func:`study`. ``Sweep.to_dict()["designs"]``
+    holds one entry per design point (sigma in nm and nrad).
+    """
+    args: List[str] = [_set_arg(f, v) for f, v in sets.items()]
+    return _sweep(
+        scene, args, points=points, pareto_point=pareto_point, samples=samples,
+        sampler=sampler, seed=seed, shard=shard, jobs=jobs, increments=increments,
+        replicates=replicates,
+    )

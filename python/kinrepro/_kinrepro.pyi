@@ -1,0 +1,229 @@
+"""Type stubs of the compiled module (the API is re-exported by ``kinrepro``)."""
+
+from __future__ import annotations
+
+import os
+from typing import Any, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+"""Version of the kinrepro library (``kinrepro_version`` of every document)."""
+SCHEMA_VERSION: int
+"""Version of the study document's layout (docs/output.md)."""
+
+Array = npt.NDArray[np.float64]
+Shard = Union[str, tuple[int, int]]
+"""``"INDEX/COUNT"`` (1-based, e.g. ``"2/4"``) or ``(index, count)``."""
+
+class KinreproError(ValueError):
+    """A bad input (scene, option, document): the library's one-line message,
+    e.g. ``file:line: field: reason`` for a scene."""
+
+class Scene:
+    """A scene file's text, validated and assembled like ``kinrepro check``.
+    Immutable: :meth:`set` returns a new scene. Picklable."""
+
+    @staticmethod
+    def load(path: Union[str, os.PathLike[str]]) -> Scene:
+        """Read and validate a scene file (TOML). Raises KinreproError."""
+    @staticmethod
+    def from_toml(text: str, file: str = "<string>") -> Scene:
+        """A scene from TOML text; ``file`` names it in messages and documents."""
+    def to_toml(self) -> str:
+        """The scene's TOML text."""
+    def expand(self) -> str:
+        """The explicit form (``kinrepro expand``)."""
+    def set(self, field: str, value: Union[float, str]) -> Scene:
+        """A new scene with the field at TOML path ``field`` (the paths of
+        ``kinrepro sweep --set``, e.g. ``"preload.force"`` [N],
+        ``"friction.mu_static"``, ``"coupling.ball_radius"`` [m]) set to
+        ``value`` (SI number or material name)."""
+    @property
+    def file(self) -> str: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def evaluation_points(self) -> list[str]:
+        """Names of the evaluation points, the centre of the moving half first."""
+
+class Seating:
+    """One seating (``kinrepro run --json``), SI units."""
+
+    @property
+    def point_names(self) -> list[str]: ...
+    @property
+    def poses(self) -> Array:
+        """(n_points, 6): x, y, z [m], phi_x, phi_y, phi_z [rad] of each
+        evaluation point relative to the touching pose."""
+    @property
+    def poses_rel_nominal(self) -> Array:
+        """(n_points, 6), m and rad, relative to the nominal seating."""
+    @property
+    def normal_forces(self) -> Array:
+        """(n_contacts,) normal force of each contact [N]."""
+    @property
+    def tangential_forces(self) -> Array:
+        """(n_contacts, 3) friction force on the moving half [N]."""
+    @property
+    def states(self) -> list[str]:
+        """``"stick"`` or ``"slip"`` per contact."""
+    @property
+    def mu_static(self) -> list[float]: ...
+    def to_json(self) -> str:
+        """The document of ``kinrepro run --json``."""
+    def table(self) -> str: ...
+
+class Study:
+    """A reproducibility study: the document of ``kinrepro study --format
+    json`` with numpy views of its samples. Picklable; ``==`` compares the
+    whole document."""
+
+    @staticmethod
+    def from_json(text: str) -> Study:
+        """Read a study document (a whole study, a shard or a merge)."""
+    def to_json(self) -> str:
+        """The document of ``kinrepro study --format json`` (same options,
+        same numbers)."""
+    def to_dict(self) -> dict[str, Any]: ...
+    def table(self) -> str:
+        """The text table of ``kinrepro study`` (nm, nrad)."""
+    def csv(self) -> str:
+        """The summary CSV of ``kinrepro study --format csv`` (SI)."""
+    def poses(
+        self, point: str | None = None, variant: int = 0, interchange: bool = False
+    ) -> Array:
+        """(n, 6) pose of ``point`` (None: the first evaluation point) per
+        sample relative to the nominal seating: x, y, z [m], phi_x, phi_y,
+        phi_z [rad]. ``np.std(poses, axis=0, ddof=1) * 1e9`` is ``sigma``."""
+    def inputs(self, variant: int = 0) -> Array:
+        """(n, k) physical value of each varied input per sample (SI;
+        mu dimensionless); columns named by :meth:`input_names`."""
+    def input_names(self, variant: int = 0) -> list[str]: ...
+    def indices(self, variant: int = 0) -> list[int]:
+        """Design row of each sample (rows of ``poses`` and ``inputs``)."""
+    def sigma(
+        self, point: str | None = None, variant: int = 0, interchange: bool = False
+    ) -> dict[str, float]:
+        """Sample standard deviation (n - 1) per DOF: keys ``x_nm``, ``y_nm``,
+        ``z_nm`` [nm], ``phi_x_nrad``, ``phi_y_nrad``, ``phi_z_nrad`` [nrad]."""
+    def stats(
+        self, point: str | None = None, variant: int = 0, interchange: bool = False
+    ) -> dict[str, Any]:
+        """The JSON's ``points`` entry: n, sigma and its 90 % interval,
+        three_sigma, mean, min, max (nm, nrad)."""
+    @property
+    def shard(self) -> tuple[int, int]: ...
+    def __len__(self) -> int: ...
+
+class Sweep:
+    """A sweep (``kinrepro sweep --format json``)."""
+
+    @staticmethod
+    def from_json(text: str) -> Sweep: ...
+    def to_json(self) -> str: ...
+    def to_dict(self) -> dict[str, Any]: ...
+    def table(self) -> str: ...
+    def csv(self) -> str: ...
+
+class Calibration:
+    """A calibration (``kinrepro calibrate --out``)."""
+
+    @staticmethod
+    def from_json(text: str, file: str = "<string>") -> Calibration: ...
+    @staticmethod
+    def load(path: Union[str, os.PathLike[str]]) -> Calibration: ...
+    def to_json(self) -> str: ...
+    def to_dict(self) -> dict[str, Any]: ...
+    @property
+    def estimates(self) -> dict[str, float]:
+        """Fitted value of each parameter (``spread``, ...)."""
+    def table(self) -> str: ...
+
+def seat(
+    scene: Scene,
+    mu: Sequence[float] | None = None,
+    solver: str = "quasi-static",
+    increments: int = 20,
+) -> Seating:
+    """Seat the coupling once; ``mu``: static friction coefficient per
+    contact (None: the scene's ``mu_static``). GIL released."""
+
+def stiffness(
+    scene: Scene,
+    at: str | Sequence[float] | None = None,
+    mu: Sequence[float] | None = None,
+) -> Array:
+    """6x6 stiffness of the seated coupling, (u [m], phi [rad]) -> (F [N],
+    M [N m]) about ``at``: an evaluation point's name, a point (x, y, z) [m]
+    of the moving half, or None (the first evaluation point)."""
+
+def study(
+    scene: Scene | Sequence[Scene],
+    samples: int | None = None,
+    sampler: str | None = None,
+    seed: int | None = None,
+    vary: Sequence[str] = ("friction",),
+    shard: Shard | None = None,
+    jobs: int | None = None,
+    solver: str = "quasi-static",
+    increments: int = 20,
+    replicates: int | None = None,
+    sensitivity: bool = False,
+    sobol_samples: int | None = None,
+    offset_bounds: Sequence[float] | None = None,
+    tilt_bounds: Sequence[float] | None = None,
+) -> Study:
+    """A reproducibility study (``kinrepro study``). ``samples``,
+    ``sampler`` (``"lhs"``, ``"mc"``, ``"corners"``) and ``seed``: None takes
+    the scene's ``[study]`` values. ``vary``: any of ``"friction"``,
+    ``"preload"``, ``"start"``, ``"tolerances"``. ``shard``: run one part
+    (merge the parts with :func:`merge`). ``jobs``: worker threads (None:
+    all cores). GIL released; Ctrl-C raises KeyboardInterrupt."""
+
+def merge(parts: Sequence[Study | str] | Sequence[Sweep]) -> Any:
+    """Merge the shards of a study (``Study`` objects or JSON texts; returns
+    a ``Study`` equal to the unsharded run) or of a sweep (``Sweep``)."""
+
+def sweep(
+    scene: Scene,
+    sets: list[str],
+    points: int | None = None,
+    pareto_point: str | None = None,
+    samples: int | None = None,
+    sampler: str | None = None,
+    seed: int | None = None,
+    shard: Shard | None = None,
+    jobs: int | None = None,
+    increments: int = 20,
+    replicates: int | None = None,
+) -> Sweep:
+    """The compiled sweep: ``sets`` as ``"FIELD=VALUES"`` strings
+    (``kinrepro.sweep`` takes a dict)."""
+
+def calibrate(
+    scene: Scene,
+    measured: Union[str, os.PathLike[str]],
+    fit: Sequence[str] = ("spread",),
+    noise: str | None = None,
+    point: str | None = None,
+    model_samples: int = 2000,
+    seed: int = 15015,
+    delimiter: str | None = None,
+    jobs: int | None = None,
+) -> Calibration:
+    """Fit the friction spread (and optionally ``mu_static``,
+    ``dynamic_ratio``, ``support_compliance``) to the measured re-seating
+    scatter in the file ``measured`` (docs/measurements.md); ``noise``:
+    sensor noise as ``"x=1nm,phi_x=20nrad"``."""
+
+def predict(
+    scenes: Scene | Sequence[Scene],
+    calibration: Calibration,
+    samples: int = 2000,
+    seed: int = 15015,
+    jobs: int | None = None,
+) -> dict[str, Any]:
+    """Predicted scatter of other designs (``kinrepro predict --format
+    json`` as a dict)."""

@@ -1,0 +1,50 @@
+//! `kinrepro._kinrepro`: the Python bindings of the kinrepro library
+//! (docs/python.md). No physics and no statistics here: every function
+//! calls the library's public API the way the CLI does
+//! (`src/bin/kinrepro/commands`), and every document is the library's
+//! serde JSON. Long runs (study, sweep, calibrate, predict) run on a
+//! worker thread with the GIL released ([`run::interruptible`]), so that
+//! Ctrl-C raises `KeyboardInterrupt`.
+
+mod options;
+mod run;
+mod scene;
+mod study;
+mod tools;
+
+use pyo3::prelude::*;
+
+pyo3::create_exception!(
+    kinrepro,
+    KinreproError,
+    pyo3::exceptions::PyValueError,
+    "A bad input to kinrepro (scene, option, JSON document): the library's message."
+);
+
+/// `KinreproError` with the library's message.
+pub(crate) fn err(e: impl std::fmt::Display) -> PyErr {
+    KinreproError::new_err(e.to_string())
+}
+
+#[pymodule]
+fn _kinrepro(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", kinrepro::study::provenance::VERSION)?;
+    m.add(
+        "SCHEMA_VERSION",
+        kinrepro::study::provenance::SCHEMA_VERSION,
+    )?;
+    m.add("KinreproError", m.py().get_type::<KinreproError>())?;
+    m.add_class::<scene::Scene>()?;
+    m.add_class::<scene::Seating>()?;
+    m.add_class::<study::Study>()?;
+    m.add_class::<tools::Sweep>()?;
+    m.add_class::<tools::Calibration>()?;
+    m.add_function(wrap_pyfunction!(scene::seat, m)?)?;
+    m.add_function(wrap_pyfunction!(scene::stiffness, m)?)?;
+    m.add_function(wrap_pyfunction!(study::study, m)?)?;
+    m.add_function(wrap_pyfunction!(study::merge, m)?)?;
+    m.add_function(wrap_pyfunction!(tools::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(tools::calibrate, m)?)?;
+    m.add_function(wrap_pyfunction!(tools::predict, m)?)?;
+    Ok(())
+}

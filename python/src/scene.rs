@@ -1,0 +1,313 @@
+//! `Scene` (a validated scene file's text), `seat` and `stiffness`.
+
+use kinrepro::analysis::stiffness::CouplingStiffness;
+use kinrepro::assembly::Coupling;
+use kinrepro::explore::field::{kind_of, set};
+use kinrepro::explore::{FieldKind, SweptValue};
+use kinrepro::report::analysis::StiffnessReport;
+use kinrepro::report::run::RunReport;
+use kinrepro::solve::SolverOptions;
+use nalgebra::Vector3;
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyArray1, PyArray2};
+use pyo3::prelude::*;
+
+use crate::err;
+
+/// A kinematic coupling scene: the text of a scene file (TOML), validated
+/// and assembled exactly like `kinrepro check` does. Immutable: `set`
+/// returns a new scene.
+#[pyclass(module = "kinrepro", frozen)]
+#[derive(Clone)]
+pub struct Scene {
+    /// The TOML text.
+    pub text: String,
+    /// The file name used in messages and in the study document.
+    pub file: String,
+    name: String,
+    points: Vec<String>,
+}
+
+impl Scene {
+    pub fn new(text: String, file: String) -> PyResult<Scene> {
+        let c = coupling(&text, &file).map_err(err)?;
+        Ok(Scene {
+            name: c.scene.name.clone(),
+            points: c
+                .scene
+                .evaluation_points
+                .iter()
+                .map(|p| p.name.clone())
+                .collect(),
+            text,
+            file,
+        })
+    }
+}
+
+/// Parse, validate and assemble a scene text (`error::read_coupling` for
+/// a text instead of a path).
+pub fn coupling(text: &str, file: &str) -> Result<Coupling, String> {
+    let scene = kinrepro::scene::Scene::parse(text, file).map_err(|e| e.to_string())?;
+    Coupling::new(&scene).map_err(|source| {
+        kinrepro::error::Error::Assembly {
+            file: file.to_string(),
+            source,
+        }
+        .to_string()
+    })
+}
+
+#[pymethods]
+impl Scene {
+    /// Read and validate a scene file (TOML).
+    #[staticmethod]
+    fn load(path: std::path::PathBuf) -> PyResult<Scene> {
+        let file = path.display().to_string();
+        let text = std::fs::read_to_string(&path)
+            .map_err(|e| err(format!("{file}: cannot read the file: {e}")))?;
+        Scene::new(text, file)
+    }
+
+    /// A scene from TOML text; `file` names it in messages and outputs.
+    #[staticmethod]
+    #[pyo3(signature = (text, file = "<string>".to_string()))]
+    fn from_toml(text: String, file: String) -> PyResult<Scene> {
+        Scene::new(text, file)
+    }
+
+    /// The scene's TOML text (as loaded, or as rewritten by `set`).
+    fn to_toml(&self) -> String {
+        self.text.clone()
+    }
+
+    /// The explicit form of the scene (`kinrepro expand`): balls,
+    /// surfaces and evaluation points written out.
+    fn expand(&self) -> PyResult<String> {
+        kinrepro::scene::Scene::expand_text(&self.text, &self.file).map_err(err)
+    }
+
+    /// A new scene with the field at TOML path `field` set to `value` (a
+    /// number in SI units or a material name): the paths of
+    /// `kinrepro sweep --set`, e.g. `preload.force` [N],
+    /// `friction.mu_static`, `coupling.ball_radius` [m], `materials.NAME.KEY`.
+    fn set(&self, field: &str, value: &Bound<'_, PyAny>) -> PyResult<Scene> {
+        let mut table: toml::Table = toml::from_str(&self.text)
+            .map_err(|e| err(format!("{}: not a TOML document: {}", self.file, e.message())))?;
+        let kind = kind_of(field, &table).map_err(err)?;
+        let v = match kind {
+            FieldKind::Number => SweptValue::Number(value.extract::<f64>().map_err(|_| {
+                err(format!("{field}: needs a number, got {value}"))
+            })?),
+            FieldKind::Material => SweptValue::Name(value.extract::<String>().map_err(|_| {
+                err(format!("{field}: needs a material name, got {value}"))
+            })?),
+        };
+        set(&mut table, field, &v).map_err(err)?;
+        let text = toml::to_string(&table).map_err(err)?;
+        Scene::new(text, self.file.clone())
+    }
+
+    /// The file name given at load (or `<string>`).
+    #[getter]
+    fn file(&self) -> String {
+        self.file.clone()
+    }
+
+    /// The scene's `name`.
+    #[getter]
+    fn name(&self) -> String {
+        self.name.clone()
+    }
+
+    /// Names of the evaluation points, the centre of the moving half first.
+    #[getter]
+    fn evaluation_points(&self) -> Vec<String> {
+        self.points.clone()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("Scene(file={:?}, name={:?})", self.file, self.name)
+    }
+
+    fn __eq__(&self, other: &Scene) -> bool {
+        self.text == other.text && self.file == other.file
+    }
+
+    fn __reduce__(&self, py: Python<'_>) -> PyResult<(Py<PyAny>, (String, String))> {
+        let ctor = py.get_type::<Scene>().getattr("from_toml")?.unbind();
+        Ok((ctor, (self.text.clone(), self.file.clone())))
+    }
+}
+
+/// One seating (`kinrepro run --json`): poses of the evaluation points,
+/// contact forces and stick/slip states, all SI.
+#[pyclass(module = "kinrepro", frozen)]
+pub struct Seating {
+    report: RunReport,
+}
+
+fn pose_rows(rows: impl Iterator<Item = [f64; 6]>) -> Array2<f64> {
+    let v: Vec<[f64; 6]> = rows.collect();
+    Array2::from_shape_fn((v.len(), 6), |(i, j)| v[i][j])
+}
+
+fn six(p: &kinrepro::dof::PointPose) -> [f64; 6] {
+    [p.x_m, p.y_m, p.z_m, p.phi_x_rad, p.phi_y_rad, p.phi_z_rad]
+}
+
+#[pymethods]
+impl Seating {
+    /// Names of the evaluation points (rows of `poses`).
+    #[getter]
+    fn point_names(&self) -> Vec<String> {
+        self.report.points.iter().map(|p| p.name.clone()).collect()
+    }
+
+    /// Pose of every evaluation point relative to the touching pose,
+    /// (n_points, 6): x, y, z [m], phi_x, phi_y, phi_z [rad].
+    #[getter]
+    fn poses<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        pose_rows(self.report.points.iter().map(|p| six(&p.pose))).into_pyarray(py)
+    }
+
+    /// Pose of every evaluation point relative to the nominal seating
+    /// (nominal friction), (n_points, 6), m and rad.
+    #[getter]
+    fn poses_rel_nominal<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        pose_rows(self.report.points.iter().map(|p| six(&p.pose_rel_nominal))).into_pyarray(py)
+    }
+
+    /// Normal force of each contact [N], (n_contacts,).
+    #[getter]
+    fn normal_forces<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        let v: Vec<f64> = self.report.contacts.iter().map(|c| c.normal_force_n).collect();
+        PyArray1::from_vec(py, v)
+    }
+
+    /// Tangential (friction) force on the moving half at each contact [N],
+    /// (n_contacts, 3).
+    #[getter]
+    fn tangential_forces<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        let c = &self.report.contacts;
+        Array2::from_shape_fn((c.len(), 3), |(i, j)| c[i].tangential_force[j]).into_pyarray(py)
+    }
+
+    /// `"stick"` or `"slip"` per contact.
+    #[getter]
+    fn states(&self) -> Vec<String> {
+        let c = &self.report.contacts;
+        c.iter().map(|c| c.state.name().to_string()).collect()
+    }
+
+    /// Static friction coefficient of each contact used.
+    #[getter]
+    fn mu_static(&self) -> Vec<f64> {
+        self.report.mu_static.clone()
+    }
+
+    /// The document of `kinrepro run --json`.
+    fn to_json(&self) -> PyResult<String> {
+        serde_json::to_string_pretty(&self.report).map_err(err)
+    }
+
+    /// The text table of `kinrepro run`.
+    fn table(&self) -> String {
+        self.report.table()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Seating(scene={:?}, contacts={}, states={:?})",
+            self.report.scene,
+            self.report.contacts.len(),
+            self.states()
+        )
+    }
+}
+
+fn mu_of(c: &Coupling, mu: Option<Vec<f64>>) -> Vec<f64> {
+    mu.unwrap_or_else(|| kinrepro::solve::nominal_mu(c))
+}
+
+/// Seat the coupling once (`kinrepro run`): `mu` the static friction
+/// coefficient of each contact (None: the scene's mu_static everywhere).
+#[pyfunction]
+#[pyo3(signature = (scene, mu = None, solver = "quasi-static", increments = 20))]
+pub fn seat(
+    py: Python<'_>,
+    scene: &Scene,
+    mu: Option<Vec<f64>>,
+    solver: &str,
+    increments: usize,
+) -> PyResult<Seating> {
+    let method = crate::options::method(solver, increments)?;
+    let (text, file) = (scene.text.clone(), scene.file.clone());
+    let report = py.detach(move || -> Result<RunReport, String> {
+        let c = coupling(&text, &file)?;
+        let nominal_mu = kinrepro::solve::nominal_mu(&c);
+        let mu = mu_of(&c, mu);
+        let start = kinrepro::solve::dynamic::StartPose::touching();
+        let s = |m: &[f64]| {
+            method
+                .seat(&c, m, &start)
+                .map_err(|e| format!("{file}: {e}"))
+        };
+        let seating = s(&mu)?;
+        let nominal = s(&nominal_mu)?;
+        Ok(RunReport::new(&c, &mu, &seating, &nominal, method.name()))
+    });
+    Ok(Seating {
+        report: report.map_err(err)?,
+    })
+}
+
+/// The 6x6 stiffness of the seated coupling (`kinrepro stiffness`) at an
+/// evaluation point (a name; None: the first, the centre) or at a point
+/// (x, y, z) [m] of the moving half: (u [m], phi [rad]) -> (F [N], M [N m])
+/// about that point.
+#[pyfunction]
+#[pyo3(signature = (scene, at = None, mu = None))]
+pub fn stiffness<'py>(
+    py: Python<'py>,
+    scene: &Scene,
+    at: Option<&Bound<'py, PyAny>>,
+    mu: Option<Vec<f64>>,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let c = coupling(&scene.text, &scene.file).map_err(err)?;
+    let point = match at {
+        None => {
+            let p = &c.scene.evaluation_points[0];
+            (p.name.clone(), p.position)
+        }
+        Some(a) => match a.extract::<String>() {
+            Ok(name) => {
+                let found = c.scene.evaluation_points.iter().find(|p| p.name == name);
+                let p = found.ok_or_else(|| {
+                    err(format!("at={name:?}: no such evaluation point, have {:?}", scene.points))
+                })?;
+                (p.name.clone(), p.position)
+            }
+            Err(_) => {
+                let v: [f64; 3] = a
+                    .extract()
+                    .map_err(|_| err("at: give an evaluation point's name or (x, y, z) in m"))?;
+                if v.iter().any(|x| !x.is_finite()) {
+                    return Err(err(format!("at: need three finite numbers, got {v:?}")));
+                }
+                ("at".to_string(), Vector3::from(v))
+            }
+        },
+    };
+    let file = scene.file.clone();
+    let report = py.detach(move || -> Result<StiffnessReport, String> {
+        let mu = mu_of(&c, mu);
+        let fail = |e: &dyn std::fmt::Display| format!("{file}: {e}");
+        let seating = kinrepro::solve::quasistatic::seat(&c, &mu, &SolverOptions::default())
+            .map_err(|e| fail(&e))?;
+        let k = CouplingStiffness::new(&c, &seating, &mu).map_err(|e| fail(&e))?;
+        StiffnessReport::new(&c, &mu, &seating, &k, &[point]).map_err(|e| fail(&e))
+    });
+    let m = report.map_err(err)?.points[0].matrix;
+    Ok(Array2::from_shape_fn((6, 6), |(i, j)| m[i][j]).into_pyarray(py))
+}

@@ -1,0 +1,344 @@
+//! `study`, `Study` (the study document) and `merge`.
+
+use kinrepro::dof::Dof;
+use kinrepro::study::{StudyPlan, StudyReport};
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyArray2};
+use pyo3::prelude::*;
+
+use crate::err;
+use crate::options::StudyArgs;
+use crate::scene::{Scene, coupling};
+
+/// A reproducibility study: the document of `kinrepro study --format json`
+/// (`to_json`), with numpy views of its samples.
+#[pyclass(module = "kinrepro", frozen)]
+pub struct Study {
+    pub report: StudyReport,
+}
+
+/// No records are kept: the records a study needs to answer `what`.
+fn no_records(what: &str) -> PyErr {
+    err(format!(
+        "{what}: this study keeps no samples (a Monte Carlo study above 100000 samples is streamed); run it in shards to keep them"
+    ))
+}
+
+impl Study {
+    fn variant(&self, i: usize) -> PyResult<&kinrepro::study::VariantReport> {
+        let n = self.report.variants.len();
+        self.report
+            .variants
+            .get(i)
+            .ok_or_else(|| err(format!("variant={i}: the study has {n} scene(s)")))
+    }
+
+    fn json_value<'py, T: serde::Serialize>(py: Python<'py>, v: &T) -> PyResult<Bound<'py, PyAny>> {
+        let text = serde_json::to_string(v).map_err(err)?;
+        py.import("json")?.call_method1("loads", (text,))
+    }
+}
+
+#[pymethods]
+impl Study {
+    /// Read a study document (`kinrepro study --format json`, a shard or
+    /// a merge).
+    #[staticmethod]
+    fn from_json(text: &str) -> PyResult<Study> {
+        let report = serde_json::from_str(text)
+            .map_err(|e| err(format!("not a kinrepro study JSON: {e}")))?;
+        Ok(Study { report })
+    }
+
+    /// The document of `kinrepro study --format json` with the same options.
+    fn to_json(&self) -> PyResult<String> {
+        serde_json::to_string_pretty(&self.report).map_err(err)
+    }
+
+    /// The text table of `kinrepro study` (sigma in nm and nrad).
+    fn table(&self) -> String {
+        self.report.table()
+    }
+
+    /// The summary CSV of `kinrepro study --format csv` (SI).
+    fn csv(&self) -> String {
+        self.report.csv()
+    }
+
+    /// Seated pose of evaluation point `point` (None: the first, the
+    /// centre) for every sample, relative to the nominal seating:
+    /// (n, 6) array of x, y, z [m], phi_x, phi_y, phi_z [rad], in sample
+    /// order. `interchange=True`: the interchangeability outputs
+    /// (tolerances varied).
+    #[pyo3(signature = (point = None, variant = 0, interchange = false))]
+    fn poses<'py>(
+        &self,
+        py: Python<'py>,
+        point: Option<&str>,
+        variant: usize,
+        interchange: bool,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let v = self.variant(variant)?;
+        let point = match point {
+            Some(p) => p.to_string(),
+            None => match v.output_names.first() {
+                Some(n) => n
+                    .trim_start_matches(kinrepro::study::runner::INTERCHANGE_PREFIX)
+                    .split('/')
+                    .next()
+                    .unwrap_or_default()
+                    .to_string(),
+                None => return Err(err("the study has no outputs")),
+            },
+        };
+        let prefix = if interchange {
+            kinrepro::study::runner::INTERCHANGE_PREFIX
+        } else {
+            ""
+        };
+        let cols = Dof::ALL
+            .iter()
+            .map(|d| {
+                let name = format!("{prefix}{point}/{}", d.si_key());
+                v.output_names.iter().position(|n| *n == name).ok_or_else(|| {
+                    err(format!("point {point:?}: no output {name} in this study"))
+                })
+            })
+            .collect::<PyResult<Vec<usize>>>()?;
+        if v.records.is_empty() && v.streamed {
+            return Err(no_records("poses"));
+        }
+        let r = &v.records;
+        Ok(Array2::from_shape_fn((r.len(), 6), |(i, j)| r[i].outputs[cols[j]]).into_pyarray(py))
+    }
+
+    /// The physical value of every varied input per sample, (n, k) in SI
+    /// (mu dimensionless, m, rad); columns named by `input_names()`.
+    #[pyo3(signature = (variant = 0))]
+    fn inputs<'py>(&self, py: Python<'py>, variant: usize) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let v = self.variant(variant)?;
+        if v.records.is_empty() && v.streamed {
+            return Err(no_records("inputs"));
+        }
+        let (r, k) = (&v.records, v.inputs.len());
+        Ok(Array2::from_shape_fn((r.len(), k), |(i, j)| r[i].physical[j]).into_pyarray(py))
+    }
+
+    /// Names of the columns of `inputs()` (`mu_1`, `offset_x_m`, ...).
+    #[pyo3(signature = (variant = 0))]
+    fn input_names(&self, variant: usize) -> PyResult<Vec<String>> {
+        Ok(self.variant(variant)?.inputs.iter().map(|i| i.name()).collect())
+    }
+
+    /// Sample index of every row of `poses()` and `inputs()`.
+    #[pyo3(signature = (variant = 0))]
+    fn indices(&self, variant: usize) -> PyResult<Vec<usize>> {
+        Ok(self.variant(variant)?.records.iter().map(|r| r.index).collect())
+    }
+
+    /// Sample standard deviation (n - 1) of each DOF at `point` (None: the
+    /// first), the JSON's `sigma`: keys x_nm, y_nm, z_nm [nm], phi_x_nrad,
+    /// phi_y_nrad, phi_z_nrad [nrad]. A shard has none (merge first).
+    #[pyo3(signature = (point = None, variant = 0, interchange = false))]
+    fn sigma<'py>(
+        &self,
+        py: Python<'py>,
+        point: Option<&str>,
+        variant: usize,
+        interchange: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let p = self.point_stats_of(point, variant, interchange)?;
+        Study::json_value(py, &p.sigma)
+    }
+
+    /// All statistics of `point` as in the JSON's `points` entry (n, sigma,
+    /// its 90 % interval, three_sigma, mean, min, max; nm and nrad).
+    #[pyo3(signature = (point = None, variant = 0, interchange = false))]
+    fn stats<'py>(
+        &self,
+        py: Python<'py>,
+        point: Option<&str>,
+        variant: usize,
+        interchange: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let p = self.point_stats_of(point, variant, interchange)?;
+        Study::json_value(py, p)
+    }
+
+    /// The whole document as Python objects (`json.loads(to_json())`).
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        Study::json_value(py, &self.report)
+    }
+
+    /// Number of scenes (variants) in the document.
+    fn __len__(&self) -> usize {
+        self.report.variants.len()
+    }
+
+    /// `(index, count)` of this shard ((1, 1): the whole study).
+    #[getter]
+    fn shard(&self) -> (usize, usize) {
+        (self.report.shard.index, self.report.shard.count)
+    }
+
+    fn __repr__(&self) -> String {
+        let names: Vec<&str> = self.report.variants.iter().map(|v| v.scene.as_str()).collect();
+        let r = &self.report;
+        let or_none = |v: Option<String>| v.unwrap_or_else(|| "None".into());
+        format!(
+            "Study(scenes={names:?}, samples={}, sampler={}, seed={}, shard=\"{}\")",
+            or_none(r.samples.map(|n| n.to_string())),
+            or_none(r.sampler.and_then(|s| serde_json::to_string(&s).ok())),
+            or_none(r.seed.map(|n| n.to_string())),
+            r.shard
+        )
+    }
+
+    fn __eq__(&self, other: &Study) -> bool {
+        self.report == other.report
+    }
+
+    fn __reduce__(&self, py: Python<'_>) -> PyResult<(Py<PyAny>, (String,))> {
+        let ctor = py.get_type::<Study>().getattr("from_json")?.unbind();
+        Ok((ctor, (self.to_json()?,)))
+    }
+}
+
+impl Study {
+    fn point_stats_of(
+        &self,
+        point: Option<&str>,
+        variant: usize,
+        interchange: bool,
+    ) -> PyResult<&kinrepro::study::PointStats> {
+        let v = self.variant(variant)?;
+        let list = if interchange { &v.interchangeability } else { &v.points };
+        if v.partial {
+            return Err(err(
+                "this is one shard of a study: its statistics wait for kinrepro.merge of all shards",
+            ));
+        }
+        match point {
+            None => list.first(),
+            Some(p) => list.iter().find(|s| s.name == p),
+        }
+        .ok_or_else(|| {
+            let have: Vec<&str> = list.iter().map(|s| s.name.as_str()).collect();
+            err(format!("point {point:?}: not in this study (have {have:?})"))
+        })
+    }
+}
+
+/// Run a reproducibility study of one scene or a list of scenes
+/// (`kinrepro study`); see the stub for the arguments.
+#[pyfunction]
+#[pyo3(signature = (
+    scene, samples = None, sampler = None, seed = None, vary = vec!["friction".to_string()],
+    shard = None, jobs = None, solver = "quasi-static".to_string(), increments = 20,
+    replicates = None, sensitivity = false, sobol_samples = None, offset_bounds = None,
+    tilt_bounds = None,
+))]
+#[allow(clippy::too_many_arguments)]
+pub fn study(
+    py: Python<'_>,
+    scene: &Bound<'_, PyAny>,
+    samples: Option<usize>,
+    sampler: Option<String>,
+    seed: Option<u64>,
+    vary: Vec<String>,
+    shard: Option<&Bound<'_, PyAny>>,
+    jobs: Option<usize>,
+    solver: String,
+    increments: usize,
+    replicates: Option<usize>,
+    sensitivity: bool,
+    sobol_samples: Option<usize>,
+    offset_bounds: Option<[f64; 3]>,
+    tilt_bounds: Option<[f64; 3]>,
+) -> PyResult<Study> {
+    let scenes: Vec<Scene> = match scene.extract::<Scene>() {
+        Ok(s) => vec![s],
+        Err(_) => scene
+            .extract()
+            .map_err(|_| err("scene: give a kinrepro.Scene or a list of them"))?,
+    };
+    let opts = StudyArgs {
+        samples,
+        sampler,
+        seed,
+        vary,
+        shard: crate::options::shard(shard)?,
+        solver,
+        increments,
+        replicates,
+        sensitivity,
+        offset_bounds,
+        tilt_bounds,
+    }
+    .options()?;
+    let sobol = sensitivity.then_some(
+        sobol_samples.unwrap_or(kinrepro::study::sensitivity::sobol::DEFAULT_BASE_SAMPLES),
+    );
+    if sobol.is_some_and(|n| n < 2) {
+        return Err(err("sobol_samples: the base sample size must be at least 2"));
+    }
+    let report = crate::run::interruptible(py, jobs, move |tick| {
+        let couplings = scenes
+            .iter()
+            .map(|s| coupling(&s.text, &s.file))
+            .collect::<Result<Vec<_>, _>>()?;
+        let plan = StudyPlan::new(&couplings, opts, sobol).map_err(|e| e.to_string())?;
+        if plan.streamed() && sensitivity {
+            return Err(format!(
+                "sensitivity keeps every sample in memory: not available for Monte Carlo studies above {} samples",
+                kinrepro::study::stream::STREAM_ABOVE
+            ));
+        }
+        let (report, _) = plan
+            .run::<NoSink>(tick, |_, _| Ok(None))
+            .map_err(|e| e.to_string())?;
+        Ok(report)
+    })?;
+    Ok(Study { report })
+}
+
+/// A streamed study's records are dropped (the moments are kept).
+struct NoSink;
+
+impl kinrepro::study::stream::RecordSink for NoSink {
+    type Error = std::io::Error;
+    fn push(&mut self, _: &kinrepro::study::StudyRecord) -> Result<(), Self::Error> {
+        Ok(())
+    }
+}
+
+/// Merge shards of a study (`kinrepro merge`): a list of `Study` (or JSON
+/// texts); the result equals the unsharded run. Sweep shards: a list of
+/// `Sweep`.
+#[pyfunction]
+pub fn merge(py: Python<'_>, parts: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny>> {
+    if parts.is_empty() {
+        return Err(err("merge: give at least one part"));
+    }
+    if parts[0].extract::<PyRef<crate::tools::Sweep>>().is_ok() {
+        return crate::tools::merge_sweeps(py, &parts);
+    }
+    let docs = parts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let report = if let Ok(s) = p.cast::<Study>() {
+                s.get().report.clone()
+            } else if let Ok(text) = p.extract::<String>() {
+                Study::from_json(&text)?.report
+            } else {
+                return Err(err(format!("merge: part {i} is neither a Study nor JSON text")));
+            };
+            Ok((format!("part {}", i + 1), report))
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    let merged = py
+        .detach(move || kinrepro::study::merge::merge_parts(docs))
+        .map_err(err)?;
+    Ok(Py::new(py, Study { report: merged })?.into_any())
+}

@@ -1,0 +1,155 @@
+"""Studies: the same numbers as the CLI, poses against sigma, shards."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+import kinrepro
+
+DOFS = ["x_nm", "y_nm", "z_nm", "phi_x_nrad", "phi_y_nrad", "phi_z_nrad"]
+
+
+def test_version_and_error_type():
+    assert kinrepro.__version__.count(".") == 2
+    assert issubclass(kinrepro.KinreproError, ValueError)
+
+
+def test_study_json_carries_the_cli_sigma(study01, cli):
+    ours = json.loads(study01.to_json())
+    theirs = cli(
+        "study", "scenes/01_maxwell_vgroove_steel.toml",
+        "--sampler", "mc", "--samples", 400, "--seed", 9, "--format", "json",
+    )
+    assert len(ours["variants"]) == len(theirs["variants"]) == 1
+    for a, b in zip(ours["variants"][0]["points"], theirs["variants"][0]["points"]):
+        assert a["name"] == b["name"]
+        for k in DOFS:
+            assert a["sigma"][k] == pytest.approx(b["sigma"][k], rel=1e-12, abs=0)
+    # The whole document is the CLI's (same file name, same options).
+    assert ours == theirs
+
+
+def test_poses_std_equals_sigma(study01):
+    poses = study01.poses("centre")
+    assert poses.shape == (400, 6)
+    assert poses.dtype == np.float64
+    sigma = study01.sigma("centre")
+    std = poses.std(axis=0, ddof=1) * 1e9
+    for j, k in enumerate(DOFS):
+        assert std[j] == pytest.approx(sigma[k], rel=1e-9), k
+    # The scatter is friction-induced: nm scale, not zero, not metres.
+    assert 1e-3 < sigma["x_nm"] < 1e4
+
+
+def test_inputs_are_the_sampled_friction(study01, scene01):
+    names = study01.input_names()
+    x = study01.inputs()
+    assert names == [f"mu_{k + 1}" for k in range(x.shape[1])]
+    assert x.shape == (400, 6)
+    # mu_s uniform in mu0 +- spread (scene 01: 0.5 +- 0.05).
+    assert x.min() >= 0.45 and x.max() <= 0.55
+    assert abs(x.mean() - 0.5) < 0.005
+    assert study01.indices() == list(range(400))
+
+
+def test_from_json_round_trips(study01):
+    text = study01.to_json()
+    again = kinrepro.Study.from_json(text)
+    assert again == study01
+    assert again.to_json() == text
+    with pytest.raises(kinrepro.KinreproError, match="not a kinrepro study JSON"):
+        kinrepro.Study.from_json("{}")
+
+
+def test_four_shards_merge_to_one_run(study01, scene01):
+    parts = [
+        kinrepro.study(scene01, samples=400, sampler="mc", seed=9, shard=f"{i}/4")
+        for i in (3, 1, 4, 2)
+    ]
+    assert [p.shard for p in parts] == [(3, 4), (1, 4), (4, 4), (2, 4)]
+    with pytest.raises(kinrepro.KinreproError, match="shard"):
+        parts[0].sigma()
+    merged = kinrepro.merge(parts)
+    assert merged.sigma("centre") == study01.sigma("centre")
+    np.testing.assert_array_equal(merged.poses(), study01.poses())
+    # Through JSON text, as files would travel.
+    assert kinrepro.merge([p.to_json() for p in parts]).sigma() == study01.sigma()
+
+
+def test_preload_scales_sigma_z_by_the_hertz_power(scene01):
+    # Scene 01 slides at every contact: the pose is F^(2/3) times a
+    # friction-only pattern, so sigma_z scales by (F2/F1)^(2/3) exactly.
+    base = kinrepro.study(scene01, samples=50, sampler="mc", seed=3)
+    heavy = kinrepro.study(scene01.set("preload.force", 40.0), samples=50, sampler="mc", seed=3)
+    ratio = heavy.sigma()["z_nm"] / base.sigma()["z_nm"]
+    assert ratio == pytest.approx((40.0 / 20.0) ** (2.0 / 3.0), rel=1e-6)
+
+
+def test_scene_set_and_toml(scene01):
+    s = scene01.set("friction.mu_static", 0.3)
+    assert "mu_static = 0.3" in s.to_toml()
+    assert kinrepro.Scene.from_toml(s.to_toml()).name == scene01.name
+    assert scene01.to_toml() != s.to_toml()  # the original is unchanged
+    with pytest.raises(kinrepro.KinreproError, match="preload.bogus"):
+        scene01.set("preload.bogus", 1.0)
+
+
+def test_bad_scene_raises_the_library_message(tmp_path):
+    bad = tmp_path / "bad.toml"
+    text = (kinrepro.Scene.load("scenes/01_maxwell_vgroove_steel.toml").to_toml()
+            .replace("force = 20.0", "force = -5.0"))
+    bad.write_text(text)
+    with pytest.raises(kinrepro.KinreproError) as e:
+        kinrepro.Scene.load(bad)
+    msg = str(e.value)
+    assert msg.startswith(f"{bad}:") and "preload.force" in msg
+    # The CLI prints the same line: `error: <message>`.
+    from conftest import cli_path
+    import subprocess
+    if cli_path().is_file():
+        r = subprocess.run([str(cli_path()), "check", str(bad)], capture_output=True, text=True)
+        assert r.returncode != 0
+        assert f"error: {msg}" in r.stderr.splitlines()
+    with pytest.raises(ValueError):
+        kinrepro.Scene.from_toml("not toml [")
+    with pytest.raises(kinrepro.KinreproError, match="cannot read"):
+        kinrepro.Scene.load(tmp_path / "missing.toml")
+
+
+def test_bad_options_raise(scene01):
+    with pytest.raises(kinrepro.KinreproError, match="sampler"):
+        kinrepro.study(scene01, sampler="sobolish")
+    with pytest.raises(kinrepro.KinreproError, match="vary"):
+        kinrepro.study(scene01, vary=("wind",))
+    with pytest.raises(kinrepro.KinreproError, match="shard"):
+        kinrepro.study(scene01, shard="5/4")
+    with pytest.raises(kinrepro.KinreproError, match="jobs"):
+        kinrepro.study(scene01, jobs=0)
+
+
+def test_scene_defaults_and_jobs(scene01, cli):
+    # No options: the scene's [study] settings (25 LHS samples, seed 1),
+    # as `kinrepro study` without flags; the thread count changes nothing.
+    s = kinrepro.study(scene01, jobs=1)
+    theirs = cli("study", "scenes/01_maxwell_vgroove_steel.toml", "--format", "json")
+    assert json.loads(s.to_json()) == theirs
+    assert s.poses().shape == (25, 6)
+
+
+def test_pickle_round_trip(scene01, study01):
+    import pickle
+
+    assert pickle.loads(pickle.dumps(scene01)) == scene01
+    assert pickle.loads(pickle.dumps(study01)) == study01
+
+
+def test_several_scenes_are_the_cli_study_of_several(cli):
+    files = ["scenes/01_maxwell_vgroove_steel.toml", "scenes/02_maxwell_pins_steel.toml"]
+    s = kinrepro.study([kinrepro.Scene.load(f) for f in files], samples=10, seed=2)
+    assert len(s) == 2
+    theirs = cli("study", *files, "--samples", 10, "--seed", 2, "--format", "json")
+    assert json.loads(s.to_json()) == theirs
+    assert s.sigma(variant=1) == theirs["variants"][1]["points"][0]["sigma"]
+    assert "samples=10" in repr(s) and '"lhs"' in repr(s)
