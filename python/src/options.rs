@@ -2,7 +2,7 @@
 //! the messages of the CLI's flags (`src/bin/kinrepro/flags/high.rs`).
 
 use kinrepro::solve::dynamic::{DynamicOptions, StartPose};
-use kinrepro::solve::{Method, SolverOptions};
+use kinrepro::solve::{INCREMENTS, Method, SolverOptions};
 use kinrepro::study::runner::{StartBounds, StudyOptions, Variation};
 use kinrepro::study::{Sampler, Shard};
 use nalgebra::Vector3;
@@ -10,8 +10,6 @@ use pyo3::prelude::*;
 
 use crate::err;
 
-/// Range of `increments` (the CLI's `--increments`).
-const INCREMENTS: std::ops::RangeInclusive<usize> = 1..=100_000;
 
 /// The seating solver by name (`quasi-static`, `dynamic`).
 pub fn method(solver: &str, increments: usize) -> PyResult<Method> {

@@ -19,6 +19,9 @@ use crate::contact::{Friction, SlipState};
 use crate::scene::resolve::MU_MAX;
 use contact_layer::ContactEval;
 
+/// The accepted numbers of nominal load increments (`--increments`).
+pub const INCREMENTS: std::ops::RangeInclusive<usize> = 1..=100_000;
+
 /// Settings of the quasi-static solver.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverOptions {

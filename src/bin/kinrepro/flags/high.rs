@@ -4,8 +4,6 @@
 //! names the flag and the reason ([`CliError::Usage`]); the commands take
 //! these options, call the library and print.
 
-use std::ops::RangeInclusive;
-
 use kinrepro::calibrate::fit::CalibrateOptions;
 use kinrepro::calibrate::units::parse_noise;
 use kinrepro::contact::{ContactPair, Friction};
@@ -57,9 +55,6 @@ fn usage(message: impl Into<String>) -> CliError {
     CliError::Usage(message.into())
 }
 
-/// Documented range of `--increments`.
-pub const INCREMENTS: RangeInclusive<usize> = 1..=100_000;
-
 /// Fewest model samples accepted (`--model-samples`, `predict --samples`).
 const MIN_MODEL_SAMPLES: usize = 100;
 
@@ -79,6 +74,7 @@ pub fn predict(a: &PredictArgs) -> Result<(), CliError> {
 /// The seating solver: `--increments` (checked whatever the solver) for
 /// the quasi-static one, `start` for the dynamic one.
 fn method(solver: SolverKind, increments: usize, start: StartPose) -> Result<Method, CliError> {
+    use kinrepro::solve::INCREMENTS;
     if !INCREMENTS.contains(&increments) {
         return Err(usage(format!(
             "--increments {increments}: out of range, need {}..={} load increments",
