@@ -102,7 +102,10 @@ pub fn validate_pair(
     };
     Ok(PairValidation {
         shape: case.pair.shape,
-        radii_m: [Some(case.pair.radius1), case.pair.radius2],
+        radii_m: {
+            let (r1, r2) = case.pair.nominal_radii();
+            [Some(r1), r2]
+        },
         materials: [
             case.pair.material1.name.clone(),
             case.pair.material2.name.clone(),

@@ -2,8 +2,24 @@
 
 use std::fmt::Write;
 
+use crate::contact::hertz::CONFORMITY_LIMIT;
 use crate::contact::history::HistoryStep;
-use crate::contact::{ContactEvaluation, SlipState};
+use crate::contact::{ContactEvaluation, PairCurvature, SlipState};
+
+/// The words of a contact too conformal for Hertz (a semi-axis above
+/// [`CONFORMITY_LIMIT`] of the smaller relative radius), or `None`.
+pub fn conformity_warning(e: &ContactEvaluation) -> Option<String> {
+    let (a, r) = (e.semi_axes_m[0], e.relative_radii_m[0]);
+    (a > CONFORMITY_LIMIT * r).then(|| {
+        format!(
+            "too conformal for Hertz: the semi-axis a = {:.4} mm is {:.1} % of the smaller relative radius of curvature {:.4} mm (limit {:.0} %); Hertz assumes a contact small against the radii (half-spaces), so these numbers overstate what they know",
+            a * 1e3,
+            100.0 * a / r,
+            r * 1e3,
+            100.0 * CONFORMITY_LIMIT
+        )
+    })
+}
 
 /// A readable table of one contact evaluation (SI values with engineering units).
 pub fn contact_table(e: &ContactEvaluation) -> String {
@@ -80,7 +96,7 @@ pub fn contact_table(e: &ContactEvaluation) -> String {
 /// What produced a history table (written as `#` lines before the CSV).
 pub struct HistoryProvenance<'a> {
     pub shape: &'a str,
-    pub radii_m: (f64, Option<f64>),
+    pub curvature: PairCurvature,
     pub materials: (&'a str, &'a str),
     pub law: &'a str,
     pub mu_static: f64,
@@ -94,14 +110,18 @@ pub struct HistoryProvenance<'a> {
 /// displacement of the ball relative to the fixed body).
 pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
     let mut s = String::new();
-    let r2 = p.radii_m.1.map_or("-".to_string(), |r| format!("{r:e}"));
+    let c = &p.curvature;
     let _ = writeln!(
         s,
-        "# kinrepro {} contact --history {}: {} radius1 {:e} m radius2 {r2} m, {} on {}, tangential law {}, mu_s {}, mu_d {}",
+        "# kinrepro {} contact --history {}: {} radii1 {:e},{:e} m radii2 {:e},{:e} m angle {} deg, {} on {}, tangential law {}, mu_s {}, mu_d {}",
         env!("CARGO_PKG_VERSION"),
         p.history_file,
         p.shape,
-        p.radii_m.0,
+        c.radii1[0],
+        c.radii1[1],
+        c.radii2[0],
+        c.radii2[1],
+        c.angle.to_degrees(),
         p.materials.0,
         p.materials.1,
         p.law,

@@ -4,23 +4,22 @@
 use std::path::Path;
 
 use kinrepro::contact::history::{HistoryError, LoadStep, drive, parse_history_csv};
-use kinrepro::contact::{ContactPair, Friction};
+use kinrepro::contact::{ContactPair, ContactShape, Friction, PairCurvature};
 use kinrepro::material::Material;
-use kinrepro::report::contact::{HistoryProvenance, contact_table, history_csv};
+use kinrepro::report::contact::{
+    HistoryProvenance, conformity_warning, contact_table, history_csv,
+};
 
 use super::emit;
 use crate::args::*;
 use crate::error::{CliError, Context};
 
 pub fn contact(args: ContactArgs) -> Result<(), CliError> {
-    let pair = ContactPair {
-        shape: args.shape,
-        radius1: args.radius1,
-        radius2: args.radius2,
-        material1: Material::builtin(&args.material1).context("--material1")?,
-        material2: Material::builtin(&args.material2).context("--material2")?,
-    };
+    let pair = pair(&args)?;
     let eval = pair.evaluate(args.load)?;
+    if let Some(warning) = conformity_warning(&eval) {
+        eprintln!("warning: {warning}");
+    }
     if let Some(path) = &args.history {
         return history(&args, &pair, path);
     }
@@ -30,6 +29,41 @@ pub fn contact(args: ContactArgs) -> Result<(), CliError> {
     } else {
         emit(&contact_table(&eval))
     }
+}
+
+/// The pair of `--shape` with `--radius1/--radius2`, or of the principal
+/// radii `--radii1/--radii2` and `--angle-deg`.
+fn pair(args: &ContactArgs) -> Result<ContactPair, CliError> {
+    let material1 = Material::builtin(&args.material1).context("--material1")?;
+    let material2 = Material::builtin(&args.material2).context("--material2")?;
+    let (Some(r1), Some(r2)) = (&args.radii1, &args.radii2) else {
+        let shape = args.shape.unwrap_or(ContactShape::SpherePlane);
+        let r1 = args.radius1.unwrap_or(f64::NAN);
+        return Ok(ContactPair::from_shape(
+            shape,
+            r1,
+            args.radius2,
+            material1,
+            material2,
+        )?);
+    };
+    let two = |flag: &str, v: &[f64]| match v {
+        [x, y] => Ok([*x, *y]),
+        _ => Err(CliError::Usage(format!(
+            "{flag} needs two comma-separated principal radii RX,RY [m], got {}",
+            v.len()
+        ))),
+    };
+    Ok(ContactPair {
+        shape: ContactShape::General,
+        curvature: PairCurvature {
+            radii1: two("--radii1", r1)?,
+            radii2: two("--radii2", r2)?,
+            angle: args.angle_deg.unwrap_or(0.0).to_radians(),
+        },
+        material1,
+        material2,
+    })
 }
 
 fn history(args: &ContactArgs, pair: &ContactPair, path: &Path) -> Result<(), CliError> {
@@ -62,7 +96,7 @@ fn history(args: &ContactArgs, pair: &ContactPair, path: &Path) -> Result<(), Cl
     })?;
     let prov = HistoryProvenance {
         shape: pair.shape.name(),
-        radii_m: (pair.radius1, pair.radius2),
+        curvature: pair.curvature,
         materials: (&args.material1, &args.material2),
         law: args.tangential_law.name(),
         mu_static: friction.mu_s,
