@@ -32,7 +32,7 @@ use nalgebra::Vector3;
 /// 6 mm seat or a 2 mm pin.
 fn law_of(shape: ContactShape) -> ContactLaw {
     let steel = Material::builtin("steel").unwrap();
-    let r2 = if matches!(shape, ContactShape::SphereSeat | ContactShape::SphereArch) {
+    let r2 = if shape == ContactShape::SphereSeat {
         6e-3
     } else {
         2e-3

@@ -10,6 +10,8 @@ pub mod analysis;
 pub mod assembly;
 pub mod calibrate;
 pub mod contact;
+pub mod delimited;
+pub mod dof;
 pub mod error;
 pub mod explore;
 pub mod fe;

@@ -29,7 +29,7 @@ const ALL_SCENES: [&str; 8] = [
 ];
 
 /// (normal, ball centre) of the 90-degree Maxwell V-groove of scene 01
-/// (`common::maxwell_contacts`, from MODEL.md 1a by hand).
+/// (`common::maxwell_contacts`, from docs/model.md's axes and contact numbering, by hand).
 fn maxwell_by_hand(alpha: f64) -> Vec<(Vector3<f64>, Vector3<f64>)> {
     common::maxwell_contacts(alpha)
         .into_iter()

@@ -69,10 +69,11 @@ fn csv(rows: &[[f64; 6]]) -> String {
 fn summary(m: &Measurement) -> String {
     let mut s = String::from("dof,unit,sigma,cycles\n");
     for (j, (&d, sg)) in m.dofs.iter().zip(m.sigma()).enumerate() {
-        let unit = if d < 3 { "nm" } else { "nrad" };
+        let dof = kinrepro::dof::Dof::ALL[d];
         s += &format!(
-            "{},{unit},{},{}\n",
-            kinrepro::calibrate::units::DOFS[d],
+            "{},{},{},{}\n",
+            dof.name(),
+            dof.unit(),
             sg * 1e9,
             m.cycles()[j]
         );

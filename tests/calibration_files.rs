@@ -6,6 +6,7 @@ mod common;
 
 use kinrepro::calibrate::Measurement;
 use kinrepro::calibrate::predict::PREDICTION_METHOD;
+use kinrepro::calibrate::units::{UnitError, parse_column, parse_noise, parse_value};
 
 fn err(text: &str) -> String {
     Measurement::parse(text, "m.csv", None)
@@ -307,4 +308,48 @@ fn two_parameters(s02: &str, s01: &str, measured: &str, path: &dyn Fn(&str) -> S
     let (ok, _, e) = common::kinrepro(&["predict", s01, "--calibration", &path("bad_region.json")]);
     assert!(!ok && e.trim().lines().count() == 1, "{e}");
     assert!(e.contains("`region[0]`: `dynamic_ratio`"), "{e}");
+}
+
+/// Column headers, values with units and `--noise` entries.
+#[test]
+fn unit_columns_and_values() {
+    assert_eq!(parse_column("phi_x_nrad").unwrap(), (3, 1e-9));
+    assert_eq!(parse_column("x_um").unwrap(), (0, 1e-6));
+    let e = parse_column("x").unwrap_err();
+    assert!(matches!(e, UnitError::NoUnit { dof: 0, .. }), "{e:?}");
+    assert_eq!(
+        e.to_string(),
+        "`x` has no unit: write x_m, x_mm, x_um, x_nm"
+    );
+    assert!(
+        parse_column("w_nm")
+            .unwrap_err()
+            .to_string()
+            .contains("unknown DOF")
+    );
+    let e = parse_column("z_nrad").unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "`z_nrad`: unit `nrad` does not fit z (use m, mm, um, nm)"
+    );
+    assert_eq!(parse_value(0, "1nm").unwrap(), 1e-9);
+    assert_eq!(parse_value(4, "20 nrad").unwrap(), 20e-9);
+    assert_eq!(parse_value(0, "1e-9").unwrap(), 1e-9);
+    assert!(matches!(
+        parse_value(0, "1 nrad"),
+        Err(UnitError::ValueUnit { dof: 0, .. })
+    ));
+    assert!(parse_value(0, "NaN").is_err());
+    assert!(matches!(
+        parse_value(0, "-1nm"),
+        Err(UnitError::OutOfRange { .. })
+    ));
+    let mut n = [None; 6];
+    parse_noise("x=1nm, phi_z=2e-8", &mut n).unwrap();
+    assert_eq!(n[0], Some(1e-9));
+    assert_eq!(n[5], Some(2e-8));
+    assert_eq!(
+        parse_noise("q=1nm", &mut n).unwrap_err().to_string(),
+        "`q=1nm`: unknown DOF `q` (one of x, y, z, phi_x, phi_y, phi_z)"
+    );
 }

@@ -158,7 +158,7 @@ fn json_records_carry_physical_mu_equal_to_the_per_sample_csv() {
         assert_eq!(cells[0] as usize, rec.index);
         for k in 0..6 {
             let mu = rec.physical[k];
-            // mu_s = mu0 + spread (2u - 1) (MODEL.md §4), independently of the code's map.
+            // mu_s = mu0 + spread (2u - 1) (docs/model.md, "Coulomb stick and slip"), independently of the code's map.
             let expected = mu0 + spread * (2.0 * rec.inputs[k] - 1.0);
             assert!((mu - expected).abs() < 1e-15, "{mu} vs {expected}");
             assert!(mu >= mu0 - spread && mu <= mu0 + spread, "{mu}");

@@ -161,7 +161,7 @@ fn frictionless_drop_ends_at_the_frictionless_seating() {
     assert!((pd[0] - pq[0]).abs() < 1e-12 && (pd[1] - pq[1]).abs() < 1e-12);
     assert!((pd[2] - pq[2]).abs() < 1e-12);
     assert!((pd[3] - pq[3]).abs() < 1e-10 && (pd[4] - pq[4]).abs() < 1e-10);
-    // With mu = 0 nothing but z moves (MODEL.md §3).
+    // With mu = 0 nothing but z moves (docs/model.md, "Tangential contact").
     assert!(pd[0].abs() < 1e-12 && pd[1].abs() < 1e-12);
 }
 

@@ -4,7 +4,7 @@
 //! Statics (Hale 1999; Patti & Vogels 2019): the coupling can stick off its seat
 //! when, with one contact open, the other five can balance the preload with forces
 //! inside their Coulomb cones |F_t| <= mu F_n. The least such mu is the limit.
-//! Here the geometry is built by hand from MODEL.md 1a (balls at 90, 210, 330 deg
+//! Here the geometry is built by hand from docs/model.md's axes and contact numbering (balls at 90, 210, 330 deg
 //! on the 80 mm circle, 90-degree grooves: normals 45 deg from z, 5 mm balls,
 //! contact point = ball centre - radius * normal) and the cone is bracketed
 //! between an inscribed and a circumscribed pyramid of 256 facets, so the true

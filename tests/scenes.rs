@@ -1,5 +1,5 @@
 //! Bundled scenes: load, expand and load back identically; exactly
-//! constrained; contact normals at the angles of MODEL.md §1a; balls touch
+//! constrained; contact normals at the angles of docs/model.md ("Axes and contact numbering"); balls touch
 //! at zero gap (the geometry itself: tests/geometry.rs).
 
 use std::path::{Path, PathBuf};

@@ -2,13 +2,11 @@
 //! independent 25-sample studies of scene 01 it covers the population sigma (from 20 000 Monte
 //! Carlo samples) in 80-97 % of them, and its mean width matches the 5-95 % spread of sigma
 //! over the studies within 30 %; for the replicated LHS (the default) and for Monte Carlo.
-//! The old interval (a bootstrap of one unreplicated LHS) fails the width criterion.
 
 mod common;
 
 use kinrepro::assembly::Coupling;
 use kinrepro::study::runner::{StudyOptions, VariantRun, evaluate_rows, recorded_output_names};
-use kinrepro::study::stats::{BootstrapConfig, bootstrap_sigma};
 use kinrepro::study::{DesignSpec, Sampler, Shard};
 use kinrepro::study::{PointStats, VariantReport};
 
@@ -118,37 +116,4 @@ fn printed_sigma_interval_covers_the_population_sigma() {
         assert!((0.80..=0.97).contains(&cov), "{name}: coverage {cov}");
         assert!((ratio - 1.0).abs() <= 0.30, "{name}: width/spread {ratio}");
     }
-}
-
-#[test]
-fn bootstrap_of_a_single_lhs_is_too_wide() {
-    // The finding: one optimised LHS-25 per seed, the percentile bootstrap of its 25 points
-    // (the interval printed before) against the spread of sigma over the designs.
-    let c = common::load("01_maxwell_vgroove_steel.toml");
-    let specs: Vec<DesignSpec> = (1..=DESIGNS)
-        .map(|s| DesignSpec::new(Sampler::Lhs, 6, Some(25), s).unwrap())
-        .collect();
-    let st = studies(&c, &specs);
-    assert!(
-        st[0].0.sigma_ci90_low.is_none(),
-        "a single LHS prints no interval"
-    );
-    let sig: Vec<f64> = st.iter().map(|(p, _)| p.sigma.x_nm).collect();
-    let iv: Vec<(f64, f64)> = st
-        .iter()
-        .map(|(_, x)| {
-            let b = bootstrap_sigma(x, &BootstrapConfig::default()).unwrap();
-            (b.lower, b.upper)
-        })
-        .collect();
-    let (cov, ratio, q05, q95, w) = judge(&sig, &iv, quantile(&sig, 0.5));
-    println!(
-        "single LHS-25, bootstrap: sigma_x spread [{q05:.3}, {q95:.3}] nm, mean bootstrap width \
-         {w:.3} nm = {ratio:.3} x spread (covers the median sigma in {cov:.3}); seed 1: [{:.2}, {:.2}]",
-        iv[0].0, iv[0].1
-    );
-    assert!(
-        ratio > 1.3,
-        "the bootstrap of one LHS is about twice the spread: {ratio}"
-    );
 }

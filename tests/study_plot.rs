@@ -5,9 +5,10 @@
 
 mod common;
 
+use kinrepro::dof::Dof;
 use kinrepro::report::html::charts::study_charts;
 use kinrepro::report::plot::{
-    ConvergenceSeries, Dof, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
+    ConvergenceSeries, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
     xy_scatter_svg,
 };
 use kinrepro::study::VariantReport;

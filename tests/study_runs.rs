@@ -114,7 +114,7 @@ fn maxwell_scatter_is_symmetric_in_x_y_and_centred() {
             s.phi_x_nrad,
             s.phi_y_nrad
         );
-        // sigma_z below sigma_x and sigma_y (MODEL.md section 6).
+        // sigma_z below sigma_x and sigma_y, the paper's trend (docs/paper.md, "What agrees").
         assert!(s.z_nm < s.x_nm.min(s.y_nm));
         // Mean displacement relative to nominal is small against sigma.
         let m = p.mean.values();
@@ -238,7 +238,7 @@ fn dynamic_studies_with_random_start_poses() {
     };
     // Every drawn start lies above the seat: clear of all surfaces, within the bounds.
     for row in kinrepro::study::design(Sampler::Lhs, 6, 12, 3).unwrap() {
-        let (mu, start) = variation.map(&c, &row);
+        let kinrepro::study::runner::Sample { mu, start, .. } = variation.sample(&c, &row);
         assert_eq!(mu, vec![0.2; 6]);
         assert!(start.offset.x.abs() <= 20e-6 && start.offset.y.abs() <= 20e-6);
         assert!(start.tilt.iter().all(|t| t.abs() <= 1e-4));

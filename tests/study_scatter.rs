@@ -37,7 +37,7 @@ fn preload_offset_changes_frictionless_forces_as_statics_says() {
         ..Default::default()
     };
     assert_eq!(
-        var.input_names(&c),
+        var.inputs(&c),
         [
             "preload_x_m",
             "preload_y_m",
@@ -137,7 +137,7 @@ fn larger_ball_in_a_45_degree_v_raises_the_half_by_the_closed_form() {
         ..Default::default()
     };
     assert_eq!(
-        var.input_names(&c),
+        var.inputs(&c),
         [
             "ball_1_diameter_m",
             "ball_2_diameter_m",

@@ -1,9 +1,9 @@
-//! Tests of the statistics, bootstrap, convergence and shard merging against hand values.
+//! Tests of the statistics, convergence and shard merging against hand values.
 
 use approx::assert_relative_eq;
 use kinrepro::study::stats::{
-    BootstrapConfig, MergedStudy, SampleRecord, ShardFile, SigmaMethod, bootstrap_sigma,
-    mean_sigma, merge, sigma_convergence, summarize, summarize_outputs, verify_inputs,
+    MergedStudy, SampleRecord, ShardFile, SigmaMethod, mean_sigma, merge, sigma_convergence,
+    summarize, summarize_outputs, verify_inputs,
 };
 use kinrepro::study::{DesignSpec, Sampler, Shard, StudyError};
 
@@ -44,7 +44,6 @@ fn sigma_hand_values_and_large_offset() {
 
 #[test]
 fn too_few_or_non_finite_samples_are_errors() {
-    let b = BootstrapConfig::default();
     assert!(matches!(
         summarize(&[], SigmaMethod::Iid),
         Err(StudyError::TooFewSamples { n: 0 })
@@ -58,44 +57,6 @@ fn too_few_or_non_finite_samples_are_errors() {
         Err(StudyError::NonFinite { .. })
     ));
     assert!(sigma_convergence(&[1.0]).is_err());
-    assert!(
-        bootstrap_sigma(
-            &[1.0, 2.0],
-            &BootstrapConfig {
-                resamples: 1,
-                ..b.clone()
-            }
-        )
-        .is_err()
-    );
-    assert!(bootstrap_sigma(&[1.0, 2.0], &BootstrapConfig { level: 1.0, ..b }).is_err());
-}
-
-#[test]
-fn bootstrap_contains_sigma_and_is_deterministic() {
-    let x: Vec<f64> = (0..25)
-        .map(|i| ((i * 37 % 25) as f64 * 0.7).sin() * 3.0)
-        .collect();
-    let b = BootstrapConfig::default();
-    let (_, s) = mean_sigma(&x).unwrap();
-    let i1 = bootstrap_sigma(&x, &b).unwrap();
-    let i2 = bootstrap_sigma(&x, &b).unwrap();
-    assert_eq!(i1, i2);
-    assert!(i1.lower < s && s < i1.upper, "{i1:?} vs {s}");
-    assert_eq!(i1.level, 0.9);
-    let other = bootstrap_sigma(&x, &BootstrapConfig { seed: 1, ..b }).unwrap();
-    assert_ne!(i1, other);
-}
-
-#[test]
-fn bootstrap_of_two_points_matches_exact_distribution() {
-    // Resampling {0, 1} twice gives sd 0 (prob 1/2) or 1/sqrt(2) (prob 1/2): the 5 % and 95 %
-    // quantiles of the bootstrap distribution are exactly 0 and 1/sqrt(2).
-    let i = bootstrap_sigma(&[0.0, 1.0], &BootstrapConfig::default()).unwrap();
-    assert_eq!(i.lower, 0.0);
-    assert_relative_eq!(i.upper, 0.5f64.sqrt(), max_relative = 1e-15);
-    let c = bootstrap_sigma(&[4.0; 6], &BootstrapConfig::default()).unwrap();
-    assert_eq!((c.lower, c.upper), (0.0, 0.0));
 }
 
 #[test]

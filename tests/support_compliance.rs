@@ -139,7 +139,7 @@ fn sigmas(c: &Coupling, samples: &[Vec<f64>]) -> [f64; 5] {
 
 #[test]
 fn scene_01_scatter_rises_by_the_linearised_compliance_factor() {
-    // Every groove contact slides (MODEL.md §3). The pose follows from the
+    // Every groove contact slides (docs/model.md, "What to expect in a groove"). The pose follows from the
     // six gaps, W x = -delta(F), so a change of friction moves it by
     // dx = -W^-1 C dF, C = diag(1/k_n,i) with the total linearised normal
     // compliance 1/k_n = 1/k_H + c (springs in series). All six contacts of

@@ -69,21 +69,15 @@ pub fn envelope(
     let mut f = 1.0;
     let first = loop {
         match run(f) {
-            Ok(p) => {
-                if let Some(e) = p.first_event {
-                    break e;
-                }
-                lo = f;
-            }
+            Ok(LoadPath {
+                first_event: Some(e),
+                ..
+            }) => break e,
+            Ok(_) => lo = f,
+            Err(e) if f <= 1.0 => return Err(e),
             // A path that fails without an event beyond the given load ends
             // the search (the solver's travel limit, far beyond any event).
-            Err(_) if f > 1.0 => {
-                return Ok(Envelope {
-                    event: None,
-                    searched_to: lo,
-                });
-            }
-            Err(e) => return Err(e),
+            Err(_) => f = MAX_FACTOR,
         }
         if f >= MAX_FACTOR {
             return Ok(Envelope {

@@ -57,10 +57,8 @@ pub struct ContactSpring {
     pub tangent: Matrix3<f64>,
 }
 
-/// The stiffness of a seated coupling.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CouplingStiffness {
-    /// The seated pose.
     pub pose: BodyPose,
     pub springs: Vec<ContactSpring>,
 }
@@ -86,12 +84,9 @@ impl CouplingStiffness {
                 let e = evaluate(coupling, i, &pose, &pose, &states[i], friction[i]);
                 let n = e.geometry.normal;
                 let nn = n * n.transpose();
+                let law = &coupling.contacts[i].law;
                 let (tangent, kt) = if friction[i].mu_s > 0.0 {
-                    let kt = coupling.contacts[i]
-                        .law
-                        .tangential_stiffness(e.normal_force)
-                        .0;
-                    (e.stiffness, kt)
+                    (e.stiffness, law.tangential_stiffness(e.normal_force).0)
                 } else {
                     // Frictionless: the normal spring only.
                     (-e.normal_stiffness * nn, 0.0)
@@ -138,18 +133,16 @@ impl CouplingStiffness {
         let block = |r: usize| -> [(f64, Vector3<f64>); 3] {
             let b: Matrix3<f64> = c.fixed_view::<3, 3>(r, r).into();
             let eig = SymmetricEigen::new(b);
-            let mut out: Vec<(f64, Vector3<f64>)> = (0..3)
-                .map(|k| {
-                    let mut d: Vector3<f64> = eig.eigenvectors.column(k).into();
-                    // Sign convention: largest component positive.
-                    if d[d.iamax()] < 0.0 {
-                        d = -d;
-                    }
-                    (1.0 / eig.eigenvalues[k], d)
-                })
-                .collect();
+            let mut out: [(f64, Vector3<f64>); 3] = std::array::from_fn(|k| {
+                let mut d: Vector3<f64> = eig.eigenvectors.column(k).into();
+                // Sign convention: largest component positive.
+                if d[d.iamax()] < 0.0 {
+                    d = -d;
+                }
+                (1.0 / eig.eigenvalues[k], d)
+            });
             out.sort_by(|a, b| a.0.total_cmp(&b.0));
-            [out[0], out[1], out[2]]
+            out
         };
         Some(Principal {
             translational: block(0),

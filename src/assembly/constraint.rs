@@ -24,7 +24,6 @@ use super::{BodyPose, Coupling};
 /// rounding, ~1e-16 of the largest eigenvalue).
 const EIGEN_RANK_TOL: f64 = 1e-12;
 
-/// Result of the constraint analysis.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ConstraintReport {
     pub contacts: usize,
@@ -222,16 +221,12 @@ pub fn frictionless_preload_forces(coupling: &Coupling) -> Vec<f64> {
     let point = pose.apply(&p.point);
     let mom = point.cross(&f);
     let rhs = -Vector6::new(f.x, f.y, f.z, mom.x, mom.y, mom.z);
-    match a
+    let x = a
         .lu()
-        .solve(&nalgebra::DVector::from_column_slice(rhs.as_slice()))
-    {
-        Some(x) => x.iter().copied().collect(),
-        None => vec![0.0; m],
-    }
+        .solve(&nalgebra::DVector::from_column_slice(rhs.as_slice()));
+    x.map_or_else(|| vec![0.0; m], |x| x.as_slice().to_vec())
 }
 
-/// The friction limit for seating.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FrictionLimit {
     /// Largest mu at which no contact can stay open while the others hold

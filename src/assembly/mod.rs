@@ -61,7 +61,6 @@ pub struct Contact {
     pub shear: ShearRatios,
 }
 
-/// A moving ball.
 #[derive(Debug, Clone)]
 pub struct MovingBall {
     /// Centre in the body frame [m].
@@ -70,7 +69,6 @@ pub struct MovingBall {
     pub material: Material,
 }
 
-/// The assembled coupling.
 #[derive(Debug, Clone)]
 pub struct Coupling {
     pub scene: Scene,

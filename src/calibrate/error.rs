@@ -26,7 +26,6 @@ pub enum CalibrateError {
         line: usize,
         reason: String,
     },
-    /// The file could not be read.
     #[error("{file}: cannot read: {reason}")]
     Read { file: String, reason: String },
     /// A bad `--noise` entry (or `# noise:` metadata).

@@ -10,10 +10,10 @@ use serde::{Deserialize, Serialize};
 
 use super::error::CalibrateError;
 use super::grid::GridInfo;
-use super::likelihood::{GOF_THRESHOLD, GoodnessOfFit, Observed};
+use super::likelihood::{GoodnessOfFit, Observed};
 use super::measurement::{MeasuredData, Measurement};
-use super::units::{DOFS, si_unit};
 use crate::assembly::Coupling;
+use crate::dof::Dof;
 use crate::solve::Method;
 use crate::study::provenance::{Fingerprint, VERSION, fnv1a64};
 
@@ -25,7 +25,6 @@ pub const READABLE_SCHEMA_VERSIONS: [u32; 2] = [1, 2];
 
 pub use super::params::PARAMETERS;
 
-/// How to calibrate.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CalibrateOptions {
     /// Parameters to fit (any of [`PARAMETERS`], each once).
@@ -39,7 +38,6 @@ pub struct CalibrateOptions {
     pub method: Method,
 }
 
-/// One fitted parameter.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Parameter {
     pub estimate: f64,
@@ -72,21 +70,10 @@ pub struct Correlation {
     pub matrix: Vec<Vec<f64>>,
 }
 
-/// The goodness-of-fit block.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct GoodnessOfFitReport {
-    pub statistic: Option<f64>,
-    pub df: usize,
-    pub p_value: Option<f64>,
-    pub ok: bool,
-    pub threshold: f64,
-    pub test: String,
-}
-
 /// Measured against fitted sigma of one DOF [SI].
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct DofFit {
-    pub dof: String,
+    pub dof: Dof,
     pub unit: String,
     pub cycles: usize,
     pub measured_sigma: f64,
@@ -114,7 +101,6 @@ pub struct ModelInfo {
     pub grid: Option<GridInfo>,
 }
 
-/// The calibration file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Calibration {
     pub schema_version: u32,
@@ -142,7 +128,7 @@ pub struct Calibration {
     pub region: Vec<BTreeMap<String, f64>>,
     /// The parameters held at the scene's values.
     pub fixed: BTreeMap<String, f64>,
-    pub goodness_of_fit: GoodnessOfFitReport,
+    pub goodness_of_fit: GoodnessOfFit,
     pub dofs: Vec<DofFit>,
     pub model: ModelInfo,
     pub fingerprint: Fingerprint,
@@ -236,14 +222,7 @@ pub fn skeleton(
         correlation: None,
         region: Vec::new(),
         fixed: BTreeMap::new(),
-        goodness_of_fit: GoodnessOfFitReport {
-            statistic: gof.statistic,
-            df: gof.df,
-            p_value: gof.p_value,
-            ok: gof.ok,
-            threshold: GOF_THRESHOLD,
-            test: gof.test,
-        },
+        goodness_of_fit: gof,
         dofs: Vec::new(),
         model,
         fingerprint,
@@ -264,8 +243,8 @@ pub fn dof_fits(
         .iter()
         .enumerate()
         .map(|(j, &d)| DofFit {
-            dof: DOFS[d].into(),
-            unit: si_unit(d).into(),
+            dof: Dof::ALL[d],
+            unit: Dof::ALL[d].si_unit().into(),
             cycles: cycles[j],
             measured_sigma: measured[j],
             noise_sigma: noise[j],
@@ -334,7 +313,6 @@ impl Calibration {
             .unwrap_or_default()
     }
 
-    /// The estimates of all fitted parameters.
     pub fn estimates(&self) -> BTreeMap<String, f64> {
         self.parameters
             .iter()

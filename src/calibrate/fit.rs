@@ -103,13 +103,13 @@ pub fn calibrate(
         at_estimate.fingerprint.clone(),
     );
     cal.dofs = dof_fits(m, &noise, &fitted, &g_hat, s_hat);
-    let named = |t: &Vec<f64>| params.iter().map(|p| p.name().to_string()).zip(t.clone());
-    cal.region = fit.region.iter().map(|t| named(t).collect()).collect();
-    cal.parameters = params
+    let names = || params.iter().map(|p| p.name().to_string());
+    cal.region = fit
+        .region
         .iter()
-        .map(|p| p.name().to_string())
-        .zip(fit.parameters)
+        .map(|t| names().zip(t.clone()).collect())
         .collect();
+    cal.parameters = names().zip(fit.parameters).collect();
     cal.correlation = fit.correlation;
     cal.fixed = fixed(coupling, &params);
     Ok(cal)
@@ -169,7 +169,6 @@ fn model_info(
     }
 }
 
-/// The fit at the estimate.
 #[derive(Debug, Clone, PartialEq)]
 pub struct JointFit {
     /// Per fitted parameter (in the model's order): estimate and interval.
@@ -370,14 +369,9 @@ fn correlation(params: &[Param], v: &DMatrix<f64>) -> Correlation {
 
 /// The parameters not fitted, at the scene's values.
 fn fixed(coupling: &Coupling, params: &[Param]) -> BTreeMap<String, f64> {
-    [
-        Param::Spread,
-        Param::MuStatic,
-        Param::DynamicRatio,
-        Param::SupportCompliance,
-    ]
-    .into_iter()
-    .filter(|p| !params.contains(p))
-    .map(|p| (p.name().to_string(), p.value(coupling)))
-    .collect()
+    Param::ALL
+        .into_iter()
+        .filter(|p| !params.contains(p))
+        .map(|p| (p.name().to_string(), p.value(coupling)))
+        .collect()
 }

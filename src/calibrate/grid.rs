@@ -90,9 +90,8 @@ impl ModelGrid {
         })
     }
 
-    /// A grid of given node matrices (unit tests with a closed-form G).
-    #[cfg(test)]
-    pub(crate) fn from_parts(
+    /// A grid of given node matrices (a closed-form G, or G from another model).
+    pub fn from_parts(
         params: Vec<Param>,
         nodes: Vec<Vec<f64>>,
         g: Vec<DMatrix<f64>>,
@@ -174,24 +173,4 @@ pub fn weights(nodes: &[f64], v: f64) -> Vec<f64> {
         }
     }
     acc
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Catmull-Rom with quadratic end ghosts reproduces any quadratic
-    /// exactly, also in the end intervals; the weights sum to 1.
-    #[test]
-    fn weights_reproduce_quadratics() {
-        let nodes: Vec<f64> = (0..6).map(|i| 0.1 + 0.14 * i as f64).collect();
-        let f = |x: f64| 2.0 - 3.0 * x + 5.0 * x * x;
-        for v in [0.1, 0.13, 0.2, 0.5, 0.77, 0.8] {
-            let w = weights(&nodes, v);
-            let sum: f64 = w.iter().sum();
-            let interp: f64 = w.iter().zip(&nodes).map(|(w, &x)| w * f(x)).sum();
-            assert!((sum - 1.0).abs() < 1e-12);
-            assert!((interp - f(v)).abs() < 1e-12, "{v}: {interp} vs {}", f(v));
-        }
-    }
 }

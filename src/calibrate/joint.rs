@@ -23,6 +23,7 @@ use nalgebra::DMatrix;
 use super::grid::ModelGrid;
 use super::likelihood::{Observed, log_likelihood, model_covariance, wilks_threshold};
 use super::params::{Param, admissible};
+use crate::contact::quadrature::golden_max;
 
 /// Lower end of the searched spread relative to its upper end (the spread
 /// is searched on a log scale, from S_MIN_REL s_max to s_max).
@@ -145,7 +146,8 @@ impl<'a> JointModel<'a> {
 /// Maximise `f` over the unit box in the coordinates where `free` is true
 /// (the others stay at `start`), by Nelder-Mead with coordinates clamped to
 /// [0, 1] (Nelder & Mead 1965; reflection 1, expansion 2, contraction and
-/// shrink 1/2). Returns the point and its value.
+/// shrink 1/2); one free coordinate by golden section. Returns the point
+/// and its value.
 pub fn maximise(f: &dyn Fn(&[f64]) -> f64, start: &[f64], free: &[bool]) -> (Vec<f64>, f64) {
     let idx: Vec<usize> = (0..start.len()).filter(|&i| free[i]).collect();
     let n = idx.len();
@@ -159,6 +161,14 @@ pub fn maximise(f: &dyn Fn(&[f64]) -> f64, start: &[f64], free: &[bool]) -> (Vec
     let value = |y: &[f64]| f(&point(y));
     if n == 0 {
         return (start.to_vec(), f(start));
+    }
+    if n == 1 {
+        // One coordinate: golden section on the start's neighbourhood (the
+        // simplex's first step), to 1e-12 in u.
+        let y0 = start[idx[0]];
+        let (lo, hi) = ((y0 - 0.1).max(0.0), (y0 + 0.1).min(1.0));
+        let (y, v) = golden_max(|y| value(&[y]), lo, hi, 1e-12);
+        return (point(&[y]), v);
     }
     let y0: Vec<f64> = idx.iter().map(|&i| start[i]).collect();
     let mut simplex: Vec<(Vec<f64>, f64)> = vec![(y0.clone(), value(&y0))];

@@ -2,22 +2,20 @@
 //! per re-seating cycle, one column per measured DOF with its unit) or a
 //! summary file (one row per DOF: its sigma and the number of cycles).
 //! `#` lines carry metadata (`# key: value`); `# noise: x=1nm, ...` gives
-//! the sensor noise per DOF. Every other line is one CSV record (the `csv`
-//! crate: quoted fields, cells trimmed), separated by commas, semicolons or
-//! tabs: the delimiter is the one of the three the header line holds most
-//! of (commas on a tie or none), unless given.
+//! the sensor noise per DOF. Every other line is one CSV record, read by
+//! [`crate::delimited`] (delimiter detected from the header line unless given).
 
 use std::path::Path;
 
 use nalgebra::DMatrix;
 
 use super::error::CalibrateError;
-use super::units::{DOFS, dof_index, parse_column, parse_noise};
+use super::units::{dof_index, dof_name, example_header, parse_column, parse_noise};
+use crate::dof::Dof;
 
 /// Fewest re-seating cycles a measurement may have.
 pub const MIN_CYCLES: usize = 3;
 
-/// The measured values.
 #[derive(Debug, Clone, PartialEq)]
 pub enum MeasuredData {
     /// One row per cycle, one value per measured DOF [SI].
@@ -32,7 +30,7 @@ pub struct Measurement {
     pub file: String,
     /// The evaluation point (None: the scene's first).
     pub point: Option<String>,
-    /// Measured DOFs (indices into x, y, z, phi_x, phi_y, phi_z), file order.
+    /// Measured DOFs (indices into [`Dof::ALL`]), file order.
     pub dofs: Vec<usize>,
     pub data: MeasuredData,
     /// Sensor noise sigma per DOF from `# noise:` [SI].
@@ -55,38 +53,31 @@ impl Measurement {
 
     /// Parse the text of a measurement file named `file` (see [`Self::load`]).
     pub fn parse(text: &str, file: &str, delimiter: Option<u8>) -> Result<Self, CalibrateError> {
-        // A spreadsheet's byte-order mark is not part of the first header.
-        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+        let read = crate::delimited::read(text, delimiter);
         let mut noise = [None; 6];
         let mut metadata = Vec::new();
-        let mut lines = Vec::new();
-        for (i, raw) in text.lines().enumerate() {
-            let line = raw.trim();
-            if let Some(c) = line.strip_prefix('#') {
-                if let Some((k, v)) = c.split_once(':') {
-                    let (k, v) = (k.trim().to_lowercase(), v.trim().to_string());
-                    if k == "noise" {
-                        parse_noise(&v, &mut noise).map_err(|reason| CalibrateError::Noise {
-                            origin: format!("{file}: line {}: # noise", i + 1),
-                            reason,
-                        })?;
-                    }
-                    metadata.push((k, v));
+        for (line, c) in &read.comments {
+            if let Some((k, v)) = c.split_once(':') {
+                let (k, v) = (k.trim().to_lowercase(), v.trim().to_string());
+                if k == "noise" {
+                    parse_noise(&v, &mut noise).map_err(|reason| CalibrateError::Noise {
+                        origin: format!("{file}: line {line}: # noise"),
+                        reason,
+                    })?;
                 }
-            } else if !line.is_empty() {
-                lines.push((i + 1, raw));
+                metadata.push((k, v));
             }
         }
-        let Some(&(header_line, header)) = lines.first() else {
+        let Some(header) = read.records.first() else {
             return Err(CalibrateError::File {
                 file: file.into(),
                 line: text.lines().count().max(1),
-                reason: "no header line (e.g. `x_nm,y_nm,phi_x_nrad`)".into(),
+                reason: format!("no header line (e.g. `{}`)", example_header()),
             });
         };
-        let delimiter = delimiter.unwrap_or_else(|| detect_delimiter(header));
-        let records: Vec<(usize, Vec<String>)> = (lines.iter())
-            .map(|&(line, text)| (line, split(text, delimiter)))
+        let header_line = header.line;
+        let records: Vec<(usize, Vec<String>)> = (read.records.iter())
+            .map(|r| (r.line, r.cells.clone()))
             .collect();
         let names = records[0].1.clone();
         let base = Measurement {
@@ -120,7 +111,7 @@ impl Measurement {
             let (d, f) = parse_column(name)
                 .map_err(|r| self.err(header_line, c, name, with_hint(r.to_string(), name)))?;
             if self.dofs.contains(&d) {
-                let r = format!("{} measured twice", DOFS[d]);
+                let r = format!("{} measured twice", dof_name(d));
                 return Err(self.err(header_line, c, name, r));
             }
             self.dofs.push(d);
@@ -178,11 +169,11 @@ impl Measurement {
                 self.check_point(line, pc, &cells[pc])?;
             }
             let d = dof_index(&cells[cd]).ok_or_else(|| {
-                let r = format!("unknown DOF `{}` (one of {})", cells[cd], DOFS.join(", "));
+                let r = format!("unknown DOF `{}` (one of {})", cells[cd], Dof::names());
                 self.err(line, cd, "dof", r)
             })?;
             if self.dofs.contains(&d) {
-                return Err(self.err(line, cd, "dof", format!("{} given twice", DOFS[d])));
+                return Err(self.err(line, cd, "dof", format!("{} given twice", dof_name(d))));
             }
             let unit = cells[cu].as_str();
             if unit.is_empty() {
@@ -192,7 +183,7 @@ impl Measurement {
             let f = super::units::unit_factor(d, unit).ok_or_else(|| {
                 let r = format!(
                     "unit `{unit}` does not fit {} (use {})",
-                    DOFS[d],
+                    dof_name(d),
                     super::units::unit_names(d)
                 );
                 self.err(line, cu, "unit", r)
@@ -312,29 +303,6 @@ impl Measurement {
         };
         Some(super::model::covariance(rows))
     }
-}
-
-/// The delimiter a header line is separated by: the most frequent of comma,
-/// semicolon and tab (a comma on a tie or when there is none).
-pub fn detect_delimiter(header: &str) -> u8 {
-    let count = |d: u8| header.bytes().filter(|b| *b == d).count();
-    [b';', b'\t'].into_iter().fold(
-        b',',
-        |best, d| if count(d) > count(best) { d } else { best },
-    )
-}
-
-/// The cells of one line as a CSV record, trimmed. Reading a line of text
-/// cannot fail (no I/O, valid UTF-8, any number of fields).
-fn split(line: &str, delimiter: u8) -> Vec<String> {
-    let mut reader = csv::ReaderBuilder::new()
-        .delimiter(delimiter)
-        .has_headers(false)
-        .flexible(true)
-        .trim(csv::Trim::All)
-        .from_reader(line.as_bytes());
-    let record = reader.records().next().and_then(Result::ok);
-    record.map_or_else(Vec::new, |r| r.iter().map(str::to_string).collect())
 }
 
 /// `reason`, with a hint at `--delimiter` if `text` holds a delimiter other

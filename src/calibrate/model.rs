@@ -26,7 +26,6 @@ pub struct StudySpec<'a> {
     pub coupling: &'a Coupling,
     /// Index of the measured evaluation point.
     pub point: usize,
-    /// The measured DOFs.
     pub dofs: &'a [usize],
     pub samples: usize,
     pub seed: u64,
@@ -37,7 +36,7 @@ pub struct StudySpec<'a> {
 #[derive(Debug, Clone, PartialEq)]
 pub struct ModelStudy {
     pub spread: f64,
-    /// The pose samples of the point (x, y, z, phi_x, phi_y, phi_z) [SI].
+    /// The pose samples of the point (the six DOFs of [`crate::dof::Dof::ALL`]) [SI].
     pub rows: Vec<[f64; 6]>,
     pub fingerprint: Fingerprint,
 }
@@ -81,7 +80,6 @@ impl StudySpec<'_> {
 }
 
 impl ModelStudy {
-    /// The pose samples of the DOFs `dofs`.
     pub fn samples_of(&self, dofs: &[usize]) -> Vec<Vec<f64>> {
         self.rows
             .iter()

@@ -1,11 +1,10 @@
 //! Measured degrees of freedom and their units: the column names of a
-//! measurement file (`x_nm`, `phi_x_urad`, ...) and `--noise` values
-//! (`x=1nm`, `phi_x=20nrad`, or plain SI numbers).
+//! measurement file (`<dof>_<unit>`, e.g. `x_nm`) and `--noise` values
+//! (`<dof>=<value><unit>`, e.g. `x=1nm`, or plain SI numbers).
 
 use thiserror::Error;
 
-/// The six DOFs in output order (x, y, z, phi_x, phi_y, phi_z).
-pub const DOFS: [&str; 6] = ["x", "y", "z", "phi_x", "phi_y", "phi_z"];
+use crate::dof::Dof;
 
 /// Units of translations and their factor to metres.
 const LENGTH_UNITS: [(&str, f64); 4] = [("m", 1.0), ("mm", 1e-3), ("um", 1e-6), ("nm", 1e-9)];
@@ -13,46 +12,45 @@ const LENGTH_UNITS: [(&str, f64); 4] = [("m", 1.0), ("mm", 1e-3), ("um", 1e-6), 
 const ANGLE_UNITS: [(&str, f64); 4] =
     [("rad", 1.0), ("mrad", 1e-3), ("urad", 1e-6), ("nrad", 1e-9)];
 
+/// The name of DOF `dof` (an index into [`Dof::ALL`]).
+pub fn dof_name(dof: usize) -> &'static str {
+    Dof::ALL[dof].name()
+}
+
 /// Index (0..6) of a DOF name.
 pub fn dof_index(name: &str) -> Option<usize> {
-    DOFS.iter().position(|d| *d == name)
+    Dof::from_name(name).map(Dof::index)
 }
 
-/// True for the rotations phi_x, phi_y, phi_z.
-pub fn is_rotation(dof: usize) -> bool {
-    dof >= 3
+/// A measurement file's header, for messages (two translations, a rotation).
+pub fn example_header() -> String {
+    [Dof::X, Dof::Y, Dof::PhiX].map(Dof::key).join(",")
 }
 
-/// The SI unit of a DOF: "m" or "rad".
-pub fn si_unit(dof: usize) -> &'static str {
-    if is_rotation(dof) { "rad" } else { "m" }
-}
-
-/// The human unit of a DOF: "nm" or "nrad".
-pub fn human_unit(dof: usize) -> &'static str {
-    if is_rotation(dof) { "nrad" } else { "nm" }
+/// Two `--noise` values, for messages (a translation, a rotation).
+fn noise_example() -> String {
+    format!("{}=1nm or {}=20nrad", Dof::X.name(), Dof::PhiX.name())
 }
 
 /// The units a DOF accepts, as text for messages.
 pub fn unit_names(dof: usize) -> String {
-    units(dof)
-        .iter()
-        .map(|(u, _)| *u)
-        .collect::<Vec<_>>()
-        .join(", ")
+    units(dof).map(|(u, _)| u).join(", ")
 }
 
-fn units(dof: usize) -> &'static [(&'static str, f64)] {
-    if is_rotation(dof) {
-        &ANGLE_UNITS
+fn units(dof: usize) -> [(&'static str, f64); 4] {
+    if Dof::ALL[dof].is_rotation() {
+        ANGLE_UNITS
     } else {
-        &LENGTH_UNITS
+        LENGTH_UNITS
     }
 }
 
 /// Factor from `unit` to SI for this DOF, or None if the unit does not fit it.
 pub fn unit_factor(dof: usize, unit: &str) -> Option<f64> {
-    units(dof).iter().find(|(u, _)| *u == unit).map(|(_, f)| *f)
+    units(dof)
+        .into_iter()
+        .find(|(u, _)| *u == unit)
+        .map(|(_, f)| f)
 }
 
 /// Why a column header, a value or a `--noise` entry was not understood.
@@ -62,7 +60,7 @@ pub enum UnitError {
     #[error("`{header}` has no unit: write {}", with_units(header, *dof))]
     NoUnit { header: String, dof: usize },
     /// A column header whose unit does not fit its DOF (`z_nrad`).
-    #[error("`{header}`: unit `{unit}` does not fit {} (use {})", DOFS[*dof], unit_names(*dof))]
+    #[error("`{header}`: unit `{unit}` does not fit {} (use {})", dof_name(*dof), unit_names(*dof))]
     ColumnUnit {
         header: String,
         unit: String,
@@ -71,37 +69,32 @@ pub enum UnitError {
     /// A column header that names no DOF.
     #[error(
         "`{header}`: unknown DOF (columns are <dof>_<unit> with dof one of {} and a unit such as nm or nrad, or `point`)",
-        DOFS.join(", ")
+        Dof::names()
     )]
     UnknownColumn { header: String },
     /// A value whose unit does not fit its DOF (`1 nrad` for x).
-    #[error("`{text}`: unit `{unit}` does not fit {} (use {})", DOFS[*dof], unit_names(*dof))]
+    #[error("`{text}`: unit `{unit}` does not fit {} (use {})", dof_name(*dof), unit_names(*dof))]
     ValueUnit {
         text: String,
         unit: String,
         dof: usize,
     },
-    /// A value that is not a number.
     #[error("`{text}` is not a number (with an optional unit)")]
     NotANumber { text: String },
     /// A value that is negative, infinite or NaN.
     #[error("`{text}`: need a finite value >= 0")]
     OutOfRange { text: String },
     /// A `--noise` entry without `=`.
-    #[error("`{entry}`: write DOF=VALUE, e.g. x=1nm or phi_x=20nrad")]
+    #[error("`{entry}`: write DOF=VALUE, e.g. {}", noise_example())]
     NoiseSyntax { entry: String },
     /// A `--noise` entry naming no DOF.
-    #[error("`{entry}`: unknown DOF `{name}` (one of {})", DOFS.join(", "))]
+    #[error("`{entry}`: unknown DOF `{name}` (one of {})", Dof::names())]
     NoiseDof { entry: String, name: String },
 }
 
 /// `header_m, header_mm, ...`: the column names a bare DOF header could be.
 fn with_units(header: &str, dof: usize) -> String {
-    units(dof)
-        .iter()
-        .map(|(u, _)| format!("{header}_{u}"))
-        .collect::<Vec<_>>()
-        .join(", ")
+    units(dof).map(|(u, _)| format!("{header}_{u}")).join(", ")
 }
 
 /// A column header `<dof>_<unit>`: the DOF index and the factor to SI, or
@@ -115,7 +108,7 @@ pub fn parse_column(header: &str) -> Result<(usize, f64), UnitError> {
     }
     // The DOF is the longest known prefix followed by `_`.
     for d in [3, 4, 5, 0, 1, 2] {
-        let name = DOFS[d];
+        let name = dof_name(d);
         if let Some(unit) = header.strip_prefix(name).and_then(|r| r.strip_prefix('_')) {
             return unit_factor(d, unit)
                 .map(|f| (d, f))
@@ -171,7 +164,7 @@ fn is_exponent(t: &str, i: usize) -> bool {
 }
 
 /// Sensor noise per DOF from `DOF=VALUE,...` (SI numbers or with a unit
-/// suffix: `x=1nm,phi_x=20nrad`). Later entries override `into`'s.
+/// suffix, e.g. `x=1nm`). Later entries override `into`'s.
 pub fn parse_noise(text: &str, into: &mut [Option<f64>; 6]) -> Result<(), UnitError> {
     for entry in text.split(',').map(str::trim).filter(|e| !e.is_empty()) {
         let (name, value) = entry
@@ -186,52 +179,4 @@ pub fn parse_noise(text: &str, into: &mut [Option<f64>; 6]) -> Result<(), UnitEr
         into[d] = Some(parse_value(d, value)?);
     }
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn columns_and_values() {
-        assert_eq!(parse_column("phi_x_nrad").unwrap(), (3, 1e-9));
-        assert_eq!(parse_column("x_um").unwrap(), (0, 1e-6));
-        let e = parse_column("x").unwrap_err();
-        assert!(matches!(e, UnitError::NoUnit { dof: 0, .. }), "{e:?}");
-        assert_eq!(
-            e.to_string(),
-            "`x` has no unit: write x_m, x_mm, x_um, x_nm"
-        );
-        assert!(
-            parse_column("w_nm")
-                .unwrap_err()
-                .to_string()
-                .contains("unknown DOF")
-        );
-        let e = parse_column("z_nrad").unwrap_err();
-        assert_eq!(
-            e.to_string(),
-            "`z_nrad`: unit `nrad` does not fit z (use m, mm, um, nm)"
-        );
-        assert_eq!(parse_value(0, "1nm").unwrap(), 1e-9);
-        assert_eq!(parse_value(4, "20 nrad").unwrap(), 20e-9);
-        assert_eq!(parse_value(0, "1e-9").unwrap(), 1e-9);
-        assert!(matches!(
-            parse_value(0, "1 nrad"),
-            Err(UnitError::ValueUnit { dof: 0, .. })
-        ));
-        assert!(parse_value(0, "NaN").is_err());
-        assert!(matches!(
-            parse_value(0, "-1nm"),
-            Err(UnitError::OutOfRange { .. })
-        ));
-        let mut n = [None; 6];
-        parse_noise("x=1nm, phi_z=2e-8", &mut n).unwrap();
-        assert_eq!(n[0], Some(1e-9));
-        assert_eq!(n[5], Some(2e-8));
-        assert_eq!(
-            parse_noise("q=1nm", &mut n).unwrap_err().to_string(),
-            "`q=1nm`: unknown DOF `q` (one of x, y, z, phi_x, phi_y, phi_z)"
-        );
-    }
 }

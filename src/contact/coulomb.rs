@@ -46,7 +46,7 @@ use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, Ta
 /// elliptical one projects in its principal axes
 /// ([`PrincipalStiffness::project`]).
 #[inline]
-pub(super) fn update(
+pub fn update(
     old: &TangentialState,
     input: &TangentialInput,
     tangent: bool,
@@ -235,98 +235,4 @@ fn slide_tangent(
         };
     out.d_force_d_du = d_force_d_du;
     out.d_force_d_fn = d_force_d_fn;
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::contact::tangential_types::Friction;
-
-    /// The closed forms of a circular contact ([`Circle`]) against the
-    /// elliptical route with two equal principal values (K_t and dK_t/dF_n
-    /// as matrices, the projection in principal axes and its general
-    /// tangent), which `tests/contact_laws.rs` checks by finite
-    /// differences: force and both tangents agree to rounding, about many
-    /// normals, sticking, sliding on and starting to slide, for the switch
-    /// and the decay law (whose dmu terms the closed form carries too).
-    #[test]
-    fn circular_closed_forms_are_the_elliptical_route() {
-        use rand::{Rng, SeedableRng};
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x9E37_79B9);
-        let mut next = move || rng.random_range(-0.5..0.5);
-        let close = |a: &[f64], b: &[f64], scale: f64| {
-            a.iter().zip(b).all(|(x, y)| (x - y).abs() <= 1e-12 * scale)
-        };
-        let (mut slips, mut sticks) = (0, 0);
-        for case in 0..600 {
-            let n = Vector3::new(next(), next(), next()).normalize();
-            let p = PrincipalStiffness::new([3e7, 3e7], &n, &Vector3::x());
-            let in_plane = |v: Vector3<f64>| v - n * n.dot(&v);
-            let e1 = in_plane(Vector3::x()).normalize();
-            let axes = PrincipalStiffness {
-                axes: Some([e1, n.cross(&e1)]),
-                ..p
-            };
-            let du = in_plane(Vector3::new(next(), next(), next()) * 4e-7);
-            let old = TangentialState {
-                force: in_plane(Vector3::new(next(), next(), next()) * 8.0),
-                sliding: case % 3 == 0,
-                slip_velocity: 1e-4 * next().abs(),
-                normal_force: 10.0,
-                ..TangentialState::new(n)
-            };
-            let law = if case % 2 == 0 {
-                FrictionLaw::Switch
-            } else {
-                FrictionLaw::Decay { coefficient: 1e4 }
-            };
-            let stiffness = p.tensor(&n);
-            let input = TangentialInput {
-                normal: n,
-                du,
-                normal_force: 10.0,
-                stiffness,
-                principal: p,
-                d_stiffness_d_fn: stiffness / 60.0,
-                contact_radius: 0.0,
-                g_star: 0.0,
-                mindlin_shape: Matrix3::zeros(),
-                friction: Friction {
-                    law,
-                    duration: 1e-3,
-                    ..Friction::switch(0.5, 0.4)
-                },
-            };
-            let mut got = TangentialResponse::open(n);
-            let mut want = TangentialResponse::open(n);
-            update(&old, &input, true, &mut got);
-            let elliptical = TangentialInput {
-                principal: axes,
-                ..input
-            };
-            update(&old, &elliptical, true, &mut want);
-            assert_eq!(got.slip, want.slip, "{case}");
-            let f = want.force.norm().max(1e-3);
-            assert!(
-                close(got.force.as_slice(), want.force.as_slice(), f),
-                "{case}"
-            );
-            let k = want.d_force_d_du.norm();
-            let (g, w) = (&got.d_force_d_du, &want.d_force_d_du);
-            assert!(close(g.as_slice(), w.as_slice(), k), "{case}: {g} {w}");
-            let (g, w) = (&got.d_force_d_fn, &want.d_force_d_fn);
-            assert!(
-                close(g.as_slice(), w.as_slice(), w.norm() + 1.0),
-                "{case}: {g} {w}"
-            );
-            let v = got.state.slip_velocity;
-            assert!((v - want.state.slip_velocity).abs() <= 1e-12 * v.abs().max(1e-9));
-            slips += usize::from(got.slip == SlipState::Slip);
-            sticks += usize::from(got.slip == SlipState::Stick);
-        }
-        assert!(
-            slips > 100 && sticks > 100,
-            "{slips} slips, {sticks} sticks"
-        );
-    }
 }

@@ -212,38 +212,34 @@ pub enum HistoryCsvError {
 }
 
 /// Parse a history CSV: the header `P_N,Qx_N,Qy_N`, then one row per step
-/// (P > 0 and Q finite, in N); blank lines and lines starting with `#` are
-/// skipped. Errors name `file`, the line and the column.
+/// (P > 0 and Q finite, in N), read by [`crate::delimited`] (comma,
+/// semicolon or tab, quoted fields, a byte-order mark, blank and `#` lines
+/// skipped). Errors name `file`, the line and the column.
 pub fn parse_history_csv(text: &str, file: &str) -> Result<Vec<HistoryRow>, HistoryCsvError> {
     let file = || file.to_string();
-    let mut lines = text
-        .lines()
-        .enumerate()
-        .map(|(i, l)| (i + 1, l.trim()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
-    let Some((hline, header)) = lines.next() else {
+    let records = crate::delimited::read(text, None).records;
+    let Some((header, rows)) = records.split_first() else {
         return Err(HistoryCsvError::Empty { file: file() });
     };
-    let cols: Vec<&str> = header.split(',').map(str::trim).collect();
-    if cols != HISTORY_HEADER {
+    if header.cells != HISTORY_HEADER {
         return Err(HistoryCsvError::Header {
             file: file(),
-            line: hline,
-            header: header.to_string(),
+            line: header.line,
+            header: header.text.clone(),
         });
     }
-    let mut rows = Vec::new();
-    for (line, l) in lines {
-        let fields: Vec<&str> = l.split(',').map(str::trim).collect();
-        if fields.len() != 3 {
+    let mut out = Vec::new();
+    for r in rows {
+        let line = r.line;
+        if r.cells.len() != 3 {
             return Err(HistoryCsvError::FieldCount {
                 file: file(),
                 line,
-                count: fields.len(),
+                count: r.cells.len(),
             });
         }
         let mut v = [0.0; 3];
-        for (k, f) in fields.iter().enumerate() {
+        for (k, f) in r.cells.iter().enumerate() {
             v[k] = f
                 .parse::<f64>()
                 .ok()
@@ -262,7 +258,7 @@ pub fn parse_history_csv(text: &str, file: &str) -> Result<Vec<HistoryRow>, Hist
                 value: v[0],
             });
         }
-        rows.push(HistoryRow {
+        out.push(HistoryRow {
             line,
             load: LoadStep {
                 normal_force: v[0],
@@ -270,8 +266,8 @@ pub fn parse_history_csv(text: &str, file: &str) -> Result<Vec<HistoryRow>, Hist
             },
         });
     }
-    if rows.is_empty() {
+    if out.is_empty() {
         return Err(HistoryCsvError::NoRows { file: file() });
     }
-    Ok(rows)
+    Ok(out)
 }

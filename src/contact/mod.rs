@@ -12,8 +12,6 @@
 //! | sphere-sphere | (R1, R1) | (R2, R2) | 1/R = 1/R1 + 1/R2 |
 //! | sphere-seat (R2 > R1) | (R1, R1) | (-R2, -R2) | 1/R = 1/R1 - 1/R2 |
 //! | sphere-cylinder | (R1, R1) | (R2, inf) | 1/Rx = 1/R1 + 1/R2, Ry = R1 (along the pin) |
-//! | sphere-arch (R2 > R1) | (R1, R1) | (-R2, inf) | 1/Ry = 1/R1 - 1/R2 (across), Rx = R1 (along) |
-//! | crossed-cylinders | (R1, inf) | (R2, inf) at 90 deg | R1 and R2 |
 
 pub mod coulomb;
 pub mod curvature;
@@ -51,23 +49,17 @@ pub enum ContactShape {
     SphereSphere,
     SphereSeat,
     SphereCylinder,
-    /// A ball in a concave cylinder (a gothic-arch flank).
-    SphereArch,
-    /// A pin on the moving half across a fixed pin.
-    CrossedCylinders,
     /// Two bodies given by their principal radii (`contact --radii1 --radii2`).
     General,
 }
 
 impl ContactShape {
     /// The shapes given by two radii (`contact --shape`).
-    pub const ALL: [ContactShape; 6] = [
+    pub const ALL: [ContactShape; 4] = [
         ContactShape::SpherePlane,
         ContactShape::SphereSphere,
         ContactShape::SphereSeat,
         ContactShape::SphereCylinder,
-        ContactShape::SphereArch,
-        ContactShape::CrossedCylinders,
     ];
 
     /// Kebab-case name, as in scene files and on the command line.
@@ -77,8 +69,6 @@ impl ContactShape {
             ContactShape::SphereSphere => "sphere-sphere",
             ContactShape::SphereSeat => "sphere-seat",
             ContactShape::SphereCylinder => "sphere-cylinder",
-            ContactShape::SphereArch => "sphere-arch",
-            ContactShape::CrossedCylinders => "crossed-cylinders",
             ContactShape::General => "general",
         }
     }
@@ -105,19 +95,11 @@ impl ContactShape {
         };
         Ok(match self {
             ContactShape::SpherePlane | ContactShape::SphereSphere => pair([r1; 2], [r2; 2], 0.0),
-            ContactShape::SphereSeat | ContactShape::SphereArch if r2 <= r1 => {
-                return Err(ContactError::SeatTooSmall {
-                    shape: self.name(),
-                    r1,
-                    r2,
-                });
+            ContactShape::SphereSeat if r2 <= r1 => {
+                return Err(ContactError::SeatTooSmall { r1, r2 });
             }
             ContactShape::SphereSeat => pair([r1; 2], [-r2; 2], 0.0),
             ContactShape::SphereCylinder => pair([r1; 2], [r2, inf], 0.0),
-            ContactShape::SphereArch => pair([r1; 2], [-r2, inf], 0.0),
-            ContactShape::CrossedCylinders => {
-                pair([r1, inf], [r2, inf], std::f64::consts::FRAC_PI_2)
-            }
             ContactShape::General => return Err(ContactError::GeneralNeedsRadii),
         })
     }
@@ -143,7 +125,6 @@ fn shape_names() -> String {
     names.join(", ")
 }
 
-/// Bad contact input.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ContactError {
     #[error("{field} = {value} m is invalid: a radius must be a positive, finite length")]
@@ -155,16 +136,14 @@ pub enum ContactError {
     #[error("{shape} needs radius2 (the radius of the fixed element)")]
     MissingRadius2 { shape: &'static str },
     #[error(
-        "{shape} needs a concave radius radius2 = {r2} m larger than the ball radius radius1 = {r1} m (the ball must fit in the seat or groove)"
+        "sphere-seat needs a seat radius radius2 = {r2} m larger than the ball radius radius1 = {r1} m"
     )]
-    SeatTooSmall {
-        shape: &'static str,
-        r1: f64,
-        r2: f64,
-    },
+    SeatTooSmall { r1: f64, r2: f64 },
     #[error("the general contact needs the principal radii of both bodies (--radii1, --radii2)")]
     GeneralNeedsRadii,
-    #[error("angle = {0} rad is invalid: the angle between the principal directions must be finite")]
+    #[error(
+        "angle = {0} rad is invalid: the angle between the principal directions must be finite"
+    )]
     BadAngle(f64),
     #[error(
         "not a point contact: the smaller relative curvature A = {a:.6e} 1/m (B = {b:.6e} 1/m) must be positive \

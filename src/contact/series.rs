@@ -40,12 +40,7 @@ impl SeriesNormal {
 
     /// Total approach delta(F) = (F/K)^(2/3) + c F for a load F >= 0.
     pub fn approach(&self, load: f64) -> f64 {
-        self.hertz_approach(load) + self.support_approach(load)
-    }
-
-    /// The Hertz part (F/K)^(2/3) of the approach.
-    pub fn hertz_approach(&self, load: f64) -> f64 {
-        self.hertz.approach(load)
+        self.hertz.approach(load) + self.support_approach(load)
     }
 
     /// The support part c F of the approach.
@@ -102,7 +97,7 @@ impl SeriesNormal {
         if f <= 0.0 {
             return 0.0;
         }
-        let dh = self.hertz_approach(f);
+        let dh = self.hertz.approach(f);
         0.4 * self.hertz.hertz_constant * dh * dh * dh.sqrt() + 0.5 * self.compliance * f * f
     }
 }

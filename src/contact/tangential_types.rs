@@ -105,6 +105,16 @@ pub enum SlipState {
     Slip,
 }
 
+impl SlipState {
+    /// `stick` or `slip`, as in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            SlipState::Stick => "stick",
+            SlipState::Slip => "slip",
+        }
+    }
+}
+
 /// The tangential history of one contact, owned by the solver and passed
 /// in to each update. All vectors lie in the tangent plane of `normal`.
 ///

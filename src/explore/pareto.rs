@@ -19,7 +19,7 @@ pub struct Objectives {
 }
 
 impl Objectives {
-    fn values(&self, with_safety: bool) -> Vec<f64> {
+    pub fn values(&self, with_safety: bool) -> Vec<f64> {
         let mut v = vec![-self.sigma_max, self.stiffness_min];
         if with_safety {
             v.push(self.safety_factor.unwrap_or(f64::NEG_INFINITY));
@@ -48,53 +48,4 @@ pub fn front(designs: &[Option<Objectives>]) -> Vec<bool> {
             Some(a) => !vals.iter().flatten().any(|b| dominates(b, a)),
         })
         .collect()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn o(s: f64, k: f64, sf: f64) -> Option<Objectives> {
-        Some(Objectives {
-            sigma_max: s,
-            stiffness_min: k,
-            safety_factor: Some(sf),
-        })
-    }
-
-    #[test]
-    fn a_hand_checked_front() {
-        // 0: best sigma; 1: dominated by 0 (worse sigma, same k and SF);
-        // 2: best stiffness; 3: equal to 0 on all (neither dominates);
-        // 4: not evaluated.
-        let d = [
-            o(1.0, 5.0, 2.0),
-            o(2.0, 5.0, 2.0),
-            o(3.0, 9.0, 1.0),
-            o(1.0, 5.0, 2.0),
-            None,
-        ];
-        assert_eq!(front(&d), vec![true, false, true, true, false]);
-    }
-
-    #[test]
-    fn every_dominated_design_is_beaten_by_one_on_the_front() {
-        // A deterministic cloud of designs (a Weyl sequence).
-        let d: Vec<_> = (0..60)
-            .map(|i| {
-                let f = |a: f64| (i as f64 * a).fract();
-                o(f(0.618), f(0.414), f(0.732))
-            })
-            .collect();
-        let on = front(&d);
-        let v: Vec<Vec<f64>> = d.iter().map(|x| x.unwrap().values(true)).collect();
-        for (i, a) in v.iter().enumerate() {
-            if on[i] {
-                assert!(!v.iter().any(|b| dominates(b, a)));
-            } else {
-                assert!(v.iter().zip(&on).any(|(b, f)| *f && dominates(b, a)));
-            }
-        }
-        assert!(on.iter().any(|x| *x) && on.iter().any(|x| !*x));
-    }
 }

@@ -41,16 +41,12 @@ pub struct ContactModel {
 /// Converged contact state at one load.
 #[derive(Debug, Clone)]
 pub struct ContactState {
-    /// Total (full-model) load, N.
-    pub load: f64,
     /// Indenter approach `δ`, m.
     pub approach: f64,
     /// Downward nodal contact forces on the candidates (quarter model), N.
     pub forces: Vec<f64>,
     /// Gaps at the candidates, m.
     pub gaps: Vec<f64>,
-    /// Active-set iterations used.
-    pub iterations: usize,
 }
 
 impl ContactModel {
@@ -100,11 +96,9 @@ impl ContactModel {
                 }
                 self.check_zone(load, delta, &forces, &active, tol_g)?;
                 return Ok(ContactState {
-                    load,
                     approach: delta,
                     forces,
                     gaps,
-                    iterations: it,
                 });
             }
             active = new;

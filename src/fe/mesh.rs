@@ -15,7 +15,6 @@ use crate::fe::FeError;
 pub struct HexMesh {
     /// Element order: 1 (8-node) or 2 (27-node).
     pub order: usize,
-    /// Node coordinates.
     pub nodes: Vec<[f64; 3]>,
     /// Node-grid dimensions.
     pub dims: [usize; 3],
@@ -91,11 +90,7 @@ impl HexMesh {
                 return Err(FeError::InvalidInput("edges must ascend".into()));
             }
         }
-        let (ax, ay, az) = (
-            axis_nodes(xe, order),
-            axis_nodes(ye, order),
-            axis_nodes(ze, order),
-        );
+        let [ax, ay, az] = [xe, ye, ze].map(|e| axis_nodes(e, order));
         let dims = [ax.len(), ay.len(), az.len()];
         let mut nodes = Vec::with_capacity(dims[0] * dims[1] * dims[2]);
         for &z in &az {
@@ -120,7 +115,6 @@ impl HexMesh {
         i + self.dims[0] * (j + self.dims[1] * k)
     }
 
-    /// Number of elements.
     pub fn n_elements(&self) -> usize {
         self.elem_dims.iter().product()
     }
@@ -249,35 +243,8 @@ impl HexMesh {
             w
         };
         let (wx, wy) = (w1(&self.edges[0]), w1(&self.edges[1]));
-        let mut out = Vec::with_capacity(wx.len() * wy.len());
-        for y in &wy {
-            for x in &wx {
-                out.push(x * y);
-            }
-        }
-        out
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn graded_edges_reach_total_and_grow() {
-        let e = graded_edges(0.1, 5, 1.5, 10.0).unwrap();
-        assert!((e[5] - 0.5).abs() < 1e-12);
-        assert_eq!(*e.last().unwrap(), 10.0);
-        let s: Vec<f64> = e.windows(2).map(|w| w[1] - w[0]).collect();
-        assert!(s[5..].windows(2).all(|w| w[1] > w[0]));
-    }
-
-    #[test]
-    fn structured_counts() {
-        let m = HexMesh::structured(2, &[0.0, 1.0, 2.0], &[0.0, 1.0], &[-1.0, 0.0]).unwrap();
-        assert_eq!(m.dims, [5, 3, 3]);
-        assert_eq!(m.n_elements(), 2);
-        let a: f64 = m.top_tributary_areas().iter().sum();
-        assert!((a - 2.0).abs() < 1e-12);
+        wy.iter()
+            .flat_map(|y| wx.iter().map(move |x| x * y))
+            .collect()
     }
 }

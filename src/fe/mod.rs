@@ -21,11 +21,10 @@ pub mod hertz_ref;
 pub mod mesh;
 pub mod pairs;
 pub mod system;
-#[cfg(test)]
-mod system_tests;
 pub mod validate;
 
 pub use hertz_ref::{HertzSolution, hertz};
+pub use validate::{convergence_study, solve_case};
 
 /// Errors of the FE contact solver.
 #[derive(Debug, thiserror::Error)]
@@ -58,24 +57,6 @@ pub struct FeCase {
     pub e_star: f64,
     /// Normal load (N).
     pub load: f64,
-}
-
-impl FeCase {
-    fn check(&self) -> Result<(), FeError> {
-        for (n, v) in [
-            ("rx", self.rx),
-            ("ry", self.ry),
-            ("e_star", self.e_star),
-            ("load", self.load),
-        ] {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(FeError::InvalidInput(format!(
-                    "{n} must be finite and positive, got {v}"
-                )));
-            }
-        }
-        Ok(())
-    }
 }
 
 /// Mesh and model options.
@@ -165,11 +146,6 @@ pub struct FeResult {
     pub seconds: f64,
 }
 
-/// Solves one contact case.
-pub fn solve_case(case: &FeCase, mesh: &MeshOptions) -> Result<FeResult, FeError> {
-    validate::run_case(case, mesh)
-}
-
 /// One level of a mesh-convergence study. Errors are signed, `FE/Hertz - 1`.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ConvergenceRow {
@@ -185,9 +161,4 @@ pub struct ConvergenceRow {
     pub semi_axis_error_rel: [f64; 2],
     /// Solve time (s).
     pub seconds: f64,
-}
-
-/// Mesh-convergence study over relative element sizes `levels`.
-pub fn convergence_study(case: &FeCase, levels: &[f64]) -> Result<Vec<ConvergenceRow>, FeError> {
-    validate::run_convergence(case, levels)
 }

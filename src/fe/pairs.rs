@@ -16,7 +16,6 @@ pub struct PairCase {
     pub pair: ContactPair,
     /// Largest normal force of this pair in the nominal seatings [N].
     pub load: f64,
-    /// Scenes it occurs in.
     pub scenes: Vec<String>,
 }
 
@@ -95,11 +94,6 @@ pub fn validate_pair(
     let fe = solve_case(&fe_case, mesh)?;
     let hz = hertz(rx, ry, law.hertz.e_star, case.load)?;
     let rel = |a: f64, b: f64| a / b - 1.0;
-    let convergence = if levels.is_empty() {
-        Vec::new()
-    } else {
-        convergence_study(&fe_case, levels)?
-    };
     Ok(PairValidation {
         shape: case.pair.shape,
         radii_m: {
@@ -117,16 +111,13 @@ pub fn validate_pair(
         approach_error_rel: rel(fe.approach, hz.approach),
         fe_semi_axes_m: fe.semi_axes,
         hertz_semi_axes_m: hz.semi_axes,
-        semi_axes_error_rel: [
-            rel(fe.semi_axes[0], hz.semi_axes[0]),
-            rel(fe.semi_axes[1], hz.semi_axes[1]),
-        ],
+        semi_axes_error_rel: [0, 1].map(|k| rel(fe.semi_axes[k], hz.semi_axes[k])),
         fe_peak_pressure_pa: fe.peak_pressure,
         hertz_peak_pressure_pa: hz.peak_pressure,
         fe_curve: fe.curve,
         element_size_m: fe.element_size,
         dofs: fe.dofs,
         seconds: fe.seconds,
-        convergence,
+        convergence: convergence_study(&fe_case, levels)?,
     })
 }

@@ -8,21 +8,20 @@ use crate::fe::elasticity::Material;
 use crate::fe::hertz_ref::hertz;
 use crate::fe::mesh::{HexMesh, graded_edges};
 use crate::fe::system::{Factor, FreeSystem, assemble};
-use crate::fe::{FeCase, FeError, FeResult, MeshOptions, boussinesq};
+use crate::fe::{ConvergenceRow, FeCase, FeError, FeResult, MeshOptions, boussinesq};
 use faer::Mat;
 use std::time::Instant;
 
 /// Number of right-hand sides solved at once when building the compliance matrix.
 const BATCH: usize = 48;
 
-/// Solves one contact case with the FE model (see [`crate::fe::solve_case`]):
-/// mesh, boundary conditions, contact candidates, their compliance, the
-/// force-approach curve, and the outputs at the target load.
-pub fn run_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError> {
+/// Solves one contact case with the FE model: mesh, boundary conditions,
+/// contact candidates, their compliance, the force-approach curve, and the
+/// outputs at the target load. The case is checked by [`hertz`].
+pub fn solve_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError> {
     let t0 = Instant::now();
-    case.check()?;
-    opt.check()?;
     let hz = hertz(case.rx, case.ry, case.e_star, case.load)?;
+    opt.check()?;
     let [ax, ay] = hz.semi_axes;
     let nu = opt.poisson;
     // Rigid indenter, frictionless: only E/(1-ν²) = E* enters the normal problem.
@@ -85,17 +84,11 @@ pub fn boundary_conditions(
                 if i == nx - 1 || j == ny - 1 || k == 0 {
                     let u = boussinesq::displacement(1.0, mat.e, mat.nu, mesh.nodes[a])
                         .ok_or(FeError::InvalidInput("Boussinesq at origin".into()))?;
-                    for c in 0..3 {
-                        fixed[3 * a + c] = true;
-                        vals[3 * a + c] = u[c];
-                    }
+                    fixed[3 * a..3 * a + 3].fill(true);
+                    vals[3 * a..3 * a + 3].copy_from_slice(&u);
                 } else {
-                    if i == 0 {
-                        fixed[3 * a] = true;
-                    }
-                    if j == 0 {
-                        fixed[3 * a + 1] = true;
-                    }
+                    fixed[3 * a] = i == 0;
+                    fixed[3 * a + 1] = j == 0;
                 }
             }
         }
@@ -131,15 +124,8 @@ impl<'a> TopNodes<'a> {
             other: Vec::new(),
         };
         let [nx, ny, _] = mesh.dims;
-        for j in 0..ny {
-            for i in 0..nx {
-                if t.is_cand(i, j) {
-                    t.cand.push((i, j));
-                } else {
-                    t.other.push((i, j));
-                }
-            }
-        }
+        let nodes = (0..ny).flat_map(|j| (0..nx).map(move |i| (i, j)));
+        (t.cand, t.other) = nodes.partition(|&(i, j)| t.is_cand(i, j));
         t
     }
 
@@ -181,10 +167,7 @@ fn contact_model(case: &FeCase, top: &TopNodes, fac: &Factor, vals: &[f64]) -> C
         let e = top.zeq(i, j);
         if e == usize::MAX { 0.0 } else { sol[(e, col)] }
     };
-    let mut ub = Mat::<f64>::zeros(sys.n_eq, 1);
-    for e in 0..sys.n_eq {
-        ub[(e, 0)] = sys.rhs_fixed[e];
-    }
+    let mut ub = Mat::<f64>::from_fn(sys.n_eq, 1, |e, _| sys.rhs_fixed[e]);
     fac.solve_in_place(ub.as_mut());
     let w_b = |i: usize, j: usize| {
         let e = top.zeq(i, j);
@@ -292,77 +275,27 @@ fn outputs(top: &TopNodes, st: &ContactState) -> Result<([f64; 2], f64, f64), Fe
     Ok((semi_axes, peak_pressure, min_pressure))
 }
 
-/// Mesh-convergence study: runs [`run_case`] at each relative element size in
-/// `levels` (element size at the contact / Hertz semi-axis) with otherwise default
-/// options, and reports the relative errors against Hertz.
-pub fn run_convergence(
-    case: &FeCase,
-    levels: &[f64],
-) -> Result<Vec<crate::fe::ConvergenceRow>, FeError> {
-    run_convergence_with(case, levels, &MeshOptions::default())
-}
-
-/// As [`run_convergence`], with the other mesh options taken from `base`.
-pub fn run_convergence_with(
-    case: &FeCase,
-    levels: &[f64],
-    base: &MeshOptions,
-) -> Result<Vec<crate::fe::ConvergenceRow>, FeError> {
+/// Mesh-convergence study: [`solve_case`] at each relative element size in
+/// `levels` (element size at the contact / Hertz semi-axis) with otherwise
+/// default options, and the relative errors against Hertz.
+pub fn convergence_study(case: &FeCase, levels: &[f64]) -> Result<Vec<ConvergenceRow>, FeError> {
     let hz = hertz(case.rx, case.ry, case.e_star, case.load)?;
     levels
         .iter()
         .map(|&rel| {
             let opt = MeshOptions {
                 element_size_rel: rel,
-                ..*base
+                ..Default::default()
             };
-            let r = run_case(case, &opt)?;
-            Ok(crate::fe::ConvergenceRow {
+            let r = solve_case(case, &opt)?;
+            Ok(ConvergenceRow {
                 element_size: r.element_size,
                 element_size_over_a: rel,
                 dofs: r.dofs,
                 approach_error_rel: r.approach / hz.approach - 1.0,
-                semi_axis_error_rel: [
-                    r.semi_axes[0] / hz.semi_axes[0] - 1.0,
-                    r.semi_axes[1] / hz.semi_axes[1] - 1.0,
-                ],
+                semi_axis_error_rel: [0, 1].map(|k| r.semi_axes[k] / hz.semi_axes[k] - 1.0),
                 seconds: r.seconds,
             })
         })
         .collect()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Rollers on x = 0 and y = 0 fix one DOF each; the far faces (x, y
-    /// maximal, the bottom) fix all three. Counted on a 3 x 4 x 3 node grid
-    /// from the grid alone: (nx-1)(ny-1)(nz-1) nodes lie off the far faces,
-    /// of which (ny-1)(nz-1) have x = 0 and (nx-1)(nz-1) have y = 0 (the
-    /// z axis node counts in both).
-    #[test]
-    fn boundary_conditions_fix_rollers_and_far_faces() {
-        let mesh = HexMesh::structured(
-            1,
-            &[0.0, 1.0, 2.0],
-            &[0.0, 1.0, 2.0, 3.0],
-            &[-2.0, -1.0, 0.0],
-        )
-        .unwrap();
-        let [nx, ny, nz] = mesh.dims;
-        assert_eq!([nx, ny, nz], [3, 4, 3]);
-        let mat = Material { e: 2e11, nu: 0.3 };
-        let (fixed, vals) = boundary_conditions(&mesh, &mat).unwrap();
-        let inner = (nx - 1) * (ny - 1) * (nz - 1);
-        let far = nx * ny * nz - inner;
-        let rollers = (ny - 1) * (nz - 1) + (nx - 1) * (nz - 1);
-        assert_eq!(fixed.iter().filter(|&&f| f).count(), 3 * far + rollers);
-        // A roller is held at zero; the far field moves (Boussinesq: the
-        // surface sinks under a downward load, u_z < 0 on the top face).
-        let roller = mesh.node_index(0, 1, nz - 1);
-        assert!(fixed[3 * roller] && !fixed[3 * roller + 1] && vals[3 * roller] == 0.0);
-        let far_top = mesh.node_index(nx - 1, 0, nz - 1);
-        assert!(fixed[3 * far_top + 2] && vals[3 * far_top + 2] < 0.0);
-    }
 }

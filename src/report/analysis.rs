@@ -3,6 +3,9 @@
 
 use std::fmt::Write;
 
+use crate::report::run::{pose_cells, pose_table};
+use crate::report::table::{Table, cells};
+
 use nalgebra::Vector3;
 use serde::Serialize;
 
@@ -64,13 +67,7 @@ pub struct StiffnessReport {
 }
 
 fn rows(m: &nalgebra::Matrix6<f64>) -> [[f64; 6]; 6] {
-    let mut out = [[0.0; 6]; 6];
-    for (r, row) in out.iter_mut().enumerate() {
-        for (c, v) in row.iter_mut().enumerate() {
-            *v = m[(r, c)];
-        }
-    }
-    out
+    std::array::from_fn(|r| std::array::from_fn(|c| m[(r, c)]))
 }
 
 impl StiffnessReport {
@@ -136,28 +133,20 @@ impl StiffnessReport {
             mu.join(", ")
         );
         let _ = writeln!(s);
-        let _ = writeln!(
-            s,
-            "{:>2} {:>10} {:>14} {:>14}",
-            "#", "F_n [N]", "k_n [N/um]", "k_t [N/um]"
-        );
+        let mut t = Table::new(">#; >F_n [N]:.5; >k_n [N/um]:.4; >k_t [N/um]:.4");
         for (i, c) in self.contacts.iter().enumerate() {
-            let _ = writeln!(
-                s,
-                "{:>2} {:>10.5} {:>14.4} {:>14.4}",
+            t.row(cells![
                 i + 1,
                 c.normal_force_n,
                 c.normal_stiffness_n_per_m * 1e-6,
-                c.tangential_stiffness_n_per_m * 1e-6
-            );
+                c.tangential_stiffness_n_per_m * 1e-6,
+            ]);
         }
+        s += &t.text();
         for p in &self.points {
             let _ = writeln!(s);
-            let _ = writeln!(
-                s,
-                "point {} at ({:.4}, {:.4}, {:.4}) m",
-                p.name, p.position_m[0], p.position_m[1], p.position_m[2]
-            );
+            let [x, y, z] = p.position_m;
+            let _ = writeln!(s, "point {} at ({x:.4}, {y:.4}, {z:.4}) m", p.name);
             let _ = writeln!(
                 s,
                 "  stiffness matrix (u [m], phi [rad]) -> (F [N], M [N m]), SI:"
@@ -180,14 +169,8 @@ impl StiffnessReport {
             ] {
                 let _ = writeln!(s, "  {title}");
                 for r in rows {
-                    let _ = writeln!(
-                        s,
-                        "    {:>12.4} {unit} ({:>7.4}, {:>7.4}, {:>7.4})",
-                        r.stiffness * 1e-6,
-                        r.direction[0],
-                        r.direction[1],
-                        r.direction[2]
-                    );
+                    let ([x, y, z], k) = (r.direction, r.stiffness * 1e-6);
+                    let _ = writeln!(s, "    {k:>12.4} {unit} ({x:>7.4}, {y:>7.4}, {z:>7.4})");
                 }
             }
         }
@@ -288,21 +271,11 @@ impl LoadReport {
     fn header(&self, s: &mut String) {
         let _ = writeln!(s, "{}  ({})", self.scene, self.name);
         let mu: Vec<String> = self.mu_static.iter().map(|m| format!("{m:.4}")).collect();
-        let f = self.force_n;
-        let p = self.point_m;
-        let m = self.moment_n_m;
+        let [f, p, m] = [self.force_n, self.point_m, self.moment_n_m]
+            .map(|[x, y, z]| format!("({x}, {y}, {z})"));
         let _ = writeln!(
             s,
-            "load after seating (preload held): F = ({}, {}, {}) N at ({}, {}, {}) m, M = ({}, {}, {}) N m; mu_s = [{}]",
-            f[0],
-            f[1],
-            f[2],
-            p[0],
-            p[1],
-            p[2],
-            m[0],
-            m[1],
-            m[2],
+            "load after seating (preload held): F = {f} N at {p} m, M = {m} N m; mu_s = [{}]",
             mu.join(", ")
         );
         if self.factor_reached < 1.0 {
@@ -320,82 +293,54 @@ impl LoadReport {
 
     /// The deflection of each point [nm, nrad].
     fn deflections(&self, s: &mut String) {
-        let _ = writeln!(
-            s,
-            "{:<16} {:>10} {:>10} {:>10} {:>11} {:>11} {:>11}",
-            "deflection", "x [nm]", "y [nm]", "z [nm]", "phi_x[nrad]", "phi_y[nrad]", "phi_z[nrad]"
-        );
+        let mut t = pose_table("<deflection", "");
         for q in &self.points {
-            let d = &q.deflection;
-            let _ = writeln!(
-                s,
-                "{:<16} {:>10.4} {:>10.4} {:>10.4} {:>11.3} {:>11.3} {:>11.3}",
-                q.name,
-                d.x_m * 1e9,
-                d.y_m * 1e9,
-                d.z_m * 1e9,
-                d.phi_x_rad * 1e9,
-                d.phi_y_rad * 1e9,
-                d.phi_z_rad * 1e9
-            );
+            t.row(pose_cells(cells![&q.name], &q.deflection));
         }
+        *s += &t.text();
     }
 
     /// Each contact before and after the load.
     fn contact_rows(&self, s: &mut String) {
-        let _ = writeln!(
-            s,
-            "{:>2} {:>11} {:>11} {:>10} {:>10} {:>13} {:>6}",
-            "#", "F_n0 [N]", "F_n [N]", "|F_t| [N]", "|F_t|/F_n", "|F_t|/mu_sF_n", "state"
+        let mut t = Table::new(
+            ">#; >F_n0 [N]:.6; >F_n [N]:.6; >|F_t| [N]:.6; >|F_t|/F_n:.6; >|F_t|/mu_sF_n:.4; >state",
         );
         for (i, (c, c0)) in self.contacts.iter().zip(&self.seated_contacts).enumerate() {
-            let use_ratio = if c.mu_static > 0.0 && c.normal_force_n > 0.0 {
-                format!(
-                    "{:.4}",
-                    c.tangential_force_n / (c.mu_static * c.normal_force_n)
-                )
+            let loaded = c.normal_force_n > 0.0;
+            let ratio = if loaded {
+                c.tangential_force_n / c.normal_force_n
             } else {
-                "-".to_string()
+                0.0
             };
-            let _ = writeln!(
-                s,
-                "{:>2} {:>11.6} {:>11.6} {:>10.6} {:>10.6} {:>13} {:>6}",
+            let used = (c.mu_static > 0.0 && loaded)
+                .then(|| c.tangential_force_n / (c.mu_static * c.normal_force_n));
+            t.row(cells![
                 i + 1,
                 c0.normal_force_n,
                 c.normal_force_n,
                 c.tangential_force_n,
-                if c.normal_force_n > 0.0 {
-                    c.tangential_force_n / c.normal_force_n
-                } else {
-                    0.0
-                },
-                use_ratio,
-                match c.state {
-                    crate::contact::SlipState::Stick => "stick",
-                    crate::contact::SlipState::Slip => "slip",
-                }
-            );
+                ratio,
+                used,
+                c.state.name(),
+            ]);
         }
+        *s += &t.text();
     }
 
     /// The safe load envelope and where the given load lies in it.
     fn envelope_text(&self, s: &mut String) {
         match (&self.envelope.event, self.envelope.factor) {
             (Some(e), Some(f)) => {
+                let [fl, ml] = [self.force_n, self.moment_n_m]
+                    .map(|v| v.map(|c| f * c))
+                    .map(|[x, y, z]| format!("({x:.5}, {y:.5}, {z:.5})"));
                 let _ = writeln!(
                     s,
-                    "safe load envelope: contact {} {} at load factor {:.5} (bracket [{:.6}, {:.6}]) = F ({:.5}, {:.5}, {:.5}) N, M ({:.5}, {:.5}, {:.5}) N m",
+                    "safe load envelope: contact {} {} at load factor {f:.5} (bracket [{:.6}, {:.6}]) = F {fl} N, M {ml} N m",
                     e.contact,
                     e.kind.name(),
-                    f,
                     e.previous,
                     e.factor,
-                    f * self.force_n[0],
-                    f * self.force_n[1],
-                    f * self.force_n[2],
-                    f * self.moment_n_m[0],
-                    f * self.moment_n_m[1],
-                    f * self.moment_n_m[2]
                 );
                 let _ = writeln!(
                     s,

@@ -19,7 +19,7 @@ pub enum WriteError {
 }
 
 impl WriteError {
-    fn io(path: &Path, e: impl std::fmt::Display) -> Self {
+    pub(crate) fn io(path: &Path, e: impl std::fmt::Display) -> Self {
         WriteError::Io {
             path: path.display().to_string(),
             reason: e.to_string(),
@@ -72,6 +72,16 @@ impl AtomicFile {
         tmp.persist(&target)
             .map_err(|e| WriteError::io(&target, e.error))?;
         Ok(())
+    }
+}
+
+impl Write for AtomicFile {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.writer.write(buf)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.writer.flush()
     }
 }
 

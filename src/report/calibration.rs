@@ -6,7 +6,8 @@ use serde_json::{Map, Value, json};
 
 use crate::calibrate::fit::{Calibration, Correlation, DofFit};
 use crate::calibrate::predict::Prediction;
-use crate::calibrate::units::{DOFS, dof_index, human_unit};
+use crate::dof::{Dof, nano};
+use crate::report::table::{Cell, Column, Table, cells};
 use crate::study::Shard;
 use crate::study::StudyReport;
 use crate::study::provenance::VERSION;
@@ -20,9 +21,8 @@ pub fn calibration_produced_by(c: &Calibration) -> String {
 }
 
 /// A value in nm or nrad with its unit.
-fn human(dof: &str, si: f64) -> String {
-    let u = dof_index(dof).map_or("?", human_unit);
-    format!("{:.3} {u}", si * 1e9)
+fn human(dof: Dof, si: f64) -> String {
+    format!("{:.3} {}", nano(si), dof.unit())
 }
 
 /// `model.grid.check` above which the table warns (a sigma difference of 2 %
@@ -42,31 +42,25 @@ fn value(name: &str, v: f64) -> String {
 fn parameter_lines(c: &Calibration) -> String {
     let mut s = String::new();
     for (name, p) in &c.parameters {
+        let alone = name == "spread" && c.parameters.len() == 1;
+        let low = match (p.low_at_bound, name == "spread") {
+            (false, _) => "",
+            (true, true) => "  (low end: no lower bound)",
+            (true, false) => "  (low end: at the range end)",
+        };
+        let high = match (p.high_at_bound, alone) {
+            (false, _) => "",
+            (true, true) => "  (high end: at mu_static)",
+            (true, false) => "  (high end: at the range end)",
+        };
         s += &format!(
-            "{name}: {}   {:.0} % interval [{}, {}]{}{}   ({})\n",
+            "{name}: {}   {:.0} % interval [{}, {}]{low}{high}   ({})\n",
             value(name, p.estimate),
             p.level * 100.0,
             value(name, p.low),
             value(name, p.high),
-            if !p.low_at_bound {
-                ""
-            } else if name == "spread" {
-                "  (low end: no lower bound)"
-            } else {
-                "  (low end: at the range end)"
-            },
-            if p.high_at_bound {
-                if name == "spread" && c.parameters.len() == 1 {
-                    "  (high end: at mu_static)".to_string()
-                } else {
-                    "  (high end: at the range end)".to_string()
-                }
-            } else {
-                String::new()
-            },
             p.method
         );
-        let alone = name == "spread" && c.parameters.len() == 1;
         if !alone && (p.low_at_bound || p.high_at_bound) {
             let r = p.range.map_or(String::new(), |[a, b]| {
                 format!(" [{}, {}]", value(name, a), value(name, b))
@@ -84,21 +78,16 @@ fn correlation_lines(r: &Correlation) -> String {
     if r.parameters.len() < 2 {
         return String::new();
     }
-    let mut s =
-        String::from("correlation of the estimates (sandwich covariance at the estimate):\n");
-    s += &format!("  {:<20}", "");
-    for n in &r.parameters {
-        s += &format!(" {n:>19}");
-    }
-    s.push('\n');
+    let params = r.parameters.iter().map(|n| Column::right(n).fixed(3));
+    let mut t = Table::new("<").with(params).indent(2);
     for (n, row) in r.parameters.iter().zip(&r.matrix) {
-        s += &format!("  {n:<20}");
-        for v in row {
-            s += &format!(" {v:>19.3}");
-        }
-        s.push('\n');
+        t.row(
+            std::iter::once(n.into())
+                .chain(row.iter().map(|v| Cell::Num(*v)))
+                .collect(),
+        );
     }
-    s
+    "correlation of the estimates (sandwich covariance at the estimate):\n".to_string() + &t.text()
 }
 
 /// The fitted parameters with their intervals on one line, e.g.
@@ -163,18 +152,20 @@ pub fn calibration_table(c: &Calibration) -> String {
             }
         }
     }
-    s += "dof      cycles  measured sigma   noise sigma      fitted sigma     model sigma (no noise)\n";
+    let mut t = Table::new(
+        "<dof; >cycles; >measured sigma; >noise sigma; >fitted sigma; >model sigma (no noise)",
+    );
     for d in &c.dofs {
-        s += &format!(
-            "{:<8} {:>6}  {:>15}  {:>15}  {:>15}  {:>15}\n",
-            d.dof,
+        t.row(cells![
+            d.dof.name(),
             d.cycles,
-            human(&d.dof, d.measured_sigma),
-            human(&d.dof, d.noise_sigma),
-            human(&d.dof, d.fitted_sigma),
-            human(&d.dof, d.model_sigma)
-        );
+            human(d.dof, d.measured_sigma),
+            human(d.dof, d.noise_sigma),
+            human(d.dof, d.fitted_sigma),
+            human(d.dof, d.model_sigma),
+        ]);
     }
+    s += &t.text();
     let g = &c.goodness_of_fit;
     s += &format!(
         "\ngoodness of fit: {}; p = {}{}\n\n",
@@ -200,13 +191,12 @@ pub struct PredictionReport {
     pub predictions: Vec<Prediction>,
 }
 
-/// Measured values of DOF fits, keyed `<dof>_<nm|nrad>`.
+/// Measured values of DOF fits, keyed by [`Dof::key`] (nm, nrad).
 fn measured_block(point: &str, dofs: &[DofFit]) -> Value {
-    let key = |d: &DofFit| format!("{}_{}", d.dof, dof_index(&d.dof).map_or("?", human_unit));
     let map = |f: &dyn Fn(&DofFit) -> f64| {
         Value::Object(
             dofs.iter()
-                .map(|d| (key(d), json!(f(d) * 1e9)))
+                .map(|d| (d.dof.key(), json!(nano(f(d)))))
                 .collect::<Map<_, _>>(),
         )
     };
@@ -274,33 +264,33 @@ impl PredictionReport {
         for p in &self.predictions {
             let v = &p.variant;
             s += &format!("{} ({})\n", v.scene, v.name);
-            s += "  point           dof      sigma        90 % interval           measured (raw, noise)\n";
+            let mut t =
+                Table::new("<point; <dof; >sigma:.3; <; >90 % interval; <measured (raw, noise)")
+                    .indent(2);
+            let measured = p.measured.as_ref();
             for pt in &v.points {
-                let (m, lo, hi) = (
-                    pt.sigma.values(),
-                    pt.sigma_ci90_low.map(|d| d.values()),
-                    pt.sigma_ci90_high.map(|d| d.values()),
-                );
-                for j in 0..6 {
-                    let meas = p
-                        .measured
-                        .as_ref()
-                        .filter(|(name, _)| *name == pt.name)
-                        .and_then(|(_, d)| d.iter().find(|d| d.dof == DOFS[j]))
-                        .map_or(String::new(), |d| {
-                            format!("{:.3} ({:.3})", d.measured_sigma * 1e9, d.noise_sigma * 1e9)
+                let (m, lo, hi) = (pt.sigma, pt.sigma_ci90_low, pt.sigma_ci90_high);
+                let bound =
+                    |b: Option<crate::study::Dofs>, j: usize| b.map_or(f64::NAN, |b| b.values()[j]);
+                for d in Dof::ALL {
+                    let j = d.index();
+                    let meas = (measured.filter(|(name, _)| *name == pt.name))
+                        .and_then(|(_, fits)| fits.iter().find(|f| f.dof == d))
+                        .map_or(String::new(), |f| {
+                            format!("{:.3} ({:.3})", nano(f.measured_sigma), nano(f.noise_sigma))
                         });
-                    s += &format!(
-                        "  {:<15} {:<6} {:>9.3} {:<4} [{:>9.3}, {:>9.3}]   {meas}\n",
-                        pt.name,
-                        DOFS[j],
-                        m[j],
-                        human_unit(j),
-                        lo.map_or(f64::NAN, |l| l[j]),
-                        hi.map_or(f64::NAN, |h| h[j]),
-                    );
+                    let interval = format!("[{:>9.3}, {:>9.3}]", bound(lo, j), bound(hi, j));
+                    t.row(cells![
+                        &pt.name,
+                        d.name(),
+                        m.values()[j],
+                        d.unit(),
+                        interval,
+                        meas
+                    ]);
                 }
             }
+            s += &t.text();
             s.push('\n');
         }
         s

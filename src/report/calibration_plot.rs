@@ -9,7 +9,7 @@ use thiserror::Error;
 
 use super::atomic::{WriteError, write_file};
 use super::calibration::PredictionReport;
-use crate::calibrate::units::DOFS;
+use crate::dof::{Dof, nano};
 
 /// The plot could not be drawn or written.
 #[derive(Debug, Error)]
@@ -45,8 +45,8 @@ fn rows(r: &PredictionReport) -> Vec<Row> {
                 p.measured
                     .as_ref()
                     .filter(|(name, _)| *name == pt.name)
-                    .and_then(|(_, d)| d.iter().find(|d| d.dof == DOFS[j]))
-                    .map(|d| d.measured_sigma * 1e9)
+                    .and_then(|(_, d)| d.iter().find(|d| d.dof == Dof::ALL[j]))
+                    .map(|d| nano(d.measured_sigma))
             });
             Some(Row {
                 label: stem.chars().take(2).collect(),
@@ -159,7 +159,7 @@ fn panel<DB: DrawingBackend>(
                     .enumerate()
                     .map(move |(i, r)| Circle::new((i as f64 + dx, r.sigma[j]), 4, col.filled())),
             )?
-            .label(DOFS[j])
+            .label(Dof::ALL[j].name())
             .legend(move |(x, y)| Circle::new((x + 6, y), 4, col.filled()));
         let crosses = chart.draw_series(data.iter().enumerate().filter_map(move |(i, r)| {
             r.measured[j].map(|m| Cross::new((i as f64 + dx, m), 6, BLACK.stroke_width(2)))

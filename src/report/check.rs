@@ -5,7 +5,7 @@ use std::fmt::Write;
 use crate::assembly::Coupling;
 use crate::assembly::constraint::{analyse, friction_limit, frictionless_preload_forces};
 use crate::contact::stress::contact_stress;
-use crate::report::run::factor;
+use crate::report::table::{Table, cells};
 
 /// What the friction limit means for this scene, given whether friction
 /// moves the seated pose from the touching pose (`friction_moves`, see
@@ -70,55 +70,41 @@ pub fn check_summary(c: &Coupling) -> String {
 /// moduli, peak stresses and safety factors, with the notes.
 fn contact_rows(out: &mut String, c: &Coupling) {
     let forces = frictionless_preload_forces(c);
-    let _ = writeln!(
-        out,
-        "  {:>2} {:>4}  {:<16} {:>24}  {:>15}  {:>8} {:>8}  {:>10} {:>9} {:>13} {:>6} {:>6} {:>6}",
-        "#",
-        "ball",
-        "pair",
-        "normal (x, y, z)",
-        "Rx, Ry [mm]",
-        "E* [GPa]",
-        "G* [GPa]",
-        "F_n(mu=0) [N]",
-        "p0 [MPa]",
-        "tau_max [MPa]",
-        "SF_p",
-        "SF_tau",
-        "SF"
-    );
+    let mut t = Table::new(">#; >ball; <pair; >normal (x, y, z); >Rx, Ry [mm]; >E* [GPa]:.2; >G* [GPa]:.2; >F_n(mu=0) [N]:.4; >p0 [MPa]:.2; >tau_max [MPa]:.2; >SF_p:.2; >SF_tau:.2; >SF:.2")
+    .indent(2);
     let mut left_out = Vec::new();
     for (i, k) in c.contacts.iter().enumerate() {
-        let g = c.geometry(i, &c.touching_pose);
+        let n = c.geometry(i, &c.touching_pose).normal;
         let h = &k.law.hertz;
         let st = contact_stress(&k.pair, h, &k.shear, forces[i]);
-        let _ = writeln!(
-            out,
-            "  {:>2} {:>4}  {:<16} ({:>6.3}, {:>6.3}, {:>6.3})  {:>6.3}, {:>6.3}  {:>8.2} {:>8.2}  {:>13.4} {:>9.2} {:>13.2} {:>6} {:>6} {:>6}",
+        t.row(cells![
             i + 1,
             k.ball + 1,
             k.shape.name(),
-            g.normal.x,
-            g.normal.y,
-            g.normal.z,
-            h.radii[0] * 1e3,
-            h.radii[1] * 1e3,
+            format!("({:>6.3}, {:>6.3}, {:>6.3})", n.x, n.y, n.z),
+            format!("{:>6.3}, {:>6.3}", h.radii[0] * 1e3, h.radii[1] * 1e3),
             h.e_star / 1e9,
             k.law.g_star / 1e9,
             forces[i],
             st.max_pressure_pa / 1e6,
             st.max_shear_stress_pa[0].max(st.max_shear_stress_pa[1]) / 1e6,
-            factor(st.pressure_safety_factor),
-            factor(st.shear_safety_factor),
-            factor(st.safety_factor)
-        );
+            st.pressure_safety_factor,
+            st.shear_safety_factor,
+            st.safety_factor,
+        ]);
         left_out.push(st.left_out);
     }
+    *out += &t.text();
     let _ = writeln!(
         out,
         "  p0, tau_max (subsurface shear on the contact axis: closed form for circles, quadrature for ellipses) and safety factors SF = allowable / actual at the frictionless preload forces; \"-\": no allowable given"
     );
     for note in crate::report::safety::left_out_notes(left_out.iter().map(Vec::as_slice)) {
         let _ = writeln!(out, "  {note}");
+    }
+    for (i, k) in c.contacts.iter().enumerate() {
+        if let Some(w) = crate::report::contact::conformity_warning(&k.law.hertz, forces[i]) {
+            let _ = writeln!(out, "  WARNING: contact {}: {w}", i + 1);
+        }
     }
 }

@@ -4,15 +4,18 @@ use std::fmt::Write;
 
 use crate::contact::hertz::CONFORMITY_LIMIT;
 use crate::contact::history::HistoryStep;
-use crate::contact::{ContactEvaluation, PairCurvature, SlipState};
+use crate::contact::{ContactEvaluation, HertzLaw, PairCurvature};
+use crate::dof::nano;
+use crate::report::table::{Table, cells};
 
-/// The words of a contact too conformal for Hertz (a semi-axis above
-/// [`CONFORMITY_LIMIT`] of the smaller relative radius), or `None`.
-pub fn conformity_warning(e: &ContactEvaluation) -> Option<String> {
-    let (a, r) = (e.semi_axes_m[0], e.relative_radii_m[0]);
-    (a > CONFORMITY_LIMIT * r).then(|| {
+/// Why a contact at `load` is too conformal for Hertz (its major
+/// semi-axis above [`CONFORMITY_LIMIT`] of the smaller relative radius of
+/// curvature), or `None`.
+pub fn conformity_warning(h: &HertzLaw, load: f64) -> Option<String> {
+    let (a, r) = (h.semi_axes(load)[0], h.radii[0]);
+    (h.conformity(load) > CONFORMITY_LIMIT).then(|| {
         format!(
-            "too conformal for Hertz: the semi-axis a = {:.4} mm is {:.1} % of the smaller relative radius of curvature {:.4} mm (limit {:.0} %); Hertz assumes a contact small against the radii (half-spaces), so these numbers overstate what they know",
+            "too conformal for Hertz: the semi-axis a = {:.4} mm is {:.1} % of the smaller relative radius of curvature {:.4} mm (limit {:.0} %); Hertz treats both bodies as half-spaces, which needs a contact small against the radii, so these numbers are only indicative",
             a * 1e3,
             100.0 * a / r,
             r * 1e3,
@@ -24,72 +27,44 @@ pub fn conformity_warning(e: &ContactEvaluation) -> Option<String> {
 /// A readable table of one contact evaluation (SI values with engineering units).
 pub fn contact_table(e: &ContactEvaluation) -> String {
     let mut s = String::new();
-    let rows: [(&str, String); 14] = [
-        ("shape", e.shape.name().to_string()),
-        ("normal load", format!("{:.6} N", e.load_n)),
-        (
-            "effective modulus E*",
-            format!("{:.4} GPa", e.effective_modulus_pa / 1e9),
-        ),
-        (
-            "effective shear modulus G*",
-            format!("{:.4} GPa", e.effective_shear_modulus_pa / 1e9),
-        ),
-        (
-            "relative radii Rx, Ry",
-            format!(
-                "{:.6}, {:.6} mm",
-                e.relative_radii_m[0] * 1e3,
-                e.relative_radii_m[1] * 1e3
-            ),
-        ),
-        (
-            "Hertz constant K (F = K d^1.5)",
-            format!("{:.6e} N/m^1.5", e.hertz_constant),
-        ),
-        ("approach", format!("{:.4} nm", e.approach_m * 1e9)),
-        (
-            "semi-axes a, b",
-            format!(
-                "{:.4}, {:.4} um",
-                e.semi_axes_m[0] * 1e6,
-                e.semi_axes_m[1] * 1e6
-            ),
-        ),
-        (
-            "peak pressure p0",
-            format!("{:.4} MPa", e.max_pressure_pa / 1e6),
-        ),
-        (
-            "normal stiffness dF/dd",
-            format!("{:.6e} N/m", e.normal_stiffness_n_per_m),
-        ),
-        (
-            "tangential stiffness k_t",
-            format!(
-                "{:.6e} N/m (geometric mean)",
-                e.tangential_stiffness_n_per_m
-            ),
-        ),
-        (
-            "k_t along a, along b (Mindlin)",
-            format!(
-                "{:.6e}, {:.6e} N/m",
-                e.tangential_stiffness_major_n_per_m, e.tangential_stiffness_minor_n_per_m
-            ),
-        ),
-        (
-            "max subsurface shear tau_max",
-            format!("{:.4} MPa", e.max_shear_stress_pa / 1e6),
-        ),
-        (
-            "depth of tau_max",
-            format!("{:.4} um", e.max_shear_depth_m * 1e6),
-        ),
-    ];
-    for (k, v) in rows {
+    let mut row = |k: &str, v: String| {
         let _ = writeln!(s, "{k:<32} {v}");
-    }
+    };
+    let [rx, ry] = e.relative_radii_m.map(|r| r * 1e3);
+    let [a, b] = e.semi_axes_m.map(|r| r * 1e6);
+    row("shape", e.shape.name().to_string());
+    row("normal load", format!("{:.6} N", e.load_n));
+    let gpa = |v: f64| format!("{:.4} GPa", v / 1e9);
+    row("effective modulus E*", gpa(e.effective_modulus_pa));
+    row(
+        "effective shear modulus G*",
+        gpa(e.effective_shear_modulus_pa),
+    );
+    row("relative radii Rx, Ry", format!("{rx:.6}, {ry:.6} mm"));
+    let k = e.hertz_constant;
+    row("Hertz constant K (F = K d^1.5)", format!("{k:.6e} N/m^1.5"));
+    row("approach", format!("{:.4} nm", nano(e.approach_m)));
+    row("semi-axes a, b", format!("{a:.4}, {b:.4} um"));
+    let mpa = |v: f64| format!("{:.4} MPa", v / 1e6);
+    row("peak pressure p0", mpa(e.max_pressure_pa));
+    let k = e.normal_stiffness_n_per_m;
+    row("normal stiffness dF/dd", format!("{k:.6e} N/m"));
+    let k = e.tangential_stiffness_n_per_m;
+    row(
+        "tangential stiffness k_t",
+        format!("{k:.6e} N/m (geometric mean)"),
+    );
+    let (ka, kb) = (
+        e.tangential_stiffness_major_n_per_m,
+        e.tangential_stiffness_minor_n_per_m,
+    );
+    row(
+        "k_t along a, along b (Mindlin)",
+        format!("{ka:.6e}, {kb:.6e} N/m"),
+    );
+    row("max subsurface shear tau_max", mpa(e.max_shear_stress_pa));
+    let d = e.max_shear_depth_m * 1e6;
+    row("depth of tau_max", format!("{d:.4} um"));
     s
 }
 
@@ -110,18 +85,18 @@ pub struct HistoryProvenance<'a> {
 /// displacement of the ball relative to the fixed body).
 pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
     let mut s = String::new();
-    let c = &p.curvature;
+    let [c1, c2] = [p.curvature.radii1, p.curvature.radii2];
     let _ = writeln!(
         s,
         "# kinrepro {} contact --history {}: {} radii1 {:e},{:e} m radii2 {:e},{:e} m angle {} deg, {} on {}, tangential law {}, mu_s {}, mu_d {}",
         env!("CARGO_PKG_VERSION"),
         p.history_file,
         p.shape,
-        c.radii1[0],
-        c.radii1[1],
-        c.radii2[0],
-        c.radii2[1],
-        c.angle.to_degrees(),
+        c1[0],
+        c1[1],
+        c2[0],
+        c2[1],
+        p.curvature.angle.to_degrees(),
         p.materials.0,
         p.materials.1,
         p.law,
@@ -132,22 +107,11 @@ pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
         s,
         "# force control, one step per row from the unloaded state; x = major axis of the contact ellipse (along the pin), SI units"
     );
-    s.push_str("step,P_N,Qx_N,Qy_N,sx_m,sy_m,slip\n");
+    let mut t = Table::new("<step; <P_N:e; <Qx_N:e; <Qy_N:e; <sx_m:e; <sy_m:e; <slip");
     for (i, st) in steps.iter().enumerate() {
-        let _ = writeln!(
-            s,
-            "{},{:e},{:e},{:e},{:e},{:e},{}",
-            i + 1,
-            st.load.normal_force,
-            st.load.tangential_force[0],
-            st.load.tangential_force[1],
-            st.displacement[0],
-            st.displacement[1],
-            match st.slip {
-                SlipState::Stick => "stick",
-                SlipState::Slip => "slip",
-            }
-        );
+        let (q, d) = (st.load.tangential_force, st.displacement);
+        let n = st.load.normal_force;
+        t.row(cells![i + 1, n, q[0], q[1], d[0], d[1], st.slip.name()]);
     }
-    s
+    s + &t.csv()
 }

@@ -7,7 +7,7 @@ use std::fmt::Write;
 use serde::Serialize;
 
 use crate::material::{BUILTIN, BuiltinMaterial};
-use crate::report::study_text::csv_field;
+use crate::report::table::{Column, Table, cells};
 use crate::study::provenance::{SCHEMA_VERSION, VERSION};
 
 /// Header of `kinrepro materials --format csv` (SI units).
@@ -36,57 +36,53 @@ pub fn materials_doc() -> MaterialsDoc {
 /// none is built in. Numbers in Rust's shortest round-trip form, so that
 /// they read back exactly.
 pub fn materials_csv() -> String {
-    let mut s = format!("{MATERIALS_HEADER}\n");
+    let mut t = Table::of(MATERIALS_HEADER.split(',').map(Column::left));
     for m in BUILTIN {
-        let _ = writeln!(
-            s,
-            "{VERSION},{},{},{:e},{},{},{},{},{},{}",
-            csv_field(m.name),
-            csv_field(m.description),
-            m.youngs_modulus,
-            m.poisson_ratio,
-            m.density,
-            m.allowable_pressure
-                .map_or(String::new(), |p| format!("{p:e}")),
-            csv_field(m.sources.elastic),
-            csv_field(m.sources.density),
-            csv_field(m.sources.allowable_pressure),
-        );
+        let e = format!("{:e}", m.youngs_modulus);
+        let p = m
+            .allowable_pressure
+            .map_or(String::new(), |p| format!("{p:e}"));
+        t.row(cells![
+            VERSION,
+            m.name,
+            m.description,
+            e,
+            format!("{}", m.poisson_ratio),
+            format!("{}", m.density),
+            p,
+            m.sources.elastic,
+            m.sources.density,
+            m.sources.allowable_pressure,
+        ]);
     }
-    s
+    t.csv()
 }
 
 /// The human table: constants in GPa, MPa and kg/m^3, then the sources.
 pub fn materials_table() -> String {
-    let mut s = format!(
-        "kinrepro {VERSION}: built-in materials (use their names in scene files)\n\n{:<18} {:>8} {:>6} {:>15} {:>16}  description\n",
-        "name", "E [GPa]", "nu", "density [kg/m3]", "p_allow [MPa]"
+    let mut s =
+        format!("kinrepro {VERSION}: built-in materials (use their names in scene files)\n\n");
+    let mut t = Table::new(
+        "<name; >E [GPa]:.0; >nu:.2; >density [kg/m3]:.0; >p_allow [MPa]:.0; <description",
     );
     for m in BUILTIN {
-        let p = m
-            .allowable_pressure
-            .map_or("-".to_string(), |p| format!("{:.0}", p / 1e6));
-        let _ = writeln!(
-            s,
-            "{:<18} {:>8.0} {:>6.2} {:>15.0} {:>16}  {}",
+        t.row(cells![
             m.name,
             m.youngs_modulus / 1e9,
             m.poisson_ratio,
             m.density,
-            p,
-            m.description
-        );
+            m.allowable_pressure.map(|p| p / 1e6),
+            m.description,
+        ]);
     }
-    let _ = writeln!(s, "\nSources:");
+    s += &t.text();
+    s += "\nSources:\n";
     for m in BUILTIN {
         let _ = writeln!(s, "{}:", m.name);
         let _ = writeln!(s, "  E, nu:   {}", m.sources.elastic);
         let _ = writeln!(s, "  density: {}", m.sources.density);
         let _ = writeln!(s, "  p_allow: {}", m.sources.allowable_pressure);
     }
-    let _ = writeln!(
-        s,
-        "\nNo built-in material carries an allowable shear stress; give allowable_shear_stress in the scene file."
-    );
+    s += "\nNo built-in material carries an allowable shear stress; give allowable_shear_stress in the scene file.\n";
     s
 }

@@ -19,5 +19,6 @@ pub mod study_table;
 pub mod study_text;
 pub mod sweep_plot;
 pub mod sweep_text;
+pub mod table;
 pub mod trace;
 pub mod validate_hertz;

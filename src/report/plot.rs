@@ -8,8 +8,8 @@
 //!
 //! * [`sigma_bars_svg`]: sigma per variant and DOF as grouped bars with the 90 % interval of
 //!   each sigma as an error bar and optional reference values (e.g. the paper's) as black
-//!   ticks; translations x, y, z \[nm\] and rotations phi_x, phi_y, phi_z \[nrad\] in two panels
-//!   because the units differ.
+//!   ticks; translations \[nm\] and rotations \[nrad\] in two panels because the units
+//!   differ.
 //! * [`xy_scatter_svg`]: x-y scatter of the samples \[nm\], one panel per variant and
 //!   evaluation point (each named), common axes.
 //! * [`convergence_svg`]: sigma of the first k samples against k, one panel per DOF (all six).
@@ -31,47 +31,11 @@ pub use scatter::xy_scatter_svg;
 use plotters::style::RGBColor;
 use serde::{Deserialize, Serialize};
 
+use crate::dof::Dof;
 use crate::study::stats::ConvergencePoint;
 use crate::study::{Result, StudyError};
 
-/// The degrees of freedom of the re-seating error that kinrepro reports.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
-pub enum Dof {
-    X,
-    Y,
-    Z,
-    PhiX,
-    PhiY,
-    PhiZ,
-}
-
-impl Dof {
-    /// All DOFs, in the order of [`VariantSigma::sigma`].
-    pub const ALL: [Dof; 6] = [Dof::X, Dof::Y, Dof::Z, Dof::PhiX, Dof::PhiY, Dof::PhiZ];
-
-    /// Short label used on axes and in legends.
-    pub fn label(self) -> &'static str {
-        match self {
-            Dof::X => "x",
-            Dof::Y => "y",
-            Dof::Z => "z",
-            Dof::PhiX => "φx",
-            Dof::PhiY => "φy",
-            Dof::PhiZ => "φz",
-        }
-    }
-
-    /// Unit of the DOF: nm for translations, nrad for rotations.
-    pub fn unit(self) -> &'static str {
-        if self.is_rotation() { "nrad" } else { "nm" }
-    }
-
-    pub fn is_rotation(self) -> bool {
-        matches!(self, Dof::PhiX | Dof::PhiY | Dof::PhiZ)
-    }
-}
-
-/// Sigma of one variant, per DOF in the order of [`Dof::ALL`]: x, y, z \[nm\], phi_x, phi_y, phi_z \[nrad\].
+/// Sigma of one variant, per DOF in the order of [`Dof::ALL`], in nm and nrad.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct VariantSigma {
     pub variant: String,

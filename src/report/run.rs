@@ -5,6 +5,8 @@ use std::fmt::Write;
 use serde::Serialize;
 
 use crate::assembly::Coupling;
+use crate::dof::{Dof, nano};
+use crate::report::table::{Cell, Column, Table, cells};
 use crate::solve::{ContactResult, PointPose, Seating, SeatingPath};
 
 /// Pose of one evaluation point, from the touching pose and from the nominal seating.
@@ -38,7 +40,7 @@ pub struct RunReport {
     pub seating_path: SeatingPath,
     /// Pose components reported but not evaluated for reproducibility
     /// (rotation about z, which the paper leaves out; docs/model.md).
-    pub not_evaluated: Vec<&'static str>,
+    pub not_evaluated: Vec<String>,
 }
 
 impl RunReport {
@@ -74,7 +76,7 @@ impl RunReport {
             increments: seating.increments,
             newton_iterations: seating.newton_iterations,
             seating_path: seating.path,
-            not_evaluated: vec!["phi_z_rad"],
+            not_evaluated: vec![Dof::PhiZ.si_key()],
         }
     }
 
@@ -115,84 +117,46 @@ impl RunReport {
 
     /// The pose of each point, from touching and relative to nominal mu.
     fn pose_rows(&self, s: &mut String) {
-        let _ = writeln!(
-            s,
-            "{:<16} {:<22} {:>10} {:>10} {:>10} {:>11} {:>11} {:>11}",
-            "point",
-            "pose",
-            "x [nm]",
-            "y [nm]",
-            "z [nm]",
-            "phi_x[nrad]",
-            "phi_y[nrad]",
-            "phi_z[nrad]*"
-        );
+        let mut t = pose_table("<point; <pose", "*");
         for p in &self.points {
             for (label, q) in [
                 ("from touching", &p.pose),
                 ("rel. to nominal mu", &p.pose_rel_nominal),
             ] {
-                let _ = writeln!(
-                    s,
-                    "{:<16} {:<22} {:>10.4} {:>10.4} {:>10.4} {:>11.3} {:>11.3} {:>11.3}",
-                    p.name,
-                    label,
-                    q.x_m * 1e9,
-                    q.y_m * 1e9,
-                    q.z_m * 1e9,
-                    q.phi_x_rad * 1e9,
-                    q.phi_y_rad * 1e9,
-                    q.phi_z_rad * 1e9
-                );
+                t.row(pose_cells(cells![&p.name, label], q));
             }
         }
+        *s += &t.text();
         let _ = writeln!(
             s,
-            "* phi_z is reported but not evaluated for reproducibility."
+            "* {} is reported but not evaluated for reproducibility.",
+            Dof::PhiZ.name()
         );
     }
 
     /// Each contact: forces, state, stresses and safety factors, with notes.
     fn contact_rows(&self, s: &mut String) {
-        let _ = writeln!(
-            s,
-            "{:>2} {:>7} {:>7} {:>10} {:>10} {:>9} {:>6} {:>11} {:>9} {:>13} {:>8} {:>8} {:>8}",
-            "#",
-            "mu_s",
-            "mu_d",
-            "F_n [N]",
-            "|F_t| [N]",
-            "|F_t|/F_n",
-            "state",
-            "approach[nm]",
-            "p0 [MPa]",
-            "tau_max [MPa]",
-            "SF_p",
-            "SF_tau",
-            "SF"
+        let mut t = Table::new(
+            ">#; >mu_s:.4; >mu_d:.4; >F_n [N]:.6; >|F_t| [N]:.6; >|F_t|/F_n:.6; >state; >approach[nm]:.4; >p0 [MPa]:.2; >tau_max [MPa]:.2; >SF_p:.2; >SF_tau:.2; >SF:.2",
         );
         for (i, c) in self.contacts.iter().enumerate() {
-            let _ = writeln!(
-                s,
-                "{:>2} {:>7.4} {:>7.4} {:>10.6} {:>10.6} {:>9.6} {:>6} {:>11.4} {:>9.2} {:>13.2} {:>8} {:>8} {:>8}",
+            t.row(cells![
                 i + 1,
                 c.mu_static,
                 c.mu_dynamic,
                 c.normal_force_n,
                 c.tangential_force_n,
                 c.tangential_force_n / c.normal_force_n,
-                match c.state {
-                    crate::contact::SlipState::Stick => "stick",
-                    crate::contact::SlipState::Slip => "slip",
-                },
-                c.approach_m * 1e9,
+                c.state.name(),
+                nano(c.approach_m),
                 c.max_pressure_pa / 1e6,
                 c.max_shear_stress_pa / 1e6,
-                factor(c.pressure_safety_factor),
-                factor(c.shear_safety_factor),
-                factor(c.safety_factor)
-            );
+                c.pressure_safety_factor,
+                c.shear_safety_factor,
+                c.safety_factor,
+            ]);
         }
+        *s += &t.text();
         support_split(s, &self.contacts);
         let _ = writeln!(
             s,
@@ -208,32 +172,38 @@ impl RunReport {
     }
 }
 
+/// A table of poses after the columns `first`: the six DOFs in nm and nrad
+/// (`mark` after the header of the one not evaluated).
+pub(crate) fn pose_table(first: &str, mark: &str) -> Table {
+    Table::new(first).with(Dof::ALL.map(|d| {
+        let m = if d == Dof::PhiZ { mark } else { "" };
+        let p = if d.is_rotation() { 3 } else { 4 };
+        Column::right(d.header("") + m).fixed(p)
+    }))
+}
+
+/// `first`, then the six DOFs of `q` in nm and nrad.
+pub(crate) fn pose_cells(mut first: Vec<Cell>, q: &PointPose) -> Vec<Cell> {
+    first.extend(q.components().map(|v| Cell::Num(nano(v))));
+    first
+}
+
 /// With a series support compliance (`support_compliance`): each contact's
 /// approach split into its Hertz and support parts.
 fn support_split(s: &mut String, contacts: &[ContactResult]) {
     if contacts.iter().all(|c| c.support_compliance_m_per_n == 0.0) {
         return;
     }
-    let _ = writeln!(
-        s,
-        "approach = Hertz + support (series support compliance c):\n{:>2} {:>12} {:>12} {:>12} {:>12}",
-        "#", "c [m/N]", "Hertz [nm]", "support [nm]", "total [nm]"
-    );
+    s.push_str("approach = Hertz + support (series support compliance c):\n");
+    let mut t = Table::new(">#; >c [m/N]:.4e; >Hertz [nm]:.4; >support [nm]:.4; >total [nm]:.4");
     for (i, c) in contacts.iter().enumerate() {
-        let _ = writeln!(
-            s,
-            "{:>2} {:>12.4e} {:>12.4} {:>12.4} {:>12.4}",
+        t.row(cells![
             i + 1,
             c.support_compliance_m_per_n,
-            c.hertz_approach_m * 1e9,
-            c.support_approach_m * 1e9,
-            c.approach_m * 1e9
-        );
+            nano(c.hertz_approach_m),
+            nano(c.support_approach_m),
+            nano(c.approach_m),
+        ]);
     }
-}
-
-/// A safety factor for a table, "-" where no allowable is known.
-pub fn factor(f: Option<f64>) -> String {
-    f.map(|f| format!("{f:.2}"))
-        .unwrap_or_else(|| "-".to_string())
+    *s += &t.text();
 }

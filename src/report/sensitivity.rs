@@ -3,45 +3,36 @@
 //! the first-order index S and the total index ST with their 90 % bootstrap
 //! intervals (see [`crate::study::sensitivity::sobol`]).
 
-use std::fmt::Write;
-
+use crate::dof::Dof;
+use crate::report::table::{Cell, Column, Table};
 use crate::study::sensitivity::SensitivityBlock;
 use crate::study::sensitivity::sobol::SobolDof;
 
-/// DOF label of an output name `point/x_m` -> `x`.
-fn dof_label(output: &str) -> String {
-    let comp = output.rsplit_once('/').map_or(output, |(_, c)| c);
-    comp.rsplit_once('_').map_or(comp, |(d, _)| d).to_string()
-}
-
 /// The Sobol table of one block: inputs down; per DOF the first-order and
 /// total index, each with its 90 % interval below.
-pub fn sobol_table(s: &mut String, b: &SensitivityBlock) {
+pub fn sobol_table(b: &SensitivityBlock) -> String {
     let Some(sob) = &b.sobol else {
-        let _ = writeln!(
-            s,
+        return format!(
             "  Sobol indices of the {} scatter: not computed (a sharded or merged study: they \
-             need the whole Saltelli matrices in one run without --shard)",
+             need the whole Saltelli matrices in one run without --shard)\n",
             b.kind
         );
-        return;
     };
-    let _ = writeln!(
-        s,
+    let mut s = format!(
         "  Sobol indices of the {} scatter: first-order S and total ST per input and DOF, 90 % \
-         bootstrap interval below; base sample size N = {}, {} seatings, seed {} ({})",
+         bootstrap interval below; base sample size N = {}, {} seatings, seed {} ({})\n",
         b.kind, sob.base_samples, sob.evaluations, sob.seed, sob.estimator
     );
-    let head: Vec<String> = sob
-        .dofs
-        .iter()
-        .map(|d| format!("{:>27}", format!("{} (S | ST)", dof_label(&d.output))))
-        .collect();
-    let _ = writeln!(s, "  {:<22}{}", "input", head.join(""));
-    for (j, name) in b.inputs.iter().enumerate() {
-        let cells = |f: &dyn Fn(&SobolDof) -> String| -> String {
-            sob.dofs.iter().map(|d| format!("{:>27}", f(d))).collect()
-        };
+    let t = Table::new("<input");
+    // The block's outputs are the six DOFs of one point, in order.
+    let dofs = Dof::ALL.iter().take(sob.dofs.len());
+    let mut t = t
+        .with(dofs.map(|d| Column::right(format!("{} (S | ST)", d.name()))))
+        .indent(2);
+    let cells = |f: &dyn Fn(&SobolDof) -> String| -> Vec<Cell> {
+        sob.dofs.iter().map(|d| f(d).into()).collect()
+    };
+    for (j, input) in b.inputs.iter().enumerate() {
         let est = cells(&|d| {
             d.indices.as_ref().map_or("-".into(), |x| {
                 format!("{:.3} | {:.3}", x.first[j], x.total[j])
@@ -58,24 +49,21 @@ pub fn sobol_table(s: &mut String, b: &SensitivityBlock) {
                 )
             })
         });
-        let _ = writeln!(s, "  {name:<22}{est}");
-        let _ = writeln!(s, "  {:<22}{ci}", "");
+        t.row(std::iter::once(input.name().into()).chain(est).collect());
+        t.row(std::iter::once("".into()).chain(ci).collect());
     }
-    let sums = |f: &dyn Fn(&[f64]) -> f64| -> String {
-        sob.dofs
-            .iter()
-            .map(|d| {
-                let v = d.indices.as_ref().map_or("-".into(), |x| {
-                    format!("{:.3} | {:.3}", f(&x.first), f(&x.total))
-                });
-                format!("{v:>27}")
-            })
-            .collect()
-    };
-    let _ = writeln!(s, "  {:<22}{}", "sum", sums(&|v| v.iter().sum()));
+    let sums = cells(&|d| {
+        d.indices.as_ref().map_or("-".into(), |x| {
+            let sum = |v: &[f64]| v.iter().sum::<f64>();
+            format!("{:.3} | {:.3}", sum(&x.first), sum(&x.total))
+        })
+    });
+    t.row(std::iter::once("sum".into()).chain(sums).collect());
+    s += &t.text();
     for d in &sob.dofs {
         if let Some(n) = &d.note {
-            let _ = writeln!(s, "  note, {}: {n}", d.output);
+            s += &format!("  note, {}: {n}\n", d.output);
         }
     }
+    s
 }

@@ -2,13 +2,13 @@
 //! (`--format csv`), the per-sample CSV (written as the samples arrive) and
 //! the SVG plots. Every file is written whole or not at all ([`atomic`]).
 
-use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::Path;
 
 use crate::report::atomic::{self, AtomicFile, WriteError};
 use crate::report::html::charts::study_charts;
-use crate::report::study_text::{csv_field, point_csv_fields};
+use crate::report::study_text::point_csv_rows;
+use crate::report::table::{Column, Table};
 use crate::study::provenance::{SCHEMA_VERSION, VERSION, produced_by};
 use crate::study::runner::INTERCHANGE_PREFIX;
 use crate::study::stream::RecordSink;
@@ -22,7 +22,7 @@ impl StudyReport {
     /// units); each row names the version, solver, sampler, seed, samples
     /// and the varied quantities.
     pub fn csv(&self) -> String {
-        let mut s = format!("{SUMMARY_HEADER}\n");
+        let mut t = Table::of(SUMMARY_HEADER.split(',').map(Column::left));
         let vary = self.vary.join("+");
         for v in self.variants.iter().filter(|v| !v.partial) {
             let interchange = v.interchangeability.iter().map(|p| {
@@ -30,22 +30,24 @@ impl StudyReport {
                 p.name = format!("{INTERCHANGE_PREFIX}{}", p.name);
                 p
             });
+            let head = [
+                VERSION.to_string(),
+                SCHEMA_VERSION.to_string(),
+                v.solver.clone(),
+                v.sampler.to_string(),
+                v.seed.to_string(),
+                v.samples.to_string(),
+                vary.clone(),
+                v.scene.clone(),
+                v.name.clone(),
+            ];
             for p in v.points.iter().cloned().chain(interchange) {
-                for stats in point_csv_fields(&p) {
-                    let _ = writeln!(
-                        s,
-                        "{VERSION},{SCHEMA_VERSION},{},{},{},{},{vary},{},{},{stats}",
-                        v.solver,
-                        v.sampler,
-                        v.seed,
-                        v.samples,
-                        csv_field(&v.scene),
-                        csv_field(&v.name),
-                    );
+                for stats in point_csv_rows(&p) {
+                    t.row(head.iter().chain(&stats).map(Into::into).collect());
                 }
             }
         }
-        s
+        t.csv()
     }
 
     /// Write the per-sample CSV files (unless `samples_written`: a streamed
@@ -57,10 +59,8 @@ impl StudyReport {
         force: bool,
         samples_written: bool,
     ) -> Result<Vec<String>, WriteError> {
-        std::fs::create_dir_all(dir).map_err(|e| WriteError::Io {
-            path: dir.display().to_string(),
-            reason: format!("cannot create the folder: {e}"),
-        })?;
+        std::fs::create_dir_all(dir)
+            .map_err(|e| WriteError::io(dir, format!("cannot create the folder: {e}")))?;
         let mut written = Vec::new();
         if !samples_written {
             for (i, v) in self.variants.iter().enumerate() {
@@ -82,10 +82,7 @@ impl StudyReport {
     /// interchangeability when tolerances vary).
     fn write_plots(&self, dir: &Path, force: bool) -> Result<Vec<String>, WriteError> {
         let variants: Vec<&VariantReport> = self.variants.iter().collect();
-        let charts = study_charts(&variants, &[]).map_err(|e| WriteError::Io {
-            path: dir.display().to_string(),
-            reason: e.to_string(),
-        })?;
+        let charts = study_charts(&variants, &[]).map_err(|e| WriteError::io(dir, e))?;
         let mut written = Vec::new();
         for c in charts {
             let path = dir.join(c.file_name);
@@ -104,19 +101,22 @@ pub fn samples_file_name(i: usize, v: &VariantReport) -> String {
     format!("samples_{:02}_{stem}.csv", i + 1)
 }
 
-/// The per-sample CSV of one variant, written row by row under a temporary
-/// name and renamed when complete. First line: `# ` and the provenance;
-/// then `index`, the physical inputs (SI), the outputs (SI).
+/// The per-sample CSV of one variant, written row by row (the `csv`
+/// crate) under a temporary name and renamed when complete. First line:
+/// `# ` and the provenance; then `index`, the physical inputs (SI), the
+/// outputs (SI).
 pub struct SamplesCsv {
-    file: AtomicFile,
+    out: csv::Writer<AtomicFile>,
     path: String,
 }
 
 impl SamplesCsv {
     /// Start the file with its provenance and header lines.
     pub fn create(path: &Path, v: &VariantReport, force: bool) -> Result<Self, WriteError> {
-        let mut head = format!(
-            "# {}, scene {}\nindex",
+        let mut file = AtomicFile::create(path, force)?;
+        writeln!(
+            file,
+            "# {}, scene {}",
             produced_by(
                 &v.solver,
                 &v.sampler.to_string(),
@@ -125,35 +125,33 @@ impl SamplesCsv {
                 &crate::study::result::varied_kinds(&v.variation()).join("+"),
             ),
             v.scene
-        );
-        for name in &v.inputs {
-            let _ = write!(head, ",{name}");
-        }
-        for n in &v.output_names {
-            let _ = write!(head, ",{}", csv_field(n));
-        }
-        head.push('\n');
+        )
+        .map_err(|e| WriteError::io(path, e))?;
         let mut csv = SamplesCsv {
-            file: AtomicFile::create(path, force)?,
+            out: csv::Writer::from_writer(file),
             path: path.display().to_string(),
         };
-        csv.write(head.as_bytes())?;
+        let names = v.inputs.iter().map(|i| i.name());
+        csv.record(
+            std::iter::once("index".into())
+                .chain(names)
+                .chain(v.output_names.clone()),
+        )?;
         Ok(csv)
     }
 
-    fn write(&mut self, bytes: &[u8]) -> Result<(), WriteError> {
-        self.file
-            .writer()
-            .write_all(bytes)
-            .map_err(|e| WriteError::Io {
-                path: self.path.clone(),
-                reason: e.to_string(),
-            })
+    fn record(&mut self, cells: impl IntoIterator<Item = String>) -> Result<(), WriteError> {
+        let path = Path::new(&self.path);
+        self.out
+            .write_record(cells)
+            .map_err(|e| WriteError::io(path, e))
     }
 
     /// Complete the file (rename over the target).
     pub fn commit(self) -> Result<(), WriteError> {
-        self.file.commit()
+        let path = Path::new(&self.path);
+        let file = self.out.into_inner();
+        file.map_err(|e| WriteError::io(path, e.error()))?.commit()
     }
 }
 
@@ -162,14 +160,11 @@ impl RecordSink for SamplesCsv {
 
     /// One sample's row.
     fn push(&mut self, r: &StudyRecord) -> Result<(), WriteError> {
-        let mut t = format!("{}", r.index);
-        for m in &r.physical {
-            let _ = write!(t, ",{m:e}");
-        }
-        for o in &r.outputs {
-            let _ = write!(t, ",{o:e}");
-        }
-        t.push('\n');
-        self.write(t.as_bytes())
+        let values = r
+            .physical
+            .iter()
+            .chain(&r.outputs)
+            .map(|v| format!("{v:e}"));
+        self.record(std::iter::once(r.index.to_string()).chain(values))
     }
 }

@@ -4,10 +4,12 @@
 use std::fmt::Write;
 
 use crate::contact::FrictionLaw;
-use crate::report::study_text::{bounds_text, detail, sigma_table, varied};
+use crate::dof::Dof;
+use crate::report::study_text::{bounds_text, detail, interval_methods, sigma_table, varied};
+use crate::report::table::{Cell, Column, Table, cells};
+use crate::study::StudyReport;
 use crate::study::runner::INTERCHANGE_PREFIX;
-use crate::study::sensitivity::{self, SensitivityBlock};
-use crate::study::{StudyReport, VariantReport};
+use crate::study::sensitivity::{DofSensitivity, SensitivityBlock};
 
 impl StudyReport {
     /// The text table: the variants side by side as in the paper's Table 2,
@@ -26,10 +28,13 @@ impl StudyReport {
             let _ = writeln!(
                 s,
                 "Standard deviation of the seated pose relative to the nominal seating (nominal friction and preload, touching start; divisor n-1, for a replicated LHS the unbiased replicate estimate); below each row the 90 % interval of sigma, by a method valid for the design: {}.",
-                interval_methods(&self.variants)
+                interval_methods(
+                    self.variants.iter().flat_map(|v| &v.points),
+                    "per variant, after merging"
+                )
             );
             let _ = writeln!(s);
-            sigma_table(&mut s, &self.variants, |v| &v.points);
+            s += &sigma_table(&self.variants, |v| &v.points);
         }
         if self
             .variants
@@ -37,20 +42,15 @@ impl StudyReport {
             .any(|v| !v.interchangeability.is_empty())
         {
             if self.variants.iter().any(|v| !v.points.is_empty()) {
-                let _ = writeln!(s);
+                s.push('\n');
             }
-            let _ = writeln!(
-                s,
-                "Interchangeability (manufacturing tolerances): standard deviation (and its interval) as above, of the seated pose of each perturbed coupling at nominal friction and preload, relative to the nominal geometry's seating."
-            );
-            let _ = writeln!(s);
-            sigma_table(&mut s, &self.variants, |v| &v.interchangeability);
+            s += "Interchangeability (manufacturing tolerances): standard deviation (and its interval) as above, of the seated pose of each perturbed coupling at nominal friction and preload, relative to the nominal geometry's seating.\n\n";
+            s += &sigma_table(&self.variants, |v| &v.interchangeability);
         }
         for v in self.variants.iter().filter(|v| !v.partial) {
-            let _ = writeln!(s);
             let _ = writeln!(
                 s,
-                "{} ({}): {} samples, {} seed {}, mu_s = {} +- {} uniform, mu_d = {} mu_s, {}",
+                "\n{} ({}): {} samples, {} seed {}, mu_s = {} +- {} uniform, mu_d = {} mu_s, {}",
                 v.name,
                 v.scene,
                 v.samples,
@@ -74,19 +74,19 @@ impl StudyReport {
             }
             if !v.points.is_empty() {
                 let _ = writeln!(s, "  re-seating scatter (one pair of halves):");
-                detail(&mut s, &v.points);
+                s += &detail(&v.points);
             }
             if !v.interchangeability.is_empty() {
                 let _ = writeln!(
                     s,
                     "  interchangeability (tolerances; nominal friction and preload):"
                 );
-                detail(&mut s, &v.interchangeability);
+                s += &detail(&v.interchangeability);
             }
             if let Some(blocks) = &v.sensitivity {
                 for b in blocks {
-                    sensitivity_table(&mut s, b);
-                    super::sensitivity::sobol_table(&mut s, b);
+                    s += &sensitivity_table(b);
+                    s += &super::sensitivity::sobol_table(b);
                 }
             }
         }
@@ -95,61 +95,38 @@ impl StudyReport {
 }
 
 /// One SRC table: inputs down, DOFs across.
-fn sensitivity_table(s: &mut String, b: &SensitivityBlock) {
-    let point = b
-        .dofs
-        .first()
-        .and_then(|d| {
-            d.output
-                .trim_start_matches(INTERCHANGE_PREFIX)
-                .rsplit_once('/')
-        })
-        .map_or(String::new(), |(p, _)| p.to_string());
-    let _ = writeln!(
-        s,
-        "  sensitivity of the {} scatter at {point}: share of each DOF's variance per input (normalised SRC^2: R^2 SRC_j^2 / sum SRC^2; R^2 of the linear fit)",
+fn sensitivity_table(b: &SensitivityBlock) -> String {
+    let point = b.dofs.first().map_or("", |d| output_point(&d.output));
+    let mut s = format!(
+        "  sensitivity of the {} scatter at {point}: share of each DOF's variance per input (normalised SRC^2: R^2 SRC_j^2 / sum SRC^2; R^2 of the linear fit)\n",
         b.kind
     );
-    let _ = writeln!(
-        s,
-        "  {:<22} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
-        "input", "x", "y", "z", "phi_x", "phi_y", "phi_z"
-    );
-    let cell = |d: &sensitivity::DofSensitivity, j: usize| {
-        d.share
-            .get(j)
-            .map_or(format!("{:>9}", "-"), |v| format!("{v:>9.3}"))
+    let dofs = Dof::ALL.map(|d| Column::right(d.name()).fixed(3));
+    let mut t = Table::new("<input").with(dofs).indent(2);
+    let row = |label: String, f: &dyn Fn(&DofSensitivity) -> Option<f64>| {
+        let mut r = cells![label];
+        r.extend(b.dofs.iter().map(|d| Cell::from(f(d))));
+        r
     };
-    for (j, name) in b.inputs.iter().enumerate() {
-        let cells: Vec<String> = b.dofs.iter().map(|d| cell(d, j)).collect();
-        let _ = writeln!(s, "  {:<22} {}", name, cells.join(" "));
+    for (j, input) in b.inputs.iter().enumerate() {
+        t.row(row(input.name(), &|d| d.share.get(j).copied()));
     }
-    let sums: Vec<String> = b
-        .dofs
-        .iter()
-        .map(|d| {
-            if d.share.is_empty() {
-                format!("{:>9}", "-")
-            } else {
-                format!("{:>9.3}", d.share.iter().sum::<f64>())
-            }
-        })
-        .collect();
-    let _ = writeln!(s, "  {:<22} {}", "sum of shares", sums.join(" "));
-    let r2: Vec<String> = b
-        .dofs
-        .iter()
-        .map(|d| {
-            d.r_squared
-                .map_or(format!("{:>9}", "-"), |r| format!("{r:>9.3}"))
-        })
-        .collect();
-    let _ = writeln!(s, "  {:<22} {}", "R^2", r2.join(" "));
+    let sum = |d: &DofSensitivity| (!d.share.is_empty()).then(|| d.share.iter().sum());
+    t.row(row("sum of shares".into(), &sum));
+    t.row(row("R^2".into(), &|d| d.r_squared));
+    s += &t.text();
     for d in &b.dofs {
         if let Some(n) = &d.note {
-            let _ = writeln!(s, "  note, {}: {n}", d.output);
+            s += &format!("  note, {}: {n}\n", d.output);
         }
     }
+    s
+}
+
+/// The evaluation point of an output name (`[interchange/]<point>/<dof>`).
+pub(crate) fn output_point(output: &str) -> &str {
+    let o = output.trim_start_matches(INTERCHANGE_PREFIX);
+    o.rsplit_once('/').map_or("", |(p, _)| p)
 }
 
 /// The friction reading in words, for the study header.
@@ -159,20 +136,5 @@ fn friction_law_text(law: &FrictionLaw, ramp_time: f64) -> String {
         FrictionLaw::Decay { coefficient } => format!(
             "decay mu = mu_d + (mu_s - mu_d) exp(-{coefficient} s/m * v_slip), ramp {ramp_time} s"
         ),
-    }
-}
-
-/// The distinct interval methods of the variants' points, in order.
-fn interval_methods(variants: &[VariantReport]) -> String {
-    let mut methods: Vec<&str> = Vec::new();
-    for p in variants.iter().flat_map(|v| &v.points) {
-        if !methods.contains(&p.sigma_interval_method.as_str()) {
-            methods.push(&p.sigma_interval_method);
-        }
-    }
-    if methods.is_empty() {
-        "per variant, after merging".to_string()
-    } else {
-        methods.join("; ")
     }
 }

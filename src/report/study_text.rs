@@ -1,107 +1,83 @@
 //! Text helpers of the study table: the Table 2 style sigma table, the
-//! per-point detail, what varied and the `[variation]` bounds in words.
+//! per-point detail, what varied and the `[variation]` bounds in words;
+//! the statistics rows of the summary CSVs.
 
-use std::fmt::Write;
-
+use crate::dof::Dof;
+use crate::report::table::{Cell, Column, Table, cells};
 use crate::scene::VariationBounds;
 use crate::study::result::varied_kinds;
-use crate::study::runner::COMPONENTS;
 use crate::study::{Dofs, PointStats, VariantReport};
+
+/// The six sigma columns: `<prefix><dof> [unit]`, nm with 3 decimals, nrad with 2.
+pub(crate) fn sigma_columns(header: impl Fn(Dof) -> String) -> Vec<Column> {
+    Dof::ALL
+        .map(|d| Column::right(header(d)).fixed(if d.is_rotation() { 2 } else { 3 }))
+        .into()
+}
+
+/// Sigma of a point per DOF as cells, and the 90 % interval of each under
+/// it (`[low, high]`), or None without an interval.
+pub(crate) fn sigma_cells(p: &PointStats) -> (Vec<Cell>, Option<Vec<String>>) {
+    let cells = p.sigma.values().map(Cell::Num).into();
+    let (Some(lo), Some(hi)) = (&p.sigma_ci90_low, &p.sigma_ci90_high) else {
+        return (cells, None);
+    };
+    let (lo, hi) = (lo.values(), hi.values());
+    let under = (0..6).map(|k| format!("[{:.2}, {:.2}]", lo[k], hi[k]));
+    (cells, Some(under.collect()))
+}
 
 /// The Table 2 style sigma table of `points(v)` for every variant.
 pub(crate) fn sigma_table(
-    s: &mut String,
     variants: &[VariantReport],
     points: impl Fn(&VariantReport) -> &Vec<PointStats>,
-) {
-    let _ = writeln!(
-        s,
-        "{:<4}{:<46}{:<16}{:>5} {:>13} {:>13} {:>13} {:>17} {:>17} {:>17}",
-        "#",
-        "variant",
-        "point",
-        "n",
-        "sigma_x [nm]",
-        "sigma_y [nm]",
-        "sigma_z [nm]",
-        "sigma_phi_x[nrad]",
-        "sigma_phi_y[nrad]",
-        "sigma_phi_z[nrad]"
-    );
+) -> String {
+    let mut t = Table::new("<#; <variant; <point; >n").with(sigma_columns(|d| d.header("sigma_")));
     for (i, v) in variants.iter().enumerate() {
         if v.partial {
-            let _ = writeln!(
-                s,
-                "{:<4}{:<46}(shard {} of {} samples: run `kinrepro merge` for statistics)",
+            t.note(format!(
+                "{} {}: shard {} of {} samples: run `kinrepro merge` for statistics",
                 i + 1,
                 v.name,
                 v.shard,
                 v.samples
-            );
+            ));
             continue;
         }
         for p in points(v) {
-            let sg = p.sigma.values();
-            let _ = writeln!(
-                s,
-                "{:<4}{:<46}{:<16}{:>5} {:>13.3} {:>13.3} {:>13.3} {:>17.2} {:>17.2} {:>17.2}",
-                i + 1,
-                truncate(&v.name, 45),
-                p.name,
-                p.n,
-                sg[0],
-                sg[1],
-                sg[2],
-                sg[3],
-                sg[4],
-                sg[5]
-            );
-            let (Some(lo), Some(hi)) = (&p.sigma_ci90_low, &p.sigma_ci90_high) else {
-                let _ = writeln!(s, "{:<71}(no interval: {})", "", p.sigma_interval_method);
-                continue;
-            };
-            let (lo, hi) = (lo.values(), hi.values());
-            let ci: Vec<String> = (0..6)
-                .map(|k| {
-                    let w = if k < 3 { 13 } else { 17 };
-                    format!("{:>w$}", format!("[{:.2}, {:.2}]", lo[k], hi[k]))
-                })
-                .collect();
-            let _ = writeln!(s, "{:<71}{}", "", ci.join(" "));
+            let (sigma, under) = sigma_cells(p);
+            let mut row = cells![i + 1, truncate(&v.name, 45), &p.name, p.n];
+            row.extend(sigma);
+            let r = t.row(row);
+            match under {
+                Some(u) => {
+                    r.under([vec![String::new(); 4], u].concat());
+                }
+                None => t.note(format!("  (no interval: {})", p.sigma_interval_method)),
+            }
         }
     }
+    t.text()
 }
 
 /// Mean, min, max, sigma and 3 sigma of every DOF of each point.
-pub(crate) fn detail(s: &mut String, points: &[PointStats]) {
+pub(crate) fn detail(points: &[PointStats]) -> String {
+    let mut s = String::new();
     for p in points {
-        let _ = writeln!(
-            s,
-            "  {:<16} {:<10} {:>12} {:>12} {:>12} {:>12} {:>12}",
-            p.name, "", "mean", "min", "max", "sigma", "+-3 sigma"
-        );
-        let rows = [
-            ("x [nm]", 0),
-            ("y [nm]", 1),
-            ("z [nm]", 2),
-            ("phi_x [nrad]", 3),
-            ("phi_y [nrad]", 4),
-            ("phi_z [nrad]", 5),
-        ];
-        for (label, k) in rows {
-            let _ = writeln!(
-                s,
-                "  {:<16} {:<10} {:>12.3} {:>12.3} {:>12.3} {:>12.3} {:>12.3}",
-                "",
-                label,
-                p.mean.values()[k],
-                p.min.values()[k],
-                p.max.values()[k],
-                p.sigma.values()[k],
-                p.three_sigma.values()[k]
-            );
+        let mut t = Table::of([Column::left(&p.name)])
+            .with(Column::list(
+                "<; >mean:.3; >min:.3; >max:.3; >sigma:.3; >+-3 sigma:.3",
+            ))
+            .indent(2);
+        let values = [p.mean, p.min, p.max, p.sigma, p.three_sigma].map(|d| d.values());
+        for d in Dof::ALL {
+            let mut row = cells!["", d.header("")];
+            row.extend(values.iter().map(|v| Cell::Num(v[d.index()])));
+            t.row(row);
         }
+        s += &t.text();
     }
+    s
 }
 
 /// What varied, in words.
@@ -110,16 +86,37 @@ pub(crate) fn varied(v: &VariantReport) -> String {
     format!("{} ({} inputs)", parts.join(", "), v.inputs.len())
 }
 
+/// The distinct interval methods of `points`, in order, joined by `; `
+/// (`none` where there are none).
+pub(crate) fn interval_methods<'a>(
+    points: impl IntoIterator<Item = &'a PointStats>,
+    none: &str,
+) -> String {
+    let mut m: Vec<&str> = Vec::new();
+    for p in points {
+        if !m.contains(&p.sigma_interval_method.as_str()) {
+            m.push(&p.sigma_interval_method);
+        }
+    }
+    if m.is_empty() {
+        none.to_string()
+    } else {
+        m.join("; ")
+    }
+}
+
 /// The non-zero `[variation]` bounds, in um and mrad.
 pub(crate) fn bounds_text(b: &VariationBounds) -> String {
     let um = |x: f64| format!("{}", x * 1e6);
+    let pm = |v: &[f64]| {
+        v.iter()
+            .map(|x| format!("+-{}", um(*x)))
+            .collect::<Vec<_>>()
+    };
     let mut parts = Vec::new();
     if b.preload_offset_m.iter().any(|x| *x > 0.0) {
-        parts.push(format!(
-            "preload offset +-{}, +-{} um",
-            um(b.preload_offset_m[0]),
-            um(b.preload_offset_m[1])
-        ));
+        let p = pm(&b.preload_offset_m).join(", ");
+        parts.push(format!("preload offset {p} um"));
     }
     if b.preload_tilt_rad > 0.0 {
         parts.push(format!(
@@ -131,13 +128,8 @@ pub(crate) fn bounds_text(b: &VariationBounds) -> String {
         parts.push(format!("ball diameter +-{} um", um(b.ball_diameter_m)));
     }
     if b.ball_position_m.iter().any(|x| *x > 0.0) {
-        let p = b.ball_position_m;
-        parts.push(format!(
-            "ball position +-{}, +-{}, +-{} um",
-            um(p[0]),
-            um(p[1]),
-            um(p[2])
-        ));
+        let p = pm(&b.ball_position_m).join(", ");
+        parts.push(format!("ball position {p} um"));
     }
     if b.surface_normal_m > 0.0 {
         parts.push(format!("surface normal +-{} um", um(b.surface_normal_m)));
@@ -146,11 +138,8 @@ pub(crate) fn bounds_text(b: &VariationBounds) -> String {
         parts.push(format!("surface tilt +-{} mrad", b.surface_tilt_rad * 1e3));
     }
     if b.groove_position_m.iter().any(|x| *x > 0.0) {
-        parts.push(format!(
-            "groove position +-{}, +-{} um",
-            um(b.groove_position_m[0]),
-            um(b.groove_position_m[1])
-        ));
+        let p = pm(&b.groove_position_m).join(", ");
+        parts.push(format!("groove position {p} um"));
     }
     if parts.is_empty() {
         "none".to_string()
@@ -168,22 +157,22 @@ pub(crate) fn truncate(s: &str, n: usize) -> String {
 }
 
 /// The statistics columns of one evaluation point in the summary CSVs of a
-/// study and of a sweep, one string per DOF (`COMPONENTS` order):
-/// `point,dof,unit,n,mean,min,max,sigma,three_sigma,sigma_ci90_low,
-/// sigma_ci90_high,sigma_interval_method`, values in SI (m, rad); no interval
-/// (corners, a single LHS) is an empty field.
-pub(crate) fn point_csv_fields(p: &PointStats) -> Vec<String> {
-    COMPONENTS
+/// study and of a sweep, one row per DOF: `point,dof,unit,n,mean,min,max,
+/// sigma,three_sigma,sigma_ci90_low,sigma_ci90_high,sigma_interval_method`,
+/// values in SI (m, rad); no interval (corners, a single LHS) is an empty
+/// field.
+pub(crate) fn point_csv_rows(p: &PointStats) -> Vec<Vec<String>> {
+    Dof::ALL
         .iter()
-        .enumerate()
-        .map(|(k, comp)| {
-            let (dof, unit) = comp.rsplit_once('_').unwrap_or((comp, ""));
-            let si = |d: &Dofs| format!("{:e}", d.values()[k] * 1e-9);
-            let ci = |d: &Option<Dofs>| d.as_ref().map_or(String::new(), si);
-            format!(
-                "{},{dof},{unit},{},{},{},{},{},{},{},{},{}",
-                csv_field(&p.name),
-                p.n,
+        .map(|d| {
+            let k = d.index();
+            let si = |v: &Dofs| format!("{:e}", v.si()[k]);
+            let ci = |v: &Option<Dofs>| v.as_ref().map_or(String::new(), si);
+            vec![
+                p.name.clone(),
+                d.name().to_string(),
+                d.si_unit().to_string(),
+                p.n.to_string(),
                 si(&p.mean),
                 si(&p.min),
                 si(&p.max),
@@ -191,16 +180,8 @@ pub(crate) fn point_csv_fields(p: &PointStats) -> Vec<String> {
                 si(&p.three_sigma),
                 ci(&p.sigma_ci90_low),
                 ci(&p.sigma_ci90_high),
-                csv_field(&p.sigma_interval_method)
-            )
+                p.sigma_interval_method.clone(),
+            ]
         })
         .collect()
-}
-
-pub(crate) fn csv_field(s: &str) -> String {
-    if s.contains([',', '"', '\n']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
 }

@@ -14,10 +14,11 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use thiserror::Error;
 
+use crate::dof::Dof;
 use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
 use crate::report::atomic::{WriteError, check_overwrite, write_file};
-use crate::report::plot::{Dof, color};
+use crate::report::plot::color;
 use crate::report::sweep_text::short as tick;
 use crate::study::PointStats;
 
@@ -74,12 +75,7 @@ pub fn write_charts(
     dir: &Path,
     force: bool,
 ) -> Result<Vec<String>, SweepPlotError> {
-    std::fs::create_dir_all(dir).map_err(|e| {
-        SweepPlotError::Write(WriteError::Io {
-            path: dir.display().to_string(),
-            reason: e.to_string(),
-        })
-    })?;
+    std::fs::create_dir_all(dir).map_err(|e| WriteError::io(dir, e))?;
     let all = charts(r)?;
     for (t, _) in &all {
         check_overwrite(&dir.join(format!("{t}.svg")), force)?;
@@ -120,21 +116,8 @@ fn svg(
 fn x_of(r: &SweepReport, k: usize, v: &SweptValue) -> f64 {
     match v {
         SweptValue::Number(x) => *x,
-        SweptValue::Name(n) => names(r, k).iter().position(|m| m == n).unwrap_or(0) as f64,
+        SweptValue::Name(_) => levels(r, k).iter().position(|m| m == v).unwrap_or(0) as f64,
     }
-}
-
-/// The distinct names of a material field, in design order.
-fn names(r: &SweepReport, k: usize) -> Vec<String> {
-    let mut out: Vec<String> = Vec::new();
-    for d in &r.designs {
-        if let Some(SweptValue::Name(n)) = d.values.get(&r.sets[k].field)
-            && !out.contains(n)
-        {
-            out.push(n.clone());
-        }
-    }
-    out
 }
 
 fn point<'a>(r: &SweepReport, d: &'a DesignReport) -> Option<&'a PointStats> {
@@ -236,12 +219,9 @@ fn dof_panel(
         .build_cartesian_2d(x0..x1, 0.0..(if ymax > 0.0 { ymax * 1.1 } else { 1.0 }))
         .map_err(draw_err)?;
     let material = r.sets[k].kind == crate::explore::FieldKind::Material;
-    let level_names = names(r, k);
+    let level_names = levels(r, k);
     let fmt = |v: &f64| match material {
-        true => level_names
-            .get(v.round().max(0.0) as usize)
-            .cloned()
-            .unwrap_or_default(),
+        true => (level_names.get(v.round().max(0.0) as usize)).map_or(String::new(), value_tick),
         false => tick(*v),
     };
     chart
@@ -249,7 +229,7 @@ fn dof_panel(
         .label_style(("sans-serif", 12))
         .x_label_formatter(&fmt)
         .x_desc(r.sets[k].field.as_str())
-        .y_desc(format!("σ_{} [{}]", dof.label(), dof.unit()))
+        .y_desc(format!("σ_{} [{}]", dof.symbol(), dof.unit()))
         .draw()
         .map_err(draw_err)?;
     for (gi, (label, g)) in series.iter().enumerate() {

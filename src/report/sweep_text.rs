@@ -2,9 +2,13 @@
 
 use std::fmt::Write;
 
+use crate::dof::nano;
 use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
-use crate::report::study_text::{csv_field, point_csv_fields, truncate};
+use crate::report::study_text::{
+    interval_methods, point_csv_rows, sigma_cells, sigma_columns, truncate,
+};
+use crate::report::table::{Cell, Column, Table, cells};
 use crate::study::provenance::{SCHEMA_VERSION, VERSION};
 
 /// A number in at most 4 significant digits, no trailing zeros (tables
@@ -33,65 +37,59 @@ fn opt(x: Option<f64>) -> String {
     x.map_or(String::new(), |x| format!("{x:e}"))
 }
 
-fn value_text(v: Option<&SweptValue>) -> String {
-    match v {
-        Some(SweptValue::Number(x)) => format!("{x}"),
-        Some(SweptValue::Name(s)) => csv_field(s),
-        None => String::new(),
-    }
-}
-
-fn pareto_text(p: Option<bool>) -> &'static str {
-    match p {
-        Some(true) => "true",
-        Some(false) => "false",
-        None => "",
-    }
-}
-
 impl SweepReport {
     /// One row per design point, evaluation point and DOF (one row with
     /// empty statistics for a design that was not evaluated), SI units.
     pub fn csv(&self) -> String {
-        let fields: Vec<String> = self.sets.iter().map(|s| csv_field(&s.field)).collect();
-        let mut s = format!("{CSV_HEAD},{},{CSV_TAIL}\n", fields.join(","));
+        let fields = self.sets.iter().map(|s| s.field.as_str());
+        let header = CSV_HEAD.split(',').chain(fields).chain(CSV_TAIL.split(','));
+        let mut t = Table::of(header.map(Column::left));
         for d in &self.designs {
-            let head = format!(
-                "{VERSION},{SCHEMA_VERSION},{},{},{},{},{},{},{},{},{},{},{}",
-                self.solver,
-                self.sampler,
-                self.seed,
-                self.samples,
-                self.vary.join("+"),
-                self.design.name(),
-                csv_field(&self.scene),
-                d.index,
-                self.sets
-                    .iter()
-                    .map(|f| value_text(d.values.get(&f.field)))
-                    .collect::<Vec<_>>()
-                    .join(","),
-                csv_field(&d.status),
-                pareto_text(d.pareto)
-            );
-            let tail = format!(
-                "{},{},{},{},{}",
-                opt(d.principal_stiffness_n_per_m.map(|k| k[0])),
-                opt(d.min_pressure_safety_factor),
-                opt(d.friction_limit),
-                opt(d.friction_limit_margin),
-                opt(d.nominal_approach_m)
-            );
-            if d.points.is_empty() {
-                let _ = writeln!(s, "{head},,,,,,,,,,,,,,{tail}");
-            }
-            for p in &d.points {
-                for stats in point_csv_fields(p) {
-                    let _ = writeln!(s, "{head},{stats},{tail}");
-                }
+            let values = self.sets.iter().map(|f| match d.values.get(&f.field) {
+                Some(SweptValue::Number(x)) => format!("{x}"),
+                Some(SweptValue::Name(s)) => s.clone(),
+                None => String::new(),
+            });
+            let pareto = d.pareto.map_or(String::new(), |p| p.to_string());
+            let head: Vec<String> = [VERSION.to_string(), SCHEMA_VERSION.to_string()]
+                .into_iter()
+                .chain([self.solver.clone(), self.sampler.to_string()])
+                .chain([
+                    self.seed.to_string(),
+                    self.samples.to_string(),
+                    self.vary.join("+"),
+                ])
+                .chain([
+                    self.design.name().to_string(),
+                    self.scene.clone(),
+                    d.index.to_string(),
+                ])
+                .chain(values)
+                .chain([d.status.clone(), pareto])
+                .collect();
+            let tail = [
+                d.principal_stiffness_n_per_m.map(|k| k[0]),
+                d.min_pressure_safety_factor,
+                d.friction_limit,
+                d.friction_limit_margin,
+                d.nominal_approach_m,
+            ]
+            .map(opt);
+            let stats = match d.points.is_empty() {
+                true => vec![vec![String::new(); 12]],
+                false => d.points.iter().flat_map(point_csv_rows).collect(),
+            };
+            for st in stats {
+                t.row(
+                    head.iter()
+                        .chain(&st)
+                        .chain(&tail)
+                        .map(Into::into)
+                        .collect(),
+                );
             }
         }
-        s
+        t.csv()
     }
 
     /// The terminal table: one block per design point.
@@ -109,35 +107,25 @@ impl SweepReport {
             self.name,
             self.scene,
             sets.join("; "),
-            self.interval_method(),
+            interval_methods(
+                self.designs.iter().flat_map(|d| &d.points),
+                "no design evaluated"
+            ),
             self.pareto_point
         );
         let _ = writeln!(s);
-        let _ = writeln!(
-            s,
-            "{:<5}{:<34}{:<16}{:>14}{:>14}{:>14}{:>18}{:>18}{:>18}{:>10}{:>8}{:>8}{:>9}{:>10} P",
-            "#",
-            "values",
-            "point",
-            "σx [nm]",
-            "σy [nm]",
-            "σz [nm]",
-            "σφx [nrad]",
-            "σφy [nrad]",
-            "σφz [nrad]",
-            "k_min",
-            "SF_p",
-            "mu_lim",
-            "margin",
-            "appr [nm]"
-        );
+        let sigma = sigma_columns(|d| format!("σ{} [{}]", d.symbol(), d.unit()));
+        let tail = Column::list(">k_min:.2; >SF_p:.2; >mu_lim:.4; >margin:.4; >appr [nm]:.1; <P");
+        let mut t = Table::new("<#; <values; <point").with(sigma).with(tail);
         for d in &self.designs {
-            self.design_rows(&mut s, d);
+            self.design_rows(&mut t, d);
         }
-        s
+        s + &t.text()
     }
 
-    fn design_rows(&self, s: &mut String, d: &DesignReport) {
+    /// The rows of one design point: one per evaluation point with its
+    /// interval under it; the nominal seating's columns on the first.
+    fn design_rows(&self, t: &mut Table, d: &DesignReport) {
         let values: Vec<String> = self
             .sets
             .iter()
@@ -147,92 +135,37 @@ impl SweepReport {
                 None => String::new(),
             })
             .collect();
-        let values = truncate(&values.join(", "), 33);
-        let num = |x: Option<f64>, p: usize| x.map_or("-".to_string(), |x| format!("{x:.p$}"));
-        let tail = format!(
-            "{:>10}{:>8}{:>8}{:>9}{:>10} {}",
-            num(d.principal_stiffness_n_per_m.map(|k| k[0] * 1e-6), 2),
-            num(d.min_pressure_safety_factor, 2),
-            num(d.friction_limit, 4),
-            num(d.friction_limit_margin, 4),
-            num(d.nominal_approach_m.map(|a| a * 1e9), 1),
-            match d.pareto {
-                Some(true) => "*",
-                _ => "",
-            }
-        );
+        let tail = cells![
+            d.principal_stiffness_n_per_m.map(|k| k[0] * 1e-6),
+            d.min_pressure_safety_factor,
+            d.friction_limit,
+            d.friction_limit_margin,
+            d.nominal_approach_m.map(nano),
+            if d.pareto == Some(true) { "*" } else { "" },
+        ];
+        let mut head = cells![d.index, truncate(&values.join(", "), 33)];
         if d.points.is_empty() {
-            let _ = writeln!(
-                s,
-                "{:<5}{:<34}{:<112}{tail}",
-                d.index,
-                values,
-                truncate(&d.status, 111)
-            );
+            let blank = std::iter::repeat_n(Cell::from(""), 7);
+            t.row(head.into_iter().chain(blank).chain(tail).collect());
+            t.note(format!("  {}", d.status));
             return;
         }
         for (i, p) in d.points.iter().enumerate() {
-            let sg = p.sigma.values();
-            let _ = writeln!(
-                s,
-                "{:<5}{:<34}{:<16}{:>14.3}{:>14.3}{:>14.3}{:>18.2}{:>18.2}{:>18.2}{}",
-                if i == 0 {
-                    d.index.to_string()
-                } else {
-                    String::new()
-                },
-                if i == 0 { values.as_str() } else { "" },
-                truncate(&p.name, 15),
-                sg[0],
-                sg[1],
-                sg[2],
-                sg[3],
-                sg[4],
-                sg[5],
-                if i == 0 { tail.as_str() } else { "" }
-            );
-            if let (Some(lo), Some(hi)) = (&p.sigma_ci90_low, &p.sigma_ci90_high) {
-                let (lo, hi) = (lo.values(), hi.values());
-                let ci: Vec<String> = (0..6)
-                    .map(|k| {
-                        let w = if k < 3 { 14 } else { 18 };
-                        format!("{:>w$}", format!("[{:.2}, {:.2}]", lo[k], hi[k]))
-                    })
-                    .collect();
-                let _ = writeln!(s, "{:<55}{}", "", ci.join(""));
-            } else {
-                let _ = writeln!(s, "{:<55}(no interval: {})", "", p.sigma_interval_method);
+            let (sigma, under) = sigma_cells(p);
+            let mut row = std::mem::replace(&mut head, cells!["", ""]);
+            row.push(truncate(&p.name, 15).into());
+            row.extend(sigma);
+            match i {
+                0 => row.extend(tail.iter().cloned()),
+                _ => row.extend(std::iter::repeat_n(Cell::from(""), tail.len())),
+            }
+            let r = t.row(row);
+            match under {
+                Some(u) => {
+                    r.under([vec![String::new(); 3], u, vec![String::new(); 6]].concat());
+                }
+                None => t.note(format!("  (no interval: {})", p.sigma_interval_method)),
             }
         }
-    }
-
-    /// The interval methods of the evaluated designs.
-    fn interval_method(&self) -> String {
-        let mut m: Vec<&str> = Vec::new();
-        for p in self.designs.iter().flat_map(|d| &d.points) {
-            if !m.contains(&p.sigma_interval_method.as_str()) {
-                m.push(&p.sigma_interval_method);
-            }
-        }
-        if m.is_empty() {
-            "no design evaluated".to_string()
-        } else {
-            m.join("; ")
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::short;
-
-    #[test]
-    fn short_numbers() {
-        assert_eq!(short(5.0), "5");
-        assert_eq!(short(16.666666666666664), "16.67");
-        assert_eq!(short(0.005), "0.005");
-        assert_eq!(short(0.0), "0");
-        assert_eq!(short(-2.5), "-2.5");
-        assert_eq!(short(2.1e11), "2.100e11");
     }
 }

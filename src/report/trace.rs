@@ -5,25 +5,30 @@
 //! schema N), solver dynamic, one seating of SCENE (NAME)`), as the study's
 //! per-sample CSV does; the header follows.
 //!
-//! Columns: `time_s, load_fraction, x_m, y_m, z_m, phi_x_rad, phi_y_rad,
-//! phi_z_rad, kinetic_energy_j`, then per contact k = 1..6 `fn{k}_n` (normal
+//! Columns: `time_s`, `load_fraction`, the six DOFs of the first
+//! evaluation point from the unloaded touching pose ([`Dof::si_key`]: `x_m`,
+//! ...), `kinetic_energy_j`, then per contact k = 1..6 `fn{k}_n` (normal
 //! force, dashpot included), `ft{k}_n` (tangential force magnitude, dashpot
 //! included), `approach{k}_m` (Hertz approach, negative = open) and
-//! `state{k}` (open | stick | slip). The pose is that of the first
-//! evaluation point, from the unloaded touching pose.
+//! `state{k}` (open | stick | slip). Rows through the `csv` crate.
 
 use std::io::Write;
 
 use crate::assembly::Coupling;
+use crate::dof::Dof;
 use crate::solve::PointPose;
 use crate::solve::dynamic::TraceSample;
 use crate::study::provenance::{SCHEMA_VERSION, VERSION};
 
 /// Writes trace samples as CSV rows.
 pub struct TraceWriter<W: Write> {
-    out: W,
+    out: csv::Writer<W>,
     point: nalgebra::Vector3<f64>,
     touching: crate::assembly::BodyPose,
+}
+
+fn io(e: csv::Error) -> std::io::Error {
+    std::io::Error::other(e)
 }
 
 impl<W: Write> TraceWriter<W> {
@@ -35,13 +40,15 @@ impl<W: Write> TraceWriter<W> {
             "# kinrepro {VERSION} (output schema {SCHEMA_VERSION}), solver dynamic, one seating of {} ({})",
             coupling.scene.file, coupling.scene.name
         )?;
-        let mut head = String::from(
-            "time_s,load_fraction,x_m,y_m,z_m,phi_x_rad,phi_y_rad,phi_z_rad,kinetic_energy_j",
-        );
+        let mut out = csv::Writer::from_writer(out);
+        let mut head = vec!["time_s".to_string(), "load_fraction".to_string()];
+        head.extend(Dof::ALL.map(Dof::si_key));
+        head.push("kinetic_energy_j".to_string());
         for k in 1..=coupling.contacts.len() {
-            head.push_str(&format!(",fn{k}_n,ft{k}_n,approach{k}_m,state{k}"));
+            head.extend([format!("fn{k}_n"), format!("ft{k}_n")]);
+            head.extend([format!("approach{k}_m"), format!("state{k}")]);
         }
-        writeln!(out, "{head}")?;
+        out.write_record(&head).map_err(io)?;
         Ok(TraceWriter {
             out,
             point: coupling.scene.evaluation_points[0].position,
@@ -52,33 +59,19 @@ impl<W: Write> TraceWriter<W> {
     /// Write one sample.
     pub fn write(&mut self, s: &TraceSample) -> std::io::Result<()> {
         let p = PointPose::between(&self.touching, &s.pose, &self.point);
-        let mut row = format!(
-            "{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
-            s.time,
-            s.load_fraction,
-            p.x_m,
-            p.y_m,
-            p.z_m,
-            p.phi_x_rad,
-            p.phi_y_rad,
-            p.phi_z_rad,
-            s.kinetic_energy
-        );
+        let e = |v: f64| format!("{v:e}");
+        let mut row = vec![e(s.time), e(s.load_fraction)];
+        row.extend(p.components().map(e));
+        row.push(e(s.kinetic_energy));
         for c in &s.contacts {
-            row.push_str(&format!(
-                ",{:e},{:e},{:e},{}",
-                c.normal_force,
-                c.tangential_force,
-                c.approach,
-                c.state.name()
-            ));
+            row.extend([e(c.normal_force), e(c.tangential_force), e(c.approach)]);
+            row.push(c.state.name().to_string());
         }
-        writeln!(self.out, "{row}")
+        self.out.write_record(&row).map_err(io)
     }
 
     /// Flush and return the sink.
-    pub fn finish(mut self) -> std::io::Result<W> {
-        self.out.flush()?;
-        Ok(self.out)
+    pub fn finish(self) -> std::io::Result<W> {
+        self.out.into_inner().map_err(|e| e.into_error())
     }
 }

@@ -1,30 +1,20 @@
 //! The table printed by `kinrepro validate-hertz`.
 
-use std::fmt::Write;
-
 use crate::fe::pairs::PairValidation;
+use crate::report::table::{Table, cells};
+
+/// `a, b` with two decimals.
+fn pair(a: f64, b: f64) -> String {
+    format!("{a:.2}, {b:.2}")
+}
 
 /// One row per pair: loads, FE and Hertz approach and semi-axes, errors in %.
 pub fn table(rows: &[PairValidation]) -> String {
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "FE (27-node hexahedra, Boussinesq far field, frictionless Signorini contact) against kinrepro's Hertz law,\nat the largest normal load each pair reaches in the nominal seating. Errors are FE/Hertz - 1.\n"
+    let s = String::from(
+        "FE (27-node hexahedra, Boussinesq far field, frictionless Signorini contact) against kinrepro's Hertz law,\nat the largest normal load each pair reaches in the nominal seating. Errors are FE/Hertz - 1.\n\n",
     );
-    let _ = writeln!(
-        s,
-        "{:<16} {:>13} {:<26} {:>8} {:>13} {:>8} {:>17} {:>15} {:>8} {:>8} {:>7}",
-        "pair",
-        "radii [mm]",
-        "materials",
-        "F_n [N]",
-        "approach [nm]",
-        "err [%]",
-        "semi-axes [um]",
-        "err x, y [%]",
-        "h [um]",
-        "DOFs",
-        "t [s]"
+    let mut t = Table::new(
+        "<pair; >radii [mm]; <materials; >F_n [N]:.4; >approach [nm]:.3; >err [%]:.3; >semi-axes [um]; >err x, y [%]; >h [um]:.2; >DOFs; >t [s]:.1",
     );
     for r in rows {
         let radii = match r.radii_m {
@@ -32,52 +22,40 @@ pub fn table(rows: &[PairValidation]) -> String {
             [Some(a), None] => format!("{:.2}/plane", a * 1e3),
             _ => "-".into(),
         };
-        let _ = writeln!(
-            s,
-            "{:<16} {:>13} {:<26} {:>8.4} {:>13.3} {:>8.3} {:>17} {:>15} {:>8.2} {:>8} {:>7.1}",
+        let (a, e) = (r.fe_semi_axes_m, r.semi_axes_error_rel);
+        t.row(cells![
             r.shape.name(),
             radii,
             format!("{}/{}", r.materials[0], r.materials[1]),
             r.load_n,
-            r.fe_approach_m * 1e9,
+            crate::dof::nano(r.fe_approach_m),
             100.0 * r.approach_error_rel,
-            format!(
-                "{:.2}, {:.2}",
-                r.fe_semi_axes_m[0] * 1e6,
-                r.fe_semi_axes_m[1] * 1e6
-            ),
-            format!(
-                "{:.2}, {:.2}",
-                100.0 * r.semi_axes_error_rel[0],
-                100.0 * r.semi_axes_error_rel[1]
-            ),
+            pair(a[0] * 1e6, a[1] * 1e6),
+            pair(100.0 * e[0], 100.0 * e[1]),
             r.element_size_m * 1e6,
             r.dofs,
-            r.seconds
-        );
-        if !r.convergence.is_empty() {
-            let _ = writeln!(
-                s,
-                "    mesh convergence: {:>10} {:>10} {:>9} {:>12} {:>16} {:>7}",
-                "h [um]", "b/h", "DOFs", "approach [%]", "semi-axes [%]", "t [s]"
-            );
-            for c in &r.convergence {
-                let _ = writeln!(
-                    s,
-                    "                      {:>10.2} {:>10.1} {:>9} {:>12.3} {:>16} {:>7.1}",
-                    c.element_size * 1e6,
-                    1.0 / c.element_size_over_a,
-                    c.dofs,
-                    100.0 * c.approach_error_rel,
-                    format!(
-                        "{:.2}, {:.2}",
-                        100.0 * c.semi_axis_error_rel[0],
-                        100.0 * c.semi_axis_error_rel[1]
-                    ),
-                    c.seconds
-                );
-            }
+            r.seconds,
+        ]);
+        if r.convergence.is_empty() {
+            continue;
+        }
+        let mut c =
+            Table::new(">h [um]:.2; >b/h:.1; >DOFs; >approach [%]:.3; >semi-axes [%]; >t [s]:.1");
+        for k in &r.convergence {
+            let e = k.semi_axis_error_rel;
+            c.row(cells![
+                k.element_size * 1e6,
+                1.0 / k.element_size_over_a,
+                k.dofs,
+                100.0 * k.approach_error_rel,
+                pair(100.0 * e[0], 100.0 * e[1]),
+                k.seconds,
+            ]);
+        }
+        for (i, line) in c.text().lines().enumerate() {
+            let label = if i == 0 { "mesh convergence:" } else { "" };
+            t.note(format!("    {label:<17} {line}"));
         }
     }
-    s
+    s + &t.text()
 }

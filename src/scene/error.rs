@@ -16,7 +16,6 @@ pub struct SceneError {
     pub line: Option<usize>,
     /// Dotted field path, e.g. `coupling.ball_diameter` or `surfaces[3].radius`.
     pub field: String,
-    /// Why it is wrong.
     pub reason: String,
 }
 

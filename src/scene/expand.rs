@@ -50,18 +50,11 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
         .map(|k| surface(c, &dims, &k, &centres[k.ball]))
         .collect();
     Ok(SceneFile {
-        name: raw.name.clone(),
-        allow_large_values: raw.allow_large_values,
-        materials: raw.materials.clone(),
         coupling: None,
         balls,
         surfaces,
-        preload: raw.preload.clone(),
-        friction: raw.friction.clone(),
-        study: raw.study.clone(),
         evaluation_points: evaluation_points(raw, c, &centres),
-        dynamics: raw.dynamics.clone(),
-        variation: raw.variation.clone(),
+        ..raw.clone()
     })
 }
 
@@ -157,7 +150,6 @@ fn ball_centres(diameter: f64) -> Vec<Vector3<f64>> {
 
 /// One contact of the expanded coupling.
 struct ContactSpec {
-    /// Index of its ball.
     ball: usize,
     /// Contact normal (unit, from the fixed element to the ball).
     normal: Vector3<f64>,

@@ -34,7 +34,6 @@ pub struct Ball {
     pub line: Option<usize>,
 }
 
-/// The geometry of a fixed surface.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum SurfaceGeometry {
     /// Half-space below `point` with unit outward `normal` (towards the ball).

@@ -245,32 +245,3 @@ pub fn evaluate_into(
     out.normal_force = fn_;
     out.normal_stiffness = kn;
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use nalgebra::UnitQuaternion;
-
-    #[test]
-    fn motion_is_the_committed_pose_of_the_material_point() {
-        // du = p - T_c T^-1 p by the two rigid maps applied one after the other.
-        let pose = BodyPose {
-            rotation: UnitQuaternion::from_scaled_axis(Vector3::new(1e-3, -2e-3, 0.5)),
-            translation: Vector3::new(1e-6, 2e-6, -3e-6),
-        };
-        let committed = pose.moved(
-            &Vector3::new(2e-8, -1e-8, 3e-8),
-            &Vector3::new(1e-7, 3e-7, -2e-7),
-        );
-        let motion = Motion::between(&pose, &committed);
-        for p in [
-            Vector3::new(0.04, 0.0, 0.0),
-            Vector3::new(-0.02, 0.035, -0.005),
-        ] {
-            let body = pose.rotation.inverse() * (p - pose.translation);
-            let direct = p - committed.apply(&body);
-            assert!(direct.norm() > 1e-9);
-            assert!((motion.displacement(&p) - direct).norm() < 1e-17, "{p}");
-        }
-    }
-}

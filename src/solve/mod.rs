@@ -160,10 +160,10 @@ impl ContactResult {
         );
         ContactResult {
             normal_force_n: e.normal_force,
-            tangential_force: [ft.x, ft.y, ft.z],
+            tangential_force: ft.into(),
             tangential_force_n: ft.norm(),
             approach_m: e.approach,
-            hertz_approach_m: contact.normal.hertz_approach(e.normal_force),
+            hertz_approach_m: contact.normal.hertz.approach(e.normal_force),
             support_approach_m: contact.normal.support_approach(e.normal_force),
             support_compliance_m_per_n: contact.normal.compliance,
             state: e.slip(),
@@ -178,17 +178,12 @@ impl ContactResult {
             shear_safety_factor: stress.shear_safety_factor,
             safety_factor: stress.safety_factor,
             safety_factor_left_out: stress.left_out,
-            point_m: [e.geometry.point.x, e.geometry.point.y, e.geometry.point.z],
-            normal: [
-                e.geometry.normal.x,
-                e.geometry.normal.y,
-                e.geometry.normal.z,
-            ],
+            point_m: e.geometry.point.into(),
+            normal: e.geometry.normal.into(),
         }
     }
 }
 
-/// The result of one seating.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Seating {
     /// Final pose of the moving half.
@@ -237,7 +232,6 @@ pub enum SeatingPath {
     /// The quasi-static path halved an increment (at a stick/slip change
     /// or where Newton failed).
     Adaptive,
-    /// The dynamic solver.
     Dynamic,
 }
 
@@ -252,51 +246,17 @@ impl SeatingPath {
     }
 }
 
-/// Pose of an evaluation point relative to a reference pose: translation of
-/// the point and the rotation vector of R R_ref^-1 (finite rotation). All
-/// six components enter a study ([`PointPose::components`]); phi_z is the
-/// clocking about the coupling axis.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct PointPose {
-    pub x_m: f64,
-    pub y_m: f64,
-    pub z_m: f64,
-    pub phi_x_rad: f64,
-    pub phi_y_rad: f64,
-    pub phi_z_rad: f64,
-}
+/// Pose of an evaluation point relative to a reference pose.
+pub use crate::dof::PointPose;
 
 impl PointPose {
-    /// Motion of body point `p` (scene coordinates) from pose `from` to pose `to`.
+    /// Motion of body point `p` (scene coordinates) from pose `from` to pose
+    /// `to`: translation of the point and the rotation vector of
+    /// R R_ref^-1 (finite rotation).
     pub fn between(from: &BodyPose, to: &BodyPose, p: &Vector3<f64>) -> Self {
         let d = to.apply(p) - from.apply(p);
         let phi = (to.rotation * from.rotation.inverse()).scaled_axis();
-        PointPose {
-            x_m: d.x,
-            y_m: d.y,
-            z_m: d.z,
-            phi_x_rad: phi.x,
-            phi_y_rad: phi.y,
-            phi_z_rad: phi.z,
-        }
-    }
-
-    /// The five components [x, y, z, phi_x, phi_y] of the paper's Table 2.
-    pub fn evaluated(&self) -> [f64; 5] {
-        [self.x_m, self.y_m, self.z_m, self.phi_x_rad, self.phi_y_rad]
-    }
-
-    /// All six components [x, y, z, phi_x, phi_y, phi_z] (m, rad), the
-    /// order of `study::runner::COMPONENTS`.
-    pub fn components(&self) -> [f64; 6] {
-        [
-            self.x_m,
-            self.y_m,
-            self.z_m,
-            self.phi_x_rad,
-            self.phi_y_rad,
-            self.phi_z_rad,
-        ]
+        PointPose::from_components([d.x, d.y, d.z, phi.x, phi.y, phi.z])
     }
 }
 

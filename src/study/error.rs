@@ -37,7 +37,6 @@ pub enum StudyError {
     /// A `--shard` argument could not be parsed.
     #[error("cannot parse shard '{0}': expected INDEX/COUNT, e.g. 3/8")]
     ShardParse(String),
-    /// Unknown sampler name.
     #[error("unknown sampler '{0}': expected lhs, mc or corners")]
     UnknownSampler(String),
     /// Statistics need at least two samples.
@@ -70,7 +69,6 @@ pub enum StudyError {
     /// Stored inputs differ from the regenerated design.
     #[error("sample {0}: stored inputs differ from the regenerated design")]
     InputsMismatch(usize),
-    /// Nothing to plot.
     #[error("nothing to plot: {0}")]
     NothingToPlot(String),
     /// Error reported by the plotting backend.
@@ -78,5 +76,4 @@ pub enum StudyError {
     Plot(String),
 }
 
-/// Result alias of the study module.
 pub type Result<T> = std::result::Result<T, StudyError>;

@@ -3,12 +3,15 @@
 //! `study::runner` for how a design row maps onto them.
 
 use nalgebra::{UnitQuaternion, Vector3};
+use serde::{Deserialize, Serialize};
 
 use crate::assembly::{AssemblyError, Coupling};
+use crate::dof::Dof;
 use crate::scene::{Scene, SurfaceGeometry};
 
-/// One varied quantity: a column of the design.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// One varied quantity: a column of the design. In JSON and CSV its
+/// [`Input::name`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Input {
     /// Static coefficient of contact k (0-based).
     Mu(usize),
@@ -30,41 +33,94 @@ pub enum Input {
     GroovePosition(usize, usize),
 }
 
+/// What an input varies (the `--vary` kinds).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum InputKind {
+    Friction,
+    Preload,
+    Start,
+    /// A manufacturing tolerance (interchangeability input).
+    Tolerance,
+}
+
 impl Input {
-    /// True for the manufacturing tolerances (interchangeability inputs).
-    pub fn is_tolerance(&self) -> bool {
-        matches!(
-            self,
-            Input::BallDiameter(_)
-                | Input::BallPosition(..)
-                | Input::SurfaceNormal(_)
-                | Input::SurfaceTilt(_)
-                | Input::GroovePosition(..)
-        )
+    pub fn kind(&self) -> InputKind {
+        match self {
+            Input::Mu(_) => InputKind::Friction,
+            Input::PreloadOffset(_) | Input::PreloadTilt(_) => InputKind::Preload,
+            Input::Start(_) => InputKind::Start,
+            _ => InputKind::Tolerance,
+        }
     }
 
-    /// The column name (SI unit as suffix).
+    /// True for the manufacturing tolerances (interchangeability inputs).
+    pub fn is_tolerance(&self) -> bool {
+        self.kind() == InputKind::Tolerance
+    }
+
+    /// The column name (SI unit as suffix), e.g. `mu_1`, `ball_2_x_m`.
     pub fn name(&self) -> String {
-        const XYZ: [&str; 3] = ["x", "y", "z"];
+        let axis = Dof::axis;
         match *self {
             Input::Mu(k) => format!("mu_{}", k + 1),
-            Input::PreloadOffset(a) => format!("preload_{}_m", XYZ[a]),
-            Input::PreloadTilt(a) => format!("preload_tilt_{}_rad", XYZ[a]),
-            Input::Start(j) => [
-                "offset_x_m",
-                "offset_y_m",
-                "offset_z_m",
-                "tilt_x_rad",
-                "tilt_y_rad",
-                "tilt_z_rad",
-            ][j]
-                .to_string(),
+            Input::PreloadOffset(a) => format!("preload_{}_m", axis(a)),
+            Input::PreloadTilt(a) => format!("preload_tilt_{}_rad", axis(a)),
+            Input::Start(j) if j < 3 => format!("offset_{}_m", axis(j)),
+            Input::Start(j) => format!("tilt_{}_rad", axis(j - 3)),
             Input::BallDiameter(b) => format!("ball_{}_diameter_m", b + 1),
-            Input::BallPosition(b, a) => format!("ball_{}_{}_m", b + 1, XYZ[a]),
+            Input::BallPosition(b, a) => format!("ball_{}_{}_m", b + 1, axis(a)),
             Input::SurfaceNormal(s) => format!("surface_{}_normal_m", s + 1),
             Input::SurfaceTilt(s) => format!("surface_{}_tilt_rad", s + 1),
-            Input::GroovePosition(b, a) => format!("groove_{}_{}_m", b + 1, XYZ[a]),
+            Input::GroovePosition(b, a) => format!("groove_{}_{}_m", b + 1, axis(a)),
         }
+    }
+
+    /// The input named `name` ([`Input::name`] read back).
+    pub fn from_name(name: &str) -> Option<Input> {
+        // The only number in a name is the 1-based index of a contact,
+        // ball or surface; the candidates with that index name every input.
+        let k = name.split('_').find_map(|p| p.parse::<usize>().ok());
+        let k = k.unwrap_or(1).checked_sub(1)?;
+        let axes = |f: fn(usize, usize) -> Input| (0..3).map(move |a| f(k, a));
+        [Input::Mu(k), Input::BallDiameter(k)]
+            .into_iter()
+            .chain([Input::SurfaceNormal(k), Input::SurfaceTilt(k)])
+            .chain(axes(Input::BallPosition).chain(axes(Input::GroovePosition)))
+            .chain((0..2).flat_map(|a| [Input::PreloadOffset(a), Input::PreloadTilt(a)]))
+            .chain((0..6).map(Input::Start))
+            .find(|i| i.name() == name)
+    }
+}
+
+impl std::fmt::Display for Input {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.name())
+    }
+}
+
+impl PartialEq<str> for Input {
+    fn eq(&self, name: &str) -> bool {
+        self.name() == name
+    }
+}
+
+impl PartialEq<&str> for Input {
+    fn eq(&self, name: &&str) -> bool {
+        self.name() == *name
+    }
+}
+
+impl Serialize for Input {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&self.name())
+    }
+}
+
+impl<'de> Deserialize<'de> for Input {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let name = String::deserialize(d)?;
+        Input::from_name(&name)
+            .ok_or_else(|| serde::de::Error::custom(format!("unknown input `{name}`")))
     }
 }
 

@@ -11,10 +11,11 @@
 use serde::{Deserialize, Serialize};
 
 use super::DesignSpec;
+use super::inputs::Input;
 use super::runner::StudyOptions;
 use crate::assembly::Coupling;
 
-/// Version of the output schema (docs/output.md). 2: phi_z evaluated, JSON
+/// Version of the output schema (docs/output.md). 2: the clocking about z evaluated, JSON
 /// records with `inputs_si` and `design_u`, provenance and fingerprint.
 pub const SCHEMA_VERSION: u32 = 2;
 
@@ -36,7 +37,7 @@ pub struct Fingerprint {
     pub seed: u64,
     pub samples: usize,
     /// Independent LHS replicates of the design (1 for MC, corners, a single LHS).
-    #[serde(default = "one")]
+    #[serde(default = "super::sampling::one")]
     pub replicates: usize,
     /// Names of the varied inputs (design columns), in row order.
     pub vary: Vec<String>,
@@ -77,7 +78,12 @@ impl Fingerprint {
             seed: design.seed,
             samples: design.n,
             replicates: design.replicates,
-            vary: opts.variation.input_names(coupling),
+            vary: opts
+                .variation
+                .inputs(coupling)
+                .iter()
+                .map(Input::name)
+                .collect(),
             mu_static: s.friction.mu_static,
             spread: s.friction.spread,
             dynamic_ratio: s.friction.dynamic_ratio,
@@ -130,10 +136,6 @@ impl Fingerprint {
     }
 }
 
-fn one() -> usize {
-    1
-}
-
 fn q(s: &str) -> String {
     format!("\"{s}\"")
 }
@@ -157,17 +159,4 @@ pub fn produced_by(solver: &str, sampler: &str, seed: &str, samples: &str, vary:
     format!(
         "kinrepro {VERSION} (output schema {SCHEMA_VERSION}), solver {solver}, sampler {sampler}, seed {seed}, samples {samples}, vary {vary}"
     )
-}
-
-#[cfg(test)]
-mod tests {
-    use super::fnv1a64;
-
-    #[test]
-    fn fnv1a64_matches_published_vectors() {
-        // Test vectors of the FNV reference (Noll, "FNV hash", test suite).
-        assert_eq!(fnv1a64(b""), 0xcbf2_9ce4_8422_2325);
-        assert_eq!(fnv1a64(b"a"), 0xaf63_dc4c_8601_ec8c);
-        assert_eq!(fnv1a64(b"foobar"), 0x8594_4171_f739_67e8);
-    }
 }

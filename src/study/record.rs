@@ -1,6 +1,7 @@
 //! The values a study reports per sample and per DOF: [`StudyRecord`] (one
 //! sample: physical inputs, design coordinates, outputs, all SI) and
-//! [`Dofs`] (six DOFs in nm and nrad). Field meanings: docs/output.md.
+//! [`PointStats`] (statistics in nm and nrad, [`Dofs`]). Field meanings:
+//! docs/output.md.
 
 use serde::{Deserialize, Serialize};
 
@@ -8,43 +9,7 @@ use super::runner::Variation;
 use super::stats::SampleRecord;
 use crate::assembly::Coupling;
 
-/// Six DOFs in human units: x, y, z [nm], phi_x, phi_y, phi_z [nrad]
-/// (phi_z: clocking about z).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct Dofs {
-    pub x_nm: f64,
-    pub y_nm: f64,
-    pub z_nm: f64,
-    pub phi_x_nrad: f64,
-    pub phi_y_nrad: f64,
-    pub phi_z_nrad: f64,
-}
-
-impl Dofs {
-    /// From six SI values (m, m, m, rad, rad, rad).
-    pub fn from_si(v: [f64; 6]) -> Self {
-        Dofs {
-            x_nm: v[0] * 1e9,
-            y_nm: v[1] * 1e9,
-            z_nm: v[2] * 1e9,
-            phi_x_nrad: v[3] * 1e9,
-            phi_y_nrad: v[4] * 1e9,
-            phi_z_nrad: v[5] * 1e9,
-        }
-    }
-
-    /// The six values in nm and nrad, in the order of `COMPONENTS`.
-    pub fn values(&self) -> [f64; 6] {
-        [
-            self.x_nm,
-            self.y_nm,
-            self.z_nm,
-            self.phi_x_nrad,
-            self.phi_y_nrad,
-            self.phi_z_nrad,
-        ]
-    }
-}
+pub use crate::dof::Dofs;
 
 /// One sample of a study as written to JSON: the physical values of the
 /// varied inputs (SI), the design coordinates in [0, 1] and the outputs (SI).

@@ -8,6 +8,7 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use super::inputs::{Input, InputKind};
 use super::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, produced_by};
 use super::record::{PointStats, StudyRecord};
 use super::runner::{RunError, StartBounds, StudyOptions, VariantRun, Variation};
@@ -80,10 +81,9 @@ pub struct VariantReport {
     /// Preload ramp duration [s] (the time base of the decay law's slip velocity).
     #[serde(default = "default_ramp_time")]
     pub ramp_time_s: f64,
-    /// The seating solver.
     pub solver: String,
-    /// What varied: the names of the design dimensions, in row order.
-    pub inputs: Vec<String>,
+    /// What varied: the design dimensions, in row order.
+    pub inputs: Vec<Input>,
     /// Start-pose bounds when the start varied: offset half-widths (z: largest
     /// height) [m] and tilt half-widths [rad].
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -120,7 +120,6 @@ pub struct StudyReport {
     /// schema versions existed.
     #[serde(default)]
     pub schema_version: u32,
-    /// The kinrepro that wrote it.
     #[serde(default)]
     pub kinrepro_version: String,
     /// Solver, seed, sampler and sample count of every variant (null if the
@@ -138,29 +137,17 @@ pub struct StudyReport {
     pub variants: Vec<VariantReport>,
 }
 
-/// True for the names of tolerance inputs.
-pub(crate) fn is_tolerance_input(name: &str) -> bool {
-    ["ball_", "surface_", "groove_"]
-        .iter()
-        .any(|p| name.starts_with(p))
-}
-
 /// The `--vary` names of what a variation varies.
 pub fn varied_kinds(var: &Variation) -> Vec<&'static str> {
-    let mut parts = Vec::new();
-    if var.friction {
-        parts.push("friction");
-    }
-    if var.preload {
-        parts.push("preload");
-    }
-    if var.start.is_some() {
-        parts.push("start");
-    }
-    if var.tolerances {
-        parts.push("tolerances");
-    }
-    parts
+    [
+        (var.friction, "friction"),
+        (var.preload, "preload"),
+        (var.start.is_some(), "start"),
+        (var.tolerances, "tolerances"),
+    ]
+    .into_iter()
+    .filter_map(|(on, kind)| on.then_some(kind))
+    .collect()
 }
 
 impl VariantReport {
@@ -203,7 +190,7 @@ impl VariantReport {
             friction_law: f.law,
             ramp_time_s: coupling.scene.preload.ramp_time,
             solver: opts.method.name().to_string(),
-            inputs: var.input_names(coupling),
+            inputs: var.inputs(coupling),
             start_bounds: var.start.map(|b| [b.offset.into(), b.tilt.into()]),
             variation_bounds: (var.preload || var.tolerances).then_some(coupling.scene.variation),
             partial: run.shard.count > 1,
@@ -217,12 +204,16 @@ impl VariantReport {
         }
     }
 
+    fn varies(&self, kind: InputKind) -> bool {
+        self.inputs.iter().any(|i| i.kind() == kind)
+    }
+
     /// The variation this study used (to map design rows to inputs).
     pub fn variation(&self) -> Variation {
         Variation {
-            friction: self.inputs.iter().any(|n| n.starts_with("mu_")),
-            preload: self.inputs.iter().any(|n| n.starts_with("preload_")),
-            tolerances: self.inputs.iter().any(|n| is_tolerance_input(n)),
+            friction: self.varies(InputKind::Friction),
+            preload: self.varies(InputKind::Preload),
+            tolerances: self.varies(InputKind::Tolerance),
             start: self.start_bounds.map(|[o, t]| StartBounds {
                 offset: o.into(),
                 tilt: t.into(),

@@ -6,7 +6,7 @@
 //! quantities in order: with friction varied, mu_s,k = mu0 + spread
 //! (2 u_ik - 1) for contact k (docs/model.md, rectangular distribution); with
 //! the start varied (dynamic solver), an offset x, y in +-b_x, +-b_y, z in
-//! [0, b_z] above the seat and a tilt in +-b_phi per axis. A row depends only
+//! [0, b_z] above the seat and a tilt in +-b_tilt per axis. A row depends only
 //! on (sampler, n, seed, i), so shards of the sample range computed anywhere
 //! merge into exactly one run.
 //!
@@ -28,16 +28,11 @@ use super::stats::SampleRecord;
 pub use super::variation::{START_CLEARANCE, Sample, StartBounds, Variation, lifted_clear};
 use super::{DesignSpec, Sampler, Shard};
 use crate::assembly::{AssemblyError, BodyPose, Coupling};
+use crate::dof::Dof;
 
 use crate::solve::dynamic::StartPose;
 use crate::solve::quasistatic::{SeatingSetup, Workspace, seat_in};
 use crate::solve::{Method, PointPose, SeatedPose, SeatingPath, SolveError, nominal_mu};
-
-/// Output components per evaluation point (relative to the nominal seating,
-/// SI): translation of the point and rotation vector, phi_z being the
-/// clocking about z (evaluated since output schema 2; docs/model.md, "The
-/// coupling").
-pub const COMPONENTS: [&str; 6] = ["x_m", "y_m", "z_m", "phi_x_rad", "phi_y_rad", "phi_z_rad"];
 
 /// How to run a study; `None` takes the scene's study settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -199,13 +194,13 @@ fn replicated(spec: DesignSpec, replicates: Option<usize>) -> Result<DesignSpec,
 /// Prefix of the interchangeability outputs (`interchange/<point>/<dof>`).
 pub const INTERCHANGE_PREFIX: &str = "interchange/";
 
-/// Names of the re-seating outputs (`<point>/<dof>`).
+/// Names of the re-seating outputs (`<point>/<dof>_<SI unit>`, [`Dof::si_key`]).
 pub fn output_names(coupling: &Coupling) -> Vec<String> {
     coupling
         .scene
         .evaluation_points
         .iter()
-        .flat_map(|p| COMPONENTS.iter().map(move |c| format!("{}/{c}", p.name)))
+        .flat_map(|p| Dof::ALL.map(|d| format!("{}/{}", p.name, d.si_key())))
         .collect()
 }
 

@@ -115,7 +115,8 @@ pub struct DesignSpec {
     pub replicates: usize,
 }
 
-fn one() -> usize {
+/// The serde default of a replicate count.
+pub(crate) fn one() -> usize {
     1
 }
 
@@ -186,31 +187,31 @@ impl DesignSpec {
         self.range(0..self.n)
     }
 
-    /// Rows `range` of the design.
     pub fn range(&self, range: Range<usize>) -> Result<Vec<Vec<f64>>> {
         self.check_replicates()?;
-        if self.replicates == 1 {
-            return sample_range(self.sampler, self.dims, self.n, self.seed, range);
-        }
-        validate(self.sampler, self.dims, self.n)?;
-        if range.start > range.end || range.end > self.n {
+        let (dims, n, seed) = (self.dims, self.n, self.seed);
+        validate(self.sampler, dims, n)?;
+        if range.start > range.end || range.end > n {
             return Err(StudyError::RangeOutOfBounds {
                 start: range.start,
                 end: range.end,
-                n: self.n,
+                n,
             });
         }
-        let m = self.n / self.replicates;
-        let mut rows = Vec::with_capacity(self.n);
-        for j in 0..self.replicates {
-            let seed = replicate_seed(self.seed, j);
-            rows.extend(lhs::optimised_lhs(
-                self.dims,
-                m,
-                seed,
-                &ese::EseParams::default(),
-            )?);
-        }
+        let ese = ese::EseParams::default();
+        let mut rows = match self.sampler {
+            Sampler::MonteCarlo => {
+                return Ok(range.map(|i| monte_carlo::mc_row(dims, seed, i)).collect());
+            }
+            Sampler::Corners => return Ok(range.map(|i| corners::corner_row(dims, i)).collect()),
+            Sampler::Lhs if self.replicates == 1 => lhs::optimised_lhs(dims, n, seed, &ese)?,
+            Sampler::Lhs => (0..self.replicates)
+                .map(|j| {
+                    lhs::optimised_lhs(dims, n / self.replicates, replicate_seed(seed, j), &ese)
+                })
+                .collect::<Result<Vec<_>>>()?
+                .concat(),
+        };
         rows.truncate(range.end);
         rows.drain(..range.start);
         Ok(rows)
@@ -237,22 +238,14 @@ pub fn validate(sampler: Sampler, dims: usize, n: usize) -> Result<()> {
                 });
             }
         }
-        Sampler::Lhs => {
-            if n == 0 {
-                return Err(StudyError::ZeroSamples);
-            }
-            if n > lhs::MAX_LHS_SAMPLES {
-                return Err(StudyError::LhsTooLarge {
-                    n,
-                    max: lhs::MAX_LHS_SAMPLES,
-                });
-            }
+        _ if n == 0 => return Err(StudyError::ZeroSamples),
+        Sampler::Lhs if n > lhs::MAX_LHS_SAMPLES => {
+            return Err(StudyError::LhsTooLarge {
+                n,
+                max: lhs::MAX_LHS_SAMPLES,
+            });
         }
-        Sampler::MonteCarlo => {
-            if n == 0 {
-                return Err(StudyError::ZeroSamples);
-            }
-        }
+        _ => {}
     }
     Ok(())
 }
@@ -264,7 +257,7 @@ pub fn design(sampler: Sampler, dims: usize, n: usize, seed: u64) -> Result<Vec<
     sample_range(sampler, dims, n, seed, 0..n)
 }
 
-/// Rows `range` of the design `(sampler, dims, n, seed)`: equal to `design(..)[range]`, bit for bit.
+/// Rows `range` of the design `(sampler, dims, n, seed)`: `design(..)[range]`, computed the same way.
 ///
 /// MC and corners compute only the requested rows. An LHS design depends as a whole on
 /// `(seed, n)`, so it is computed completely and sliced (cheap for the sizes LHS is used for).
@@ -275,22 +268,13 @@ pub fn sample_range(
     seed: u64,
     range: Range<usize>,
 ) -> Result<Vec<Vec<f64>>> {
-    validate(sampler, dims, n)?;
-    if range.start > range.end || range.end > n {
-        return Err(StudyError::RangeOutOfBounds {
-            start: range.start,
-            end: range.end,
-            n,
-        });
+    let replicates = 1;
+    DesignSpec {
+        sampler,
+        dims,
+        n,
+        seed,
+        replicates,
     }
-    match sampler {
-        Sampler::Lhs => {
-            let mut rows = lhs::optimised_lhs(dims, n, seed, &ese::EseParams::default())?;
-            rows.truncate(range.end);
-            rows.drain(..range.start);
-            Ok(rows)
-        }
-        Sampler::MonteCarlo => Ok(range.map(|i| monte_carlo::mc_row(dims, seed, i)).collect()),
-        Sampler::Corners => Ok(range.map(|i| corners::corner_row(dims, i)).collect()),
-    }
+    .range(range)
 }

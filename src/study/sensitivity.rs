@@ -28,6 +28,7 @@ use nalgebra::{DMatrix, DVector};
 use serde::{Deserialize, Serialize};
 
 use super::error::{Result, StudyError};
+use super::inputs::Input;
 
 /// Below this R^2 the shares are flagged as describing only the linear part.
 pub const R2_LINEAR: f64 = 0.9;
@@ -126,9 +127,9 @@ pub struct DofSensitivity {
 pub struct SensitivityBlock {
     /// "reseating" or "interchangeability".
     pub kind: String,
-    /// Input names, in the order of the shares.
-    pub inputs: Vec<String>,
-    /// One entry per output (x, y, z, phi_x, phi_y of the first evaluation point).
+    /// The inputs, in the order of the shares.
+    pub inputs: Vec<Input>,
+    /// One entry per output (the six DOFs of the first evaluation point).
     pub dofs: Vec<DofSensitivity>,
     /// First-order and total Sobol indices of the same outputs on the same
     /// inputs (absent for a sharded study, or before they are attached).
@@ -141,7 +142,7 @@ pub struct SensitivityBlock {
 /// samples given as (design row, outputs).
 pub fn block(
     kind: &str,
-    inputs: &[(usize, String)],
+    inputs: &[(usize, Input)],
     outputs: &[(usize, String)],
     samples: &[(&[f64], &[f64])],
 ) -> SensitivityBlock {
@@ -179,7 +180,7 @@ pub fn block(
         .collect();
     SensitivityBlock {
         kind: kind.to_string(),
-        inputs: inputs.iter().map(|(_, n)| n.clone()).collect(),
+        inputs: inputs.iter().map(|(_, i)| *i).collect(),
         dofs,
         sobol: None,
     }

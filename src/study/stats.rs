@@ -27,7 +27,7 @@ use serde::{Deserialize, Serialize};
 
 use super::error::{Result, StudyError};
 use super::sampling::{DesignSpec, Sampler};
-pub use bootstrap::{BOOTSTRAP_SEED, BootstrapConfig, bootstrap_sigma};
+pub use bootstrap::{BOOTSTRAP_SEED, BootstrapConfig};
 pub use convergence::{ConvergencePoint, sigma_convergence};
 pub use interval::{Interval, sigma_interval_from_moments, sigma_interval_iid, sigma_replicated};
 pub use moments::Moments;

@@ -6,13 +6,15 @@
 //! first point and the Sobol indices attached to it.
 
 use super::StudyError;
+use super::inputs::Input;
 use super::record::{Dofs, PointStats, StudyRecord};
-use super::result::{VariantReport, is_tolerance_input};
-use super::runner::{COMPONENTS, INTERCHANGE_PREFIX};
+use super::result::VariantReport;
+use super::runner::INTERCHANGE_PREFIX;
 use super::sensitivity::sobol::SobolRun;
 use super::sensitivity::{self, SensitivityBlock};
 use super::stats::{SampleRecord, SigmaMethod, Summary, summarize_moments, summarize_outputs};
 use super::stream::{StreamStats, check_record, streams};
+use crate::dof::Dof;
 
 /// Re-seating statistics per evaluation point from one summary per output
 /// (in `names` order), and interchangeability statistics from the
@@ -28,12 +30,12 @@ fn split_points(names: &[String], summaries: &[Summary]) -> (Vec<PointStats>, Ve
     )
 }
 
-/// One [`PointStats`] per six outputs (`point/x_m` ... `point/phi_z_rad`),
+/// One [`PointStats`] per six outputs (`point/<dof>_<SI unit>` over [`Dof::ALL`]),
 /// in nm and nrad; an interval of sigma only where every DOF has one.
 fn point_stats(names: &[String], summaries: &[Summary]) -> Vec<PointStats> {
     names
-        .chunks(COMPONENTS.len())
-        .zip(summaries.chunks(COMPONENTS.len()))
+        .chunks(Dof::ALL.len())
+        .zip(summaries.chunks(Dof::ALL.len()))
         .map(|(n, c)| {
             let pick =
                 |f: &dyn Fn(&Summary) -> f64| Dofs::from_si(std::array::from_fn(|k| f(&c[k])));
@@ -161,12 +163,8 @@ fn sensitivity_blocks(v: &VariantReport) -> Vec<SensitivityBlock> {
         .collect();
     let mut blocks = Vec::new();
     for (kind, tolerance) in [("reseating", false), ("interchangeability", true)] {
-        let inputs: Vec<(usize, String)> = v
-            .inputs
-            .iter()
-            .enumerate()
-            .filter(|(_, n)| is_tolerance_input(n) == tolerance)
-            .map(|(j, n)| (j, n.clone()))
+        let inputs: Vec<(usize, Input)> = (v.inputs.iter().copied().enumerate())
+            .filter(|(_, i)| i.is_tolerance() == tolerance)
             .collect();
         let first = v
             .output_names
@@ -175,7 +173,7 @@ fn sensitivity_blocks(v: &VariantReport) -> Vec<SensitivityBlock> {
         let (Some(first), false) = (first, inputs.is_empty()) else {
             continue;
         };
-        let outputs: Vec<(usize, String)> = (first..first + COMPONENTS.len())
+        let outputs: Vec<(usize, String)> = (first..first + Dof::ALL.len())
             .map(|k| (k, v.output_names[k].clone()))
             .collect();
         blocks.push(sensitivity::block(kind, &inputs, &outputs, &samples));
@@ -195,7 +193,7 @@ pub fn attach_sobol(v: &mut VariantReport, run: &SobolRun) {
         let cols: Vec<usize> = b
             .inputs
             .iter()
-            .filter_map(|name| inputs.iter().position(|n| n == name))
+            .filter_map(|input| inputs.iter().position(|i| i == input))
             .collect();
         let outputs: Vec<(usize, String)> = b
             .dofs

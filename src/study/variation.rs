@@ -72,11 +72,11 @@ impl Variation {
             v.extend((0..coupling.contacts.len()).map(Input::Mu));
         }
         if self.preload {
-            for a in 0..2 {
-                if b.preload_offset_m[a] > 0.0 {
-                    v.push(Input::PreloadOffset(a));
-                }
-            }
+            v.extend(
+                (0..2)
+                    .filter(|&a| b.preload_offset_m[a] > 0.0)
+                    .map(Input::PreloadOffset),
+            );
             if b.preload_tilt_rad > 0.0 {
                 v.extend([Input::PreloadTilt(0), Input::PreloadTilt(1)]);
             }
@@ -90,46 +90,36 @@ impl Variation {
             if b.ball_diameter_m > 0.0 {
                 v.extend((0..balls).map(Input::BallDiameter));
             }
-            for k in 0..balls {
-                for a in 0..3 {
-                    if b.ball_position_m[a] > 0.0 {
-                        v.push(Input::BallPosition(k, a));
-                    }
-                }
-            }
+            // (ball, axis) of every ball and every axis with a bound > 0.
+            let per_ball = |bound: &[f64]| -> Vec<(usize, usize)> {
+                let axes = 0..bound.len();
+                let pairs = (0..balls).flat_map(|k| axes.clone().map(move |a| (k, a)));
+                pairs.filter(|&(_, a)| bound[a] > 0.0).collect()
+            };
+            v.extend(
+                per_ball(&b.ball_position_m)
+                    .into_iter()
+                    .map(|(k, a)| Input::BallPosition(k, a)),
+            );
             if b.surface_normal_m > 0.0 {
                 v.extend((0..surfaces).map(Input::SurfaceNormal));
             }
             if b.surface_tilt_rad > 0.0 {
                 v.extend((0..surfaces).map(Input::SurfaceTilt));
             }
-            for k in 0..balls {
-                for a in 0..2 {
-                    if b.groove_position_m[a] > 0.0 {
-                        v.push(Input::GroovePosition(k, a));
-                    }
-                }
-            }
+            v.extend(
+                per_ball(&b.groove_position_m)
+                    .into_iter()
+                    .map(|(k, a)| Input::GroovePosition(k, a)),
+            );
         }
         v
-    }
-
-    /// Names of the design dimensions, in row order.
-    pub fn input_names(&self, coupling: &Coupling) -> Vec<String> {
-        self.inputs(coupling).iter().map(Input::name).collect()
     }
 
     /// True if one pair of halves re-seats differently from sample to
     /// sample (friction, preload or start varied).
     pub fn reseating(&self) -> bool {
         self.friction || self.preload || self.start.is_some()
-    }
-
-    /// Static coefficients and start pose of one design row (of
-    /// `input_names().len()` coordinates).
-    pub fn map(&self, coupling: &Coupling, row: &[f64]) -> (Vec<f64>, StartPose) {
-        let s = self.sample(coupling, row);
-        (s.mu, s.start)
     }
 
     /// Everything one design row sets. Each column u in [0, 1] maps to
@@ -211,14 +201,7 @@ fn set_tolerance(t: &mut Tolerances, input: Input, b: &VariationBounds, c: f64) 
 
 /// The physical values of the start inputs: the offset and tilt of `start`.
 fn fill_start_values(inputs: &[Input], start: &StartPose, physical: &mut [f64]) {
-    let values = [
-        start.offset.x,
-        start.offset.y,
-        start.offset.z,
-        start.tilt.x,
-        start.tilt.y,
-        start.tilt.z,
-    ];
+    let values: Vec<f64> = start.offset.iter().chain(&start.tilt).copied().collect();
     for (input, v) in inputs.iter().zip(physical.iter_mut()) {
         if let Input::Start(j) = input {
             *v = values[*j];
@@ -228,17 +211,10 @@ fn fill_start_values(inputs: &[Input], start: &StartPose, physical: &mut [f64]) 
 
 /// The start pose of design coordinates `u` (offset x, y, z, tilt x, y, z).
 fn start_pose(coupling: &Coupling, b: &StartBounds, u: &[f64; 6]) -> StartPose {
+    let c = u.map(|u| 2.0 * u - 1.0);
     let tilted = StartPose {
-        offset: Vector3::new(
-            b.offset.x * (2.0 * u[0] - 1.0),
-            b.offset.y * (2.0 * u[1] - 1.0),
-            0.0,
-        ),
-        tilt: Vector3::new(
-            b.tilt.x * (2.0 * u[3] - 1.0),
-            b.tilt.y * (2.0 * u[4] - 1.0),
-            b.tilt.z * (2.0 * u[5] - 1.0),
-        ),
+        offset: Vector3::new(b.offset.x * c[0], b.offset.y * c[1], 0.0),
+        tilt: b.tilt.component_mul(&Vector3::new(c[3], c[4], c[5])),
     };
     let mut s = lifted_clear(coupling, tilted);
     s.offset.z += b.offset.z * u[2];

@@ -48,7 +48,7 @@ pub fn hertz_circle(force: f64, radius: f64, e_star: f64) -> (f64, f64) {
 }
 
 /// Ball centres and contact normals (into the ball) of the symmetric Maxwell
-/// coupling of scene 01, from MODEL.md 1a and not from kinrepro: balls at
+/// coupling of scene 01, from docs/model.md's axes and contact numbering and not from kinrepro: balls at
 /// azimuths 90, 210, 330 deg on the 40 mm circle, contacts 2k-1 and 2k with
 /// normals +-sin(alpha) s + cos(alpha) e_z, s = e_z x e_r (alpha = 45 deg for
 /// the 90-degree groove).

@@ -1,15 +1,16 @@
-//! The kinrepro command line: parse, call the library, print. No physics here.
+//! The kinrepro command line: parse and check the flags, call the library,
+//! print. No physics here.
 
-mod args;
 mod commands;
 mod error;
+mod flags;
 
 use std::process::ExitCode;
 
 use clap::Parser;
 
 fn main() -> ExitCode {
-    let cli = args::Cli::parse();
+    let cli = flags::Cli::parse();
     match commands::dispatch(cli.command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(msg) => {

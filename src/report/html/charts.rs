@@ -6,9 +6,10 @@
 
 use std::path::Path;
 
+use crate::dof::{Dof, nano};
 use crate::report::html::reference::ReferenceRow;
 use crate::report::plot::{
-    ConvergenceSeries, Dof, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
+    ConvergenceSeries, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
     xy_scatter_svg,
 };
 use crate::report::study_text::truncate;
@@ -72,10 +73,10 @@ fn bars(
 /// The x-y scatter [nm] of every variant and evaluation point, of the
 /// re-seating outputs or (`interchange`) of the interchangeability outputs.
 fn scatter(variants: &[&VariantReport], interchange: bool) -> Vec<VariantScatter> {
-    let mut out = Vec::new();
+    let (mut out, x) = (Vec::new(), format!("/{}", Dof::X.si_key()));
     for v in variants.iter().filter(|v| !v.records.is_empty()) {
         for (k, name) in v.output_names.iter().enumerate() {
-            let Some(point) = name.strip_suffix("/x_m") else {
+            let Some(point) = name.strip_suffix(&x) else {
                 continue;
             };
             if point.starts_with(INTERCHANGE_PREFIX) != interchange {
@@ -88,7 +89,7 @@ fn scatter(variants: &[&VariantReport], interchange: bool) -> Vec<VariantScatter
                 xy: v
                     .records
                     .iter()
-                    .map(|r| (r.outputs[k] * 1e9, r.outputs[k + 1] * 1e9))
+                    .map(|r| (nano(r.outputs[k]), nano(r.outputs[k + 1])))
                     .collect(),
             });
         }
@@ -99,18 +100,18 @@ fn scatter(variants: &[&VariantReport], interchange: bool) -> Vec<VariantScatter
 /// Sigma of the first k samples for all six DOFs of every re-seating
 /// evaluation point.
 fn convergence(variants: &[&VariantReport]) -> Result<Vec<ConvergenceSeries>, StudyError> {
-    let mut out = Vec::new();
+    let (mut out, x) = (Vec::new(), format!("/{}", Dof::X.si_key()));
     for v in variants.iter().filter(|v| !v.records.is_empty()) {
         let starts: Vec<(usize, &str)> = v
             .output_names
             .iter()
             .enumerate()
-            .filter_map(|(k, n)| n.strip_suffix("/x_m").map(|p| (k, p)))
+            .filter_map(|(k, n)| n.strip_suffix(&x).map(|p| (k, p)))
             .filter(|(_, p)| !p.starts_with(INTERCHANGE_PREFIX))
             .collect();
         for &(k0, point) in &starts {
             for (j, &dof) in Dof::ALL.iter().enumerate() {
-                let values: Vec<f64> = v.records.iter().map(|r| r.outputs[k0 + j] * 1e9).collect();
+                let values: Vec<f64> = v.records.iter().map(|r| nano(r.outputs[k0 + j])).collect();
                 out.push(ConvergenceSeries {
                     variant: series_label(v, point, starts.len()),
                     dof,
@@ -134,53 +135,48 @@ pub fn study_charts(
         .filter(|v| !v.partial && (!v.points.is_empty() || !v.interchangeability.is_empty()))
         .collect();
     let mut charts = Vec::new();
-    let reseat: Vec<&VariantReport> = full
-        .iter()
-        .copied()
-        .filter(|v| !v.points.is_empty())
-        .collect();
+    let mut add = |file_name, title: &str, svg| {
+        let title = title.into();
+        charts.push(Chart {
+            file_name,
+            title,
+            svg,
+        });
+    };
+    let with = |f: fn(&VariantReport) -> bool| full.iter().copied().filter(|v| f(v)).collect();
+    let reseat: Vec<&VariantReport> = with(|v| !v.points.is_empty());
     if !reseat.is_empty() {
-        charts.push(Chart {
-            file_name: "sigma_bars.svg",
-            title: "Re-seating σ per DOF, with 90 % intervals".into(),
-            svg: sigma_bars_svg(&bars(&reseat, |v| &v.points, references), "re-seating σ")?,
-        });
+        let svg = sigma_bars_svg(&bars(&reseat, |v| &v.points, references), "re-seating σ")?;
+        add(
+            "sigma_bars.svg",
+            "Re-seating σ per DOF, with 90 % intervals",
+            svg,
+        );
     }
-    let inter: Vec<&VariantReport> = full
-        .iter()
-        .copied()
-        .filter(|v| !v.interchangeability.is_empty())
-        .collect();
+    let inter: Vec<&VariantReport> = with(|v| !v.interchangeability.is_empty());
     if !inter.is_empty() {
-        charts.push(Chart {
-            file_name: "interchange_sigma_bars.svg",
-            title: "Interchangeability σ (manufacturing tolerances), with 90 % intervals".into(),
-            svg: sigma_bars_svg(
-                &bars(&inter, |v| &v.interchangeability, &[]),
-                "interchange σ",
-            )?,
-        });
+        let svg = sigma_bars_svg(
+            &bars(&inter, |v| &v.interchangeability, &[]),
+            "interchange σ",
+        )?;
+        let title = "Interchangeability σ (manufacturing tolerances), with 90 % intervals";
+        add("interchange_sigma_bars.svg", title, svg);
     }
     let xy = scatter(&reseat, false);
     if !xy.is_empty() {
-        charts.push(Chart {
-            file_name: "scatter_xy.svg",
-            title: "Re-seating x-y scatter of every sample, per evaluation point".into(),
-            svg: xy_scatter_svg(&xy)?,
-        });
-        charts.push(Chart {
-            file_name: "sigma_convergence.svg",
-            title: "Convergence of σ with the number of samples, all six DOFs".into(),
-            svg: convergence_svg(&convergence(&reseat)?)?,
-        });
+        let title = "Re-seating x-y scatter of every sample, per evaluation point";
+        add("scatter_xy.svg", title, xy_scatter_svg(&xy)?);
+        let title = "Convergence of σ with the number of samples, all six DOFs";
+        add(
+            "sigma_convergence.svg",
+            title,
+            convergence_svg(&convergence(&reseat)?)?,
+        );
     }
     let xy = scatter(&inter, true);
     if !xy.is_empty() {
-        charts.push(Chart {
-            file_name: "interchange_scatter_xy.svg",
-            title: "Interchangeability x-y scatter, per evaluation point".into(),
-            svg: xy_scatter_svg(&xy)?,
-        });
+        let title = "Interchangeability x-y scatter, per evaluation point";
+        add("interchange_scatter_xy.svg", title, xy_scatter_svg(&xy)?);
     }
     Ok(charts)
 }

@@ -19,7 +19,7 @@ use std::fmt::Write;
 
 use nalgebra::Vector3;
 
-use super::svg::{Shape, bounds, svg, svg_at};
+use super::svg::{Shape, bounds, svg};
 use crate::assembly::Coupling;
 use crate::scene::SurfaceGeometry;
 use crate::solve::{ContactResult, Seating};
@@ -70,7 +70,13 @@ pub fn coupling_views(id: &str, c: &Coupling, s: &Seating) -> String {
     // The longest contact force is drawn 1.2 ball radii long.
     let scale = if fmax > 0.0 { 1.2 * r / fmax } else { 0.0 };
     let mut out = String::from("<div class=\"views\">\n");
-    let layout = svg(&format!("{id}-layout"), 460.0, &layout_shapes(c, s), None);
+    let layout = svg(
+        &format!("{id}-layout"),
+        460.0,
+        &layout_shapes(c, s),
+        None,
+        None,
+    );
     let _ = writeln!(
         out,
         "<figure data-check=\"drawing\" id=\"{id}-layout\">{layout}<figcaption>layout, top view (x right, y up)</figcaption></figure>"
@@ -100,7 +106,7 @@ pub fn coupling_views(id: &str, c: &Coupling, s: &Seating) -> String {
             let _ = write!(out, "<div class=\"ball\">");
         }
         let fid = format!("{id}-b{}-{tag}", b + 1);
-        let drawn = svg_at(&fid, 300.0, shapes, Some((scale, fmax)), Some(span));
+        let drawn = svg(&fid, 300.0, shapes, Some((scale, fmax)), Some(span));
         let what = if *tag == "top" {
             "top view"
         } else {

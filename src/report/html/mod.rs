@@ -20,7 +20,7 @@ pub mod charts;
 mod drawing;
 pub mod inputs;
 mod mechanics;
-mod page;
+pub(crate) mod page;
 pub mod prediction;
 pub mod reference;
 mod svg;
@@ -32,13 +32,13 @@ use thiserror::Error;
 
 use crate::analysis::stiffness::CouplingStiffness;
 use crate::assembly::AssemblyError;
+use crate::report::table::escape;
 use crate::scene::{Scene, SceneError};
 use crate::solve::SolveError;
 use crate::study::StudyError;
 use crate::study::VariantReport;
 use crate::study::provenance::VERSION;
 pub use inputs::{SceneInput, StudyInput, load_study, scene_input};
-use page::escape;
 pub use reference::{ReferenceRow, load_reference, parse_reference};
 
 /// The report could not be made.
@@ -113,12 +113,8 @@ impl HtmlReport {
         if !charts.is_empty() {
             toc.push(("charts".into(), "Charts".into()));
         }
-        let mut n = 0;
-        for st in &self.studies {
-            for v in &st.report.variants {
-                n += 1;
-                toc.push((format!("scene-{n}"), format!("{n}. {}", v.name)));
-            }
+        for (i, v) in variants.iter().enumerate() {
+            toc.push((format!("scene-{}", i + 1), format!("{}. {}", i + 1, v.name)));
         }
         for (i, s) in self.sections.iter().enumerate() {
             toc.push((format!("extra-{}", i + 1), s.title.clone()));
@@ -136,12 +132,12 @@ impl HtmlReport {
             }
             body.push_str("</section>\n");
         }
-        let mut n = 0;
-        for st in &self.studies {
-            for (v, scene) in st.report.variants.iter().zip(&st.scenes) {
-                n += 1;
-                scene_section(&mut body, n, v, scene)?;
-            }
+        let scenes = self
+            .studies
+            .iter()
+            .flat_map(|s| s.report.variants.iter().zip(&s.scenes));
+        for (i, (v, scene)) in scenes.enumerate() {
+            scene_section(&mut body, i + 1, v, scene)?;
         }
         for (i, s) in self.sections.iter().enumerate() {
             let _ = writeln!(
@@ -248,17 +244,12 @@ fn scene_section(
     let c = &scene.coupling;
     let file = v.scene.clone();
     let mu = crate::solve::nominal_mu(c);
-    let seating =
-        crate::solve::quasistatic::seat(c, &mu, &Default::default()).map_err(|source| {
-            HtmlError::Solve {
-                file: file.clone(),
-                source,
-            }
-        })?;
-    let k = CouplingStiffness::new(c, &seating, &mu).map_err(|source| HtmlError::Solve {
+    let solve = |source| HtmlError::Solve {
         file: file.clone(),
         source,
-    })?;
+    };
+    let seating = crate::solve::quasistatic::seat(c, &mu, &Default::default()).map_err(solve)?;
+    let k = CouplingStiffness::new(c, &seating, &mu).map_err(solve)?;
     let _ = writeln!(
         body,
         "<section id=\"scene-{n}\"><h2>{n}. {}</h2>\n<p class=\"muted\">{}</p>\n<h3>Coupling at the nominal seating</h3>",
@@ -277,44 +268,4 @@ fn scene_section(
         escape(&explicit)
     );
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A report of extra sections only (e.g. a sweep's charts): the sections
-    /// in order, escaped titles, no study parts.
-    #[test]
-    fn sections_alone_make_a_report() {
-        let svg = |w: u32| {
-            format!(
-                "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {w} 10\"><rect width=\"{w}\" height=\"10\"/></svg>"
-            )
-        };
-        let report = HtmlReport {
-            sections: vec![
-                Section {
-                    title: "σ vs preload <F>".into(),
-                    svg: svg(40),
-                },
-                Section {
-                    title: "Pareto front".into(),
-                    svg: format!("<?xml version=\"1.0\"?>\n{}", svg(50)),
-                },
-            ],
-            ..Default::default()
-        };
-        let html = report.render().unwrap();
-        let (a, b) = (
-            html.find("σ vs preload &lt;F&gt;").unwrap(),
-            html.find("Pareto front").unwrap(),
-        );
-        assert!(a < b);
-        assert_eq!(html.matches("data-check=\"chart\"").count(), 2);
-        assert!(
-            !html.contains("<?xml") && !html.contains("σ tables") && !html.contains("id=\"run\"")
-        );
-        assert!(html.contains("viewBox=\"0 0 50 10\""));
-    }
 }

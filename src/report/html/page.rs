@@ -3,23 +3,8 @@
 //! Security Policy that allows only inline styles and data: images keeps
 //! the browser from fetching anything.
 
+use crate::report::table::escape;
 use crate::study::provenance::VERSION;
-
-/// Escape text for HTML element content and attribute values.
-pub fn escape(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            c => out.push(c),
-        }
-    }
-    out
-}
 
 /// The style sheet: readable on a phone (fluid width, tables and code that
 /// scroll sideways, SVG scaled to the width), printable on A4 (no
@@ -104,14 +89,5 @@ pub fn strip_xml_prolog(svg: &str) -> &str {
     match s.strip_prefix("<?xml") {
         Some(rest) => rest.find("?>").map_or(s, |i| rest[i + 2..].trim_start()),
         None => s,
-    }
-}
-
-/// Number in a table: `digits` decimals, or `-` where not finite.
-pub fn num(v: f64, digits: usize) -> String {
-    if v.is_finite() {
-        format!("{v:.digits$}")
-    } else {
-        "-".to_string()
     }
 }

@@ -15,11 +15,11 @@ use std::path::Path;
 
 use serde::Deserialize;
 
-use super::page::escape;
 use super::reference::ReferenceRow;
 use crate::assembly::Coupling;
 use crate::calibrate::predict::with_parameters;
-use crate::calibrate::units::{DOFS, human_unit};
+use crate::dof::Dof;
+use crate::report::table::escape;
 
 /// The `calibration` block of a prediction.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
@@ -54,7 +54,7 @@ fn yes() -> bool {
 struct MeasuredBlock {
     point: String,
     cycles: Option<usize>,
-    /// Per DOF `x_nm` ... `phi_z_nrad`.
+    /// Per DOF, keyed by [`Dof::key`] (nm, nrad).
     sigma: BTreeMap<String, f64>,
 }
 
@@ -168,11 +168,7 @@ fn number(v: f64) -> String {
 
 /// The measured block as a reference row (nm, nrad).
 fn measured_row(scene: &str, m: &MeasuredBlock) -> ReferenceRow {
-    let sigma = std::array::from_fn(|i| {
-        m.sigma
-            .get(&format!("{}_{}", DOFS[i], human_unit(i)))
-            .copied()
-    });
+    let sigma = std::array::from_fn(|i| m.sigma.get(&Dof::ALL[i].key()).copied());
     ReferenceRow {
         label: match m.cycles {
             Some(n) => format!("measured ({n} cycles)"),

@@ -4,7 +4,7 @@
 
 use std::fmt::Write;
 
-use super::page::escape;
+use crate::report::table::escape;
 
 pub const BALL: &str = "#0072b2";
 pub const FIXED: &str = "#8c959f";
@@ -62,13 +62,14 @@ pub fn bounds(shapes: &[Shape]) -> (f64, f64, f64, f64) {
     for s in shapes {
         match s {
             Shape::Circle { c, r, .. } => add(*c, *r),
-            Shape::Line { a, b, width_m, .. } => {
-                add(*a, width_m / 2.0);
-                add(*b, width_m / 2.0);
-            }
-            Shape::Arrow { a, b, .. } => {
-                add(*a, 0.0);
-                add(*b, 0.0);
+            Shape::Line { a, b, .. } | Shape::Arrow { a, b, .. } => {
+                let w = if let Shape::Line { width_m, .. } = s {
+                    width_m / 2.0
+                } else {
+                    0.0
+                };
+                add(*a, w);
+                add(*b, w);
             }
             Shape::Dot { c, .. } | Shape::Text { at: c, .. } => add(*c, 0.0),
         }
@@ -77,15 +78,11 @@ pub fn bounds(shapes: &[Shape]) -> (f64, f64, f64, f64) {
     (b.0 - m, b.1 - m, b.2 + m, b.3 + m)
 }
 
-pub fn svg(id: &str, width: f64, shapes: &[Shape], forces: Option<(f64, f64)>) -> String {
-    svg_at(id, width, shapes, forces, None)
-}
-
 /// The SVG of `shapes`, `width` px wide, with a length bar and, given
 /// `(scale [m/N], largest force [N])`, a force bar; `span` [m]: a square
 /// window of that size around the shapes' centre (same scale for several
 /// drawings), else their own bounds.
-pub fn svg_at(
+pub fn svg(
     id: &str,
     width: f64,
     shapes: &[Shape],
@@ -183,31 +180,18 @@ fn emit(
                 r * k
             );
         }
-        Shape::Line {
-            a,
-            b,
-            width_m,
-            colour,
-        } => {
-            let w = (width_m * k).max(2.0);
+        Shape::Line { a, b, colour, .. } | Shape::Arrow { a, b, colour } => {
+            let end = match sh {
+                Shape::Line { width_m, .. } => format!("{:.2}\"", (width_m * k).max(2.0)),
+                _ => format!(
+                    "2\" marker-end=\"url(#{id}-{})\"",
+                    if *colour == NORMAL { "n" } else { "f" }
+                ),
+            };
+            let (x1, y1, x2, y2) = (tx(a.0), ty(a.1), tx(b.0), ty(b.1));
             let _ = writeln!(
                 o,
-                "<line x1=\"{:.2}\" y1=\"{:.2}\" x2=\"{:.2}\" y2=\"{:.2}\" stroke=\"{colour}\" stroke-width=\"{w:.2}\"/>",
-                tx(a.0),
-                ty(a.1),
-                tx(b.0),
-                ty(b.1)
-            );
-        }
-        Shape::Arrow { a, b, colour } => {
-            let m = if *colour == NORMAL { "n" } else { "f" };
-            let _ = writeln!(
-                o,
-                "<line x1=\"{:.2}\" y1=\"{:.2}\" x2=\"{:.2}\" y2=\"{:.2}\" stroke=\"{colour}\" stroke-width=\"2\" marker-end=\"url(#{id}-{m})\"/>",
-                tx(a.0),
-                ty(a.1),
-                tx(b.0),
-                ty(b.1)
+                "<line x1=\"{x1:.2}\" y1=\"{y1:.2}\" x2=\"{x2:.2}\" y2=\"{y2:.2}\" stroke=\"{colour}\" stroke-width=\"{end}/>"
             );
         }
         Shape::Dot { c, colour } => {

@@ -4,7 +4,8 @@
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
-use super::{Dof, VariantSigma, check_finite, color, headroom, legend_room, plot_err};
+use super::{VariantSigma, check_finite, color, headroom, legend_room, plot_err};
+use crate::dof::Dof;
 use crate::study::{Result, StudyError};
 
 /// An SVG with two panels, translations \[nm\] and rotations \[nrad\]: one
@@ -134,7 +135,7 @@ fn panel<DB: DrawingBackend>(
 /// y axis in the DOFs' unit.
 fn axes<DB: DrawingBackend>(chart: &mut Chart<DB>, dofs: &[Dof]) -> Result<()> {
     let unit = dofs[0].unit();
-    let names: Vec<&str> = dofs.iter().map(|d| d.label()).collect();
+    let names: Vec<&str> = dofs.iter().map(|d| d.symbol()).collect();
     let fmt = |v: &f64| {
         let r = v.round();
         if (v - r).abs() < 1e-6 && r >= 0.0 && (r as usize) < names.len() {

@@ -2,11 +2,12 @@
 
 use plotters::prelude::*;
 
-use super::{ConvergenceSeries, Dof, check_finite, color, headroom, legend_room, plot_err};
+use super::{ConvergenceSeries, check_finite, color, headroom, legend_room, plot_err};
+use crate::dof::Dof;
 use crate::study::{Result, StudyError};
 
 /// An SVG of sigma of the first k samples against k: one panel per DOF that
-/// has series (in the order x, y, z, phi_x, phi_y, phi_z; three per row),
+/// has series (in the order of [`Dof::ALL`]; three per row),
 /// each in its unit, one line per variant (colour by variant, in order of
 /// first appearance), the legend in the first panel.
 pub fn convergence_svg(data: &[ConvergenceSeries]) -> Result<String> {
@@ -77,7 +78,7 @@ fn panel<DB: DrawingBackend>(
     };
     let mut chart = ChartBuilder::on(area)
         .caption(
-            format!("convergence of σ {} [{unit}]", dof.label()),
+            format!("convergence of σ {} [{unit}]", dof.symbol()),
             ("sans-serif", 17),
         )
         .margin(10)

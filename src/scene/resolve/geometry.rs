@@ -7,7 +7,7 @@ use toml::Spanned;
 use super::fields::Fields;
 use super::tables::compliance;
 use crate::scene::error::{ErrorContext, SceneError};
-use crate::scene::file::{Numbers, SceneFile, SurfaceFile, SurfaceKind};
+use crate::scene::file::{BallFile, Numbers, SceneFile, SurfaceFile, SurfaceKind};
 use crate::scene::plausible;
 use crate::scene::{Ball, Surface, SurfaceGeometry};
 
@@ -20,17 +20,16 @@ pub fn balls(f: &SceneFile, fx: &Fields) -> Result<Vec<Ball>, SceneError> {
             "no moving balls: give a [coupling] table or [[balls]] and [[surfaces]]",
         ));
     }
-    let mut balls = Vec::new();
-    for (i, b) in f.balls.iter().enumerate() {
+    let ball = |(i, b): (usize, &BallFile)| {
         let field = |k: &str| format!("balls[{}].{k}", i + 1);
-        balls.push(Ball {
+        Ok(Ball {
             centre: fx.finite(&b.centre, &field("centre"))?,
             radius: fx.positive(&b.radius, &field("radius"), "m")?,
             material: fx.material(&b.material, &field("material"))?,
             line: fx.ctx.line_of(&b.radius.span()),
-        });
-    }
-    Ok(balls)
+        })
+    };
+    f.balls.iter().enumerate().map(ball).collect()
 }
 
 /// The fixed surfaces, numbered ball by ball (the order of `--mu`); each
@@ -39,27 +38,22 @@ pub fn surfaces(f: &SceneFile, fx: &Fields, balls: &[Ball]) -> Result<Vec<Surfac
     // Radii are checked positive below; first the magnitudes (millimetres?).
     let centres: Vec<Vector3<f64>> = balls.iter().map(|b| b.centre).collect();
     plausible::check_explicit(f, &centres, fx.ctx)?;
-    let mut surfaces = Vec::new();
-    for (i, s) in f.surfaces.iter().enumerate() {
-        surfaces.push(surface(s, i, fx, balls.len())?);
-    }
+    let mut surfaces = (f.surfaces.iter().enumerate())
+        .map(|(i, s)| surface(s, i, fx, balls.len()))
+        .collect::<Result<Vec<_>, _>>()?;
     // Contacts are numbered ball by ball (the order of --mu).
     surfaces.sort_by_key(|s| s.ball);
-    let mut served = vec![false; balls.len()];
-    surfaces.iter().for_each(|s| served[s.ball] = true);
-    for (k, b) in balls.iter().enumerate() {
-        if !served[k] {
-            return Err(SceneError {
-                file: fx.ctx.file.to_string(),
-                line: b.line,
-                field: format!("balls[{}]", k + 1),
-                reason: "this ball touches no fixed surface (no [[surfaces]] entry has ball = \
-                         its number)"
-                    .to_string(),
-            });
-        }
+    match (0..balls.len()).find(|&k| !surfaces.iter().any(|s| s.ball == k)) {
+        Some(k) => Err(SceneError {
+            file: fx.ctx.file.to_string(),
+            line: balls[k].line,
+            field: format!("balls[{}]", k + 1),
+            reason: "this ball touches no fixed surface (no [[surfaces]] entry has ball = \
+                     its number)"
+                .to_string(),
+        }),
+        None => Ok(surfaces),
     }
-    Ok(surfaces)
 }
 
 /// Surface `i` (0-based) of the file, for a coupling of `n_balls` balls.

@@ -81,33 +81,18 @@ fn material_entries(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, 
                 )
             })
             .map_err(|e| {
-                let span = match &e {
-                    MaterialError::Invalid {
-                        field: "youngs_modulus",
-                        ..
-                    } => m.youngs_modulus.span(),
-                    MaterialError::Invalid {
-                        field: "poisson_ratio",
-                        ..
-                    } => m.poisson_ratio.span(),
-                    MaterialError::Invalid {
-                        field: "allowable_pressure",
-                        ..
-                    } => m
-                        .allowable_pressure
-                        .as_ref()
-                        .map(|p| p.span())
-                        .unwrap_or_else(|| m.name.span()),
-                    MaterialError::Invalid {
-                        field: "allowable_shear_stress",
-                        ..
-                    } => m
-                        .allowable_shear_stress
-                        .as_ref()
-                        .map(|t| t.span())
-                        .unwrap_or_else(|| m.name.span()),
-                    _ => m.name.span(),
+                let field = match &e {
+                    MaterialError::Invalid { field, .. } => *field,
+                    _ => "",
                 };
+                let span = match field {
+                    "youngs_modulus" => Some(m.youngs_modulus.span()),
+                    "poisson_ratio" => Some(m.poisson_ratio.span()),
+                    "allowable_pressure" => m.allowable_pressure.as_ref().map(|p| p.span()),
+                    "allowable_shear_stress" => m.allowable_shear_stress.as_ref().map(|t| t.span()),
+                    _ => None,
+                }
+                .unwrap_or_else(|| m.name.span());
                 ctx.error(Some(&span), format!("materials[{}]", i + 1), e.to_string())
             })
         })

@@ -153,7 +153,7 @@ pub fn dynamics(d: &DynamicsFile, fx: &Fields) -> Result<DynamicsSettings, Scene
             i.x,
             i.y,
             i.z,
-            ["x", "y", "z"][k]
+            crate::dof::Dof::axis(k)
         )));
     }
     let centre_of_mass = match &d.centre_of_mass {
@@ -261,44 +261,4 @@ pub fn variation_bounds(
         surface_tilt_rad: scalar(&v.surface_tilt, "surface_tilt", "rad")?,
         groove_position_m: check(ctx, &v.groove_position, "groove_position", "m")?,
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn friction_of(text: &str) -> Result<FrictionSettings, SceneError> {
-        let f: FrictionFile = toml::from_str(text).unwrap();
-        friction(&f, &ErrorContext::new("f.toml", text))
-    }
-
-    /// mu_s may vary in mu0 +- spread only while it stays in [0, MU_MAX]:
-    /// the bounds spread = mu0 and mu0 + spread = MU_MAX pass, just past
-    /// them fails, naming the line and field of the spread.
-    #[test]
-    fn friction_spread_keeps_mu_in_its_range() {
-        let ok = friction_of("mu_static = 0.5\nspread = 0.5\n").unwrap();
-        assert_eq!((ok.mu_static, ok.spread, ok.dynamic_ratio), (0.5, 0.5, 0.8));
-        let e = friction_of("mu_static = 0.5\nspread = 0.51\n").unwrap_err();
-        assert_eq!((e.line, e.field.as_str()), (Some(2), "friction.spread"));
-        let (mu0, rest) = (0.75 * MU_MAX, 0.25 * MU_MAX);
-        assert!(friction_of(&format!("mu_static = {mu0}\nspread = {rest}\n")).is_ok());
-        let e = friction_of(&format!("mu_static = {mu0}\nspread = {}\n", rest + 1e-9)).unwrap_err();
-        assert!(e.reason.contains("exceeds"), "{e}");
-    }
-
-    /// The sampler name is checked here, case-insensitively, and kept as
-    /// plain data.
-    #[test]
-    fn study_sampler_is_checked_at_parse_time() {
-        let study_of = |text: &str| {
-            let st: StudyFile = toml::from_str(text).unwrap();
-            study(&st, &ErrorContext::new("s.toml", text))
-        };
-        let s = study_of("samples = 8\nsampler = \"MC\"\n").unwrap();
-        assert_eq!((s.samples, s.sampler), (8, SamplerChoice::MonteCarlo));
-        let e = study_of("samples = 8\nsampler = \"sobol\"\n").unwrap_err();
-        assert_eq!((e.line, e.field.as_str()), (Some(2), "study.sampler"));
-        assert!(e.reason.contains("lhs, mc or corners"), "{e}");
-    }
 }

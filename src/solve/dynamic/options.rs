@@ -25,7 +25,6 @@ impl StartPose {
     }
 }
 
-/// Settings of the dynamic solver.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DynamicOptions {
     pub start: StartPose,

@@ -34,7 +34,6 @@ pub struct Simulation<'a> {
     body: RigidBodyHandle,
     dt: f64,
     pub(super) ramp_time: f64,
-    /// Steps taken.
     pub(super) steps: usize,
     committed_pose: BodyPose,
     states: Vec<TangentialState>,
@@ -125,10 +124,6 @@ impl<'a> Simulation<'a> {
     /// Duration of the preload ramp [s].
     pub fn ramp_time(&self) -> f64 {
         self.ramp_time
-    }
-
-    pub fn frequencies(&self) -> Frequencies {
-        self.freq
     }
 
     pub fn mass(&self) -> &MassModel {

@@ -3,7 +3,6 @@
 
 use crate::assembly::BodyPose;
 
-/// Contact state in a trace.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum TraceState {
     Open,
@@ -21,7 +20,6 @@ impl TraceState {
     }
 }
 
-/// One contact in a trace sample.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TraceContact {
     /// Normal force including the dashpot [N].

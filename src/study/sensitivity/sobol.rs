@@ -137,10 +137,7 @@ pub fn sobol_indices(
         ));
     }
     let (first, total) = estimate(y, dims, n, &all);
-    let variance = {
-        let v = &y[..2 * n];
-        v.iter().map(|a| (a - mean).powi(2)).sum::<f64>() / (2 * n - 1) as f64
-    };
+    let variance = y[..2 * n].iter().map(|a| (a - mean).powi(2)).sum::<f64>() / (2 * n - 1) as f64;
     let mut rng = chacha(boot.seed, DOMAIN_BOOT);
     let mut reps_s = vec![Vec::with_capacity(boot.resamples); dims];
     let mut reps_t = vec![Vec::with_capacity(boot.resamples); dims];

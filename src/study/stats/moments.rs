@@ -54,7 +54,6 @@ impl Moments {
         Self::default()
     }
 
-    /// Add one value.
     pub fn push(&mut self, x: f64) {
         let n0 = self.n as f64;
         self.n += 1;
@@ -120,44 +119,5 @@ impl Moments {
     /// distribution, 1.8 for a uniform one); NaN without spread.
     pub fn kurtosis(&self) -> f64 {
         self.n as f64 * self.m4 / (self.m2 * self.m2)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn two_pass(v: &[f64]) -> (f64, f64, f64, f64) {
-        let n = v.len() as f64;
-        let mean = v.iter().sum::<f64>() / n;
-        let m = |p: i32| v.iter().map(|x| (x - mean).powi(p)).sum::<f64>();
-        (mean, m(2), m(3), m(4))
-    }
-
-    #[test]
-    fn push_and_merge_equal_two_pass() {
-        // A skewed, offset sequence (deterministic).
-        let v: Vec<f64> = (0..1000)
-            .map(|i| 1e3 + ((i * 7919) % 1000) as f64 / 1000.0 + ((i % 13) as f64).powi(2) * 1e-2)
-            .collect();
-        let (mean, m2, m3, m4) = two_pass(&v);
-        let mut all = Moments::new();
-        v.iter().for_each(|&x| all.push(x));
-        let mut a = Moments::new();
-        let mut b = Moments::new();
-        v[..317].iter().for_each(|&x| a.push(x));
-        v[317..].iter().for_each(|&x| b.push(x));
-        a.merge(&b);
-        for m in [all, a] {
-            assert_eq!(m.n, 1000);
-            assert!((m.mean - mean).abs() < 1e-12 * mean);
-            assert!((m.m2 - m2).abs() < 1e-9 * m2);
-            assert!((m.m3 - m3).abs() < 1e-8 * m2.powf(1.5));
-            assert!((m.m4 - m4).abs() < 1e-9 * m4);
-        }
-        // Uniform values have kurtosis 1.8.
-        let mut u = Moments::new();
-        (0..100_000).for_each(|i| u.push(i as f64));
-        assert!((u.kurtosis() - 1.8).abs() < 1e-3);
     }
 }

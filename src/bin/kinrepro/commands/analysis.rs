@@ -1,84 +1,66 @@
 //! `kinrepro stiffness` and `kinrepro load`: the seated coupling under extra loads.
 
-use super::*;
-use crate::args::*;
-use crate::error::{CliError, Context};
+use kinrepro::analysis::load::{envelope, load_path};
+use kinrepro::analysis::stiffness::CouplingStiffness;
+use kinrepro::report::analysis::{LoadReport, StiffnessReport};
+use kinrepro::solve::SolverOptions;
+use kinrepro::solve::quasistatic::seat;
+use nalgebra::Vector3;
 
-pub fn stiffness(args: StiffnessArgs) -> Result<(), CliError> {
-    let StiffnessArgs {
-        scene,
-        at,
-        mu,
-        json,
-    } = args;
-    let coupling = kinrepro::error::read_coupling(&scene)?;
+use super::*;
+use crate::error::{CliError, Context};
+use crate::flags::high::Checked;
+use crate::flags::low::{LoadArgs, StiffnessArgs};
+use kinrepro::solve::quasistatic::ExternalLoad;
+
+/// The scene's evaluation points by name.
+fn evaluation_points(coupling: &kinrepro::assembly::Coupling) -> Vec<(String, Vector3<f64>)> {
+    let points = &coupling.scene.evaluation_points;
+    points
+        .iter()
+        .map(|p| (p.name.clone(), p.position))
+        .collect()
+}
+
+pub fn stiffness(o: Checked<StiffnessArgs, Option<Vector3<f64>>>) -> Result<(), CliError> {
+    let Checked { args: a, opts: at } = o;
+    let coupling = kinrepro::error::read_coupling(&a.scene)?;
     let points = match at {
-        Some(_) => vec![("--at".to_string(), finite3("at", at)?)],
-        None => coupling
-            .scene
-            .evaluation_points
-            .iter()
-            .map(|p| (p.name.clone(), p.position))
-            .collect(),
+        Some(at) => vec![("--at".to_string(), at)],
+        None => evaluation_points(&coupling),
     };
-    let mu = mu.unwrap_or_else(|| kinrepro::solve::nominal_mu(&coupling));
+    let mu =
+        a.mu.unwrap_or_else(|| kinrepro::solve::nominal_mu(&coupling));
     let file = coupling.scene.file.clone();
-    let seating =
-        kinrepro::solve::quasistatic::seat(&coupling, &mu, &Default::default()).context(&file)?;
-    let k = kinrepro::analysis::stiffness::CouplingStiffness::new(&coupling, &seating, &mu)
-        .context(&file)?;
-    let report =
-        kinrepro::report::analysis::StiffnessReport::new(&coupling, &mu, &seating, &k, &points)
-            .context(&file)?;
-    if json {
+    let seating = seat(&coupling, &mu, &SolverOptions::default()).context(&file)?;
+    let k = CouplingStiffness::new(&coupling, &seating, &mu).context(&file)?;
+    let report = StiffnessReport::new(&coupling, &mu, &seating, &k, &points).context(&file)?;
+    if a.json {
         print_json(&report)
     } else {
         emit(&report.table())
     }
 }
 
-pub fn load(args: LoadArgs) -> Result<(), CliError> {
-    let LoadArgs {
-        scene,
-        force,
-        at,
-        moment,
-        mu,
-        json,
-    } = args;
-    let force = finite3("force", Some(force))?;
-    let point = finite3("at", Some(at))?;
-    let moment = finite3("moment", moment)?;
-    if force.norm() == 0.0 && moment.norm() == 0.0 {
-        return Err(CliError::Usage(
-            "--force and --moment are both zero: there is no load to apply".into(),
-        ));
-    }
-    let coupling = kinrepro::error::read_coupling(&scene)?;
-    let mu = mu.unwrap_or_else(|| kinrepro::solve::nominal_mu(&coupling));
+pub fn load(o: Checked<LoadArgs, ExternalLoad>) -> Result<(), CliError> {
+    let Checked {
+        args: a,
+        opts: load,
+    } = o;
+    let coupling = kinrepro::error::read_coupling(&a.scene)?;
+    let mu =
+        a.mu.unwrap_or_else(|| kinrepro::solve::nominal_mu(&coupling));
     let file = coupling.scene.file.clone();
-    let opts = kinrepro::solve::SolverOptions::default();
-    let seating = kinrepro::solve::quasistatic::seat(&coupling, &mu, &opts).context(&file)?;
-    let load = kinrepro::solve::quasistatic::ExternalLoad {
-        force,
-        point,
-        moment,
-    };
-    let path = kinrepro::analysis::load::load_path(&coupling, &mu, &seating, &load, 1.0, &opts)
+    let opts = SolverOptions::default();
+    let seating = seat(&coupling, &mu, &opts).context(&file)?;
+    let path = load_path(&coupling, &mu, &seating, &load, 1.0, &opts)
         .context(format!("{file}: the load path failed"))?;
-    let envelope = kinrepro::analysis::load::envelope(&coupling, &mu, &seating, &load, &opts)
+    let envelope = envelope(&coupling, &mu, &seating, &load, &opts)
         .context(format!("{file}: the envelope search failed"))?;
-    let mut points: Vec<(String, nalgebra::Vector3<f64>)> = coupling
-        .scene
-        .evaluation_points
-        .iter()
-        .map(|p| (p.name.clone(), p.position))
-        .collect();
-    points.push(("load point".to_string(), point));
-    let report = kinrepro::report::analysis::LoadReport::new(
-        &coupling, &mu, &seating, &load, &path, &envelope, &points,
-    );
-    if json {
+    let mut points = evaluation_points(&coupling);
+    points.push(("load point".to_string(), load.point));
+    let report = LoadReport::new(&coupling, &mu, &seating, &load, &path, &envelope, &points);
+    if a.json {
         print_json(&report)
     } else {
         emit(&report.table())

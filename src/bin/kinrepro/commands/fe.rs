@@ -1,17 +1,19 @@
 //! `kinrepro validate-hertz`: the FE check of the Hertz law.
 
-use super::{emit, print_json};
-use crate::args::*;
-use crate::error::{CliError, Context};
+use kinrepro::fe::pairs::{distinct_pairs, validate_pair};
 
-pub fn validate_hertz(args: ValidateHertzArgs) -> Result<(), CliError> {
-    let ValidateHertzArgs {
-        scenes,
-        mesh,
-        convergence,
-        json,
-    } = args;
-    let couplings = if scenes.is_empty() {
+use super::{emit, print_json};
+use crate::error::{CliError, Context};
+use crate::flags::high::Checked;
+use crate::flags::low::ValidateHertzArgs;
+use kinrepro::fe::MeshOptions;
+
+pub fn validate_hertz(o: Checked<ValidateHertzArgs, MeshOptions>) -> Result<(), CliError> {
+    let Checked {
+        args: a,
+        opts: mesh,
+    } = o;
+    let couplings = if a.scenes.is_empty() {
         kinrepro::scene::bundled::PAPER_SCENES
             .iter()
             .map(|(file, text)| {
@@ -20,42 +22,25 @@ pub fn validate_hertz(args: ValidateHertzArgs) -> Result<(), CliError> {
             })
             .collect::<Result<Vec<_>, CliError>>()?
     } else {
-        scenes
+        a.scenes
             .iter()
             .map(|p| kinrepro::error::read_coupling(p))
             .collect::<Result<Vec<_>, _>>()?
     };
-    let cases = kinrepro::fe::pairs::distinct_pairs(&couplings)
-        .map_err(|(f, e)| CliError::from(e).in_context(f))?;
-    let mesh = match mesh {
-        MeshKind::Default => kinrepro::fe::MeshOptions::default(),
-        MeshKind::Coarse => kinrepro::fe::MeshOptions::coarse(),
-    };
-    let levels = convergence.unwrap_or_default();
-    if levels.iter().any(|l| !(l.is_finite() && *l > 0.0)) {
-        return Err(CliError::Usage(
-            "--convergence: element sizes must be positive numbers".into(),
-        ));
-    }
+    let cases = distinct_pairs(&couplings).map_err(|(f, e)| CliError::from(e).in_context(f))?;
+    let levels = a.convergence.unwrap_or_default();
     let mut rows = Vec::new();
     for case in &cases {
-        eprintln!(
-            "validating {} {}/{} at {:.4} N ...",
+        let name = format!(
+            "{} {}/{}",
             case.pair.shape.name(),
             case.pair.material1.name,
-            case.pair.material2.name,
-            case.load
+            case.pair.material2.name
         );
-        rows.push(
-            kinrepro::fe::pairs::validate_pair(case, &mesh, &levels).context(format!(
-                "{} {}/{}",
-                case.pair.shape.name(),
-                case.pair.material1.name,
-                case.pair.material2.name
-            ))?,
-        );
+        eprintln!("validating {name} at {:.4} N ...", case.load);
+        rows.push(validate_pair(case, &mesh, &levels).context(name)?);
     }
-    if json {
+    if a.json {
         print_json(&rows)
     } else {
         emit(&kinrepro::report::validate_hertz::table(&rows))

@@ -1,36 +1,41 @@
-//! One function per verb; shared helpers for parsing and printing.
+//! One function per verb, taking its checked options (`crate::flags`):
+//! call the library and print. Shared helpers for printing and the thread pool.
 
 mod analysis;
-pub mod calibrate;
+mod calibrate;
 mod contact;
 mod fe;
-pub mod report;
+mod report;
 mod scene;
 mod seat;
 mod study;
-pub mod sweep;
+mod sweep;
+
+use std::path::{Path, PathBuf};
 
 use kinrepro::study::StudyReport;
 
-use crate::args::{Command, Format};
-use crate::error::CliError;
+use crate::error::{CliError, Context};
+use crate::flags::high::{self, checked};
+use crate::flags::low::{Command, Format};
 
+/// Check the flags of `command` (`crate::flags::high`), then run it.
 pub fn dispatch(command: Command) -> Result<(), CliError> {
     match command {
-        Command::Contact(a) => contact::contact(a),
-        Command::Check(a) => scene::check(a),
-        Command::Expand(a) => scene::expand(a),
-        Command::Run(a) => seat::run(a),
-        Command::Stiffness(a) => analysis::stiffness(a),
-        Command::Load(a) => analysis::load(a),
-        Command::Study(a) => study::study(a),
+        Command::Contact(a) => contact::contact(checked(a, high::contact)?),
+        Command::Check(a) => scene::check(&a.scenes),
+        Command::Expand(a) => scene::expand(&a.scene),
+        Command::Run(a) => seat::run(checked(a, high::run)?),
+        Command::Stiffness(a) => analysis::stiffness(checked(a, high::stiffness)?),
+        Command::Load(a) => analysis::load(checked(a, high::load)?),
+        Command::Study(a) => study::study(checked(a, high::study)?),
         Command::Merge(a) => study::merge(a),
-        Command::Sweep(a) => sweep::sweep(a),
-        Command::ValidateHertz(a) => fe::validate_hertz(a),
+        Command::Sweep(a) => sweep::sweep(checked(a, high::sweep)?),
+        Command::ValidateHertz(a) => fe::validate_hertz(checked(a, high::validate_hertz)?),
         Command::Report(a) => report::report(a),
-        Command::Materials(a) => report::materials(a),
-        Command::Calibrate(a) => calibrate::calibrate_cmd(a),
-        Command::Predict(a) => calibrate::predict_cmd(a),
+        Command::Materials(a) => report::materials(a.format),
+        Command::Calibrate(a) => calibrate::calibrate(checked(a, high::calibrate)?),
+        Command::Predict(a) => calibrate::predict(checked(a, high::predict)?.args),
     }
 }
 
@@ -38,7 +43,7 @@ pub fn print_study(report: &StudyReport, format: Format) -> Result<(), CliError>
     match format {
         Format::Table => emit(&report.table()),
         Format::Csv => emit(&report.csv()),
-        Format::Json => emit(&format!("{}\n", serde_json::to_string_pretty(report)?)),
+        Format::Json => print_json(report),
     }
 }
 
@@ -58,15 +63,11 @@ pub fn emit(text: &str) -> Result<(), CliError> {
 /// Most worker threads per core that `--jobs` may ask for.
 pub const JOBS_PER_CORE: usize = 4;
 
-/// Build the global thread pool for `--jobs`, capped at the number of
-/// samples and at [`JOBS_PER_CORE`] per core (said on stderr when capped).
+/// Build the global thread pool for `--jobs` (at least 1, checked by the
+/// flags), capped at the number of samples and at [`JOBS_PER_CORE`] per
+/// core (said on stderr when capped).
 pub fn set_jobs(jobs: Option<usize>, samples: usize) -> Result<(), CliError> {
     let Some(asked) = jobs else { return Ok(()) };
-    if asked == 0 {
-        return Err(CliError::Usage(
-            "--jobs 0: need at least 1 worker thread".into(),
-        ));
-    }
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let cap = (JOBS_PER_CORE * cores).min(samples.max(1));
     let j = asked.min(cap);
@@ -81,67 +82,41 @@ pub fn set_jobs(jobs: Option<usize>, samples: usize) -> Result<(), CliError> {
         .map_err(CliError::Jobs)
 }
 
-/// Documented range of `--increments`.
-pub const INCREMENTS: std::ops::RangeInclusive<usize> = 1..=100_000;
-
-/// `--increments` inside [`INCREMENTS`].
-pub fn check_increments(n: usize) -> Result<(), CliError> {
-    if INCREMENTS.contains(&n) {
-        Ok(())
-    } else {
-        Err(CliError::Usage(format!(
-            "--increments {n}: out of range, need {}..={} load increments",
-            INCREMENTS.start(),
-            INCREMENTS.end()
-        )))
+/// The progress bar (on a terminal only).
+pub fn progress(total: usize) -> Result<indicatif::ProgressBar, CliError> {
+    if !std::io::IsTerminal::is_terminal(&std::io::stderr()) {
+        return Ok(indicatif::ProgressBar::hidden());
     }
-}
-
-pub fn vector3(name: &str, v: Option<Vec<f64>>) -> Result<nalgebra::Vector3<f64>, CliError> {
-    match v {
-        None => Ok(nalgebra::Vector3::zeros()),
-        Some(v) if v.len() == 3 => Ok(nalgebra::Vector3::new(v[0], v[1], v[2])),
-        Some(v) => Err(CliError::Usage(format!(
-            "--{name} needs three comma-separated values, got {}",
-            v.len()
-        ))),
-    }
-}
-
-/// A finite three-vector option (None -> zero).
-pub fn finite3(name: &str, v: Option<Vec<f64>>) -> Result<nalgebra::Vector3<f64>, CliError> {
-    let x = vector3(name, v)?;
-    if x.iter().all(|c| c.is_finite()) {
-        Ok(x)
-    } else {
-        Err(CliError::Usage(format!(
-            "--{name} needs three finite numbers, got ({}, {}, {})",
-            x.x, x.y, x.z
-        )))
-    }
+    let b = indicatif::ProgressBar::new(total as u64);
+    b.set_style(indicatif::ProgressStyle::with_template(
+        "{elapsed_precise} [{bar:40}] {pos}/{len} seatings ({eta})",
+    )?);
+    Ok(b)
 }
 
 pub fn print_json<T: serde::Serialize>(v: &T) -> Result<(), CliError> {
     emit(&format!("{}\n", serde_json::to_string_pretty(v)?))
 }
 
+/// The text of an input file.
+pub fn read_text(path: &Path) -> Result<String, CliError> {
+    std::fs::read_to_string(path)
+        .map_err(|e| CliError::file(path.display(), "cannot read the file: ", e))
+}
+
 /// The parts of a `merge` (study or sweep JSON), each read once: `what`
 /// names the document in the error (`"study"`, `"sweep"`); `first` is the
-/// first part's text if the caller has already read it.
+/// first part's text, already read.
 pub fn read_json_parts<T: serde::de::DeserializeOwned>(
-    parts: &[std::path::PathBuf],
-    mut first: Option<String>,
+    parts: &[PathBuf],
+    first: String,
     what: &str,
 ) -> Result<Vec<(String, T)>, CliError> {
-    use crate::error::Context;
+    let mut first = Some(first);
     parts
         .iter()
         .map(|p| {
-            let text = match first.take() {
-                Some(t) => t,
-                None => std::fs::read_to_string(p)
-                    .map_err(|e| CliError::file(p.display(), "cannot read: ", e))?,
-            };
+            let text = first.take().map_or_else(|| read_text(p), Ok)?;
             let doc = serde_json::from_str::<T>(&text)
                 .context(format!("{}: not a kinrepro {what} JSON", p.display()))?;
             Ok((p.display().to_string(), doc))

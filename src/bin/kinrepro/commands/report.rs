@@ -2,9 +2,8 @@
 //! `kinrepro study --html FILE` (the same for the study just run) and
 //! `kinrepro materials` (the built-in materials and their sources).
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-use clap::Args;
 use kinrepro::assembly::Coupling;
 use kinrepro::report::html::{
     HtmlReport, Section, StudyInput, load_reference, load_study, scene_input,
@@ -12,33 +11,8 @@ use kinrepro::report::html::{
 use kinrepro::study::StudyReport;
 
 use super::*;
-use crate::args::Format;
 use crate::error::CliError;
-
-#[derive(Args)]
-pub struct ReportArgs {
-    /// Study JSON files (`kinrepro study --format json`, or `kinrepro merge`).
-    #[arg(required = true)]
-    pub studies: Vec<PathBuf>,
-    /// The HTML file to write.
-    #[arg(long)]
-    pub out: PathBuf,
-    /// Reference values of sigma to show with the results (CSV, header
-    /// label,scene,point,x_nm,y_nm,z_nm,phi_x_nrad,phi_y_nrad,phi_z_nrad;
-    /// e.g. docs/reference/paper_table2.csv).
-    #[arg(long)]
-    pub reference: Option<PathBuf>,
-    /// Replace an existing --out file.
-    #[arg(long)]
-    pub force: bool,
-}
-
-#[derive(Args)]
-pub struct MaterialsArgs {
-    /// table (GPa, MPa, kg/m^3, with sources) | csv (SI) | json (SI).
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
-}
+use crate::flags::low::ReportArgs;
 
 pub fn report(args: ReportArgs) -> Result<(), CliError> {
     let studies = args
@@ -113,9 +87,9 @@ fn write_html(
     Ok(())
 }
 
-pub fn materials(args: MaterialsArgs) -> Result<(), CliError> {
+pub fn materials(format: Format) -> Result<(), CliError> {
     use kinrepro::report::materials::*;
-    match args.format {
+    match format {
         Format::Table => emit(&materials_table()),
         Format::Csv => emit(&materials_csv()),
         Format::Json => print_json(&materials_doc()),

@@ -1,12 +1,12 @@
 //! `kinrepro check` and `kinrepro expand`: scene validation.
 
-use crate::args::*;
+use std::path::{Path, PathBuf};
+
 use crate::error::{CliError, Context};
 
-pub fn check(args: CheckArgs) -> Result<(), CliError> {
-    let CheckArgs { scenes } = args;
+pub fn check(scenes: &[PathBuf]) -> Result<(), CliError> {
     let (mut failed, mut unseated) = (0, 0);
-    for path in &scenes {
+    for path in scenes {
         match kinrepro::error::read_coupling(path) {
             Ok(c) => {
                 let moves = kinrepro::study::runner::friction_moves_pose(&c, &Default::default())?;
@@ -38,11 +38,9 @@ pub fn check(args: CheckArgs) -> Result<(), CliError> {
     Ok(())
 }
 
-pub fn expand(args: ExpandArgs) -> Result<(), CliError> {
-    let ExpandArgs { scene } = args;
+pub fn expand(scene: &Path) -> Result<(), CliError> {
     let file = scene.display().to_string();
-    let source = std::fs::read_to_string(&scene)
-        .map_err(|e| CliError::file(&file, "cannot read the file: ", e))?;
+    let source = super::read_text(scene)?;
     let text = kinrepro::scene::Scene::expand_text(&source, &file)?;
     // The explicit form must assemble too.
     let explicit = kinrepro::scene::Scene::parse(&text, &file)?;

@@ -1,70 +1,40 @@
 //! `kinrepro run`: one seating.
 
-use super::*;
-use crate::args::*;
-use crate::error::{CliError, Context};
-use kinrepro::assembly::Coupling;
-use kinrepro::solve::Seating;
-use kinrepro::solve::dynamic::{DynamicOptions, StartPose, seat_traced};
 use std::path::Path;
 
-pub fn run(args: RunArgs) -> Result<(), CliError> {
-    let RunArgs {
-        scene,
-        mu,
-        increments,
-        solver,
-        trace,
-        force,
-        offset,
-        tilt,
-        json,
-    } = args;
-    let coupling = kinrepro::error::read_coupling(&scene)?;
-    if solver == SolverKind::QuasiStatic && (trace.is_some() || offset.is_some() || tilt.is_some())
-    {
-        return Err(CliError::Usage(
-            "--trace, --offset and --tilt need --solver dynamic".to_string(),
-        ));
-    }
-    check_increments(increments)?;
-    let opts = kinrepro::solve::SolverOptions {
-        increments,
-        ..Default::default()
-    };
-    let dyn_opts = DynamicOptions {
-        start: StartPose {
-            offset: vector3("offset", offset)?,
-            tilt: vector3("tilt", tilt)?,
-        },
-        ..Default::default()
-    };
+use kinrepro::assembly::Coupling;
+use kinrepro::report::run::RunReport;
+use kinrepro::solve::dynamic::{DynamicOptions, seat_traced};
+use kinrepro::solve::{Method, Seating};
+
+use super::*;
+use crate::error::{CliError, Context};
+use crate::flags::high::Checked;
+use crate::flags::low::RunArgs;
+
+pub fn run(o: Checked<RunArgs, Method>) -> Result<(), CliError> {
+    let Checked {
+        args: a,
+        opts: method,
+    } = o;
+    let coupling = kinrepro::error::read_coupling(&a.scene)?;
     let nominal_mu = kinrepro::solve::nominal_mu(&coupling);
-    let mu = mu.unwrap_or_else(|| nominal_mu.clone());
+    let mu = a.mu.unwrap_or_else(|| nominal_mu.clone());
     let file = coupling.scene.file.clone();
     let seat = |m: &[f64]| {
-        match solver {
-            SolverKind::QuasiStatic => kinrepro::solve::quasistatic::seat(&coupling, m, &opts),
-            SolverKind::Dynamic => kinrepro::solve::dynamic::seat(&coupling, m, &dyn_opts),
+        match &method {
+            Method::QuasiStatic(q) => kinrepro::solve::quasistatic::seat(&coupling, m, q),
+            Method::Dynamic(d) => kinrepro::solve::dynamic::seat(&coupling, m, d),
         }
         .context(&file)
     };
-    let seating = match (&trace, solver) {
-        (Some(path), SolverKind::Dynamic) => traced(&coupling, &mu, &dyn_opts, path, force)?,
+    let seating = match (&a.trace, &method) {
+        (Some(path), Method::Dynamic(d)) => traced(&coupling, &mu, d, path, a.force)?,
         _ => seat(&mu)?,
     };
     let nominal = seat(&nominal_mu)?;
-    let report = kinrepro::report::run::RunReport::new(
-        &coupling,
-        &mu,
-        &seating,
-        &nominal,
-        match solver {
-            SolverKind::QuasiStatic => "quasi-static",
-            SolverKind::Dynamic => "dynamic",
-        },
-    );
-    if json {
+    let report = RunReport::new(&coupling, &mu, &seating, &nominal, method.name());
+    if a.json {
         print_json(&report)
     } else {
         emit(&report.table())

@@ -1,10 +1,12 @@
-//! Command-line arguments (clap derive): one struct per verb.
+//! The low-level arguments: what clap parses, one struct per verb, as
+//! close to the command line as the types allow (numbers, paths, names of
+//! a fixed set). Nothing here checks a value against a range or another
+//! flag; [`super::high`] does that, once, for every verb.
 
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use kinrepro::contact::{ContactShape, TangentialLaw};
-use kinrepro::study::{Sampler, Shard};
 
 #[derive(Parser)]
 #[command(
@@ -16,6 +18,8 @@ pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
 }
+
+pub use super::low_study::{CalibrateArgs, PredictArgs, StudyArgs, SweepArgs};
 
 #[derive(Subcommand)]
 pub enum Command {
@@ -39,41 +43,57 @@ pub enum Command {
     Merge(MergeArgs),
     /// Sweep scene fields over a grid or an LHS: reproducibility, stiffness,
     /// safety and friction limit per design point, and the Pareto front.
-    Sweep(crate::commands::sweep::SweepArgs),
+    Sweep(SweepArgs),
     /// Check the Hertz law of every distinct contact pair of the scenes with
     /// the mini FE solver, at the load the nominal seating reaches.
     ValidateHertz(ValidateHertzArgs),
     /// Print the explicit form of a scene (loads back to the same coupling).
     Expand(ExpandArgs),
     /// Write one self-contained HTML report of study JSON files.
-    Report(crate::commands::report::ReportArgs),
+    Report(ReportArgs),
     /// List the built-in materials with E, nu, density, allowable pressure and sources.
-    Materials(crate::commands::report::MaterialsArgs),
+    Materials(MaterialsArgs),
     /// Fit the friction spread of a scene to a measured re-seating scatter
     /// (docs/measurements.md) and write a calibration file.
-    Calibrate(crate::commands::calibrate::CalibrateArgs),
+    Calibrate(CalibrateArgs),
     /// Predict sigma of other scenes with a calibrated friction spread, with
     /// a prediction interval.
-    Predict(crate::commands::calibrate::PredictArgs),
+    Predict(PredictArgs),
 }
 
 #[derive(Args)]
 pub struct ContactArgs {
-    /// sphere-plane | sphere-sphere | sphere-seat | sphere-cylinder |
-    /// sphere-arch | crossed-cylinders (shorthands of --radii1/--radii2).
+    /// sphere-plane | sphere-sphere | sphere-seat | sphere-cylinder
+    /// (shorthands of --radii1/--radii2).
     #[arg(long, required_unless_present = "radii1", conflicts_with = "radii1")]
     pub shape: Option<ContactShape>,
-    /// Radius of the moving ball (crossed-cylinders: its pin) [m].
-    #[arg(long, allow_hyphen_values = true, required_unless_present = "radii1")]
+    /// Radius of the moving ball [m] (with --shape).
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        required_unless_present = "radii1",
+        conflicts_with = "radii1"
+    )]
     pub radius1: Option<f64>,
-    /// Radius of the fixed sphere, seat, cylinder or arch [m].
+    /// Radius of the fixed sphere, seat or cylinder [m] (with --shape).
     #[arg(long, allow_hyphen_values = true, conflicts_with = "radii1")]
     pub radius2: Option<f64>,
-    /// Principal radii RX,RY of body 1 [m] (negative: concave, inf: flat).
-    #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true, requires = "radii2", conflicts_with = "radius1")]
+    /// Principal radii RX,RY of body 1, the moving element [m] (negative:
+    /// concave, inf: flat).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        requires = "radii2"
+    )]
     pub radii1: Option<Vec<f64>>,
-    /// Principal radii RX,RY of body 2 [m].
-    #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true, requires = "radii1")]
+    /// Principal radii RX,RY of body 2, the fixed element [m].
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        requires = "radii1"
+    )]
     pub radii2: Option<Vec<f64>>,
     /// Angle from body 1's RX direction to body 2's [deg] (with --radii1).
     #[arg(long, allow_hyphen_values = true, requires = "radii1")]
@@ -181,85 +201,6 @@ pub struct LoadArgs {
 }
 
 #[derive(Args)]
-pub struct StudyArgs {
-    /// Scene files (TOML); the variants are reported side by side.
-    #[arg(required = true)]
-    pub scenes: Vec<PathBuf>,
-    /// Samples per scene (default: the scene's [study] samples; corners: 2^6).
-    #[arg(long)]
-    pub samples: Option<usize>,
-    /// lhs (space-filling Latin hypercube) | mc (Monte Carlo) | corners (all 2^6 extremes).
-    #[arg(long)]
-    pub sampler: Option<Sampler>,
-    /// Seed of the design (default: the scene's [study] seed).
-    #[arg(long)]
-    pub seed: Option<u64>,
-    /// Worker threads (default: all cores; capped at 4 per core and at the
-    /// number of samples).
-    #[arg(long)]
-    pub jobs: Option<usize>,
-    /// Output: table (nm, nrad) | csv (SI) | json (statistics in nm/nrad, samples in SI).
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
-    /// Also write per-sample CSV files and SVG plots into this directory
-    /// (existing files are refused, unless --force).
-    #[arg(long)]
-    pub out: Option<PathBuf>,
-    /// Replace existing files of --out (and --html).
-    #[arg(long)]
-    pub force: bool,
-    /// Also write the self-contained HTML report of this study to FILE.
-    #[arg(long)]
-    pub html: Option<PathBuf>,
-    /// Reference values of sigma for the --html report (CSV; see `kinrepro report`).
-    #[arg(long, requires = "html")]
-    pub reference: Option<PathBuf>,
-    /// Exit 0 even if a coupling cannot seat (zero scatter: nothing slid);
-    /// the result still says so.
-    #[arg(long)]
-    pub allow_unseated: bool,
-    /// Run only shard I of N of the samples (1-based, e.g. 3/16); merge the
-    /// JSON outputs with `kinrepro merge`.
-    #[arg(long)]
-    pub shard: Option<Shard>,
-    /// Nominal number of load increments per seating (quasi-static
-    /// solver), 1..=100000.
-    #[arg(long, default_value_t = 20)]
-    pub increments: usize,
-    /// Seating solver.
-    #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
-    pub solver: SolverKind,
-    /// What varies from sample to sample, comma-separated: friction,
-    /// preload (point offset and direction tilt, bounds from the scene's
-    /// [variation] table), tolerances (manufacturing errors from
-    /// [variation], reported separately as interchangeability), start (a
-    /// random start pose above the seat; needs --solver dynamic).
-    #[arg(long, value_delimiter = ',', default_value = "friction")]
-    pub vary: Vec<VaryKind>,
-    /// Start variation: half-widths of the x and y offset and the largest
-    /// height z above the seat [m].
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
-    pub offset_bounds: Option<Vec<f64>>,
-    /// Start variation: half-widths of the tilt about x, y, z [rad].
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
-    pub tilt_bounds: Option<Vec<f64>>,
-    /// Also print (and add to the JSON) the share of each DOF's variance
-    /// due to each input (standardized regression coefficients, R^2) and
-    /// the first-order and total Sobol indices with their 90 % intervals.
-    #[arg(long)]
-    pub sensitivity: bool,
-    /// Sobol indices: base sample size N of the Saltelli matrices (N (d + 2)
-    /// extra seatings for d inputs).
-    #[arg(long, default_value_t = kinrepro::study::sensitivity::sobol::DEFAULT_BASE_SAMPLES)]
-    pub sobol_samples: usize,
-    /// LHS: number of independent replicates the samples are split into
-    /// (default 5, or the largest divisor of the samples in 2..=5); the
-    /// interval of sigma comes from their spread. 1: a single LHS, no interval.
-    #[arg(long)]
-    pub replicates: Option<usize>,
-}
-
-#[derive(Args)]
 pub struct MergeArgs {
     /// JSON files written by `kinrepro study --shard I/N --format json` (or
     /// `kinrepro sweep --shard I/N --format json`).
@@ -289,6 +230,31 @@ pub struct ValidateHertzArgs {
 pub struct ExpandArgs {
     /// Scene file (TOML).
     pub scene: PathBuf,
+}
+
+#[derive(Args)]
+pub struct ReportArgs {
+    /// Study JSON files (`kinrepro study --format json`, or `kinrepro merge`).
+    #[arg(required = true)]
+    pub studies: Vec<PathBuf>,
+    /// The HTML file to write.
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Reference values of sigma to show with the results (CSV, header
+    /// label,scene,point,x_nm,y_nm,z_nm,phi_x_nrad,phi_y_nrad,phi_z_nrad;
+    /// e.g. docs/reference/paper_table2.csv).
+    #[arg(long)]
+    pub reference: Option<PathBuf>,
+    /// Replace an existing --out file.
+    #[arg(long)]
+    pub force: bool,
+}
+
+#[derive(Args)]
+pub struct MaterialsArgs {
+    /// table (GPa, MPa, kg/m^3, with sources) | csv (SI) | json (SI).
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -1,0 +1,235 @@
+//! The low-level arguments of the verbs that run studies: `study`,
+//! `sweep`, `calibrate` and `predict` (what clap parses; the checks are in
+//! [`super::high`]).
+
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
+use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED};
+use kinrepro::study::{Sampler, Shard};
+
+use super::low::{Format, SolverKind, VaryKind};
+
+#[derive(Args)]
+pub struct StudyArgs {
+    /// Scene files (TOML); the variants are reported side by side.
+    #[arg(required = true)]
+    pub scenes: Vec<PathBuf>,
+    /// Samples per scene (default: the scene's [study] samples; corners: 2^6).
+    #[arg(long)]
+    pub samples: Option<usize>,
+    /// lhs (space-filling Latin hypercube) | mc (Monte Carlo) | corners (all 2^6 extremes).
+    #[arg(long)]
+    pub sampler: Option<Sampler>,
+    /// Seed of the design (default: the scene's [study] seed).
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Worker threads (default: all cores; capped at 4 per core and at the
+    /// number of samples).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// Output: table (nm, nrad) | csv (SI) | json (statistics in nm/nrad, samples in SI).
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+    /// Also write per-sample CSV files and SVG plots into this directory
+    /// (existing files are refused, unless --force).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Replace existing files of --out (and --html).
+    #[arg(long)]
+    pub force: bool,
+    /// Also write the self-contained HTML report of this study to FILE.
+    #[arg(long)]
+    pub html: Option<PathBuf>,
+    /// Reference values of sigma for the --html report (CSV; see `kinrepro report`).
+    #[arg(long, requires = "html")]
+    pub reference: Option<PathBuf>,
+    /// Exit 0 even if a coupling cannot seat (zero scatter: nothing slid);
+    /// the result still says so.
+    #[arg(long)]
+    pub allow_unseated: bool,
+    /// Run only shard I of N of the samples (1-based, e.g. 3/16); merge the
+    /// JSON outputs with `kinrepro merge`.
+    #[arg(long)]
+    pub shard: Option<Shard>,
+    /// Nominal number of load increments per seating (quasi-static
+    /// solver), 1..=100000.
+    #[arg(long, default_value_t = 20)]
+    pub increments: usize,
+    /// Seating solver.
+    #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
+    pub solver: SolverKind,
+    /// What varies from sample to sample, comma-separated: friction,
+    /// preload (point offset and direction tilt, bounds from the scene's
+    /// [variation] table), tolerances (manufacturing errors from
+    /// [variation], reported separately as interchangeability), start (a
+    /// random start pose above the seat; needs --solver dynamic).
+    #[arg(long, value_delimiter = ',', default_value = "friction")]
+    pub vary: Vec<VaryKind>,
+    /// Start variation: half-widths of the x and y offset and the largest
+    /// height z above the seat [m].
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub offset_bounds: Option<Vec<f64>>,
+    /// Start variation: half-widths of the tilt about x, y, z [rad].
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub tilt_bounds: Option<Vec<f64>>,
+    /// Also print (and add to the JSON) the share of each DOF's variance
+    /// due to each input (standardized regression coefficients, R^2) and
+    /// the first-order and total Sobol indices with their 90 % intervals.
+    #[arg(long)]
+    pub sensitivity: bool,
+    /// Sobol indices: base sample size N of the Saltelli matrices (N (d + 2)
+    /// extra seatings for d inputs).
+    #[arg(long, default_value_t = kinrepro::study::sensitivity::sobol::DEFAULT_BASE_SAMPLES)]
+    pub sobol_samples: usize,
+    /// LHS: number of independent replicates the samples are split into
+    /// (default 5, or the largest divisor of the samples in 2..=5); the
+    /// interval of sigma comes from their spread. 1: a single LHS, no interval.
+    #[arg(long)]
+    pub replicates: Option<usize>,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum DesignArg {
+    /// Every combination of the --set values.
+    Grid,
+    /// A space-filling Latin hypercube of --points points over the ranges.
+    Lhs,
+}
+
+#[derive(Args)]
+pub struct SweepArgs {
+    /// The high-level scene file (TOML) whose fields are swept.
+    pub scene: PathBuf,
+    /// FIELD=VALUES: a scene field by its TOML path (e.g. preload.force,
+    /// coupling.opening_angle_deg, coupling.groove_material,
+    /// materials.NAME.youngs_modulus) and its values: a list 5,10,20, a
+    /// range a:b:count, log:a:b:count, or material names. Repeatable.
+    #[arg(long = "set", required = true)]
+    pub sets: Vec<String>,
+    /// grid (every combination) | lhs (--points N, space-filling).
+    #[arg(long, value_enum, default_value_t = DesignArg::Grid)]
+    pub design: DesignArg,
+    /// Design points of an LHS design.
+    #[arg(long)]
+    pub points: Option<usize>,
+    /// Evaluation point whose largest translational sigma is the Pareto
+    /// objective (default: the scene's first).
+    #[arg(long)]
+    pub pareto_point: Option<String>,
+    /// Samples per design point (default: the scene's [study] samples).
+    #[arg(long)]
+    pub samples: Option<usize>,
+    /// lhs | mc | corners: the study design of every point.
+    #[arg(long)]
+    pub sampler: Option<Sampler>,
+    /// Seed of the study design (the same for every point) and of an LHS sweep design.
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// LHS replicates of each point's study (see `study --replicates`).
+    #[arg(long)]
+    pub replicates: Option<usize>,
+    /// Nominal number of load increments per seating, 1..=100000.
+    #[arg(long, default_value_t = 20)]
+    pub increments: usize,
+    /// Worker threads (capped at 4 per core).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+    /// table (nm, nrad) | csv (SI, long format) | json (docs/output.md).
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+    /// Write the SVG design charts into this directory.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Write the design charts as one self-contained HTML report
+    /// (inline SVG, no network).
+    #[arg(long)]
+    pub html: Option<PathBuf>,
+    /// Replace existing files of --out and --html.
+    #[arg(long)]
+    pub force: bool,
+    /// Evaluate only shard I of N of the design points; merge the JSON
+    /// parts with `kinrepro merge`.
+    #[arg(long)]
+    pub shard: Option<Shard>,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TextFormat {
+    /// Human table (nm, nrad).
+    Table,
+    /// JSON (calibration: SI; predict: the study schema, nm and nrad).
+    Json,
+}
+
+#[derive(Args)]
+pub struct CalibrateArgs {
+    /// Scene file (TOML) of the measured coupling.
+    pub scene: PathBuf,
+    /// Measurement file: one row per re-seating cycle (columns such as
+    /// x_nm, phi_x_nrad), or a summary (dof,unit,sigma,cycles).
+    #[arg(long)]
+    pub measured: PathBuf,
+    /// Field separator of the measurement file: `,`, `;`, `tab` (or any one
+    /// ASCII character); default: detected from its header line.
+    #[arg(long)]
+    pub delimiter: Option<String>,
+    /// Parameters to fit, comma-separated: any of spread, mu_static,
+    /// dynamic_ratio, support_compliance (the others held at the scene's
+    /// values; docs/calibration.md gives the searched ranges).
+    #[arg(long, value_delimiter = ',', default_value = "spread")]
+    pub fit: Vec<String>,
+    /// Sensor noise sigma per DOF, e.g. x=1nm,y=1nm,phi_x=20nrad (a number
+    /// without unit is SI: m or rad); overrides the file's `# noise:`.
+    #[arg(long)]
+    pub noise: Option<String>,
+    /// Evaluation point measured (default: the file's `point` column, else
+    /// the scene's first).
+    #[arg(long)]
+    pub point: Option<String>,
+    /// Samples of each Monte Carlo model study.
+    #[arg(long, default_value_t = MODEL_SAMPLES)]
+    pub model_samples: usize,
+    /// Seed of the model studies.
+    #[arg(long, default_value_t = MODEL_SEED)]
+    pub seed: u64,
+    #[arg(long, value_enum, default_value_t = TextFormat::Table)]
+    pub format: TextFormat,
+    /// Write the calibration file (JSON) here.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Replace an existing --out file.
+    #[arg(long)]
+    pub force: bool,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+}
+
+#[derive(Args)]
+pub struct PredictArgs {
+    /// Scene files (TOML) to predict.
+    #[arg(required = true)]
+    pub scenes: Vec<PathBuf>,
+    /// Calibration file written by `kinrepro calibrate --out`.
+    #[arg(long)]
+    pub calibration: PathBuf,
+    /// Samples of each Monte Carlo study (per scene: one at the estimate
+    /// and one per point of the calibration's parameter region).
+    #[arg(long, default_value_t = MODEL_SAMPLES)]
+    pub samples: usize,
+    /// Seed of the studies.
+    #[arg(long, default_value_t = MODEL_SEED)]
+    pub seed: u64,
+    #[arg(long, value_enum, default_value_t = TextFormat::Table)]
+    pub format: TextFormat,
+    /// Also draw the predicted intervals into this SVG.
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+    /// Replace an existing --plot file.
+    #[arg(long)]
+    pub force: bool,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+}

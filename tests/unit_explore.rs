@@ -1,0 +1,243 @@
+//! Unit tests of design sweeps: swept fields, value sets, grid and LHS designs, the Pareto front.
+
+mod field {
+    use kinrepro::explore::field::*;
+    use toml::{Table, Value};
+
+    fn scene() -> Table {
+        toml::from_str(
+            "[coupling]\nball_material = \"steel\"\ndiameter = 0.08\n[preload]\nforce = 20\n\
+             [[materials]]\nname = \"probe\"\nyoungs_modulus = 2e11\npoisson_ratio = 0.3\n",
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn known_fields_have_their_kind() {
+        let s = scene();
+        assert_eq!(kind_of("preload.force", &s).unwrap(), FieldKind::Number);
+        assert_eq!(kind_of("friction.mu_static", &s).ok(), None); // no [friction] here
+        assert_eq!(
+            kind_of("coupling.ball_material", &s).unwrap(),
+            FieldKind::Material
+        );
+        assert_eq!(
+            kind_of("materials.probe.youngs_modulus", &s).unwrap(),
+            FieldKind::Number
+        );
+    }
+
+    #[test]
+    fn unknown_paths_and_wrong_types_are_named() {
+        let s = scene();
+        for bad in [
+            "preload.forse",
+            "coupling",
+            "materials.other.youngs_modulus",
+            "study.samples",
+            "variation.surface_tilt",
+            "materials.probe.allowable_shear_stress",
+        ] {
+            let e = kind_of(bad, &s).unwrap_err().to_string();
+            assert!(e.contains(bad), "{e}");
+        }
+        let mut s = scene();
+        s["coupling"]["diameter"] = Value::String("big".into());
+        let e = kind_of("coupling.diameter", &s).unwrap_err().to_string();
+        assert!(e.contains("not as a number"), "{e}");
+    }
+
+    #[test]
+    fn set_replaces_or_inserts() {
+        let mut s = scene();
+        set(&mut s, "preload.force", &SweptValue::Number(5.0)).unwrap();
+        set(
+            &mut s,
+            "coupling.opening_angle_deg",
+            &SweptValue::Number(60.0),
+        )
+        .unwrap();
+        set(
+            &mut s,
+            "materials.probe.youngs_modulus",
+            &SweptValue::Number(1e11),
+        )
+        .unwrap();
+        assert_eq!(s["preload"]["force"].as_float(), Some(5.0));
+        assert_eq!(s["coupling"]["opening_angle_deg"].as_float(), Some(60.0));
+        assert_eq!(s["materials"][0]["youngs_modulus"].as_float(), Some(1e11));
+    }
+}
+
+mod values {
+    use kinrepro::explore::ExploreError;
+    use kinrepro::explore::values::*;
+    use toml::Table;
+
+    fn scene() -> Table {
+        toml::from_str("[coupling]\nball_material = \"steel\"\n[preload]\nforce = 20.0\n").unwrap()
+    }
+
+    #[test]
+    fn ranges_lists_and_names() {
+        let s = scene();
+        let lin = Set::parse("preload.force=5:40:8", &s).unwrap();
+        assert_eq!(
+            lin.levels,
+            Levels::Numbers(vec![5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0])
+        );
+        let log = Set::parse("preload.force=log:1:100:5", &s).unwrap();
+        let Levels::Numbers(v) = log.levels else {
+            panic!()
+        };
+        for (got, want) in v
+            .iter()
+            .zip([1.0, 10f64.sqrt(), 10.0, 1000f64.sqrt(), 100.0])
+        {
+            assert!((got / want - 1.0).abs() < 1e-14, "{got} vs {want}");
+        }
+        let list = Set::parse("preload.force=5,10,20", &s).unwrap();
+        assert_eq!(list.levels, Levels::Numbers(vec![5.0, 10.0, 20.0]));
+        assert_eq!(list.interval, None);
+        let m = Set::parse("coupling.ball_material=steel,silicon-carbide", &s).unwrap();
+        assert_eq!(m.levels.len(), 2);
+    }
+
+    #[test]
+    fn bad_values_are_named() {
+        let s = scene();
+        for bad in [
+            "preload.force=5,steel",
+            "preload.force=40:5:3",
+            "preload.force=log:0:10:3",
+            "preload.force=1:2:1",
+            "preload.force=5,5",
+            "coupling.ball_material=1,2",
+            "coupling.ball_material=1:2:3",
+        ] {
+            let e = Set::parse(bad, &s).unwrap_err().to_string();
+            assert!(e.contains(bad), "{e}");
+        }
+        assert!(matches!(
+            Set::parse("preload.force", &s),
+            Err(ExploreError::SetSyntax { .. })
+        ));
+        let e = Set::parse("preload.force=40:5:3", &s).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                ExploreError::Values {
+                    reason: ValuesError::Reversed { lo: 40.0, hi: 5.0 },
+                    ..
+                }
+            ),
+            "{e:?}"
+        );
+        assert_eq!(
+            e.to_string(),
+            "--set preload.force=40:5:3: the range needs a < b, got 40 and 5"
+        );
+    }
+}
+
+mod design {
+    use kinrepro::explore::design::*;
+    use kinrepro::explore::field::SweptValue;
+    use kinrepro::explore::values::Set;
+
+    fn sets(args: &[&str]) -> Vec<Set> {
+        let scene: toml::Table =
+            toml::from_str("[coupling]\ndiameter = 0.08\n[preload]\nforce = 20.0\n").unwrap();
+        args.iter()
+            .map(|a| Set::parse(a, &scene).unwrap())
+            .collect()
+    }
+
+    #[test]
+    fn grid_is_the_full_product_last_fastest() {
+        let s = sets(&["preload.force=1,2,3", "coupling.diameter=0.05,0.1"]);
+        let p = design_points(&s, DesignKind::Grid).unwrap();
+        assert_eq!(p.len(), 6);
+        assert_eq!(
+            p[1].values,
+            vec![SweptValue::Number(1.0), SweptValue::Number(0.1)]
+        );
+        assert_eq!(
+            p[4].values,
+            vec![SweptValue::Number(3.0), SweptValue::Number(0.05)]
+        );
+    }
+
+    #[test]
+    fn lhs_stratifies_every_range() {
+        let s = sets(&["preload.force=log:1:100", "coupling.diameter=0.05:0.1"]);
+        let n = 10;
+        let p = design_points(&s, DesignKind::Lhs { points: n, seed: 3 }).unwrap();
+        // One point in each of the n equal strata of each (log) range.
+        for (k, to_u) in [
+            (
+                0,
+                Box::new(|x: f64| x.log10() / 2.0) as Box<dyn Fn(f64) -> f64>,
+            ),
+            (1, Box::new(|x: f64| (x - 0.05) / 0.05)),
+        ] {
+            let mut strata: Vec<usize> = p
+                .iter()
+                .map(|d| match d.values[k] {
+                    SweptValue::Number(x) => ((to_u(x) * n as f64) as usize).min(n - 1),
+                    _ => unreachable!(),
+                })
+                .collect();
+            strata.sort();
+            assert_eq!(strata, (0..n).collect::<Vec<_>>());
+        }
+    }
+}
+
+mod pareto {
+    use kinrepro::explore::pareto::*;
+
+    fn o(s: f64, k: f64, sf: f64) -> Option<Objectives> {
+        Some(Objectives {
+            sigma_max: s,
+            stiffness_min: k,
+            safety_factor: Some(sf),
+        })
+    }
+
+    #[test]
+    fn a_hand_checked_front() {
+        // 0: best sigma; 1: dominated by 0 (worse sigma, same k and SF);
+        // 2: best stiffness; 3: equal to 0 on all (neither dominates);
+        // 4: not evaluated.
+        let d = [
+            o(1.0, 5.0, 2.0),
+            o(2.0, 5.0, 2.0),
+            o(3.0, 9.0, 1.0),
+            o(1.0, 5.0, 2.0),
+            None,
+        ];
+        assert_eq!(front(&d), vec![true, false, true, true, false]);
+    }
+
+    #[test]
+    fn every_dominated_design_is_beaten_by_one_on_the_front() {
+        // A deterministic cloud of designs (a Weyl sequence).
+        let d: Vec<_> = (0..60)
+            .map(|i| {
+                let f = |a: f64| (i as f64 * a).fract();
+                o(f(0.618), f(0.414), f(0.732))
+            })
+            .collect();
+        let on = front(&d);
+        let v: Vec<Vec<f64>> = d.iter().map(|x| x.unwrap().values(true)).collect();
+        for (i, a) in v.iter().enumerate() {
+            if on[i] {
+                assert!(!v.iter().any(|b| dominates(b, a)));
+            } else {
+                assert!(v.iter().zip(&on).any(|(b, f)| *f && dominates(b, a)));
+            }
+        }
+        assert!(on.iter().any(|x| *x) && on.iter().any(|x| !*x));
+    }
+}
