@@ -437,3 +437,27 @@ fn the_named_shapes_are_cases_of_the_general_contact() {
         }
     }
 }
+
+#[test]
+fn check_warns_about_a_contact_too_large_for_its_radii() {
+    // Scene 02 on 20 um pins: each contact's semi-axis along the pin is
+    // several times the relative radius across it (~10 um), so `check`
+    // warns per contact; on the 4 mm pins it does not.
+    let text = std::fs::read_to_string(common::scene("02_maxwell_pins_steel.toml")).unwrap();
+    let thin = text.replace(
+        "groove_element_diameter = 0.004",
+        "groove_element_diameter = 0.00002",
+    );
+    assert_ne!(text, thin);
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("thin_pins.toml");
+    std::fs::write(&path, thin).unwrap();
+    let (_, out, err) = kinrepro(&["check", path.to_str().unwrap()]);
+    assert!(
+        out.contains("WARNING: contact 6: too conformal for Hertz"),
+        "{out}{err}"
+    );
+    let scene = common::scene("02_maxwell_pins_steel.toml");
+    let (ok, out, _) = kinrepro(&["check", scene.to_str().unwrap()]);
+    assert!(ok && !out.contains("conformal"), "{out}");
+}
