@@ -32,19 +32,15 @@ use nalgebra::Vector3;
 /// 6 mm seat or a 2 mm pin.
 fn law_of(shape: ContactShape) -> ContactLaw {
     let steel = Material::builtin("steel").unwrap();
-    ContactPair {
-        shape,
-        radius1: 5e-3,
-        radius2: Some(if shape == ContactShape::SphereSeat {
-            6e-3
-        } else {
-            2e-3
-        }),
-        material1: steel.clone(),
-        material2: steel,
-    }
-    .law()
-    .unwrap()
+    let r2 = if shape == ContactShape::SphereSeat {
+        6e-3
+    } else {
+        2e-3
+    };
+    ContactPair::from_shape(shape, 5e-3, Some(r2), steel.clone(), steel)
+        .unwrap()
+        .law()
+        .unwrap()
 }
 
 /// The three laws benched: (tangential law, friction, label).

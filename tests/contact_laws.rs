@@ -72,28 +72,20 @@ fn elliptical_hertz_satisfies_boussinesq_compatibility() {
 
 #[test]
 fn elliptical_law_tends_to_circular_as_cylinder_radius_grows() {
-    let plane = ContactPair {
-        shape: ContactShape::SpherePlane,
-        radius1: 5e-3,
-        radius2: None,
-        material1: steel(),
-        material2: steel(),
-    }
-    .evaluate(5.0)
-    .unwrap();
+    let plane = ContactPair::from_shape(ContactShape::SpherePlane, 5e-3, None, steel(), steel())
+        .unwrap()
+        .evaluate(5.0)
+        .unwrap();
     let mut last = f64::INFINITY;
     for r2 in [1e-1, 1e1, 1e3, 1e5] {
-        let cyl = ContactPair {
-            shape: ContactShape::SphereCylinder,
-            radius2: Some(r2),
-            ..ContactPair {
-                shape: ContactShape::SpherePlane,
-                radius1: 5e-3,
-                radius2: None,
-                material1: steel(),
-                material2: steel(),
-            }
-        }
+        let cyl = ContactPair::from_shape(
+            ContactShape::SphereCylinder,
+            5e-3,
+            Some(r2),
+            steel(),
+            steel(),
+        )
+        .unwrap()
         .evaluate(5.0)
         .unwrap();
         let err = rel(cyl.approach_m, plane.approach_m)
@@ -393,7 +385,7 @@ proptest! {
         let g_star = 1.0 / [&m1, &m2].iter()
             .map(|m| (2.0 - m.poisson_ratio) * 2.0 * (1.0 + m.poisson_ratio) / m.youngs_modulus)
             .sum::<f64>();
-        let pair = ContactPair { shape, radius1: r1, radius2: Some(r2), material1: m1, material2: m2 };
+        let pair = ContactPair::from_shape(shape, r1, Some(r2), m1, m2).unwrap();
         let e = pair.evaluate(f).unwrap();
         let law = pair.law().unwrap();
         // F = K delta^1.5 round trip, and dF/ddelta = 3F/(2 delta).
@@ -413,6 +405,7 @@ proptest! {
             ContactShape::SphereSphere => [across, across],
             ContactShape::SphereSeat => [1.0 / (1.0 / r1 - 1.0 / r2); 2],
             ContactShape::SphereCylinder => [across, r1],
+            ContactShape::General => unreachable!("not in ContactShape::ALL"),
         };
         let mut got = e.relative_radii_m;
         got.sort_by(f64::total_cmp);
@@ -493,15 +486,10 @@ use kinrepro::contact::history::{LoadStep, drive as drive_history};
 
 /// 5 mm steel ball on a steel plane: a circular contact.
 fn steel_ball_on_plane() -> kinrepro::contact::ContactLaw {
-    ContactPair {
-        shape: ContactShape::SpherePlane,
-        radius1: 5e-3,
-        radius2: None,
-        material1: steel(),
-        material2: steel(),
-    }
-    .law()
-    .unwrap()
+    ContactPair::from_shape(ContactShape::SpherePlane, 5e-3, None, steel(), steel())
+        .unwrap()
+        .law()
+        .unwrap()
 }
 
 /// Hertz radius a = (3 P R / (4 E*))^(1/3) and G* = 1 / sum((2 - nu)/G),
@@ -694,13 +682,14 @@ fn elliptical_tangential_stiffness_matches_cerruti_quadrature() {
     }
     // The steel pin contact (5 mm ball, 2 mm pin): across the pin (minor
     // axis) about 8 % and along it about 0.8 % stiffer than 8 G* sqrt(a b).
-    let e = ContactPair {
-        shape: ContactShape::SphereCylinder,
-        radius1: 5e-3,
-        radius2: Some(2e-3),
-        material1: steel(),
-        material2: steel(),
-    }
+    let e = ContactPair::from_shape(
+        ContactShape::SphereCylinder,
+        5e-3,
+        Some(2e-3),
+        steel(),
+        steel(),
+    )
+    .unwrap()
     .evaluate(6.5)
     .unwrap();
     let [a, b] = e.semi_axes_m;

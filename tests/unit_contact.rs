@@ -411,3 +411,66 @@ mod quadrature {
         }
     }
 }
+
+mod curvature {
+    use kinrepro::contact::{ContactError, PairCurvature, RelativeCurvature};
+
+    const INF: f64 = f64::INFINITY;
+
+    fn pair(
+        radii1: [f64; 2],
+        radii2: [f64; 2],
+        deg: f64,
+    ) -> Result<RelativeCurvature, ContactError> {
+        PairCurvature {
+            radii1,
+            radii2,
+            angle: deg.to_radians(),
+        }
+        .relative()
+    }
+
+    #[test]
+    fn the_checks_of_johnson_section_4_1() {
+        // Equal crossed cylinders at 90 degrees: A = B = 1/(2 r), a sphere
+        // of that radius on a flat.
+        let r = pair([0.004, INF], [0.004, INF], 90.0).unwrap();
+        assert!((r.a * 0.008 - 1.0).abs() < 1e-15 && (r.b * 0.008 - 1.0).abs() < 1e-15);
+        // A ball r in a concave cylinder R_g: across r R_g/(R_g - r), along r.
+        let (rb, rg) = (0.005, 0.0052);
+        let [rx, ry] = pair([rb, rb], [-rg, INF], 0.0).unwrap().radii();
+        assert!((ry / (rb * rg / (rg - rb)) - 1.0).abs() < 1e-12, "{ry}");
+        assert!((rx / rb - 1.0).abs() < 1e-15);
+        // Negative A: a ball larger than its seat; A = 0: a pin on a flat.
+        for (r1, r2) in [([0.005; 2], [-0.004; 2]), ([0.005, INF], [INF, INF])] {
+            let e = pair(r1, r2, 0.0).unwrap_err();
+            assert!(matches!(e, ContactError::NotPointContact { .. }), "{e}");
+        }
+        // A zero radius and a non-finite angle are errors, not NaN.
+        assert!(matches!(
+            pair([0.0, 1.0], [1.0, 1.0], 0.0),
+            Err(ContactError::BadPrincipalRadius { .. })
+        ));
+        assert!(matches!(
+            pair([1.0, 1.0], [1.0, 1.0], f64::NAN),
+            Err(ContactError::BadAngle(_))
+        ));
+    }
+
+    #[test]
+    fn crossed_cylinders_follow_johnson_eq_4_2_in_closed_form() {
+        // Two cylinders R1, R2 crossed at theta (Johnson 1985 §4.1):
+        // A + B = (1/R1 + 1/R2)/2,
+        // B - A = 1/2 sqrt(1/R1^2 + 1/R2^2 + 2 cos(2 theta)/(R1 R2)).
+        let (r1, r2) = (0.003, 0.002);
+        for deg in [10.0, 30.0, 45.0, 60.0, 90.0, 135.0] {
+            let t = f64::to_radians(deg);
+            let sum = 0.5 * (1.0 / r1 + 1.0 / r2);
+            let diff = 0.5
+                * (1.0 / (r1 * r1) + 1.0 / (r2 * r2) + 2.0 * (2.0 * t).cos() / (r1 * r2)).sqrt();
+            let c = pair([r1, INF], [r2, INF], deg).unwrap();
+            assert!((c.a / (0.5 * (sum - diff)) - 1.0).abs() < 1e-12, "{deg}");
+            assert!((c.b / (0.5 * (sum + diff)) - 1.0).abs() < 1e-12, "{deg}");
+        }
+    }
+}

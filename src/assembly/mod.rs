@@ -161,17 +161,19 @@ impl Coupling {
                     (ContactShape::SphereSphere, Some(radius))
                 }
             };
-            let pair = ContactPair {
-                shape,
-                radius1: ball.radius,
-                radius2,
-                material1: ball.material.clone(),
-                material2: s.material.clone(),
-            };
-            let law = pair.law().map_err(|source| AssemblyError::Contact {
+            let err = |source| AssemblyError::Contact {
                 contact: i + 1,
                 source,
-            })?;
+            };
+            let pair = ContactPair::from_shape(
+                shape,
+                ball.radius,
+                radius2,
+                ball.material.clone(),
+                s.material.clone(),
+            )
+            .map_err(err)?;
+            let law = pair.law().map_err(err)?;
             contacts.push(Contact {
                 ball: s.ball,
                 surface: s.geometry,

@@ -22,6 +22,12 @@
 use super::elliptic::{EllipticIntegrals, solve_kp};
 use std::f64::consts::PI;
 
+/// Hertz treats the bodies as half-spaces, which needs a contact small
+/// against the radii: above this ratio of the major semi-axis to the
+/// smaller relative radius of curvature ([`HertzLaw::conformity`]) the
+/// contact is too conformal for Hertz and kinrepro warns.
+pub const CONFORMITY_LIMIT: f64 = 0.1;
+
 /// The Hertz force-approach law of one contact pair.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HertzLaw {
@@ -109,6 +115,13 @@ impl HertzLaw {
     #[inline]
     pub fn major_semi_axis_fast(&self, load: f64) -> f64 {
         self.semi_axis_coef * cbrt(load.max(0.0))
+    }
+
+    /// The major semi-axis a at load F over the smaller relative radius of
+    /// curvature Rx: small for a Hertz contact, above [`CONFORMITY_LIMIT`]
+    /// too conformal.
+    pub fn conformity(&self, load: f64) -> f64 {
+        self.semi_axes(load)[0] / self.radii[0]
     }
 
     /// Peak pressure p0 = 3 F / (2 pi a b).

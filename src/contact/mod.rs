@@ -1,14 +1,20 @@
-//! Compliant contact laws: one dispatcher over the contact shapes, the Hertz
-//! normal law (circular and elliptical) and the tangential laws.
+//! Compliant contact laws: the general Hertz contact of two bodies by their
+//! principal radii of curvature (`curvature`, Johnson 1985 eq. 4.2), the
+//! Hertz normal law (circular and elliptical) and the tangential laws.
 //!
-//! | shape | relative radii of curvature |
-//! | --- | --- |
-//! | sphere-plane | R = R1 |
-//! | sphere-sphere (convex) | 1/R = 1/R1 + 1/R2 |
-//! | sphere-seat (ball in a concave spherical seat, R2 > R1) | 1/R = 1/R1 - 1/R2 |
-//! | sphere-cylinder (crossed) | 1/Rx = 1/R1 + 1/R2 (across the pin), Ry = R1 (along it) |
+//! The named shapes are cases of the general geometry (body 1 the moving
+//! element of radius R1, body 2 the fixed one of radius R2; principal
+//! radii, negative concave, `inf` flat):
+//!
+//! | shape | body 1 | body 2 | relative radii |
+//! | --- | --- | --- | --- |
+//! | sphere-plane | (R1, R1) | (inf, inf) | R = R1 |
+//! | sphere-sphere | (R1, R1) | (R2, R2) | 1/R = 1/R1 + 1/R2 |
+//! | sphere-seat (R2 > R1) | (R1, R1) | (-R2, -R2) | 1/R = 1/R1 - 1/R2 |
+//! | sphere-cylinder | (R1, R1) | (R2, inf) | 1/Rx = 1/R1 + 1/R2, Ry = R1 (along the pin) |
 
 pub mod coulomb;
+pub mod curvature;
 pub mod elliptic;
 pub mod friction;
 pub mod hertz;
@@ -26,6 +32,7 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use crate::material::{Material, effective_modulus, effective_shear_modulus};
+pub use curvature::{PairCurvature, RelativeCurvature};
 pub use friction::FrictionLaw;
 pub use hertz::HertzLaw;
 pub use mindlin::{PrincipalStiffness, mindlin_axis_coefficients, tangential_tensor};
@@ -42,9 +49,12 @@ pub enum ContactShape {
     SphereSphere,
     SphereSeat,
     SphereCylinder,
+    /// Two bodies given by their principal radii (`contact --radii1 --radii2`).
+    General,
 }
 
 impl ContactShape {
+    /// The shapes given by two radii (`contact --shape`).
     pub const ALL: [ContactShape; 4] = [
         ContactShape::SpherePlane,
         ContactShape::SphereSphere,
@@ -59,12 +69,39 @@ impl ContactShape {
             ContactShape::SphereSphere => "sphere-sphere",
             ContactShape::SphereSeat => "sphere-seat",
             ContactShape::SphereCylinder => "sphere-cylinder",
+            ContactShape::General => "general",
         }
     }
 
     /// Whether the shape needs the second body's radius.
     pub fn needs_radius2(self) -> bool {
         !matches!(self, ContactShape::SpherePlane)
+    }
+
+    /// The principal radii of the two bodies of this shape (module table)
+    /// for the moving element's radius `r1` and the fixed element's `r2`.
+    pub fn curvature(self, r1: f64, r2: Option<f64>) -> Result<PairCurvature, ContactError> {
+        let r1 = check_radius("radius1", r1)?;
+        let r2 = match (self.needs_radius2(), r2) {
+            (false, _) => f64::INFINITY,
+            (true, None) => return Err(ContactError::MissingRadius2 { shape: self.name() }),
+            (true, Some(r)) => check_radius("radius2", r)?,
+        };
+        let inf = f64::INFINITY;
+        let pair = |radii1, radii2, angle| PairCurvature {
+            radii1,
+            radii2,
+            angle,
+        };
+        Ok(match self {
+            ContactShape::SpherePlane | ContactShape::SphereSphere => pair([r1; 2], [r2; 2], 0.0),
+            ContactShape::SphereSeat if r2 <= r1 => {
+                return Err(ContactError::SeatTooSmall { r1, r2 });
+            }
+            ContactShape::SphereSeat => pair([r1; 2], [-r2; 2], 0.0),
+            ContactShape::SphereCylinder => pair([r1; 2], [r2, inf], 0.0),
+            ContactShape::General => return Err(ContactError::GeneralNeedsRadii),
+        })
     }
 }
 
@@ -92,22 +129,38 @@ fn shape_names() -> String {
 pub enum ContactError {
     #[error("{field} = {value} m is invalid: a radius must be a positive, finite length")]
     BadRadius { field: &'static str, value: f64 },
+    #[error(
+        "{field} = {value} m is invalid: a principal radius must be non-zero (negative: concave, inf: flat)"
+    )]
+    BadPrincipalRadius { field: &'static str, value: f64 },
     #[error("{shape} needs radius2 (the radius of the fixed element)")]
     MissingRadius2 { shape: &'static str },
     #[error(
         "sphere-seat needs a seat radius radius2 = {r2} m larger than the ball radius radius1 = {r1} m"
     )]
     SeatTooSmall { r1: f64, r2: f64 },
+    #[error("the general contact needs the principal radii of both bodies (--radii1, --radii2)")]
+    GeneralNeedsRadii,
+    #[error(
+        "angle = {0} rad is invalid: the angle between the principal directions must be finite"
+    )]
+    BadAngle(f64),
+    #[error(
+        "not a point contact: the smaller relative curvature A = {a:.6e} 1/m (B = {b:.6e} 1/m) must be positive \
+         (A = 0: the surfaces touch along a line, e.g. a pin on a flat or parallel pins; A < 0: a concave \
+         surface is curved more tightly than the convex one it should hold, e.g. a ball larger than its seat)"
+    )]
+    NotPointContact { a: f64, b: f64 },
     #[error("load = {0} N is invalid: the normal load must be positive and finite")]
     BadLoad(f64),
 }
 
-/// One contact pair: shape, radii and materials (1 = moving ball, 2 = fixed element).
+/// One contact pair: its shape, the principal radii of both bodies and the
+/// materials (1 = the moving element, 2 = the fixed element).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ContactPair {
     pub shape: ContactShape,
-    pub radius1: f64,
-    pub radius2: Option<f64>,
+    pub curvature: PairCurvature,
     pub material1: Material,
     pub material2: Material,
 }
@@ -159,34 +212,33 @@ fn check_radius(field: &'static str, value: f64) -> Result<f64, ContactError> {
 }
 
 impl ContactPair {
-    /// Relative radii of curvature [Rx, Ry] of the pair (see the module table).
-    pub fn relative_radii(&self) -> Result<[f64; 2], ContactError> {
-        let r1 = check_radius("radius1", self.radius1)?;
-        let r2 = match (self.shape.needs_radius2(), self.radius2) {
-            (false, _) => None,
-            (true, None) => {
-                return Err(ContactError::MissingRadius2 {
-                    shape: self.shape.name(),
-                });
-            }
-            (true, Some(r)) => Some(check_radius("radius2", r)?),
-        };
-        Ok(match (self.shape, r2) {
-            (ContactShape::SpherePlane, _) => [r1, r1],
-            (ContactShape::SphereSphere, Some(r2)) => {
-                let r = 1.0 / (1.0 / r1 + 1.0 / r2);
-                [r, r]
-            }
-            (ContactShape::SphereSeat, Some(r2)) => {
-                if r2 <= r1 {
-                    return Err(ContactError::SeatTooSmall { r1, r2 });
-                }
-                let r = 1.0 / (1.0 / r1 - 1.0 / r2);
-                [r, r]
-            }
-            (ContactShape::SphereCylinder, Some(r2)) => [1.0 / (1.0 / r1 + 1.0 / r2), r1],
-            (_, None) => unreachable!("radius2 checked above"),
+    /// The pair of a named shape (the module table) with the moving
+    /// element's radius `radius1` and the fixed element's `radius2`.
+    pub fn from_shape(
+        shape: ContactShape,
+        radius1: f64,
+        radius2: Option<f64>,
+        material1: Material,
+        material2: Material,
+    ) -> Result<ContactPair, ContactError> {
+        Ok(ContactPair {
+            shape,
+            curvature: shape.curvature(radius1, radius2)?,
+            material1,
+            material2,
         })
+    }
+
+    /// Relative radii of curvature [Rx, Ry], Rx <= Ry (Johnson eq. 4.2, `curvature`).
+    pub fn relative_radii(&self) -> Result<[f64; 2], ContactError> {
+        Ok(self.curvature.relative()?.radii())
+    }
+
+    /// The first principal radius of each body: the moving element's, and
+    /// the fixed element's (`None` for a flat).
+    pub fn nominal_radii(&self) -> (f64, Option<f64>) {
+        let r2 = self.curvature.radii2[0];
+        (self.curvature.radii1[0], r2.is_finite().then_some(r2))
     }
 
     /// Build the laws of this pair.

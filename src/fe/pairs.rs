@@ -96,7 +96,10 @@ pub fn validate_pair(
     let rel = |a: f64, b: f64| a / b - 1.0;
     Ok(PairValidation {
         shape: case.pair.shape,
-        radii_m: [Some(case.pair.radius1), case.pair.radius2],
+        radii_m: {
+            let (r1, r2) = case.pair.nominal_radii();
+            [Some(r1), r2]
+        },
         materials: [
             case.pair.material1.name.clone(),
             case.pair.material2.name.clone(),

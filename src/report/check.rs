@@ -102,4 +102,9 @@ fn contact_rows(out: &mut String, c: &Coupling) {
     for note in crate::report::safety::left_out_notes(left_out.iter().map(Vec::as_slice)) {
         let _ = writeln!(out, "  {note}");
     }
+    for (i, k) in c.contacts.iter().enumerate() {
+        if let Some(w) = crate::report::contact::conformity_warning(&k.law.hertz, forces[i]) {
+            let _ = writeln!(out, "  WARNING: contact {}: {w}", i + 1);
+        }
+    }
 }

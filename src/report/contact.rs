@@ -2,10 +2,27 @@
 
 use std::fmt::Write;
 
-use crate::contact::ContactEvaluation;
+use crate::contact::hertz::CONFORMITY_LIMIT;
 use crate::contact::history::HistoryStep;
+use crate::contact::{ContactEvaluation, HertzLaw, PairCurvature};
 use crate::dof::nano;
 use crate::report::table::{Table, cells};
+
+/// Why a contact at `load` is too conformal for Hertz (its major
+/// semi-axis above [`CONFORMITY_LIMIT`] of the smaller relative radius of
+/// curvature), or `None`.
+pub fn conformity_warning(h: &HertzLaw, load: f64) -> Option<String> {
+    let (a, r) = (h.semi_axes(load)[0], h.radii[0]);
+    (h.conformity(load) > CONFORMITY_LIMIT).then(|| {
+        format!(
+            "too conformal for Hertz: the semi-axis a = {:.4} mm is {:.1} % of the smaller relative radius of curvature {:.4} mm (limit {:.0} %); Hertz treats both bodies as half-spaces, which needs a contact small against the radii, so these numbers are only indicative",
+            a * 1e3,
+            100.0 * a / r,
+            r * 1e3,
+            100.0 * CONFORMITY_LIMIT
+        )
+    })
+}
 
 /// A readable table of one contact evaluation (SI values with engineering units).
 pub fn contact_table(e: &ContactEvaluation) -> String {
@@ -54,7 +71,7 @@ pub fn contact_table(e: &ContactEvaluation) -> String {
 /// What produced a history table (written as `#` lines before the CSV).
 pub struct HistoryProvenance<'a> {
     pub shape: &'a str,
-    pub radii_m: (f64, Option<f64>),
+    pub curvature: PairCurvature,
     pub materials: (&'a str, &'a str),
     pub law: &'a str,
     pub mu_static: f64,
@@ -68,14 +85,18 @@ pub struct HistoryProvenance<'a> {
 /// displacement of the ball relative to the fixed body).
 pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
     let mut s = String::new();
-    let r2 = p.radii_m.1.map_or("-".to_string(), |r| format!("{r:e}"));
+    let [c1, c2] = [p.curvature.radii1, p.curvature.radii2];
     let _ = writeln!(
         s,
-        "# kinrepro {} contact --history {}: {} radius1 {:e} m radius2 {r2} m, {} on {}, tangential law {}, mu_s {}, mu_d {}",
+        "# kinrepro {} contact --history {}: {} radii1 {:e},{:e} m radii2 {:e},{:e} m angle {} deg, {} on {}, tangential law {}, mu_s {}, mu_d {}",
         env!("CARGO_PKG_VERSION"),
         p.history_file,
         p.shape,
-        p.radii_m.0,
+        c1[0],
+        c1[1],
+        c2[0],
+        c2[1],
+        p.curvature.angle.to_degrees(),
         p.materials.0,
         p.materials.1,
         p.law,

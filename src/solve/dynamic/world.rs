@@ -108,7 +108,7 @@ pub(crate) fn build(
     let ground = world.insert_body(RigidBodyBuilder::fixed());
     for c in &coupling.contacts {
         let ball = &coupling.balls[c.ball];
-        let reach = 4.0 * (ball.radius + c.pair.radius2.unwrap_or(0.0));
+        let reach = 4.0 * (ball.radius + c.pair.nominal_radii().1.unwrap_or(0.0).abs());
         let (shape, pose) = parry_shape(&c.surface, &ball.centre, reach);
         world.insert_collider(
             ColliderBuilder::new(shape)

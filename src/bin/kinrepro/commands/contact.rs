@@ -3,7 +3,9 @@
 
 use kinrepro::contact::ContactPair;
 use kinrepro::contact::history::{HistoryError, LoadStep, drive, parse_history_csv};
-use kinrepro::report::contact::{HistoryProvenance, contact_table, history_csv};
+use kinrepro::report::contact::{
+    HistoryProvenance, conformity_warning, contact_table, history_csv,
+};
 
 use super::{emit, print_json, read_text};
 use crate::error::CliError;
@@ -15,6 +17,9 @@ use std::path::Path;
 pub fn contact(o: Checked<ContactArgs, ContactInputs>) -> Result<(), CliError> {
     let Checked { args: a, opts } = o;
     let eval = opts.pair.evaluate(a.load)?;
+    if let Some(warning) = conformity_warning(&opts.pair.law()?.hertz, a.load) {
+        eprintln!("warning: {warning}");
+    }
     match (&a.history, opts.history_friction) {
         (Some(path), Some(friction)) => history(&opts.pair, path, friction, a.tangential_law),
         _ if a.json => print_json(&eval),
@@ -44,7 +49,7 @@ fn history(
     })?;
     let prov = HistoryProvenance {
         shape: pair.shape.name(),
-        radii_m: (pair.radius1, pair.radius2),
+        curvature: pair.curvature,
         materials: (&pair.material1.name, &pair.material2.name),
         law: tangential_law.name(),
         mu_static: friction.mu_s,

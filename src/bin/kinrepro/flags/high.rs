@@ -6,7 +6,7 @@
 
 use kinrepro::calibrate::fit::CalibrateOptions;
 use kinrepro::calibrate::units::parse_noise;
-use kinrepro::contact::{ContactPair, Friction};
+use kinrepro::contact::{ContactPair, ContactShape, Friction, PairCurvature};
 use kinrepro::fe::MeshOptions;
 use kinrepro::material::Material;
 use kinrepro::solve::dynamic::{DynamicOptions, StartPose};
@@ -166,17 +166,46 @@ pub fn contact(a: &ContactArgs) -> Result<ContactInputs, CliError> {
             Some(Friction::switch(mu, ratio * mu))
         }
     };
-    let pair = ContactPair {
-        shape: a.shape,
-        radius1: a.radius1,
-        radius2: a.radius2,
-        material1: Material::builtin(&a.material1).context("--material1")?,
-        material2: Material::builtin(&a.material2).context("--material2")?,
+    let material1 = Material::builtin(&a.material1).context("--material1")?;
+    let material2 = Material::builtin(&a.material2).context("--material2")?;
+    let pair = match (a.shape, &a.radii1, &a.radii2) {
+        (Some(shape), _, _) => {
+            let r1 = a.radius1.unwrap_or(f64::NAN);
+            ContactPair::from_shape(shape, r1, a.radius2, material1, material2)?
+        }
+        (None, Some(r1), Some(r2)) => ContactPair {
+            shape: ContactShape::General,
+            curvature: PairCurvature {
+                radii1: principal_radii("--radii1", r1)?,
+                radii2: principal_radii("--radii2", r2)?,
+                angle: a.angle_deg.unwrap_or(0.0).to_radians(),
+            },
+            material1,
+            material2,
+        },
+        _ => {
+            return Err(usage(
+                "give --shape with --radius1, or --radii1 with --radii2",
+            ));
+        }
     };
+    // A contact that is not a point contact is refused here, in words.
+    pair.law()?;
     Ok(ContactInputs {
         pair,
         history_friction,
     })
+}
+
+/// The two principal radii RX,RY [m] of `--radii1` or `--radii2`.
+fn principal_radii(flag: &str, v: &[f64]) -> Result<[f64; 2], CliError> {
+    match v {
+        [x, y] => Ok([*x, *y]),
+        _ => Err(usage(format!(
+            "{flag} needs two comma-separated principal radii RX,RY [m] (inf: flat, negative: concave), got {} value(s)",
+            v.len()
+        ))),
+    }
 }
 
 pub fn run(a: &RunArgs) -> Result<Method, CliError> {

@@ -64,14 +64,40 @@ pub enum Command {
 #[derive(Args)]
 pub struct ContactArgs {
     /// sphere-plane | sphere-sphere | sphere-seat | sphere-cylinder
-    #[arg(long)]
-    pub shape: ContactShape,
-    /// Radius of the moving ball [m].
-    #[arg(long, allow_hyphen_values = true)]
-    pub radius1: f64,
-    /// Radius of the fixed sphere, seat or cylinder [m].
-    #[arg(long, allow_hyphen_values = true)]
+    /// (shorthands of --radii1/--radii2).
+    #[arg(long, required_unless_present = "radii1", conflicts_with = "radii1")]
+    pub shape: Option<ContactShape>,
+    /// Radius of the moving ball [m] (with --shape).
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        required_unless_present = "radii1",
+        conflicts_with = "radii1"
+    )]
+    pub radius1: Option<f64>,
+    /// Radius of the fixed sphere, seat or cylinder [m] (with --shape).
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "radii1")]
     pub radius2: Option<f64>,
+    /// Principal radii RX,RY of body 1, the moving element [m] (negative:
+    /// concave, inf: flat).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        requires = "radii2"
+    )]
+    pub radii1: Option<Vec<f64>>,
+    /// Principal radii RX,RY of body 2, the fixed element [m].
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        requires = "radii1"
+    )]
+    pub radii2: Option<Vec<f64>>,
+    /// Angle from body 1's RX direction to body 2's [deg] (with --radii1).
+    #[arg(long, allow_hyphen_values = true, requires = "radii1")]
+    pub angle_deg: Option<f64>,
     /// Material of the ball (built-in name, e.g. steel).
     #[arg(long)]
     pub material1: String,
