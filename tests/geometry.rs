@@ -7,7 +7,10 @@
 //! 1e-15 m and the normal within 4e-15 of parry's (a pin's normal is the
 //! direction of a vector of length R + r, about 5 mm, formed from
 //! positions of 0.04 m: each computation carries about eps 0.04 / 0.005,
-//! 2e-15, of rounding; measured 2.8e-15 apart, ball-ball 2e-16, plane 0).
+//! 2e-15, of rounding; measured 2.8e-15 apart, ball-ball 2e-16, plane 0;
+//! a ball in a concave groove against the projection onto parry's solid
+//! cylinder from inside, within a bound that grows as the groove's radius
+//! approaches the ball's, see `check`).
 //! The gap is also checked against the separation the ball was placed at.
 
 use kinrepro::assembly::geometry::{ContactGeometry, contact, parry_shape};
@@ -53,19 +56,39 @@ fn placed(rng: &mut ChaCha8Rng) -> Vector3<f64> {
     unit(rng) * rng.random_range(0.03..0.05)
 }
 
-/// parry's contact of a ball of `radius` at `centre` with `surface`.
+/// parry's contact of a ball of `radius` at `centre` with `surface`; for a
+/// concave cylinder, the ball centre's projection onto the wall of parry's
+/// solid cylinder from inside (the nearest wall point: gap = its distance
+/// - r, normal from it to the centre).
 fn parry(surface: &SurfaceGeometry, centre: &Vector3<f64>, radius: f64) -> ContactGeometry {
     // A pin's capsule reaches as far as the dynamic solver's (4 (R + r)).
     let pin = match surface {
         SurfaceGeometry::Cylinder { radius, .. } => *radius,
+        SurfaceGeometry::ConcaveCylinder { radius, .. } => *radius,
         _ => 0.0,
     };
     let (shape, pose) = parry_shape(surface, centre, 4.0 * (pin + radius));
-    let at = Pose::from_translation(Vector::new(centre.x, centre.y, centre.z));
+    let c = Vector::new(centre.x, centre.y, centre.z);
+    let v = |p: Vector| Vector3::new(p.x, p.y, p.z);
+    if let SurfaceGeometry::ConcaveCylinder { .. } = surface {
+        let projection = shape.project_point(&pose, c, false);
+        assert!(
+            projection.is_inside,
+            "the ball centre lies inside the groove"
+        );
+        let to_centre = v(c - projection.point);
+        let (d, normal) = (to_centre.norm(), to_centre.normalize());
+        let gap = d - radius;
+        return ContactGeometry {
+            gap,
+            normal,
+            point: centre - normal * (radius + 0.5 * gap),
+        };
+    }
+    let at = Pose::from_translation(c);
     let c = query::contact(&pose, &*shape, &at, &Ball::new(radius), 1.0)
         .expect("parry supports these pairs")
         .expect("within the prediction distance");
-    let v = |p: Vector| Vector3::new(p.x, p.y, p.z);
     ContactGeometry {
         gap: c.dist,
         normal: v(c.normal1),
@@ -83,8 +106,23 @@ fn check(surface: &SurfaceGeometry, centre: &Vector3<f64>, radius: f64, gap: f64
         (ours.point - reference.point).norm(),
         (ours.normal - reference.normal).norm(),
     ];
+    // In a groove the normal is the direction of the ball centre's offset
+    // from the axis, of length R - r - gap (0.1 mm for R = 1.02 r), formed
+    // from 0.04 m coordinates in both computations (parry's in its
+    // cylinder's frame): each carries about eps 0.04 / (R - r) of rounding.
+    let normal_tol = match surface {
+        SurfaceGeometry::ConcaveCylinder {
+            axis_point,
+            radius: groove,
+            ..
+        } => {
+            let offset = groove - radius - gap;
+            16.0 * f64::EPSILON * (centre.norm() + axis_point.norm()) / offset
+        }
+        _ => 4e-15,
+    };
     assert!(
-        d[0] <= 1e-15 && d[1] <= 1e-15 && d[2] <= 4e-15,
+        d[0] <= 1e-15 && d[1] <= 1e-15 && d[2] <= normal_tol,
         "{surface:?} ball {centre} r {radius}: {ours:?} vs parry {reference:?}"
     );
     assert!(
@@ -159,6 +197,27 @@ fn ball_ball_is_parrys_ball() {
         let surface = SurfaceGeometry::Sphere {
             centre: fixed,
             radius: fixed_radius,
+        };
+        check(&surface, &centre, radius, gap)
+    });
+}
+
+#[test]
+fn ball_in_groove_is_inside_parrys_cylinder() {
+    run("ball-groove", 4, |rng| {
+        let (direction, axis_point) = (unit(rng), placed(rng));
+        let radius = rng.random_range(0.003..0.005);
+        // A gothic-arch flank 1.02 to 1.5 times the ball's radius.
+        let groove = radius * rng.random_range(1.02..1.5);
+        let gap = separation(rng);
+        let along = direction * rng.random_range(-0.01..0.01);
+        let out = across(rng, &direction);
+        // The wall is at distance R from the axis; the ball centre r + gap inside it.
+        let centre = axis_point + along + out * (groove - radius - gap);
+        let surface = SurfaceGeometry::ConcaveCylinder {
+            axis_point,
+            direction,
+            radius: groove,
         };
         check(&surface, &centre, radius, gap)
     });

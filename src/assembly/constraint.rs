@@ -113,7 +113,7 @@ pub fn constraint_matrix(coupling: &Coupling) -> DMatrix<f64> {
     let mut a = DMatrix::zeros(m, 6);
     for i in 0..m {
         let n = coupling.geometry(i, &pose).normal;
-        let c = coupling.balls[coupling.contacts[i].ball].centre;
+        let c = coupling.contacts[i].centre;
         let mom = (c - o).cross(&n) / l;
         for k in 0..3 {
             a[(i, k)] = n[k];

@@ -46,11 +46,16 @@ impl BodyPose {
     }
 }
 
-/// One contact: a moving ball against a fixed surface.
+/// One contact: a moving ball (or its patch) against a fixed surface.
 #[derive(Debug, Clone)]
 pub struct Contact {
     /// Index of the moving ball (0-based).
     pub ball: usize,
+    /// The moving surface at this contact, a sphere: centre of curvature in
+    /// the body frame [m] and radius [m]. The ball's centre and radius, or
+    /// the scene's patch (a canoe ball's face).
+    pub centre: Vector3<f64>,
+    pub radius: f64,
     pub surface: SurfaceGeometry,
     pub shape: ContactShape,
     pub pair: ContactPair,
@@ -160,14 +165,21 @@ impl Coupling {
                 SurfaceGeometry::Sphere { radius, .. } => {
                     (ContactShape::SphereSphere, Some(radius))
                 }
+                SurfaceGeometry::ConcaveCylinder { radius, .. } => {
+                    (ContactShape::SphereGroove, Some(radius))
+                }
             };
             let err = |source| AssemblyError::Contact {
                 contact: i + 1,
                 source,
             };
+            let (centre, radius) = match s.moving {
+                Some(p) => (p.centre, p.radius),
+                None => (ball.centre, ball.radius),
+            };
             let pair = ContactPair::from_shape(
                 shape,
-                ball.radius,
+                radius,
                 radius2,
                 ball.material.clone(),
                 s.material.clone(),
@@ -176,6 +188,8 @@ impl Coupling {
             let law = pair.law().map_err(err)?;
             contacts.push(Contact {
                 ball: s.ball,
+                centre,
+                radius,
                 surface: s.geometry,
                 shape,
                 shear: ShearRatios::new(&pair, &law.hertz),
@@ -237,25 +251,26 @@ impl Coupling {
 
     /// Geometry of contact `i` with the moving half at `pose`.
     pub fn geometry(&self, i: usize, pose: &BodyPose) -> ContactGeometry {
-        let centre = pose.apply(&self.balls[self.contacts[i].ball].centre);
+        let centre = pose.apply(&self.contacts[i].centre);
         self.geometry_at(i, &centre)
     }
 
-    /// [`Self::geometry`] with the world position of the contact's ball
-    /// centre given (the solver forms it once per ball): [`geometry::contact`].
+    /// [`Self::geometry`] with the world position of the contact's moving
+    /// centre of curvature given: [`geometry::contact`].
     #[inline]
     pub fn geometry_at(&self, i: usize, centre: &Vector3<f64>) -> ContactGeometry {
         let c = &self.contacts[i];
-        geometry::contact(&c.surface, centre, self.balls[c.ball].radius)
+        geometry::contact(&c.surface, centre, c.radius)
     }
 
-    /// Constraint rows w_i = [n_i; c_i x n_i] at `pose` (c_i the ball centre):
+    /// Constraint rows w_i = [n_i; c_i x n_i] at `pose` (c_i the moving
+    /// centre of curvature, on the contact normal):
     /// d(gap_i) = w_i . (v, w) for a twist (v, w) about the world origin.
     pub fn constraint_rows(&self, pose: &BodyPose) -> Vec<Vector6<f64>> {
         (0..self.contacts.len())
             .map(|i| {
                 let n = self.geometry(i, pose).normal;
-                let c = pose.apply(&self.balls[self.contacts[i].ball].centre);
+                let c = pose.apply(&self.contacts[i].centre);
                 let m = c.cross(&n);
                 Vector6::new(n.x, n.y, n.z, m.x, m.y, m.z)
             })

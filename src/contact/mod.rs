@@ -12,6 +12,10 @@
 //! | sphere-sphere | (R1, R1) | (R2, R2) | 1/R = 1/R1 + 1/R2 |
 //! | sphere-seat (R2 > R1) | (R1, R1) | (-R2, -R2) | 1/R = 1/R1 - 1/R2 |
 //! | sphere-cylinder | (R1, R1) | (R2, inf) | 1/Rx = 1/R1 + 1/R2, Ry = R1 (along the pin) |
+//! | sphere-groove (R2 > R1) | (R1, R1) | (-R2, inf) | Rx = R1 (along the groove), 1/Ry = 1/R1 - 1/R2 (across) |
+//!
+//! sphere-groove is a ball in a concave cylindrical flank (a gothic arch):
+//! its contact ellipse is long across the groove.
 
 pub mod coulomb;
 pub mod curvature;
@@ -49,17 +53,20 @@ pub enum ContactShape {
     SphereSphere,
     SphereSeat,
     SphereCylinder,
+    /// A ball in a concave cylinder (a gothic-arch flank) of larger radius.
+    SphereGroove,
     /// Two bodies given by their principal radii (`contact --radii1 --radii2`).
     General,
 }
 
 impl ContactShape {
     /// The shapes given by two radii (`contact --shape`).
-    pub const ALL: [ContactShape; 4] = [
+    pub const ALL: [ContactShape; 5] = [
         ContactShape::SpherePlane,
         ContactShape::SphereSphere,
         ContactShape::SphereSeat,
         ContactShape::SphereCylinder,
+        ContactShape::SphereGroove,
     ];
 
     /// Kebab-case name, as in scene files and on the command line.
@@ -69,6 +76,7 @@ impl ContactShape {
             ContactShape::SphereSphere => "sphere-sphere",
             ContactShape::SphereSeat => "sphere-seat",
             ContactShape::SphereCylinder => "sphere-cylinder",
+            ContactShape::SphereGroove => "sphere-groove",
             ContactShape::General => "general",
         }
     }
@@ -95,11 +103,16 @@ impl ContactShape {
         };
         Ok(match self {
             ContactShape::SpherePlane | ContactShape::SphereSphere => pair([r1; 2], [r2; 2], 0.0),
-            ContactShape::SphereSeat if r2 <= r1 => {
-                return Err(ContactError::SeatTooSmall { r1, r2 });
+            ContactShape::SphereSeat | ContactShape::SphereGroove if r2 <= r1 => {
+                return Err(ContactError::SeatTooSmall {
+                    shape: self.name(),
+                    r1,
+                    r2,
+                });
             }
             ContactShape::SphereSeat => pair([r1; 2], [-r2; 2], 0.0),
             ContactShape::SphereCylinder => pair([r1; 2], [r2, inf], 0.0),
+            ContactShape::SphereGroove => pair([r1; 2], [-r2, inf], 0.0),
             ContactShape::General => return Err(ContactError::GeneralNeedsRadii),
         })
     }
@@ -136,9 +149,13 @@ pub enum ContactError {
     #[error("{shape} needs radius2 (the radius of the fixed element)")]
     MissingRadius2 { shape: &'static str },
     #[error(
-        "sphere-seat needs a seat radius radius2 = {r2} m larger than the ball radius radius1 = {r1} m"
+        "{shape} needs a concave radius radius2 = {r2} m larger than the ball radius radius1 = {r1} m"
     )]
-    SeatTooSmall { r1: f64, r2: f64 },
+    SeatTooSmall {
+        shape: &'static str,
+        r1: f64,
+        r2: f64,
+    },
     #[error("the general contact needs the principal radii of both bodies (--radii1, --radii2)")]
     GeneralNeedsRadii,
     #[error(

@@ -13,7 +13,12 @@
 //!
 //! Each fixed element is placed so that its ball touches it at zero gap:
 //! a plane through c - r n, a pin axis through c - (r + R_pin) n along the
-//! groove, a fixed ball centred at c - (r + R_ball) n.
+//! groove, a fixed ball centred at c - (r + R_ball) n, a gothic-arch flank
+//! (concave cylinder of radius R_g > r) with its axis through
+//! c + (R_g - r) n along the groove. A canoe ball's patch of radius R_c at
+//! each contact touches there too: its centre of curvature is
+//! c + (R_c - r) n, on the contact normal through the ball's contact point
+//! c - r n.
 
 use nalgebra::Vector3;
 
@@ -22,8 +27,8 @@ use toml::Spanned;
 
 use super::error::{ErrorContext, SceneError};
 use super::file::{
-    Arrangement, BallFile, CouplingFile, EvaluationPointFile, GrooveKind, Numbers, SceneFile,
-    SurfaceFile, SurfaceKind,
+    Arrangement, BallFile, BallShape, CouplingFile, EvaluationPointFile, GrooveKind, Numbers,
+    SceneFile, SurfaceFile, SurfaceKind,
 };
 use super::plausible;
 
@@ -62,9 +67,16 @@ pub fn to_explicit(raw: &SceneFile, ctx: &ErrorContext) -> Result<SceneFile, Sce
 struct Dimensions {
     /// Circle of ball centres [m].
     diameter: f64,
-    /// Ball radius and pin or fixed-ball radius (0 for planes) [m].
+    /// Ball radius and pin or fixed-ball radius (0 if neither is used) [m].
     r_ball: f64,
     r_elem: f64,
+    /// Gothic-arch flank radius (0 if none is used) [m].
+    r_groove: f64,
+    /// The elements of the grooves and of the Kelvin seat.
+    groove: GrooveKind,
+    seat: GrooveKind,
+    /// Canoe patch radius, for canoe balls [m].
+    canoe: Option<f64>,
     /// Angle between a contact normal and z: 90 deg - opening/2 [rad].
     alpha: f64,
 }
@@ -100,20 +112,55 @@ fn check_coupling(
     let diameter = positive(&c.diameter, "coupling.diameter")?;
     plausible::check_coupling(c, raw.allow_large_values, ctx)?;
     let r_ball = positive(&c.ball_diameter, "coupling.ball_diameter")? / 2.0;
-    let r_elem = match (c.groove, &c.groove_element_diameter) {
-        (GrooveKind::Planes, _) => 0.0,
-        (_, Some(d)) => positive(d, "coupling.groove_element_diameter")? / 2.0,
-        (kind, None) => {
+    let (groove, seat) = kinds(c);
+    // The first of groove and seat that is one of `want`, and the missing-field
+    // error naming it.
+    let needing = |want: [GrooveKind; 2]| {
+        let key = |k: GrooveKind| if k == groove { "groove" } else { "seat" };
+        [groove, seat]
+            .into_iter()
+            .find(|k| want.contains(k))
+            .map(|k| {
+                move |field: &str, what: &str| {
+                    ctx.error(
+                        None,
+                        field,
+                        format!("missing: {} = \"{}\" needs {what}", key(k), groove_name(k)),
+                    )
+                }
+            })
+    };
+    let r_elem = match needing([GrooveKind::Cylinders, GrooveKind::Balls]) {
+        None => 0.0,
+        Some(missing) => {
+            let d = (c.groove_element_diameter.as_ref()).ok_or_else(|| {
+                missing(
+                    "coupling.groove_element_diameter",
+                    "the pin or ball diameter",
+                )
+            })?;
+            positive(d, "coupling.groove_element_diameter")? / 2.0
+        }
+    };
+    let r_groove = if let Some(missing) = needing([GrooveKind::GothicArch; 2]) {
+        let g = (c.groove_radius.as_ref())
+            .ok_or_else(|| missing("coupling.groove_radius", "the flank radius `groove_radius`"))?;
+        let rg = positive(g, "coupling.groove_radius")?;
+        if rg <= r_ball {
             return Err(ctx.error(
-                None,
-                "coupling.groove_element_diameter",
+                Some(&g.span()),
+                "coupling.groove_radius",
                 format!(
-                    "missing: groove = \"{}\" needs the pin or ball diameter",
-                    groove_name(kind)
+                    "{rg} m must exceed the ball radius {r_ball} m: each gothic-arch flank is \
+                     a concave arc that holds the ball inside it"
                 ),
             ));
         }
+        rg
+    } else {
+        0.0
     };
+    let canoe = canoe_radius(c, r_groove, ctx)?;
     let opening = *c.opening_angle_deg.get_ref();
     if !(opening > 0.0 && opening < 180.0) {
         return Err(ctx.error(
@@ -133,8 +180,56 @@ fn check_coupling(
         diameter,
         r_ball,
         r_elem,
+        r_groove,
+        groove,
+        seat,
+        canoe,
         alpha: (90.0 - opening / 2.0).to_radians(),
     })
+}
+
+/// The elements of the grooves and of the Kelvin seat (module docs of
+/// `coupling.seat`: the groove's, or planes for a gothic-arch groove).
+fn kinds(c: &CouplingFile) -> (GrooveKind, GrooveKind) {
+    let seat = match (c.arrangement, c.seat, c.groove) {
+        (Arrangement::Maxwell, _, g) => g,
+        (Arrangement::Kelvin, Some(s), _) => s,
+        (Arrangement::Kelvin, None, GrooveKind::GothicArch) => GrooveKind::Planes,
+        (Arrangement::Kelvin, None, g) => g,
+    };
+    (c.groove, seat)
+}
+
+/// The canoe patch radius (`ball_shape = "canoe"`), checked; `None` for
+/// spherical balls. A patch in a gothic arch must be curved more than the
+/// flank (R_c < R_g), or the two do not touch at a point.
+fn canoe_radius(
+    c: &CouplingFile,
+    r_groove: f64,
+    ctx: &ErrorContext,
+) -> Result<Option<f64>, SceneError> {
+    if c.ball_shape != Some(BallShape::Canoe) {
+        return Ok(None);
+    }
+    let Some(v) = &c.canoe_radius else {
+        return Err(ctx.error(
+            None,
+            "coupling.canoe_radius",
+            "missing: ball_shape = \"canoe\" needs the patch radius `canoe_radius`",
+        ));
+    };
+    let rc = ctx.positive(v, "coupling.canoe_radius", "a length in m")?;
+    if r_groove > 0.0 && rc >= r_groove {
+        return Err(ctx.error(
+            Some(&v.span()),
+            "coupling.canoe_radius",
+            format!(
+                "{rc} m must be smaller than groove_radius {r_groove} m: a canoe patch in a \
+                 gothic arch touches it at a point only if the patch is curved more than the flank"
+            ),
+        ));
+    }
+    Ok(Some(rc))
 }
 
 /// Centres of balls 1, 2, 3 on the circle of `diameter`, at [`BALL_AZIMUTHS_DEG`].
@@ -155,19 +250,27 @@ struct ContactSpec {
     normal: Vector3<f64>,
     /// Groove axis direction (the pin's axis for cylinders).
     axis: Vector3<f64>,
-    /// The Kelvin flat: a plane whatever the groove kind.
-    flat: bool,
+    /// Which element: a groove's, the Kelvin seat's, or the Kelvin flat.
+    role: Role,
+}
+
+/// The part of the coupling a contact belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Role {
+    Groove,
+    Seat,
+    Flat,
 }
 
 /// The contacts, ball by ball, with the normals of the module docs.
 fn contacts(arrangement: Arrangement, centres: &[Vector3<f64>], alpha: f64) -> Vec<ContactSpec> {
     let ez = Vector3::z();
     let tilt = |horizontal: Vector3<f64>| horizontal * alpha.sin() + ez * alpha.cos();
-    let contact = |ball, normal, axis, flat| ContactSpec {
+    let contact = |ball, normal, axis, role| ContactSpec {
         ball,
         normal,
         axis,
-        flat,
+        role,
     };
     let mut out = Vec::new();
     match arrangement {
@@ -175,8 +278,8 @@ fn contacts(arrangement: Arrangement, centres: &[Vector3<f64>], alpha: f64) -> V
             for (k, ck) in centres.iter().enumerate() {
                 let er = Vector3::new(ck.x, ck.y, 0.0).normalize();
                 let s = ez.cross(&er);
-                out.push(contact(k, tilt(s), er, false));
-                out.push(contact(k, tilt(-s), er, false));
+                out.push(contact(k, tilt(s), er, Role::Groove));
+                out.push(contact(k, tilt(-s), er, Role::Groove));
             }
         }
         Arrangement::Kelvin => {
@@ -186,22 +289,24 @@ fn contacts(arrangement: Arrangement, centres: &[Vector3<f64>], alpha: f64) -> V
                 // direction from ball 1 to fixed element j: -e_r rotated by +120 j about z
                 let d = rotate_z(&(-er), ang);
                 // pins of the trihedral seat lie horizontal, across the element direction
-                out.push(contact(0, tilt(-d), ez.cross(&d), false));
+                out.push(contact(0, tilt(-d), ez.cross(&d), Role::Seat));
             }
             let u = (centres[0] - centres[1]).normalize();
             let s = ez.cross(&u);
-            out.push(contact(1, tilt(s), u, false));
-            out.push(contact(1, tilt(-s), u, false));
-            out.push(contact(2, ez, Vector3::x(), true));
+            out.push(contact(1, tilt(s), u, Role::Groove));
+            out.push(contact(1, tilt(-s), u, Role::Groove));
+            out.push(contact(2, ez, Vector3::x(), Role::Flat));
         }
     }
     out
 }
 
-/// The fixed element of contact `k`, touching its ball (centre `ck`) at zero gap.
+/// The fixed element of contact `k`, touching its ball (centre `ck`) at
+/// zero gap, with the canoe patch if the balls are canoes.
 fn surface(c: &CouplingFile, dims: &Dimensions, k: &ContactSpec, ck: &Vector3<f64>) -> SurfaceFile {
     let arr = |v: Vector3<f64>| Some(Spanned::new(0..0, Numbers::of(&[v.x, v.y, v.z])));
-    let (n, r_ball, r_elem) = (k.normal, dims.r_ball, dims.r_elem);
+    let length = |v: f64| Some(Spanned::new(0..0, v));
+    let (n, r_ball) = (k.normal, dims.r_ball);
     let mut s = SurfaceFile {
         kind: Spanned::new(0..0, SurfaceKind::Plane),
         ball: Spanned::new(0..0, k.ball as i64 + 1),
@@ -213,23 +318,40 @@ fn surface(c: &CouplingFile, dims: &Dimensions, k: &ContactSpec, ck: &Vector3<f6
         centre: None,
         radius: None,
         support_compliance: c.support_compliance.clone(),
+        moving_centre: None,
+        moving_radius: None,
     };
-    match (c.groove, k.flat) {
-        (GrooveKind::Planes, _) | (_, true) => {
+    let kind = match k.role {
+        Role::Flat => GrooveKind::Planes,
+        Role::Seat => dims.seat,
+        Role::Groove => dims.groove,
+    };
+    match kind {
+        GrooveKind::Planes => {
             s.point = arr(ck - n * r_ball);
             s.normal = arr(n);
         }
-        (GrooveKind::Cylinders, false) => {
+        GrooveKind::Cylinders => {
             s.kind = Spanned::new(0..0, SurfaceKind::Cylinder);
-            s.axis_point = arr(ck - n * (r_ball + r_elem));
+            s.axis_point = arr(ck - n * (r_ball + dims.r_elem));
             s.direction = arr(k.axis);
-            s.radius = Some(Spanned::new(0..0, r_elem));
+            s.radius = length(dims.r_elem);
         }
-        (GrooveKind::Balls, false) => {
+        GrooveKind::Balls => {
             s.kind = Spanned::new(0..0, SurfaceKind::Sphere);
-            s.centre = arr(ck - n * (r_ball + r_elem));
-            s.radius = Some(Spanned::new(0..0, r_elem));
+            s.centre = arr(ck - n * (r_ball + dims.r_elem));
+            s.radius = length(dims.r_elem);
         }
+        GrooveKind::GothicArch => {
+            s.kind = Spanned::new(0..0, SurfaceKind::ConcaveCylinder);
+            s.axis_point = arr(ck + n * (dims.r_groove - r_ball));
+            s.direction = arr(k.axis);
+            s.radius = length(dims.r_groove);
+        }
+    }
+    if let Some(rc) = dims.canoe {
+        s.moving_centre = arr(ck + n * (rc - r_ball));
+        s.moving_radius = length(rc);
     }
     s
 }
@@ -268,5 +390,6 @@ fn groove_name(k: GrooveKind) -> &'static str {
         GrooveKind::Planes => "planes",
         GrooveKind::Cylinders => "cylinders",
         GrooveKind::Balls => "balls",
+        GrooveKind::GothicArch => "gothic-arch",
     }
 }

@@ -107,6 +107,20 @@ pub enum GrooveKind {
     Cylinders,
     /// Two fixed balls.
     Balls,
+    /// Two concave circular flanks of `groove_radius` (a gothic arch).
+    GothicArch,
+}
+
+/// The moving elements' contact surfaces (`coupling.ball_shape`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum BallShape {
+    /// Balls of `ball_diameter`.
+    #[default]
+    Sphere,
+    /// Canoe balls: each contact surface a spherical patch of
+    /// `canoe_radius`, placed where a ball of `ball_diameter` would touch.
+    Canoe,
 }
 
 /// High-level coupling description (lengths in metres).
@@ -124,6 +138,19 @@ pub struct CouplingFile {
     /// Pin or fixed-ball diameter [m] (cylinders, balls).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub groove_element_diameter: Option<Spanned<f64>>,
+    /// Radius of each flank of a gothic-arch groove [m] (larger than the ball's).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub groove_radius: Option<Spanned<f64>>,
+    /// Kelvin only: the elements of the trihedral seat of ball 1 (default:
+    /// those of `groove`; for a gothic-arch groove, three planes).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seat: Option<GrooveKind>,
+    /// sphere (default) | canoe.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ball_shape: Option<BallShape>,
+    /// Radius of each canoe patch [m] (ball_shape = "canoe").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub canoe_radius: Option<Spanned<f64>>,
     pub groove_material: Spanned<String>,
     /// Angle between the two flanks of a groove [deg].
     #[serde(default = "default_opening_angle")]
@@ -153,11 +180,27 @@ pub enum SurfaceKind {
     Plane,
     Cylinder,
     Sphere,
+    ConcaveCylinder,
+}
+
+impl SurfaceKind {
+    /// The scene-file spelling.
+    pub fn name(self) -> &'static str {
+        match self {
+            SurfaceKind::Plane => "plane",
+            SurfaceKind::Cylinder => "cylinder",
+            SurfaceKind::Sphere => "sphere",
+            SurfaceKind::ConcaveCylinder => "concave-cylinder",
+        }
+    }
 }
 
 /// A fixed surface. Which fields are needed depends on `type`:
-/// plane: `point`, `normal`; cylinder: `axis_point`, `direction`, `radius`;
-/// sphere: `centre`, `radius`.
+/// plane: `point`, `normal`; cylinder and concave-cylinder: `axis_point`,
+/// `direction`, `radius`; sphere: `centre`, `radius`. `moving_centre` and
+/// `moving_radius` (both or neither) give the moving element's own
+/// spherical patch at this contact (a canoe ball's face) instead of the
+/// ball's sphere.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SurfaceFile {
@@ -182,6 +225,13 @@ pub struct SurfaceFile {
     /// Support compliance in series with this contact, normal direction [m/N].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub support_compliance: Option<Spanned<f64>>,
+    /// Centre of curvature of the moving element's patch at this contact,
+    /// in the moving half [m].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub moving_centre: Option<Spanned<Numbers>>,
+    /// Radius of curvature of that patch [m].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub moving_radius: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -50,6 +50,25 @@ pub enum SurfaceGeometry {
     },
     /// Fixed ball.
     Sphere { centre: Vector3<f64>, radius: f64 },
+    /// The inside of a cylinder of `radius` around the line through
+    /// `axis_point` along the unit `direction`: a concave groove flank
+    /// (one flank of a gothic arch); the ball lies inside it.
+    ConcaveCylinder {
+        axis_point: Vector3<f64>,
+        direction: Vector3<f64>,
+        radius: f64,
+    },
+}
+
+/// The moving element's own surface at one contact, when it is not the
+/// ball's sphere: a spherical patch of `radius` centred at `centre` (body
+/// frame), e.g. one face of a canoe ball.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MovingPatch {
+    /// Centre of curvature in the body frame [m].
+    pub centre: Vector3<f64>,
+    /// Radius of curvature [m].
+    pub radius: f64,
 }
 
 /// A fixed surface serving one moving ball: one contact.
@@ -62,6 +81,8 @@ pub struct Surface {
     pub line: Option<usize>,
     /// Support compliance in series with the contact, normal direction [m/N].
     pub support_compliance: f64,
+    /// The moving element's surface at this contact; `None`: the ball's sphere.
+    pub moving: Option<MovingPatch>,
 }
 
 /// The preload on the moving half.

@@ -19,6 +19,9 @@ use super::file::{CouplingFile, SceneFile, SurfaceKind};
 pub const BALL_DIAMETER_MAX: f64 = 0.5;
 /// Largest plausible pin or fixed-ball diameter [m].
 pub const ELEMENT_DIAMETER_MAX: f64 = 0.5;
+/// Largest plausible radius of a canoe ball's patch [m] (Slocum's canoe
+/// balls have radii of a quarter to about one metre).
+pub const CANOE_RADIUS_MAX: f64 = 10.0;
 /// Largest plausible diameter of the circle of ball centres [m].
 pub const CIRCLE_DIAMETER_MAX: f64 = 5.0;
 /// Largest plausible total preload [N].
@@ -82,6 +85,22 @@ pub fn check_coupling(c: &CouplingFile, allow: bool, ctx: &ErrorContext) -> Resu
             "a pin or fixed-ball diameter",
         )?;
     }
+    if let Some(r) = &c.groove_radius {
+        limit(
+            r,
+            ELEMENT_DIAMETER_MAX / 2.0,
+            "coupling.groove_radius",
+            "a gothic-arch flank radius",
+        )?;
+    }
+    if let Some(r) = &c.canoe_radius {
+        limit(
+            r,
+            CANOE_RADIUS_MAX,
+            "coupling.canoe_radius",
+            "a canoe radius",
+        )?;
+    }
     Ok(())
 }
 
@@ -123,7 +142,8 @@ pub fn check_explicit(
         }
     }
     for (i, s) in f.surfaces.iter().enumerate() {
-        let (Some(r), SurfaceKind::Cylinder | SurfaceKind::Sphere) = (&s.radius, s.kind.get_ref())
+        let (Some(r), SurfaceKind::Cylinder | SurfaceKind::Sphere | SurfaceKind::ConcaveCylinder) =
+            (&s.radius, s.kind.get_ref())
         else {
             continue;
         };
@@ -136,6 +156,20 @@ pub fn check_explicit(
                 format!(
                     "a pin or fixed-ball diameter of {d} m is implausibly large (limit \
                      {ELEMENT_DIAMETER_MAX} m)"
+                ),
+            ));
+        }
+    }
+    for (i, s) in f.surfaces.iter().enumerate() {
+        let Some(r) = &s.moving_radius else { continue };
+        if *r.get_ref() > CANOE_RADIUS_MAX {
+            return Err(too_large(
+                ctx,
+                Some(&r.span()),
+                &format!("surfaces[{}].moving_radius", i + 1),
+                format!(
+                    "a moving patch radius of {} m is implausibly large (limit {CANOE_RADIUS_MAX} m)",
+                    r.get_ref()
                 ),
             ));
         }

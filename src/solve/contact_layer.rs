@@ -14,7 +14,8 @@
 //! of the increment, (F_n,committed + F_n)/2 (midpoint rule: second order in
 //! the increment, where K_t at the end force would be first order). K_t is
 //! Mindlin's 2x2 elliptical stiffness in the tangent plane, its major axis
-//! along the pin for a sphere-cylinder contact (`contact::mindlin`).
+//! along the pin for a sphere-cylinder contact and across the groove for a
+//! sphere-groove one (`contact::mindlin`).
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -207,6 +208,8 @@ pub fn evaluate_into(
     } = *normal;
     let major_axis = match contact.surface {
         SurfaceGeometry::Cylinder { direction, .. } => direction,
+        // A ball in a concave flank: the ellipse is long across the groove.
+        SurfaceGeometry::ConcaveCylinder { direction, .. } => direction.cross(&g.normal),
         _ => Vector3::zeros(), // circular: K_t is isotropic
     };
     let law = &contact.law;

@@ -161,7 +161,8 @@ impl Tolerances {
     /// tilts of both flanks of a V widen its opening angle by twice the
     /// tilt — then shifted by its normal error along n_i and by its
     /// groove's x, y error. Ball k's centre moves by its position error and
-    /// its radius grows by half its diameter error.
+    /// its radius grows by half its diameter error; a moving patch (canoe
+    /// face) of ball k moves and grows with it.
     pub fn apply(&self, coupling: &Coupling) -> Scene {
         let mut scene = coupling.scene.clone();
         for (k, b) in scene.balls.iter_mut().enumerate() {
@@ -198,7 +199,22 @@ impl Tolerances {
                     centre: moved(centre),
                     radius,
                 },
+                SurfaceGeometry::ConcaveCylinder {
+                    axis_point,
+                    direction,
+                    radius,
+                } => SurfaceGeometry::ConcaveCylinder {
+                    axis_point: moved(axis_point),
+                    direction: r * direction,
+                    radius,
+                },
             };
+            // A moving patch moves with its ball; a diameter error moves its
+            // surface along the normal as it moves the ball's.
+            if let Some(p) = &mut s.moving {
+                p.centre += self.ball_position[s.ball];
+                p.radius += 0.5 * self.ball_diameter[s.ball];
+            }
         }
         scene
     }

@@ -15,12 +15,13 @@
 //! dispatch and pose transforms cost several times the arithmetic.
 
 mod ball_ball;
+mod ball_groove;
 mod ball_pin;
 mod ball_plane;
 
 use nalgebra::Vector3;
-use parry3d_f64::math::{Pose, Vector};
-use parry3d_f64::shape::{Ball, Capsule, HalfSpace, SharedShape};
+use parry3d_f64::math::{Pose, Rotation, Vector};
+use parry3d_f64::shape::{Ball, Capsule, Cylinder, HalfSpace, SharedShape};
 
 use crate::scene::SurfaceGeometry;
 
@@ -65,14 +66,21 @@ pub fn contact(surface: &SurfaceGeometry, centre: &Vector3<f64>, radius: f64) ->
             centre: fixed,
             radius: r_fixed,
         } => ball_ball::contact(centre, radius, fixed, *r_fixed),
+        SurfaceGeometry::ConcaveCylinder {
+            axis_point,
+            direction,
+            radius: groove,
+        } => ball_groove::contact(centre, radius, axis_point, direction, *groove),
     }
 }
 
 /// A fixed surface as a parry shape and its pose: a half-space, a ball, or
 /// for a pin a capsule of the pin's radius about the part of its axis that
 /// reaches `half_length` either way from the foot of `ball_centre` (a
-/// capsule's side is the cylinder, and no ball reaches its ends). The
-/// dynamic solver's colliders, and the reference of the closed forms.
+/// capsule's side is the cylinder, and no ball reaches its ends). A concave
+/// cylinder is the solid cylinder whose wall it is, of that length (parry
+/// has no hollow shape; the ball lies inside this one). The dynamic
+/// solver's colliders, and the reference of the closed forms.
 pub fn parry_shape(
     surface: &SurfaceGeometry,
     ball_centre: &Vector3<f64>,
@@ -101,5 +109,19 @@ pub fn parry_shape(
             SharedShape::new(Ball::new(radius)),
             Pose::from_translation(v(&centre)),
         ),
+        SurfaceGeometry::ConcaveCylinder {
+            axis_point,
+            direction,
+            radius,
+        } => {
+            // parry's cylinder lies along its local y axis.
+            let foot = axis_point + direction * direction.dot(&(ball_centre - axis_point));
+            let rotation = Rotation::from_rotation_arc(Vector::Y, v(&direction));
+            let cylinder = Cylinder::new(half_length, radius);
+            (
+                SharedShape::new(cylinder),
+                Pose::from_parts(v(&foot), rotation),
+            )
+        }
     }
 }

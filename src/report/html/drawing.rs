@@ -258,7 +258,14 @@ fn fixed_element(proj: Proj, g: &SurfaceGeometry, r: f64) -> Vec<Shape> {
             axis_point,
             direction,
             radius,
+        }
+        | SurfaceGeometry::ConcaveCylinder {
+            axis_point,
+            direction,
+            radius,
         } => {
+            // A gothic-arch flank is drawn as the outline of its cylinder.
+            let concave = matches!(g, SurfaceGeometry::ConcaveCylinder { .. });
             let (pa, pb) = (
                 p(&(axis_point - direction * 1.6 * r)),
                 p(&(axis_point + direction * 1.6 * r)),
@@ -268,14 +275,14 @@ fn fixed_element(proj: Proj, g: &SurfaceGeometry, r: f64) -> Vec<Shape> {
                     c: p(&axis_point),
                     r: radius,
                     stroke: FIXED,
-                    fill: "#eaeef2",
+                    fill: if concave { "none" } else { "#eaeef2" },
                 }]
             } else {
                 vec![Shape::Line {
                     a: pa,
                     b: pb,
-                    width_m: 2.0 * radius,
-                    colour: grey,
+                    width_m: if concave { 0.0 } else { 2.0 * radius },
+                    colour: if concave { FIXED } else { grey },
                 }]
             }
         }

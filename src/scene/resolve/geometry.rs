@@ -9,7 +9,7 @@ use super::tables::compliance;
 use crate::scene::error::{ErrorContext, SceneError};
 use crate::scene::file::{BallFile, Numbers, SceneFile, SurfaceFile, SurfaceKind};
 use crate::scene::plausible;
-use crate::scene::{Ball, Surface, SurfaceGeometry};
+use crate::scene::{Ball, MovingPatch, Surface, SurfaceGeometry};
 
 /// The moving balls, in file order.
 pub fn balls(f: &SceneFile, fx: &Fields) -> Result<Vec<Ball>, SceneError> {
@@ -92,6 +92,11 @@ fn surface(s: &SurfaceFile, i: usize, fx: &Fields, n_balls: usize) -> Result<Sur
             centre: fx.finite(&need(&s.centre, "centre")?, &field("centre"))?,
             radius: radius(s)?,
         },
+        SurfaceKind::ConcaveCylinder => SurfaceGeometry::ConcaveCylinder {
+            axis_point: fx.finite(&need(&s.axis_point, "axis_point")?, &field("axis_point"))?,
+            direction: fx.unit(&need(&s.direction, "direction")?, &field("direction"))?,
+            radius: radius(s)?,
+        },
     };
     Ok(Surface {
         geometry,
@@ -102,15 +107,35 @@ fn surface(s: &SurfaceFile, i: usize, fx: &Fields, n_balls: usize) -> Result<Sur
             Some(v) => compliance(ctx, v, &field("support_compliance"))?,
             None => 0.0,
         },
+        moving: moving_patch(s, i, fx)?,
     })
 }
 
+/// The moving element's own patch at surface `i`: `moving_centre` and
+/// `moving_radius`, both or neither.
+fn moving_patch(s: &SurfaceFile, i: usize, fx: &Fields) -> Result<Option<MovingPatch>, SceneError> {
+    let field = |k: &str| format!("surfaces[{}].{k}", i + 1);
+    match (&s.moving_centre, &s.moving_radius) {
+        (None, None) => Ok(None),
+        (Some(c), Some(r)) => Ok(Some(MovingPatch {
+            centre: fx.finite(c, &field("moving_centre"))?,
+            radius: fx.positive(r, &field("moving_radius"), "m")?,
+        })),
+        (Some(c), None) => Err(fx.ctx.error(
+            Some(&c.span()),
+            field("moving_radius"),
+            "missing: a moving patch needs both `moving_centre` and `moving_radius`",
+        )),
+        (None, Some(r)) => Err(fx.ctx.error(
+            Some(&r.span()),
+            field("moving_centre"),
+            "missing: a moving patch needs both `moving_centre` and `moving_radius`",
+        )),
+    }
+}
+
 fn missing(s: &SurfaceFile, ctx: &ErrorContext, field: &str, key: &str) -> SceneError {
-    let kind = match s.kind.get_ref() {
-        SurfaceKind::Plane => "plane",
-        SurfaceKind::Cylinder => "cylinder",
-        SurfaceKind::Sphere => "sphere",
-    };
+    let kind = s.kind.get_ref().name();
     ctx.error(
         Some(&s.kind.span()),
         field,

@@ -115,9 +115,7 @@ pub fn contact_force(
     }
     let n = eval.geometry.normal;
     let p = eval.geometry.point;
-    let centre = motion
-        .pose
-        .apply(&coupling.balls[coupling.contacts[i].ball].centre);
+    let centre = motion.pose.apply(&coupling.contacts[i].centre);
     // Normal dashpot (Tsuji et al. 1992).
     let mut f_n = fh;
     if damping.normal > 0.0 {

@@ -271,7 +271,7 @@ impl<'a> Simulation<'a> {
             let e = &sc.eval;
             rf += e.force;
             rm += e.geometry.point.cross(&e.force);
-            let centre = motion.pose.apply(&c.balls[c.contacts[i].ball].centre);
+            let centre = motion.pose.apply(&c.contacts[i].centre);
             max_speed = max_speed
                 .max(motion.velocity_at(&centre).norm())
                 .max(motion.velocity_at(&e.geometry.point).norm());

@@ -41,10 +41,6 @@ use crate::contact::{Friction, TangentialState};
 use crate::solve::contact_layer::{ContactEval, Motion, Moved, NormalPart, evaluate_into};
 use crate::solve::{ContactResult, SolveError, SolverOptions};
 
-/// Ball centres held on the stack by [`Solver::evaluate_all`] (a kinematic
-/// coupling has three balls; more are placed one by one).
-const MAX_BALLS: usize = 8;
-
 /// Contacts evaluated together by [`Solver::evaluate_all`] (a kinematic
 /// coupling has six).
 const GROUP: usize = 8;
@@ -177,11 +173,6 @@ impl<'a> Solver<'a> {
     ) {
         out.resize_with(states.len(), ContactEval::empty);
         let motion = Motion::between(pose, committed_pose);
-        let mut centres = [Vector3::zeros(); MAX_BALLS];
-        let balls = &self.coupling.balls;
-        for (c, ball) in centres.iter_mut().zip(balls) {
-            *c = pose.apply(&ball.centre);
-        }
         // Two passes over each group of contacts: first geometry and the
         // normal part (the long square- and cube-root chains) of every
         // contact of the group, then the tangential law and the tangent, so
@@ -192,12 +183,7 @@ impl<'a> Solver<'a> {
         for start in (0..states.len()).step_by(GROUP) {
             let end = (start + GROUP).min(states.len());
             for i in start..end {
-                let ball = self.coupling.contacts[i].ball;
-                let centre = match centres.get(ball) {
-                    Some(c) => *c,
-                    None => pose.apply(&balls[ball].centre),
-                };
-                let g = self.coupling.geometry_at(i, &centre);
+                let g = self.coupling.geometry(i, pose);
                 normal[i - start] = NormalPart::new(self.coupling, i, &g, &states[i]);
                 geometry[i - start] = g;
             }
@@ -318,8 +304,7 @@ impl<'a> Solver<'a> {
         let mut j = Matrix6::zeros();
         for (i, e) in evals.iter().enumerate() {
             debug_assert!(e.tangent, "contact {i} evaluated without its tangent");
-            let centre = e.geometry.point
-                + e.geometry.normal * self.coupling.balls[self.coupling.contacts[i].ball].radius;
+            let centre = e.geometry.point + e.geometry.normal * self.coupling.contacts[i].radius;
             add_contact(&mut j, &e.stiffness, &e.force, &e.geometry.point, &centre);
         }
         // A load of fixed direction at a point of the body (K = 0): moment
