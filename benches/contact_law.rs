@@ -29,10 +29,10 @@ use kinrepro::material::Material;
 use nalgebra::Vector3;
 
 /// The pair of each shape: a 5 mm steel ball on a flat, a 2 mm ball, a
-/// 6 mm seat or a 2 mm pin.
+/// 6 mm seat or groove, or a 2 mm pin (under the ball, or crossing a 5 mm pin).
 fn law_of(shape: ContactShape) -> ContactLaw {
     let steel = Material::builtin("steel").unwrap();
-    let r2 = if shape == ContactShape::SphereSeat {
+    let r2 = if matches!(shape, ContactShape::SphereSeat | ContactShape::SphereGroove) {
         6e-3
     } else {
         2e-3

@@ -375,10 +375,11 @@ proptest! {
         m1 in any_material(),
         m2 in any_material(),
         f in 1e-3f64..1e3,
-        shape_i in 0usize..4,
+        shape_i in 0usize..6,
     ) {
         let shape = ContactShape::ALL[shape_i];
-        let r2 = if shape == ContactShape::SphereSeat { r1 * (1.0 + r2 * 10.0) } else { r2 };
+        let concave = matches!(shape, ContactShape::SphereSeat | ContactShape::SphereGroove);
+        let r2 = if concave { r1 * (1.0 + r2 * 10.0) } else { r2 };
         // Independent moduli (docs/model.md, Hertz; Johnson 1985 eq. 4.22 and 7.18):
         // 1/E* = sum (1 - v^2)/E, 1/G* = sum (2 - v)/G, G = E / (2 (1 + v)).
         let e_star = 1.0 / [&m1, &m2].iter().map(|m| (1.0 - m.poisson_ratio.powi(2)) / m.youngs_modulus).sum::<f64>();
@@ -398,19 +399,23 @@ proptest! {
         prop_assert!(rel(e.effective_shear_modulus_pa, g_star) < 1e-12);
         // Relative radii from the shapes (docs/model.md, Hertz): plane R = r1, convex
         // ball 1/R = 1/r1 + 1/r2, concave seat 1/R = 1/r1 - 1/r2; crossed
-        // cylinder: 1/(1/r1 + 1/r2) across the axis and r1 along it.
+        // cylinder: 1/(1/r1 + 1/r2) across the axis and r1 along it; concave
+        // groove: 1/(1/r1 - 1/r2) across and r1 along; pins crossed at 90
+        // degrees: r1 and r2 (each pin's curvature alone in its direction).
         let across = 1.0 / (1.0 / r1 + 1.0 / r2);
         let radii = match shape {
             ContactShape::SpherePlane => [r1, r1],
             ContactShape::SphereSphere => [across, across],
             ContactShape::SphereSeat => [1.0 / (1.0 / r1 - 1.0 / r2); 2],
             ContactShape::SphereCylinder => [across, r1],
+            ContactShape::SphereGroove => [1.0 / (1.0 / r1 - 1.0 / r2), r1],
+            ContactShape::CrossedCylinders => [r1, r2],
             ContactShape::General => unreachable!("not in ContactShape::ALL"),
         };
         let mut got = e.relative_radii_m;
         got.sort_by(f64::total_cmp);
         prop_assert!(rel(got[0], radii[0].min(radii[1])) < 1e-12 && rel(got[1], radii[0].max(radii[1])) < 1e-12, "{got:?} vs {radii:?}");
-        if shape != ContactShape::SphereCylinder {
+        if matches!(shape, ContactShape::SpherePlane | ContactShape::SphereSphere | ContactShape::SphereSeat) {
             // Circular contacts: Hertz closed forms a = (3FR/4E*)^(1/3), delta = a^2/R.
             let r = radii[0];
             let a = (3.0 * f * r / (4.0 * e_star)).cbrt();

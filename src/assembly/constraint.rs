@@ -112,9 +112,9 @@ pub fn constraint_matrix(coupling: &Coupling) -> DMatrix<f64> {
     let m = coupling.contacts.len();
     let mut a = DMatrix::zeros(m, 6);
     for i in 0..m {
-        let n = coupling.geometry(i, &pose).normal;
-        let c = coupling.contacts[i].centre;
-        let mom = (c - o).cross(&n) / l;
+        let g = coupling.geometry(i, &pose);
+        let n = g.normal;
+        let mom = (g.point - o).cross(&n) / l;
         for k in 0..3 {
             a[(i, k)] = n[k];
             a[(i, 3 + k)] = mom[k];

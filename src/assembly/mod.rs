@@ -2,6 +2,7 @@
 //! laws of each pair, in the contact order of docs/model.md (the `--mu` order).
 
 pub mod constraint;
+mod contacts;
 pub mod geometry;
 
 use nalgebra::{Matrix6, UnitQuaternion, Vector3, Vector6};
@@ -51,11 +52,17 @@ impl BodyPose {
 pub struct Contact {
     /// Index of the moving ball (0-based).
     pub ball: usize,
-    /// The moving surface at this contact, a sphere: centre of curvature in
-    /// the body frame [m] and radius [m]. The ball's centre and radius, or
-    /// the scene's patch (a canoe ball's face).
+    /// The moving surface at this contact: the ball's sphere, the scene's
+    /// patch (a canoe ball's face) or a moving pin. Its centre of curvature
+    /// (a point of a pin's axis) in the body frame [m] and its radius [m].
     pub centre: Vector3<f64>,
     pub radius: f64,
+    /// A moving pin's unit axis in the body frame; `None`: a sphere.
+    pub axis: Option<Vector3<f64>>,
+    /// The major axis of the contact ellipse in the world frame at the
+    /// scene pose (Mindlin's K_t is oriented by its projection into the
+    /// tangent plane); zero for a circular contact.
+    pub major_axis: Vector3<f64>,
     pub surface: SurfaceGeometry,
     pub shape: ContactShape,
     pub pair: ContactPair,
@@ -154,50 +161,9 @@ impl Coupling {
                 material: b.material.clone(),
             })
             .collect();
-        let mut contacts = Vec::new();
-        for (i, s) in scene.surfaces.iter().enumerate() {
-            let ball = &balls[s.ball];
-            let (shape, radius2) = match s.geometry {
-                SurfaceGeometry::Plane { .. } => (ContactShape::SpherePlane, None),
-                SurfaceGeometry::Cylinder { radius, .. } => {
-                    (ContactShape::SphereCylinder, Some(radius))
-                }
-                SurfaceGeometry::Sphere { radius, .. } => {
-                    (ContactShape::SphereSphere, Some(radius))
-                }
-                SurfaceGeometry::ConcaveCylinder { radius, .. } => {
-                    (ContactShape::SphereGroove, Some(radius))
-                }
-            };
-            let err = |source| AssemblyError::Contact {
-                contact: i + 1,
-                source,
-            };
-            let (centre, radius) = match s.moving {
-                Some(p) => (p.centre, p.radius),
-                None => (ball.centre, ball.radius),
-            };
-            let pair = ContactPair::from_shape(
-                shape,
-                radius,
-                radius2,
-                ball.material.clone(),
-                s.material.clone(),
-            )
-            .map_err(err)?;
-            let law = pair.law().map_err(err)?;
-            contacts.push(Contact {
-                ball: s.ball,
-                centre,
-                radius,
-                surface: s.geometry,
-                shape,
-                shear: ShearRatios::new(&pair, &law.hertz),
-                normal: SeriesNormal::new(law.hertz, s.support_compliance),
-                pair,
-                law,
-            });
-        }
+        let contacts = (scene.surfaces.iter().enumerate())
+            .map(|(i, s)| contacts::build(i, s, &balls[s.ball]))
+            .collect::<Result<Vec<_>, _>>()?;
         let mut coupling = Coupling {
             scene: scene.clone(),
             balls,
@@ -249,29 +215,29 @@ impl Coupling {
             .fold(f64::INFINITY, f64::min)
     }
 
-    /// Geometry of contact `i` with the moving half at `pose`.
-    pub fn geometry(&self, i: usize, pose: &BodyPose) -> ContactGeometry {
-        let centre = pose.apply(&self.contacts[i].centre);
-        self.geometry_at(i, &centre)
-    }
-
-    /// [`Self::geometry`] with the world position of the contact's moving
-    /// centre of curvature given: [`geometry::contact`].
+    /// Geometry of contact `i` with the moving half at `pose`
+    /// ([`geometry::contact`], or [`geometry::pin_contact`] for a moving pin).
     #[inline]
-    pub fn geometry_at(&self, i: usize, centre: &Vector3<f64>) -> ContactGeometry {
+    pub fn geometry(&self, i: usize, pose: &BodyPose) -> ContactGeometry {
         let c = &self.contacts[i];
-        geometry::contact(&c.surface, centre, c.radius)
+        let centre = pose.apply(&c.centre);
+        match c.axis {
+            None => geometry::contact(&c.surface, &centre, c.radius),
+            Some(axis) => {
+                geometry::pin_contact(&c.surface, &centre, &(pose.rotation * axis), c.radius)
+            }
+        }
     }
 
-    /// Constraint rows w_i = [n_i; c_i x n_i] at `pose` (c_i the moving
-    /// centre of curvature, on the contact normal):
+    /// Constraint rows w_i = [n_i; p_i x n_i] at `pose` (p_i the contact
+    /// point, on the line of the contact normal):
     /// d(gap_i) = w_i . (v, w) for a twist (v, w) about the world origin.
     pub fn constraint_rows(&self, pose: &BodyPose) -> Vec<Vector6<f64>> {
         (0..self.contacts.len())
             .map(|i| {
-                let n = self.geometry(i, pose).normal;
-                let c = pose.apply(&self.contacts[i].centre);
-                let m = c.cross(&n);
+                let g = self.geometry(i, pose);
+                let n = g.normal;
+                let m = g.point.cross(&n);
                 Vector6::new(n.x, n.y, n.z, m.x, m.y, m.z)
             })
             .collect()

@@ -13,6 +13,7 @@
 //! | sphere-seat (R2 > R1) | (R1, R1) | (-R2, -R2) | 1/R = 1/R1 - 1/R2 |
 //! | sphere-cylinder | (R1, R1) | (R2, inf) | 1/Rx = 1/R1 + 1/R2, Ry = R1 (along the pin) |
 //! | sphere-groove (R2 > R1) | (R1, R1) | (-R2, inf) | Rx = R1 (along the groove), 1/Ry = 1/R1 - 1/R2 (across) |
+//! | cylinder-cylinder (crossed at 90 deg) | (R1, inf) | (R2, inf) | Rx = min(R1, R2), Ry = max(R1, R2) |
 //!
 //! sphere-groove is a ball in a concave cylindrical flank (a gothic arch):
 //! its contact ellipse is long across the groove.
@@ -55,18 +56,22 @@ pub enum ContactShape {
     SphereCylinder,
     /// A ball in a concave cylinder (a gothic-arch flank) of larger radius.
     SphereGroove,
+    /// Two pins crossing (at 90 degrees for `contact --shape`; a scene's
+    /// crossed pins at the angle of their axes).
+    CrossedCylinders,
     /// Two bodies given by their principal radii (`contact --radii1 --radii2`).
     General,
 }
 
 impl ContactShape {
     /// The shapes given by two radii (`contact --shape`).
-    pub const ALL: [ContactShape; 5] = [
+    pub const ALL: [ContactShape; 6] = [
         ContactShape::SpherePlane,
         ContactShape::SphereSphere,
         ContactShape::SphereSeat,
         ContactShape::SphereCylinder,
         ContactShape::SphereGroove,
+        ContactShape::CrossedCylinders,
     ];
 
     /// Kebab-case name, as in scene files and on the command line.
@@ -77,6 +82,7 @@ impl ContactShape {
             ContactShape::SphereSeat => "sphere-seat",
             ContactShape::SphereCylinder => "sphere-cylinder",
             ContactShape::SphereGroove => "sphere-groove",
+            ContactShape::CrossedCylinders => "cylinder-cylinder",
             ContactShape::General => "general",
         }
     }
@@ -113,6 +119,9 @@ impl ContactShape {
             ContactShape::SphereSeat => pair([r1; 2], [-r2; 2], 0.0),
             ContactShape::SphereCylinder => pair([r1; 2], [r2, inf], 0.0),
             ContactShape::SphereGroove => pair([r1; 2], [-r2, inf], 0.0),
+            ContactShape::CrossedCylinders => {
+                pair([r1, inf], [r2, inf], std::f64::consts::FRAC_PI_2)
+            }
             ContactShape::General => return Err(ContactError::GeneralNeedsRadii),
         })
     }
@@ -170,6 +179,11 @@ pub enum ContactError {
     NotPointContact { a: f64, b: f64 },
     #[error("load = {0} N is invalid: the normal load must be positive and finite")]
     BadLoad(f64),
+    #[error(
+        "a moving pin touches only a fixed pin that crosses it (a plane, ball or concave \
+         groove would touch it along a line or not at a single point)"
+    )]
+    MovingPinNeedsPin,
 }
 
 /// One contact pair: its shape, the principal radii of both bodies and the

@@ -18,7 +18,8 @@
 //! c + (R_g - r) n along the groove. A canoe ball's patch of radius R_c at
 //! each contact touches there too: its centre of curvature is
 //! c + (R_c - r) n, on the contact normal through the ball's contact point
-//! c - r n.
+//! c - r n. Crossed pins put at each contact a pin of radius r whose axis
+//! passes through c along n x (the fixed pin's axis).
 
 use nalgebra::Vector3;
 
@@ -75,8 +76,8 @@ struct Dimensions {
     /// The elements of the grooves and of the Kelvin seat.
     groove: GrooveKind,
     seat: GrooveKind,
-    /// Canoe patch radius, for canoe balls [m].
-    canoe: Option<f64>,
+    /// The moving elements' contact surfaces.
+    moving: Moving,
     /// Angle between a contact normal and z: 90 deg - opening/2 [rad].
     alpha: f64,
 }
@@ -160,7 +161,7 @@ fn check_coupling(
     } else {
         0.0
     };
-    let canoe = canoe_radius(c, r_groove, ctx)?;
+    let moving = moving(c, r_groove, groove, ctx)?;
     let opening = *c.opening_angle_deg.get_ref();
     if !(opening > 0.0 && opening < 180.0) {
         return Err(ctx.error(
@@ -183,7 +184,7 @@ fn check_coupling(
         r_groove,
         groove,
         seat,
-        canoe,
+        moving,
         alpha: (90.0 - opening / 2.0).to_radians(),
     })
 }
@@ -200,36 +201,70 @@ fn kinds(c: &CouplingFile) -> (GrooveKind, GrooveKind) {
     (c.groove, seat)
 }
 
-/// The canoe patch radius (`ball_shape = "canoe"`), checked; `None` for
-/// spherical balls. A patch in a gothic arch must be curved more than the
-/// flank (R_c < R_g), or the two do not touch at a point.
-fn canoe_radius(
+/// The moving element at each contact (`coupling.ball_shape`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Moving {
+    Sphere,
+    /// A canoe patch of this radius [m].
+    Canoe(f64),
+    /// A pin of the ball's radius across the fixed pin.
+    Pins,
+}
+
+/// The moving element, checked: a canoe needs `canoe_radius`, and in a
+/// gothic arch a patch curved more than the flank (R_c < R_g), or the two
+/// do not touch at a point; crossed pins need a fixed pin at every contact
+/// (a pin on a plane touches along a line).
+fn moving(
     c: &CouplingFile,
     r_groove: f64,
+    groove: GrooveKind,
     ctx: &ErrorContext,
-) -> Result<Option<f64>, SceneError> {
-    if c.ball_shape != Some(BallShape::Canoe) {
-        return Ok(None);
+) -> Result<Moving, SceneError> {
+    match c.ball_shape.unwrap_or_default() {
+        BallShape::Sphere => Ok(Moving::Sphere),
+        BallShape::Pins => {
+            let pins = GrooveKind::Cylinders;
+            if groove != pins || (c.arrangement == Arrangement::Kelvin) {
+                let why = if groove != pins {
+                    format!("groove = \"{}\"", groove_name(groove))
+                } else {
+                    "the Kelvin flat".to_string()
+                };
+                return Err(ctx.error(
+                    None,
+                    "coupling.ball_shape",
+                    format!(
+                        "crossed pins need a fixed pin at every contact (groove = \"cylinders\", \
+                         Maxwell): a moving pin on {why} does not touch at a point"
+                    ),
+                ));
+            }
+            Ok(Moving::Pins)
+        }
+        BallShape::Canoe => {
+            let Some(v) = &c.canoe_radius else {
+                return Err(ctx.error(
+                    None,
+                    "coupling.canoe_radius",
+                    "missing: ball_shape = \"canoe\" needs the patch radius `canoe_radius`",
+                ));
+            };
+            let rc = ctx.positive(v, "coupling.canoe_radius", "a length in m")?;
+            if r_groove > 0.0 && rc >= r_groove {
+                return Err(ctx.error(
+                    Some(&v.span()),
+                    "coupling.canoe_radius",
+                    format!(
+                        "{rc} m must be smaller than groove_radius {r_groove} m: a canoe patch in \
+                         a gothic arch touches it at a point only if the patch is curved more \
+                         than the flank"
+                    ),
+                ));
+            }
+            Ok(Moving::Canoe(rc))
+        }
     }
-    let Some(v) = &c.canoe_radius else {
-        return Err(ctx.error(
-            None,
-            "coupling.canoe_radius",
-            "missing: ball_shape = \"canoe\" needs the patch radius `canoe_radius`",
-        ));
-    };
-    let rc = ctx.positive(v, "coupling.canoe_radius", "a length in m")?;
-    if r_groove > 0.0 && rc >= r_groove {
-        return Err(ctx.error(
-            Some(&v.span()),
-            "coupling.canoe_radius",
-            format!(
-                "{rc} m must be smaller than groove_radius {r_groove} m: a canoe patch in a \
-                 gothic arch touches it at a point only if the patch is curved more than the flank"
-            ),
-        ));
-    }
-    Ok(Some(rc))
 }
 
 /// Centres of balls 1, 2, 3 on the circle of `diameter`, at [`BALL_AZIMUTHS_DEG`].
@@ -320,6 +355,7 @@ fn surface(c: &CouplingFile, dims: &Dimensions, k: &ContactSpec, ck: &Vector3<f6
         support_compliance: c.support_compliance.clone(),
         moving_centre: None,
         moving_radius: None,
+        moving_direction: None,
     };
     let kind = match k.role {
         Role::Flat => GrooveKind::Planes,
@@ -349,9 +385,19 @@ fn surface(c: &CouplingFile, dims: &Dimensions, k: &ContactSpec, ck: &Vector3<f6
             s.radius = length(dims.r_groove);
         }
     }
-    if let Some(rc) = dims.canoe {
-        s.moving_centre = arr(ck + n * (rc - r_ball));
-        s.moving_radius = length(rc);
+    match dims.moving {
+        Moving::Sphere => {}
+        Moving::Canoe(rc) => {
+            s.moving_centre = arr(ck + n * (rc - r_ball));
+            s.moving_radius = length(rc);
+        }
+        Moving::Pins => {
+            // A pin of the ball's radius touching at c - r n: its axis
+            // passes through c, across the fixed pin (crossed at 90 deg).
+            s.moving_centre = arr(*ck);
+            s.moving_radius = length(r_ball);
+            s.moving_direction = arr(n.cross(&k.axis).normalize());
+        }
     }
     s
 }

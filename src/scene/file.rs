@@ -121,6 +121,9 @@ pub enum BallShape {
     /// Canoe balls: each contact surface a spherical patch of
     /// `canoe_radius`, placed where a ball of `ball_diameter` would touch.
     Canoe,
+    /// Crossed pins: at each contact a pin of `ball_diameter` on the moving
+    /// half, across the groove's pin (needs groove = "cylinders").
+    Pins,
 }
 
 /// High-level coupling description (lengths in metres).
@@ -200,7 +203,8 @@ impl SurfaceKind {
 /// `direction`, `radius`; sphere: `centre`, `radius`. `moving_centre` and
 /// `moving_radius` (both or neither) give the moving element's own
 /// spherical patch at this contact (a canoe ball's face) instead of the
-/// ball's sphere.
+/// ball's sphere; with `moving_direction` too, a moving pin whose axis
+/// passes through `moving_centre` (crossed pins).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SurfaceFile {
@@ -232,6 +236,10 @@ pub struct SurfaceFile {
     /// Radius of curvature of that patch [m].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub moving_radius: Option<Spanned<f64>>,
+    /// Makes the patch a pin (crossed pins): its axis direction; the axis
+    /// passes through `moving_centre`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub moving_direction: Option<Spanned<Numbers>>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -62,13 +62,17 @@ pub enum SurfaceGeometry {
 
 /// The moving element's own surface at one contact, when it is not the
 /// ball's sphere: a spherical patch of `radius` centred at `centre` (body
-/// frame), e.g. one face of a canoe ball.
+/// frame), e.g. one face of a canoe ball; or, with an `axis`, a pin of
+/// `radius` about the line through `centre` along the unit `axis` (crossed
+/// pins).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MovingPatch {
-    /// Centre of curvature in the body frame [m].
+    /// Centre of curvature (a point of the axis for a pin), body frame [m].
     pub centre: Vector3<f64>,
     /// Radius of curvature [m].
     pub radius: f64,
+    /// A pin's unit axis direction in the body frame; `None`: a sphere.
+    pub axis: Option<Vector3<f64>>,
 }
 
 /// A fixed surface serving one moving ball: one contact.

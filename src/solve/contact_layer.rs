@@ -14,14 +14,14 @@
 //! of the increment, (F_n,committed + F_n)/2 (midpoint rule: second order in
 //! the increment, where K_t at the end force would be first order). K_t is
 //! Mindlin's 2x2 elliptical stiffness in the tangent plane, its major axis
-//! along the pin for a sphere-cylinder contact and across the groove for a
-//! sphere-groove one (`contact::mindlin`).
+//! the contact's (`assembly::Contact::major_axis`: along the pin for a
+//! sphere-cylinder contact, across the groove for a sphere-groove one)
+//! projected into the plane (`contact::mindlin`).
 
 use nalgebra::{Matrix3, Vector3};
 
 use crate::assembly::{BodyPose, ContactGeometry, Coupling};
 use crate::contact::{Friction, SlipState, TangentialInput, TangentialResponse, TangentialState};
-use crate::scene::SurfaceGeometry;
 
 /// One contact evaluated at a trial pose.
 #[derive(Debug, Clone)]
@@ -206,12 +206,7 @@ pub fn evaluate_into(
         f_mid,
         a_mid,
     } = *normal;
-    let major_axis = match contact.surface {
-        SurfaceGeometry::Cylinder { direction, .. } => direction,
-        // A ball in a concave flank: the ellipse is long across the groove.
-        SurfaceGeometry::ConcaveCylinder { direction, .. } => direction.cross(&g.normal),
-        _ => Vector3::zeros(), // circular: K_t is isotropic
-    };
+    let major_axis = contact.major_axis;
     let law = &contact.law;
     let (principal, kt, dkt) =
         law.midpoint_stiffness(f_mid, a_mid, &g.normal, &major_axis, tangent);

@@ -18,6 +18,7 @@ mod ball_ball;
 mod ball_groove;
 mod ball_pin;
 mod ball_plane;
+mod pin_pin;
 
 use nalgebra::Vector3;
 use parry3d_f64::math::{Pose, Rotation, Vector};
@@ -71,6 +72,38 @@ pub fn contact(surface: &SurfaceGeometry, centre: &Vector3<f64>, radius: f64) ->
             direction,
             radius: groove,
         } => ball_groove::contact(centre, radius, axis_point, direction, *groove),
+    }
+}
+
+/// The geometry of a moving pin of `radius` about the line through
+/// `axis_point` along the unit `direction` (world coordinates) against the
+/// fixed `surface`: a fixed pin crossing it. Other fixed surfaces do not
+/// touch a pin at a point (the assembly refuses them): their gap is NaN.
+#[inline]
+pub fn pin_contact(
+    surface: &SurfaceGeometry,
+    axis_point: &Vector3<f64>,
+    direction: &Vector3<f64>,
+    radius: f64,
+) -> ContactGeometry {
+    match surface {
+        SurfaceGeometry::Cylinder {
+            axis_point: fixed,
+            direction: fixed_direction,
+            radius: fixed_radius,
+        } => pin_pin::contact(
+            axis_point,
+            direction,
+            radius,
+            fixed,
+            fixed_direction,
+            *fixed_radius,
+        ),
+        _ => ContactGeometry {
+            gap: f64::NAN,
+            normal: Vector3::zeros(),
+            point: *axis_point,
+        },
     }
 }
 

@@ -116,10 +116,22 @@ fn surface(s: &SurfaceFile, i: usize, fx: &Fields, n_balls: usize) -> Result<Sur
 fn moving_patch(s: &SurfaceFile, i: usize, fx: &Fields) -> Result<Option<MovingPatch>, SceneError> {
     let field = |k: &str| format!("surfaces[{}].{k}", i + 1);
     match (&s.moving_centre, &s.moving_radius) {
-        (None, None) => Ok(None),
+        (None, None) => match &s.moving_direction {
+            None => Ok(None),
+            Some(d) => Err(fx.ctx.error(
+                Some(&d.span()),
+                field("moving_centre"),
+                "missing: a moving pin needs `moving_centre` (a point of its axis) and \
+                 `moving_radius`",
+            )),
+        },
         (Some(c), Some(r)) => Ok(Some(MovingPatch {
             centre: fx.finite(c, &field("moving_centre"))?,
             radius: fx.positive(r, &field("moving_radius"), "m")?,
+            axis: match &s.moving_direction {
+                Some(d) => Some(fx.unit(d, &field("moving_direction"))?),
+                None => None,
+            },
         })),
         (Some(c), None) => Err(fx.ctx.error(
             Some(&c.span()),

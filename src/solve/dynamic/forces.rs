@@ -115,7 +115,8 @@ pub fn contact_force(
     }
     let n = eval.geometry.normal;
     let p = eval.geometry.point;
-    let centre = motion.pose.apply(&coupling.contacts[i].centre);
+    // The moving centre of curvature on the contact normal (a pin's foot).
+    let centre = p + n * coupling.contacts[i].radius;
     // Normal dashpot (Tsuji et al. 1992).
     let mut f_n = fh;
     if damping.normal > 0.0 {
