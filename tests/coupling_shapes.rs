@@ -50,7 +50,7 @@ fn a_ball_in_a_gothic_arch_has_the_closed_form_radii() {
     assert!((radii[0] / r - 1.0).abs() < 1e-12, "{radii:?}");
     assert!((radii[1] / (r * rg / (rg - r)) - 1.0).abs() < 1e-12, "{radii:?}");
     // In scene 08 every contact is that pair, the long axis across the groove.
-    let c = load("08_maxwell_gothic_arch_steel.toml");
+    let c = load("maxwell_gothic_arch_steel.toml");
     for k in &c.contacts {
         assert_eq!(k.shape, ContactShape::SphereGroove);
         let groove = match k.surface {
@@ -69,7 +69,7 @@ fn a_canoe_coupling_is_stiffer_by_the_hertz_factor() {
     // the same footprint (same contact points and normals, so the same
     // forces) stiffens every principal direction by (0.25 / 0.005)^(1/3).
     let ball = principal(&load("01_maxwell_vgroove_steel.toml"));
-    let canoe = principal(&load("09_maxwell_canoe_steel.toml"));
+    let canoe = principal(&load("maxwell_canoe_steel.toml"));
     let factor = (0.25f64 / 0.005).cbrt();
     for (k, (b, c)) in ball.iter().zip(&canoe).enumerate() {
         assert!(
@@ -112,8 +112,9 @@ fn crossed_equal_pins_at_right_angles_seat_like_a_ball_on_planes() {
 #[test]
 fn expanded_new_couplings_load_back_to_the_same_results() {
     for name in [
-        "08_maxwell_gothic_arch_steel.toml",
-        "09_maxwell_canoe_steel.toml",
+        "maxwell_gothic_arch_steel.toml",
+        "maxwell_canoe_steel.toml",
+        "maxwell_crossed_pins_steel.toml",
     ] {
         let path = scene(name);
         let (ok, explicit, err) = kinrepro(&["expand", path.to_str().unwrap()]);
@@ -146,7 +147,7 @@ fn expanded_new_couplings_load_back_to_the_same_results() {
 
 #[test]
 fn couplings_that_cannot_be_built_say_why() {
-    let text = std::fs::read_to_string(scene("08_maxwell_gothic_arch_steel.toml")).unwrap();
+    let text = std::fs::read_to_string(scene("maxwell_gothic_arch_steel.toml")).unwrap();
     let cases = [
         (
             text.replace("groove_radius = 0.0055", "groove_radius = 0.0045"),
