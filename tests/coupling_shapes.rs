@@ -18,7 +18,11 @@ use kinrepro::solve::{SolverOptions, nominal_mu};
 fn scene01_with(edits: &[(&str, &str)]) -> Coupling {
     let mut text = std::fs::read_to_string(scene("01_maxwell_vgroove_steel.toml")).unwrap();
     for (old, new) in edits {
-        let line = text.lines().find(|l| l.starts_with(old)).unwrap().to_string();
+        let line = text
+            .lines()
+            .find(|l| l.starts_with(old))
+            .unwrap()
+            .to_string();
         text = text.replace(&line, new);
     }
     Coupling::new(&Scene::parse(&text, "edited 01").unwrap()).unwrap()
@@ -43,12 +47,20 @@ fn a_ball_in_a_gothic_arch_has_the_closed_form_radii() {
     // curvature -1/R_g across and 0 along).
     let steel = Material::builtin("steel").unwrap();
     let (r, rg) = (0.005, 0.0055);
-    let pair =
-        ContactPair::from_shape(ContactShape::SphereGroove, r, Some(rg), steel.clone(), steel)
-            .unwrap();
+    let pair = ContactPair::from_shape(
+        ContactShape::SphereGroove,
+        r,
+        Some(rg),
+        steel.clone(),
+        steel,
+    )
+    .unwrap();
     let radii = pair.relative_radii().unwrap();
     assert!((radii[0] / r - 1.0).abs() < 1e-12, "{radii:?}");
-    assert!((radii[1] / (r * rg / (rg - r)) - 1.0).abs() < 1e-12, "{radii:?}");
+    assert!(
+        (radii[1] / (r * rg / (rg - r)) - 1.0).abs() < 1e-12,
+        "{radii:?}"
+    );
     // In scene 08 every contact is that pair, the long axis across the groove.
     let c = load("maxwell_gothic_arch_steel.toml");
     for k in &c.contacts {
@@ -96,9 +108,15 @@ fn crossed_equal_pins_at_right_angles_seat_like_a_ball_on_planes() {
     for k in &pins.contacts {
         assert_eq!(k.shape, ContactShape::CrossedCylinders);
         let radii = k.law.hertz.radii;
-        assert!(radii.iter().all(|r| (r / 0.005 - 1.0).abs() < 1e-12), "{radii:?}");
+        assert!(
+            radii.iter().all(|r| (r / 0.005 - 1.0).abs() < 1e-12),
+            "{radii:?}"
+        );
     }
-    for mu in [[0.45, 0.55, 0.5, 0.47, 0.53, 0.5], [0.55, 0.45, 0.52, 0.5, 0.46, 0.54]] {
+    for mu in [
+        [0.45, 0.55, 0.5, 0.47, 0.53, 0.5],
+        [0.55, 0.45, 0.52, 0.5, 0.46, 0.54],
+    ] {
         let a = seat(&pins, &mu, &SolverOptions::default()).unwrap();
         let b = seat(&balls, &mu, &SolverOptions::default()).unwrap();
         let (da, db) = (a.pose.translation, b.pose.translation);
@@ -138,9 +156,19 @@ fn expanded_new_couplings_load_back_to_the_same_results() {
             doc["variants"][0]["points"][0]["sigma"].clone()
         };
         let (a, b) = (sigma(&path), sigma(&written));
-        for key in ["x_nm", "y_nm", "z_nm", "phi_x_nrad", "phi_y_nrad", "phi_z_nrad"] {
+        for key in [
+            "x_nm",
+            "y_nm",
+            "z_nm",
+            "phi_x_nrad",
+            "phi_y_nrad",
+            "phi_z_nrad",
+        ] {
             let (x, y) = (a[key].as_f64().unwrap(), b[key].as_f64().unwrap());
-            assert!(x > 0.0 && (x / y - 1.0).abs() < 1e-12, "{name} {key}: {x} vs {y}");
+            assert!(
+                x > 0.0 && (x / y - 1.0).abs() < 1e-12,
+                "{name} {key}: {x} vs {y}"
+            );
         }
     }
 }
@@ -158,15 +186,24 @@ fn couplings_that_cannot_be_built_say_why() {
             "needs the flank radius `groove_radius`",
         ),
         (
-            text.replace("groove = \"gothic-arch\"", "groove = \"gothic-arch\"\nball_shape = \"canoe\"\ncanoe_radius = 0.25"),
+            text.replace(
+                "groove = \"gothic-arch\"",
+                "groove = \"gothic-arch\"\nball_shape = \"canoe\"\ncanoe_radius = 0.25",
+            ),
             "must be smaller than groove_radius",
         ),
         (
-            text.replace("groove = \"gothic-arch\"", "groove = \"planes\"\nball_shape = \"pins\""),
+            text.replace(
+                "groove = \"gothic-arch\"",
+                "groove = \"planes\"\nball_shape = \"pins\"",
+            ),
             "crossed pins need a fixed pin at every contact",
         ),
         (
-            text.replace("groove = \"gothic-arch\"", "groove = \"gothic-arch\"\nball_shape = \"canoe\""),
+            text.replace(
+                "groove = \"gothic-arch\"",
+                "groove = \"gothic-arch\"\nball_shape = \"canoe\"",
+            ),
             "needs the patch radius `canoe_radius`",
         ),
     ];

@@ -228,11 +228,14 @@ fn redundant_contacts_match_brute_force_rank_tests() {
     let c01 = kinrepro::error::read_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
     let c06 = kinrepro::error::read_coupling(&scene_path("06_kelvin_steel.toml")).unwrap();
     let with = |base: &Coupling, extra: &[(usize, usize)]| {
-        // (copy of contact, assigned to ball)
+        // (copy of contact, assigned to ball: the ball's sphere is its
+        // moving surface)
         let mut c = base.clone();
         for &(k, ball) in extra {
             let mut e = c.contacts[k].clone();
             e.ball = ball;
+            e.centre = c.balls[ball].centre;
+            e.radius = c.balls[ball].radius;
             c.contacts.push(e);
         }
         c
