@@ -460,7 +460,7 @@ fn reseat(
     match opts.method {
         _ if opts.variation.preload => {
             let mut c = setup.coupling().clone();
-            c.scene.preload = sample.preload;
+            c.scene.preload = sample.preload.clone();
             seat(&c)
         }
         Method::QuasiStatic(o) => seat_in(setup, &sample.mu, &o, ws),
