@@ -248,6 +248,9 @@ pub fn check_options(coupling: &Coupling, opts: &StudyOptions) -> Result<(), Run
              (preload_offset, preload_tilt)",
         );
     }
+    if var.preload && !coupling.scene.preload.forces.iter().any(|f| f.varies()) {
+        return err("--vary preload: the preload is only the weight, which is not varied");
+    }
     if var.tolerances && !bounds.tolerances_vary() {
         return err(
             "--vary tolerances: the scene's [variation] table gives no tolerance \
