@@ -108,7 +108,7 @@ fn entry(f: &PreloadForceFile, at: &str, fx: &Fields) -> Result<PreloadForce, Sc
             if length <= 0.0 {
                 return Err(fx.ctx.error(
                     Some(&l.span()),
-                    &format!("{at}.free_length"),
+                    format!("{at}.free_length"),
                     format!(
                         "{free_length} m is not longer than force / stiffness = {} m: the \
                          spring cannot give {force} N",
@@ -135,7 +135,7 @@ fn entry(f: &PreloadForceFile, at: &str, fx: &Fields) -> Result<PreloadForce, Sc
 fn pair(fx: &Fields, v: &Spanned<f64>, at: &str, given: &str, missing: &str) -> SceneError {
     fx.ctx.error(
         Some(&v.span()),
-        &format!("{at}.{given}"),
+        format!("{at}.{given}"),
         format!("a spring needs both stiffness and free_length; {missing} is missing"),
     )
 }
