@@ -312,7 +312,7 @@ fn slip_envelope_is_bracketed_by_full_load_paths() {
 fn off_centre_preload_shifts_the_frictionless_forces_as_statics_says() {
     let mut scene = load("01_maxwell_vgroove_steel.toml").scene;
     let offset = Vector3::new(0.006, -0.004, 0.0);
-    scene.preload.point = offset;
+    scene.preload.forces[0].point = offset;
     let c = Coupling::new(&scene).unwrap();
     let s = seat(&c, &[0.0; 6], &SolverOptions::default()).unwrap();
     let hand = statics(

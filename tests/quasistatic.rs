@@ -88,7 +88,7 @@ fn reported_forces_balance_the_preload() {
     ] {
         let c = load(name);
         let s = seat(&c, &mu, &SolverOptions::default()).unwrap();
-        let pre = &c.scene.preload;
+        let pre = &c.scene.preload.forces[0];
         let fp = pre.direction * pre.force;
         let pp = s.pose.apply(&pre.point);
         let mut f = fp;
@@ -120,7 +120,7 @@ fn reported_forces_balance_the_preload() {
 /// geometry, Hertz force, Newton with a finite-difference Jacobian.
 fn all_sliding_equilibrium(c: &Coupling, mu_d: &[f64], start: &BodyPose) -> BodyPose {
     let residual = |pose: &BodyPose| -> Vector6<f64> {
-        let pre = &c.scene.preload;
+        let pre = &c.scene.preload.forces[0];
         let fp = pre.direction * pre.force;
         let pp = pose.apply(&pre.point);
         let mut r = Vector6::zeros();

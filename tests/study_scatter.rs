@@ -48,11 +48,11 @@ fn preload_offset_changes_frictionless_forces_as_statics_says() {
     // Row (1, 0, 0.5, 0.5): offset (+5 mm, -3 mm), no tilt.
     let sample = var.sample(&c, &[1.0, 0.0, 0.5, 0.5]);
     let (ex, ey) = (5.0e-3, -3.0e-3);
-    assert!((sample.preload.point - Vector3::new(ex, ey, 0.0)).norm() < 1e-15);
-    assert!((sample.preload.direction + Vector3::z()).norm() < 1e-15);
+    assert!((sample.preload.forces[0].point - Vector3::new(ex, ey, 0.0)).norm() < 1e-15);
+    assert!((sample.preload.forces[0].direction + Vector3::z()).norm() < 1e-15);
     assert_eq!(sample.physical, vec![ex, ey, 0.0, 0.0]);
     // A tilt row turns the direction by the rotation vector (t_x, t_y, 0).
-    let tilted = var.sample(&c, &[0.5, 0.5, 1.0, 0.25]).preload.direction;
+    let tilted = var.sample(&c, &[0.5, 0.5, 1.0, 0.25]).preload.forces[0].direction;
     let expect =
         nalgebra::UnitQuaternion::from_scaled_axis(Vector3::new(0.02, -0.01, 0.0)) * -Vector3::z();
     assert!((tilted - expect).norm() < 1e-15);

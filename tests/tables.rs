@@ -208,8 +208,8 @@ fn every_input_name_reads_back_to_its_input() {
         all.extend([Input::Mu(k), Input::BallDiameter(k)]);
         all.extend([Input::SurfaceNormal(k), Input::SurfaceTilt(k)]);
         all.extend((0..3).flat_map(|a| [Input::BallPosition(k, a), Input::GroovePosition(k, a)]));
+        all.extend((0..2).flat_map(|a| [Input::PreloadOffset(k, a), Input::PreloadTilt(k, a)]));
     }
-    all.extend((0..2).flat_map(|a| [Input::PreloadOffset(a), Input::PreloadTilt(a)]));
     all.extend((0..6).map(Input::Start));
     let mut names: Vec<String> = all.iter().map(Input::name).collect();
     for (i, n) in all.iter().zip(&names) {

@@ -22,7 +22,8 @@
 //! closed, positive definite. K_i is taken from the contact layer
 //! ([`crate::solve::contact_layer::evaluate`]) at the seated pose with the
 //! at-rest states and zero increment, which gives exactly these tangents.
-//! Left out: the geometric (load) stiffness of the preload and contact
+//! Preload springs (`[[preload.forces]] stiffness`) act in parallel: each
+//! adds k d d^T at its point like a contact. Left out: the geometric (load) stiffness of the preload and contact
 //! forces moving with the body, of relative size F/(k_n R) ~ 1e-4 for the
 //! bundled scenes (the finite-difference test through the nonlinear solver,
 //! which contains it, agrees to better than 1 %).
@@ -39,6 +40,7 @@ use nalgebra::{Matrix3, Matrix6, SymmetricEigen, Vector3};
 
 use crate::assembly::{BodyPose, Coupling};
 use crate::solve::contact_layer::evaluate;
+use crate::solve::preload_forces::applied;
 use crate::solve::quasistatic::at_rest_states;
 use crate::solve::{Seating, SolveError, frictions};
 
@@ -61,6 +63,9 @@ pub struct ContactSpring {
 pub struct CouplingStiffness {
     pub pose: BodyPose,
     pub springs: Vec<ContactSpring>,
+    /// The preload springs in parallel (`[[preload.forces]] stiffness`):
+    /// each point and its tangent -k d d^T (empty without springs).
+    pub preload_springs: Vec<(Vector3<f64>, Matrix3<f64>)>,
 }
 
 /// Principal stiffnesses at a point.
@@ -101,7 +106,14 @@ impl CouplingStiffness {
                 }
             })
             .collect();
-        Ok(CouplingStiffness { pose, springs })
+        let preload_springs = applied(coupling, &pose, 1.0)
+            .filter_map(|a| a.stiffness.map(|k| (a.point, k)))
+            .collect();
+        Ok(CouplingStiffness {
+            pose,
+            springs,
+            preload_springs,
+        })
     }
 
     /// The 6x6 stiffness for a twist (v, w) about the world point `q`
@@ -109,13 +121,14 @@ impl CouplingStiffness {
     /// with the sign of a stiffness (positive definite): W = -K x.
     pub fn matrix_at(&self, q: &Vector3<f64>) -> Matrix6<f64> {
         let mut k = Matrix6::zeros();
-        for s in &self.springs {
-            let ki = -(s.tangent + s.tangent.transpose()) * 0.5;
+        let contacts = self.springs.iter().map(|s| (s.point, s.tangent));
+        for (point, tangent) in contacts.chain(self.preload_springs.iter().copied()) {
+            let ki = -(tangent + tangent.transpose()) * 0.5;
             let mut t = nalgebra::Matrix3x6::zeros();
             t.fixed_view_mut::<3, 3>(0, 0)
                 .copy_from(&Matrix3::identity());
             t.fixed_view_mut::<3, 3>(0, 3)
-                .copy_from(&(-(s.point - q).cross_matrix()));
+                .copy_from(&(-(point - q).cross_matrix()));
             k += t.transpose() * ki * t;
         }
         (k + k.transpose()) * 0.5

@@ -216,15 +216,35 @@ pub fn frictionless_preload_forces(coupling: &Coupling) -> Vec<f64> {
     let rows = coupling.constraint_rows(&pose);
     let m = rows.len();
     let a = DMatrix::from_fn(6, m, |r, c| rows[c][r]);
-    let p = &coupling.scene.preload;
-    let f = p.direction * p.force;
-    let point = pose.apply(&p.point);
-    let mom = point.cross(&f);
+    let (f, mom) = preload_wrench(coupling, &pose, None);
     let rhs = -Vector6::new(f.x, f.y, f.z, mom.x, mom.y, mom.z);
     let x = a
         .lu()
         .solve(&nalgebra::DVector::from_column_slice(rhs.as_slice()));
     x.map_or_else(|| vec![0.0; m], |x| x.as_slice().to_vec())
+}
+
+/// The preload's full-load force and moment about the origin in the
+/// touching pose `pose` (each spring gives its `force` there); with `unit`,
+/// per unit of [`crate::scene::Preload::scale`] and about that point.
+fn preload_wrench(
+    coupling: &Coupling,
+    pose: &BodyPose,
+    unit: Option<Vector3<f64>>,
+) -> (Vector3<f64>, Vector3<f64>) {
+    let p = &coupling.scene.preload;
+    let scale = p.scale();
+    let (mut f, mut m) = (Vector3::zeros(), Vector3::zeros());
+    for k in &p.forces {
+        let point = pose.apply(&k.point);
+        let fk = match unit {
+            None => k.direction * k.force,
+            Some(_) => k.direction * (k.force / scale),
+        };
+        f += fk;
+        m += (point - unit.unwrap_or_else(Vector3::zeros)).cross(&fk);
+    }
+    (f, m)
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -259,10 +279,10 @@ pub fn friction_limit(coupling: &Coupling) -> FrictionLimit {
     let pose = coupling.touching_pose;
     let m = coupling.contacts.len();
     let geoms: Vec<_> = (0..m).map(|i| coupling.geometry(i, &pose)).collect();
-    let p = &coupling.scene.preload;
-    let point = pose.apply(&p.point);
-    let target_f = -p.direction;
-    let target_m = -(point - o).cross(&p.direction) / l;
+    // The preload per unit of its scale (a single force: its direction).
+    let (target_f, target_m) = preload_wrench(coupling, &pose, Some(o));
+    let target_f = -target_f;
+    let target_m = -target_m / l;
     let feasible = |open: usize, mu: f64| -> bool {
         let mut lp = Problem::new(OptimizationDirection::Minimize);
         let mut rows: [Vec<(microlp::Variable, f64)>; 6] = Default::default();

@@ -198,7 +198,7 @@ fn nominal(c: &Coupling, seating: &Seating, mu: &[f64]) -> Result<Nominal, EvalE
             .reduce(f64::min),
         friction_limit: limit,
         friction_limit_margin: limit.map(|l| l - (f.mu_static + f.spread)),
-        approach_m: d.dot(&c.scene.preload.direction),
+        approach_m: d.dot(&c.scene.preload.resultant_direction()),
         max_contact_approach_m: seating
             .contacts
             .iter()

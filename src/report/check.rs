@@ -5,6 +5,7 @@ use std::fmt::Write;
 use crate::assembly::Coupling;
 use crate::assembly::constraint::{analyse, friction_limit, frictionless_preload_forces};
 use crate::contact::stress::contact_stress;
+use crate::report::preload;
 use crate::report::table::{Table, cells};
 
 /// What the friction limit means for this scene, given whether friction
@@ -49,19 +50,14 @@ pub fn check_summary(c: &Coupling) -> String {
     let _ = writeln!(out, "  friction limit for seating: {limit_text}");
     let _ = writeln!(
         out,
-        "  preload: {:.4} N along ({:.3}, {:.3}, {:.3}) at ({:.4}, {:.4}, {:.4}) m; mu_s = {} +- {} (uniform), mu_d/mu_s = {}, {:?} tangential law",
-        s.preload.force,
-        s.preload.direction.x,
-        s.preload.direction.y,
-        s.preload.direction.z,
-        s.preload.point.x,
-        s.preload.point.y,
-        s.preload.point.z,
+        "  preload: {}; mu_s = {} +- {} (uniform), mu_d/mu_s = {}, {:?} tangential law",
+        preload::summary(&s.preload),
         s.friction.mu_static,
         s.friction.spread,
         s.friction.dynamic_ratio,
         s.friction.tangential_law
     );
+    out.push_str(&preload::force_lines(&s.preload, "    "));
     contact_rows(&mut out, c);
     out
 }

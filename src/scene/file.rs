@@ -245,8 +245,10 @@ pub struct SurfaceFile {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PreloadFile {
-    /// Total preload [N], ramped from 0.
-    pub force: Spanned<f64>,
+    /// Total preload [N], ramped from 0 (the single central force; absent
+    /// when `forces` gives the preload, docs/scenes.md).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub force: Option<Spanned<f64>>,
     /// Point of application in the moving half [m] (default: the centre).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub point: Option<Spanned<Numbers>>,
@@ -257,6 +259,36 @@ pub struct PreloadFile {
     /// the time base of the slip velocity of the quasi-static solver.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ramp_time: Option<Spanned<f64>>,
+    /// Adds the weight of the moving half (mass from `mass` or `[dynamics]`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gravity: Option<Spanned<bool>>,
+    /// Mass of the moving half for `gravity` [kg].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mass: Option<Spanned<f64>>,
+    /// Centre of mass of the moving half for `gravity` [m] (default: the origin).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub centre_of_mass: Option<Spanned<Numbers>>,
+    /// Several forces (`[[preload.forces]]`) instead of the single `force`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub forces: Vec<PreloadForceFile>,
+}
+
+/// `[[preload.forces]]`: one force on the moving half, constant or a spring.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PreloadForceFile {
+    /// Force at full load in the touching pose [N].
+    pub force: Spanned<f64>,
+    /// Point of application in the moving half [m].
+    pub point: Spanned<Numbers>,
+    /// Direction (normalised).
+    pub direction: Spanned<Numbers>,
+    /// Spring stiffness along `direction` [N/m] (with `free_length`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stiffness: Option<Spanned<f64>>,
+    /// Free length of the spring [m] (with `stiffness`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub free_length: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]

@@ -11,6 +11,7 @@ pub mod error;
 pub mod expand;
 pub mod file;
 pub mod plausible;
+pub mod preload;
 pub mod resolve;
 
 use std::path::Path;
@@ -23,6 +24,7 @@ use crate::material::Material;
 use error::ErrorContext;
 pub use error::SceneError;
 pub use file::{Arrangement, GrooveKind, SceneFile};
+pub use preload::{ForceLaw, Preload, PreloadForce};
 
 /// A moving ball (body frame = world frame in the touching pose).
 #[derive(Debug, Clone, PartialEq)]
@@ -87,19 +89,6 @@ pub struct Surface {
     pub support_compliance: f64,
     /// The moving element's surface at this contact; `None`: the ball's sphere.
     pub moving: Option<MovingPatch>,
-}
-
-/// The preload on the moving half.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Preload {
-    /// Total force [N].
-    pub force: f64,
-    /// Point of application [m].
-    pub point: Vector3<f64>,
-    /// Unit direction.
-    pub direction: Vector3<f64>,
-    /// Duration of the ramp from 0 to `force` [s] (`[preload] ramp_time`).
-    pub ramp_time: f64,
 }
 
 /// Default `[preload] ramp_time` [s]: the end time of a static load step in

@@ -174,14 +174,20 @@ pub fn check_explicit(
             ));
         }
     }
-    let force = *f.preload.force.get_ref();
-    if force > PRELOAD_MAX {
-        return Err(too_large(
-            ctx,
-            Some(&f.preload.force.span()),
-            "preload.force",
-            format!("{force} N is an implausibly large preload (limit {PRELOAD_MAX} N)"),
-        ));
+    let p = &f.preload;
+    let listed = p.forces.iter().enumerate();
+    let forces = listed.map(|(i, e)| (&e.force, format!("preload.forces[{}].force", i + 1)));
+    let single = p.force.iter().map(|v| (v, "preload.force".to_string()));
+    for (v, field) in single.chain(forces) {
+        let force = *v.get_ref();
+        if force > PRELOAD_MAX {
+            return Err(too_large(
+                ctx,
+                Some(&v.span()),
+                &field,
+                format!("{force} N is an implausibly large preload (limit {PRELOAD_MAX} N)"),
+            ));
+        }
     }
     Ok(())
 }

@@ -7,6 +7,7 @@
 
 pub mod contact_layer;
 pub mod dynamic;
+pub mod preload_forces;
 pub mod quasistatic;
 
 use nalgebra::Vector3;

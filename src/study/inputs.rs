@@ -15,10 +15,10 @@ use crate::scene::{Scene, SurfaceGeometry};
 pub enum Input {
     /// Static coefficient of contact k (0-based).
     Mu(usize),
-    /// Preload point offset along x (0) or y (1).
-    PreloadOffset(usize),
-    /// Preload direction tilt about x (0) or y (1).
-    PreloadTilt(usize),
+    /// Point offset of preload force f (0-based) along x (0) or y (1).
+    PreloadOffset(usize, usize),
+    /// Direction tilt of preload force f about x (0) or y (1).
+    PreloadTilt(usize, usize),
     /// Start pose: offset x, y, z (0-2), tilt x, y, z (3-5).
     Start(usize),
     /// Diameter error of ball b.
@@ -47,7 +47,7 @@ impl Input {
     pub fn kind(&self) -> InputKind {
         match self {
             Input::Mu(_) => InputKind::Friction,
-            Input::PreloadOffset(_) | Input::PreloadTilt(_) => InputKind::Preload,
+            Input::PreloadOffset(..) | Input::PreloadTilt(..) => InputKind::Preload,
             Input::Start(_) => InputKind::Start,
             _ => InputKind::Tolerance,
         }
@@ -63,8 +63,8 @@ impl Input {
         let axis = Dof::axis;
         match *self {
             Input::Mu(k) => format!("mu_{}", k + 1),
-            Input::PreloadOffset(a) => format!("preload_{}_m", axis(a)),
-            Input::PreloadTilt(a) => format!("preload_tilt_{}_rad", axis(a)),
+            Input::PreloadOffset(f, a) => format!("preload{}_{}_m", force_tag(f), axis(a)),
+            Input::PreloadTilt(f, a) => format!("preload{}_tilt_{}_rad", force_tag(f), axis(a)),
             Input::Start(j) if j < 3 => format!("offset_{}_m", axis(j)),
             Input::Start(j) => format!("tilt_{}_rad", axis(j - 3)),
             Input::BallDiameter(b) => format!("ball_{}_diameter_m", b + 1),
@@ -86,9 +86,18 @@ impl Input {
             .into_iter()
             .chain([Input::SurfaceNormal(k), Input::SurfaceTilt(k)])
             .chain(axes(Input::BallPosition).chain(axes(Input::GroovePosition)))
-            .chain((0..2).flat_map(|a| [Input::PreloadOffset(a), Input::PreloadTilt(a)]))
+            .chain((0..2).flat_map(|a| [Input::PreloadOffset(k, a), Input::PreloadTilt(k, a)]))
             .chain((0..6).map(Input::Start))
             .find(|i| i.name() == name)
+    }
+}
+
+/// The force number in a preload input's name: none for the first force
+/// (the single preload's names, `preload_x_m`), `_2`, `_3`, ... after it.
+fn force_tag(f: usize) -> String {
+    match f {
+        0 => String::new(),
+        _ => format!("_{}", f + 1),
     }
 }
 

@@ -14,6 +14,7 @@ use super::DesignSpec;
 use super::inputs::Input;
 use super::runner::StudyOptions;
 use crate::assembly::Coupling;
+use crate::scene::{ForceLaw, PreloadForce};
 
 /// Version of the output schema (docs/output.md). 2: the clocking about z evaluated, JSON
 /// records with `inputs_si` and `design_u`, provenance and fingerprint.
@@ -48,12 +49,16 @@ pub struct Fingerprint {
     /// The sliding-coefficient reading (`switch` or `decay` with its coefficient).
     #[serde(default)]
     pub friction_law: String,
-    /// Preload force [N].
+    /// Preload force [N] (several forces: the magnitude of their resultant).
     pub preload_n: f64,
-    /// Preload point [m].
+    /// Preload point [m] (several forces: their force-weighted mean point).
     pub preload_point_m: [f64; 3],
-    /// Preload direction (unit vector).
+    /// Preload direction (unit vector; several forces: of their resultant).
     pub preload_direction: [f64; 3],
+    /// Every preload force, when the preload is not the single constant
+    /// force (`[[preload.forces]]`, `gravity`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub preload_forces: Vec<PreloadForceRecord>,
     /// Start-pose bounds (offset [m], tilt [rad]) when the start varies.
     pub start_bounds: Option<[[f64; 3]; 2]>,
 }
@@ -89,9 +94,16 @@ impl Fingerprint {
             dynamic_ratio: s.friction.dynamic_ratio,
             tangential_law: format!("{:?}", s.friction.tangential_law),
             friction_law: format!("{:?}", s.friction.law),
-            preload_n: p.force,
-            preload_point_m: p.point.into(),
-            preload_direction: p.direction.into(),
+            preload_n: match p.forces.as_slice() {
+                [one] => one.force,
+                _ => p.resultant().norm(),
+            },
+            preload_point_m: p.centre().into(),
+            preload_direction: p.resultant_direction().into(),
+            preload_forces: match p.is_single_constant() {
+                true => Vec::new(),
+                false => p.forces.iter().map(PreloadForceRecord::new).collect(),
+            },
             start_bounds: opts
                 .variation
                 .start
@@ -111,7 +123,7 @@ impl Fingerprint {
     /// Every field by name, as `first_difference` compares and prints them:
     /// the named settings before the scene content, so that a changed
     /// friction coefficient is named as such.
-    fn settings(&self) -> [(&'static str, String); 19] {
+    fn settings(&self) -> [(&'static str, String); 20] {
         [
             ("kinrepro_version", q(&self.kinrepro_version)),
             ("solver", q(&self.solver)),
@@ -129,10 +141,48 @@ impl Fingerprint {
             ("preload force", d(&self.preload_n)),
             ("preload point", d(&self.preload_point_m)),
             ("preload direction", d(&self.preload_direction)),
+            ("preload forces", d(&self.preload_forces)),
             ("start_bounds", d(&self.start_bounds)),
             ("scene name", q(&self.scene_name)),
             ("scene content", q(&self.scene_content)),
         ]
+    }
+}
+
+/// One preload force in the fingerprint (docs/output.md).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PreloadForceRecord {
+    /// `constant`, `spring` or `weight`.
+    pub law: String,
+    /// Magnitude at full load in the touching pose [N].
+    pub force_n: f64,
+    pub point_m: [f64; 3],
+    pub direction: [f64; 3],
+    /// Spring stiffness [N/m] and free length [m] (springs only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stiffness_n_per_m: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub free_length_m: Option<f64>,
+}
+
+impl PreloadForceRecord {
+    fn new(f: &PreloadForce) -> Self {
+        let (law, spring) = match f.law {
+            ForceLaw::Constant => ("constant", None),
+            ForceLaw::Spring {
+                stiffness,
+                free_length,
+            } => ("spring", Some((stiffness, free_length))),
+            ForceLaw::Weight => ("weight", None),
+        };
+        PreloadForceRecord {
+            law: law.to_string(),
+            force_n: f.force,
+            point_m: f.point.into(),
+            direction: f.direction.into(),
+            stiffness_n_per_m: spring.map(|s| s.0),
+            free_length_m: spring.map(|s| s.1),
+        }
     }
 }
 

@@ -248,6 +248,9 @@ pub fn check_options(coupling: &Coupling, opts: &StudyOptions) -> Result<(), Run
              (preload_offset, preload_tilt)",
         );
     }
+    if var.preload && !coupling.scene.preload.forces.iter().any(|f| f.varies()) {
+        return err("--vary preload: the preload is only the weight, which is not varied");
+    }
     if var.tolerances && !bounds.tolerances_vary() {
         return err(
             "--vary tolerances: the scene's [variation] table gives no tolerance \
@@ -460,7 +463,7 @@ fn reseat(
     match opts.method {
         _ if opts.variation.preload => {
             let mut c = setup.coupling().clone();
-            c.scene.preload = sample.preload;
+            c.scene.preload = sample.preload.clone();
             seat(&c)
         }
         Method::QuasiStatic(o) => seat_in(setup, &sample.mu, &o, ws),

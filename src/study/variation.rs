@@ -72,13 +72,14 @@ impl Variation {
             v.extend((0..coupling.contacts.len()).map(Input::Mu));
         }
         if self.preload {
-            v.extend(
-                (0..2)
-                    .filter(|&a| b.preload_offset_m[a] > 0.0)
-                    .map(Input::PreloadOffset),
-            );
-            if b.preload_tilt_rad > 0.0 {
-                v.extend([Input::PreloadTilt(0), Input::PreloadTilt(1)]);
+            // Each force but the weight, force by force: its offsets, then its tilts.
+            let forces = coupling.scene.preload.forces.iter().enumerate();
+            for (f, _) in forces.filter(|(_, f)| f.varies()) {
+                let offsets = (0..2).filter(|&a| b.preload_offset_m[a] > 0.0);
+                v.extend(offsets.map(|a| Input::PreloadOffset(f, a)));
+                if b.preload_tilt_rad > 0.0 {
+                    v.extend([Input::PreloadTilt(f, 0), Input::PreloadTilt(f, 1)]);
+                }
             }
         }
         if self.start.is_some() {
@@ -129,11 +130,11 @@ impl Variation {
         let inputs = self.inputs(coupling);
         let b = coupling.scene.variation;
         let f = &coupling.scene.friction;
-        let nominal = coupling.scene.preload;
+        let mut preload = coupling.scene.preload.clone();
         let mut mu = nominal_mu(coupling);
         let mut start_u = [0.5; 6];
-        let mut offset = Vector3::zeros();
-        let mut tilt = Vector3::zeros();
+        let mut offset = vec![Vector3::zeros(); preload.forces.len()];
+        let mut tilt = offset.clone();
         let mut tol = self.tolerances.then(|| Tolerances::zero(coupling));
         let mut physical = Vec::with_capacity(inputs.len());
         for (input, &u) in inputs.iter().zip(row) {
@@ -144,13 +145,13 @@ impl Variation {
                     mu[k] = f.mu_static + f.spread * c;
                     mu[k]
                 }
-                (Input::PreloadOffset(a), _) => {
-                    offset[a] = b.preload_offset_m[a] * c;
-                    offset[a]
+                (Input::PreloadOffset(k, a), _) => {
+                    offset[k][a] = b.preload_offset_m[a] * c;
+                    offset[k][a]
                 }
-                (Input::PreloadTilt(a), _) => {
-                    tilt[a] = b.preload_tilt_rad * c;
-                    tilt[a]
+                (Input::PreloadTilt(k, a), _) => {
+                    tilt[k][a] = b.preload_tilt_rad * c;
+                    tilt[k][a]
                 }
                 (Input::Start(j), _) => {
                     start_u[j] = u;
@@ -168,12 +169,10 @@ impl Variation {
         if self.start.is_some() {
             fill_start_values(&inputs, &start, &mut physical);
         }
-        let preload = Preload {
-            force: nominal.force,
-            point: nominal.point + offset,
-            direction: UnitQuaternion::from_scaled_axis(tilt) * nominal.direction,
-            ramp_time: nominal.ramp_time,
-        };
+        for ((f, offset), tilt) in preload.forces.iter_mut().zip(offset).zip(tilt) {
+            f.point += offset;
+            f.direction = UnitQuaternion::from_scaled_axis(tilt) * f.direction;
+        }
         Sample {
             mu,
             start,

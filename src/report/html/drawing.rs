@@ -21,7 +21,8 @@ use nalgebra::Vector3;
 
 use super::svg::{Shape, bounds, svg};
 use crate::assembly::Coupling;
-use crate::scene::SurfaceGeometry;
+use crate::report::preload::force_text;
+use crate::scene::{Preload, SurfaceGeometry};
 use crate::solve::{ContactResult, Seating};
 
 use super::svg::{BALL, CONTACT, FIXED, FORCE, NORMAL, PRELOAD};
@@ -124,14 +125,30 @@ pub fn coupling_views(id: &str, c: &Coupling, s: &Seating) -> String {
     out.push_str("</div>\n");
     let _ = writeln!(
         out,
-        "<p class=\"note\">Nominal seating (nominal μ, quasi-static). <span style=\"color:{BALL}\">Blue</span>: moving balls; <span style=\"color:{FIXED}\">grey</span>: fixed elements; <span style=\"color:{CONTACT}\">red dots</span>: contact points, numbered in the order of --mu; <span style=\"color:{NORMAL}\">green</span>: contact normals (unit length, not to scale); <span style=\"color:{FORCE}\">orange</span>: seated contact force on the moving half, N n + T, to the force bar's scale (largest {fmax:.3} N); <span style=\"color:{PRELOAD}\">pink</span>: preload point, F_p = {:.3} N along ({:.3}, {:.3}, {:.3}).</p>",
-        c.scene.preload.force,
-        // + 0.0 prints -0 as 0.
-        c.scene.preload.direction.x + 0.0,
-        c.scene.preload.direction.y + 0.0,
-        c.scene.preload.direction.z + 0.0
+        "<p class=\"note\">Nominal seating (nominal μ, quasi-static). <span style=\"color:{BALL}\">Blue</span>: moving balls; <span style=\"color:{FIXED}\">grey</span>: fixed elements; <span style=\"color:{CONTACT}\">red dots</span>: contact points, numbered in the order of --mu; <span style=\"color:{NORMAL}\">green</span>: contact normals (unit length, not to scale); <span style=\"color:{FORCE}\">orange</span>: seated contact force on the moving half, N n + T, to the force bar's scale (largest {fmax:.3} N); <span style=\"color:{PRELOAD}\">pink</span>: {}.</p>",
+        preload_note(&c.scene.preload)
     );
     out
+}
+
+/// The preload in the drawing's note: the point of a single force, or
+/// each force's point F_i.
+fn preload_note(p: &Preload) -> String {
+    match p.forces.as_slice() {
+        [f] => format!(
+            "preload point, F_p = {:.3} N along ({:.3}, {:.3}, {:.3})",
+            f.force,
+            // + 0.0 prints -0 as 0.
+            f.direction.x + 0.0,
+            f.direction.y + 0.0,
+            f.direction.z + 0.0
+        ),
+        forces => {
+            let each = forces.iter().enumerate();
+            let each = each.map(|(i, f)| format!("F_{} = {}", i + 1, force_text(f)));
+            format!("preload points, {}", each.collect::<Vec<_>>().join("; "))
+        }
+    }
 }
 
 fn layout_shapes(c: &Coupling, s: &Seating) -> Vec<Shape> {
@@ -163,16 +180,22 @@ fn layout_shapes(c: &Coupling, s: &Seating) -> Vec<Shape> {
             colour: CONTACT,
         });
     }
-    let pl = p(&c.scene.preload.point);
-    out.push(Shape::Dot {
-        c: pl,
-        colour: PRELOAD,
-    });
-    out.push(Shape::Text {
-        at: (pl.0 + 1.3 * r, pl.1 + 0.9 * r),
-        text: "F_p".into(),
-        colour: PRELOAD,
-    });
+    let forces = &c.scene.preload.forces;
+    for (i, f) in forces.iter().enumerate() {
+        let pl = p(&f.point);
+        out.push(Shape::Dot {
+            c: pl,
+            colour: PRELOAD,
+        });
+        out.push(Shape::Text {
+            at: (pl.0 + 1.3 * r, pl.1 + 0.9 * r),
+            text: match forces.len() {
+                1 => "F_p".into(),
+                _ => format!("F_{}", i + 1),
+            },
+            colour: PRELOAD,
+        });
+    }
     for e in &c.scene.evaluation_points {
         let q = p(&s.pose.apply(&e.position));
         let d = 0.35 * r;

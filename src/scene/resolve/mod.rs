@@ -1,11 +1,12 @@
 //! Validation of an explicit scene file into a [`Scene`]: materials resolved,
 //! every number checked for range, every surface complete. One validator
-//! per TOML table (`geometry`: balls and surfaces, `tables`: the scalar
-//! tables, `materials`), in the order the errors are reported.
+//! per TOML table (`geometry`: balls and surfaces, `preload`, `tables`:
+//! the other scalar tables, `materials`), in the order the errors are reported.
 
 mod fields;
 pub mod geometry;
 pub mod materials;
+pub mod preload;
 pub mod tables;
 
 use fields::Fields;
@@ -22,7 +23,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     };
     let balls = geometry::balls(f, &fx)?;
     let surfaces = geometry::surfaces(f, &fx, &balls)?;
-    let preload = tables::preload(&f.preload, &fx)?;
+    let preload = preload::preload(&f.preload, f.dynamics.as_ref(), &fx)?;
     let friction = tables::friction(&f.friction, ctx)?;
     let study = tables::study(&f.study, ctx)?;
     let evaluation_points = tables::evaluation_points(f, &fx)?;

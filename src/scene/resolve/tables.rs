@@ -1,4 +1,4 @@
-//! The scalar tables of a scene: `[preload]`, `[friction]`, `[study]`,
+//! The scalar tables of a scene: `[friction]`, `[study]`,
 //! `[[evaluation_points]]`, `[dynamics]` and `[variation]`, one validator each.
 
 use nalgebra::Vector3;
@@ -8,36 +8,15 @@ use super::fields::Fields;
 use crate::contact::{FrictionLaw, TangentialLaw};
 use crate::scene::error::{ErrorContext, SceneError};
 use crate::scene::file::{
-    DynamicsFile, FrictionFile, FrictionLawName, Numbers, PreloadFile, SceneFile, StudyFile,
-    VariationFile,
+    DynamicsFile, FrictionFile, FrictionLawName, Numbers, SceneFile, StudyFile, VariationFile,
 };
 use crate::scene::{
-    DEFAULT_RAMP_TIME, DynamicsSettings, EvaluationPoint, FrictionSettings, Preload, SamplerChoice,
-    StudySettings, VariationBounds,
+    DynamicsSettings, EvaluationPoint, FrictionSettings, SamplerChoice, StudySettings,
+    VariationBounds,
 };
 
 /// Largest friction coefficient accepted in a scene.
 pub const MU_MAX: f64 = 2.0;
-
-/// `[preload]`: a positive force; point, direction and ramp time default to
-/// the centre, -z and [`DEFAULT_RAMP_TIME`].
-pub fn preload(p: &PreloadFile, fx: &Fields) -> Result<Preload, SceneError> {
-    Ok(Preload {
-        force: fx.positive(&p.force, "preload.force", "N")?,
-        point: match &p.point {
-            Some(v) => fx.finite(v, "preload.point")?,
-            None => Vector3::zeros(),
-        },
-        direction: match &p.direction {
-            Some(v) => fx.unit(v, "preload.direction")?,
-            None => -Vector3::z(),
-        },
-        ramp_time: match &p.ramp_time {
-            Some(v) => fx.positive(v, "preload.ramp_time", "s")?,
-            None => DEFAULT_RAMP_TIME,
-        },
-    })
-}
 
 /// `[friction]`: 0 <= mu_s <= [`MU_MAX`], 0 <= spread <= mu_s with
 /// mu_s + spread <= [`MU_MAX`], 0 < dynamic_ratio <= 1, and the law.

@@ -12,6 +12,7 @@ use super::trace::{Energy, TraceContact, TraceSample, TraceState};
 use super::world::{self, dvec, from_rapier, nvec};
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, SlipState, TangentialState};
+use crate::solve::preload_forces::{Applied, applied};
 use crate::solve::{SolveError, frictions};
 
 /// Settling status of the last step.
@@ -192,12 +193,10 @@ impl<'a> Simulation<'a> {
             mass: &self.mass,
         };
         let contacts = self.contact_forces(&motion);
-        let p = &self.coupling.scene.preload;
-        let fp = p.direction * (p.force * lambda);
-        let pp = pose.apply(&p.point);
-        let (residual, max_speed, hertz) = self.balance(&motion, &contacts, &fp, &pp);
+        let preload: Vec<Applied> = applied(self.coupling, &pose, lambda).collect();
+        let (residual, max_speed, hertz) = self.balance(&motion, &contacts, &preload);
         let kinetic_before = self.kinetic(&linvel, &angvel, &rot);
-        self.apply_and_commit(&contacts, &fp, &pp, pose);
+        self.apply_and_commit(&contacts, &preload, pose);
         self.world.step();
         let rb = &self.world.bodies[self.body];
         let new_pose = from_rapier(rb.position());
@@ -221,7 +220,10 @@ impl<'a> Simulation<'a> {
             hertz,
             preload_work: self.work,
         };
-        self.work += fp.dot(&(new_pose.apply(&p.point) - pp));
+        let points = self.coupling.scene.preload.forces.iter().map(|f| f.point);
+        for (a, point) in preload.iter().zip(points) {
+            self.work += a.force.dot(&(new_pose.apply(&point) - a.point));
+        }
         self.status = Status {
             kinetic: kinetic_before,
             max_speed,
@@ -252,19 +254,21 @@ impl<'a> Simulation<'a> {
     }
 
     /// Residual of the contact-layer forces (no dashpots) and the preload
-    /// `fp` at `pp`, relative to F_p and F_p L; the largest speed of a ball
-    /// centre or contact point; the Hertz energy.
+    /// forces, relative to F_p and F_p L (F_p the preload's scale); the
+    /// largest speed of a ball centre or contact point; the Hertz energy.
     fn balance(
         &self,
         motion: &forces::Motion,
         contacts: &[StepContact],
-        fp: &Vector3<f64>,
-        pp: &Vector3<f64>,
+        preload: &[Applied],
     ) -> (f64, f64, f64) {
         let c = self.coupling;
-        let p = &c.scene.preload;
-        let mut rf = *fp;
-        let mut rm = pp.cross(fp);
+        let scale = c.scene.preload.scale();
+        let (mut rf, mut rm) = (Vector3::zeros(), Vector3::zeros());
+        for a in preload {
+            rf += a.force;
+            rm += a.point.cross(&a.force);
+        }
         let mut max_speed: f64 = 0.0;
         let mut hertz = 0.0;
         for (i, sc) in contacts.iter().enumerate() {
@@ -277,27 +281,23 @@ impl<'a> Simulation<'a> {
                 .max(motion.velocity_at(&e.geometry.point).norm());
             hertz += c.contacts[i].normal.energy(e.approach);
         }
-        let residual = (rf.norm() / p.force).max(rm.norm() / (p.force * self.length));
+        let residual = (rf.norm() / scale).max(rm.norm() / (scale * self.length));
         (residual, max_speed, hertz)
     }
 
     /// Set the contact forces and the preload as rapier user forces (they
     /// persist in rapier, so reset first), and commit the tangential
     /// history and the pose of this step.
-    fn apply_and_commit(
-        &mut self,
-        contacts: &[StepContact],
-        fp: &Vector3<f64>,
-        pp: &Vector3<f64>,
-        pose: BodyPose,
-    ) {
+    fn apply_and_commit(&mut self, contacts: &[StepContact], preload: &[Applied], pose: BodyPose) {
         let rb = &mut self.world.bodies[self.body];
         rb.reset_forces(false);
         rb.reset_torques(false);
         for sc in contacts {
             rb.add_force_at_point(dvec(&sc.force), dvec(&sc.eval.geometry.point), false);
         }
-        rb.add_force_at_point(dvec(fp), dvec(pp), false);
+        for a in preload {
+            rb.add_force_at_point(dvec(&a.force), dvec(&a.point), false);
+        }
         for (st, sc) in self.states.iter_mut().zip(contacts) {
             *st = sc.eval.tangential.state.clone();
         }

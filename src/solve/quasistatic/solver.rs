@@ -39,6 +39,7 @@ use crate::assembly::constraint::frictionless_preload_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
 use crate::solve::contact_layer::{ContactEval, Motion, Moved, NormalPart, evaluate_into};
+use crate::solve::preload_forces::applied;
 use crate::solve::{ContactResult, SolveError, SolverOptions};
 
 /// Contacts evaluated together by [`Solver::evaluate_all`] (a kinematic
@@ -106,7 +107,7 @@ impl<'a> Solver<'a> {
         x1: Vector6<f64>,
     ) -> Self {
         let length = coupling.length_scale();
-        let preload = coupling.scene.preload.force;
+        let preload = coupling.scene.preload.scale();
         let force_scale = match program {
             Program::Seat => preload,
             Program::Load { load, factor } => {
@@ -207,35 +208,42 @@ impl<'a> Solver<'a> {
         }
     }
 
-    /// Net force and moment on the moving half, and the preload force and point.
-    fn residual(
-        &self,
-        pose: &BodyPose,
-        evals: &[ContactEval],
-        loads: &Loads,
-    ) -> (Vector6<f64>, [PointForce; 2]) {
-        let p = &self.coupling.scene.preload;
-        let fp = p.direction * (p.force * loads.lambda);
-        let pp = pose.apply(&p.point);
+    /// Net force and moment on the moving half: the preload forces
+    /// ([`applied`]), the contacts, and the extra load.
+    fn residual(&self, pose: &BodyPose, evals: &[ContactEval], loads: &Loads) -> Vector6<f64> {
         let mut r = Vector6::zeros();
         let mut add = |f: &Vector3<f64>, at: &Vector3<f64>| {
             let m = at.cross(f);
             r += Vector6::new(f.x, f.y, f.z, m.x, m.y, m.z);
         };
-        add(&fp, &pp);
+        for a in applied(self.coupling, pose, loads.lambda) {
+            add(&a.force, &a.point);
+        }
         for e in evals {
             add(&e.force, &e.geometry.point);
         }
-        let mut point_forces = [(fp, pp), (Vector3::zeros(), pp)];
-        if let Program::Load { load, .. } = self.program {
-            let fe = load.force * loads.extra;
-            let pe = pose.apply(&load.point);
+        if let Some((fe, pe)) = self.extra_force(pose, loads) {
             add(&fe, &pe);
-            let me = load.moment * loads.extra;
+            let me = self.extra_moment(loads);
             r += Vector6::new(0.0, 0.0, 0.0, me.x, me.y, me.z);
-            point_forces[1] = (fe, pe);
         }
-        (r, point_forces)
+        r
+    }
+
+    /// The extra load's force and its world point (a load path only).
+    fn extra_force(&self, pose: &BodyPose, loads: &Loads) -> Option<PointForce> {
+        match self.program {
+            Program::Load { load, .. } => Some((load.force * loads.extra, pose.apply(&load.point))),
+            Program::Seat => None,
+        }
+    }
+
+    /// The extra load's pure moment (a load path only).
+    fn extra_moment(&self, loads: &Loads) -> Vector3<f64> {
+        match self.program {
+            Program::Load { load, .. } => load.moment * loads.extra,
+            Program::Seat => Vector3::zeros(),
+        }
     }
 
     fn relative(&self, r: &Vector6<f64>) -> f64 {
@@ -262,7 +270,7 @@ impl<'a> Solver<'a> {
             // iterate is expected to fail the test, else only if it does.
             let eager = last > self.opts.tolerance.sqrt();
             self.evaluate_all(&pose, committed_pose, states, loads.duration, eager, evals);
-            let (r, point_forces) = self.residual(&pose, evals, loads);
+            let r = self.residual(&pose, evals, loads);
             let rel = self.relative(&r);
             if !rel.is_finite() {
                 return Step::Failed(rel);
@@ -275,7 +283,7 @@ impl<'a> Solver<'a> {
             if !eager {
                 self.evaluate_all(&pose, committed_pose, states, loads.duration, true, evals);
             }
-            let j = self.jacobian(evals, &point_forces);
+            let j = self.jacobian(evals, &pose, loads);
             let Some(dx) = solve6(&j, &(-r)) else {
                 return Step::Failed(rel);
             };
@@ -299,21 +307,29 @@ impl<'a> Solver<'a> {
 
     /// dR/d(v, w) for a twist about the world origin: contact stiffness K_i
     /// mapped through dp = v - [p]x w, plus the moments of forces whose
-    /// points move with the body ([`add_contact`]).
-    fn jacobian(&self, evals: &[ContactEval], point_forces: &[PointForce]) -> Matrix6<f64> {
+    /// points move with the body ([`add_contact`]), plus each preload
+    /// spring's stiffness the same way.
+    fn jacobian(&self, evals: &[ContactEval], pose: &BodyPose, loads: &Loads) -> Matrix6<f64> {
         let mut j = Matrix6::zeros();
         for (i, e) in evals.iter().enumerate() {
             debug_assert!(e.tangent, "contact {i} evaluated without its tangent");
             let centre = e.geometry.point + e.geometry.normal * self.coupling.contacts[i].radius;
             add_contact(&mut j, &e.stiffness, &e.force, &e.geometry.point, &centre);
         }
-        // A load of fixed direction at a point of the body (K = 0): moment
-        // rows only, d(p x f) = dp x f = -[f]x (v - [p]x w).
-        for (f, p) in point_forces {
-            let fx = f.cross_matrix();
-            j.fixed_view_mut::<3, 3>(3, 0).sub_assign(&fx);
-            j.fixed_view_mut::<3, 3>(3, 3)
-                .add_assign(&(fx * p.cross_matrix()));
+        let preload = applied(self.coupling, pose, loads.lambda);
+        let forces = preload.map(|a| (a.force, a.point, a.stiffness));
+        for (f, p, k) in forces.chain(self.extra_force(pose, loads).map(|(f, p)| (f, p, None))) {
+            match k {
+                Some(k) => add_contact(&mut j, &k, &f, &p, &p),
+                // A load of fixed direction at a point of the body (K = 0):
+                // moment rows only, d(p x f) = dp x f = -[f]x (v - [p]x w).
+                None => {
+                    let fx = f.cross_matrix();
+                    j.fixed_view_mut::<3, 3>(3, 0).sub_assign(&fx);
+                    j.fixed_view_mut::<3, 3>(3, 3)
+                        .add_assign(&(fx * p.cross_matrix()));
+                }
+            }
         }
         j
     }

@@ -1,0 +1,176 @@
+//! `[preload]`: the single central force (the paper's, the default), or
+//! `[[preload.forces]]` (constant forces and springs), plus the weight of
+//! the moving half with `gravity = true` (docs/scenes.md).
+
+use nalgebra::Vector3;
+use toml::Spanned;
+
+use super::fields::Fields;
+use crate::scene::error::SceneError;
+use crate::scene::file::{DynamicsFile, PreloadFile, PreloadForceFile};
+use crate::scene::{DEFAULT_RAMP_TIME, ForceLaw, Preload, PreloadForce};
+
+/// `[preload]`: `force` (positive; point and direction default to the
+/// centre and -z) or `forces`, not both; `gravity` adds the weight, with
+/// the mass from `[preload] mass` or else `[dynamics] mass`.
+pub fn preload(
+    p: &PreloadFile,
+    dynamics: Option<&DynamicsFile>,
+    fx: &Fields,
+) -> Result<Preload, SceneError> {
+    let mut forces = match (&p.force, p.forces.is_empty()) {
+        (Some(f), true) => vec![single(p, f, fx)?],
+        (Some(f), false) => {
+            return Err(fx.ctx.error(
+                Some(&f.span()),
+                "preload.force",
+                "give either the single force or [[preload.forces]], not both",
+            ));
+        }
+        (None, _) => listed(p, fx)?,
+    };
+    if let Some(g) = p.gravity.as_ref().filter(|g| *g.get_ref()) {
+        forces.push(weight(p, g, dynamics, fx)?);
+    } else if let Some(m) = &p.mass {
+        return Err(fx.ctx.error(
+            Some(&m.span()),
+            "preload.mass",
+            "the mass is read only with gravity = true",
+        ));
+    }
+    if forces.is_empty() {
+        return Err(fx.ctx.error(
+            None,
+            "preload.force",
+            "missing: give force, [[preload.forces]] or gravity = true",
+        ));
+    }
+    Ok(Preload {
+        forces,
+        ramp_time: match &p.ramp_time {
+            Some(v) => fx.positive(v, "preload.ramp_time", "s")?,
+            None => DEFAULT_RAMP_TIME,
+        },
+    })
+}
+
+/// The single `force` at `point` (default the origin) along `direction`
+/// (default -z).
+fn single(p: &PreloadFile, f: &Spanned<f64>, fx: &Fields) -> Result<PreloadForce, SceneError> {
+    Ok(PreloadForce::constant(
+        fx.positive(f, "preload.force", "N")?,
+        match &p.point {
+            Some(v) => fx.finite(v, "preload.point")?,
+            None => Vector3::zeros(),
+        },
+        match &p.direction {
+            Some(v) => fx.unit(v, "preload.direction")?,
+            None => -Vector3::z(),
+        },
+    ))
+}
+
+/// `[[preload.forces]]`, in file order; `[preload] point` and `direction`
+/// belong to the single force and are refused beside them.
+fn listed(p: &PreloadFile, fx: &Fields) -> Result<Vec<PreloadForce>, SceneError> {
+    for (v, name) in [
+        (&p.point, "preload.point"),
+        (&p.direction, "preload.direction"),
+    ] {
+        if let Some(v) = v.as_ref().filter(|_| !p.forces.is_empty()) {
+            return Err(fx.ctx.error(
+                Some(&v.span()),
+                name,
+                "belongs to the single force; give each force's own in [[preload.forces]]",
+            ));
+        }
+    }
+    p.forces
+        .iter()
+        .enumerate()
+        .map(|(i, f)| entry(f, &format!("preload.forces[{}]", i + 1), fx))
+        .collect()
+}
+
+/// One `[[preload.forces]]` entry: a constant force, or a spring if it
+/// gives `stiffness` and `free_length` (both, positive, and a positive
+/// length free_length - force / stiffness in the touching pose).
+fn entry(f: &PreloadForceFile, at: &str, fx: &Fields) -> Result<PreloadForce, SceneError> {
+    let force = fx.positive(&f.force, &format!("{at}.force"), "N")?;
+    let point = fx.finite(&f.point, &format!("{at}.point"))?;
+    let direction = fx.unit(&f.direction, &format!("{at}.direction"))?;
+    let law = match (&f.stiffness, &f.free_length) {
+        (None, None) => ForceLaw::Constant,
+        (Some(k), Some(l)) => {
+            let stiffness = fx.positive(k, &format!("{at}.stiffness"), "N/m")?;
+            let free_length = fx.positive(l, &format!("{at}.free_length"), "m")?;
+            let length = free_length - force / stiffness;
+            if length <= 0.0 {
+                return Err(fx.ctx.error(
+                    Some(&l.span()),
+                    format!("{at}.free_length"),
+                    format!(
+                        "{free_length} m is not longer than force / stiffness = {} m: the \
+                         spring cannot give {force} N",
+                        force / stiffness
+                    ),
+                ));
+            }
+            ForceLaw::Spring {
+                stiffness,
+                free_length,
+            }
+        }
+        (Some(k), None) => return Err(pair(fx, k, at, "stiffness", "free_length")),
+        (None, Some(l)) => return Err(pair(fx, l, at, "free_length", "stiffness")),
+    };
+    Ok(PreloadForce {
+        force,
+        point,
+        direction,
+        law,
+    })
+}
+
+fn pair(fx: &Fields, v: &Spanned<f64>, at: &str, given: &str, missing: &str) -> SceneError {
+    fx.ctx.error(
+        Some(&v.span()),
+        format!("{at}.{given}"),
+        format!("a spring needs both stiffness and free_length; {missing} is missing"),
+    )
+}
+
+/// The weight of the moving half: `[preload] mass` and `centre_of_mass`
+/// (default the origin), else `[dynamics] mass` and `centre_of_mass`.
+fn weight(
+    p: &PreloadFile,
+    gravity: &Spanned<bool>,
+    dynamics: Option<&DynamicsFile>,
+    fx: &Fields,
+) -> Result<PreloadForce, SceneError> {
+    let (mass, com, field) = match (&p.mass, dynamics) {
+        (Some(m), _) => (m, &p.centre_of_mass, "preload"),
+        (None, Some(d)) => (&d.mass, &d.centre_of_mass, "dynamics"),
+        (None, None) => {
+            return Err(fx.ctx.error(
+                Some(&gravity.span()),
+                "preload.gravity",
+                "needs the mass of the moving half: give [preload] mass (and centre_of_mass) \
+                 or a [dynamics] table",
+            ));
+        }
+    };
+    if let (Some(c), None) = (&p.centre_of_mass, &p.mass) {
+        return Err(fx.ctx.error(
+            Some(&c.span()),
+            "preload.centre_of_mass",
+            "given without [preload] mass: the weight's mass and centre come from one table",
+        ));
+    }
+    let mass = fx.positive(mass, &format!("{field}.mass"), "kg")?;
+    let centre = match com {
+        Some(c) => fx.finite(c, &format!("{field}.centre_of_mass"))?,
+        None => Vector3::zeros(),
+    };
+    Ok(PreloadForce::weight(mass, centre))
+}
