@@ -213,10 +213,10 @@ pub fn set(scene: &mut Table, path: &str, value: &SweptValue) -> Result<(), Expl
         SweptValue::Name(s) => Value::String(s.clone()),
     };
     let seg: Vec<&str> = path.split('.').collect();
-    if let ["materials", name, _] = seg.as_slice() {
-        if material(scene, name).is_err() {
-            add_override(scene, name);
-        }
+    if let ["materials", name, _] = seg.as_slice()
+        && material(scene, name).is_err()
+    {
+        add_override(scene, name);
     }
     let target = match seg.as_slice() {
         ["materials", name, _] => scene

@@ -32,11 +32,11 @@ pub enum SweepPlotError {
     Write(#[from] WriteError),
 }
 
-pub(crate) fn draw_err<E: std::fmt::Display>(e: E) -> SweepPlotError {
+fn draw_err<E: std::fmt::Display>(e: E) -> SweepPlotError {
     SweepPlotError::Draw(e.to_string())
 }
 
-pub(crate) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// The design charts as (file stem / title, SVG text), in a fixed order:
@@ -70,7 +70,7 @@ pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> 
     }
     if !sweep_status::not_evaluated(r).is_empty() {
         let size = (1200, sweep_status::height(r));
-        let chart = svg(&foot, size, |a| sweep_status::draw(r, a))?;
+        let chart = svg(&foot, size, |a| sweep_status::draw(r, a).map_err(draw_err))?;
         out.push(("sweep_not_evaluated".to_string(), chart));
     }
     Ok(out)

@@ -3,9 +3,9 @@
 //! `sweep_not_evaluated` of `--out DIR` and `--html FILE`, so that a
 //! report of charts names every point missing from them and why.
 
+use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::sweep_plot::{Area, SweepPlotError, draw_err};
 use crate::explore::{DesignReport, SweepReport, SweptValue};
 
 /// Characters per line before a reason is wrapped.
@@ -43,8 +43,9 @@ pub fn height(r: &SweepReport) -> u32 {
     (60 + LINE * lines(r).len() as i32) as u32
 }
 
-/// Draw the list into `area`.
-pub fn draw(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
+/// Draw the list into `area` (the error: plotters' message).
+pub fn draw(r: &SweepReport, area: &DrawingArea<SVGBackend<'_>, Shift>) -> Result<(), String> {
+    let draw_err = |e: DrawingAreaErrorKind<_>| e.to_string();
     let n = not_evaluated(r).len();
     area.draw(&Text::new(
         format!(
