@@ -53,14 +53,14 @@ pub fn draw(r: &SweepReport, area: &DrawingArea<SVGBackend<'_>, Shift>) -> Resul
             r.designs.len()
         ),
         (12, 10),
-        ("sans-serif", 16).into_font(),
+        ("sans-serif", 20).into_font(),
     ))
     .map_err(draw_err)?;
     for (i, l) in lines(r).iter().enumerate() {
         area.draw(&Text::new(
             l.clone(),
             (12, 40 + LINE * i as i32),
-            ("monospace", 12).into_font(),
+            ("monospace", 15).into_font(),
         ))
         .map_err(draw_err)?;
     }
