@@ -36,7 +36,7 @@ mod field {
             "materials.other.youngs_modulus",
             "study.samples",
             "variation.surface_tilt",
-            "materials.probe.allowable_shear_stress",
+            "materials.unobtainium.allowable_shear_stress",
         ] {
             let e = kind_of(bad, &s).unwrap_err().to_string();
             assert!(e.contains(bad), "{e}");
@@ -45,6 +45,49 @@ mod field {
         s["coupling"]["diameter"] = Value::String("big".into());
         let e = kind_of("coupling.diameter", &s).unwrap_err().to_string();
         assert!(e.contains("not as a number"), "{e}");
+    }
+
+    #[test]
+    fn string_fields_and_built_in_materials() {
+        let s = scene();
+        for path in [
+            "coupling.arrangement",
+            "coupling.groove",
+            "coupling.ball_shape",
+        ] {
+            assert_eq!(kind_of(path, &s).ok(), Some(FieldKind::Text), "{path}");
+        }
+        // A built-in material's constants are sweepable without an entry.
+        assert_eq!(
+            kind_of("materials.steel.allowable_shear_stress", &s).unwrap(),
+            FieldKind::Number
+        );
+        let mut t = scene();
+        set(
+            &mut t,
+            "materials.steel.poisson_ratio",
+            &SweptValue::Number(0.25),
+        )
+        .unwrap();
+        set(
+            &mut t,
+            "materials.steel.youngs_modulus",
+            &SweptValue::Number(2e11),
+        )
+        .unwrap();
+        // One override entry holding the built-in's other constants.
+        let entries = t["materials"].as_array().unwrap();
+        assert_eq!(entries.len(), 2);
+        let steel = entries[1].as_table().unwrap();
+        assert_eq!(steel["name"].as_str(), Some("steel"));
+        assert_eq!(steel["override"].as_bool(), Some(true));
+        assert_eq!(steel["youngs_modulus"].as_float(), Some(2e11));
+        assert_eq!(steel["poisson_ratio"].as_float(), Some(0.25));
+        let builtin = kinrepro::Material::builtin("steel").unwrap();
+        assert_eq!(
+            steel["allowable_pressure"].as_float(),
+            builtin.allowable_pressure
+        );
     }
 
     #[test]
@@ -71,6 +114,7 @@ mod field {
 
 mod values {
     use kinrepro::explore::ExploreError;
+    use kinrepro::explore::SweptValue;
     use kinrepro::explore::values::*;
     use toml::Table;
 
@@ -101,6 +145,33 @@ mod values {
         assert_eq!(list.interval, None);
         let m = Set::parse("coupling.ball_material=steel,silicon-carbide", &s).unwrap();
         assert_eq!(m.levels.len(), 2);
+    }
+
+    #[test]
+    fn items_are_numbers_unless_quoted_or_unparsable() {
+        assert_eq!(item("20"), SweptValue::Number(20.0));
+        assert_eq!(item("1e-3"), SweptValue::Number(1e-3));
+        assert_eq!(item("planes"), SweptValue::Name("planes".into()));
+        assert_eq!(item("\"20\""), SweptValue::Name("20".into()));
+        assert_eq!(
+            item("'gothic-arch'"),
+            SweptValue::Name("gothic-arch".into())
+        );
+        assert_eq!(item("\""), SweptValue::Name("\"".into()));
+        let s = scene();
+        let g = Set::parse("coupling.groove=planes,'7',gothic-arch", &s).unwrap();
+        assert_eq!(
+            g.levels,
+            Levels::Names(vec!["planes".into(), "7".into(), "gothic-arch".into()])
+        );
+        for bad in [
+            "coupling.groove=planes,7",
+            "coupling.groove=a:b",
+            "coupling.groove=x,'x'",
+        ] {
+            let e = Set::parse(bad, &s).unwrap_err().to_string();
+            assert!(e.contains(bad), "{e}");
+        }
     }
 
     #[test]

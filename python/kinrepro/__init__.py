@@ -53,12 +53,13 @@ SetValues = Union[str, float, int, Iterable[Union[float, int, str]]]
 def _set_arg(field: str, values: SetValues) -> str:
     """One ``--set FIELD=VALUES`` argument: a string is passed as written
     (``"5,10,20"``, ``"5:20:4"``, ``"log:1e-3:1e-1:5"``); a number or a list
-    of numbers or names is joined by commas."""
+    of numbers or names is joined by commas, each name quoted so that it
+    stays a string (``"316"``)."""
     if isinstance(values, str):
         return f"{field}={values}"
     if isinstance(values, (int, float)):
         return f"{field}={values}"
-    return f"{field}=" + ",".join(str(v) for v in values)
+    return f"{field}=" + ",".join(f'"{v}"' if isinstance(v, str) else str(v) for v in values)
 
 
 def sweep(
@@ -79,8 +80,8 @@ def sweep(
     random numbers), nominal stiffness, safety and friction limit.
 
     ``sets`` maps a TOML path (the fields of ``Scene.set``, e.g.
-    ``"preload.force"`` [N]) to its values: a list of numbers (SI) or
-    material names, or a string in the CLI's syntax (``"5,10,20"``, a range
+    ``"preload.force"`` [N]) to its values: a list of numbers (SI),
+    material names or strings (``["maxwell", "kelvin"]``), or a string in the CLI's syntax (``"5,10,20"``, a range
     ``"5:20:4"``, ``"log:1e-3:1e-1:5"``). The grid of all combinations, or
     an LHS of ``points`` design points. ``pareto_point``: the evaluation
     point of the Pareto objective (None: the first). ``samples``,

@@ -39,7 +39,8 @@ class Scene:
         """A new scene with the field at TOML path ``field`` (the paths of
         ``kinrepro sweep --set``, e.g. ``"preload.force"`` [N],
         ``"friction.mu_static"``, ``"coupling.ball_radius"`` [m]) set to
-        ``value`` (SI number or material name)."""
+        ``value`` (SI number, material name or a string of the scene format
+        such as ``"kelvin"``)."""
     @property
     def file(self) -> str: ...
     @property

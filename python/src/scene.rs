@@ -99,9 +99,11 @@ impl Scene {
             FieldKind::Number => SweptValue::Number(value.extract::<f64>().map_err(|_| {
                 err(format!("{field}: needs a number, got {value}"))
             })?),
-            FieldKind::Material => SweptValue::Name(value.extract::<String>().map_err(|_| {
-                err(format!("{field}: needs a material name, got {value}"))
-            })?),
+            FieldKind::Material | FieldKind::Text => {
+                SweptValue::Name(value.extract::<String>().map_err(|_| {
+                    err(format!("{field}: needs a name, got {value}"))
+                })?)
+            }
         };
         set(&mut table, field, &v).map_err(err)?;
         let text = toml::to_string(&table).map_err(err)?;

@@ -130,11 +130,16 @@ pub fn evaluate(
     let scene = match Scene::parse(text, label) {
         Ok(s) => s,
         Err(err) => {
-            // Line numbers would point into the generated text: name the field only.
-            e.outcome = Outcome::Invalid(if err.field.is_empty() {
+            // Line numbers would point into the generated text: name the
+            // field only (for a parser error, the key on the error's line).
+            let field = match (err.field.is_empty(), err.line) {
+                (true, Some(line)) => field_at(text, line).unwrap_or_default(),
+                _ => err.field,
+            };
+            e.outcome = Outcome::Invalid(if field.is_empty() {
                 err.reason
             } else {
-                format!("{}: {}", err.field, err.reason)
+                format!("{field}: {}", err.reason)
             });
             return e;
         }
@@ -152,6 +157,19 @@ pub fn evaluate(
     };
     e.coupling = Some(coupling);
     e
+}
+
+/// The dotted path (`table.key`) of the `key = value` at 1-based `line`
+/// of a TOML text, its table from the last header above it.
+fn field_at(text: &str, line: usize) -> Option<String> {
+    let lines: Vec<&str> = text.lines().take(line).collect();
+    let key = lines.last()?.split_once('=')?.0.trim();
+    let table = lines
+        .iter()
+        .rev()
+        .find_map(|l| l.trim().strip_prefix('['))
+        .map(|h| h.trim_matches(|c| c == '[' || c == ']').trim())?;
+    Some(format!("{table}.{key}"))
 }
 
 fn seat_and_study(

@@ -2,21 +2,27 @@
 //! (docs/scenes.md), and setting one in the parsed scene document.
 //!
 //! Numeric fields: `coupling.{diameter, ball_diameter,
-//! groove_element_diameter, opening_angle_deg, support_compliance}`,
-//! `preload.{force, ramp_time}`, `friction.{mu_static, spread,
-//! dynamic_ratio, decay_coefficient}` and `materials.NAME.{youngs_modulus,
-//! poisson_ratio, allowable_pressure}` (NAME: a `[[materials]]` entry of
-//! the scene). Material fields: `coupling.ball_material`,
-//! `coupling.groove_material`. Not sweepable: fields no sweep output
-//! depends on (`[variation]`: a sweep varies the friction only; the
-//! allowable shear stress: the sweep reports the pressure safety factor),
-//! and the study settings (`[study]`: given as options).
+//! groove_element_diameter, groove_radius, canoe_radius, opening_angle_deg,
+//! support_compliance}`, `preload.{force, ramp_time}`, `friction.{mu_static,
+//! spread, dynamic_ratio, decay_coefficient}` and
+//! `materials.NAME.{youngs_modulus, poisson_ratio, allowable_pressure,
+//! allowable_shear_stress}` (NAME: a `[[materials]]` entry of the scene or
+//! a built-in material; setting a built-in's constant adds an entry with
+//! `override = true` holding the built-in's other constants). Material
+//! fields: `coupling.ball_material`, `coupling.groove_material`. String
+//! fields (concept sweeps): `coupling.{arrangement, groove, ball_shape}`,
+//! `friction.{distribution, tangential_law}`; their values are not checked
+//! here but by the scene loader at each design point, so every value the
+//! scene format accepts can be swept and any other makes that point
+//! invalid. Not sweepable: `[variation]` (a sweep varies the friction
+//! only) and the study settings (`[study]`: given as options).
 
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 use toml::{Table, Value};
 
 use super::ExploreError;
+use crate::material::Material;
 
 /// What a field holds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -26,6 +32,9 @@ pub enum FieldKind {
     Number,
     /// A material name (built-in or a `[[materials]]` entry).
     Material,
+    /// A keyword of the scene format (`coupling.groove = "planes"`, ...).
+    #[serde(rename = "string")]
+    Text,
 }
 
 /// One value of a swept field.
@@ -63,7 +72,9 @@ pub enum FieldError {
     NoTable(String),
     #[error("not a sweepable field")]
     BadPath,
-    #[error("the scene has no [[materials]] entry named \"{0}\"")]
+    #[error(
+        "the scene has no [[materials]] entry named \"{0}\" and there is no such built-in material"
+    )]
     NoMaterial(String),
     #[error("not present in the scene")]
     NotPresent,
@@ -76,6 +87,8 @@ const NUMBERS: [(&str, &[&str]); 3] = [
             "diameter",
             "ball_diameter",
             "groove_element_diameter",
+            "groove_radius",
+            "canoe_radius",
             "opening_angle_deg",
             "support_compliance",
         ],
@@ -86,8 +99,20 @@ const NUMBERS: [(&str, &[&str]); 3] = [
         &["mu_static", "spread", "dynamic_ratio", "decay_coefficient"],
     ),
 ];
-const MATERIAL_NUMBERS: [&str; 3] = ["youngs_modulus", "poisson_ratio", "allowable_pressure"];
+const MATERIAL_NUMBERS: [&str; 4] = [
+    "youngs_modulus",
+    "poisson_ratio",
+    "allowable_pressure",
+    "allowable_shear_stress",
+];
 const MATERIALS: [&str; 2] = ["coupling.ball_material", "coupling.groove_material"];
+const TEXTS: [&str; 5] = [
+    "coupling.arrangement",
+    "coupling.groove",
+    "coupling.ball_shape",
+    "friction.distribution",
+    "friction.tangential_law",
+];
 
 /// Every sweepable path, for messages (NAME stands for a material entry).
 pub fn sweepable() -> String {
@@ -100,7 +125,7 @@ pub fn sweepable() -> String {
             .iter()
             .map(|k| format!("materials.NAME.{k}")),
     );
-    all.extend(MATERIALS.iter().map(|s| s.to_string()));
+    all.extend(MATERIALS.iter().chain(&TEXTS).map(|s| s.to_string()));
     all.join(", ")
 }
 
@@ -120,6 +145,7 @@ pub fn kind_of(path: &str, scene: &Table) -> Result<FieldKind, ExploreError> {
             FieldKind::Number
         }
         _ if MATERIALS.contains(&path) => FieldKind::Material,
+        _ if TEXTS.contains(&path) => FieldKind::Text,
         _ => return Err(unknown()),
     };
     match lookup(scene, &seg).map_err(err)? {
@@ -136,13 +162,14 @@ fn kind_text(kind: FieldKind) -> &'static str {
     match kind {
         FieldKind::Number => "a number",
         FieldKind::Material => "a material name",
+        FieldKind::Text => "a string",
     }
 }
 
 fn type_fits(v: &Value, kind: FieldKind) -> bool {
     match kind {
         FieldKind::Number => v.is_float() || v.is_integer(),
-        FieldKind::Material => v.is_str(),
+        FieldKind::Material | FieldKind::Text => v.is_str(),
     }
 }
 
@@ -150,7 +177,11 @@ fn type_fits(v: &Value, kind: FieldKind) -> bool {
 /// exists).
 fn lookup<'a>(scene: &'a Table, seg: &[&str]) -> Result<Option<&'a Value>, FieldError> {
     match seg {
-        ["materials", name, key] => Ok(material(scene, name)?.get(*key)),
+        ["materials", name, key] => match material(scene, name) {
+            Ok(t) => Ok(t.get(*key)),
+            Err(_) if Material::builtin(name).is_ok() => Ok(None),
+            Err(e) => Err(e),
+        },
         [table, key] => match scene.get(*table) {
             Some(Value::Table(t)) => Ok(t.get(*key)),
             Some(_) => Err(FieldError::NotATable(table.to_string())),
@@ -172,13 +203,21 @@ fn material<'a>(scene: &'a Table, name: &str) -> Result<&'a Table, FieldError> {
         .ok_or_else(|| FieldError::NoMaterial(name.to_string()))
 }
 
-/// Set the field at `path` (checked by [`kind_of`]) to `value`.
+/// Set the field at `path` (checked by [`kind_of`]) to `value`. A
+/// constant of a built-in material the scene does not define goes into a
+/// new `[[materials]]` entry with `override = true` and the built-in's
+/// other constants, so only that constant changes.
 pub fn set(scene: &mut Table, path: &str, value: &SweptValue) -> Result<(), ExploreError> {
     let v = match value {
         SweptValue::Number(x) => Value::Float(*x),
         SweptValue::Name(s) => Value::String(s.clone()),
     };
     let seg: Vec<&str> = path.split('.').collect();
+    if let ["materials", name, _] = seg.as_slice()
+        && material(scene, name).is_err()
+    {
+        add_override(scene, name);
+    }
     let target = match seg.as_slice() {
         ["materials", name, _] => scene
             .get_mut("materials")
@@ -202,5 +241,34 @@ pub fn set(scene: &mut Table, path: &str, value: &SweptValue) -> Result<(), Expl
             path: path.to_string(),
             reason: FieldError::NotPresent,
         }),
+    }
+}
+
+/// Append `[[materials]] name = NAME, override = true` with the constants
+/// of the built-in NAME (nothing if there is no such built-in: `set` then
+/// reports the field as not present).
+fn add_override(scene: &mut Table, name: &str) {
+    let Ok(m) = Material::builtin(name) else {
+        return;
+    };
+    let mut t = Table::new();
+    t.insert("name".into(), Value::String(m.name));
+    t.insert("override".into(), Value::Boolean(true));
+    t.insert("youngs_modulus".into(), Value::Float(m.youngs_modulus));
+    t.insert("poisson_ratio".into(), Value::Float(m.poisson_ratio));
+    let optional = [
+        ("allowable_pressure", m.allowable_pressure),
+        ("allowable_shear_stress", m.allowable_shear_stress),
+    ];
+    for (key, x) in optional {
+        if let Some(x) = x {
+            t.insert(key.into(), Value::Float(x));
+        }
+    }
+    let list = scene
+        .entry("materials")
+        .or_insert_with(|| Value::Array(Vec::new()));
+    if let Some(list) = list.as_array_mut() {
+        list.push(Value::Table(t));
     }
 }

@@ -41,6 +41,11 @@ pub struct DesignReport {
     /// `ok`, or why the point could not be evaluated (`invalid: ...`,
     /// `cannot seat: ...`, `failed: ...`).
     pub status: String,
+    /// Why the point's fields do not go together (the scene loader's or
+    /// the assembly's message); None for a valid point (one that loads
+    /// and assembles, whether or not it could be evaluated).
+    #[serde(default)]
+    pub invalid_reason: Option<String>,
     /// On the Pareto front (null in one shard of several: the front needs
     /// every design, `merge` marks it).
     pub pareto: Option<bool>,
@@ -112,6 +117,9 @@ pub enum SweepError {
     Explore(#[from] ExploreError),
     #[error("{0}")]
     Setup(String),
+    /// No design point of a whole sweep loads and assembles.
+    #[error("{file}: none of the {points} design points is valid (each is listed with its reason)")]
+    NoValidDesign { file: String, points: usize },
     /// `--pareto-point` names no evaluation point of the base scene.
     #[error("{file}: --pareto-point {point}: no such evaluation point (the scene has {have})")]
     ParetoPoint {
@@ -231,6 +239,10 @@ fn design_report(
         index,
         values,
         status: e.outcome.status(),
+        invalid_reason: match &e.outcome {
+            Outcome::Invalid(r) => Some(r.clone()),
+            _ => None,
+        },
         pareto: None,
         points: Vec::new(),
         principal_stiffness_n_per_m: n.map(|n| n.translational_n_per_m),
@@ -276,6 +288,20 @@ impl SweepReport {
             stiffness_min: d.principal_stiffness_n_per_m?[0],
             safety_factor: d.min_pressure_safety_factor,
         })
+    }
+
+    /// [`SweepError::NoValidDesign`] if this document holds the whole
+    /// sweep (not one shard of several) and none of its design points is
+    /// valid; a shard cannot tell, its `merge` does.
+    pub fn check_any_valid(&self) -> Result<(), SweepError> {
+        let whole = self.shard.count == 1;
+        match whole && self.designs.iter().all(|d| d.invalid_reason.is_some()) {
+            true => Err(SweepError::NoValidDesign {
+                file: self.scene.clone(),
+                points: self.designs.len(),
+            }),
+            false => Ok(()),
+        }
     }
 
     /// The line naming what produced this document.

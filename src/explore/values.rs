@@ -1,9 +1,15 @@
-//! The VALUES of `--set FIELD=VALUES`: a list (`5,10,20`, or material
-//! names `steel,silicon-carbide`), a linear range with a count (`5:40:8`:
-//! 8 values from 5 to 40, ends included) or a logarithmic one
-//! (`log:1:100:5`: 1, 3.16, 10, 31.6, 100). An LHS design draws from the
-//! interval of a range (its count is not used; `a:b` without a count is
-//! allowed there) and picks equally often among the values of a list.
+//! The VALUES of `--set FIELD=VALUES`: a list (`5,10,20`, material names
+//! `steel,silicon-carbide`, or keywords `planes,cylinders`), a linear
+//! range with a count (`5:40:8`: 8 values from 5 to 40, ends included) or
+//! a logarithmic one (`log:1:100:5`: 1, 3.16, 10, 31.6, 100). An LHS
+//! design draws from the interval of a range (its count is not used; `a:b`
+//! without a count is allowed there) and picks equally often among the
+//! values of a list.
+//!
+//! An item of a list that parses as a number is a number, any other is a
+//! string; quotes (`"316"` or `'316'`) make an item a string whatever it
+//! holds. Each item must then fit the field: a number for a numeric field,
+//! a string for a material or keyword field.
 
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
@@ -63,7 +69,7 @@ impl Interval {
 /// Why the VALUES of a `--set` are not understood.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ValuesError {
-    #[error("a material field takes a list of names, not a range")]
+    #[error("a material or string field takes a list of names, not a range")]
     MaterialRange,
     #[error("\"{0}\" is not a number")]
     NotANumber(String),
@@ -83,7 +89,7 @@ pub enum ValuesError {
     EmptyItem,
     #[error("\"{0}\" is listed twice")]
     Twice(String),
-    #[error("the field holds a material name, \"{0}\" is a number")]
+    #[error("the field holds a name, \"{0}\" is a number (quote it to give it as a name)")]
     NumberForMaterial(String),
 }
 
@@ -119,7 +125,7 @@ impl Set {
             reason,
         };
         let (levels, interval) = if spec.contains(':') {
-            if kind == FieldKind::Material {
+            if kind != FieldKind::Number {
                 return Err(err(ValuesError::MaterialRange));
             }
             range(&spec).map_err(err)?
@@ -186,28 +192,45 @@ fn range(spec: &str) -> Result<(Levels, Option<Interval>), ValuesError> {
     Ok((Levels::Numbers(values), Some(interval)))
 }
 
-/// A comma-separated list of numbers or material names.
+/// A comma-separated list of numbers or names, each item as [`item`]
+/// reads it, checked against the field's kind.
 fn list(spec: &str, kind: FieldKind) -> Result<Levels, ValuesError> {
     let items: Vec<&str> = spec.split(',').map(str::trim).collect();
     if items.iter().any(|s| s.is_empty()) {
         return Err(ValuesError::EmptyItem);
     }
-    let mut seen: Vec<&str> = Vec::new();
-    for s in &items {
-        if seen.contains(s) {
-            return Err(ValuesError::Twice(s.to_string()));
+    let values: Vec<SweptValue> = items.iter().map(|s| item(s)).collect();
+    for (i, v) in values.iter().enumerate() {
+        if values[..i].contains(v) {
+            return Err(ValuesError::Twice(items[i].to_string()));
         }
-        seen.push(s);
     }
     match kind {
         FieldKind::Number => Ok(Levels::Numbers(
             items.iter().map(|s| number(s)).collect::<Result<_, _>>()?,
         )),
-        FieldKind::Material => {
-            if let Some(s) = items.iter().find(|s| s.parse::<f64>().is_ok()) {
-                return Err(ValuesError::NumberForMaterial(s.to_string()));
-            }
-            Ok(Levels::Names(items.iter().map(|s| s.to_string()).collect()))
-        }
+        FieldKind::Material | FieldKind::Text => values
+            .into_iter()
+            .zip(&items)
+            .map(|(v, s)| match v {
+                SweptValue::Name(n) => Ok(n),
+                SweptValue::Number(_) => Err(ValuesError::NumberForMaterial(s.to_string())),
+            })
+            .collect::<Result<_, _>>()
+            .map(Levels::Names),
+    }
+}
+
+/// One item of a list: a quoted item (`"..."` or `'...'`) is the string
+/// between the quotes; otherwise a number if it parses as one, else the
+/// string as written.
+pub fn item(s: &str) -> SweptValue {
+    let quoted = ['"', '\'']
+        .iter()
+        .find_map(|q| s.strip_prefix(*q).and_then(|r| r.strip_suffix(*q)));
+    match (quoted, s.parse::<f64>()) {
+        (Some(inner), _) => SweptValue::Name(inner.to_string()),
+        (_, Ok(x)) => SweptValue::Number(x),
+        _ => SweptValue::Name(s.to_string()),
     }
 }

@@ -19,6 +19,7 @@ use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
 use crate::report::atomic::{WriteError, check_overwrite, write_file};
 use crate::report::plot::color;
+use crate::report::sweep_status;
 use crate::report::sweep_text::short as tick;
 use crate::study::PointStats;
 
@@ -40,7 +41,9 @@ type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64
 
 /// The design charts as (file stem / title, SVG text), in a fixed order:
 /// `sweep_sigma_<field>` per swept field, `sweep_heatmap` (grids of two
-/// fields), `sweep_pareto` (when two or more designs were evaluated).
+/// fields), `sweep_pareto` (when two or more designs were evaluated),
+/// `sweep_not_evaluated` (when a design point was not evaluated:
+/// `report::sweep_status`).
 pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> {
     let foot = r.produced_by();
     let mut out = Vec::new();
@@ -64,6 +67,11 @@ pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> 
             "sweep_pareto".to_string(),
             svg(&foot, (820, 620), |a| pareto_chart(r, a))?,
         ));
+    }
+    if !sweep_status::not_evaluated(r).is_empty() {
+        let size = (1200, sweep_status::height(r));
+        let chart = svg(&foot, size, |a| sweep_status::draw(r, a).map_err(draw_err))?;
+        out.push(("sweep_not_evaluated".to_string(), chart));
     }
     Ok(out)
 }
@@ -218,7 +226,7 @@ fn dof_panel(
         .y_label_area_size(62)
         .build_cartesian_2d(x0..x1, 0.0..(if ymax > 0.0 { ymax * 1.1 } else { 1.0 }))
         .map_err(draw_err)?;
-    let material = r.sets[k].kind == crate::explore::FieldKind::Material;
+    let material = r.sets[k].kind != crate::explore::FieldKind::Number;
     let level_names = levels(r, k);
     let fmt = |v: &f64| match material {
         true => (level_names.get(v.round().max(0.0) as usize)).map_or(String::new(), value_tick),

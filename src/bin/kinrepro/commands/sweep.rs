@@ -47,7 +47,8 @@ pub fn sweep(o: Checked<SweepArgs, StudyOptions>) -> Result<(), CliError> {
     if let Some(path) = &a.html {
         super::report::sweep_html(&report, path, a.force)?;
     }
-    Ok(())
+    // Exit 1 only when no design point is valid (all listed with reasons).
+    Ok(report.check_any_valid()?)
 }
 
 fn print_sweep(report: &SweepReport, format: Format) -> Result<(), CliError> {
@@ -63,7 +64,8 @@ fn print_sweep(report: &SweepReport, format: Format) -> Result<(), CliError> {
 pub fn merge(parts: &[PathBuf], first: String, format: Format) -> Result<(), CliError> {
     let docs = read_json_parts::<SweepReport>(parts, first, "sweep")?;
     let merged = merge_sweeps(docs)?;
-    print_sweep(&merged, format)
+    print_sweep(&merged, format)?;
+    Ok(merged.check_any_valid()?)
 }
 
 /// True if a JSON text is a sweep document (`"document": "sweep"`); only
