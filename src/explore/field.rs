@@ -10,7 +10,7 @@
 //! a built-in material; setting a built-in's constant adds an entry with
 //! `override = true` holding the built-in's other constants). Material
 //! fields: `coupling.ball_material`, `coupling.groove_material`. String
-//! fields (concept sweeps): `coupling.{arrangement, groove, ball_shape}`,
+//! fields (concept sweeps): `coupling.{arrangement, groove, ball_shape, seat}`,
 //! `friction.{distribution, tangential_law}`; their values are not checked
 //! here but by the scene loader at each design point, so every value the
 //! scene format accepts can be swept and any other makes that point
@@ -106,10 +106,11 @@ const MATERIAL_NUMBERS: [&str; 4] = [
     "allowable_shear_stress",
 ];
 const MATERIALS: [&str; 2] = ["coupling.ball_material", "coupling.groove_material"];
-const TEXTS: [&str; 5] = [
+const TEXTS: [&str; 6] = [
     "coupling.arrangement",
     "coupling.groove",
     "coupling.ball_shape",
+    "coupling.seat",
     "friction.distribution",
     "friction.tangential_law",
 ];
