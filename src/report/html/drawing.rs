@@ -232,12 +232,38 @@ fn ball_shapes(c: &Coupling, s: &Seating, b: usize, proj: Proj, scale: f64) -> V
     for &i in &mine {
         out.extend(fixed_element(proj, &c.contacts[i].surface, r));
     }
-    out.push(Shape::Circle {
-        c: p(&s.pose.apply(&ball.centre)),
-        r,
-        stroke: BALL,
-        fill: "#cfe6f5",
-    });
+    // Crossed pins: the moving pins (a band along each axis, or a circle
+    // seen end-on) instead of the ball.
+    let pins: Vec<_> = (mine.iter())
+        .filter_map(|&i| c.contacts[i].axis.map(|a| (&c.contacts[i], a)))
+        .collect();
+    if pins.is_empty() {
+        out.push(Shape::Circle {
+            c: p(&s.pose.apply(&ball.centre)),
+            r,
+            stroke: BALL,
+            fill: "#cfe6f5",
+        });
+    }
+    for (k, axis) in pins {
+        let (at, d) = (s.pose.apply(&k.centre), s.pose.rotation * axis);
+        let (pa, pb) = (p(&(at - d * 1.6 * r)), p(&(at + d * 1.6 * r)));
+        out.push(if (pa.0 - pb.0).hypot(pa.1 - pb.1) < 0.5 * k.radius {
+            Shape::Circle {
+                c: p(&at),
+                r: k.radius,
+                stroke: BALL,
+                fill: "#cfe6f5",
+            }
+        } else {
+            Shape::Line {
+                a: pa,
+                b: pb,
+                width_m: 2.0 * k.radius,
+                colour: "#cfe6f5",
+            }
+        });
+    }
     for &i in &mine {
         let k = &s.contacts[i];
         let at = Vector3::from(k.point_m);
