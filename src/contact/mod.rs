@@ -13,7 +13,7 @@
 //! | sphere-seat (R2 > R1) | (R1, R1) | (-R2, -R2) | 1/R = 1/R1 - 1/R2 |
 //! | sphere-cylinder | (R1, R1) | (R2, inf) | 1/Rx = 1/R1 + 1/R2, Ry = R1 (along the pin) |
 //! | sphere-groove (R2 > R1) | (R1, R1) | (-R2, inf) | Rx = R1 (along the groove), 1/Ry = 1/R1 - 1/R2 (across) |
-//! | cylinder-cylinder (crossed at 90 deg) | (R1, inf) | (R2, inf) | Rx = min(R1, R2), Ry = max(R1, R2) |
+//! | crossed-cylinders (crossed at 90 deg) | (R1, inf) | (R2, inf) | Rx = min(R1, R2), Ry = max(R1, R2) |
 //!
 //! sphere-groove is a ball in a concave cylindrical flank (a gothic arch):
 //! its contact ellipse is long across the groove.
@@ -82,7 +82,7 @@ impl ContactShape {
             ContactShape::SphereSeat => "sphere-seat",
             ContactShape::SphereCylinder => "sphere-cylinder",
             ContactShape::SphereGroove => "sphere-groove",
-            ContactShape::CrossedCylinders => "cylinder-cylinder",
+            ContactShape::CrossedCylinders => "crossed-cylinders",
             ContactShape::General => "general",
         }
     }
