@@ -11,6 +11,7 @@ pub mod contact;
 pub mod html;
 pub mod materials;
 pub mod plot;
+pub mod progress;
 pub mod run;
 pub mod safety;
 pub mod sensitivity;

@@ -5,7 +5,9 @@ use std::fmt::Write;
 
 use crate::contact::FrictionLaw;
 use crate::dof::Dof;
-use crate::report::study_text::{bounds_text, detail, interval_methods, sigma_table, varied};
+use crate::report::study_text::{
+    bounds_text, detail, interval_methods, sigma_estimates, sigma_table, varied,
+};
 use crate::report::table::{Cell, Column, Table, cells};
 use crate::study::StudyReport;
 use crate::study::runner::INTERCHANGE_PREFIX;
@@ -27,7 +29,8 @@ impl StudyReport {
         {
             let _ = writeln!(
                 s,
-                "Standard deviation of the seated pose relative to the nominal seating (nominal friction and preload, touching start; divisor n-1, for a replicated LHS the unbiased replicate estimate); below each row the 90 % interval of sigma, by a method valid for the design: {}.",
+                "Standard deviation of the seated pose relative to the nominal seating (nominal friction and preload, touching start; {}); below each row the 90 % interval of sigma, by a method valid for the design: {}.",
+                sigma_estimates(&self.variants),
                 interval_methods(
                     self.variants.iter().flat_map(|v| &v.points),
                     "per variant, after merging"

@@ -57,6 +57,18 @@ impl SigmaMethod {
         }
     }
 
+    /// The point estimate of sigma in words, for the headers of the reports.
+    pub fn estimate(&self) -> String {
+        match self {
+            SigmaMethod::Replicated(r) => format!(
+                "replicated LHS: the unbiased estimate over its {r} replicates (within-replicate variance plus the spread of the replicate means)"
+            ),
+            SigmaMethod::Iid => "Monte Carlo: divisor n-1".to_string(),
+            SigmaMethod::Corners => "corner design: divisor n-1".to_string(),
+            SigmaMethod::SingleLhs => "single LHS: divisor n-1".to_string(),
+        }
+    }
+
     /// The method in words, as written into every output (`sigma_interval_method`).
     pub fn describe(&self) -> String {
         match self {
