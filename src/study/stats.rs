@@ -61,7 +61,8 @@ impl SigmaMethod {
     pub fn estimate(&self) -> String {
         match self {
             SigmaMethod::Replicated(r) => format!(
-                "replicated LHS: the unbiased estimate over its {r} replicates (within-replicate variance plus the spread of the replicate means)"
+                "replicated LHS: the unbiased estimate over its {r} replicates (within-replicate variance plus the spread of the replicate means); its interval, a t on {} df, varies in width from study to study: on average it is narrower than Monte Carlo's at the same sample count, as the LHS lowers the scatter of sigma, but a single one can be wider",
+                r - 1
             ),
             SigmaMethod::Iid => "Monte Carlo: divisor n-1".to_string(),
             SigmaMethod::Corners => "corner design: divisor n-1".to_string(),
