@@ -28,7 +28,7 @@ pub fn metadata(source: &str, r: &StudyReport) -> String {
     }
     let mut s = t.html("meta");
     let mut t = Table::new(
-        ">#; <scene; <name; >samples; >sampler; >seed; >replicates; >μ_s; >spread; >μ_d/μ_s; <varied",
+        ">#; <scene; <name; >samples; >sampler; >seed; >replicates; >μ_s:.4g; >spread:.4g; >μ_d/μ_s:.4g; <varied",
     );
     for (i, v) in r.variants.iter().enumerate() {
         t.row(cells![
