@@ -75,6 +75,15 @@ impl StudyReport {
             if let Some(b) = &v.variation_bounds {
                 let _ = writeln!(s, "  [variation] bounds: {}", bounds_text(b));
             }
+            if let (Some(k), Some(share)) = (v.seating_failures, v.seating_failure_share) {
+                let _ = writeln!(
+                    s,
+                    "  seating failures: {k} of {} seatings did not centre ({:.1} %); the statistics are over the {} that did (conditional on centring)",
+                    v.samples,
+                    100.0 * share,
+                    v.samples - k
+                );
+            }
             if !v.points.is_empty() {
                 let _ = writeln!(s, "  re-seating scatter (one pair of halves):");
                 s += &detail(&v.points);

@@ -430,8 +430,14 @@ pub fn evaluate_rows<'a>(
             let sample = var.sample(coupling, &row);
             let mut outputs: Vec<f64> = Vec::new();
             if var.reseating() {
-                let s = reseat(&setup, opts, &sample, ws)
-                    .map_err(|e| seat_err(index, &sample.mu, e))?;
+                let s = match reseat(&setup, opts, &sample, ws) {
+                    // A varied start that does not centre is counted: a record without outputs.
+                    Err(SolveError::NotCentred { .. }) if var.start.is_some() => {
+                        (progress.tick)();
+                        return Ok(SampleRecord::not_centred(index, row));
+                    }
+                    s => s.map_err(|e| seat_err(index, &sample.mu, e))?,
+                };
                 progress.record(s.path);
                 outputs.extend(relative(s.pose));
             }

@@ -44,6 +44,9 @@ pub enum SigmaMethod {
     Corners,
     /// No valid interval: a single (unreplicated) LHS.
     SingleLhs,
+    /// No valid interval: an LHS some of whose seatings did not centre (its
+    /// strata and replicates are incomplete).
+    IncompleteLhs,
 }
 
 impl SigmaMethod {
@@ -67,6 +70,9 @@ impl SigmaMethod {
             SigmaMethod::Iid => "Monte Carlo: divisor n-1".to_string(),
             SigmaMethod::Corners => "corner design: divisor n-1".to_string(),
             SigmaMethod::SingleLhs => "single LHS: divisor n-1".to_string(),
+            SigmaMethod::IncompleteLhs => {
+                "LHS with seatings that did not centre: divisor n-1 over those that did".to_string()
+            }
         }
     }
 
@@ -84,6 +90,9 @@ impl SigmaMethod {
             SigmaMethod::Corners => interval::METHOD_NONE_CORNERS.to_string(),
             SigmaMethod::SingleLhs => {
                 "none (single LHS: resampling breaks its strata; use --replicates)".to_string()
+            }
+            SigmaMethod::IncompleteLhs => {
+                "none (seatings that did not centre leave the LHS strata incomplete; --sampler mc gives an interval)".to_string()
             }
         }
     }
@@ -162,7 +171,7 @@ pub fn summarize(values: &[f64], method: SigmaMethod) -> Result<Summary> {
             let (s, i) = sigma_replicated(values, r, interval::LEVEL)?;
             (s, Some(i))
         }
-        SigmaMethod::Corners | SigmaMethod::SingleLhs => (sigma, None),
+        SigmaMethod::Corners | SigmaMethod::SingleLhs | SigmaMethod::IncompleteLhs => (sigma, None),
     };
     summary(sigma, sigma_interval, method.describe())
 }
