@@ -77,13 +77,7 @@ impl VariantReport {
         } else {
             let samples: Vec<SampleRecord> = centred.iter().map(|r| r.sample()).collect();
             let failed = self.records.len() - samples.len();
-            let method = match SigmaMethod::for_design(&self.design) {
-                SigmaMethod::Replicated(_) | SigmaMethod::SingleLhs if failed > 0 => {
-                    SigmaMethod::IncompleteLhs
-                }
-                m => m,
-            };
-            let summaries = summarize_outputs(&samples, method)?;
+            let summaries = summarize_outputs(&samples, self.sigma_method(failed))?;
             (self.points, self.interchangeability) = split_points(&self.output_names, &summaries);
             self.count_failures(failed, self.records.len());
             self.cannot_seat = self.zero_scatter();
@@ -114,6 +108,17 @@ impl VariantReport {
         self.streamed = true;
         self.cannot_seat = self.zero_scatter();
         Ok(())
+    }
+
+    /// The estimate of sigma valid for the design and `failed` seatings
+    /// that did not centre (an LHS with gaps has no interval).
+    pub fn sigma_method(&self, failed: usize) -> SigmaMethod {
+        match SigmaMethod::for_design(&self.design) {
+            SigmaMethod::Replicated(_) | SigmaMethod::SingleLhs if failed > 0 => {
+                SigmaMethod::IncompleteLhs
+            }
+            m => m,
+        }
     }
 
     /// With the start varied: `failed` of `samples` seatings did not centre.
