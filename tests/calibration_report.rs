@@ -86,6 +86,13 @@ fn report_of_a_prediction_names_its_calibration_and_shows_the_measurement() {
         )),
         "spread and interval not shown"
     );
+    // Nowhere its 16 digits (the run table's spread column too: 4 digits).
+    let full = sp["estimate"].as_f64().unwrap().to_string();
+    assert!(
+        full.len() > 10 && !page.contains(&full),
+        "{full} in the page"
+    );
+    assert!(page.contains(&format!("<td>{}</td>", f("estimate"))));
 
     // The measured row: the sample sigma of the CSV's columns (x_nm first,
     // phi_z_nrad last), as printed (nm to 3 decimals, nrad to 2).

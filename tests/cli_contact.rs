@@ -202,8 +202,6 @@ fn history_args<'a>(file: &'a str, law: &'a str) -> Vec<&'a str> {
         "steel",
         "--material2",
         "steel",
-        "--load",
-        "10",
         "--mu",
         "0.5",
         "--tangential-law",
@@ -296,7 +294,49 @@ fn bad_history_is_one_clear_error_naming_file_line_and_column() {
     assert!(!ok && err.contains("mindlin-deresiewicz"), "{err}");
     // --history needs --mu.
     let mut args = history_args(&file, "coulomb");
-    args.drain(11..13);
+    args.drain(9..11);
     let (ok, _, err) = kinrepro(&args);
     assert!(!ok && err.contains("--mu"), "{err}");
+}
+
+/// The form of the README: `--history` without `--load` (the file gives the
+/// loads); `--load` beside it is not used, and says so; without either, the
+/// error names `--load`.
+#[test]
+fn history_needs_no_load() {
+    let tmp = tempfile::tempdir().unwrap();
+    let file = write(tmp.path(), "h.csv", "P_N,Qx_N,Qy_N\n10,0,0\n10,1,0\n");
+    let base = [
+        "contact",
+        "--shape",
+        "sphere-plane",
+        "--radius1",
+        "0.005",
+        "--material1",
+        "steel",
+        "--material2",
+        "steel",
+        "--mu",
+        "0.5",
+    ];
+    let run = |extra: &[&str]| kinrepro(&[&base[..], extra].concat());
+    let (ok, out, err) = run(&["--history", &file]);
+    assert!(ok, "{err}");
+    assert!(err.is_empty(), "{err}");
+    // Row 2: Q = 1 N sticks on one Coulomb spring, s = Q / (8 G* a).
+    let (e, nu) = (210e9_f64, 0.3_f64);
+    let g_star = e / (2.0 * (1.0 + nu)) / (2.0 * (2.0 - nu));
+    let a = (3.0 * 10.0 * 5e-3 / (4.0 * e / (2.0 * (1.0 - nu * nu)))).cbrt();
+    let last: Vec<&str> = out.lines().last().unwrap().split(',').collect();
+    let sx: f64 = last[4].parse().unwrap();
+    assert!(
+        (sx / (1.0 / (8.0 * g_star * a)) - 1.0).abs() < 1e-12,
+        "{sx}"
+    );
+    // --load 5 beside --history: the same history, and a warning.
+    let (ok, out2, err) = run(&["--history", &file, "--load", "5"]);
+    assert!(ok && out2 == out, "{err}");
+    assert!(err.contains("--load 5 is not used with --history"), "{err}");
+    let (ok, _, err) = run(&[]);
+    assert!(!ok && err.contains("--load"), "{err}");
 }

@@ -536,3 +536,37 @@ fn output_files_have_the_mode_of_an_ordinary_file() {
     let got = std::fs::metadata(&file).unwrap().permissions().mode() & 0o777;
     assert_eq!(got, want, "mode {got:o}, File::create gives {want:o}");
 }
+
+/// `run` reports phi_z like the other five DOFs (issue 27): its JSON lists
+/// nothing as not evaluated, its table marks nothing, and the phi_z it
+/// prints is the clocking a second point sees (as in the test above).
+#[test]
+fn run_reports_phi_z_as_evaluated() {
+    let s = s01();
+    let mu = "0.45,0.55,0.5,0.46,0.54,0.5";
+    let (ok, out, err) = kinrepro(&["run", &s, "--mu", mu, "--json"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["not_evaluated"], serde_json::json!([]));
+    let p = &v["pose_rel_nominal"];
+    let phi_z = p["phi_z_rad"].as_f64().unwrap();
+    assert!(phi_z.abs() > 1e-9, "{phi_z}");
+    // The same seating seen from a point 10 mm along x: y moves by phi_z * 10 mm.
+    let c = common::load("01_maxwell_vgroove_steel.toml");
+    let m = kinrepro::solve::Method::default();
+    let start = kinrepro::solve::dynamic::StartPose::touching();
+    let nominal = m.seat(&c, &[0.5; 6], &start).unwrap();
+    let seated = m
+        .seat(&c, &[0.45, 0.55, 0.5, 0.46, 0.54, 0.5], &start)
+        .unwrap();
+    let q = c.scene.evaluation_points[0].position + nalgebra::Vector3::new(0.01, 0.0, 0.0);
+    let b = kinrepro::solve::PointPose::between(&nominal.pose, &seated.pose, &q);
+    let seen = (b.y_m - p["y_m"].as_f64().unwrap()) / 0.01;
+    assert!(
+        (phi_z - seen).abs() < 1e-6 * phi_z.abs(),
+        "{phi_z} vs {seen}"
+    );
+    let (ok, table, _) = kinrepro(&["run", &s, "--mu", mu]);
+    assert!(ok && !table.contains("not evaluated"), "{table}");
+    assert!(table.contains("phi_z[nrad]") && !table.contains("phi_z[nrad]*"));
+}

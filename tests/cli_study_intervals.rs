@@ -125,3 +125,59 @@ fn sensitivity_prints_sobol_indices_with_their_base_size() {
     let (ok, _, err) = kinrepro(&["study", &s1(), "--sensitivity", "--sobol-samples", "1"]);
     assert!(!ok && err.contains("--sobol-samples"), "{err}");
 }
+
+/// An LHS count with no divisor in 2..=5 names the nearest counts that
+/// split, and those counts run with the replicates named.
+#[test]
+fn an_lhs_count_that_does_not_split_names_the_counts_that_do() {
+    let (ok, out, err) = kinrepro(&["study", &s1(), "--samples", "7"]);
+    assert!(!ok && out.is_empty(), "{out}");
+    assert!(
+        err.contains("--samples 6 (3 replicates) or --samples 8 (4 replicates)"),
+        "{err}"
+    );
+    for (n, r) in [(6, 3), (8, 4)] {
+        let d = json(&[
+            "study",
+            &s1(),
+            "--samples",
+            &n.to_string(),
+            "--format",
+            "json",
+        ]);
+        assert_eq!(d["variants"][0]["design"]["replicates"], r);
+    }
+}
+
+/// The study header describes the estimate of the design that ran: the
+/// replicated-LHS estimate for an LHS only, divisor n-1 for Monte Carlo.
+#[test]
+fn the_header_describes_the_estimate_of_the_sampler_that_ran() {
+    let (ok, lhs, _) = kinrepro(&["study", &s1()]);
+    assert!(ok);
+    let head = lhs.lines().nth(1).unwrap();
+    assert!(head.contains("replicated LHS: the unbiased estimate over its 5 replicates"));
+    assert!(head.contains("t on 4 df") && head.contains("narrower than Monte Carlo"));
+    let (ok, mc, _) = kinrepro(&["study", &s1(), "--sampler", "mc", "--samples", "30"]);
+    assert!(ok);
+    let head = mc.lines().nth(1).unwrap();
+    assert!(head.contains("Monte Carlo: divisor n-1"), "{head}");
+    assert!(!head.contains("replicat"), "{head}");
+}
+
+/// The remaining time is shown only after 3 s and 5 % of the work, from
+/// the mean rate since the start.
+#[test]
+fn the_remaining_time_waits_until_it_means_something() {
+    use kinrepro::report::progress::remaining;
+    use std::time::Duration;
+    let s = Duration::from_secs;
+    // The first seatings of a 5-second job: no "2h".
+    assert_eq!(remaining(Duration::from_millis(400), 1, 1000), None);
+    assert_eq!(remaining(s(10), 40, 1000), None);
+    assert_eq!(remaining(s(2), 500, 1000), None);
+    assert_eq!(remaining(s(10), 1000, 1000), None);
+    // 100 of 1000 in 10 s: 90 s left at the same rate.
+    let left = remaining(s(10), 100, 1000).unwrap();
+    assert!((left.as_secs_f64() - 90.0).abs() < 1e-9, "{left:?}");
+}

@@ -225,3 +225,35 @@ fn every_input_name_reads_back_to_its_input() {
     assert_eq!(Input::from_name("preload_z_m"), None);
     assert!(serde_json::from_str::<Input>("\"friction\"").is_err());
 }
+
+/// Fitted values beside their interval: 4 significant digits whatever the
+/// magnitude, each the value within half a unit of its last digit.
+#[test]
+fn significant_digits_keep_four_whatever_the_magnitude() {
+    use kinrepro::report::table::significant;
+    for (v, want) in [
+        (0.07815540470188051, "0.07816"),
+        (0.5, "0.5000"),
+        (526.3845, "526.4"),
+        (2.5e-8, "2.500e-8"),
+        (-1.23456, "-1.235"),
+        (0.0, "0"),
+    ] {
+        let s = significant(v, 4);
+        assert_eq!(s, want, "{v}");
+        let back: f64 = s.parse().unwrap();
+        let mantissa = s.split('e').next().unwrap();
+        let digits = mantissa
+            .chars()
+            .filter(char::is_ascii_digit)
+            .collect::<String>();
+        let sig = digits.trim_start_matches('0').len();
+        assert!(v == 0.0 || sig == 4, "{s}");
+        // Half a unit of the 4th digit: at most 5e-4 relative.
+        assert!((back - v).abs() <= 5e-4 * v.abs(), "{v} {s}");
+    }
+    // In a table: the `.4g` column spec.
+    let mut t = Table::new("<name; >spread:.4g");
+    t.row(vec![Cell::from("a"), Cell::from(0.07815540470188051)]);
+    assert!(t.text().contains("0.07816") && !t.text().contains("0.078155"));
+}

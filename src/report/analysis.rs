@@ -293,7 +293,7 @@ impl LoadReport {
 
     /// The deflection of each point [nm, nrad].
     fn deflections(&self, s: &mut String) {
-        let mut t = pose_table("<deflection", "");
+        let mut t = pose_table("<deflection");
         for q in &self.points {
             t.row(pose_cells(cells![&q.name], &q.deflection));
         }

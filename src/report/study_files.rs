@@ -104,10 +104,11 @@ pub fn samples_file_name(i: usize, v: &VariantReport) -> String {
 /// The per-sample CSV of one variant, written row by row (the `csv`
 /// crate) under a temporary name and renamed when complete. First line:
 /// `# ` and the provenance; then `index`, the physical inputs (SI), the
-/// outputs (SI).
+/// outputs (SI), empty for a seating that did not centre.
 pub struct SamplesCsv {
     out: csv::Writer<AtomicFile>,
     path: String,
+    outputs: usize,
 }
 
 impl SamplesCsv {
@@ -130,6 +131,7 @@ impl SamplesCsv {
         let mut csv = SamplesCsv {
             out: csv::Writer::from_writer(file),
             path: path.display().to_string(),
+            outputs: v.output_names.len(),
         };
         let names = v.inputs.iter().map(|i| i.name());
         csv.record(
@@ -165,6 +167,12 @@ impl RecordSink for SamplesCsv {
             .iter()
             .chain(&r.outputs)
             .map(|v| format!("{v:e}"));
-        self.record(std::iter::once(r.index.to_string()).chain(values))
+        let missing = if r.centred() { 0 } else { self.outputs };
+        let empty = std::iter::repeat_n(String::new(), missing);
+        self.record(
+            std::iter::once(r.index.to_string())
+                .chain(values)
+                .chain(empty),
+        )
     }
 }

@@ -5,11 +5,13 @@ use std::fmt::Write;
 
 use crate::contact::FrictionLaw;
 use crate::dof::Dof;
-use crate::report::study_text::{bounds_text, detail, interval_methods, sigma_table, varied};
+use crate::report::study_text::{
+    bounds_text, detail, interval_methods, sigma_estimates, sigma_table, varied,
+};
 use crate::report::table::{Cell, Column, Table, cells};
-use crate::study::StudyReport;
 use crate::study::runner::INTERCHANGE_PREFIX;
 use crate::study::sensitivity::{DofSensitivity, SensitivityBlock};
+use crate::study::{StudyReport, VariantReport};
 
 impl StudyReport {
     /// The text table: the variants side by side as in the paper's Table 2,
@@ -27,7 +29,8 @@ impl StudyReport {
         {
             let _ = writeln!(
                 s,
-                "Standard deviation of the seated pose relative to the nominal seating (nominal friction and preload, touching start; divisor n-1, for a replicated LHS the unbiased replicate estimate); below each row the 90 % interval of sigma, by a method valid for the design: {}.",
+                "Standard deviation of the seated pose relative to the nominal seating (nominal friction and preload, touching start; {}); below each row the 90 % interval of sigma, by a method valid for the design: {}.",
+                sigma_estimates(&self.variants),
                 interval_methods(
                     self.variants.iter().flat_map(|v| &v.points),
                     "per variant, after merging"
@@ -48,50 +51,68 @@ impl StudyReport {
             s += &sigma_table(&self.variants, |v| &v.interchangeability);
         }
         for v in self.variants.iter().filter(|v| !v.partial) {
-            let _ = writeln!(
-                s,
-                "\n{} ({}): {} samples, {} seed {}, mu_s = {} +- {} uniform, mu_d = {} mu_s, {}",
-                v.name,
-                v.scene,
-                v.samples,
-                v.sampler,
-                v.seed,
-                v.mu_static,
-                v.spread,
-                v.dynamic_ratio,
-                friction_law_text(&v.friction_law, v.ramp_time_s)
-            );
-            let _ = writeln!(s, "  varied: {}", varied(v));
-            if v.streamed {
-                let _ = writeln!(
-                    s,
-                    "  streamed: statistics from one-pass moments in sample order (no records kept); interval of sigma: {}",
-                    crate::study::stats::interval::METHOD_BONETT
-                );
-            }
-            if let Some(b) = &v.variation_bounds {
-                let _ = writeln!(s, "  [variation] bounds: {}", bounds_text(b));
-            }
-            if !v.points.is_empty() {
-                let _ = writeln!(s, "  re-seating scatter (one pair of halves):");
-                s += &detail(&v.points);
-            }
-            if !v.interchangeability.is_empty() {
-                let _ = writeln!(
-                    s,
-                    "  interchangeability (tolerances; nominal friction and preload):"
-                );
-                s += &detail(&v.interchangeability);
-            }
-            if let Some(blocks) = &v.sensitivity {
-                for b in blocks {
-                    s += &sensitivity_table(b);
-                    s += &super::sensitivity::sobol_table(b);
-                }
-            }
+            s += &variant_text(v);
         }
         s
     }
+}
+
+/// One complete variant in words: its settings, what varied, the seating
+/// failures of a varied start, the statistics of each point and the
+/// sensitivity tables.
+fn variant_text(v: &VariantReport) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "\n{} ({}): {} samples, {} seed {}, mu_s = {} +- {} uniform, mu_d = {} mu_s, {}",
+        v.name,
+        v.scene,
+        v.samples,
+        v.sampler,
+        v.seed,
+        v.mu_static,
+        v.spread,
+        v.dynamic_ratio,
+        friction_law_text(&v.friction_law, v.ramp_time_s)
+    );
+    let _ = writeln!(s, "  varied: {}", varied(v));
+    if v.streamed {
+        let _ = writeln!(
+            s,
+            "  streamed: statistics from one-pass moments in sample order (no records kept); interval of sigma: {}",
+            crate::study::stats::interval::METHOD_BONETT
+        );
+    }
+    if let Some(b) = &v.variation_bounds {
+        let _ = writeln!(s, "  [variation] bounds: {}", bounds_text(b));
+    }
+    if let (Some(k), Some(share)) = (v.seating_failures, v.seating_failure_share) {
+        let _ = writeln!(
+            s,
+            "  seating failures: {k} of {} seatings did not centre ({:.1} %); the statistics are over the {} that did (conditional on centring)",
+            v.samples,
+            100.0 * share,
+            v.samples - k
+        );
+    }
+    if !v.points.is_empty() {
+        let _ = writeln!(s, "  re-seating scatter (one pair of halves):");
+        s += &detail(&v.points);
+    }
+    if !v.interchangeability.is_empty() {
+        let _ = writeln!(
+            s,
+            "  interchangeability (tolerances; nominal friction and preload):"
+        );
+        s += &detail(&v.interchangeability);
+    }
+    if let Some(blocks) = &v.sensitivity {
+        for b in blocks {
+            s += &sensitivity_table(b);
+            s += &super::sensitivity::sobol_table(b);
+        }
+    }
+    s
 }
 
 /// One SRC table: inputs down, DOFs across.

@@ -105,6 +105,19 @@ pub(crate) fn interval_methods<'a>(
     }
 }
 
+/// The distinct point estimates of sigma of the designs that ran
+/// ([`crate::study::stats::SigmaMethod::estimate`]), in order, joined by `; `.
+pub(crate) fn sigma_estimates<'a>(variants: impl IntoIterator<Item = &'a VariantReport>) -> String {
+    let mut m: Vec<String> = Vec::new();
+    for v in variants {
+        let e = v.sigma_method(v.seating_failures.unwrap_or(0)).estimate();
+        if !m.contains(&e) {
+            m.push(e);
+        }
+    }
+    m.join("; ")
+}
+
 /// The non-zero `[variation]` bounds, in um and mrad.
 pub(crate) fn bounds_text(b: &VariationBounds) -> String {
     let um = |x: f64| format!("{}", x * 1e6);

@@ -20,6 +20,23 @@ pub enum Format {
     Sci(usize),
     /// `{:e}`: the shortest round-trip form with an exponent (SI values in CSV).
     Exp,
+    /// N significant digits ([`significant`]): fitted values beside their interval.
+    Significant(usize),
+}
+
+/// `v` to `p` significant digits (`0.07815540470188051` to 4: `0.07816`),
+/// with an exponent below 1e-4 and from 1e6 on.
+pub fn significant(v: f64, p: usize) -> String {
+    let p = p.max(1);
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let e = v.abs().log10().floor() as i32;
+    if !(-4..6).contains(&e) {
+        return format!("{v:.*e}", p - 1);
+    }
+    let decimals = (p as i32 - 1 - e).max(0) as usize;
+    format!("{v:.decimals$}")
 }
 
 impl Format {
@@ -29,6 +46,7 @@ impl Format {
             Format::Fixed(p) => format!("{v:.p$}"),
             Format::Sci(p) => format!("{v:.p$e}"),
             Format::Exp => format!("{v:e}"),
+            Format::Significant(p) => significant(v, p),
         }
     }
 }
@@ -75,18 +93,25 @@ impl Column {
 
     /// A column from its spec: `<` (left) or `>` (right), the header, then
     /// optionally `:` and the number format: `.N` (N decimals), `.Ne` (N
-    /// decimals with an exponent) or `e` (shortest with an exponent), as
-    /// in Rust's format strings. E.g. `>F_n [N]:.6`, `<point`.
+    /// decimals with an exponent), `e` (shortest with an exponent), as in
+    /// Rust's format strings, or `.Ng` (N significant digits). E.g.
+    /// `>F_n [N]:.6`, `<point`.
     pub fn parse(spec: &str) -> Self {
         let spec = spec.trim();
         let (head, format) = match spec.rsplit_once(':') {
             Some((h, f)) if f == "e" || f.starts_with('.') => (h, f),
             _ => (spec, ""),
         };
-        let digits = |f: &str| f.trim_start_matches('.').trim_end_matches('e').parse().ok();
+        let digits = |f: &str| {
+            f.trim_start_matches('.')
+                .trim_end_matches(['e', 'g'])
+                .parse()
+                .ok()
+        };
         let format = match (format, digits(format)) {
             ("e", _) => Format::Exp,
             (f, Some(p)) if f.ends_with('e') => Format::Sci(p),
+            (f, Some(p)) if f.ends_with('g') => Format::Significant(p),
             (_, Some(p)) => Format::Fixed(p),
             _ => Format::Plain,
         };

@@ -13,6 +13,7 @@ pub mod file;
 pub mod plausible;
 pub mod preload;
 pub mod resolve;
+mod tidy;
 
 use std::path::Path;
 
@@ -238,8 +239,12 @@ impl Scene {
         let explicit = expand::to_explicit(&raw, &ctx)?;
         // Validate before printing, so that expand never prints a bad scene.
         resolve::resolve(&explicit, &ctx)?;
-        let body =
-            toml::to_string_pretty(&explicit).map_err(|e| ctx.error(None, "", e.to_string()))?;
+        let to_text = |e: toml::ser::Error| ctx.error(None, "", e.to_string());
+        let mut value = toml::Value::try_from(&explicit).map_err(to_text)?;
+        tidy::tidy(&mut value);
+        // Back through the typed form, which keeps the order of the fields.
+        let tidied = parse_file(&toml::to_string(&value).map_err(to_text)?, &ctx)?;
+        let body = toml::to_string_pretty(&tidied).map_err(to_text)?;
         Ok(format!(
             "# Explicit form of {file}, written by `kinrepro expand`.\n\
              # Lengths in m, forces in N, moduli in Pa; contacts in the order of --mu.\n\n{body}"

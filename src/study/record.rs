@@ -41,6 +41,11 @@ impl StudyRecord {
         }
     }
 
+    /// False for a seating that did not centre (varied start; no outputs).
+    pub fn centred(&self) -> bool {
+        !self.outputs.is_empty()
+    }
+
     /// The statistics' view of this record (design coordinates and outputs).
     pub fn sample(&self) -> SampleRecord {
         SampleRecord {

@@ -91,6 +91,13 @@ pub struct VariantReport {
     /// The scene's `[variation]` bounds when preload or tolerances varied.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub variation_bounds: Option<VariationBounds>,
+    /// Start varied: the sample seatings that did not centre (a contact
+    /// still open at full preload), left out of the statistics, which are
+    /// then conditional on centring; and their share of the samples.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seating_failures: Option<usize>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seating_failure_share: Option<f64>,
     /// True for one shard of several: statistics wait for `kinrepro merge`.
     pub partial: bool,
     /// Re-seating scatter of one pair of halves: statistics per evaluation
@@ -193,6 +200,8 @@ impl VariantReport {
             inputs: var.inputs(coupling),
             start_bounds: var.start.map(|b| [b.offset.into(), b.tilt.into()]),
             variation_bounds: (var.preload || var.tolerances).then_some(coupling.scene.variation),
+            seating_failures: None,
+            seating_failure_share: None,
             partial: run.shard.count > 1,
             points: Vec::new(),
             interchangeability: Vec::new(),

@@ -183,12 +183,27 @@ fn replicated(spec: DesignSpec, replicates: Option<usize>) -> Result<DesignSpec,
         (Sampler::Lhs, None) => match default_replicates(spec.n) {
             Some(r) => spec.with_replicates(r),
             None => Err(StudyError::InvalidParameter(format!(
-                "an LHS of {} samples cannot be split into {DEFAULT_LHS_REPLICATES} or fewer replicates of at least 2 points (needed for its interval of sigma): give --samples divisible by {DEFAULT_LHS_REPLICATES}, or --replicates 1 for a single LHS without an interval",
-                spec.n
+                "an LHS of {} samples cannot be split into 2 to {DEFAULT_LHS_REPLICATES} replicates of at least 2 points (needed for its interval of sigma): give {}, or --replicates 1 for a single LHS without an interval",
+                spec.n,
+                nearest_replicable(spec.n)
             ))),
         },
         _ => Ok(spec),
     }
+}
+
+/// The sample counts nearest to `n` (one below, one above) that the default
+/// replicate rule splits, with their replicate counts, as `--samples` advice.
+fn nearest_replicable(n: usize) -> String {
+    use crate::study::sampling::default_replicates;
+    let fits = |m: usize| default_replicates(m).map(|r| format!("--samples {m} ({r} replicates)"));
+    let below = (1..n).rev().find_map(fits);
+    let above = (n + 1..).find_map(fits);
+    below
+        .into_iter()
+        .chain(above)
+        .collect::<Vec<_>>()
+        .join(" or ")
 }
 
 /// Prefix of the interchangeability outputs (`interchange/<point>/<dof>`).
@@ -418,8 +433,14 @@ pub fn evaluate_rows<'a>(
             let sample = var.sample(coupling, &row);
             let mut outputs: Vec<f64> = Vec::new();
             if var.reseating() {
-                let s = reseat(&setup, opts, &sample, ws)
-                    .map_err(|e| seat_err(index, &sample.mu, e))?;
+                let s = match reseat(&setup, opts, &sample, ws) {
+                    // A varied start that does not centre is counted: a record without outputs.
+                    Err(SolveError::NotCentred { .. }) if var.start.is_some() => {
+                        (progress.tick)();
+                        return Ok(SampleRecord::not_centred(index, row));
+                    }
+                    s => s.map_err(|e| seat_err(index, &sample.mu, e))?,
+                };
                 progress.record(s.path);
                 outputs.extend(relative(s.pose));
             }

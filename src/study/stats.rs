@@ -44,6 +44,9 @@ pub enum SigmaMethod {
     Corners,
     /// No valid interval: a single (unreplicated) LHS.
     SingleLhs,
+    /// No valid interval: an LHS some of whose seatings did not centre (its
+    /// strata and replicates are incomplete).
+    IncompleteLhs,
 }
 
 impl SigmaMethod {
@@ -54,6 +57,22 @@ impl SigmaMethod {
             (Sampler::Corners, _) => SigmaMethod::Corners,
             (Sampler::Lhs, r) if r >= 2 => SigmaMethod::Replicated(r),
             (Sampler::Lhs, _) => SigmaMethod::SingleLhs,
+        }
+    }
+
+    /// The point estimate of sigma in words, for the headers of the reports.
+    pub fn estimate(&self) -> String {
+        match self {
+            SigmaMethod::Replicated(r) => format!(
+                "replicated LHS: the unbiased estimate over its {r} replicates (within-replicate variance plus the spread of the replicate means); its interval, a t on {} df, varies in width from study to study: on average it is narrower than Monte Carlo's at the same sample count, as the LHS lowers the scatter of sigma, but a single one can be wider",
+                r - 1
+            ),
+            SigmaMethod::Iid => "Monte Carlo: divisor n-1".to_string(),
+            SigmaMethod::Corners => "corner design: divisor n-1".to_string(),
+            SigmaMethod::SingleLhs => "single LHS: divisor n-1".to_string(),
+            SigmaMethod::IncompleteLhs => {
+                "LHS with seatings that did not centre: divisor n-1 over those that did".to_string()
+            }
         }
     }
 
@@ -71,6 +90,9 @@ impl SigmaMethod {
             SigmaMethod::Corners => interval::METHOD_NONE_CORNERS.to_string(),
             SigmaMethod::SingleLhs => {
                 "none (single LHS: resampling breaks its strata; use --replicates)".to_string()
+            }
+            SigmaMethod::IncompleteLhs => {
+                "none (seatings that did not centre leave the LHS strata incomplete; --sampler mc gives an interval)".to_string()
             }
         }
     }
@@ -149,7 +171,7 @@ pub fn summarize(values: &[f64], method: SigmaMethod) -> Result<Summary> {
             let (s, i) = sigma_replicated(values, r, interval::LEVEL)?;
             (s, Some(i))
         }
-        SigmaMethod::Corners | SigmaMethod::SingleLhs => (sigma, None),
+        SigmaMethod::Corners | SigmaMethod::SingleLhs | SigmaMethod::IncompleteLhs => (sigma, None),
     };
     summary(sigma, sigma_interval, method.describe())
 }

@@ -36,12 +36,19 @@ pub fn streams(design: &DesignSpec) -> bool {
 #[derive(Debug, Clone)]
 pub struct StreamStats {
     pub moments: Vec<Moments>,
+    /// Samples pushed whose seating did not centre (varied start): counted,
+    /// not in the moments.
+    pub not_centred: usize,
+    /// Samples pushed.
+    pub samples: usize,
 }
 
 impl StreamStats {
     pub fn new(outputs: usize) -> Self {
         StreamStats {
             moments: vec![Moments::new(); outputs],
+            not_centred: 0,
+            samples: 0,
         }
     }
 
@@ -49,6 +56,11 @@ impl StreamStats {
     /// naming the sample and the output.
     pub fn push(&mut self, records: &[SampleRecord], names: &[String]) -> Result<(), StudyError> {
         for r in records {
+            self.samples += 1;
+            if !r.centred() {
+                self.not_centred += 1;
+                continue;
+            }
             check_record(r.index, &r.outputs, names)?;
             for (m, &x) in self.moments.iter_mut().zip(&r.outputs) {
                 m.push(x);

@@ -66,7 +66,8 @@ impl VariantReport {
     /// their moments in index order where the design streams
     /// ([`streams`]), so that merged shards equal one streamed run.
     pub(crate) fn finish(&mut self) -> Result<(), StudyError> {
-        check_finite_records(&self.records, &self.output_names)?;
+        let centred: Vec<&StudyRecord> = self.records.iter().filter(|r| r.centred()).collect();
+        check_finite_records(&centred, &self.output_names)?;
         if streams(&self.design) {
             let mut st = StreamStats::new(self.output_names.len());
             for r in &self.records {
@@ -74,10 +75,11 @@ impl VariantReport {
             }
             self.set_moment_stats(&st)?;
         } else {
-            let samples: Vec<SampleRecord> = self.records.iter().map(StudyRecord::sample).collect();
-            let method = SigmaMethod::for_design(&self.design);
-            let summaries = summarize_outputs(&samples, method)?;
+            let samples: Vec<SampleRecord> = centred.iter().map(|r| r.sample()).collect();
+            let failed = self.records.len() - samples.len();
+            let summaries = summarize_outputs(&samples, self.sigma_method(failed))?;
             (self.points, self.interchangeability) = split_points(&self.output_names, &summaries);
+            self.count_failures(failed, self.records.len());
             self.cannot_seat = self.zero_scatter();
         }
         if self.sensitivity.is_some() {
@@ -102,9 +104,41 @@ impl VariantReport {
             })
             .collect::<Result<Vec<_>, _>>()?;
         (self.points, self.interchangeability) = split_points(&self.output_names, &summaries);
+        self.count_failures(st.not_centred, st.samples);
         self.streamed = true;
         self.cannot_seat = self.zero_scatter();
         Ok(())
+    }
+
+    /// The estimate of sigma valid for the design and `failed` seatings
+    /// that did not centre (an LHS with gaps has no interval).
+    pub fn sigma_method(&self, failed: usize) -> SigmaMethod {
+        match SigmaMethod::for_design(&self.design) {
+            SigmaMethod::Replicated(_) | SigmaMethod::SingleLhs if failed > 0 => {
+                SigmaMethod::IncompleteLhs
+            }
+            m => m,
+        }
+    }
+
+    /// With the start varied: `failed` of `samples` seatings did not centre.
+    /// The statistics are over those that did (conditional on centring),
+    /// and each point's interval method says so.
+    fn count_failures(&mut self, failed: usize, samples: usize) {
+        if self.start_bounds.is_none() {
+            return;
+        }
+        self.seating_failures = Some(failed);
+        self.seating_failure_share = Some(failed as f64 / samples.max(1) as f64);
+        if failed == 0 {
+            return;
+        }
+        for p in self.points.iter_mut().chain(&mut self.interchangeability) {
+            p.sigma_interval_method += &format!(
+                "; over the {} of {samples} seatings that centred ({failed} did not): conditional on centring",
+                samples - failed
+            );
+        }
     }
 
     /// The reason the coupling did not seat, if every re-seating sigma is
@@ -129,7 +163,7 @@ impl VariantReport {
 /// Every output finite, and no column so large that its sum of squares
 /// overflows (that would make sigma NaN): otherwise an error naming the
 /// sample.
-fn check_finite_records(records: &[StudyRecord], names: &[String]) -> Result<(), StudyError> {
+fn check_finite_records(records: &[&StudyRecord], names: &[String]) -> Result<(), StudyError> {
     for r in records {
         check_record(r.index, &r.outputs, names)?;
     }
@@ -159,6 +193,7 @@ fn sensitivity_blocks(v: &VariantReport) -> Vec<SensitivityBlock> {
     let samples: Vec<(&[f64], &[f64])> = v
         .records
         .iter()
+        .filter(|r| r.centred())
         .map(|r| (r.inputs.as_slice(), r.outputs.as_slice()))
         .collect();
     let mut blocks = Vec::new();

@@ -67,3 +67,43 @@ pub fn maxwell_contacts(alpha: f64) -> Vec<(nalgebra::Vector3<f64>, nalgebra::Ve
     }
     out
 }
+
+/// The numbers of a value's Debug text and the text between them.
+fn debug_numbers(text: &str) -> (Vec<String>, Vec<f64>) {
+    let (mut words, mut numbers, mut word) = (Vec::new(), Vec::new(), String::new());
+    let mut chars = text.char_indices().peekable();
+    while let Some((i, c)) = chars.next() {
+        let starts = c.is_ascii_digit()
+            || (c == '-' && text[i + 1..].starts_with(|d: char| d.is_ascii_digit()));
+        if !starts || word.ends_with(|w: char| w.is_alphanumeric() || w == '_') {
+            word.push(c);
+            continue;
+        }
+        let mut end = i + c.len_utf8();
+        while let Some(&(j, d)) = chars.peek() {
+            let exp_sign = (d == '-' || d == '+') && text[..j].ends_with('e');
+            if !(d.is_ascii_digit() || d == '.' || d == 'e' || exp_sign) {
+                break;
+            }
+            end = j + d.len_utf8();
+            chars.next();
+        }
+        numbers.push(text[i..end].parse().unwrap());
+        words.push(std::mem::take(&mut word));
+    }
+    words.push(word);
+    (words, numbers)
+}
+
+/// Two values (scenes) equal in structure, each number within 1e-12
+/// relative; below 1e-16 in absolute value (a length in m or a unit
+/// normal's component) a number counts as zero (rounding noise).
+pub fn assert_close_debug<T: std::fmt::Debug>(a: &T, b: &T, what: &str) {
+    let (wa, na) = debug_numbers(&format!("{a:?}"));
+    let (wb, nb) = debug_numbers(&format!("{b:?}"));
+    assert_eq!(wa, wb, "{what}: the structure differs");
+    for (k, (x, y)) in na.iter().zip(&nb).enumerate() {
+        let tol = 1e-12 * x.abs().max(y.abs()) + 1e-16;
+        assert!((x - y).abs() <= tol, "{what}: number {k}: {x} vs {y}");
+    }
+}

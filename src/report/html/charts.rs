@@ -89,6 +89,7 @@ fn scatter(variants: &[&VariantReport], interchange: bool) -> Vec<VariantScatter
                 xy: v
                     .records
                     .iter()
+                    .filter(|r| r.centred())
                     .map(|r| (nano(r.outputs[k]), nano(r.outputs[k + 1])))
                     .collect(),
             });
@@ -111,7 +112,10 @@ fn convergence(variants: &[&VariantReport]) -> Result<Vec<ConvergenceSeries>, St
             .collect();
         for &(k0, point) in &starts {
             for (j, &dof) in Dof::ALL.iter().enumerate() {
-                let values: Vec<f64> = v.records.iter().map(|r| nano(r.outputs[k0 + j])).collect();
+                let values: Vec<f64> = (v.records.iter())
+                    .filter(|r| r.centred())
+                    .map(|r| nano(r.outputs[k0 + j]))
+                    .collect();
                 out.push(ConvergenceSeries {
                     variant: series_label(v, point, starts.len()),
                     dof,

@@ -158,12 +158,9 @@ impl PredictionInput {
     }
 }
 
+/// A fitted value or an interval end: 4 significant digits.
 fn number(v: f64) -> String {
-    if v != 0.0 && (v.abs() < 1e-3 || v.abs() >= 1e4) {
-        format!("{v:.4e}")
-    } else {
-        format!("{v:.5}")
-    }
+    crate::report::table::significant(v, 4)
 }
 
 /// The measured block as a reference row (nm, nrad).

@@ -2,7 +2,7 @@
 //! interval of each sigma under it, and the reference values that match.
 
 use super::reference::ReferenceRow;
-use crate::report::study_text::{interval_methods, sigma_cells, sigma_columns};
+use crate::report::study_text::{interval_methods, sigma_cells, sigma_columns, sigma_estimates};
 use crate::report::table::escape;
 use crate::report::table::{Cell, Table, cells};
 use crate::study::result::varied_kinds;
@@ -28,7 +28,7 @@ pub fn metadata(source: &str, r: &StudyReport) -> String {
     }
     let mut s = t.html("meta");
     let mut t = Table::new(
-        ">#; <scene; <name; >samples; >sampler; >seed; >replicates; >μ_s; >spread; >μ_d/μ_s; <varied",
+        ">#; <scene; <name; >samples; >sampler; >seed; >replicates; >μ_s:.4g; >spread:.4g; >μ_d/μ_s:.4g; <varied",
     );
     for (i, v) in r.variants.iter().enumerate() {
         t.row(cells![
@@ -93,9 +93,11 @@ pub fn sigma_table(
         .filter(|v| !v.partial)
         .flat_map(|v| stats(v));
     let methods = interval_methods(points, "none");
+    let estimates = sigma_estimates(variants.iter().copied().filter(|v| !v.partial));
     t.html("sigma")
         + &format!(
-            "<p class=\"note\">σ: standard deviation of the seated pose relative to the nominal seating (divisor n − 1; for a replicated LHS the unbiased replicate estimate). Below each σ its 90 % interval, by a method valid for the design: {}.</p>\n",
+            "<p class=\"note\">σ: standard deviation of the seated pose relative to the nominal seating ({}). Below each σ its 90 % interval, by a method valid for the design: {}.</p>\n",
+            escape(&estimates),
             escape(&methods)
         )
 }

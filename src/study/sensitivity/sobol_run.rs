@@ -24,6 +24,16 @@ pub fn run_sobol(
     let rows = saltelli_rows(spec.dims, base_samples, spec.seed).map_err(design_err)?;
     let mut records = evaluate_rows(coupling, opts, rows.into_iter().enumerate().collect(), tick)?;
     records.sort_by_key(|r| r.index);
+    let failed = records.iter().filter(|r| !r.centred()).count();
+    if failed > 0 {
+        return Err(RunError::Options {
+            file,
+            reason: format!(
+                "--sensitivity: {failed} of the {} Saltelli seatings did not centre; the Sobol indices need every seating (narrow --offset-bounds/--tilt-bounds or drop --sensitivity)",
+                records.len()
+            ),
+        });
+    }
     Ok(SobolRun {
         base_samples,
         seed: spec.seed,

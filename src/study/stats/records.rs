@@ -26,6 +26,22 @@ pub struct SampleRecord {
     pub outputs: Vec<f64>,
 }
 
+impl SampleRecord {
+    /// A sample whose seating did not centre (varied start): no outputs.
+    pub fn not_centred(index: usize, inputs: Vec<f64>) -> Self {
+        SampleRecord {
+            index,
+            inputs,
+            outputs: Vec::new(),
+        }
+    }
+
+    /// False for a seating that did not centre.
+    pub fn centred(&self) -> bool {
+        !self.outputs.is_empty()
+    }
+}
+
 /// What one shard (one batch job) writes.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ShardFile {
@@ -63,7 +79,7 @@ impl ShardFile {
                     what: format!("{} inputs, design has {} dims", r.inputs.len(), d.dims),
                 });
             }
-            if r.outputs.len() != self.output_names.len() {
+            if r.centred() && r.outputs.len() != self.output_names.len() {
                 return Err(StudyError::RecordShape {
                     index: r.index,
                     what: format!(

@@ -16,14 +16,25 @@ use std::path::Path;
 
 pub fn contact(o: Checked<ContactArgs, ContactInputs>) -> Result<(), CliError> {
     let Checked { args: a, opts } = o;
-    let eval = opts.pair.evaluate(a.load)?;
-    if let Some(warning) = conformity_warning(&opts.pair.law()?.hertz, a.load) {
+    if let (Some(path), Some(friction)) = (&a.history, opts.history_friction) {
+        if let Some(load) = a.load {
+            eprintln!(
+                "warning: --load {load} is not used with --history: the normal loads come from the P_N column of {}",
+                path.display()
+            );
+        }
+        return history(&opts.pair, path, friction, a.tangential_law);
+    }
+    // Without --history the flags require --load.
+    let load = a.load.unwrap_or(f64::NAN);
+    let eval = opts.pair.evaluate(load)?;
+    if let Some(warning) = conformity_warning(&opts.pair.law()?.hertz, load) {
         eprintln!("warning: {warning}");
     }
-    match (&a.history, opts.history_friction) {
-        (Some(path), Some(friction)) => history(&opts.pair, path, friction, a.tangential_law),
-        _ if a.json => print_json(&eval),
-        _ => emit(&contact_table(&eval)),
+    if a.json {
+        print_json(&eval)
+    } else {
+        emit(&contact_table(&eval))
     }
 }
 
@@ -38,6 +49,11 @@ fn history(
     let rows = parse_history_csv(&read_text(path)?, &file)?;
     let loads: Vec<LoadStep> = rows.iter().map(|r| r.load).collect();
     let law = pair.law()?;
+    // Hertz's half-space assumption is checked at the largest normal load.
+    let peak = loads.iter().map(|l| l.normal_force).fold(0.0, f64::max);
+    if let Some(warning) = conformity_warning(&law.hertz, peak) {
+        eprintln!("warning: {warning}");
+    }
     let steps = drive(&law, tangential_law, friction, &loads).map_err(|e| {
         let step = match &e {
             HistoryError::BadNormal { step, .. }

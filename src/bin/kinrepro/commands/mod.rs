@@ -88,9 +88,20 @@ pub fn progress(total: usize) -> Result<indicatif::ProgressBar, CliError> {
         return Ok(indicatif::ProgressBar::hidden());
     }
     let b = indicatif::ProgressBar::new(total as u64);
-    b.set_style(indicatif::ProgressStyle::with_template(
-        "{elapsed_precise} [{bar:40}] {pos}/{len} seatings ({eta})",
-    )?);
+    let style = indicatif::ProgressStyle::with_template(
+        "{elapsed_precise} [{bar:40}] {pos}/{len} seatings{remaining}",
+    )?
+    .with_key(
+        "remaining",
+        |s: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
+            let left =
+                kinrepro::report::progress::remaining(s.elapsed(), s.pos(), s.len().unwrap_or(0));
+            if let Some(left) = left {
+                let _ = write!(w, " (about {} left)", indicatif::HumanDuration(left));
+            }
+        },
+    );
+    b.set_style(style);
     Ok(b)
 }
 

@@ -244,10 +244,16 @@ pub fn study(a: &StudyArgs) -> Result<StudyOptions, CliError> {
             }
             Ok(v)
         };
-        Some(StartBounds {
+        let b = StartBounds {
             offset: bounds("offset-bounds", a.offset_bounds.as_deref())?,
             tilt: bounds("tilt-bounds", a.tilt_bounds.as_deref())?,
-        })
+        };
+        if b.offset.iter().chain(b.tilt.iter()).all(|x| *x == 0.0) {
+            return Err(usage(
+                "--vary start needs its bounds: --offset-bounds X,Y,Z [m] and/or --tilt-bounds X,Y,Z [rad] (half-widths; without them the start would not vary)",
+            ));
+        }
+        Some(b)
     } else if a.offset_bounds.is_some() || a.tilt_bounds.is_some() {
         return Err(usage("--offset-bounds and --tilt-bounds need --vary start"));
     } else {

@@ -104,9 +104,9 @@ pub struct ContactArgs {
     /// Material of the fixed element.
     #[arg(long)]
     pub material2: String,
-    /// Normal load [N].
-    #[arg(long, allow_hyphen_values = true)]
-    pub load: f64,
+    /// Normal load [N] (not with --history, whose file gives the loads).
+    #[arg(long, allow_hyphen_values = true, required_unless_present = "history")]
+    pub load: Option<f64>,
     /// Print one JSON object instead of a table.
     #[arg(long, conflicts_with = "history")]
     pub json: bool,
