@@ -141,6 +141,28 @@ pub fn check_explicit(
             ));
         }
     }
+    check_surfaces(f, ctx)?;
+    let p = &f.preload;
+    let listed = p.forces.iter().enumerate();
+    let forces = listed.map(|(i, e)| (&e.force, format!("preload.forces[{}].force", i + 1)));
+    let single = p.force.iter().map(|v| (v, "preload.force".to_string()));
+    for (v, field) in single.chain(forces) {
+        let force = *v.get_ref();
+        if force > PRELOAD_MAX {
+            return Err(too_large(
+                ctx,
+                Some(&v.span()),
+                &field,
+                format!("{force} N is an implausibly large preload (limit {PRELOAD_MAX} N)"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The explicit surfaces' radii: pins, fixed balls and gothic-arch flanks,
+/// and the moving patches (canoe faces, moving pins).
+fn check_surfaces(f: &SceneFile, ctx: &ErrorContext) -> Result<(), SceneError> {
     for (i, s) in f.surfaces.iter().enumerate() {
         let (Some(r), SurfaceKind::Cylinder | SurfaceKind::Sphere | SurfaceKind::ConcaveCylinder) =
             (&s.radius, s.kind.get_ref())
@@ -171,21 +193,6 @@ pub fn check_explicit(
                     "a moving patch radius of {} m is implausibly large (limit {CANOE_RADIUS_MAX} m)",
                     r.get_ref()
                 ),
-            ));
-        }
-    }
-    let p = &f.preload;
-    let listed = p.forces.iter().enumerate();
-    let forces = listed.map(|(i, e)| (&e.force, format!("preload.forces[{}].force", i + 1)));
-    let single = p.force.iter().map(|v| (v, "preload.force".to_string()));
-    for (v, field) in single.chain(forces) {
-        let force = *v.get_ref();
-        if force > PRELOAD_MAX {
-            return Err(too_large(
-                ctx,
-                Some(&v.span()),
-                &field,
-                format!("{force} N is an implausibly large preload (limit {PRELOAD_MAX} N)"),
             ));
         }
     }
