@@ -217,9 +217,17 @@ fn couplings_that_cannot_be_built_say_why() {
 #[test]
 fn the_new_bundled_scenes_check_study_and_validate() {
     for (name, shape, radii) in [
-        ("maxwell_gothic_arch_steel.toml", "sphere-groove", [0.005, -0.0055]),
+        (
+            "maxwell_gothic_arch_steel.toml",
+            "sphere-groove",
+            [0.005, -0.0055],
+        ),
         ("maxwell_canoe_steel.toml", "sphere-plane", [0.25, f64::NAN]),
-        ("maxwell_crossed_pins_steel.toml", "crossed-cylinders", [0.005, 0.002]),
+        (
+            "maxwell_crossed_pins_steel.toml",
+            "crossed-cylinders",
+            [0.005, 0.002],
+        ),
     ] {
         let path = scene(name);
         let path = path.to_str().unwrap();
@@ -229,7 +237,14 @@ fn the_new_bundled_scenes_check_study_and_validate() {
         assert!(ok, "{name}: {err}");
         let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
         let sigma = &doc["variants"][0]["points"][0]["sigma"];
-        for key in ["x_nm", "y_nm", "z_nm", "phi_x_nrad", "phi_y_nrad", "phi_z_nrad"] {
+        for key in [
+            "x_nm",
+            "y_nm",
+            "z_nm",
+            "phi_x_nrad",
+            "phi_y_nrad",
+            "phi_z_nrad",
+        ] {
             let s = sigma[key].as_f64().unwrap();
             assert!(s.is_finite() && s > 0.0, "{name} {key}: {s}");
         }
@@ -247,9 +262,15 @@ fn the_new_bundled_scenes_check_study_and_validate() {
         if radii[1].is_finite() {
             assert_eq!(r["radii_m"][1].as_f64().unwrap(), radii[1]);
         }
-        assert!(r["approach_error_rel"].as_f64().unwrap().abs() < 0.05, "{r}");
+        assert!(
+            r["approach_error_rel"].as_f64().unwrap().abs() < 0.05,
+            "{r}"
+        );
         for k in 0..2 {
-            assert!(r["semi_axes_error_rel"][k].as_f64().unwrap().abs() < 0.05, "{r}");
+            assert!(
+                r["semi_axes_error_rel"][k].as_f64().unwrap().abs() < 0.05,
+                "{r}"
+            );
         }
     }
 }
