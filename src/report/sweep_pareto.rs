@@ -3,13 +3,14 @@
 //! colour, each front point labelled `#index` (the `#` of the table of
 //! design points). Labels are placed ([`place_labels`]) so that none
 //! overlaps another label or a marker and none leaves the plot; a label
-//! pushed away from its point is joined to it by a thin line.
+//! pushed away from its point is joined to it by a thin line. The data
+//! (which designs, where) come from `report::sweep_plot`.
 
+use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use crate::explore::{DesignReport, SweepReport};
 use crate::report::plot::color;
-use crate::report::sweep_plot::{Area, SweepPlotError, draw_err, sigma_max, span};
 
 /// Label font size [px] and the width of one of its characters (digits
 /// and `#` of a sans-serif font, rounded up) [px].
@@ -88,14 +89,16 @@ pub fn place_labels(
     placed
 }
 
-/// The chart into `area`.
-pub fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
-    let pts: Vec<(f64, f64, &DesignReport)> = r
-        .designs
-        .iter()
-        .filter_map(|d| Some((r.objectives(d)?.stiffness_min * 1e-6, sigma_max(r, d)?, d)))
-        .collect();
-    let (x0, x1) = span(&pts.iter().map(|p| p.0).collect::<Vec<_>>());
+/// The chart into `area`: `pts` the evaluated designs at (k_min [N/um],
+/// largest translational sigma [nm]), `(x0, x1)` the stiffness axis (the
+/// error: plotters' message).
+pub fn draw(
+    r: &SweepReport,
+    pts: &[(f64, f64, &DesignReport)],
+    (x0, x1): (f64, f64),
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+) -> Result<(), String> {
+    let draw_err = |e: DrawingAreaErrorKind<_>| e.to_string();
     let ymax = pts.iter().map(|p| p.1).fold(0.0, f64::max);
     let mut chart = ChartBuilder::on(area)
         .caption(
@@ -118,7 +121,7 @@ pub fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> 
         .label_style(("sans-serif", 12))
         .draw()
         .map_err(draw_err)?;
-    for (x, y, d) in &pts {
+    for (x, y, d) in pts {
         let col = match d.pareto == Some(true) {
             true => color(5),
             false => RGBColor(150, 150, 150),

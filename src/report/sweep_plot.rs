@@ -19,7 +19,7 @@ use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
 use crate::report::atomic::{WriteError, check_overwrite, write_file};
 use crate::report::plot::color;
-use crate::report::sweep_pareto::pareto_chart;
+use crate::report::sweep_pareto;
 use crate::report::sweep_status;
 use crate::report::sweep_text::field_label;
 use crate::report::sweep_text::short as tick;
@@ -34,11 +34,11 @@ pub enum SweepPlotError {
     Write(#[from] WriteError),
 }
 
-pub(crate) fn draw_err<E: std::fmt::Display>(e: E) -> SweepPlotError {
+fn draw_err<E: std::fmt::Display>(e: E) -> SweepPlotError {
     SweepPlotError::Draw(e.to_string())
 }
 
-pub(crate) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 /// The design charts as (file stem / title, SVG text), in a fixed order:
@@ -333,7 +333,7 @@ fn value_tick(v: &SweptValue) -> String {
 }
 
 /// Axis span of `xs` with 5 % margins (a unit span around a single value).
-pub(crate) fn span(xs: &[f64]) -> (f64, f64) {
+fn span(xs: &[f64]) -> (f64, f64) {
     let lo = xs.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = xs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     if !lo.is_finite() || !hi.is_finite() {
@@ -363,7 +363,7 @@ fn ramp(t: f64) -> RGBColor {
 }
 
 /// Largest translational sigma at the Pareto point [nm].
-pub(crate) fn sigma_max(r: &SweepReport, d: &DesignReport) -> Option<f64> {
+fn sigma_max(r: &SweepReport, d: &DesignReport) -> Option<f64> {
     let s = point(r, d)?.sigma.values();
     Some(s[0].max(s[1]).max(s[2]))
 }
@@ -379,6 +379,17 @@ fn levels(r: &SweepReport, k: usize) -> Vec<SweptValue> {
         }
     }
     v
+}
+
+/// The Pareto chart (`report::sweep_pareto`) of the evaluated designs.
+fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
+    let pts: Vec<(f64, f64, &DesignReport)> = r
+        .designs
+        .iter()
+        .filter_map(|d| Some((r.objectives(d)?.stiffness_min * 1e-6, sigma_max(r, d)?, d)))
+        .collect();
+    let xr = span(&pts.iter().map(|p| p.0).collect::<Vec<_>>());
+    sweep_pareto::draw(r, &pts, xr, area).map_err(SweepPlotError::Draw)
 }
 
 /// Heat map over the two fields of a grid: cells by level index, coloured
