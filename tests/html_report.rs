@@ -32,7 +32,17 @@ window.addEventListener('load', () => {
     const s = svg ? svg.getBoundingClientRect() : { width: -1, height: -1 };
     out.items.push({ kind: el.dataset.check, id: el.id, w: r.width, h: r.height,
       visible: cs.display !== 'none' && cs.visibility !== 'hidden' && cs.opacity !== '0',
-      svg_w: s.width, svg_h: s.height });
+      svg_w: s.width, svg_h: s.height,
+      box_w: (el.closest('.scroll') || el.parentElement).clientWidth });
+  });
+  // Chart labels `#N` (the Pareto front's) per figure, and the SVG's box.
+  out.labels = {}; out.label_svg = {};
+  document.querySelectorAll('figure[data-check=chart]').forEach(f => {
+    const svg = f.querySelector('svg'); if (!svg) return;
+    const s = svg.getBoundingClientRect();
+    out.label_svg[f.id] = [s.left, s.top, s.right, s.bottom];
+    out.labels[f.id] = [...svg.querySelectorAll('text')].filter(t => /^#[0-9]+$/.test(t.textContent.trim()))
+      .map(t => { const b = t.getBoundingClientRect(); return [b.left, b.top, b.right, b.bottom]; });
   });
   const pre = document.createElement('pre');
   pre.id = 'probe';
@@ -166,42 +176,186 @@ fn report_is_self_contained_complete_and_renders_in_chromium() {
     browser_checks(&exe, tmp.path(), &html, &STUDY_REPORT);
 }
 
-/// `sweep --html`: the design charts of a 2 x 2 grid (sigma against each of
-/// the two fields, the heat map, the Pareto front), self-contained, each
-/// visible in Chromium without a console error.
+/// `sweep --html`: a report fit for a design review, self-contained: the
+/// provenance (version, seed), the table of design points with the
+/// sweep JSON's numbers and the reason of an invalid point, the charts
+/// with units on the axes and the Pareto front labelled by the table's #,
+/// the base scene's text; in Chromium every element visible, the Pareto
+/// labels neither overlapping nor leaving their chart, and at 1400 px no
+/// table wider than its box.
 #[test]
-fn sweep_html_is_self_contained_and_renders_in_chromium() {
+fn sweep_html_is_a_design_review_report_in_chromium() {
     let tmp = tempfile::tempdir().unwrap();
     let html_file = tmp.path().join("report.html");
     let s1 = scene("01_maxwell_vgroove_steel.toml");
-    let (ok, _, err) = kinrepro(&[
+    // `tubes` is no groove: those two points are invalid, with a reason.
+    let (ok, json, err) = kinrepro(&[
         "sweep",
         s1.to_str().unwrap(),
         "--set",
-        "preload.force=5,20",
+        "preload.force=10,20",
         "--set",
-        "coupling.opening_angle_deg=60,90",
-        "--sampler",
-        "mc",
+        "coupling.groove=planes,cylinders,tubes",
+        "--set",
+        "coupling.groove_element_diameter=0.006",
         "--samples",
-        "20",
+        "10",
+        "--seed",
+        "7",
+        "--format",
+        "json",
         "--html",
         html_file.to_str().unwrap(),
     ]);
     assert!(ok, "{err}");
+    let sweep: serde_json::Value = serde_json::from_str(&json).unwrap();
     let html = std::fs::read_to_string(&html_file).unwrap();
     self_contained(&html);
-    assert_eq!(html.matches("data-check=\"chart\"").count(), 4);
-    // Each chart carries the run's provenance.
-    assert_eq!(html.matches("sampler mc, seed 1, samples 20").count(), 4);
+    sweep_static_checks(&html, &sweep, &std::fs::read_to_string(&s1).unwrap());
     let Some(exe) = chromium() else { return };
+    // sigma against each of 3 fields, the Pareto front, the points not evaluated.
     let expect = Expect {
-        charts: 4,
+        charts: 5,
         drawings: 0,
-        min_tables: 0,
-        scenes: 0,
+        min_tables: 2,
+        scenes: 1,
     };
     browser_checks(&exe, tmp.path(), &html, &expect);
+    let dom = probe_dom(&exe, tmp.path(), &html, "1400,2000");
+    let r = probe_result(&dom, "1400");
+    tables_fit(&r, "1400");
+    let front = sweep["designs"].as_array().unwrap().iter();
+    let front = front.filter(|d| d["pareto"] == true).count();
+    labels_apart(&r, "sweep-pareto", front);
+}
+
+/// Text as HTML escapes it (independently of the report's escaping).
+fn html_escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+        .replace('\'', "&#39;")
+}
+
+/// Provenance, units, the table's rows against the sweep JSON, the
+/// Pareto labels, the scene text.
+fn sweep_static_checks(html: &str, sweep: &serde_json::Value, scene_text: &str) {
+    let version = env!("CARGO_PKG_VERSION");
+    for s in [
+        format!("<td class=\"l\">kinrepro version</td><td class=\"l\">{version}</td>"),
+        "<td class=\"l\">seed</td><td class=\"l\">7</td>".to_string(),
+        "<td class=\"l\">samples per design point</td><td class=\"l\">10</td>".to_string(),
+        "<td class=\"l\">design</td><td class=\"l\">grid, 6 points</td>".to_string(),
+        "preload.force [N] = 10,20".to_string(),
+        "<th class=\"l\">coupling.groove_element_diameter [m]</th>".to_string(),
+        "<th>σ_x [nm]</th>".to_string(),
+        "<th>σ_φz [nrad]</th>".to_string(),
+        "<th>k_min [N/µm]</th>".to_string(),
+        // Chart axes with units.
+        ">\npreload.force [N]\n</text>".to_string(),
+        ">\nlowest principal translational stiffness k_min [N/µm]\n</text>".to_string(),
+        format!(
+            "<pre data-check=\"scene\">{}</pre>",
+            html_escape(scene_text)
+        ),
+    ] {
+        assert!(html.contains(&s), "missing {s}");
+    }
+    let designs = sweep["designs"].as_array().unwrap();
+    assert_eq!(designs.len(), 6);
+    let table = &html[html.find("<table class=\"designs\"").unwrap()..];
+    let table = &table[..table.find("</table>").unwrap()];
+    for d in designs {
+        let i = d["index"].as_u64().unwrap();
+        let groove = d["values"]["coupling.groove"].as_str().unwrap();
+        let row = format!("<tr><td>{i}</td><td class=\"l\">");
+        let at = table.find(&row).unwrap_or_else(|| panic!("no row #{i}"));
+        let row = &table[at..at + table[at..].find("</tr>").unwrap()];
+        assert!(row.contains(&format!(">{groove}</td>")), "{row}");
+        if d["status"] == "ok" {
+            let sx = d["points"][0]["sigma"]["x_nm"].as_f64().unwrap();
+            let k = d["principal_stiffness_n_per_m"][0].as_f64().unwrap() * 1e-6;
+            assert!(row.contains(&format!("<td>{sx:.3}<span")), "{row}");
+            assert!(row.contains(&format!("<td>{k:.2}</td>")), "{row}");
+            let front = d["pareto"] == true;
+            assert_eq!(row.contains(">front</td>"), front, "{row}");
+            // The Pareto chart labels a front point with its #.
+            assert_eq!(html.contains(&format!(">\n#{i}\n</text>")), front, "#{i}");
+        } else {
+            assert_eq!(groove, "tubes");
+            let reason = html_escape(d["status"].as_str().unwrap());
+            assert!(reason.starts_with("invalid: coupling.groove"), "{reason}");
+            assert!(
+                row.contains(&format!("<td class=\"l\">{reason}</td>")),
+                "{row}"
+            );
+        }
+    }
+}
+
+/// Headless Chromium's DOM of `html` with the probe, at `window`.
+fn probe_dom(exe: &Path, tmp: &Path, html: &str, window: &str) -> String {
+    let probe_csp = format!("{CSP}; script-src 'unsafe-inline'");
+    let probed = html
+        .replace(
+            &format!("content=\"{CSP}\""),
+            &format!("content=\"{probe_csp}\""),
+        )
+        .replacen("<head>", &format!("<head>\n{PROBE}"), 1);
+    let probe_file = tmp.join("probe.html");
+    std::fs::write(&probe_file, probed).unwrap();
+    run_chromium(exe, tmp, &probe_file, window, &["--dump-dom".to_string()]).0
+}
+
+/// The probe's JSON out of a dumped DOM.
+fn probe_result(dom: &str, window: &str) -> serde_json::Value {
+    let start = dom
+        .find("<pre id=\"probe\">")
+        .unwrap_or_else(|| panic!("{window}: the probe did not run"))
+        + 16;
+    let text = &dom[start..start + dom[start..].find("</pre>").unwrap()];
+    let text = text
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&");
+    serde_json::from_str(&text).unwrap()
+}
+
+/// No table is wider than the box it sits in.
+fn tables_fit(r: &serde_json::Value, window: &str) {
+    let tables = r["items"].as_array().unwrap().iter();
+    let tables: Vec<_> = tables.filter(|i| i["kind"] == "table").collect();
+    assert!(!tables.is_empty());
+    for t in tables {
+        assert!(
+            t["w"].as_f64().unwrap() <= t["box_w"].as_f64().unwrap() + 1.0,
+            "{window}: a table wider than its box: {t}"
+        );
+    }
+}
+
+/// The `#N` labels in the chart `figure`: `n` of them, no two
+/// overlapping, each inside its SVG.
+fn labels_apart(r: &serde_json::Value, figure: &str, n: usize) {
+    let labels: Vec<[f64; 4]> = r["labels"][figure]
+        .as_array()
+        .unwrap_or_else(|| panic!("no chart {figure}: {r}"))
+        .iter()
+        .map(|b| [0, 1, 2, 3].map(|k| b[k].as_f64().unwrap()))
+        .collect();
+    assert_eq!(labels.len(), n, "{figure}");
+    let svg = [0, 1, 2, 3].map(|k| r["label_svg"][figure][k].as_f64().unwrap());
+    for (i, a) in labels.iter().enumerate() {
+        assert!(
+            a[0] >= svg[0] && a[1] >= svg[1] && a[2] <= svg[2] && a[3] <= svg[3],
+            "{figure}: label {a:?} outside {svg:?}"
+        );
+        for b in &labels[i + 1..] {
+            let apart = a[2] <= b[0] || b[2] <= a[0] || a[3] <= b[1] || b[3] <= a[1];
+            assert!(apart, "{figure}: labels {a:?} and {b:?} overlap");
+        }
+    }
 }
 
 /// No external resource of any kind; the CSP; A4 print rules.
@@ -326,33 +480,15 @@ fn browser_checks(exe: &Path, tmp: &Path, html: &str, expect: &Expect) {
         );
     }
     // 2. With the probe, on a desktop and on a phone width.
-    let probe_csp = format!("{CSP}; script-src 'unsafe-inline'");
-    let probed = html
-        .replace(
-            &format!("content=\"{CSP}\""),
-            &format!("content=\"{probe_csp}\""),
-        )
-        .replacen("<head>", &format!("<head>\n{PROBE}"), 1);
-    let probe_file = tmp.join("probe.html");
-    std::fs::write(&probe_file, probed).unwrap();
     // Desktop, and the narrowest window headless Chromium opens (500 px).
     for window in ["1280,2000", "500,900"] {
-        let (dom, _) = run_chromium(exe, tmp, &probe_file, window, &["--dump-dom".to_string()]);
+        let dom = probe_dom(exe, tmp, html, window);
         check_probe(&dom, window, expect);
     }
 }
 
 fn check_probe(dom: &str, window: &str, expect: &Expect) {
-    let start = dom
-        .find("<pre id=\"probe\">")
-        .unwrap_or_else(|| panic!("{window}: the probe did not run"))
-        + 16;
-    let text = &dom[start..start + dom[start..].find("</pre>").unwrap()];
-    let text = text
-        .replace("&lt;", "<")
-        .replace("&gt;", ">")
-        .replace("&amp;", "&");
-    let r: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let r = probe_result(dom, window);
     assert_eq!(
         r["errors"].as_array().unwrap().len(),
         0,

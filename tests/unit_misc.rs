@@ -163,3 +163,34 @@ mod html {
         assert!(html.contains("viewBox=\"0 0 50 10\""));
     }
 }
+
+/// Pareto labels: for a tight cluster of markers and points at the plot's
+/// edges, every label lies inside the plot and overlaps neither another
+/// label nor a marker (radius 4 px).
+#[test]
+fn pareto_labels_are_placed_apart_and_inside() {
+    use kinrepro::report::sweep_pareto::place_labels;
+    let bounds = [0.0, 0.0, 400.0, 300.0];
+    let mut points: Vec<(f64, f64)> = (0..12)
+        .map(|i| (200.0 + 3.0 * (i % 4) as f64, 150.0 + 3.0 * (i / 4) as f64))
+        .collect();
+    points.extend([(1.0, 1.0), (399.0, 299.0), (399.0, 1.0), (1.0, 299.0)]);
+    let labelled: Vec<usize> = (0..points.len()).collect();
+    let sizes = vec![(23.0, 14.0); points.len()];
+    let boxes = place_labels(&points, &labelled, &sizes, bounds);
+    let apart =
+        |a: &[f64; 4], b: &[f64; 4]| a[2] <= b[0] || b[2] <= a[0] || a[3] <= b[1] || b[3] <= a[1];
+    for (i, a) in boxes.iter().enumerate() {
+        assert!(a[0] >= 0.0 && a[1] >= 0.0 && a[2] <= 400.0 && a[3] <= 300.0);
+        assert!((a[2] - a[0] - 23.0).abs() < 1e-12 && (a[3] - a[1] - 14.0).abs() < 1e-12);
+        for b in &boxes[i + 1..] {
+            assert!(apart(a, b), "{a:?} {b:?}");
+        }
+        for &(x, y) in &points {
+            assert!(
+                apart(a, &[x - 4.0, y - 4.0, x + 4.0, y + 4.0]),
+                "{a:?} on ({x}, {y})"
+            );
+        }
+    }
+}

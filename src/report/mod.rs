@@ -19,6 +19,7 @@ pub mod sensitivity;
 pub mod study_files;
 pub mod study_table;
 pub mod study_text;
+pub mod sweep_pareto;
 pub mod sweep_plot;
 pub mod sweep_status;
 pub mod sweep_text;

@@ -19,7 +19,9 @@ use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
 use crate::report::atomic::{WriteError, check_overwrite, write_file};
 use crate::report::plot::color;
+use crate::report::sweep_pareto;
 use crate::report::sweep_status;
+use crate::report::sweep_text::field_label;
 use crate::report::sweep_text::short as tick;
 use crate::study::PointStats;
 
@@ -49,12 +51,13 @@ pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> 
     let mut out = Vec::new();
     for k in 0..r.sets.len() {
         let title = format!("sweep_sigma_{}", r.sets[k].field.replace('.', "_"));
-        out.push((title, svg(&foot, (1200, 760), |a| sigma_chart(r, k, a))?));
+        let size = (1200, 760 + legend_height(groups(r, k).len()));
+        out.push((title, svg(&foot, size, |a| sigma_chart(r, k, a))?));
     }
     if r.sets.len() == 2 && r.design.name() == "grid" {
         out.push((
             "sweep_heatmap".to_string(),
-            svg(&foot, (900, 640), |a| heatmap(r, a))?,
+            svg(&foot, (1200, 700), |a| heatmap(r, a))?,
         ));
     }
     if r.designs
@@ -65,7 +68,7 @@ pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> 
     {
         out.push((
             "sweep_pareto".to_string(),
-            svg(&foot, (820, 620), |a| pareto_chart(r, a))?,
+            svg(&foot, (1200, 700), |a| pareto_chart(r, a))?,
         ));
     }
     if !sweep_status::not_evaluated(r).is_empty() {
@@ -171,7 +174,9 @@ fn sigma_chart(r: &SweepReport, k: usize, area: &Area) -> Result<(), SweepPlotEr
         "σ at {} against {} ({})",
         r.pareto_point, r.sets[k].field, r.name
     );
-    let panels = area.titled(&title, ("sans-serif", 20)).map_err(draw_err)?;
+    let below = area.titled(&title, ("sans-serif", 20)).map_err(draw_err)?;
+    let (legend_area, panels) = below.split_vertically(legend_height(groups.len()));
+    legend(&groups, &legend_area)?;
     let xs: Vec<f64> = groups
         .iter()
         .flat_map(|(_, g)| g.iter().map(|p| p.0))
@@ -179,7 +184,7 @@ fn sigma_chart(r: &SweepReport, k: usize, area: &Area) -> Result<(), SweepPlotEr
     let xr = span(&xs);
     for (j, cell) in panels.split_evenly((2, 3)).iter().enumerate() {
         // Per group: (x, sigma, interval low, high) of DOF j [nm or nrad].
-        let series: Vec<(&str, Vec<[f64; 4]>)> = groups
+        let series: Vec<(RGBColor, Vec<[f64; 4]>)> = groups
             .iter()
             .map(|(label, g)| {
                 let rows = g
@@ -196,24 +201,66 @@ fn sigma_chart(r: &SweepReport, k: usize, area: &Area) -> Result<(), SweepPlotEr
                         ])
                     })
                     .collect();
-                (label.as_str(), rows)
+                (color_of(label, &groups), rows)
             })
             .collect();
-        dof_panel(r, k, Dof::ALL[j], &series, cell, xr, j == 0)?;
+        dof_panel(r, k, Dof::ALL[j], &series, cell, xr)?;
+    }
+    Ok(())
+}
+
+/// Lines of the legend shown; the rest are counted in a last line.
+const LEGEND_LINES: usize = 8;
+
+/// Height [px] of the legend strip above the panels (none for one group).
+fn legend_height(groups: usize) -> u32 {
+    match groups {
+        0 | 1 => 0,
+        n => 8 + 16 * n.min(LEGEND_LINES + 1) as u32,
+    }
+}
+
+/// Colour of the group `label`: its position among the groups.
+fn color_of(label: &str, groups: &Groups) -> RGBColor {
+    color(groups.iter().position(|(l, _)| l == label).unwrap_or(0))
+}
+
+/// The legend of the groups in a strip of its own above the panels, so
+/// that it covers no curve: per group a line in its colour and its label.
+fn legend(groups: &Groups, area: &Area) -> Result<(), SweepPlotError> {
+    if groups.len() < 2 {
+        return Ok(());
+    }
+    let font = ("sans-serif", 13).into_font();
+    for (i, (label, _)) in groups.iter().take(LEGEND_LINES).enumerate() {
+        let y = 12 + 16 * i as i32;
+        let col = color(i);
+        area.draw(&PathElement::new(
+            vec![(70, y), (96, y)],
+            col.stroke_width(3),
+        ))
+        .map_err(draw_err)?;
+        area.draw(&Text::new(label.clone(), (104, y - 7), font.clone()))
+            .map_err(draw_err)?;
+    }
+    if groups.len() > LEGEND_LINES {
+        let more = format!("and {} more lines", groups.len() - LEGEND_LINES);
+        let y = 5 + 16 * LEGEND_LINES as i32;
+        area.draw(&Text::new(more, (104, y), font))
+            .map_err(draw_err)?;
     }
     Ok(())
 }
 
 /// One DOF's panel: per group the sigma line and dots, the interval as a
-/// band and as bars; the legend of the groups if `legend`.
+/// band and as bars.
 fn dof_panel(
     r: &SweepReport,
     k: usize,
     dof: Dof,
-    series: &[(&str, Vec<[f64; 4]>)],
+    series: &[(RGBColor, Vec<[f64; 4]>)],
     cell: &Area,
     (x0, x1): (f64, f64),
-    legend: bool,
 ) -> Result<(), SweepPlotError> {
     let ymax = series
         .iter()
@@ -236,36 +283,20 @@ fn dof_panel(
         .configure_mesh()
         .label_style(("sans-serif", 12))
         .x_label_formatter(&fmt)
-        .x_desc(r.sets[k].field.as_str())
+        .x_desc(field_label(&r.sets[k].field))
         .y_desc(format!("σ_{} [{}]", dof.symbol(), dof.unit()))
         .draw()
         .map_err(draw_err)?;
-    for (gi, (label, g)) in series.iter().enumerate() {
-        let label = if legend && gi < 8 { *label } else { "" };
-        group(&mut chart, color(gi), label, g)?;
-    }
-    if legend && series.len() > 1 {
-        chart
-            .configure_series_labels()
-            .label_font(("sans-serif", 11))
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
-            .map_err(draw_err)?;
+    for (col, g) in series {
+        group(&mut chart, *col, g)?;
     }
     Ok(())
 }
 
 /// One group's sigma line and dots, its interval as a band (where every
-/// point has one) and as bars; `label` (if not empty) enters the legend.
+/// point has one) and as bars.
 /// Rows of `g`: [x, sigma, interval low, interval high].
-fn group(
-    chart: &mut Chart,
-    col: RGBColor,
-    label: &str,
-    g: &[[f64; 4]],
-) -> Result<(), SweepPlotError> {
+fn group(chart: &mut Chart, col: RGBColor, g: &[[f64; 4]]) -> Result<(), SweepPlotError> {
     let band: Vec<(f64, f64)> = g
         .iter()
         .map(|v| (v[0], v[3]))
@@ -284,16 +315,12 @@ fn group(
     chart
         .draw_series(g.iter().map(|v| Circle::new((v[0], v[1]), 3, col.filled())))
         .map_err(draw_err)?;
-    let line = chart
+    chart
         .draw_series(LineSeries::new(
             g.iter().map(|v| (v[0], v[1])),
             col.stroke_width(2),
         ))
         .map_err(draw_err)?;
-    if !label.is_empty() {
-        line.label(label)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 14, y)], col.stroke_width(2)));
-    }
     Ok(())
 }
 
@@ -354,6 +381,17 @@ fn levels(r: &SweepReport, k: usize) -> Vec<SweptValue> {
     v
 }
 
+/// The Pareto chart (`report::sweep_pareto`) of the evaluated designs.
+fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
+    let pts: Vec<(f64, f64, &DesignReport)> = r
+        .designs
+        .iter()
+        .filter_map(|d| Some((r.objectives(d)?.stiffness_min * 1e-6, sigma_max(r, d)?, d)))
+        .collect();
+    let xr = span(&pts.iter().map(|p| p.0).collect::<Vec<_>>());
+    sweep_pareto::draw(r, &pts, xr, area).map_err(SweepPlotError::Draw)
+}
+
 /// Heat map over the two fields of a grid: cells by level index, coloured
 /// by the largest translational sigma; designs not evaluated are grey.
 fn heatmap(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
@@ -388,8 +426,8 @@ fn heatmap(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
         .y_labels(ly.len())
         .x_label_formatter(&label(&lx))
         .y_label_formatter(&label(&ly))
-        .x_desc(r.sets[0].field.as_str())
-        .y_desc(r.sets[1].field.as_str())
+        .x_desc(field_label(&r.sets[0].field))
+        .y_desc(field_label(&r.sets[1].field))
         .label_style(("sans-serif", 12))
         .draw()
         .map_err(draw_err)?;
@@ -422,63 +460,6 @@ fn heatmap(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
                 ("sans-serif", 12).into_font().color(&ink),
             )))
             .map_err(draw_err)?;
-    }
-    Ok(())
-}
-
-/// The Pareto front: every evaluated design at (lowest principal
-/// stiffness [N/um], largest translational sigma [nm]); the front in
-/// colour with its index and safety factor, dominated designs grey.
-fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
-    let pts: Vec<(f64, f64, &DesignReport)> = r
-        .designs
-        .iter()
-        .filter_map(|d| Some((r.objectives(d)?.stiffness_min * 1e-6, sigma_max(r, d)?, d)))
-        .collect();
-    let (x0, x1) = span(&pts.iter().map(|p| p.0).collect::<Vec<_>>());
-    let ymax = pts.iter().map(|p| p.1).fold(0.0, f64::max);
-    let mut chart = ChartBuilder::on(area)
-        .caption(
-            "Pareto front: lower σ, higher k_min, higher SF_p (front: coloured, #index SF_p)",
-            ("sans-serif", 16),
-        )
-        .margin(10)
-        .x_label_area_size(40)
-        .y_label_area_size(70)
-        .build_cartesian_2d(x0..x1, 0.0..(ymax * 1.15).max(1e-12))
-        .map_err(draw_err)?;
-    chart
-        .configure_mesh()
-        .x_desc("lowest principal translational stiffness k_min [N/µm]")
-        .y_desc(format!(
-            "largest translational σ at {} [nm]",
-            r.pareto_point
-        ))
-        .label_style(("sans-serif", 12))
-        .draw()
-        .map_err(draw_err)?;
-    for (x, y, d) in &pts {
-        let on = d.pareto == Some(true);
-        let col = if on {
-            color(5)
-        } else {
-            RGBColor(150, 150, 150)
-        };
-        chart
-            .draw_series(std::iter::once(Circle::new((*x, *y), 4, col.filled())))
-            .map_err(draw_err)?;
-        if on {
-            let sf = d
-                .min_pressure_safety_factor
-                .map_or("-".to_string(), |s| format!("{s:.2}"));
-            chart
-                .draw_series(std::iter::once(Text::new(
-                    format!("#{} SF {sf}", d.index),
-                    (*x, *y),
-                    ("sans-serif", 11),
-                )))
-                .map_err(draw_err)?;
-        }
     }
     Ok(())
 }

@@ -26,6 +26,34 @@ pub fn short(v: f64) -> String {
     }
 }
 
+/// The unit of a swept field in the scene format (docs/scenes.md): `m`,
+/// `deg`, `N`, ...; `-` for a dimensionless number, "" for a name.
+pub fn field_unit(path: &str) -> &'static str {
+    match path.rsplit('.').next().unwrap_or(path) {
+        "diameter"
+        | "ball_diameter"
+        | "groove_element_diameter"
+        | "groove_radius"
+        | "canoe_radius" => "m",
+        "opening_angle_deg" => "deg",
+        "support_compliance" => "m/N",
+        "force" => "N",
+        "ramp_time" => "s",
+        "decay_coefficient" => "s/m",
+        "youngs_modulus" | "allowable_pressure" | "allowable_shear_stress" => "Pa",
+        "mu_static" | "spread" | "dynamic_ratio" | "poisson_ratio" => "-",
+        _ => "",
+    }
+}
+
+/// A swept field with its unit, for headers and axes: `preload.force [N]`.
+pub fn field_label(path: &str) -> String {
+    match field_unit(path) {
+        "" => path.to_string(),
+        u => format!("{path} [{u}]"),
+    }
+}
+
 /// Provenance and design columns, then the swept fields, then these.
 pub const CSV_TAIL: &str = "status,pareto,point,dof,unit,n,mean,min,max,sigma,three_sigma,sigma_ci90_low,sigma_ci90_high,sigma_interval_method,min_principal_stiffness_n_per_m,min_pressure_safety_factor,friction_limit,friction_limit_margin,nominal_approach_m";
 

@@ -13,6 +13,9 @@
 //! explicit form of `kinrepro expand`), and last any extra sections given
 //! as `(title, svg)` ([`Section`], e.g. a sweep's design charts).
 //!
+//! A sweep's report (`kinrepro sweep --html FILE`) is its own page:
+//! [`sweep`].
+//!
 //! Every element the browser test checks carries `data-check` (`table`,
 //! `chart`, `drawing`).
 
@@ -24,6 +27,7 @@ pub(crate) mod page;
 pub mod prediction;
 pub mod reference;
 mod svg;
+pub mod sweep;
 mod tables;
 
 use std::fmt::Write;

@@ -29,6 +29,11 @@ th { background: var(--head); }
 td.l, th.l { text-align: left; white-space: normal; min-width: 8em; }
 td .ci { display: block; color: var(--muted); font-size: 0.78rem; }
 tr.ref td { background: #fffbe6; }
+table.designs { font-size: 0.8rem; }
+table.designs th { white-space: normal; }
+table.designs th.l { overflow-wrap: anywhere; }
+table.designs td.l, table.designs th.l { min-width: 5em; }
+table.designs td .ci { white-space: normal; }
 figure { margin: 1rem 0 1.4rem; }
 figure svg { display: block; max-width: 100%; height: auto; border: 1px solid var(--line); background: #fff; }
 .views { display: flex; flex-wrap: wrap; gap: 1rem; }

@@ -12,8 +12,7 @@ use crate::study::{PointStats, StudyReport, VariantReport};
 /// samples, what varied, shard; then one row per scene.
 pub fn metadata(source: &str, r: &StudyReport) -> String {
     let or_scene = |x: Option<String>| x.unwrap_or_else(|| "per scene".to_string());
-    let mut t = Table::new("<setting; <value");
-    for (k, v) in [
+    let mut s = settings([
         ("source", source.to_string()),
         ("kinrepro version", r.kinrepro_version.clone()),
         ("output schema", r.schema_version.to_string()),
@@ -23,10 +22,7 @@ pub fn metadata(source: &str, r: &StudyReport) -> String {
         ("samples", or_scene(r.samples.map(|s| s.to_string()))),
         ("varied", r.vary.join(", ")),
         ("shard", r.shard.to_string()),
-    ] {
-        t.row(cells![k, v]);
-    }
-    let mut s = t.html("meta");
+    ]);
     let mut t = Table::new(
         ">#; <scene; <name; >samples; >sampler; >seed; >replicates; >μ_s:.4g; >spread:.4g; >μ_d/μ_s:.4g; <varied",
     );
@@ -47,6 +43,15 @@ pub fn metadata(source: &str, r: &StudyReport) -> String {
     }
     s += &t.html("");
     s
+}
+
+/// A provenance table: one row per (setting, value).
+pub fn settings<'a>(rows: impl IntoIterator<Item = (&'a str, String)>) -> String {
+    let mut t = Table::new("<setting; <value");
+    for (k, v) in rows {
+        t.row(cells![k, v]);
+    }
+    t.html("meta")
 }
 
 /// One row per variant and evaluation point: sigma, and under it the 90 %

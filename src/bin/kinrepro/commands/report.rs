@@ -5,9 +5,7 @@
 use std::path::Path;
 
 use kinrepro::assembly::Coupling;
-use kinrepro::report::html::{
-    HtmlReport, Section, StudyInput, load_reference, load_study, scene_input,
-};
+use kinrepro::report::html::{HtmlReport, StudyInput, load_reference, load_study, scene_input};
 use kinrepro::study::StudyReport;
 
 use super::*;
@@ -20,13 +18,7 @@ pub fn report(args: ReportArgs) -> Result<(), CliError> {
         .iter()
         .map(|p| load_study(p))
         .collect::<Result<Vec<_>, _>>()?;
-    write_html(
-        studies,
-        Vec::new(),
-        args.reference.as_deref(),
-        &args.out,
-        args.force,
-    )
+    write_html(studies, args.reference.as_deref(), &args.out, args.force)
 }
 
 /// `study --html FILE`: the report of the study just run.
@@ -47,26 +39,25 @@ pub fn study_html(
         scenes,
         prediction: Default::default(),
     };
-    write_html(vec![study], Vec::new(), reference, out, force)
+    write_html(vec![study], reference, out, force)
 }
 
-/// `sweep --html FILE`: the sweep's design charts (each carries its
-/// provenance line) as sections of a self-contained HTML report.
+/// `sweep --html FILE`: the sweep's report (provenance, design points,
+/// charts, base scene); `scene_text`: the base scene file as read.
 pub fn sweep_html(
     report: &kinrepro::explore::SweepReport,
+    scene_text: &str,
     out: &Path,
     force: bool,
 ) -> Result<(), CliError> {
-    let sections = kinrepro::report::sweep_plot::charts(report)?
-        .into_iter()
-        .map(|(title, svg)| Section { title, svg })
-        .collect();
-    write_html(Vec::new(), sections, None, out, force)
+    let html = kinrepro::report::html::sweep::sweep_html(report, scene_text)?;
+    kinrepro::report::atomic::write_file(out, &html, force)?;
+    eprintln!("wrote {}", out.display());
+    Ok(())
 }
 
 fn write_html(
     studies: Vec<StudyInput>,
-    sections: Vec<Section>,
     reference: Option<&Path>,
     out: &Path,
     force: bool,
@@ -79,7 +70,7 @@ fn write_html(
         studies,
         references,
         reference_source: reference.map(|p| p.display().to_string()),
-        sections,
+        sections: Vec::new(),
     }
     .render()?;
     kinrepro::report::atomic::write_file(out, &html, force)?;
