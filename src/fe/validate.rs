@@ -32,9 +32,16 @@ pub fn solve_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError>
     let mesh = build_mesh(ax, ay, opt)?;
     let (fixed, vals) = boundary_conditions(&mesh, &mat)?;
     let sys = assemble(&mesh, &mat, &fixed, &vals)?;
-    let fac = Factor::nested_dissection(&sys, &mesh)?;
     let top = TopNodes::new(&mesh, &sys, [ax, ay], opt.fine_zone_rel);
-    let model = contact_model(case, &top, &fac, &vals)?;
+    // The gap at the candidates first: an exact gap undefined there is an
+    // error before the costly factorisation.
+    let h = top
+        .cand
+        .iter()
+        .map(|&(i, j)| top.profile(i, j, case))
+        .collect::<Result<_, _>>()?;
+    let fac = Factor::nested_dissection(&sys, &mesh)?;
+    let model = contact_model(case, h, &top, &fac, &vals);
     let (curve, st) = load_curve(case, &model, opt.curve_levels)?;
     let (semi_axes, peak_pressure, min_pressure) = outputs(&top, &st)?;
     let result = FeResult {
@@ -170,13 +177,15 @@ impl<'a> TopNodes<'a> {
 
 /// The contact candidates condensed: compliance columns (a unit downward
 /// force at candidate j gives w = K⁻¹ e_j, solved [`BATCH`] at a time) and
-/// the unit Boussinesq response (downward displacement w = -u_z).
+/// the unit Boussinesq response (downward displacement w = -u_z), with the
+/// gap `h` at the candidates and the case's gap at the other top nodes.
 fn contact_model(
     case: &FeCase,
+    h: Vec<f64>,
     top: &TopNodes,
     fac: &Factor,
     vals: &[f64],
-) -> Result<ContactModel, FeError> {
+) -> ContactModel {
     let sys = top.sys;
     let wval = |sol: &Mat<f64>, col: usize, i: usize, j: usize| {
         let e = top.zeq(i, j);
@@ -214,11 +223,7 @@ fn contact_model(
             }
         }
     }
-    let h = cand
-        .iter()
-        .map(|&(i, j)| top.profile(i, j, case))
-        .collect::<Result<_, _>>()?;
-    Ok(ContactModel {
+    ContactModel {
         h,
         c,
         w_unit: cand.iter().map(|&(i, j)| w_b(i, j)).collect(),
@@ -232,7 +237,7 @@ fn contact_model(
             .iter()
             .map(|&(i, j)| !top.is_cand(i + 1, j) || !top.is_cand(i, j + 1))
             .collect(),
-    })
+    }
 }
 
 /// The force-approach curve at `levels` equal load steps up to the case's

@@ -70,7 +70,7 @@ const CONFORMITY_NOTE: &str = "Both FE bodies are half-spaces with the exact gap
 /// the ratio where they part by the study's limit and kinrepro's warning ratio.
 pub fn conformity_table(studies: &[ConformityStudy]) -> String {
     let mut s = format!(
-        "Conformity of a ball in a gothic-arch groove: FE with the exact gap of ball and groove (exact) and with\nHertz's quadratic gap (quad.) against kinrepro's Hertz law (FE/Hertz - 1), and exact/quad. - 1 on the same mesh\n(the error of the quadratic gap alone), as the groove radius R_g closes on the ball radius r at a fixed load.\nSemi-axes: along, across the groove. * a bisection ratio.\n{CONFORMITY_NOTE}\n"
+        "Conformity of a ball in a gothic-arch groove: FE with the exact gap of ball and groove (exact) and with\nHertz's quadratic gap (quad.) against kinrepro's Hertz law (FE/Hertz - 1), and exact/quad. - 1 on the same mesh\n(the error of the quadratic gap alone), as the groove radius R_g closes on the ball radius r at a fixed load.\nSemi-axes: along, across the groove, resolved only to the node spacing (the approach is the criterion).\n* a bisection ratio.\n{CONFORMITY_NOTE}\n"
     );
     for st in studies {
         s += &format!(
@@ -114,9 +114,9 @@ pub fn conformity_table(studies: &[ConformityStudy]) -> String {
 /// The lines under a study's table: the limit ratio and the warning ratio.
 fn conformity_summary(st: &ConformityStudy) -> String {
     let limit = 100.0 * LIMIT;
-    let mut s = match (st.ratio_at_limit, st.conformity_at_limit, &st.parts_first) {
-        (Some(q), Some(c), Some(part)) => format!(
-            "The exact gap parts from Hertz's by {limit:.0} % at R_g/r = {q:.5} (a/R_x = {c:.3}), the {part} first.\n"
+    let mut s = match (st.ratio_at_limit, st.conformity_at_limit) {
+        (Some(q), Some(c)) => format!(
+            "The exact gap's approach parts from the quadratic gap's by {limit:.0} % at R_g/r = {q:.5} (a/R_x = {c:.3}).\n"
         ),
         _ => format!(
             "No bracket of the {limit:.0} % crossing among these ratios (none reaches it, or the first already does).\n"
