@@ -25,7 +25,7 @@ use crate::contact::hertz::CONFORMITY_LIMIT;
 use crate::contact::{ContactPair, ContactShape};
 
 /// The ratios R_g / r of the study's table.
-pub const RATIOS: [f64; 7] = [1.5, 1.1, 1.01, 1.003, 1.001, 1.0003, 1.0001];
+pub const RATIOS: [f64; 8] = [1.5, 1.1, 1.01, 1.003, 1.001, 1.0003, 1.0001, 1.00005];
 /// The difference the study looks for.
 pub const LIMIT: f64 = 0.02;
 /// Bisection steps between the last table ratio below [`LIMIT`] and the first above.

@@ -228,7 +228,7 @@ pub struct ValidateHertzArgs {
     #[arg(long)]
     pub conformity: bool,
     /// The groove / ball radius ratios of --conformity (each > 1,
-    /// descending; default 1.5,1.1,1.01,1.003,1.001,1.0003,1.0001).
+    /// descending; default 1.5,1.1,1.01,1.003,1.001,1.0003,1.0001,1.00005).
     #[arg(long, value_delimiter = ',')]
     pub ratios: Option<Vec<f64>>,
     /// Print a JSON array (SI units) instead of a table.
