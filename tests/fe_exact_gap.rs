@@ -392,7 +392,7 @@ fn the_conformity_report_states_its_limits_and_ratios() {
     let text = kinrepro::report::validate_hertz::conformity_table(&[st]);
     for needle in [
         "not where the half-space assumption",
-        "R_g/r = 1.00025",
+        "R_g/r = 1.000250",
         "a/R_x = 0.330",
         "starts at R_g/r = 1.00400",
     ] {

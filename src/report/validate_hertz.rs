@@ -116,7 +116,7 @@ fn conformity_summary(st: &ConformityStudy) -> String {
     let limit = 100.0 * LIMIT;
     let mut s = match (st.ratio_at_limit, st.conformity_at_limit) {
         (Some(q), Some(c)) => format!(
-            "The exact gap's approach parts from the quadratic gap's by {limit:.0} % at R_g/r = {q:.5} (a/R_x = {c:.3}).\n"
+            "The exact gap's approach parts from the quadratic gap's by {limit:.0} % at R_g/r = {q:.6} (a/R_x = {c:.3}).\n"
         ),
         _ => format!(
             "No bracket of the {limit:.0} % crossing among these ratios (none reaches it, or the first already does).\n"
