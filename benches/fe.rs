@@ -1,6 +1,6 @@
 //! One sphere-cylinder (steel/steel) FE validation at the default mesh.
 use criterion::{Criterion, criterion_group, criterion_main};
-use kinrepro::fe::{FeCase, MeshOptions, solve_case};
+use kinrepro::fe::{FeCase, Gap, MeshOptions, solve_case};
 use kinrepro::material::{Material, effective_modulus};
 use std::hint::black_box;
 
@@ -13,6 +13,7 @@ fn bench(c: &mut Criterion) {
             &Material::builtin("steel").unwrap(),
         ),
         load: 20.0 / (6.0 * std::f64::consts::FRAC_1_SQRT_2),
+        gap: Gap::Quadratic,
     };
     let mesh = MeshOptions::default();
     c.bench_function("sphere_cylinder_steel_default_mesh", |b| {

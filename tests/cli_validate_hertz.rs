@@ -70,3 +70,77 @@ fn coarse_validation_of_a_scene_reports_every_pair_within_five_percent() {
         "flat {flat}, fixed balls {balls}"
     );
 }
+
+/// `--conformity` on the gothic-arch scene at one mild ratio (coarse mesh):
+/// one study with one row, the groove radius set by the ratio, the exact
+/// and quadratic gaps within 0.2 % of each other at a/r = 0.02 (the gap's
+/// quartic excess is 3/4 (a/r)^2 = 3e-4 at the contact edge), no 2 %
+/// crossing among the ratios, and the warning ratio where Hertz's a/R_x
+/// (elliptical closed form via kinrepro's HertzLaw with R_x = r,
+/// R_y = r R_g / (R_g - r) by hand) is 0.1.
+#[test]
+fn conformity_study_of_the_gothic_arch_scene() {
+    let scene = common::scene("maxwell_gothic_arch_steel.toml");
+    let (ok, out, err) = common::kinrepro(&[
+        "validate-hertz",
+        "--conformity",
+        scene.to_str().unwrap(),
+        "--mesh",
+        "coarse",
+        "--ratios",
+        "1.5",
+        "--json",
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let st = &v.as_array().unwrap()[0];
+    let rows = st["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 1);
+    let row = &rows[0];
+    assert_eq!(row["groove_over_ball"].as_f64().unwrap(), 1.5);
+    assert!((row["groove_radius_m"].as_f64().unwrap() / 7.5e-3 - 1.0).abs() < 1e-12);
+    assert!(row["gap_effect_rel"][0].as_f64().unwrap().abs() < 2e-3);
+    assert!(row["approach_error_rel"].as_f64().unwrap().abs() < 0.05);
+    assert!(st["ratio_at_limit"].is_null());
+    assert!((st["groove_radius_m"].as_f64().unwrap() / 5.5e-3 - 1.0).abs() < 1e-12);
+    let (r, load) = (5e-3, st["load_n"].as_f64().unwrap());
+    let w = st["warning_ratio"].as_f64().unwrap();
+    let rg = w * r;
+    let law = kinrepro::contact::HertzLaw::elliptical(r, r * rg / (rg - r), common::E_STAR_STEEL);
+    let conformity = law.semi_axes(load)[0] / r;
+    assert!((conformity / 0.1 - 1.0).abs() < 1e-6, "{conformity}");
+}
+
+#[test]
+fn conformity_flags_are_checked() {
+    let gothic = common::scene("maxwell_gothic_arch_steel.toml");
+    let planes = common::scene("01_maxwell_vgroove_steel.toml");
+    for (args, needle) in [
+        (
+            vec!["--ratios", "1.5", gothic.to_str().unwrap()],
+            "--ratios goes with --conformity",
+        ),
+        (
+            vec!["--conformity", "--ratios", "0.9", gothic.to_str().unwrap()],
+            "above 1",
+        ),
+        (
+            vec![
+                "--conformity",
+                "--ratios",
+                "1.1,1.5",
+                gothic.to_str().unwrap(),
+            ],
+            "descending",
+        ),
+        (
+            vec!["--conformity", planes.to_str().unwrap()],
+            "no sphere-groove",
+        ),
+    ] {
+        let mut all = vec!["validate-hertz"];
+        all.extend(args);
+        let (ok, _, err) = common::kinrepro(&all);
+        assert!(!ok && err.contains(needle), "{all:?}: {err}");
+    }
+}

@@ -4,7 +4,7 @@
 mod common;
 
 use kinrepro::fe::contact::ContactModel;
-use kinrepro::fe::{FeCase, FeError, MeshOptions, convergence_study, hertz, solve_case};
+use kinrepro::fe::{FeCase, FeError, Gap, MeshOptions, convergence_study, hertz, solve_case};
 use kinrepro::material::{Material, effective_modulus};
 
 fn e_star(m1: &str, m2: &str) -> f64 {
@@ -37,6 +37,7 @@ fn cases() -> Vec<(&'static str, FeCase)> {
         ry,
         e_star,
         load: f,
+        gap: Gap::Quadratic,
     };
     vec![
         ("sphere-plane steel", mk(5e-3, 5e-3, steel())),
@@ -92,6 +93,7 @@ fn sphere_plane_curve_follows_closed_form() {
         ry: r,
         e_star: es,
         load: load(),
+        gap: Gap::Quadratic,
     };
     let res = solve_case(&c, &MeshOptions::coarse()).unwrap();
     assert_eq!(res.curve.len(), MeshOptions::coarse().curve_levels);
@@ -127,6 +129,7 @@ fn bad_input_is_an_error() {
         ry: 5e-3,
         e_star: steel(),
         load: 1.0,
+        gap: Gap::Quadratic,
     };
     let m = MeshOptions::coarse();
     for bad in [

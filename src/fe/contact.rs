@@ -1,5 +1,5 @@
 //! Frictionless unilateral (Signorini) contact of a rigid indenter with gap profile
-//! `h(x, y) = x²/(2Rx) + y²/(2Ry)` on the top surface, force controlled, solved by a
+//! `h(x, y)` (Hertz's `x²/(2Rx) + y²/(2Ry)` or an exact gap, [`crate::fe::gap`]) on the top surface, force controlled, solved by a
 //! primal–dual active-set method on the contact-candidate nodes.
 //!
 //! The elastic block is linear, so the downward displacement `w` of the candidate

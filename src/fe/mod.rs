@@ -2,7 +2,8 @@
 //! theory for the contact types of kinematic couplings.
 //!
 //! Model: a rigid indenter with the combined gap profile
-//! `h(x, y) = x²/(2Rx) + y²/(2Ry)` is pressed, frictionless, into an elastic quarter
+//! `h(x, y) = x²/(2Rx) + y²/(2Ry)` (or, on request, the exact separation of
+//! the pair's two surfaces, [`gap`]) is pressed, frictionless, into an elastic quarter
 //! block (symmetry rollers on `x = 0`, `y = 0`) whose outer faces carry the
 //! Boussinesq point-load displacement field of the total load, so that the block
 //! represents a half-space and the approach is measured from infinity, as in Hertz
@@ -12,17 +13,22 @@
 //!
 //! Modules: [`mesh`] (graded hexahedral mesh), [`elasticity`] (elements),
 //! [`system`] (assembly, sparse Cholesky), [`boussinesq`] (far field), [`contact`] (Signorini active set),
-//! [`hertz_ref`] (kinrepro's Hertz law, the reference), [`validate`] (case runner, convergence study).
+//! [`hertz_ref`] (kinrepro's Hertz law, the reference), [`validate`] (case runner, convergence study),
+//! [`gap`] (quadratic or exact gap), [`pairs`] (the pairs of scenes), [`conformity`] (exact against
+//! quadratic gap as a groove closes on its ball).
 
 pub mod boussinesq;
+pub mod conformity;
 pub mod contact;
 pub mod elasticity;
+pub mod gap;
 pub mod hertz_ref;
 pub mod mesh;
 pub mod pairs;
 pub mod system;
 pub mod validate;
 
+pub use gap::{Gap, Surface};
 pub use hertz_ref::{HertzSolution, hertz};
 pub use validate::{convergence_study, solve_case};
 
@@ -41,12 +47,17 @@ pub enum FeError {
     /// The contact zone reached the edge of the candidate (fine) zone.
     #[error("contact zone reaches the edge of the candidate zone; increase fine_zone_rel")]
     CandidateZoneTooSmall,
+    /// The exact gap is not defined where the case needs it.
+    #[error("exact gap undefined: {0}")]
+    GapUndefined(String),
     /// A non-finite or non-physical value appeared.
     #[error("non-finite or non-physical value in {0}")]
     NonFinite(&'static str),
 }
 
-/// One contact case: profile radii of the combined gap `h = x²/(2rx) + y²/(2ry)`.
+/// One contact case: profile radii of the combined gap `h = x²/(2rx) + y²/(2ry)`,
+/// which size the mesh and give the Hertz reference, and the gap profile the
+/// indenter has (that quadratic one by default, or the exact separation).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FeCase {
     /// Effective radius in the x–z plane (m).
@@ -57,6 +68,8 @@ pub struct FeCase {
     pub e_star: f64,
     /// Normal load (N).
     pub load: f64,
+    /// The gap profile of the indenter.
+    pub gap: Gap,
 }
 
 /// Mesh and model options.

@@ -4,7 +4,9 @@
 
 use serde::Serialize;
 
-use super::{ConvergenceRow, FeCase, FeError, MeshOptions, convergence_study, hertz, solve_case};
+use super::{
+    ConvergenceRow, FeCase, FeError, Gap, MeshOptions, convergence_study, hertz, solve_case,
+};
 use crate::assembly::Coupling;
 use crate::contact::{ContactPair, ContactShape};
 use crate::solve::quasistatic::seat;
@@ -73,6 +75,28 @@ pub fn distinct_pairs(couplings: &[Coupling]) -> Result<Vec<PairCase>, (String, 
     Ok(out)
 }
 
+/// The FE case of a pair at `load`: its relative radii and E* from
+/// kinrepro's contact law, with Hertz's quadratic gap or, if `exact`, the
+/// exact separation of its two surfaces ([`Gap::exact`]).
+pub fn fe_case(pair: &ContactPair, load: f64, exact: bool) -> Result<FeCase, FeError> {
+    let law = pair
+        .law()
+        .map_err(|e| FeError::InvalidInput(e.to_string()))?;
+    let [rx, ry] = law.hertz.radii;
+    let gap = if exact {
+        Gap::exact(&pair.curvature, rx, ry)?
+    } else {
+        Gap::Quadratic
+    };
+    Ok(FeCase {
+        rx,
+        ry,
+        e_star: law.hertz.e_star,
+        load,
+        gap,
+    })
+}
+
 /// Run the FE check of one pair; `levels` (element size / semi-axis) adds a
 /// convergence table.
 pub fn validate_pair(
@@ -80,19 +104,9 @@ pub fn validate_pair(
     mesh: &MeshOptions,
     levels: &[f64],
 ) -> Result<PairValidation, FeError> {
-    let law = case
-        .pair
-        .law()
-        .map_err(|e| FeError::InvalidInput(e.to_string()))?;
-    let [rx, ry] = law.hertz.radii;
-    let fe_case = FeCase {
-        rx,
-        ry,
-        e_star: law.hertz.e_star,
-        load: case.load,
-    };
+    let fe_case = fe_case(&case.pair, case.load, false)?;
     let fe = solve_case(&fe_case, mesh)?;
-    let hz = hertz(rx, ry, law.hertz.e_star, case.load)?;
+    let hz = hertz(fe_case.rx, fe_case.ry, fe_case.e_star, case.load)?;
     let rel = |a: f64, b: f64| a / b - 1.0;
     Ok(PairValidation {
         shape: case.pair.shape,

@@ -32,9 +32,16 @@ pub fn solve_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError>
     let mesh = build_mesh(ax, ay, opt)?;
     let (fixed, vals) = boundary_conditions(&mesh, &mat)?;
     let sys = assemble(&mesh, &mat, &fixed, &vals)?;
-    let fac = Factor::nested_dissection(&sys, &mesh)?;
     let top = TopNodes::new(&mesh, &sys, [ax, ay], opt.fine_zone_rel);
-    let model = contact_model(case, &top, &fac, &vals);
+    // The gap at the candidates first: an exact gap undefined there is an
+    // error before the costly factorisation.
+    let h = top
+        .cand
+        .iter()
+        .map(|&(i, j)| top.profile(i, j, case))
+        .collect::<Result<_, _>>()?;
+    let fac = Factor::nested_dissection(&sys, &mesh)?;
+    let model = contact_model(case, h, &top, &fac, &vals);
     let (curve, st) = load_curve(case, &model, opt.curve_levels)?;
     let (semi_axes, peak_pressure, min_pressure) = outputs(&top, &st)?;
     let result = FeResult {
@@ -151,17 +158,34 @@ impl<'a> TopNodes<'a> {
         self.sys.eq_of_dof[3 * self.node(i, j) + 2]
     }
 
-    /// The gap of the undeformed surface to the indenter, x²/2rx + y²/2ry.
-    fn profile(&self, i: usize, j: usize, rx: f64, ry: f64) -> f64 {
+    /// The gap of the undeformed surface to the indenter at a contact
+    /// candidate: an error where the case's exact gap is not defined.
+    fn profile(&self, i: usize, j: usize, case: &FeCase) -> Result<f64, FeError> {
         let x = self.mesh.nodes[self.node(i, j)];
-        x[0] * x[0] / (2.0 * rx) + x[1] * x[1] / (2.0 * ry)
+        case.gap.height_in_range(case.rx, case.ry, x[0], x[1])
+    }
+
+    /// The gap at another top node: infinite outside the footprint of an
+    /// exact gap's curved body (no indenter there to touch).
+    fn profile_other(&self, i: usize, j: usize, case: &FeCase) -> f64 {
+        let x = self.mesh.nodes[self.node(i, j)];
+        case.gap
+            .height(case.rx, case.ry, x[0], x[1])
+            .unwrap_or(f64::INFINITY)
     }
 }
 
 /// The contact candidates condensed: compliance columns (a unit downward
 /// force at candidate j gives w = K⁻¹ e_j, solved [`BATCH`] at a time) and
-/// the unit Boussinesq response (downward displacement w = -u_z).
-fn contact_model(case: &FeCase, top: &TopNodes, fac: &Factor, vals: &[f64]) -> ContactModel {
+/// the unit Boussinesq response (downward displacement w = -u_z), with the
+/// gap `h` at the candidates and the case's gap at the other top nodes.
+fn contact_model(
+    case: &FeCase,
+    h: Vec<f64>,
+    top: &TopNodes,
+    fac: &Factor,
+    vals: &[f64],
+) -> ContactModel {
     let sys = top.sys;
     let wval = |sol: &Mat<f64>, col: usize, i: usize, j: usize| {
         let e = top.zeq(i, j);
@@ -199,12 +223,14 @@ fn contact_model(case: &FeCase, top: &TopNodes, fac: &Factor, vals: &[f64]) -> C
             }
         }
     }
-    let profile = |&(i, j): &(usize, usize)| top.profile(i, j, case.rx, case.ry);
     ContactModel {
-        h: cand.iter().map(profile).collect(),
+        h,
         c,
         w_unit: cand.iter().map(|&(i, j)| w_b(i, j)).collect(),
-        h_other: other.iter().map(profile).collect(),
+        h_other: other
+            .iter()
+            .map(|&(i, j)| top.profile_other(i, j, case))
+            .collect(),
         c_other,
         w_unit_other: other.iter().map(|&(i, j)| w_b(i, j)).collect(),
         on_zone_edge: cand

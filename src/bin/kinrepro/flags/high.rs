@@ -320,6 +320,22 @@ pub fn validate_hertz(a: &ValidateHertzArgs) -> Result<MeshOptions, CliError> {
             "--convergence: element sizes must be positive numbers",
         ));
     }
+    if let Some(r) = &a.ratios {
+        if !a.conformity {
+            return Err(usage("--ratios goes with --conformity"));
+        }
+        if r.is_empty() || r.iter().any(|q| !(q.is_finite() && *q > 1.0)) {
+            return Err(usage(
+                "--ratios: groove / ball radius ratios must be numbers above 1",
+            ));
+        }
+        if r.windows(2).any(|w| w[1] >= w[0]) {
+            return Err(usage("--ratios: give the ratios in descending order"));
+        }
+    }
+    if a.conformity && a.convergence.is_some() {
+        return Err(usage("--convergence does not go with --conformity"));
+    }
     Ok(match a.mesh {
         MeshKind::Default => MeshOptions::default(),
         MeshKind::Coarse => MeshOptions::coarse(),

@@ -221,6 +221,16 @@ pub struct ValidateHertzArgs {
     /// size / contact semi-axis, e.g. 0.45,0.3,0.23,0.18).
     #[arg(long, value_delimiter = ',')]
     pub convergence: Option<Vec<f64>>,
+    /// Instead of the table of pairs: the conformity study of each
+    /// sphere-groove (gothic-arch) pair of the scenes, FE with the exact gap
+    /// of ball and groove against Hertz as the groove radius closes on the
+    /// ball's, and the ratio R_g/r at which they part by 2 %.
+    #[arg(long)]
+    pub conformity: bool,
+    /// The groove / ball radius ratios of --conformity (each > 1,
+    /// descending; default 1.5,1.1,1.01,1.003,1.001,1.0003,1.0001,1.00005).
+    #[arg(long, value_delimiter = ',')]
+    pub ratios: Option<Vec<f64>>,
     /// Print a JSON array (SI units) instead of a table.
     #[arg(long)]
     pub json: bool,
