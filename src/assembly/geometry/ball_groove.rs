@@ -11,7 +11,7 @@
 
 use nalgebra::Vector3;
 
-use super::ContactGeometry;
+use super::{ContactGeometry, axis_offset};
 
 #[inline(always)]
 pub(super) fn contact(
@@ -21,8 +21,7 @@ pub(super) fn contact(
     direction: &Vector3<f64>,
     groove_radius: f64,
 ) -> ContactGeometry {
-    let w = centre - axis_point;
-    let v = w - direction * w.dot(direction);
+    let v = axis_offset(centre, axis_point, direction);
     let d = v.norm();
     ContactGeometry::midway(centre, radius, groove_radius - d - radius, -v / d)
 }

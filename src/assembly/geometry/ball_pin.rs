@@ -8,7 +8,7 @@
 
 use nalgebra::Vector3;
 
-use super::ContactGeometry;
+use super::{ContactGeometry, axis_offset};
 
 #[inline(always)]
 pub(super) fn contact(
@@ -18,8 +18,7 @@ pub(super) fn contact(
     direction: &Vector3<f64>,
     pin_radius: f64,
 ) -> ContactGeometry {
-    let w = centre - axis_point;
-    let v = w - direction * w.dot(direction);
+    let v = axis_offset(centre, axis_point, direction);
     let d = v.norm();
     ContactGeometry::midway(centre, radius, d - pin_radius - radius, v / d)
 }

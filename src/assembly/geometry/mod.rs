@@ -50,6 +50,19 @@ impl ContactGeometry {
     }
 }
 
+/// The offset of `centre` from the line through `axis_point` along the
+/// unit `direction`: v = (c - a) - ((c - a) . d) d (a pin's or a groove's
+/// axis; its length is the centre's distance from the axis).
+#[inline(always)]
+fn axis_offset(
+    centre: &Vector3<f64>,
+    axis_point: &Vector3<f64>,
+    direction: &Vector3<f64>,
+) -> Vector3<f64> {
+    let w = centre - axis_point;
+    w - direction * w.dot(direction)
+}
+
 /// The geometry of a ball of `radius` centred at `centre` (world
 /// coordinates) against the fixed `surface`.
 #[inline]
@@ -130,7 +143,7 @@ pub fn parry_shape(
             direction,
             radius,
         } => {
-            let foot = axis_point + direction * direction.dot(&(ball_centre - axis_point));
+            let foot = ball_centre - axis_offset(ball_centre, &axis_point, &direction);
             let (a, b) = (
                 foot - direction * half_length,
                 foot + direction * half_length,
@@ -148,7 +161,7 @@ pub fn parry_shape(
             radius,
         } => {
             // parry's cylinder lies along its local y axis.
-            let foot = axis_point + direction * direction.dot(&(ball_centre - axis_point));
+            let foot = ball_centre - axis_offset(ball_centre, &axis_point, &direction);
             let rotation = Rotation::from_rotation_arc(Vector::Y, v(&direction));
             let cylinder = Cylinder::new(half_length, radius);
             (

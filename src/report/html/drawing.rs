@@ -247,21 +247,19 @@ fn ball_shapes(c: &Coupling, s: &Seating, b: usize, proj: Proj, scale: f64) -> V
     }
     for (k, axis) in pins {
         let (at, d) = (s.pose.apply(&k.centre), s.pose.rotation * axis);
-        let (pa, pb) = (p(&(at - d * 1.6 * r)), p(&(at + d * 1.6 * r)));
-        out.push(if (pa.0 - pb.0).hypot(pa.1 - pb.1) < 0.5 * k.radius {
-            Shape::Circle {
+        out.push(match rod_ends(proj, &at, &d, 1.6 * r, k.radius) {
+            None => Shape::Circle {
                 c: p(&at),
                 r: k.radius,
                 stroke: BALL,
                 fill: "#cfe6f5",
-            }
-        } else {
-            Shape::Line {
-                a: pa,
-                b: pb,
+            },
+            Some((a, b)) => Shape::Line {
+                a,
+                b,
                 width_m: 2.0 * k.radius,
                 colour: "#cfe6f5",
-            }
+            },
         });
     }
     for &i in &mine {
@@ -291,6 +289,23 @@ fn ball_shapes(c: &Coupling, s: &Seating, b: usize, proj: Proj, scale: f64) -> V
     out
 }
 
+/// The projected ends of a rod (a pin's axis) through `at` along the unit
+/// `direction`, `reach` either way; `None` when it is seen end-on (its
+/// projection shorter than half its `radius`), to be drawn as a circle.
+fn rod_ends(
+    proj: Proj,
+    at: &Vector3<f64>,
+    direction: &Vector3<f64>,
+    reach: f64,
+    radius: f64,
+) -> Option<((f64, f64), (f64, f64))> {
+    let (a, b) = (
+        proj.p(&(at - direction * reach)),
+        proj.p(&(at + direction * reach)),
+    );
+    ((a.0 - b.0).hypot(a.1 - b.1) >= 0.5 * radius).then_some((a, b))
+}
+
 fn fixed_element(proj: Proj, g: &SurfaceGeometry, r: f64) -> Vec<Shape> {
     let p = |v: &Vector3<f64>| proj.p(v);
     let grey = "#c6ccd3";
@@ -315,25 +330,22 @@ fn fixed_element(proj: Proj, g: &SurfaceGeometry, r: f64) -> Vec<Shape> {
         } => {
             // A gothic-arch flank is drawn as the outline of its cylinder.
             let concave = matches!(g, SurfaceGeometry::ConcaveCylinder { .. });
-            let (pa, pb) = (
-                p(&(axis_point - direction * 1.6 * r)),
-                p(&(axis_point + direction * 1.6 * r)),
-            );
-            if (pa.0 - pb.0).hypot(pa.1 - pb.1) < 0.5 * radius {
-                vec![Shape::Circle {
-                    c: p(&axis_point),
-                    r: radius,
-                    stroke: FIXED,
-                    fill: if concave { "none" } else { "#eaeef2" },
-                }]
-            } else {
-                vec![Shape::Line {
-                    a: pa,
-                    b: pb,
-                    width_m: if concave { 0.0 } else { 2.0 * radius },
-                    colour: if concave { FIXED } else { grey },
-                }]
-            }
+            vec![
+                match rod_ends(proj, &axis_point, &direction, 1.6 * r, radius) {
+                    None => Shape::Circle {
+                        c: p(&axis_point),
+                        r: radius,
+                        stroke: FIXED,
+                        fill: if concave { "none" } else { "#eaeef2" },
+                    },
+                    Some((a, b)) => Shape::Line {
+                        a,
+                        b,
+                        width_m: if concave { 0.0 } else { 2.0 * radius },
+                        colour: if concave { FIXED } else { grey },
+                    },
+                },
+            ]
         }
         SurfaceGeometry::Plane { point, normal } => {
             let (nx, ny) = p(&normal);
