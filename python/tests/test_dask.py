@@ -1,5 +1,6 @@
 """A study split into shards run as tasks on a dask.distributed cluster,
-merged: equal to one run (docs/python.md)."""
+merged: equal to one run (docs/python.md). The workers are separate
+processes, as on a cluster, so scenes and studies cross a pickle boundary."""
 
 import pytest
 
@@ -10,7 +11,7 @@ distributed = pytest.importorskip("distributed")
 
 def test_four_shards_on_a_local_cluster_merge_to_one_run(scene01, study01):
     with distributed.LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
     ) as cluster, distributed.Client(cluster) as client:
         futures = [
             client.submit(
