@@ -60,6 +60,9 @@ footer { margin-top: 3rem; border-top: 1px solid var(--line); padding-top: 0.6re
   figure, table, .views, .ball { break-inside: avoid; }
   pre { max-height: none; overflow: visible; white-space: pre-wrap; font-size: 7.5pt; }
   .scroll { overflow: visible; }
+  table { font-size: 8pt; }
+  th, td { padding: 0.1rem 0.3rem; }
+  th { white-space: normal; }
   figure svg { border: none; }
   a { color: inherit; text-decoration: none; }
 }

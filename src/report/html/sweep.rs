@@ -14,7 +14,7 @@ use super::tables::settings;
 use crate::explore::{DesignKind, DesignReport, SweepReport, SweptValue};
 use crate::report::study_text::{interval_methods, sigma_cells, sigma_columns};
 use crate::report::sweep_plot::{SweepPlotError, charts};
-use crate::report::sweep_text::{field_label, short};
+use crate::report::sweep_text::{field_label, short, sigma_estimates};
 use crate::report::table::{Cell, Column, Table, cells, escape};
 use crate::study::provenance::VERSION;
 
@@ -172,7 +172,8 @@ fn design_table(r: &SweepReport) -> String {
     let methods = interval_methods(r.designs.iter().flat_map(|d| &d.points), "none");
     t.html("designs")
         + &format!(
-            "<p class=\"note\">σ: standard deviation of the seated pose relative to the design's nominal seating (divisor n-1); under it the 90 % interval ({}). k_min: the lowest principal translational stiffness of the nominal seating; SF_p: the smallest safety factor against the allowable contact pressure; μ_lim: the friction limit for seating, margin: μ_lim - (μ_static + spread). Pareto: on the front of the three objectives. #: the label of the design point in the charts.</p>\n",
+            "<p class=\"note\">σ: standard deviation of the seated pose relative to the design's nominal seating ({}); under it the 90 % interval ({}). k_min: the lowest principal translational stiffness of the nominal seating; SF_p: the smallest safety factor against the allowable contact pressure; μ_lim: the friction limit for seating, margin: μ_lim - (μ_static + spread). Pareto: on the front of the three objectives. #: the label of the design point in the charts.</p>\n",
+            escape(&sigma_estimates(r)),
             escape(&methods)
         )
 }
