@@ -38,7 +38,7 @@ figure { margin: 1rem 0 1.4rem; }
 figure svg { display: block; max-width: 100%; height: auto; border: 1px solid var(--line); background: #fff; }
 .views { display: flex; flex-wrap: wrap; gap: 1rem; }
 .views figure { flex: 1 1 340px; margin: 0.4rem 0; }
-.balls { display: grid; grid-template-columns: repeat(auto-fill, minmax(330px, 1fr)); gap: 0.8rem; }
+.balls { display: grid; grid-template-columns: repeat(auto-fill, minmax(min(100%, 560px), 1fr)); gap: 0.8rem; }
 .ball { display: flex; gap: 0.4rem; }
 .ball figure { flex: 1 1 50%; margin: 0.3rem 0; min-width: 0; }
 pre { background: #f6f8fa; border: 1px solid var(--line); padding: 0.6rem; font-size: 0.8rem;
