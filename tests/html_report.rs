@@ -9,6 +9,8 @@
 //! (env CI=true), where that is a failure.
 
 mod common;
+#[path = "html_report/study_scenes.rs"]
+mod study_scenes;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -43,6 +45,15 @@ window.addEventListener('load', () => {
     out.label_svg[f.id] = [s.left, s.top, s.right, s.bottom];
     out.labels[f.id] = [...svg.querySelectorAll('text')].filter(t => /^#[0-9]+$/.test(t.textContent.trim()))
       .map(t => { const b = t.getBoundingClientRect(); return [b.left, b.top, b.right, b.bottom]; });
+  });
+  // Every text of the coupling drawings: box, font size in px of the page, dimension or not.
+  out.texts = {};
+  document.querySelectorAll('figure[data-check=drawing]').forEach(f => {
+    const svg = f.querySelector('svg'); if (!svg) return;
+    const k = svg.getBoundingClientRect().width / svg.viewBox.baseVal.width;
+    out.texts[f.id] = [...svg.querySelectorAll('text')].map(t => { const b = t.getBoundingClientRect();
+      return { box: [b.left, b.top, b.right, b.bottom], px: parseFloat(getComputedStyle(t).fontSize) * k,
+        dim: t.classList.contains('dim'), text: t.textContent }; });
   });
   const pre = document.createElement('pre');
   pre.id = 'probe';
@@ -180,9 +191,10 @@ fn report_is_self_contained_complete_and_renders_in_chromium() {
 /// provenance (version, seed), the table of design points with the
 /// sweep JSON's numbers and the reason of an invalid point, the charts
 /// with units on the axes and the Pareto front labelled by the table's #,
-/// the base scene's text; in Chromium every element visible, the Pareto
-/// labels neither overlapping nor leaving their chart, and at 1400 px no
-/// table wider than its box.
+/// the base scene's text and its coupling drawn with the scene's
+/// dimensions; in Chromium every element visible, the Pareto labels
+/// neither overlapping nor leaving their chart, and at 1400 px no table
+/// wider than its box.
 #[test]
 fn sweep_html_is_a_design_review_report_in_chromium() {
     let tmp = tempfile::tempdir().unwrap();
@@ -213,10 +225,12 @@ fn sweep_html_is_a_design_review_report_in_chromium() {
     self_contained(&html);
     sweep_static_checks(&html, &sweep, &std::fs::read_to_string(&s1).unwrap());
     let Some(exe) = chromium() else { return };
-    // sigma against each of 3 fields, the Pareto front, the points not evaluated.
+    // sigma against each of 3 fields, the Pareto front, the points not
+    // evaluated; the base coupling: a layout and a top and a side view of
+    // each of 3 balls.
     let expect = Expect {
         charts: 5,
-        drawings: 0,
+        drawings: 7,
         min_tables: 2,
         scenes: 1,
     };
@@ -227,6 +241,8 @@ fn sweep_html_is_a_design_review_report_in_chromium() {
     let front = sweep["designs"].as_array().unwrap().iter();
     let front = front.filter(|d| d["pareto"] == true).count();
     labels_apart(&r, "sweep-pareto", front);
+    let want = study_scenes::dimensions(&std::fs::read_to_string(&s1).unwrap());
+    study_scenes::drawing_labels(&r, "sweep", &want);
 }
 
 /// Text as HTML escapes it (independently of the report's escaping).

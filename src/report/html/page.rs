@@ -29,6 +29,7 @@ th { background: var(--head); }
 td.l, th.l { text-align: left; white-space: normal; min-width: 8em; }
 td .ci { display: block; color: var(--muted); font-size: 0.78rem; }
 tr.ref td { background: #fffbe6; }
+table.runs td.l, table.meta td.l { overflow-wrap: anywhere; }
 table.designs { font-size: 0.8rem; }
 table.designs th { white-space: normal; }
 table.designs th.l { overflow-wrap: anywhere; }
@@ -63,6 +64,8 @@ footer { margin-top: 3rem; border-top: 1px solid var(--line); padding-top: 0.6re
   table { font-size: 8pt; }
   th, td { padding: 0.1rem 0.3rem; }
   th { white-space: normal; }
+  td.l, th.l { min-width: 0; }
+  td .ci { font-size: 7pt; }
   figure svg { border: none; }
   a { color: inherit; text-decoration: none; }
 }
