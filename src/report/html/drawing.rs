@@ -60,11 +60,8 @@ impl Proj {
     /// shows its true opening; else along e_r. With the caption.
     fn side(c: &Coupling, s: &Seating, b: usize) -> (Self, &'static str) {
         let centre = s.pose.apply(&c.balls[b].centre);
-        let mine: Vec<&ContactResult> = (0..c.contacts.len())
-            .filter(|&i| c.contacts[i].ball == b)
-            .map(|i| &s.contacts[i])
-            .collect();
-        if let [i, j] = mine[..] {
+        if let [i, j] = contacts_of(c, b)[..] {
+            let (i, j) = (&s.contacts[i], &s.contacts[j]);
             let g = Vector3::from(i.normal).cross(&Vector3::from(j.normal));
             let h = Vector3::new(g.x, g.y, 0.0);
             if g.norm() > 1e-6 && h.norm() > 0.95 * g.norm() {
@@ -246,6 +243,13 @@ fn layout_shapes(c: &Coupling, s: &Seating) -> Vec<Shape> {
     out
 }
 
+/// The indices of the contacts of ball `b`.
+fn contacts_of(c: &Coupling, b: usize) -> Vec<usize> {
+    (0..c.contacts.len())
+        .filter(|&i| c.contacts[i].ball == b)
+        .collect()
+}
+
 /// The horizontal unit vector from the axis to `p` (y off the axis).
 fn outward(p: &Vector3<f64>) -> Vector3<f64> {
     let r = Vector3::new(p.x, p.y, 0.0);
@@ -259,9 +263,7 @@ fn outward(p: &Vector3<f64>) -> Vector3<f64> {
 /// A side view's dimensions: the ball's diameter (not for crossed pins)
 /// and, for a ball in a V of two contacts, the groove's opening angle.
 fn side_dimensions(c: &Coupling, s: &Seating, b: usize, proj: Proj) -> Vec<Shape> {
-    let mine: Vec<usize> = (0..c.contacts.len())
-        .filter(|&i| c.contacts[i].ball == b)
-        .collect();
+    let mine = contacts_of(c, b);
     if mine.iter().any(|&i| c.contacts[i].axis.is_some()) {
         return Vec::new();
     }
@@ -282,9 +284,7 @@ fn ball_shapes(c: &Coupling, s: &Seating, b: usize, proj: Proj, scale: f64) -> V
     let ball = &c.balls[b];
     let r = ball.radius;
     let mut out = Vec::new();
-    let mine: Vec<usize> = (0..c.contacts.len())
-        .filter(|&i| c.contacts[i].ball == b)
-        .collect();
+    let mine = contacts_of(c, b);
     for &i in &mine {
         out.extend(fixed_element(proj, &c.contacts[i].surface, r));
     }

@@ -66,6 +66,9 @@ footer { margin-top: 3rem; border-top: 1px solid var(--line); padding-top: 0.6re
   th { white-space: normal; }
   td.l, th.l { min-width: 0; }
   td .ci { font-size: 7pt; }
+  table.designs { font-size: 6.5pt; }
+  table.designs td.l { overflow-wrap: anywhere; }
+  table.designs th, table.designs td { padding: 0.05rem 0.15rem; }
   figure svg { border: none; }
   a { color: inherit; text-decoration: none; }
 }
