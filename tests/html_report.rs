@@ -9,6 +9,12 @@
 //! (env CI=true), where that is a failure.
 
 mod common;
+#[path = "html_report/forces.rs"]
+mod forces;
+#[path = "html_report/study_scenes.rs"]
+mod study_scenes;
+#[path = "html_report/sweep.rs"]
+mod sweep;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -43,6 +49,15 @@ window.addEventListener('load', () => {
     out.label_svg[f.id] = [s.left, s.top, s.right, s.bottom];
     out.labels[f.id] = [...svg.querySelectorAll('text')].filter(t => /^#[0-9]+$/.test(t.textContent.trim()))
       .map(t => { const b = t.getBoundingClientRect(); return [b.left, b.top, b.right, b.bottom]; });
+  });
+  // Every text of the coupling drawings: box, font size in px of the page, dimension or not.
+  out.texts = {};
+  document.querySelectorAll('figure[data-check=drawing]').forEach(f => {
+    const svg = f.querySelector('svg'); if (!svg) return;
+    const k = svg.getBoundingClientRect().width / svg.viewBox.baseVal.width;
+    out.texts[f.id] = [...svg.querySelectorAll('text')].map(t => { const b = t.getBoundingClientRect();
+      return { box: [b.left, b.top, b.right, b.bottom], px: parseFloat(getComputedStyle(t).fontSize) * k,
+        dim: t.classList.contains('dim'), text: t.textContent }; });
   });
   const pre = document.createElement('pre');
   pre.id = 'probe';
@@ -176,124 +191,6 @@ fn report_is_self_contained_complete_and_renders_in_chromium() {
     browser_checks(&exe, tmp.path(), &html, &STUDY_REPORT);
 }
 
-/// `sweep --html`: a report fit for a design review, self-contained: the
-/// provenance (version, seed), the table of design points with the
-/// sweep JSON's numbers and the reason of an invalid point, the charts
-/// with units on the axes and the Pareto front labelled by the table's #,
-/// the base scene's text; in Chromium every element visible, the Pareto
-/// labels neither overlapping nor leaving their chart, and at 1400 px no
-/// table wider than its box.
-#[test]
-fn sweep_html_is_a_design_review_report_in_chromium() {
-    let tmp = tempfile::tempdir().unwrap();
-    let html_file = tmp.path().join("report.html");
-    let s1 = scene("01_maxwell_vgroove_steel.toml");
-    // `tubes` is no groove: those two points are invalid, with a reason.
-    let (ok, json, err) = kinrepro(&[
-        "sweep",
-        s1.to_str().unwrap(),
-        "--set",
-        "preload.force=10,20",
-        "--set",
-        "coupling.groove=planes,cylinders,tubes",
-        "--set",
-        "coupling.groove_element_diameter=0.006",
-        "--samples",
-        "10",
-        "--seed",
-        "7",
-        "--format",
-        "json",
-        "--html",
-        html_file.to_str().unwrap(),
-    ]);
-    assert!(ok, "{err}");
-    let sweep: serde_json::Value = serde_json::from_str(&json).unwrap();
-    let html = std::fs::read_to_string(&html_file).unwrap();
-    self_contained(&html);
-    sweep_static_checks(&html, &sweep, &std::fs::read_to_string(&s1).unwrap());
-    let Some(exe) = chromium() else { return };
-    // sigma against each of 3 fields, the Pareto front, the points not evaluated.
-    let expect = Expect {
-        charts: 5,
-        drawings: 0,
-        min_tables: 2,
-        scenes: 1,
-    };
-    browser_checks(&exe, tmp.path(), &html, &expect);
-    let dom = probe_dom(&exe, tmp.path(), &html, "1400,2000");
-    let r = probe_result(&dom, "1400");
-    tables_fit(&r, "1400");
-    let front = sweep["designs"].as_array().unwrap().iter();
-    let front = front.filter(|d| d["pareto"] == true).count();
-    labels_apart(&r, "sweep-pareto", front);
-}
-
-/// Text as HTML escapes it (independently of the report's escaping).
-fn html_escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-        .replace('\'', "&#39;")
-}
-
-/// Provenance, units, the table's rows against the sweep JSON, the
-/// Pareto labels, the scene text.
-fn sweep_static_checks(html: &str, sweep: &serde_json::Value, scene_text: &str) {
-    let version = env!("CARGO_PKG_VERSION");
-    for s in [
-        format!("<td class=\"l\">kinrepro version</td><td class=\"l\">{version}</td>"),
-        "<td class=\"l\">seed</td><td class=\"l\">7</td>".to_string(),
-        "<td class=\"l\">samples per design point</td><td class=\"l\">10</td>".to_string(),
-        "<td class=\"l\">design</td><td class=\"l\">grid, 6 points</td>".to_string(),
-        "preload.force [N] = 10,20".to_string(),
-        "<th class=\"l\">coupling.groove_element_diameter [m]</th>".to_string(),
-        "<th>σ_x [nm]</th>".to_string(),
-        "<th>σ_φz [nrad]</th>".to_string(),
-        "<th>k_min [N/µm]</th>".to_string(),
-        // Chart axes with units.
-        ">\npreload.force [N]\n</text>".to_string(),
-        ">\nlowest principal translational stiffness k_min [N/µm]\n</text>".to_string(),
-        format!(
-            "<pre data-check=\"scene\">{}</pre>",
-            html_escape(scene_text)
-        ),
-    ] {
-        assert!(html.contains(&s), "missing {s}");
-    }
-    let designs = sweep["designs"].as_array().unwrap();
-    assert_eq!(designs.len(), 6);
-    let table = &html[html.find("<table class=\"designs\"").unwrap()..];
-    let table = &table[..table.find("</table>").unwrap()];
-    for d in designs {
-        let i = d["index"].as_u64().unwrap();
-        let groove = d["values"]["coupling.groove"].as_str().unwrap();
-        let row = format!("<tr><td>{i}</td><td class=\"l\">");
-        let at = table.find(&row).unwrap_or_else(|| panic!("no row #{i}"));
-        let row = &table[at..at + table[at..].find("</tr>").unwrap()];
-        assert!(row.contains(&format!(">{groove}</td>")), "{row}");
-        if d["status"] == "ok" {
-            let sx = d["points"][0]["sigma"]["x_nm"].as_f64().unwrap();
-            let k = d["principal_stiffness_n_per_m"][0].as_f64().unwrap() * 1e-6;
-            assert!(row.contains(&format!("<td>{sx:.3}<span")), "{row}");
-            assert!(row.contains(&format!("<td>{k:.2}</td>")), "{row}");
-            let front = d["pareto"] == true;
-            assert_eq!(row.contains(">front</td>"), front, "{row}");
-            // The Pareto chart labels a front point with its #.
-            assert_eq!(html.contains(&format!(">\n#{i}\n</text>")), front, "#{i}");
-        } else {
-            assert_eq!(groove, "tubes");
-            let reason = html_escape(d["status"].as_str().unwrap());
-            assert!(reason.starts_with("invalid: coupling.groove"), "{reason}");
-            assert!(
-                row.contains(&format!("<td class=\"l\">{reason}</td>")),
-                "{row}"
-            );
-        }
-    }
-}
-
 /// Headless Chromium's DOM of `html` with the probe, at `window`.
 fn probe_dom(exe: &Path, tmp: &Path, html: &str, window: &str) -> String {
     let probe_csp = format!("{CSP}; script-src 'unsafe-inline'");
@@ -332,29 +229,6 @@ fn tables_fit(r: &serde_json::Value, window: &str) {
             t["w"].as_f64().unwrap() <= t["box_w"].as_f64().unwrap() + 1.0,
             "{window}: a table wider than its box: {t}"
         );
-    }
-}
-
-/// The `#N` labels in the chart `figure`: `n` of them, no two
-/// overlapping, each inside its SVG.
-fn labels_apart(r: &serde_json::Value, figure: &str, n: usize) {
-    let labels: Vec<[f64; 4]> = r["labels"][figure]
-        .as_array()
-        .unwrap_or_else(|| panic!("no chart {figure}: {r}"))
-        .iter()
-        .map(|b| [0, 1, 2, 3].map(|k| b[k].as_f64().unwrap()))
-        .collect();
-    assert_eq!(labels.len(), n, "{figure}");
-    let svg = [0, 1, 2, 3].map(|k| r["label_svg"][figure][k].as_f64().unwrap());
-    for (i, a) in labels.iter().enumerate() {
-        assert!(
-            a[0] >= svg[0] && a[1] >= svg[1] && a[2] <= svg[2] && a[3] <= svg[3],
-            "{figure}: label {a:?} outside {svg:?}"
-        );
-        for b in &labels[i + 1..] {
-            let apart = a[2] <= b[0] || b[2] <= a[0] || a[3] <= b[1] || b[3] <= a[1];
-            assert!(apart, "{figure}: labels {a:?} and {b:?} overlap");
-        }
     }
 }
 
@@ -610,84 +484,4 @@ fn study_html_and_bad_inputs() {
     let (ok, _, err) = report(&[]);
     assert!(!ok && err.contains("merge the parts first"), "{err}");
     assert!(!target.exists());
-}
-
-/// The drawn contact forces are to scale: in the side views (z up) the
-/// vertical components of the six force arrows, read back through the force
-/// bar, add up to the preload (equilibrium of the moving half: sum of
-/// N n + T = -F_p), and in the top views the horizontal ones to zero.
-#[test]
-fn drawn_contact_forces_balance_the_preload() {
-    let tmp = tempfile::tempdir().unwrap();
-    for name in ["01_maxwell_vgroove_steel.toml", "06_kelvin_steel.toml"] {
-        let html = tmp.path().join(format!("{name}.html"));
-        let (ok, _, err) = kinrepro(&[
-            "study",
-            scene(name).to_str().unwrap(),
-            "--samples",
-            "10",
-            "--html",
-            html.to_str().unwrap(),
-        ]);
-        assert!(ok, "{err}");
-        let text = std::fs::read_to_string(&html).unwrap();
-        let mut sum = [0.0f64; 3];
-        for view in ["top", "side"] {
-            for b in 1..=3 {
-                let id = format!("id=\"d1-b{b}-{view}\"");
-                let start = text.find(&id).unwrap();
-                let fig = &text[start..start + text[start..].find("</figure>").unwrap()];
-                let (n_per_px, arrows) = force_arrows(fig);
-                for (dx, dy) in arrows {
-                    if view == "top" {
-                        sum[0] += dx * n_per_px;
-                        sum[1] -= dy * n_per_px;
-                    } else {
-                        sum[2] -= dy * n_per_px;
-                    }
-                }
-            }
-        }
-        let fp = 20.0;
-        assert!(
-            sum[0].abs() < 2e-3 * fp && sum[1].abs() < 2e-3 * fp,
-            "{name}: horizontal sum {sum:?}"
-        );
-        assert!(
-            (sum[2] / fp - 1.0).abs() < 2e-3,
-            "{name}: vertical sum {} N vs the preload {fp} N",
-            sum[2]
-        );
-    }
-}
-
-/// Newtons per pixel (from the force bar and its label) and the (dx, dy)
-/// pixel vectors of the force arrows of one drawing.
-fn force_arrows(fig: &str) -> (f64, Vec<(f64, f64)>) {
-    let num = |el: &str, k: &str| -> f64 {
-        let key = format!(" {k}=\"");
-        let i = el.find(&key).unwrap() + key.len();
-        el[i..].split('"').next().unwrap().parse().unwrap()
-    };
-    let mut arrows = Vec::new();
-    let mut bar = None;
-    for (i, _) in fig.match_indices("<line ") {
-        let el = &fig[i..i + fig[i..].find('>').unwrap()];
-        if !el.contains("stroke=\"#e69f00\"") {
-            continue;
-        }
-        let (dx, dy) = (num(el, "x2") - num(el, "x1"), num(el, "y2") - num(el, "y1"));
-        if el.contains("marker-end") {
-            arrows.push((dx, dy));
-        } else {
-            // The force bar: `<line ...><text ...>F N</text>`.
-            let rest = &fig[i..];
-            let t = rest.find("<text").unwrap();
-            let label =
-                &rest[t + rest[t..].find('>').unwrap() + 1..t + rest[t..].find("</text>").unwrap()];
-            let newtons: f64 = label.trim_end_matches(" N").parse().unwrap();
-            bar = Some(newtons / dx);
-        }
-    }
-    (bar.expect("a force bar"), arrows)
 }

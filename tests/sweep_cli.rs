@@ -304,3 +304,36 @@ fn a_design_point_equal_to_the_scene_gives_the_study_statistics() {
         study["variants"][0]["points"]
     );
 }
+
+/// The table's header names the estimate of sigma of the sampler that ran:
+/// the replicated-LHS estimate over its replicates for an LHS (the default,
+/// 5 replicates of 2), the divisor n-1 for Monte Carlo.
+#[test]
+fn sweep_header_names_the_estimate_of_the_sampler_that_ran() {
+    let s01 = scene("01_maxwell_vgroove_steel.toml");
+    let head = |sampler: &str| {
+        let (ok, out, err) = kinrepro(&[
+            "sweep",
+            s01.to_str().unwrap(),
+            "--set",
+            "preload.force=10,20",
+            "--samples",
+            "10",
+            "--sampler",
+            sampler,
+        ]);
+        assert!(ok, "{err}");
+        out.lines().nth(1).unwrap().to_string()
+    };
+    let lhs = head("lhs");
+    assert!(
+        lhs.contains("(replicated LHS: the unbiased estimate over its 5 replicates")
+            && !lhs.contains("divisor n-1"),
+        "{lhs}"
+    );
+    let mc = head("mc");
+    assert!(
+        mc.contains("(Monte Carlo: divisor n-1)") && !mc.contains("replicated LHS"),
+        "{mc}"
+    );
+}

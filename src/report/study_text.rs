@@ -6,6 +6,7 @@ use crate::dof::Dof;
 use crate::report::table::{Cell, Column, Table, cells};
 use crate::scene::VariationBounds;
 use crate::study::result::varied_kinds;
+use crate::study::stats::SigmaMethod;
 use crate::study::{Dofs, PointStats, VariantReport};
 
 /// The six sigma columns: `<prefix><dof> [unit]`, nm with 3 decimals, nrad with 2.
@@ -108,9 +109,17 @@ pub(crate) fn interval_methods<'a>(
 /// The distinct point estimates of sigma of the designs that ran
 /// ([`crate::study::stats::SigmaMethod::estimate`]), in order, joined by `; `.
 pub(crate) fn sigma_estimates<'a>(variants: impl IntoIterator<Item = &'a VariantReport>) -> String {
+    estimates(
+        variants
+            .into_iter()
+            .map(|v| v.sigma_method(v.seating_failures.unwrap_or(0))),
+    )
+}
+
+/// The distinct estimates of `methods`, in order, joined by `; `.
+pub(crate) fn estimates(methods: impl IntoIterator<Item = SigmaMethod>) -> String {
     let mut m: Vec<String> = Vec::new();
-    for v in variants {
-        let e = v.sigma_method(v.seating_failures.unwrap_or(0)).estimate();
+    for e in methods.into_iter().map(|m| m.estimate()) {
         if !m.contains(&e) {
             m.push(e);
         }

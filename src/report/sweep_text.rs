@@ -6,10 +6,11 @@ use crate::dof::nano;
 use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
 use crate::report::study_text::{
-    interval_methods, point_csv_rows, sigma_cells, sigma_columns, truncate,
+    estimates, interval_methods, point_csv_rows, sigma_cells, sigma_columns, truncate,
 };
 use crate::report::table::{Cell, Column, Table, cells};
 use crate::study::provenance::{SCHEMA_VERSION, VERSION};
+use crate::study::stats::SigmaMethod;
 
 /// A number in at most 4 significant digits, no trailing zeros (tables
 /// and chart ticks; the JSON and CSV keep every digit).
@@ -131,10 +132,11 @@ impl SweepReport {
             .collect();
         let _ = writeln!(
             s,
-            "Sweep of {} ({}): {}. Per design point and evaluation point the standard deviation of the seated pose relative to the design's nominal seating (divisor n-1), its 90 % interval below ({}); then for the nominal seating: k_min, the lowest principal translational stiffness [N/um]; SF_p, the smallest safety factor against the allowable contact pressure; mu_lim, the friction limit for seating and its margin over mu_static + spread; approach along the preload [nm]. P: on the Pareto front (largest translational sigma at {}, k_min, SF_p).",
+            "Sweep of {} ({}): {}. Per design point and evaluation point the standard deviation of the seated pose relative to the design's nominal seating ({}), its 90 % interval below ({}); then for the nominal seating: k_min, the lowest principal translational stiffness [N/um]; SF_p, the smallest safety factor against the allowable contact pressure; mu_lim, the friction limit for seating and its margin over mu_static + spread; approach along the preload [nm]. P: on the Pareto front (largest translational sigma at {}, k_min, SF_p).",
             self.name,
             self.scene,
             sets.join("; "),
+            sigma_estimates(self),
             interval_methods(
                 self.designs.iter().flat_map(|d| &d.points),
                 "no design evaluated"
@@ -195,5 +197,26 @@ impl SweepReport {
                 None => t.note(format!("  (no interval: {})", p.sigma_interval_method)),
             }
         }
+    }
+}
+
+/// The point estimate of sigma of the sampler that ran, in words
+/// ([`SigmaMethod::estimate`]): one per kind among the evaluated design
+/// points (an LHS some of whose seatings did not centre has its own, which
+/// its points' interval method names).
+pub(crate) fn sigma_estimates(r: &SweepReport) -> String {
+    let ran = SigmaMethod::for_sampler(r.sampler, r.fingerprint.study.replicates);
+    let incomplete = SigmaMethod::IncompleteLhs.describe();
+    let methods = r.designs.iter().filter(|d| !d.points.is_empty()).map(|d| {
+        let gaps = (d.points.iter()).any(|p| p.sigma_interval_method.starts_with(&incomplete));
+        if gaps {
+            SigmaMethod::IncompleteLhs
+        } else {
+            ran
+        }
+    });
+    match estimates(methods) {
+        e if e.is_empty() => ran.estimate(),
+        e => e,
     }
 }

@@ -52,7 +52,12 @@ pub enum SigmaMethod {
 impl SigmaMethod {
     /// The method valid for `design`.
     pub fn for_design(design: &DesignSpec) -> Self {
-        match (design.sampler, design.replicates) {
+        Self::for_sampler(design.sampler, design.replicates)
+    }
+
+    /// The method valid for `sampler` run in `replicates` replicates.
+    pub fn for_sampler(sampler: Sampler, replicates: usize) -> Self {
+        match (sampler, replicates) {
             (Sampler::MonteCarlo, _) => SigmaMethod::Iid,
             (Sampler::Corners, _) => SigmaMethod::Corners,
             (Sampler::Lhs, r) if r >= 2 => SigmaMethod::Replicated(r),

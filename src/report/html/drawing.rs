@@ -2,13 +2,16 @@
 //!
 //! * The layout, seen from the top (x right, y up): moving balls, fixed
 //!   elements, contact points (numbered in the order of `--mu`), the
-//!   evaluation points and the preload point.
-//! * Per ball, a close-up from the top and a side view along the ball's
-//!   radial direction e_r (horizontal axis s = e_z x e_r, z up; for a ball
-//!   on the axis, x): the ball, its fixed elements, the contact points, the
-//!   contact normals (unit length) and the seated contact forces on the
-//!   moving half, N n + T, to one force scale per coupling (a force bar shows
-//!   it).
+//!   evaluation points and the preload point; the circle of ball centres
+//!   with its diameter dimensioned.
+//! * Per ball, a close-up from the top and a side view along the axis of
+//!   its V (a ball with two contacts) or else along its radial direction
+//!   e_r (horizontal axis s = e_z x e_r, z up; for a ball on the axis, x):
+//!   the ball, its fixed elements, the contact points, the contact normals
+//!   (unit length) and the seated contact forces on the moving half,
+//!   N n + T, to one force scale per coupling (a force bar shows it); in
+//!   the side view the ball's diameter and the V's opening angle
+//!   dimensioned ([`super::dimensions`]).
 //!
 //! Lengths are to scale within each drawing (a length bar shows it). Fixed
 //! elements are schematic where their true extent is unbounded: a plane as
@@ -19,6 +22,7 @@ use std::fmt::Write;
 
 use nalgebra::Vector3;
 
+use super::dimensions::{ball_circle, ball_diameter, groove_angle};
 use super::svg::{Shape, bounds, svg};
 use crate::assembly::Coupling;
 use crate::report::preload::force_text;
@@ -51,6 +55,23 @@ impl Proj {
         };
         Proj { u, v: Vector3::z() }
     }
+    /// The side view of ball `b`: along the axis of its V (the cross
+    /// product of its two contact normals, when horizontal), where the V
+    /// shows its true opening; else along e_r. With the caption.
+    fn side(c: &Coupling, s: &Seating, b: usize) -> (Self, &'static str) {
+        let centre = s.pose.apply(&c.balls[b].centre);
+        if let [i, j] = contacts_of(c, b)[..] {
+            let (i, j) = (&s.contacts[i], &s.contacts[j]);
+            let g = Vector3::from(i.normal).cross(&Vector3::from(j.normal));
+            let h = Vector3::new(g.x, g.y, 0.0);
+            if g.norm() > 1e-6 && h.norm() > 0.95 * g.norm() {
+                let h = if h.dot(&centre) < 0.0 { -h } else { h };
+                let u = Vector3::z().cross(&h).normalize();
+                return (Proj { u, v: Vector3::z() }, "side view along the groove");
+            }
+        }
+        (Proj::along_radius(&centre), "side view along e_r")
+    }
     fn p(&self, p: &Vector3<f64>) -> (f64, f64) {
         (p.dot(&self.u), p.dot(&self.v))
     }
@@ -73,7 +94,7 @@ pub fn coupling_views(id: &str, c: &Coupling, s: &Seating) -> String {
     let mut out = String::from("<div class=\"views\">\n");
     let layout = svg(
         &format!("{id}-layout"),
-        460.0,
+        640.0,
         &layout_shapes(c, s),
         None,
         None,
@@ -84,35 +105,33 @@ pub fn coupling_views(id: &str, c: &Coupling, s: &Seating) -> String {
     );
     out.push_str("</div>\n<div class=\"balls\">\n");
     // Every close-up at one scale: the largest extent of any of them.
-    let views: Vec<(usize, &str, Vec<Shape>)> = c
-        .balls
-        .iter()
-        .enumerate()
-        .flat_map(|(b, ball)| {
-            let centre = s.pose.apply(&ball.centre);
-            [("top", Proj::top()), ("side", Proj::along_radius(&centre))]
+    let views: Vec<(usize, &str, &str, Vec<Shape>)> = (0..c.balls.len())
+        .flat_map(|b| {
+            let (side, along) = Proj::side(c, s, b);
+            [("top", "top view", Proj::top()), ("side", along, side)]
                 .into_iter()
-                .map(move |(tag, proj)| (b, tag, ball_shapes(c, s, b, proj, scale)))
+                .map(move |(tag, what, proj)| {
+                    let mut shapes = ball_shapes(c, s, b, proj, scale);
+                    if tag == "side" {
+                        shapes.extend(side_dimensions(c, s, b, proj));
+                    }
+                    (b, tag, what, shapes)
+                })
         })
         .collect();
     let span = views
         .iter()
-        .map(|(_, _, sh)| {
+        .map(|(_, _, _, sh)| {
             let (x0, y0, x1, y1) = bounds(sh);
             (x1 - x0).max(y1 - y0)
         })
         .fold(0.0, f64::max);
-    for (b, tag, shapes) in &views {
+    for (b, tag, what, shapes) in &views {
         if *tag == "top" {
             let _ = write!(out, "<div class=\"ball\">");
         }
         let fid = format!("{id}-b{}-{tag}", b + 1);
-        let drawn = svg(&fid, 300.0, shapes, Some((scale, fmax)), Some(span));
-        let what = if *tag == "top" {
-            "top view"
-        } else {
-            "side view along e_r"
-        };
+        let drawn = svg(&fid, 280.0, shapes, Some((scale, fmax)), Some(span));
         let _ = write!(
             out,
             "<figure data-check=\"drawing\" id=\"{fid}\">{drawn}<figcaption>ball {}: {what}</figcaption></figure>",
@@ -155,21 +174,19 @@ fn layout_shapes(c: &Coupling, s: &Seating) -> Vec<Shape> {
     let proj = Proj::top();
     let p = |v: &Vector3<f64>| proj.p(v);
     let r = c.balls.iter().map(|b| b.radius).fold(0.0, f64::max);
-    let mut out: Vec<Shape> = c
-        .contacts
-        .iter()
-        .flat_map(|k| fixed_element(proj, &k.surface, r))
-        .collect();
-    for (i, b) in c.balls.iter().enumerate() {
-        let centre = p(&s.pose.apply(&b.centre));
+    let mut out = ball_circle(c);
+    out.extend((c.contacts.iter()).flat_map(|k| fixed_element(proj, &k.surface, r)));
+    let centres: Vec<Vector3<f64>> = c.balls.iter().map(|b| s.pose.apply(&b.centre)).collect();
+    for (i, (b, centre)) in c.balls.iter().zip(&centres).enumerate() {
         out.push(Shape::Circle {
-            c: centre,
+            c: p(centre),
             r: b.radius,
             stroke: BALL,
             fill: "#cfe6f5",
         });
+        // Outside the coupling, clear of the fixed elements.
         out.push(Shape::Text {
-            at: (centre.0, centre.1 + 1.6 * b.radius),
+            at: p(&(centre + outward(centre) * 2.6 * r)),
             text: format!("ball {}", i + 1),
             colour: BALL,
         });
@@ -211,11 +228,52 @@ fn layout_shapes(c: &Coupling, s: &Seating) -> Vec<Shape> {
             width_m: 0.0,
             colour: "#000",
         });
+        // A point at a ball is labelled inside the coupling, others below.
+        let at = s.pose.apply(&e.position);
+        let near = centres.iter().any(|b| (b - at).xy().norm() < 1.5 * r);
         out.push(Shape::Text {
-            at: (q.0, q.1 - 1.2 * r),
+            at: match near {
+                true => p(&(at - outward(&at) * 2.6 * r)),
+                false => (q.0, q.1 - 1.2 * r),
+            },
             text: e.name.clone(),
             colour: "#000",
         });
+    }
+    out
+}
+
+/// The indices of the contacts of ball `b`.
+fn contacts_of(c: &Coupling, b: usize) -> Vec<usize> {
+    (0..c.contacts.len())
+        .filter(|&i| c.contacts[i].ball == b)
+        .collect()
+}
+
+/// The horizontal unit vector from the axis to `p` (y off the axis).
+fn outward(p: &Vector3<f64>) -> Vector3<f64> {
+    let r = Vector3::new(p.x, p.y, 0.0);
+    if r.norm() > 1e-12 {
+        r.normalize()
+    } else {
+        Vector3::y()
+    }
+}
+
+/// A side view's dimensions: the ball's diameter (not for crossed pins)
+/// and, for a ball in a V of two contacts, the groove's opening angle.
+fn side_dimensions(c: &Coupling, s: &Seating, b: usize, proj: Proj) -> Vec<Shape> {
+    let mine = contacts_of(c, b);
+    if mine.iter().any(|&i| c.contacts[i].axis.is_some()) {
+        return Vec::new();
+    }
+    let r = c.balls[b].radius;
+    let mut out = ball_diameter(proj.p(&s.pose.apply(&c.balls[b].centre)), r);
+    if let [i, j] = mine[..] {
+        let (ki, kj) = (&s.contacts[i], &s.contacts[j]);
+        let n = [Vector3::from(ki.normal), Vector3::from(kj.normal)];
+        let p = [ki, kj].map(|k| proj.p(&Vector3::from(k.point_m)));
+        out.extend(groove_angle(p, n.map(|n| proj.p(&n)), n, r));
     }
     out
 }
@@ -226,9 +284,7 @@ fn ball_shapes(c: &Coupling, s: &Seating, b: usize, proj: Proj, scale: f64) -> V
     let ball = &c.balls[b];
     let r = ball.radius;
     let mut out = Vec::new();
-    let mine: Vec<usize> = (0..c.contacts.len())
-        .filter(|&i| c.contacts[i].ball == b)
-        .collect();
+    let mine = contacts_of(c, b);
     for &i in &mine {
         out.extend(fixed_element(proj, &c.contacts[i].surface, r));
     }

@@ -8,7 +8,8 @@ use crate::assembly::Coupling;
 use crate::report::table::{Cell, Table, cells};
 use crate::solve::Seating;
 
-/// The contact table (N, MPa) and the stiffness table (N/µm, N m/µrad).
+/// The contact table (N, MPa) and the stiffness table (N/µm, N m/µrad),
+/// one below the other: each gets the page's full width.
 pub fn mechanics(c: &Coupling, s: &Seating, k: &CouplingStiffness) -> String {
     let mut t = Table::new(
         ">#; >ball; >N [N]:.3; >|T| [N]:.3; >state; >μ_s:.3; >p0 [MPa]:.0; >τ_max [MPa]:.0; >safety:.2",
@@ -26,11 +27,8 @@ pub fn mechanics(c: &Coupling, s: &Seating, k: &CouplingStiffness) -> String {
             r.safety_factor,
         ]);
     }
-    let mut o = format!(
-        "<div class=\"two\"><div><h4>Contacts at the nominal seating</h4>{}",
-        t.html("")
-    );
-    o.push_str("<p class=\"note\">p0: peak Hertz pressure; τ_max: maximum subsurface shear stress; safety: allowable / actual (the smaller of pressure and shear, where the materials give an allowable).</p></div>\n");
+    let mut o = format!("<h4>Contacts at the nominal seating</h4>{}", t.html(""));
+    o.push_str("<p class=\"note\">p0: peak Hertz pressure; τ_max: maximum subsurface shear stress; safety: allowable / actual (the smaller of pressure and shear, where the materials give an allowable).</p>\n");
     let mut t = Table::new(
         "<point; >k_t1:.2; >k_t2:.2; >k_t3 [N/µm]:.2; >k_r1:.4; >k_r2:.4; >k_r3 [N m/µrad]:.4",
     );
@@ -50,8 +48,8 @@ pub fn mechanics(c: &Coupling, s: &Seating, k: &CouplingStiffness) -> String {
         }
         t.row(row);
     }
-    o.push_str("<div><h4>Principal stiffnesses of the seated coupling</h4>");
+    o.push_str("<h4>Principal stiffnesses of the seated coupling</h4>");
     o += &t.html("");
-    o.push_str("<p class=\"note\">Ascending principal values of the 6×6 stiffness at each point (contacts at rest: static friction sticks; `kinrepro stiffness` prints the matrix and the directions).</p></div></div>\n");
+    o.push_str("<p class=\"note\">Ascending principal values of the 6×6 stiffness at each point (contacts at rest: static friction sticks; `kinrepro stiffness` prints the matrix and the directions).</p>\n");
     o
 }

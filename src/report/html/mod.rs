@@ -20,6 +20,7 @@
 //! `chart`, `drawing`).
 
 pub mod charts;
+mod dimensions;
 mod drawing;
 pub mod inputs;
 mod mechanics;
@@ -35,10 +36,10 @@ use std::fmt::Write;
 use thiserror::Error;
 
 use crate::analysis::stiffness::CouplingStiffness;
-use crate::assembly::AssemblyError;
+use crate::assembly::{AssemblyError, Coupling};
 use crate::report::table::escape;
 use crate::scene::{Scene, SceneError};
-use crate::solve::SolveError;
+use crate::solve::{Seating, SolveError};
 use crate::study::StudyError;
 use crate::study::VariantReport;
 use crate::study::provenance::VERSION;
@@ -73,6 +74,8 @@ pub enum HtmlError {
     },
     #[error("charts: {0}")]
     Chart(#[from] StudyError),
+    #[error(transparent)]
+    SweepChart(#[from] crate::report::sweep_plot::SweepPlotError),
 }
 
 /// An extra section of the report: a title and an SVG (e.g. a sweep's
@@ -238,6 +241,18 @@ fn chart_caption(file: &str) -> &'static str {
     }
 }
 
+/// The nominal seating of the coupling of scene `file` (nominal mu,
+/// quasi-static, default settings), as the drawings show it.
+fn nominal_seating(file: &str, c: &Coupling) -> Result<Seating, HtmlError> {
+    let mu = crate::solve::nominal_mu(c);
+    crate::solve::quasistatic::seat(c, &mu, &Default::default()).map_err(|source| {
+        HtmlError::Solve {
+            file: file.to_string(),
+            source,
+        }
+    })
+}
+
 /// One scene: drawing, mechanics, scene text in both forms.
 fn scene_section(
     body: &mut String,
@@ -248,12 +263,11 @@ fn scene_section(
     let c = &scene.coupling;
     let file = v.scene.clone();
     let mu = crate::solve::nominal_mu(c);
-    let solve = |source| HtmlError::Solve {
+    let seating = nominal_seating(&file, c)?;
+    let k = CouplingStiffness::new(c, &seating, &mu).map_err(|source| HtmlError::Solve {
         file: file.clone(),
         source,
-    };
-    let seating = crate::solve::quasistatic::seat(c, &mu, &Default::default()).map_err(solve)?;
-    let k = CouplingStiffness::new(c, &seating, &mu).map_err(solve)?;
+    })?;
     let _ = writeln!(
         body,
         "<section id=\"scene-{n}\"><h2>{n}. {}</h2>\n<p class=\"muted\">{}</p>\n<h3>Coupling at the nominal seating</h3>",

@@ -29,6 +29,7 @@ th { background: var(--head); }
 td.l, th.l { text-align: left; white-space: normal; min-width: 8em; }
 td .ci { display: block; color: var(--muted); font-size: 0.78rem; }
 tr.ref td { background: #fffbe6; }
+table.runs td.l, table.meta td.l { overflow-wrap: anywhere; }
 table.designs { font-size: 0.8rem; }
 table.designs th { white-space: normal; }
 table.designs th.l { overflow-wrap: anywhere; }
@@ -38,7 +39,7 @@ figure { margin: 1rem 0 1.4rem; }
 figure svg { display: block; max-width: 100%; height: auto; border: 1px solid var(--line); background: #fff; }
 .views { display: flex; flex-wrap: wrap; gap: 1rem; }
 .views figure { flex: 1 1 340px; margin: 0.4rem 0; }
-.balls { display: grid; grid-template-columns: repeat(auto-fill, minmax(330px, 1fr)); gap: 0.8rem; }
+.balls { display: grid; grid-template-columns: repeat(auto-fill, minmax(min(100%, 560px), 1fr)); gap: 0.8rem; }
 .ball { display: flex; gap: 0.4rem; }
 .ball figure { flex: 1 1 50%; margin: 0.3rem 0; min-width: 0; }
 pre { background: #f6f8fa; border: 1px solid var(--line); padding: 0.6rem; font-size: 0.8rem;
@@ -60,6 +61,14 @@ footer { margin-top: 3rem; border-top: 1px solid var(--line); padding-top: 0.6re
   figure, table, .views, .ball { break-inside: avoid; }
   pre { max-height: none; overflow: visible; white-space: pre-wrap; font-size: 7.5pt; }
   .scroll { overflow: visible; }
+  table { font-size: 8pt; }
+  th, td { padding: 0.1rem 0.3rem; }
+  th { white-space: normal; }
+  td.l, th.l { min-width: 0; }
+  td .ci { font-size: 7pt; }
+  table.designs { font-size: 6.5pt; }
+  table.designs td.l { overflow-wrap: anywhere; }
+  table.designs th, table.designs td { padding: 0.05rem 0.15rem; }
   figure svg { border: none; }
   a { color: inherit; text-decoration: none; }
 }

@@ -3,24 +3,28 @@
 //! points (swept values by field, sigma per DOF at each evaluation point
 //! with its 90 % interval, k_min, SF_p, mu_lim and its margin, the Pareto
 //! mark, the status with the reason of a point not evaluated), the design
-//! charts (`report::sweep_plot`, whose Pareto labels are the table's `#`)
-//! and the base scene's text. It renders the sweep document; nothing is
+//! charts (`report::sweep_plot`, whose Pareto labels are the table's `#`),
+//! the drawing of the base coupling at its nominal seating and the base
+//! scene's text. It renders the sweep document; nothing is
 //! recomputed.
 
 use std::fmt::Write;
 
-use super::page;
 use super::tables::settings;
+use super::{HtmlError, drawing, page};
+use crate::assembly::Coupling;
 use crate::explore::{DesignKind, DesignReport, SweepReport, SweptValue};
 use crate::report::study_text::{interval_methods, sigma_cells, sigma_columns};
-use crate::report::sweep_plot::{SweepPlotError, charts};
-use crate::report::sweep_text::{field_label, short};
+use crate::report::sweep_plot::charts;
+use crate::report::sweep_text::{field_label, short, sigma_estimates};
 use crate::report::table::{Cell, Column, Table, cells, escape};
 use crate::study::provenance::VERSION;
 
-/// The whole document; `scene_text`: the base scene file as read.
-pub fn sweep_html(r: &SweepReport, scene_text: &str) -> Result<String, SweepPlotError> {
+/// The whole document; `scene_text`: the base scene file as read, `base`:
+/// its coupling (drawn at its nominal seating).
+pub fn sweep_html(r: &SweepReport, scene_text: &str, base: &Coupling) -> Result<String, HtmlError> {
     let charts = charts(r)?;
+    let seating = super::nominal_seating(&r.scene, base)?;
     let mut body = String::new();
     let _ = writeln!(
         body,
@@ -37,7 +41,7 @@ pub fn sweep_html(r: &SweepReport, scene_text: &str) -> Result<String, SweepPlot
             escape(title)
         );
     }
-    body.push_str("<li><a href=\"#scene\">Base scene</a></li>\n</ul></nav>\n");
+    body.push_str("<li><a href=\"#coupling\">Base coupling</a></li><li><a href=\"#scene\">Base scene</a></li>\n</ul></nav>\n");
     body.push_str("<section id=\"run\"><h2>Run</h2>\n");
     body.push_str(&provenance(r));
     body.push_str("</section>\n<section id=\"designs\"><h2>Design points</h2>\n");
@@ -47,6 +51,10 @@ pub fn sweep_html(r: &SweepReport, scene_text: &str) -> Result<String, SweepPlot
         let _ = writeln!(body, "<h3>{}</h3>", escape(title));
         body.push_str(&page::figure(&chart_id(title), svg, caption(title)));
     }
+    body.push_str(
+        "</section>\n<section id=\"coupling\"><h2>Base coupling at the nominal seating</h2>\n",
+    );
+    body.push_str(&drawing::coupling_views("base", base, &seating));
     let _ = writeln!(
         body,
         "</section>\n<section id=\"scene\"><h2>Base scene ({})</h2>\n<pre data-check=\"scene\">{}</pre>\n</section>",
@@ -172,7 +180,8 @@ fn design_table(r: &SweepReport) -> String {
     let methods = interval_methods(r.designs.iter().flat_map(|d| &d.points), "none");
     t.html("designs")
         + &format!(
-            "<p class=\"note\">σ: standard deviation of the seated pose relative to the design's nominal seating (divisor n-1); under it the 90 % interval ({}). k_min: the lowest principal translational stiffness of the nominal seating; SF_p: the smallest safety factor against the allowable contact pressure; μ_lim: the friction limit for seating, margin: μ_lim - (μ_static + spread). Pareto: on the front of the three objectives. #: the label of the design point in the charts.</p>\n",
+            "<p class=\"note\">σ: standard deviation of the seated pose relative to the design's nominal seating ({}); under it the 90 % interval ({}). k_min: the lowest principal translational stiffness of the nominal seating; SF_p: the smallest safety factor against the allowable contact pressure; μ_lim: the friction limit for seating, margin: μ_lim - (μ_static + spread). Pareto: on the front of the three objectives. #: the label of the design point in the charts.</p>\n",
+            escape(&sigma_estimates(r)),
             escape(&methods)
         )
 }

@@ -41,7 +41,7 @@ pub fn metadata(source: &str, r: &StudyReport) -> String {
             varied_kinds(&v.variation()).join(", "),
         ]);
     }
-    s += &t.html("");
+    s += &t.html("runs");
     s
 }
 

@@ -47,10 +47,11 @@ pub fn study_html(
 pub fn sweep_html(
     report: &kinrepro::explore::SweepReport,
     scene_text: &str,
+    base: &kinrepro::assembly::Coupling,
     out: &Path,
     force: bool,
 ) -> Result<(), CliError> {
-    let html = kinrepro::report::html::sweep::sweep_html(report, scene_text)?;
+    let html = kinrepro::report::html::sweep::sweep_html(report, scene_text, base)?;
     kinrepro::report::atomic::write_file(out, &html, force)?;
     eprintln!("wrote {}", out.display());
     Ok(())

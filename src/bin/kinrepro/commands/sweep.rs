@@ -45,7 +45,7 @@ pub fn sweep(o: Checked<SweepArgs, StudyOptions>) -> Result<(), CliError> {
         }
     }
     if let Some(path) = &a.html {
-        super::report::sweep_html(&report, &text, path, a.force)?;
+        super::report::sweep_html(&report, &text, &base, path, a.force)?;
     }
     // Exit 1 only when no design point is valid (all listed with reasons).
     Ok(report.check_any_valid()?)
