@@ -65,6 +65,20 @@ pub enum SolveError {
         splits: u32,
     },
     #[error(
+        "the load path did not converge at {percent:.3} % of the applied load (relative \
+         residual {residual:.3e} after halving the increment {splits} times)"
+    )]
+    LoadNotConverged {
+        percent: f64,
+        residual: f64,
+        splits: u32,
+    },
+    #[error(
+        "the coupling slides away under the load: at {percent:.3} % of the applied load the \
+         moving half has moved {displacement_m:.3e} m"
+    )]
+    LoadSlidAway { percent: f64, displacement_m: f64 },
+    #[error(
         "contact {contact} opened completely at {percent:.3} % of the preload: the preload lifts \
          the moving half off that contact instead of seating it"
     )]

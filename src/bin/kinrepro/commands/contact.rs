@@ -6,7 +6,7 @@ use kinrepro::contact::history::{HistoryError, LoadStep, drive, parse_history_cs
 use kinrepro::report::contact::{HistoryProvenance, contact_table, history_csv};
 use kinrepro::report::contact_validity::{HertzValidity, hertz_validity, radius_hint};
 
-use super::{emit, print_json, read_text};
+use super::{emit, number, print_json, read_text};
 use crate::error::CliError;
 use crate::flags::high::{Checked, ContactInputs};
 use crate::flags::low::ContactArgs;
@@ -46,15 +46,6 @@ fn validity(pair: &ContactPair, load: f64) -> Result<(), CliError> {
             Ok(())
         }
         HertzValidity::Meaningless(why) => Err(CliError::Usage(why)),
-    }
-}
-
-/// `x` as typed: plain, or with an exponent when very large or small.
-fn number(x: f64) -> String {
-    if x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
-        format!("{x}")
-    } else {
-        format!("{x:e}")
     }
 }
 
