@@ -105,15 +105,7 @@ pub fn progress(total: usize) -> Result<indicatif::ProgressBar, CliError> {
     Ok(b)
 }
 
-/// `x` as typed in a message: plain, or with an exponent when very large
-/// or small.
-pub fn number(x: f64) -> String {
-    if x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
-        format!("{x}")
-    } else {
-        format!("{x:e}")
-    }
-}
+pub use kinrepro::scene::plausible::as_typed as number;
 
 pub fn print_json<T: serde::Serialize>(v: &T) -> Result<(), CliError> {
     emit(&format!("{}\n", serde_json::to_string_pretty(v)?))
