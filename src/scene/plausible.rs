@@ -106,11 +106,7 @@ fn at_least(
 }
 
 /// A support compliance [m/N] above [`SUPPORT_COMPLIANCE_MAX`].
-fn support_compliance(
-    ctx: &ErrorContext,
-    v: &Spanned<f64>,
-    field: &str,
-) -> Result<(), SceneError> {
+fn support_compliance(ctx: &ErrorContext, v: &Spanned<f64>, field: &str) -> Result<(), SceneError> {
     let c = *v.get_ref();
     if c > SUPPORT_COMPLIANCE_MAX {
         return Err(ctx.error(
@@ -155,7 +151,12 @@ fn check_materials(f: &SceneFile, ctx: &ErrorContext) -> Result<(), SceneError> 
             let Some(v) = v else { continue };
             let x = *v.get_ref();
             let hint = format!("did you give MPa? {x} MPa is {} Pa;", as_typed(x * 1e6));
-            let what = (ALLOWABLE_STRESS_MIN, "Pa", "an allowable stress", hint.as_str());
+            let what = (
+                ALLOWABLE_STRESS_MIN,
+                "Pa",
+                "an allowable stress",
+                hint.as_str(),
+            );
             at_least(ctx, v, &field(key), what)?;
         }
     }
@@ -282,7 +283,12 @@ pub fn check_explicit(
         let d = 2.0 * b.radius.get_ref();
         let field = format!("balls[{}].radius", i + 1);
         let what = "a ball radius";
-        at_least(ctx, &b.radius, &field, (BALL_DIAMETER_MIN / 2.0, "m", what, LENGTH_HINT))?;
+        at_least(
+            ctx,
+            &b.radius,
+            &field,
+            (BALL_DIAMETER_MIN / 2.0, "m", what, LENGTH_HINT),
+        )?;
         if d > BALL_DIAMETER_MAX {
             return Err(too_large(
                 ctx,
@@ -315,7 +321,12 @@ pub fn check_explicit(
     for (v, field) in single.chain(forces) {
         let force = *v.get_ref();
         let what = "a preload force";
-        at_least(ctx, v, &field, (PRELOAD_MIN, "N", what, "is it in newtons?"))?;
+        at_least(
+            ctx,
+            v,
+            &field,
+            (PRELOAD_MIN, "N", what, "is it in newtons?"),
+        )?;
         if force > PRELOAD_MAX {
             return Err(too_large(
                 ctx,
@@ -360,7 +371,12 @@ fn check_surfaces(f: &SceneFile, ctx: &ErrorContext) -> Result<(), SceneError> {
         else {
             continue;
         };
-        let what = (ELEMENT_DIAMETER_MIN / 2.0, "m", "a pin or fixed-ball radius", LENGTH_HINT);
+        let what = (
+            ELEMENT_DIAMETER_MIN / 2.0,
+            "m",
+            "a pin or fixed-ball radius",
+            LENGTH_HINT,
+        );
         at_least(ctx, r, &field("radius"), what)?;
     }
     for (i, s) in f.surfaces.iter().enumerate() {

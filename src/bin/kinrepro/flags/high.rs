@@ -312,7 +312,11 @@ pub fn sweep(a: &SweepArgs) -> Result<StudyOptions, CliError> {
         samples: a.samples,
         seed: a.seed,
         shard: a.shard.unwrap_or_else(Shard::whole),
-        method: method(SolverKind::QuasiStatic, Some(a.increments), StartPose::touching())?,
+        method: method(
+            SolverKind::QuasiStatic,
+            Some(a.increments),
+            StartPose::touching(),
+        )?,
         variation: Variation {
             friction: true,
             ..Default::default()
@@ -324,10 +328,13 @@ pub fn sweep(a: &SweepArgs) -> Result<StudyOptions, CliError> {
 
 pub fn validate_hertz(a: &ValidateHertzArgs) -> Result<MeshOptions, CliError> {
     let levels = a.convergence.as_deref().unwrap_or_default();
-    if levels.iter().any(|l| !(l.is_finite() && *l > 0.0)) {
-        return Err(usage(
-            "--convergence: element sizes must be positive numbers",
-        ));
+    if let Some(l) = levels
+        .iter()
+        .find(|l| !(l.is_finite() && **l > 0.0 && **l <= 1.0))
+    {
+        return Err(usage(format!(
+            "--convergence {l}: element sizes are fractions of the contact semi-axis, in (0, 1]"
+        )));
     }
     if let Some(r) = &a.ratios {
         if !a.conformity {
