@@ -53,7 +53,10 @@ impl Default for SolverOptions {
 pub enum SolveError {
     #[error("--mu needs {expected} values (one per contact, in contact order), got {got}")]
     MuCount { expected: usize, got: usize },
-    #[error("--mu value {index} = {value} is outside [0, {max}]")]
+    #[error(
+        "the static friction coefficient of contact {index} = {value} is outside [0, {max}] \
+         (the value given by --mu, or drawn from the scene's mu_static +- spread)"
+    )]
     MuRange { index: usize, value: f64, max: f64 },
     #[error(
         "the seating solve did not converge at {percent:.3} % of the preload (relative residual \
