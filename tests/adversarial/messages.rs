@@ -300,3 +300,27 @@ fn option_errors_name_the_option() {
     );
     assert!(!e.contains("unit"), "{e}");
 }
+
+/// A history file whose header begins with an invisible byte-order mark:
+/// accepted, or refused with a message that shows the mark.
+#[test]
+fn history_header_bom_is_accepted_or_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("h.csv");
+    std::fs::write(&path, "\u{feff}P_N,Qx_N,Qy_N\n1,0,0\n2,0,0\n").unwrap();
+    let p = path.display().to_string();
+    let (ok, _, err) = contact(&[
+        "--shape",
+        "sphere-plane",
+        "--radius1",
+        "0.005",
+        "--history",
+        &p,
+        "--mu",
+        "0.3",
+    ]);
+    assert!(
+        ok || (err.contains("h.csv:1") && err.contains("\\u{feff}")),
+        "{err}"
+    );
+}
