@@ -26,6 +26,24 @@ pub const ENVELOPE_TOLERANCE: f64 = 1e-5;
 /// The envelope search stops at this load factor.
 pub const MAX_FACTOR: f64 = 1e6;
 
+/// Largest distance of a load point from the origin, in multiples of the
+/// coupling's size (the largest distance of a ball centre from the
+/// origin): a lever a thousand times the coupling is no load a coupling is
+/// built for, and a far larger one (1e300 m) turns the moment into
+/// rounding noise or infinity, so the point is refused (usually
+/// millimetres typed as metres).
+pub const LEVER_RATIO_MAX: f64 = 1e3;
+
+/// The distance of `point` from the origin (its largest coordinate, which
+/// cannot overflow) over the coupling's size (see [`LEVER_RATIO_MAX`]),
+/// and that size [m].
+pub fn lever_ratio(coupling: &Coupling, point: &nalgebra::Vector3<f64>) -> (f64, f64) {
+    let size = (coupling.scene.balls.iter())
+        .map(|b| b.centre.norm())
+        .fold(0.0, f64::max);
+    (point.amax() / size, size)
+}
+
 /// The safe load envelope along one load direction.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Envelope {

@@ -90,6 +90,24 @@ pub enum UnitError {
     /// A `--noise` entry naming no DOF.
     #[error("`{entry}`: unknown DOF `{name}` (one of {})", Dof::names())]
     NoiseDof { entry: String, name: String },
+    /// A DOF given twice in one `--noise` list (`x=1nm,x=2nm`): only one
+    /// value could take effect.
+    #[error("`{entry}`: {name} is given twice (once per DOF)")]
+    NoiseTwice { entry: String, name: String },
+}
+
+impl UnitError {
+    /// This error of a value, shown as the whole `--noise` entry
+    /// (`x=nan`), so that the message names the DOF.
+    fn in_entry(self, entry: &str) -> Self {
+        let text = entry.to_string();
+        match self {
+            UnitError::ValueUnit { unit, dof, .. } => UnitError::ValueUnit { text, unit, dof },
+            UnitError::NotANumber { .. } => UnitError::NotANumber { text },
+            UnitError::OutOfRange { .. } => UnitError::OutOfRange { text },
+            other => other,
+        }
+    }
 }
 
 /// `header_m, header_mm, ...`: the column names a bare DOF header could be.
@@ -128,11 +146,22 @@ pub fn parse_column(header: &str) -> Result<(usize, f64), UnitError> {
 /// if no unit is given. Finite and >= 0.
 pub fn parse_value(dof: usize, text: &str) -> Result<f64, UnitError> {
     let t = text.trim();
+    // `nan`, `inf` parse as numbers: out of range, not an unknown unit.
+    if t.parse::<f64>().is_ok_and(|v| !v.is_finite()) {
+        return Err(UnitError::OutOfRange {
+            text: t.to_string(),
+        });
+    }
     let split = t
         .char_indices()
         .find(|(i, c)| c.is_ascii_alphabetic() && !is_exponent(t, *i))
         .map_or(t.len(), |(i, _)| i);
     let (num, unit) = (t[..split].trim(), t[split..].trim());
+    if num.is_empty() {
+        return Err(UnitError::NotANumber {
+            text: t.to_string(),
+        });
+    }
     let factor = if unit.is_empty() {
         1.0
     } else {
@@ -164,8 +193,10 @@ fn is_exponent(t: &str, i: usize) -> bool {
 }
 
 /// Sensor noise per DOF from `DOF=VALUE,...` (SI numbers or with a unit
-/// suffix, e.g. `x=1nm`). Later entries override `into`'s.
+/// suffix, e.g. `x=1nm`). The entries override `into`'s; a DOF given twice
+/// in `text` is an error.
 pub fn parse_noise(text: &str, into: &mut [Option<f64>; 6]) -> Result<(), UnitError> {
+    let mut seen = [false; 6];
     for entry in text.split(',').map(str::trim).filter(|e| !e.is_empty()) {
         let (name, value) = entry
             .split_once('=')
@@ -176,7 +207,13 @@ pub fn parse_noise(text: &str, into: &mut [Option<f64>; 6]) -> Result<(), UnitEr
             entry: entry.to_string(),
             name: name.trim().to_string(),
         })?;
-        into[d] = Some(parse_value(d, value)?);
+        if std::mem::replace(&mut seen[d], true) {
+            return Err(UnitError::NoiseTwice {
+                entry: entry.to_string(),
+                name: dof_name(d).to_string(),
+            });
+        }
+        into[d] = Some(parse_value(d, value).map_err(|e| e.in_entry(entry))?);
     }
     Ok(())
 }

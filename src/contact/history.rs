@@ -225,7 +225,9 @@ pub fn parse_history_csv(text: &str, file: &str) -> Result<Vec<HistoryRow>, Hist
         return Err(HistoryCsvError::Header {
             file: file(),
             line: header.line,
-            header: header.text.clone(),
+            // Escaped, so that an invisible character (a byte-order mark
+            // U+FEFF, a NUL) shows in the message.
+            header: header.text.escape_debug().to_string(),
         });
     }
     let mut out = Vec::new();

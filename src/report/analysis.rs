@@ -12,7 +12,7 @@ use serde::Serialize;
 use crate::analysis::load::Envelope;
 use crate::analysis::stiffness::CouplingStiffness;
 use crate::assembly::Coupling;
-use crate::solve::quasistatic::{ExternalLoad, LoadEvent, LoadPath};
+use crate::solve::quasistatic::{ExternalLoad, LIFT_OFF_RATIO, LoadEvent, LoadPath};
 use crate::solve::{ContactResult, PointPose, Seating};
 
 /// Why a stiffness report cannot be made.
@@ -305,14 +305,15 @@ impl LoadReport {
         let mut t = Table::new(
             ">#; >F_n0 [N]:.6; >F_n [N]:.6; >|F_t| [N]:.6; >|F_t|/F_n:.6; >|F_t|/mu_sF_n:.4; >state",
         );
+        // A path that ended short without an error ended at a lift-off.
+        let lifted_path = self.factor_reached < 1.0 && self.stopped.is_none();
+        let mut lifted = 0;
         for (i, (c, c0)) in self.contacts.iter().zip(&self.seated_contacts).enumerate() {
-            let loaded = c.normal_force_n > 0.0;
-            let ratio = if loaded {
-                c.tangential_force_n / c.normal_force_n
-            } else {
-                0.0
-            };
-            let used = (c.mu_static > 0.0 && loaded)
+            let off = c.normal_force_n <= 0.0
+                || (lifted_path && c.normal_force_n < LIFT_OFF_RATIO * c0.normal_force_n);
+            lifted += usize::from(off);
+            let ratio = (!off).then(|| c.tangential_force_n / c.normal_force_n);
+            let used = (c.mu_static > 0.0 && !off)
                 .then(|| c.tangential_force_n / (c.mu_static * c.normal_force_n));
             t.row(cells![
                 i + 1,
@@ -321,8 +322,14 @@ impl LoadReport {
                 c.tangential_force_n,
                 ratio,
                 used,
-                c.state.name(),
+                if off { "lift-off" } else { c.state.name() },
             ]);
+        }
+        if lifted > 0 {
+            t.note(format!(
+                "WARNING: {lifted} contact(s) lifted off (normal force below {} % of the seated one): their friction ratios are not defined (-)",
+                100.0 * LIFT_OFF_RATIO
+            ));
         }
         *s += &t.text();
     }

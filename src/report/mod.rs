@@ -8,6 +8,7 @@ pub mod calibration;
 pub mod calibration_plot;
 pub mod check;
 pub mod contact;
+pub mod contact_validity;
 pub mod html;
 pub mod materials;
 pub mod plot;

@@ -34,7 +34,8 @@ pub struct SceneFile {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
     /// Accept magnitudes beyond the plausibility bounds of `scene::plausible`
-    /// (a ball above 0.5 m, a circle of balls above 5 m, a preload above 1 MN).
+    /// (a ball above 0.5 m, a circle of balls above 5 m, a preload above 1 MN,
+    /// and the bounds below: a ball below 10 um, E below 10 MPa, ...).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub allow_large_values: bool,
     /// User-defined materials (a built-in or earlier name only with `override = true`).

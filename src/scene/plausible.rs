@@ -1,5 +1,7 @@
 //! Plausibility of a scene's magnitudes: values that look like millimetres
-//! (or newtons off by orders of magnitude) typed into an SI file.
+//! (or newtons off by orders of magnitude) typed into an SI file, and below
+//! their range values that look like micrometres, GPa or MPa typed as SI,
+//! or a support compliance in um/N.
 //!
 //! Kinematic couplings are built from balls of millimetres to a few
 //! centimetres on circles of centimetres to a metre, preloaded with newtons
@@ -27,8 +29,139 @@ pub const CIRCLE_DIAMETER_MAX: f64 = 5.0;
 /// Largest plausible total preload [N].
 pub const PRELOAD_MAX: f64 = 1.0e6;
 
+/// Smallest plausible moving-ball diameter [m] (micro-couplings have balls
+/// of tens of micrometres; below, a value in nm or um typed as m).
+pub const BALL_DIAMETER_MIN: f64 = 1.0e-5;
+/// Smallest plausible pin or fixed-ball diameter [m].
+pub const ELEMENT_DIAMETER_MIN: f64 = 1.0e-5;
+/// Smallest plausible diameter of the circle of ball centres [m].
+pub const CIRCLE_DIAMETER_MIN: f64 = 1.0e-4;
+/// Smallest plausible total preload [N] (a micronewton: far below the
+/// solver's force scale a preload of 1e-300 N is rounding noise).
+pub const PRELOAD_MIN: f64 = 1.0e-6;
+/// Largest plausible support compliance [m/N]: a millimetre per newton is
+/// a soft spring, not a support (um/N typed as m/N is a million times more).
+pub const SUPPORT_COMPLIANCE_MAX: f64 = 1.0e-3;
+/// Smallest plausible Young's modulus [Pa] (10 MPa, below any polymer a
+/// coupling is made of; 200 typed for 200 GPa is far below).
+pub const YOUNGS_MODULUS_MIN: f64 = 1.0e7;
+/// Smallest plausible allowable stress [Pa] (1 MPa; 1500 typed for
+/// 1500 MPa is far below).
+pub const ALLOWABLE_STRESS_MIN: f64 = 1.0e6;
+
+/// `x` as typed in a message: plain, or with an exponent when very large
+/// or small.
+pub fn as_typed(x: f64) -> String {
+    if x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
 /// The key that accepts values beyond these bounds.
 pub const ALLOW_KEY: &str = "allow_large_values";
+
+/// A value below its plausible range: the hint names the unit it was
+/// probably given in.
+fn too_small(
+    ctx: &ErrorContext,
+    span: Option<&std::ops::Range<usize>>,
+    field: &str,
+    what: String,
+    hint: &str,
+) -> SceneError {
+    ctx.error(
+        span,
+        field,
+        format!(
+            "{what}: {hint} scene files are in SI (m, N, Pa); if the value is intended, set \
+             `{ALLOW_KEY} = true` at the top of the file"
+        ),
+    )
+}
+
+/// `v` [unit] of `field` below `min`: an error with `hint`.
+fn at_least(
+    ctx: &ErrorContext,
+    v: &Spanned<f64>,
+    field: &str,
+    (min, unit, what, hint): (f64, &str, &str, &str),
+) -> Result<(), SceneError> {
+    let x = *v.get_ref();
+    if x > 0.0 && x < min {
+        return Err(too_small(
+            ctx,
+            Some(&v.span()),
+            field,
+            format!(
+                "{} {unit} is implausibly small for {what} (limit {} {unit})",
+                as_typed(x),
+                as_typed(min)
+            ),
+            hint,
+        ));
+    }
+    Ok(())
+}
+
+/// A support compliance [m/N] above [`SUPPORT_COMPLIANCE_MAX`].
+fn support_compliance(ctx: &ErrorContext, v: &Spanned<f64>, field: &str) -> Result<(), SceneError> {
+    let c = *v.get_ref();
+    if c > SUPPORT_COMPLIANCE_MAX {
+        return Err(ctx.error(
+            Some(&v.span()),
+            field,
+            format!(
+                "{} m/N is an implausibly large support compliance (limit \
+                 {SUPPORT_COMPLIANCE_MAX} m/N, already a soft spring): did you give um/N or \
+                 nm/N? scene files are in SI (m/N); if the value is intended, set \
+                 `{ALLOW_KEY} = true` at the top of the file",
+                as_typed(c)
+            ),
+        ));
+    }
+    Ok(())
+}
+
+const LENGTH_HINT: &str = "did you give micrometres or nanometres?";
+
+/// The `[[materials]]` entries: a Young's modulus or an allowable stress
+/// that looks like GPa or MPa typed as Pa.
+fn check_materials(f: &SceneFile, ctx: &ErrorContext) -> Result<(), SceneError> {
+    for (i, m) in f.materials.iter().enumerate() {
+        let field = |k: &str| format!("materials[{}].{k}", i + 1);
+        let e = *m.youngs_modulus.get_ref();
+        at_least(
+            ctx,
+            &m.youngs_modulus,
+            &field("youngs_modulus"),
+            (
+                YOUNGS_MODULUS_MIN,
+                "Pa",
+                "a Young's modulus",
+                &format!("did you give GPa? {e} GPa is {} Pa;", as_typed(e * 1e9)),
+            ),
+        )?;
+        let allowables = [
+            (&m.allowable_pressure, "allowable_pressure"),
+            (&m.allowable_shear_stress, "allowable_shear_stress"),
+        ];
+        for (v, key) in allowables {
+            let Some(v) = v else { continue };
+            let x = *v.get_ref();
+            let hint = format!("did you give MPa? {x} MPa is {} Pa;", as_typed(x * 1e6));
+            let what = (
+                ALLOWABLE_STRESS_MIN,
+                "Pa",
+                "an allowable stress",
+                hint.as_str(),
+            );
+            at_least(ctx, v, &field(key), what)?;
+        }
+    }
+    Ok(())
+}
 
 fn too_large(
     ctx: &ErrorContext,
@@ -101,7 +234,37 @@ pub fn check_coupling(c: &CouplingFile, allow: bool, ctx: &ErrorContext) -> Resu
             "a canoe radius",
         )?;
     }
-    Ok(())
+    check_coupling_small(c, ctx)
+}
+
+/// The high-level `[coupling]` lengths below their plausible range, and
+/// its support compliance.
+fn check_coupling_small(c: &CouplingFile, ctx: &ErrorContext) -> Result<(), SceneError> {
+    let min = |v, field: &str, min, what| at_least(ctx, v, field, (min, "m", what, LENGTH_HINT));
+    min(
+        &c.diameter,
+        "coupling.diameter",
+        CIRCLE_DIAMETER_MIN,
+        "the circle of ball centres",
+    )?;
+    min(
+        &c.ball_diameter,
+        "coupling.ball_diameter",
+        BALL_DIAMETER_MIN,
+        "a ball diameter",
+    )?;
+    if let Some(d) = &c.groove_element_diameter {
+        min(
+            d,
+            "coupling.groove_element_diameter",
+            ELEMENT_DIAMETER_MIN,
+            "a pin or fixed-ball diameter",
+        )?;
+    }
+    match &c.support_compliance {
+        Some(v) => support_compliance(ctx, v, "coupling.support_compliance"),
+        None => Ok(()),
+    }
 }
 
 /// The explicit form: ball and element radii, the ball centres' distance
@@ -115,8 +278,17 @@ pub fn check_explicit(
     if f.allow_large_values {
         return Ok(());
     }
+    check_materials(f, ctx)?;
     for (i, (b, c)) in f.balls.iter().zip(centres).enumerate() {
         let d = 2.0 * b.radius.get_ref();
+        let field = format!("balls[{}].radius", i + 1);
+        let what = "a ball radius";
+        at_least(
+            ctx,
+            &b.radius,
+            &field,
+            (BALL_DIAMETER_MIN / 2.0, "m", what, LENGTH_HINT),
+        )?;
         if d > BALL_DIAMETER_MAX {
             return Err(too_large(
                 ctx,
@@ -148,6 +320,13 @@ pub fn check_explicit(
     let single = p.force.iter().map(|v| (v, "preload.force".to_string()));
     for (v, field) in single.chain(forces) {
         let force = *v.get_ref();
+        let what = "a preload force";
+        at_least(
+            ctx,
+            v,
+            &field,
+            (PRELOAD_MIN, "N", what, "is it in newtons?"),
+        )?;
         if force > PRELOAD_MAX {
             return Err(too_large(
                 ctx,
@@ -181,6 +360,24 @@ fn check_surfaces(f: &SceneFile, ctx: &ErrorContext) -> Result<(), SceneError> {
                 ),
             ));
         }
+    }
+    for (i, s) in f.surfaces.iter().enumerate() {
+        let field = |k: &str| format!("surfaces[{}].{k}", i + 1);
+        if let Some(c) = &s.support_compliance {
+            support_compliance(ctx, c, &field("support_compliance"))?;
+        }
+        let (Some(r), SurfaceKind::Cylinder | SurfaceKind::Sphere | SurfaceKind::ConcaveCylinder) =
+            (&s.radius, s.kind.get_ref())
+        else {
+            continue;
+        };
+        let what = (
+            ELEMENT_DIAMETER_MIN / 2.0,
+            "m",
+            "a pin or fixed-ball radius",
+            LENGTH_HINT,
+        );
+        at_least(ctx, r, &field("radius"), what)?;
     }
     for (i, s) in f.surfaces.iter().enumerate() {
         let Some(r) = &s.moving_radius else { continue };

@@ -53,7 +53,10 @@ impl Default for SolverOptions {
 pub enum SolveError {
     #[error("--mu needs {expected} values (one per contact, in contact order), got {got}")]
     MuCount { expected: usize, got: usize },
-    #[error("--mu value {index} = {value} is outside [0, {max}]")]
+    #[error(
+        "the static friction coefficient of contact {index} = {value} is outside [0, {max}] \
+         (the value given by --mu, or drawn from the scene's mu_static +- spread)"
+    )]
     MuRange { index: usize, value: f64, max: f64 },
     #[error(
         "the seating solve did not converge at {percent:.3} % of the preload (relative residual \
@@ -64,6 +67,20 @@ pub enum SolveError {
         residual: f64,
         splits: u32,
     },
+    #[error(
+        "the load path did not converge at {percent:.3} % of the applied load (relative \
+         residual {residual:.3e} after halving the increment {splits} times)"
+    )]
+    LoadNotConverged {
+        percent: f64,
+        residual: f64,
+        splits: u32,
+    },
+    #[error(
+        "the coupling slides away under the load: at {percent:.3} % of the applied load the \
+         moving half has moved {displacement_m:.3e} m"
+    )]
+    LoadSlidAway { percent: f64, displacement_m: f64 },
     #[error(
         "contact {contact} opened completely at {percent:.3} % of the preload: the preload lifts \
          the moving half off that contact instead of seating it"

@@ -1,4 +1,326 @@
 //! Validity warnings, flags without effect, and errors that name the option, field and reason (issue 28 items 6-7).
 
-#[allow(unused_imports)]
-use crate::common;
+use crate::common::{self, E_STAR_STEEL, hertz_circle, kinrepro};
+
+const SCENE01: &str = "01_maxwell_vgroove_steel.toml";
+const SCENE02: &str = "02_maxwell_pins_steel.toml";
+
+fn s01() -> String {
+    common::scene(SCENE01).display().to_string()
+}
+
+/// Run and expect a refusal: non-zero exit, one `error:` line that contains
+/// every word of `names`; returns stderr.
+fn refused(args: &[&str], names: &[&str]) -> String {
+    let (ok, _, err) = kinrepro(args);
+    assert!(!ok, "{args:?} should be refused, stderr: {err}");
+    assert!(!err.contains("panicked"), "{args:?}: {err}");
+    for n in names {
+        assert!(
+            err.contains(n),
+            "{args:?}: the message should name `{n}`: {err}"
+        );
+    }
+    err
+}
+
+/// Scene 02 with `from` replaced by `to` in a temporary directory.
+fn edited(from: &str, to: &str) -> (tempfile::TempDir, String) {
+    let text = std::fs::read_to_string(common::scene(SCENE02)).unwrap();
+    assert!(text.contains(from), "{from}");
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("s.toml");
+    std::fs::write(&path, text.replacen(from, to, 1)).unwrap();
+    (dir, path.display().to_string())
+}
+
+fn contact(extra: &[&str]) -> (bool, String, String) {
+    let mut args = vec!["contact", "--material1", "steel", "--material2", "steel"];
+    args.extend_from_slice(extra);
+    kinrepro(&args)
+}
+
+// ---- item 6: Hertz validity ----
+
+/// Load 1e300 N on a 5 mm ball: Hertz's contact radius a = (3 F R / 4 E*)^(1/3)
+/// is far larger than the ball, so the numbers mean nothing: refused, naming --load.
+#[test]
+fn contact_load_far_outside_hertz_is_refused() {
+    let (a, _) = hertz_circle(1e300, 0.005, E_STAR_STEEL);
+    assert!(
+        a > 0.005,
+        "the case must have a contact wider than the ball"
+    );
+    let (ok, out, err) = contact(&[
+        "--shape",
+        "sphere-plane",
+        "--radius1",
+        "0.005",
+        "--load",
+        "1e300",
+    ]);
+    assert!(!ok && out.is_empty(), "{out}");
+    assert!(
+        err.contains("--load 1e300") && err.contains("body radius"),
+        "{err}"
+    );
+    // The same ball at 10 N (a/R about 2 %) is valid: no warning.
+    let (a, _) = hertz_circle(10.0, 0.005, E_STAR_STEEL);
+    assert!(a < 0.1 * 0.005);
+    let (ok, _, err) = contact(&[
+        "--shape",
+        "sphere-plane",
+        "--radius1",
+        "0.005",
+        "--load",
+        "10",
+    ]);
+    assert!(ok && !err.contains("warning"), "{err}");
+}
+
+/// A 1 nm pin under a 5 mm ball: the contact (about 0.16 mm wide at 10 N)
+/// is wider than the pin: refused.
+#[test]
+fn contact_nanometre_pin_is_refused() {
+    let (ok, _, err) = contact(&[
+        "--shape",
+        "sphere-cylinder",
+        "--radius1",
+        "0.005",
+        "--radius2",
+        "1e-9",
+        "--load",
+        "10",
+    ]);
+    assert!(
+        !ok && err.contains("--load 10") && err.contains("1.0000e-9 m"),
+        "{err}"
+    );
+}
+
+/// A conformal seat (ball 5 mm in a 5.01 mm socket): the relative radius
+/// R1 R2 / (R2 - R1) = 2.505 m makes a/R_rel tiny, but a = (3 F R / 4 E*)^(1/3)
+/// is over 10 % of the ball's own radius: warned, still printed.
+#[test]
+fn contact_conformal_seat_warns() {
+    let (r1, r2) = (0.005, 0.00501);
+    let (a, _) = hertz_circle(100.0, r1 * r2 / (r2 - r1), E_STAR_STEEL);
+    assert!(a > 0.1 * r1 && a < r1, "a / r1 = {}", a / r1);
+    let (ok, out, err) = contact(&[
+        "--shape",
+        "sphere-seat",
+        "--radius1",
+        "0.005",
+        "--radius2",
+        "0.00501",
+        "--load",
+        "100",
+    ]);
+    assert!(ok && out.contains("semi-axes"), "{err}");
+    assert!(
+        err.contains("warning: conformal contact")
+            && err.contains("smallest body radius 5.0000 mm"),
+        "{err}"
+    );
+}
+
+#[test]
+fn contact_radius_in_millimetres_gets_a_hint() {
+    let (ok, _, err) = contact(&["--shape", "sphere-plane", "--radius1", "5", "--load", "10"]);
+    assert!(ok, "{err}");
+    assert!(
+        err.contains("--radius1 5") && err.contains("millimetres"),
+        "{err}"
+    );
+}
+
+#[test]
+fn load_at_far_point_is_refused() {
+    let s = s01();
+    refused(
+        &["load", &s, "--force", "0,0,-10", "--at", "1e300,0,0"],
+        &["--at 1e300,0,0", "coupling's size"],
+    );
+}
+
+/// A pull of 50 N along +z against the 20 N preload lifts the coupling off
+/// at 20/50 = 0.4 of the load: the contacts have no normal force, so no
+/// friction ratio may be printed for them.
+#[test]
+fn load_lift_off_prints_no_friction_ratio() {
+    let s = s01();
+    let (ok, out, err) = kinrepro(&["load", &s, "--force", "0,0,50", "--at", "0,0,0"]);
+    assert!(ok, "{err}");
+    assert!(out.contains("load factor 0.4"), "{out}");
+    let rows: Vec<&str> = out.lines().filter(|l| l.ends_with("lift-off")).collect();
+    assert_eq!(rows.len(), 6, "{out}");
+    for r in rows {
+        let cells: Vec<&str> = r.split_whitespace().collect();
+        assert_eq!(&cells[4..6], &["-", "-"], "{r}");
+    }
+    assert!(out.contains("WARNING: 6 contact(s) lifted off"), "{out}");
+}
+
+// ---- item 6: flags without effect ----
+
+#[test]
+fn flags_without_effect_are_refused() {
+    let s = s01();
+    let m = common::worked_measurement().display().to_string();
+    let cases: Vec<(Vec<&str>, Vec<&str>)> = vec![
+        (
+            vec!["study", &s, "--sobol-samples", "10"],
+            vec!["--sensitivity"],
+        ),
+        (vec!["study", &s, "--force"], vec!["--force", "--out"]),
+        (
+            vec!["sweep", &s, "--set", "preload.force=10,20", "--force"],
+            vec!["--force", "--out"],
+        ),
+        (
+            vec!["run", &s, "--solver", "dynamic", "--increments", "5"],
+            vec!["--increments 5", "dynamic"],
+        ),
+        (
+            vec!["study", &s, "--solver", "dynamic", "--increments", "5"],
+            vec!["--increments 5", "dynamic"],
+        ),
+        (vec!["run", &s, "--force"], vec!["--trace"]),
+        (
+            vec!["calibrate", &s, "--measured", &m, "--force"],
+            vec!["--out"],
+        ),
+        (
+            vec!["predict", &s, "--calibration", "c.json", "--force"],
+            vec!["--plot"],
+        ),
+        (
+            vec!["calibrate", &s, "--measured", &m, "--noise", "x=1nm,x=2nm"],
+            vec!["--noise", "x=2nm", "twice"],
+        ),
+    ];
+    for (args, names) in cases {
+        refused(&args, &names);
+    }
+    let base = [
+        "contact",
+        "--material1",
+        "steel",
+        "--material2",
+        "steel",
+        "--shape",
+        "sphere-plane",
+        "--radius1",
+        "0.005",
+        "--load",
+        "10",
+    ];
+    for (extra, name) in [
+        (["--mu", "0.3"], "--history"),
+        (["--dynamic-ratio", "0.5"], "--history"),
+        (["--tangential-law", "mindlin-deresiewicz"], "--history"),
+        (["--radius2", "0.003"], "--radius2 0.003"),
+    ] {
+        let args: Vec<&str> = base.iter().copied().chain(extra).collect();
+        refused(&args, &[name]);
+    }
+}
+
+// ---- item 7: errors that name the file, the field and the reason ----
+
+#[test]
+fn scene_values_in_the_wrong_unit_name_the_field() {
+    let material =
+        "\n[[materials]]\nname = \"mysteel\"\nyoungs_modulus = 200\npoisson_ratio = 0.3\n";
+    let text = std::fs::read_to_string(common::scene(SCENE02))
+        .unwrap()
+        .replace("\"steel\"", "\"mysteel\"")
+        + material;
+    let dir = tempfile::tempdir().unwrap();
+    let gpa = dir.path().join("gpa.toml");
+    std::fs::write(&gpa, text).unwrap();
+    let gpa = gpa.display().to_string();
+    refused(
+        &["check", &gpa],
+        &["gpa.toml:", "materials[1].youngs_modulus", "GPa"],
+    );
+    refused(&["run", &gpa], &["materials[1].youngs_modulus", "GPa"]);
+    let cases = [
+        ("force = 20.0 ", "force = 1e-300 ", "preload.force"),
+        (
+            "groove_material = \"steel\"",
+            "groove_material = \"steel\"\nsupport_compliance = 1e10",
+            "coupling.support_compliance",
+        ),
+        (
+            "ball_diameter = 0.010 ",
+            "ball_diameter = 10e-9 ",
+            "coupling.ball_diameter",
+        ),
+        (
+            "groove_element_diameter = 0.004 ",
+            "groove_element_diameter = 4e-9 ",
+            "coupling.groove_element_diameter",
+        ),
+    ];
+    for (from, to, field) in cases {
+        let (_dir, path) = edited(from, to);
+        refused(&["run", &path], &["s.toml:", field, "implausibly"]);
+    }
+}
+
+#[test]
+fn load_path_failures_name_the_load_options() {
+    let s = s01();
+    refused(
+        &["load", &s, "--force", "1e12,0,0", "--at", "0,0,0"],
+        &[SCENE01, "--force 1e12,0,0", "of the applied load"],
+    );
+    let e = refused(
+        &[
+            "load", &s, "--force", "0,0,0", "--at", "0,0,0", "--moment", "1e9,0,0",
+        ],
+        &["--moment 1e9,0,0"],
+    );
+    assert!(!e.contains("of the preload"), "{e}");
+}
+
+#[test]
+fn option_errors_name_the_option() {
+    let s = s01();
+    let e = refused(
+        &["validate-hertz", "--convergence", "100", &s],
+        &["--convergence 100", "(0, 1]"],
+    );
+    assert!(!e.contains("MeshOptions"), "{e}");
+    let m = common::worked_measurement().display().to_string();
+    let e = refused(
+        &["calibrate", &s, "--measured", &m, "--noise", "x=nan"],
+        &["--noise", "x=nan", "finite"],
+    );
+    assert!(!e.contains("unit"), "{e}");
+}
+
+/// A history file whose header begins with an invisible byte-order mark:
+/// accepted, or refused with a message that shows the mark.
+#[test]
+fn history_header_bom_is_accepted_or_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("h.csv");
+    std::fs::write(&path, "\u{feff}P_N,Qx_N,Qy_N\n1,0,0\n2,0,0\n").unwrap();
+    let p = path.display().to_string();
+    let (ok, _, err) = contact(&[
+        "--shape",
+        "sphere-plane",
+        "--radius1",
+        "0.005",
+        "--history",
+        &p,
+        "--mu",
+        "0.3",
+    ]);
+    assert!(
+        ok || (err.contains("h.csv:1") && err.contains("\\u{feff}")),
+        "{err}"
+    );
+}

@@ -30,8 +30,14 @@ pub fn sigma_bars_svg(data: &[VariantSigma], what: &str) -> Result<String> {
             .flat_map(|r| r.iter().flatten()),
         "reference sigma",
     )?;
-    if data.iter().flat_map(|v| v.sigma).any(|s| s < 0.0) {
-        return Err(StudyError::InvalidParameter("negative sigma".into()));
+    for v in data {
+        if let Some((d, s)) = v.sigma.iter().enumerate().find(|(_, s)| **s < 0.0) {
+            return Err(StudyError::InvalidParameter(format!(
+                "variant `{}`: sigma of {} = {s} is negative (a standard deviation is >= 0)",
+                v.variant,
+                Dof::ALL[d].name()
+            )));
+        }
     }
     let mut svg = String::new();
     {

@@ -50,3 +50,8 @@ pub struct LoadEvent {
     pub previous: f64,
     pub factor: f64,
 }
+
+/// A contact whose normal force has fallen below this fraction of its
+/// seated value when a load path cannot go on has lifted off (the
+/// separating contact leaves the moving half without equilibrium).
+pub const LIFT_OFF_RATIO: f64 = 0.05;

@@ -4,7 +4,7 @@
 
 use nalgebra::{Vector3, Vector6};
 
-use super::external::{ExternalLoad, LoadEvent, LoadEventKind};
+use super::external::{ExternalLoad, LIFT_OFF_RATIO, LoadEvent, LoadEventKind};
 use super::path::{Buffers, Walk};
 use super::solver::{Program, Solver, contact_results};
 use crate::assembly::{BodyPose, Coupling};
@@ -111,7 +111,8 @@ impl Solver<'_> {
     /// right after a contact has lost nearly all its normal force, is a
     /// lift-off: the separating contact leaves the moving half without
     /// equilibrium (no friction holds it). The contact is the one whose
-    /// normal force has fallen furthest, if below 5 % of its seated value.
+    /// normal force has fallen furthest, if below [`LIFT_OFF_RATIO`] of its
+    /// seated value.
     pub(super) fn lift_off(
         &self,
         walk: &Walk,
@@ -126,7 +127,7 @@ impl Solver<'_> {
             .enumerate()
             .map(|(i, (e, f0))| (i, e.normal_force / f0.max(f64::MIN_POSITIVE)))
             .min_by(|a, b| a.1.total_cmp(&b.1))?;
-        (ratio < 0.05).then_some(LoadEvent {
+        (ratio < LIFT_OFF_RATIO).then_some(LoadEvent {
             contact: i + 1,
             kind: LoadEventKind::Separation,
             previous: walk.s * factor,

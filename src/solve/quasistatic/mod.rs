@@ -57,7 +57,7 @@ mod lu6;
 mod path;
 mod solver;
 
-pub use external::{ExternalLoad, LoadEvent, LoadEventKind};
+pub use external::{ExternalLoad, LIFT_OFF_RATIO, LoadEvent, LoadEventKind};
 pub use load::{LoadPath, apply_load, at_rest_states};
 
 use path::Buffers;

@@ -244,9 +244,16 @@ impl Solver<'_> {
         }
         let travel = (new_pose.translation - ctx.start.translation).norm();
         if travel > self.max_travel {
-            return Some(Verdict::Stop(SolveError::SlidAway {
-                percent: 100.0 * loads.lambda.max(loads.extra),
-                displacement_m: travel,
+            return Some(Verdict::Stop(if ctx.seating {
+                SolveError::SlidAway {
+                    percent: 100.0 * loads.lambda,
+                    displacement_m: travel,
+                }
+            } else {
+                SolveError::LoadSlidAway {
+                    percent: 100.0 * loads.s,
+                    displacement_m: travel,
+                }
             }));
         }
         None
@@ -269,7 +276,8 @@ impl Solver<'_> {
             w.event = w.event.or(Some(e));
             return Ok(self.end(w));
         }
-        let err = self.failure(load, residual, &w.pose, &ctx.start);
+        let at = if ctx.seating { load } else { s_next };
+        let err = self.failure(at, residual, &w.pose, &ctx.start);
         self.stop(err, w)
     }
 

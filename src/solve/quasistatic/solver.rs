@@ -138,6 +138,8 @@ impl<'a> Solver<'a> {
         }
     }
 
+    /// Why a path failed at `lambda`: the preload factor of a seating, the
+    /// fraction of the applied load of a load path.
     pub fn failure(
         &self,
         lambda: f64,
@@ -146,17 +148,28 @@ impl<'a> Solver<'a> {
         start: &BodyPose,
     ) -> SolveError {
         let travel = (pose.translation - start.translation).norm();
-        if travel > 0.5 * self.max_travel {
-            SolveError::SlidAway {
-                percent: 100.0 * lambda,
+        let percent = 100.0 * lambda;
+        let splits = self.opts.max_splits;
+        let slid = travel > 0.5 * self.max_travel;
+        match (&self.program, slid) {
+            (Program::Seat, true) => SolveError::SlidAway {
+                percent,
                 displacement_m: travel,
-            }
-        } else {
-            SolveError::NotConverged {
-                percent: 100.0 * lambda,
+            },
+            (Program::Seat, false) => SolveError::NotConverged {
+                percent,
                 residual,
-                splits: self.opts.max_splits,
-            }
+                splits,
+            },
+            (Program::Load { .. }, true) => SolveError::LoadSlidAway {
+                percent,
+                displacement_m: travel,
+            },
+            (Program::Load { .. }, false) => SolveError::LoadNotConverged {
+                percent,
+                residual,
+                splits,
+            },
         }
     }
 

@@ -1,6 +1,6 @@
 //! `kinrepro stiffness` and `kinrepro load`: the seated coupling under extra loads.
 
-use kinrepro::analysis::load::{envelope, load_path};
+use kinrepro::analysis::load::{LEVER_RATIO_MAX, envelope, lever_ratio, load_path};
 use kinrepro::analysis::stiffness::CouplingStiffness;
 use kinrepro::report::analysis::{LoadReport, StiffnessReport};
 use kinrepro::solve::SolverOptions;
@@ -53,10 +53,28 @@ pub fn load(o: Checked<LoadArgs, ExternalLoad>) -> Result<(), CliError> {
     let file = coupling.scene.file.clone();
     let opts = SolverOptions::default();
     let seating = seat(&coupling, &mu, &opts).context(&file)?;
+    let (ratio, size) = lever_ratio(&coupling, &load.point);
+    if ratio > LEVER_RATIO_MAX {
+        return Err(CliError::Usage(format!(
+            "--at {}: the load point lies {} m from the origin, more than {LEVER_RATIO_MAX} times the coupling's size ({size} m, its farthest ball centre): a lever that long is no load for this coupling (did you give millimetres? the flags are in SI, m)",
+            vector(&load.point),
+            number(load.point.amax())
+        )));
+    }
+    let what = format!(
+        "{file}: --force {} N at --at {} m, --moment {} N m",
+        vector(&load.force),
+        vector(&load.point),
+        vector(&load.moment)
+    );
     let path = load_path(&coupling, &mu, &seating, &load, 1.0, &opts)
-        .context(format!("{file}: the load path failed"))?;
+        .map_err(|e| {
+            CliError::from(e).in_context(format!(
+                "{what}: the load path after seating failed (a load far beyond what the seat holds? a smaller load's safe load envelope tells where the seat is lost)"
+            ))
+        })?;
     let envelope = envelope(&coupling, &mu, &seating, &load, &opts)
-        .context(format!("{file}: the envelope search failed"))?;
+        .context(format!("{what}: the envelope search failed"))?;
     let mut points = evaluation_points(&coupling);
     points.push(("load point".to_string(), load.point));
     let report = LoadReport::new(&coupling, &mu, &seating, &load, &path, &envelope, &points);
@@ -65,4 +83,9 @@ pub fn load(o: Checked<LoadArgs, ExternalLoad>) -> Result<(), CliError> {
     } else {
         emit(&report.table())
     }
+}
+
+/// `x,y,z` as the flags take it.
+fn vector(v: &Vector3<f64>) -> String {
+    format!("{},{},{}", number(v.x), number(v.y), number(v.z))
 }

@@ -105,6 +105,8 @@ pub fn progress(total: usize) -> Result<indicatif::ProgressBar, CliError> {
     Ok(b)
 }
 
+pub use kinrepro::scene::plausible::as_typed as number;
+
 pub fn print_json<T: serde::Serialize>(v: &T) -> Result<(), CliError> {
     emit(&format!("{}\n", serde_json::to_string_pretty(v)?))
 }

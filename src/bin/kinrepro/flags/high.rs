@@ -71,10 +71,15 @@ pub fn predict(a: &PredictArgs) -> Result<(), CliError> {
     jobs(a.jobs)
 }
 
-/// The seating solver: `--increments` (checked whatever the solver) for
-/// the quasi-static one, `start` for the dynamic one.
-fn method(solver: SolverKind, increments: usize, start: StartPose) -> Result<Method, CliError> {
+/// The seating solver: `--increments` (default 20) for the quasi-static
+/// one, `start` for the dynamic one.
+fn method(
+    solver: SolverKind,
+    increments: Option<usize>,
+    start: StartPose,
+) -> Result<Method, CliError> {
     use kinrepro::solve::INCREMENTS;
+    let increments = increments.unwrap_or(SolverOptions::default().increments);
     if !INCREMENTS.contains(&increments) {
         return Err(usage(format!(
             "--increments {increments}: out of range, need {}..={} load increments",
@@ -148,6 +153,7 @@ fn study_design(opts: StudyOptions) -> Result<StudyOptions, CliError> {
 }
 
 pub fn contact(a: &ContactArgs) -> Result<ContactInputs, CliError> {
+    super::unused::contact(a)?;
     let history_friction = match a.history {
         None => None,
         Some(_) => {
@@ -209,6 +215,7 @@ fn principal_radii(flag: &str, v: &[f64]) -> Result<[f64; 2], CliError> {
 }
 
 pub fn run(a: &RunArgs) -> Result<Method, CliError> {
+    super::unused::run(a)?;
     if a.solver == SolverKind::QuasiStatic
         && (a.trace.is_some() || a.offset.is_some() || a.tilt.is_some())
     {
@@ -236,6 +243,7 @@ pub fn load(a: &LoadArgs) -> Result<ExternalLoad, CliError> {
 }
 
 pub fn study(a: &StudyArgs) -> Result<StudyOptions, CliError> {
+    super::unused::study(a)?;
     let start = if a.vary.contains(&VaryKind::Start) {
         let bounds = |flag: &str, v: Option<&[f64]>| {
             let v = vector3(flag, v)?;
@@ -293,6 +301,7 @@ pub fn check_plan(plan: &StudyPlan, opts: &StudyOptions) -> Result<(), CliError>
 }
 
 pub fn sweep(a: &SweepArgs) -> Result<StudyOptions, CliError> {
+    super::unused::sweep(a)?;
     match (a.design, a.points) {
         (DesignArg::Grid, Some(_)) => return Err(usage("--points needs --design lhs")),
         (DesignArg::Lhs, None) => return Err(usage("--design lhs needs --points N")),
@@ -303,7 +312,11 @@ pub fn sweep(a: &SweepArgs) -> Result<StudyOptions, CliError> {
         samples: a.samples,
         seed: a.seed,
         shard: a.shard.unwrap_or_else(Shard::whole),
-        method: method(SolverKind::QuasiStatic, a.increments, StartPose::touching())?,
+        method: method(
+            SolverKind::QuasiStatic,
+            Some(a.increments),
+            StartPose::touching(),
+        )?,
         variation: Variation {
             friction: true,
             ..Default::default()
@@ -315,10 +328,13 @@ pub fn sweep(a: &SweepArgs) -> Result<StudyOptions, CliError> {
 
 pub fn validate_hertz(a: &ValidateHertzArgs) -> Result<MeshOptions, CliError> {
     let levels = a.convergence.as_deref().unwrap_or_default();
-    if levels.iter().any(|l| !(l.is_finite() && *l > 0.0)) {
-        return Err(usage(
-            "--convergence: element sizes must be positive numbers",
-        ));
+    if let Some(l) = levels
+        .iter()
+        .find(|l| !(l.is_finite() && **l > 0.0 && **l <= 1.0))
+    {
+        return Err(usage(format!(
+            "--convergence {l}: element sizes are fractions of the contact semi-axis, in (0, 1]"
+        )));
     }
     if let Some(r) = &a.ratios {
         if !a.conformity {

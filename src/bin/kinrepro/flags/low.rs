@@ -115,13 +115,18 @@ pub struct ContactArgs {
     #[arg(long, requires = "mu")]
     pub history: Option<PathBuf>,
     /// Static friction coefficient mu_s (with --history).
-    #[arg(long, allow_hyphen_values = true)]
+    #[arg(long, allow_hyphen_values = true, requires = "history")]
     pub mu: Option<f64>,
     /// mu_d = ratio * mu_s, in (0, 1] (with --history).
-    #[arg(long, default_value_t = 0.8, allow_hyphen_values = true)]
+    #[arg(
+        long,
+        default_value_t = 0.8,
+        allow_hyphen_values = true,
+        requires = "history"
+    )]
     pub dynamic_ratio: f64,
     /// coulomb | mindlin-deresiewicz (with --history).
-    #[arg(long, default_value = "coulomb")]
+    #[arg(long, default_value = "coulomb", requires = "history")]
     pub tangential_law: TangentialLaw,
 }
 
@@ -140,9 +145,10 @@ pub struct RunArgs {
     /// (default: the scene's nominal mu_static everywhere).
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub mu: Option<Vec<f64>>,
-    /// Nominal number of load increments (quasi-static solver), 1..=100000.
-    #[arg(long, default_value_t = 20)]
-    pub increments: usize,
+    /// Nominal number of load increments (quasi-static solver), 1..=100000
+    /// [default: 20].
+    #[arg(long)]
+    pub increments: Option<usize>,
     /// Seating solver.
     #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
     pub solver: SolverKind,
@@ -151,7 +157,7 @@ pub struct RunArgs {
     #[arg(long)]
     pub trace: Option<PathBuf>,
     /// Replace an existing --trace file.
-    #[arg(long)]
+    #[arg(long, requires = "trace")]
     pub force: bool,
     /// Dynamic solver: start offset x,y,z of the moving half from the touching pose [m].
     #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]

@@ -53,9 +53,9 @@ pub struct StudyArgs {
     #[arg(long)]
     pub shard: Option<Shard>,
     /// Nominal number of load increments per seating (quasi-static
-    /// solver), 1..=100000.
-    #[arg(long, default_value_t = 20)]
-    pub increments: usize,
+    /// solver), 1..=100000 [default: 20].
+    #[arg(long)]
+    pub increments: Option<usize>,
     /// Seating solver.
     #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
     pub solver: SolverKind,
@@ -80,7 +80,11 @@ pub struct StudyArgs {
     pub sensitivity: bool,
     /// Sobol indices: base sample size N of the Saltelli matrices (N (d + 2)
     /// extra seatings for d inputs).
-    #[arg(long, default_value_t = kinrepro::study::sensitivity::sobol::DEFAULT_BASE_SAMPLES)]
+    #[arg(
+        long,
+        default_value_t = kinrepro::study::sensitivity::sobol::DEFAULT_BASE_SAMPLES,
+        requires = "sensitivity"
+    )]
     pub sobol_samples: usize,
     /// LHS: number of independent replicates the samples are split into
     /// (default 5, or the largest divisor of the samples in 2..=5); the
@@ -199,7 +203,7 @@ pub struct CalibrateArgs {
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Replace an existing --out file.
-    #[arg(long)]
+    #[arg(long, requires = "out")]
     pub force: bool,
     /// Worker threads (default: all cores).
     #[arg(long)]
@@ -227,7 +231,7 @@ pub struct PredictArgs {
     #[arg(long)]
     pub plot: Option<PathBuf>,
     /// Replace an existing --plot file.
-    #[arg(long)]
+    #[arg(long, requires = "plot")]
     pub force: bool,
     /// Worker threads (default: all cores).
     #[arg(long)]
