@@ -1,4 +1,190 @@
 //! Output files, signals, size bounds and panics (issue 28 items 1-2).
 
-#[allow(unused_imports)]
+use std::fs;
+use std::io::Read;
+use std::os::unix::fs::FileTypeExt;
+use std::path::Path;
+use std::process::{Command, Stdio};
+
 use crate::common;
+
+const SCENE: &str = "01_maxwell_vgroove_steel.toml";
+
+fn scene() -> String {
+    common::scene(SCENE).display().to_string()
+}
+
+/// The names in `dir` that start with a dot (the temporaries of atomic writes).
+fn hidden(dir: &Path) -> Vec<String> {
+    fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with('.'))
+        .collect()
+}
+
+fn mkfifo(path: &Path) {
+    let ok = Command::new("mkfifo").arg(path).status().unwrap().success();
+    assert!(ok, "mkfifo {}", path.display());
+}
+
+/// Read a FIFO to its end on a thread (the writer's open blocks until then).
+fn drain(path: &Path) -> std::thread::JoinHandle<String> {
+    let path = path.to_path_buf();
+    std::thread::spawn(move || {
+        let mut s = String::new();
+        fs::File::open(path)
+            .unwrap()
+            .read_to_string(&mut s)
+            .unwrap();
+        s
+    })
+}
+
+#[test]
+fn html_into_dev_null_keeps_the_device() {
+    let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", "/dev/null"]);
+    assert!(!ok, "a device without --force is refused");
+    assert!(
+        err.contains("/dev/null") && err.contains("character device") && err.contains("--force"),
+        "{err}"
+    );
+    let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", "/dev/null", "--force"]);
+    assert!(ok, "{err}");
+    let t = fs::symlink_metadata("/dev/null").unwrap().file_type();
+    assert!(t.is_char_device(), "/dev/null is still a character device");
+}
+
+#[test]
+fn trace_to_dev_stdout_writes_to_stdout() {
+    let (ok, out, err) = common::kinrepro(&[
+        "run",
+        &scene(),
+        "--solver",
+        "dynamic",
+        "--trace",
+        "/dev/stdout",
+        "--force",
+    ]);
+    assert!(ok, "{err}");
+    assert!(
+        out.contains("\ntime_s,load_fraction,x_m"),
+        "the trace header on stdout"
+    );
+    let rows = out
+        .lines()
+        .filter(|l| l.starts_with(|c: char| c.is_ascii_digit()))
+        .count();
+    assert!(rows > 100, "the trace rows on stdout: {rows}");
+    assert!(
+        fs::symlink_metadata("/dev/stdout")
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+}
+
+#[test]
+fn symlink_to_a_regular_file_is_replaced_at_its_target() {
+    let dir = tempfile::tempdir().unwrap();
+    let real = dir.path().join("real.html");
+    let link = dir.path().join("link.html");
+    fs::write(&real, "old").unwrap();
+    std::os::unix::fs::symlink("real.html", &link).unwrap();
+    let l = link.display().to_string();
+    let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", &l]);
+    assert!(
+        !ok && err.contains("exists"),
+        "an existing target needs --force: {err}"
+    );
+    let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", &l, "--force"]);
+    assert!(ok, "{err}");
+    assert!(
+        fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink(),
+        "the link stays"
+    );
+    let text = fs::read_to_string(&real).unwrap();
+    assert!(text.contains("<html"), "the target holds the report");
+    assert!(hidden(dir.path()).is_empty(), "no temporary left");
+}
+
+#[test]
+fn dangling_symlink_creates_its_target() {
+    let dir = tempfile::tempdir().unwrap();
+    let link = dir.path().join("link.html");
+    std::os::unix::fs::symlink("new.html", &link).unwrap();
+    let l = link.display().to_string();
+    let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", &l]);
+    assert!(ok, "{err}");
+    assert!(
+        fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert!(
+        fs::read_to_string(dir.path().join("new.html"))
+            .unwrap()
+            .contains("<html")
+    );
+}
+
+#[test]
+fn fifo_and_link_to_fifo_are_written_through() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("trace.fifo");
+    let link = dir.path().join("trace.link");
+    mkfifo(&fifo);
+    std::os::unix::fs::symlink("trace.fifo", &link).unwrap();
+    let f = fifo.display().to_string();
+    let (ok, _, err) = common::kinrepro(&["run", &scene(), "--solver", "dynamic", "--trace", &f]);
+    assert!(
+        !ok && err.contains("FIFO") && err.contains("--force"),
+        "{err}"
+    );
+    for path in [&fifo, &link] {
+        let reader = drain(&fifo);
+        let p = path.display().to_string();
+        let args = [
+            "run",
+            &scene(),
+            "--solver",
+            "dynamic",
+            "--trace",
+            &p,
+            "--force",
+        ];
+        let (ok, _, err) = common::kinrepro(&args);
+        assert!(ok, "{err}");
+        let text = reader.join().unwrap();
+        assert!(
+            text.contains("\ntime_s,load_fraction"),
+            "the trace went through {p}"
+        );
+        assert!(fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo());
+    }
+    assert!(
+        fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert!(hidden(dir.path()).is_empty(), "no temporary left");
+}
+
+#[test]
+fn folder_as_output_file_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path().display().to_string();
+    let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", &d, "--force"]);
+    assert!(!ok && err.contains("is a folder"), "{err}");
+    assert!(dir.path().is_dir());
+}
+
+#[allow(dead_code)]
+fn quiet() -> Stdio {
+    Stdio::null()
+}
