@@ -9,6 +9,7 @@
 pub mod analysis;
 pub mod assembly;
 pub mod calibrate;
+pub mod cancel;
 pub mod contact;
 pub mod delimited;
 pub mod dof;

@@ -153,6 +153,11 @@ impl AtomicFile {
         })
     }
 
+    /// The path given for the file.
+    pub fn target(&self) -> &Path {
+        &self.target
+    }
+
     /// The writer of the content.
     pub fn writer(&mut self) -> &mut impl Write {
         self
@@ -176,6 +181,19 @@ impl AtomicFile {
             .map_err(|e| WriteError::io(&target, e.error))?;
         Ok(())
     }
+}
+
+/// Commit every file of `files` (each written whole), in order; returns
+/// their paths. Call it once all are written, so that an interruption
+/// before it leaves every target as it was.
+pub fn commit_all(files: Vec<AtomicFile>) -> Result<Vec<String>, WriteError> {
+    files
+        .into_iter()
+        .map(|f| {
+            let path = f.target().display().to_string();
+            f.commit().map(|()| path)
+        })
+        .collect()
 }
 
 impl Write for AtomicFile {

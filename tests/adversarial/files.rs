@@ -184,7 +184,75 @@ fn folder_as_output_file_is_refused() {
     assert!(dir.path().is_dir());
 }
 
-#[allow(dead_code)]
-fn quiet() -> Stdio {
-    Stdio::null()
+/// The name and content of every file in `dir`.
+fn contents(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut v: Vec<_> = fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap())
+        .map(|e| {
+            (
+                e.file_name().to_string_lossy().into_owned(),
+                fs::read(e.path()).unwrap(),
+            )
+        })
+        .collect();
+    v.sort();
+    v
+}
+
+/// A signal during a streamed `study --out DIR --force` (its per-sample
+/// CSV under a temporary name in DIR) leaves DIR as it was, without a
+/// temporary, and exits 128 + the signal.
+#[test]
+fn signal_during_study_leaves_out_folder_as_it_was() {
+    for (signal, code) in [("TERM", 143), ("INT", 130)] {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path().display().to_string();
+        let small = [
+            "study",
+            &scene(),
+            "--sampler",
+            "mc",
+            "--samples",
+            "40",
+            "--out",
+            &d,
+        ];
+        let (ok, _, err) = common::kinrepro(&small);
+        assert!(ok, "{err}");
+        let before = contents(dir.path());
+        assert!(before.len() >= 2 && hidden(dir.path()).is_empty());
+        let mut child = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
+            .args(["study", &scene(), "--sampler", "mc", "--samples", "3000000"])
+            .args(["--out", &d, "--force"])
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        // Wait until the run streams its samples into its temporary.
+        let start = std::time::Instant::now();
+        while hidden(dir.path()).is_empty() {
+            assert!(start.elapsed().as_secs() < 60, "no temporary appeared");
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+        std::thread::sleep(std::time::Duration::from_millis(300));
+        let pid = child.id().to_string();
+        let sent = Command::new("kill")
+            .args([&format!("-{signal}"), &pid])
+            .status();
+        assert!(sent.unwrap().success());
+        let out = child.wait_with_output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(code), "SIG{signal}: {err}");
+        assert!(err.contains("interrupted"), "{err}");
+        assert!(
+            hidden(dir.path()).is_empty(),
+            "SIG{signal} left {:?}",
+            hidden(dir.path())
+        );
+        assert!(
+            contents(dir.path()) == before,
+            "SIG{signal}: the earlier files are intact"
+        );
+    }
 }

@@ -99,6 +99,9 @@ pub fn seat_traced(
     let mut sim = Simulation::new(coupling, mu_s, opts)?;
     let max_time = sim.ramp_time + opts.max_settle_periods * sim.freq.longest_period();
     loop {
+        if crate::cancel::requested() {
+            return Err(SolveError::Cancelled);
+        }
         sim.step()?;
         trace(&sim.sample());
         let travel = (sim.pose.translation - coupling.touching_pose.translation).norm();
