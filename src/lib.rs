@@ -16,6 +16,7 @@ pub mod dof;
 pub mod error;
 pub mod explore;
 pub mod fe;
+pub mod input;
 pub mod material;
 pub mod report;
 pub mod scene;

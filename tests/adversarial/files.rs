@@ -222,7 +222,7 @@ fn signal_during_study_leaves_out_folder_as_it_was() {
         assert!(ok, "{err}");
         let before = contents(dir.path());
         assert!(before.len() >= 2 && hidden(dir.path()).is_empty());
-        let mut child = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
+        let child = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
             .args(["study", &scene(), "--sampler", "mc", "--samples", "3000000"])
             .args(["--out", &d, "--force"])
             .stdout(Stdio::null())
@@ -253,6 +253,98 @@ fn signal_during_study_leaves_out_folder_as_it_was() {
         assert!(
             contents(dir.path()) == before,
             "SIG{signal}: the earlier files are intact"
+        );
+    }
+}
+
+/// A 1 GB history file (sparse: zeros) is refused at the input-file
+/// bound before it is read: in well under a second, in bounded memory.
+#[test]
+fn huge_history_file_is_refused_at_its_size_bound() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("history.csv");
+    fs::File::create(&path).unwrap().set_len(1 << 30).unwrap();
+    let p = path.display().to_string();
+    let start = std::time::Instant::now();
+    let (ok, _, err) = common::kinrepro(&[
+        "contact",
+        "--shape",
+        "sphere-plane",
+        "--radius1",
+        "0.005",
+        "--material1",
+        "steel",
+        "--material2",
+        "steel",
+        "--mu",
+        "0.3",
+        "--history",
+        &p,
+    ]);
+    let seconds = start.elapsed().as_secs_f64();
+    assert!(!ok, "refused");
+    assert!(
+        err.contains(&p) && err.contains("1073741824 bytes"),
+        "{err}"
+    );
+    assert!(
+        err.contains(&kinrepro::input::MAX_INPUT_BYTES.to_string()),
+        "{err}"
+    );
+    assert!(seconds < 0.5, "refused in {seconds} s");
+}
+
+/// `--sobol-samples 2^64 - 1`: N (d + 2) overflows; a clear error naming the
+/// option and the bound, not a panic.
+#[test]
+fn sobol_samples_beyond_memory_is_a_clear_error() {
+    for n in ["18446744073709551615", "10000000"] {
+        let args = ["study", &scene(), "--sensitivity", "--sobol-samples", n];
+        let (ok, _, err) = common::kinrepro(&args);
+        assert!(!ok && !err.contains("panicked"), "{err}");
+        let bound = kinrepro::study::bounds::MAX_KEPT_SEATINGS.to_string();
+        assert!(
+            err.starts_with("error: --sobol-samples:") && err.contains(&bound),
+            "{err}"
+        );
+    }
+}
+
+/// `--convergence 1e-300` asks for an infinite mesh, 0.001 for 1.8e10
+/// nodes: both refused before any FE solve, naming the option.
+#[test]
+fn convergence_mesh_beyond_memory_is_a_clear_error() {
+    for level in ["1e-300", "0.001"] {
+        let start = std::time::Instant::now();
+        let (ok, _, err) = common::kinrepro(&["validate-hertz", "--convergence", level]);
+        assert!(!ok && !err.contains("panicked"), "{err}");
+        assert!(
+            err.starts_with("error: --convergence:") && err.contains("nodes"),
+            "{err}"
+        );
+        assert!(
+            start.elapsed().as_secs_f64() < 5.0,
+            "refused before any solve"
+        );
+    }
+}
+
+/// The node estimate behind the FE bound counts the nodes of the mesh
+/// actually built (circular contact, a = 1), at several element sizes.
+#[test]
+fn mesh_node_estimate_counts_the_built_mesh() {
+    use kinrepro::fe::MeshOptions;
+    for rel in [0.3, 0.18, 0.12, 0.07] {
+        let opt = MeshOptions {
+            element_size_rel: rel,
+            ..MeshOptions::default()
+        };
+        let mesh = kinrepro::fe::validate::build_mesh(1.0, 1.0, &opt).unwrap();
+        let built = mesh.nodes.len() as f64;
+        let est = opt.estimated_nodes();
+        assert!(
+            (est / built - 1.0).abs() < 0.25,
+            "h = {rel}: estimate {est}, built {built}"
         );
     }
 }
