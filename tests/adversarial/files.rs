@@ -348,3 +348,27 @@ fn mesh_node_estimate_counts_the_built_mesh() {
         );
     }
 }
+
+/// A tiny `[dynamics]` inertia makes dt tiny against the settling time: the
+/// dynamic seating is refused at its step bound at once, naming the table.
+#[test]
+fn tiny_inertia_is_refused_at_the_dynamic_step_bound() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("tiny_inertia.toml");
+    let mut text = fs::read_to_string(common::scene(SCENE)).unwrap();
+    text.push_str("\n[dynamics]\nmass = 0.63\ninertia = [1e-12, 1e-12, 1e-12]\n");
+    fs::write(&path, text).unwrap();
+    let p = path.display().to_string();
+    let start = std::time::Instant::now();
+    let (ok, _, err) = common::kinrepro(&["run", &p, "--solver", "dynamic"]);
+    assert!(
+        !ok && err.contains("[dynamics]") && err.contains("inertia"),
+        "{err}"
+    );
+    let bound = kinrepro::solve::dynamic::MAX_STEPS.to_string();
+    assert!(err.contains(&p) && err.contains(&bound), "{err}");
+    assert!(
+        start.elapsed().as_secs_f64() < 5.0,
+        "refused before stepping"
+    );
+}

@@ -89,6 +89,10 @@ pub fn seat(
     seat_traced(coupling, mu_s, opts, &mut |_| {})
 }
 
+/// Most time steps of one dynamic seating: 10^7, about a minute and a
+/// half at some 8 us per step (a default seating takes a few thousand).
+pub const MAX_STEPS: usize = 10_000_000;
+
 /// [`seat`], calling `trace` after every step with the state at the start of it.
 pub fn seat_traced(
     coupling: &Coupling,
@@ -98,6 +102,19 @@ pub fn seat_traced(
 ) -> Result<Seating, SolveError> {
     let mut sim = Simulation::new(coupling, mu_s, opts)?;
     let max_time = sim.ramp_time + opts.max_settle_periods * sim.freq.longest_period();
+    // The longest seating the time step allows: refused above the bound
+    // rather than run for hours (a tiny [dynamics] mass or inertia makes
+    // the shortest period, and so dt, tiny against the longest one).
+    let steps = max_time / sim.dt();
+    if !(steps <= MAX_STEPS as f64) {
+        return Err(SolveError::BadOption(format!(
+            "the seating may take {steps:.3e} time steps (dt = {dt:.3e} s, up to {max_time:.3e} s), \
+             above the bound of {MAX_STEPS}: the shortest and longest natural periods are too far \
+             apart; check [dynamics] mass and inertia (a tiny moment of inertia) in {file}",
+            dt = sim.dt(),
+            file = coupling.scene.file,
+        )));
+    }
     loop {
         if crate::cancel::requested() {
             return Err(SolveError::Cancelled);
