@@ -162,7 +162,7 @@ impl MeshOptions {
     /// Refuse a mesh above [`MAX_NODES`] before anything is allocated.
     pub fn check_size(&self) -> Result<(), FeError> {
         let nodes = self.estimated_nodes();
-        if !(nodes <= MAX_NODES as f64) {
+        if nodes.is_nan() || nodes > MAX_NODES as f64 {
             return Err(FeError::MeshTooLarge {
                 element_size_rel: self.element_size_rel,
                 nodes,
@@ -176,9 +176,10 @@ impl MeshOptions {
 
     /// The nodes of the mesh of a circular contact ([`validate::build_mesh`]
     /// with a = 1): per axis `n_f` = ceil(fine_zone_rel / h) uniform
-    /// elements of size h, then the k graded ones, h g + h g^2 + ... + h g^k
-    /// >= domain_rel - n_f h, i.e. k = ceil(ln(1 + R (g - 1) / (h g)) / ln g);
-    /// order (n_f + k) + 1 nodes per axis, cubed.
+    /// elements of size h, then the k graded ones, the fewest with
+    /// h g + h g^2 + ... + h g^k at least R = domain_rel - n_f h, i.e.
+    /// k = ceil(ln(1 + R (g - 1) / (h g)) / ln g); order (n_f + k) + 1 nodes
+    /// per axis, cubed.
     pub fn estimated_nodes(&self) -> f64 {
         let h = self.element_size_rel;
         let n_fine = (self.fine_zone_rel / h).ceil();
