@@ -9,12 +9,14 @@
 pub mod analysis;
 pub mod assembly;
 pub mod calibrate;
+pub mod cancel;
 pub mod contact;
 pub mod delimited;
 pub mod dof;
 pub mod error;
 pub mod explore;
 pub mod fe;
+pub mod input;
 pub mod material;
 pub mod report;
 pub mod scene;

@@ -64,7 +64,7 @@ impl Scene {
     #[staticmethod]
     fn load(path: std::path::PathBuf) -> PyResult<Scene> {
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(&path)
+        let text = kinrepro::input::read_to_string(&path)
             .map_err(|e| err(format!("{file}: cannot read the file: {e}")))?;
         Scene::new(text, file)
     }

@@ -156,7 +156,7 @@ impl Calibration {
     #[staticmethod]
     fn load(path: std::path::PathBuf) -> PyResult<Calibration> {
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(&path)
+        let text = kinrepro::input::read_to_string(&path)
             .map_err(|e| err(format!("{file}: cannot read the file: {e}")))?;
         Calibration::from_json(&text, file)
     }

@@ -44,7 +44,7 @@ impl Measurement {
     /// detected from the header line).
     pub fn load(path: &Path, delimiter: Option<u8>) -> Result<Self, CalibrateError> {
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| CalibrateError::Read {
+        let text = crate::input::read_to_string(path).map_err(|e| CalibrateError::Read {
             file: file.clone(),
             reason: e.to_string(),
         })?;

@@ -51,17 +51,20 @@ impl StudyReport {
     }
 
     /// Write the per-sample CSV files (unless `samples_written`: a streamed
-    /// study wrote them as it went) and the SVG plots into `dir`. Existing
-    /// files are refused unless `force`.
-    pub fn write_files(
+    /// study wrote them as it went) and the SVG plots into `dir`, each under
+    /// its temporary name: nothing is renamed over a file of `dir` until the
+    /// caller commits them all ([`atomic::commit_all`]), so an interrupted
+    /// run leaves the folder as it was. Existing files are refused unless
+    /// `force`.
+    pub fn stage_files(
         &self,
         dir: &Path,
         force: bool,
         samples_written: bool,
-    ) -> Result<Vec<String>, WriteError> {
+    ) -> Result<Vec<AtomicFile>, WriteError> {
         std::fs::create_dir_all(dir)
             .map_err(|e| WriteError::io(dir, format!("cannot create the folder: {e}")))?;
-        let mut written = Vec::new();
+        let mut staged = Vec::new();
         if !samples_written {
             for (i, v) in self.variants.iter().enumerate() {
                 let path = dir.join(samples_file_name(i, v));
@@ -69,27 +72,29 @@ impl StudyReport {
                 for r in &v.records {
                     f.push(r)?;
                 }
-                f.commit()?;
-                written.push(path.display().to_string());
+                staged.push(f.finish()?);
             }
         }
-        written.extend(self.write_plots(dir, force)?);
-        Ok(written)
-    }
-
-    /// The SVG plots of the complete variants ([`study_charts`]: sigma bars
-    /// with intervals, scatter of every point, convergence of all six DOFs,
-    /// interchangeability when tolerances vary).
-    fn write_plots(&self, dir: &Path, force: bool) -> Result<Vec<String>, WriteError> {
         let variants: Vec<&VariantReport> = self.variants.iter().collect();
         let charts = study_charts(&variants, &[]).map_err(|e| WriteError::io(dir, e))?;
-        let mut written = Vec::new();
         for c in charts {
             let path = dir.join(c.file_name);
-            atomic::write_file(&path, &c.svg, force)?;
-            written.push(path.display().to_string());
+            let mut f = AtomicFile::create(&path, force)?;
+            f.write_all(c.svg.as_bytes())
+                .map_err(|e| WriteError::io(&path, e))?;
+            staged.push(f);
         }
-        Ok(written)
+        Ok(staged)
+    }
+
+    /// [`Self::stage_files`], committed at once; returns the paths written.
+    pub fn write_files(
+        &self,
+        dir: &Path,
+        force: bool,
+        samples_written: bool,
+    ) -> Result<Vec<String>, WriteError> {
+        atomic::commit_all(self.stage_files(dir, force, samples_written)?)
     }
 }
 
@@ -151,9 +156,14 @@ impl SamplesCsv {
 
     /// Complete the file (rename over the target).
     pub fn commit(self) -> Result<(), WriteError> {
+        self.finish()?.commit()
+    }
+
+    /// The complete file, still under its temporary name.
+    pub fn finish(self) -> Result<AtomicFile, WriteError> {
         let path = Path::new(&self.path);
         let file = self.out.into_inner();
-        file.map_err(|e| WriteError::io(path, e.error()))?.commit()
+        file.map_err(|e| WriteError::io(path, e.error()))
     }
 }
 

@@ -215,7 +215,7 @@ impl Scene {
     /// Read and validate a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
         let file = path.display().to_string();
-        let source = std::fs::read_to_string(path).map_err(|e| SceneError {
+        let source = crate::input::read_to_string(path).map_err(|e| SceneError {
             file: file.clone(),
             line: None,
             field: String::new(),

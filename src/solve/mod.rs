@@ -127,6 +127,8 @@ pub enum SolveError {
          step is too large for the contact stiffness"
     )]
     NonFinite { time_s: f64, step: usize },
+    #[error("interrupted")]
+    Cancelled,
 }
 
 /// Per-contact state at the end of a seating (SI units).

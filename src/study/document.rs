@@ -6,6 +6,7 @@
 //! ([`super::stream`]).
 
 use super::DesignSpec;
+use super::bounds::{self, MAX_KEPT_SEATINGS, MAX_STREAMED_SAMPLES};
 use super::result::{StudyReport, StudyRunError, VariantReport};
 use super::runner::{PathTally, Progress, StudyOptions, check_options, design_for, run_variant};
 use super::sensitivity::sobol_run::run_sobol;
@@ -38,15 +39,31 @@ impl<'a> StudyPlan<'a> {
         let sobol = sobol_samples.filter(|_| opts.shard.count == 1);
         let mut designs = Vec::new();
         let mut seatings = 0;
+        let mut kept = 0usize;
         for c in couplings {
             check_options(c, &opts)?;
             let d = design_for(c, &opts).map_err(StudyRunError::at(&c.scene.file))?;
-            seatings += opts
+            let run = opts
                 .shard
                 .range(d.n)
                 .map_err(StudyRunError::at("--shard"))?
                 .len();
-            seatings += sobol.map_or(0, |n| n * (d.dims + 2));
+            let rows = sobol.map_or(Some(0), |n| n.checked_mul(d.dims + 2));
+            let sobol_rows = bounds::check("Sobol seatings N (d + 2)", rows, MAX_KEPT_SEATINGS)
+                .map_err(StudyRunError::at("--sobol-samples"))?;
+            if streams(&d) && opts.shard.count == 1 {
+                bounds::check("samples", Some(run), MAX_STREAMED_SAMPLES)
+                    .map_err(StudyRunError::at(&c.scene.file))?;
+            } else {
+                kept = kept.saturating_add(run);
+            }
+            kept = bounds::check(
+                "seatings kept in memory",
+                kept.checked_add(sobol_rows),
+                MAX_KEPT_SEATINGS,
+            )
+            .map_err(StudyRunError::at("--samples"))?;
+            seatings += run + sobol_rows;
             designs.push(d);
         }
         Ok(StudyPlan {

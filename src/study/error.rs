@@ -5,6 +5,13 @@ use thiserror::Error;
 /// Everything that can go wrong while designing, summarising, merging or plotting a study.
 #[derive(Debug, Error)]
 pub enum StudyError {
+    /// A run size above its bound (`study::bounds`).
+    #[error("{what} = {count} is above the bound of {max} (docs/output.md, Bounds)")]
+    AboveBound {
+        what: &'static str,
+        count: String,
+        max: usize,
+    },
     /// A design needs at least one input dimension.
     #[error("a design needs at least one dimension (dims = 0)")]
     ZeroDims,

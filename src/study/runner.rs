@@ -104,6 +104,9 @@ impl<'a> From<&'a (dyn Fn() + Sync + 'a)> for Progress<'a> {
 /// A study could not be run.
 #[derive(Debug, Error)]
 pub enum RunError {
+    /// A stop was asked for ([`crate::cancel`]).
+    #[error("interrupted")]
+    Cancelled,
     #[error("{file}: {source}")]
     Design {
         file: String,
@@ -430,6 +433,9 @@ pub fn evaluate_rows<'a>(
     // One workspace per rayon job, reused by the samples it seats.
     rows.into_par_iter()
         .map_init(Workspace::new, |ws, (index, row)| {
+            if crate::cancel::requested() {
+                return Err(RunError::Cancelled);
+            }
             let sample = var.sample(coupling, &row);
             let mut outputs: Vec<f64> = Vec::new();
             if var.reseating() {

@@ -1,4 +1,374 @@
 //! Output files, signals, size bounds and panics (issue 28 items 1-2).
 
-#[allow(unused_imports)]
+use std::fs;
+use std::io::Read;
+use std::os::unix::fs::FileTypeExt;
+use std::path::Path;
+use std::process::{Command, Stdio};
+
 use crate::common;
+
+const SCENE: &str = "01_maxwell_vgroove_steel.toml";
+
+fn scene() -> String {
+    common::scene(SCENE).display().to_string()
+}
+
+/// The names in `dir` that start with a dot (the temporaries of atomic writes).
+fn hidden(dir: &Path) -> Vec<String> {
+    fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with('.'))
+        .collect()
+}
+
+fn mkfifo(path: &Path) {
+    let ok = Command::new("mkfifo").arg(path).status().unwrap().success();
+    assert!(ok, "mkfifo {}", path.display());
+}
+
+/// Read a FIFO to its end on a thread (the writer's open blocks until then).
+fn drain(path: &Path) -> std::thread::JoinHandle<String> {
+    let path = path.to_path_buf();
+    std::thread::spawn(move || {
+        let mut s = String::new();
+        fs::File::open(path)
+            .unwrap()
+            .read_to_string(&mut s)
+            .unwrap();
+        s
+    })
+}
+
+#[test]
+fn html_into_dev_null_keeps_the_device() {
+    let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", "/dev/null"]);
+    assert!(!ok, "a device without --force is refused");
+    assert!(
+        err.contains("/dev/null") && err.contains("character device") && err.contains("--force"),
+        "{err}"
+    );
+    let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", "/dev/null", "--force"]);
+    assert!(ok, "{err}");
+    let t = fs::symlink_metadata("/dev/null").unwrap().file_type();
+    assert!(t.is_char_device(), "/dev/null is still a character device");
+}
+
+#[test]
+fn trace_to_dev_stdout_writes_to_stdout() {
+    let (ok, out, err) = common::kinrepro(&[
+        "run",
+        &scene(),
+        "--solver",
+        "dynamic",
+        "--trace",
+        "/dev/stdout",
+        "--force",
+    ]);
+    assert!(ok, "{err}");
+    assert!(
+        out.contains("\ntime_s,load_fraction,x_m"),
+        "the trace header on stdout"
+    );
+    let rows = out
+        .lines()
+        .filter(|l| l.starts_with(|c: char| c.is_ascii_digit()))
+        .count();
+    assert!(rows > 100, "the trace rows on stdout: {rows}");
+    assert!(
+        fs::symlink_metadata("/dev/stdout")
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+}
+
+#[test]
+fn symlink_to_a_regular_file_is_replaced_at_its_target() {
+    let dir = tempfile::tempdir().unwrap();
+    let real = dir.path().join("real.html");
+    let link = dir.path().join("link.html");
+    fs::write(&real, "old").unwrap();
+    std::os::unix::fs::symlink("real.html", &link).unwrap();
+    let l = link.display().to_string();
+    let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", &l]);
+    assert!(
+        !ok && err.contains("exists"),
+        "an existing target needs --force: {err}"
+    );
+    let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", &l, "--force"]);
+    assert!(ok, "{err}");
+    assert!(
+        fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink(),
+        "the link stays"
+    );
+    let text = fs::read_to_string(&real).unwrap();
+    assert!(text.contains("<html"), "the target holds the report");
+    assert!(hidden(dir.path()).is_empty(), "no temporary left");
+}
+
+#[test]
+fn dangling_symlink_creates_its_target() {
+    let dir = tempfile::tempdir().unwrap();
+    let link = dir.path().join("link.html");
+    std::os::unix::fs::symlink("new.html", &link).unwrap();
+    let l = link.display().to_string();
+    let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", &l]);
+    assert!(ok, "{err}");
+    assert!(
+        fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert!(
+        fs::read_to_string(dir.path().join("new.html"))
+            .unwrap()
+            .contains("<html")
+    );
+}
+
+#[test]
+fn fifo_and_link_to_fifo_are_written_through() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("trace.fifo");
+    let link = dir.path().join("trace.link");
+    mkfifo(&fifo);
+    std::os::unix::fs::symlink("trace.fifo", &link).unwrap();
+    let f = fifo.display().to_string();
+    let (ok, _, err) = common::kinrepro(&["run", &scene(), "--solver", "dynamic", "--trace", &f]);
+    assert!(
+        !ok && err.contains("FIFO") && err.contains("--force"),
+        "{err}"
+    );
+    for path in [&fifo, &link] {
+        let reader = drain(&fifo);
+        let p = path.display().to_string();
+        let args = [
+            "run",
+            &scene(),
+            "--solver",
+            "dynamic",
+            "--trace",
+            &p,
+            "--force",
+        ];
+        let (ok, _, err) = common::kinrepro(&args);
+        assert!(ok, "{err}");
+        let text = reader.join().unwrap();
+        assert!(
+            text.contains("\ntime_s,load_fraction"),
+            "the trace went through {p}"
+        );
+        assert!(fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo());
+    }
+    assert!(
+        fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert!(hidden(dir.path()).is_empty(), "no temporary left");
+}
+
+#[test]
+fn folder_as_output_file_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path().display().to_string();
+    let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", &d, "--force"]);
+    assert!(!ok && err.contains("is a folder"), "{err}");
+    assert!(dir.path().is_dir());
+}
+
+/// The name and content of every file in `dir`.
+fn contents(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut v: Vec<_> = fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap())
+        .map(|e| {
+            (
+                e.file_name().to_string_lossy().into_owned(),
+                fs::read(e.path()).unwrap(),
+            )
+        })
+        .collect();
+    v.sort();
+    v
+}
+
+/// A signal during a streamed `study --out DIR --force` (its per-sample
+/// CSV under a temporary name in DIR) leaves DIR as it was, without a
+/// temporary, and exits 128 + the signal.
+#[test]
+fn signal_during_study_leaves_out_folder_as_it_was() {
+    for (signal, code) in [("TERM", 143), ("INT", 130)] {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path().display().to_string();
+        let small = [
+            "study",
+            &scene(),
+            "--sampler",
+            "mc",
+            "--samples",
+            "40",
+            "--out",
+            &d,
+        ];
+        let (ok, _, err) = common::kinrepro(&small);
+        assert!(ok, "{err}");
+        let before = contents(dir.path());
+        assert!(before.len() >= 2 && hidden(dir.path()).is_empty());
+        let child = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
+            .args(["study", &scene(), "--sampler", "mc", "--samples", "3000000"])
+            .args(["--out", &d, "--force"])
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        // Wait until the run streams its samples into its temporary.
+        let start = std::time::Instant::now();
+        while hidden(dir.path()).is_empty() {
+            assert!(start.elapsed().as_secs() < 60, "no temporary appeared");
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+        std::thread::sleep(std::time::Duration::from_millis(300));
+        let pid = child.id().to_string();
+        let sent = Command::new("kill")
+            .args([&format!("-{signal}"), &pid])
+            .status();
+        assert!(sent.unwrap().success());
+        let out = child.wait_with_output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(code), "SIG{signal}: {err}");
+        assert!(err.contains("interrupted"), "{err}");
+        assert!(
+            hidden(dir.path()).is_empty(),
+            "SIG{signal} left {:?}",
+            hidden(dir.path())
+        );
+        assert!(
+            contents(dir.path()) == before,
+            "SIG{signal}: the earlier files are intact"
+        );
+    }
+}
+
+/// A 1 GB history file (sparse: zeros) is refused at the input-file
+/// bound before it is read: in well under a second, in bounded memory.
+#[test]
+fn huge_history_file_is_refused_at_its_size_bound() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("history.csv");
+    fs::File::create(&path).unwrap().set_len(1 << 30).unwrap();
+    let p = path.display().to_string();
+    let start = std::time::Instant::now();
+    let (ok, _, err) = common::kinrepro(&[
+        "contact",
+        "--shape",
+        "sphere-plane",
+        "--radius1",
+        "0.005",
+        "--material1",
+        "steel",
+        "--material2",
+        "steel",
+        "--mu",
+        "0.3",
+        "--history",
+        &p,
+    ]);
+    let seconds = start.elapsed().as_secs_f64();
+    assert!(!ok, "refused");
+    assert!(
+        err.contains(&p) && err.contains("1073741824 bytes"),
+        "{err}"
+    );
+    assert!(
+        err.contains(&kinrepro::input::MAX_INPUT_BYTES.to_string()),
+        "{err}"
+    );
+    assert!(seconds < 0.5, "refused in {seconds} s");
+}
+
+/// `--sobol-samples 2^64 - 1`: N (d + 2) overflows; a clear error naming the
+/// option and the bound, not a panic.
+#[test]
+fn sobol_samples_beyond_memory_is_a_clear_error() {
+    for n in ["18446744073709551615", "10000000"] {
+        let args = ["study", &scene(), "--sensitivity", "--sobol-samples", n];
+        let (ok, _, err) = common::kinrepro(&args);
+        assert!(!ok && !err.contains("panicked"), "{err}");
+        let bound = kinrepro::study::bounds::MAX_KEPT_SEATINGS.to_string();
+        assert!(
+            err.starts_with("error: --sobol-samples:") && err.contains(&bound),
+            "{err}"
+        );
+    }
+}
+
+/// `--convergence 1e-300` asks for an infinite mesh, 0.001 for 1.8e10
+/// nodes: both refused before any FE solve, naming the option.
+#[test]
+fn convergence_mesh_beyond_memory_is_a_clear_error() {
+    for level in ["1e-300", "0.001"] {
+        let start = std::time::Instant::now();
+        let (ok, _, err) = common::kinrepro(&["validate-hertz", "--convergence", level]);
+        assert!(!ok && !err.contains("panicked"), "{err}");
+        assert!(
+            err.starts_with("error: --convergence:") && err.contains("nodes"),
+            "{err}"
+        );
+        assert!(
+            start.elapsed().as_secs_f64() < 5.0,
+            "refused before any solve"
+        );
+    }
+}
+
+/// The node estimate behind the FE bound counts the nodes of the mesh
+/// actually built (circular contact, a = 1), at several element sizes.
+#[test]
+fn mesh_node_estimate_counts_the_built_mesh() {
+    use kinrepro::fe::MeshOptions;
+    for rel in [0.3, 0.18, 0.12, 0.07] {
+        let opt = MeshOptions {
+            element_size_rel: rel,
+            ..MeshOptions::default()
+        };
+        let mesh = kinrepro::fe::validate::build_mesh(1.0, 1.0, &opt).unwrap();
+        let built = mesh.nodes.len() as f64;
+        let est = opt.estimated_nodes();
+        assert!(
+            (est / built - 1.0).abs() < 0.25,
+            "h = {rel}: estimate {est}, built {built}"
+        );
+    }
+}
+
+/// A tiny `[dynamics]` inertia makes dt tiny against the settling time: the
+/// dynamic seating is refused at its step bound at once, naming the table.
+#[test]
+fn tiny_inertia_is_refused_at_the_dynamic_step_bound() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("tiny_inertia.toml");
+    let mut text = fs::read_to_string(common::scene(SCENE)).unwrap();
+    text.push_str("\n[dynamics]\nmass = 0.63\ninertia = [1e-12, 1e-12, 1e-12]\n");
+    fs::write(&path, text).unwrap();
+    let p = path.display().to_string();
+    let start = std::time::Instant::now();
+    let (ok, _, err) = common::kinrepro(&["run", &p, "--solver", "dynamic"]);
+    assert!(
+        !ok && err.contains("[dynamics]") && err.contains("inertia"),
+        "{err}"
+    );
+    let bound = kinrepro::solve::dynamic::MAX_STEPS.to_string();
+    assert!(err.contains(&p) && err.contains(&bound), "{err}");
+    assert!(
+        start.elapsed().as_secs_f64() < 5.0,
+        "refused before stepping"
+    );
+}

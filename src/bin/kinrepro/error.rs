@@ -96,6 +96,9 @@ pub enum CliError {
         #[source]
         source: std::io::Error,
     },
+    /// A run stopped by SIGINT or SIGTERM (`crate::signals`).
+    #[error("interrupted")]
+    Interrupted,
     #[error("stdout: cannot write the results: {0}")]
     Stdout(#[source] std::io::Error),
     #[error("--jobs: {0}")]

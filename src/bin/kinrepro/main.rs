@@ -4,6 +4,7 @@
 mod commands;
 mod error;
 mod flags;
+mod signals;
 
 use std::process::ExitCode;
 
@@ -11,7 +12,12 @@ use clap::Parser;
 
 fn main() -> ExitCode {
     let cli = flags::Cli::parse();
-    match commands::dispatch(cli.command) {
+    let run = signals::install().and_then(|()| commands::dispatch(cli.command));
+    if let Some((code, msg)) = signals::received() {
+        eprintln!("kinrepro: {msg}");
+        return ExitCode::from(code);
+    }
+    match run {
         Ok(()) => ExitCode::SUCCESS,
         Err(msg) => {
             eprintln!("error: {msg}");

@@ -41,7 +41,7 @@ pub struct StudyInput {
 /// The scene of an assembled coupling, its text read from `coupling.scene.file`.
 pub fn scene_input(coupling: Coupling) -> Result<SceneInput, HtmlError> {
     let file = coupling.scene.file.clone();
-    let text = std::fs::read_to_string(&file).map_err(|e| HtmlError::Input {
+    let text = crate::input::read_to_string(&file).map_err(|e| HtmlError::Input {
         file,
         reason: format!("cannot read the scene file: {e}"),
     })?;
@@ -55,8 +55,8 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
         file: source.clone(),
         reason,
     };
-    let text =
-        std::fs::read_to_string(path).map_err(|e| input(format!("cannot read the file: {e}")))?;
+    let text = crate::input::read_to_string(path)
+        .map_err(|e| input(format!("cannot read the file: {e}")))?;
     let report: StudyReport = serde_json::from_str(&text)
         .map_err(|e| input(format!("not a kinrepro study JSON: {e}")))?;
     if report.schema_version != SCHEMA_VERSION {
@@ -85,7 +85,7 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
                 v.scene
             ))
         })?;
-        let text = std::fs::read_to_string(&scene_path)
+        let text = crate::input::read_to_string(&scene_path)
             .map_err(|e| input(format!("{}: cannot read: {e}", scene_path.display())))?;
         let scene = Scene::parse(&text, &v.scene)?;
         let coupling = Coupling::new(&scene).map_err(|source| HtmlError::Assembly {

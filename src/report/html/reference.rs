@@ -109,7 +109,7 @@ fn reference_row(
 /// Read and parse a reference file.
 pub fn load_reference(path: &Path) -> Result<Vec<ReferenceRow>, HtmlError> {
     let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| HtmlError::Input {
+    let text = crate::input::read_to_string(path).map_err(|e| HtmlError::Input {
         file: file.clone(),
         reason: format!("cannot read the file: {e}"),
     })?;

@@ -89,6 +89,10 @@ pub fn seat(
     seat_traced(coupling, mu_s, opts, &mut |_| {})
 }
 
+/// Most time steps of one dynamic seating: 10^7, about a minute and a
+/// half at some 8 us per step (a default seating takes a few thousand).
+pub const MAX_STEPS: usize = 10_000_000;
+
 /// [`seat`], calling `trace` after every step with the state at the start of it.
 pub fn seat_traced(
     coupling: &Coupling,
@@ -98,7 +102,11 @@ pub fn seat_traced(
 ) -> Result<Seating, SolveError> {
     let mut sim = Simulation::new(coupling, mu_s, opts)?;
     let max_time = sim.ramp_time + opts.max_settle_periods * sim.freq.longest_period();
+    check_steps(&sim, max_time)?;
     loop {
+        if crate::cancel::requested() {
+            return Err(SolveError::Cancelled);
+        }
         sim.step()?;
         trace(&sim.sample());
         let travel = (sim.pose.translation - coupling.touching_pose.translation).norm();
@@ -156,4 +164,21 @@ pub fn seat_traced(
         newton_iterations: 0,
         path: crate::solve::SeatingPath::Dynamic,
     })
+}
+
+/// Refuse a seating whose step count up to `max_time` is above [`MAX_STEPS`].
+fn check_steps(sim: &Simulation, max_time: f64) -> Result<(), SolveError> {
+    // The longest seating the time step allows: refused above the bound
+    // rather than run for hours (a tiny [dynamics] mass or inertia makes
+    // the shortest period, and so dt, tiny against the longest one).
+    let steps = max_time / sim.dt();
+    if steps.is_nan() || steps > MAX_STEPS as f64 {
+        return Err(SolveError::BadOption(format!(
+            "the seating may take {steps:.3e} time steps (dt = {dt:.3e} s, up to {max_time:.3e} s), \
+             above the bound of {MAX_STEPS}: the shortest and longest natural periods are too far \
+             apart; check [dynamics] mass and inertia (a tiny moment of inertia)",
+            dt = sim.dt(),
+        )));
+    }
+    Ok(())
 }

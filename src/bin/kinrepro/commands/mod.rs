@@ -113,7 +113,7 @@ pub fn print_json<T: serde::Serialize>(v: &T) -> Result<(), CliError> {
 
 /// The text of an input file.
 pub fn read_text(path: &Path) -> Result<String, CliError> {
-    std::fs::read_to_string(path)
+    kinrepro::input::read_to_string(path)
         .map_err(|e| CliError::file(path.display(), "cannot read the file: ", e))
 }
 

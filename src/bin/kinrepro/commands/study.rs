@@ -35,13 +35,17 @@ pub fn study(o: Checked<StudyArgs, StudyOptions>) -> Result<(), CliError> {
     bar.finish_and_clear();
     // Results first: a failed file write must not lose them.
     print_study(&report, a.format)?;
-    for csv in pending_csv {
-        csv.commit()?;
-    }
+    // Every file of --out under its temporary name, then all renamed at once.
+    let mut staged = pending_csv
+        .into_iter()
+        .map(SamplesCsv::finish)
+        .collect::<Result<Vec<_>, _>>()?;
+    let streamed = staged.len();
     if let Some(dir) = &a.out {
-        for f in report.write_files(dir, a.force, plan.streamed())? {
-            eprintln!("wrote {f}");
-        }
+        staged.extend(report.stage_files(dir, a.force, plan.streamed())?);
+    }
+    for f in crate::signals::commit(staged)?.iter().skip(streamed) {
+        eprintln!("wrote {f}");
     }
     if let Some(path) = &a.html {
         super::report::study_html(&report, &couplings, a.reference.as_deref(), path, a.force)?;

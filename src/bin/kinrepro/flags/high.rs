@@ -336,6 +336,13 @@ pub fn validate_hertz(a: &ValidateHertzArgs) -> Result<MeshOptions, CliError> {
             "--convergence {l}: element sizes are fractions of the contact semi-axis, in (0, 1]"
         )));
     }
+    for &element_size_rel in levels {
+        let level = MeshOptions {
+            element_size_rel,
+            ..MeshOptions::default()
+        };
+        level.check_size().context("--convergence")?;
+    }
     if let Some(r) = &a.ratios {
         if !a.conformity {
             return Err(usage("--ratios goes with --conformity"));

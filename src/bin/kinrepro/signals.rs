@@ -1,0 +1,82 @@
+//! SIGINT and SIGTERM (`signal-hook`): the first asks the library to stop
+//! ([`kinrepro::cancel`]); the run unwinds, its temporary files are deleted
+//! by their destructors, and the process exits 128 + the signal (130, 143).
+//! A command that does not check the request (a single long FE solve) is
+//! stopped after [`GRACE`], as is any run at a second signal, but never in
+//! the middle of [`commit`]: a folder of outputs is renamed whole or not at all.
+
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicI32, Ordering};
+use std::time::Duration;
+
+use kinrepro::report::atomic::{AtomicFile, commit_all};
+use signal_hook::consts::{SIGINT, SIGTERM};
+use signal_hook::iterator::Signals;
+
+use crate::error::CliError;
+
+/// Time a run has to unwind after the first signal.
+pub const GRACE: Duration = Duration::from_secs(3);
+
+/// The first signal received (0: none).
+static RECEIVED: AtomicI32 = AtomicI32::new(0);
+
+/// Held while output files are renamed into place.
+static COMMITTING: Mutex<()> = Mutex::new(());
+
+/// Handle SIGINT and SIGTERM on a thread of their own.
+pub fn install() -> Result<(), CliError> {
+    let mut signals = Signals::new([SIGINT, SIGTERM])
+        .map_err(|e| CliError::Usage(format!("cannot handle signals: {e}")))?;
+    std::thread::spawn(move || {
+        for sig in signals.forever() {
+            if RECEIVED
+                .compare_exchange(0, sig, Ordering::SeqCst, Ordering::SeqCst)
+                .is_err()
+            {
+                stop(sig);
+            }
+            kinrepro::cancel::request();
+            std::thread::spawn(move || {
+                std::thread::sleep(GRACE);
+                stop(sig);
+            });
+        }
+    });
+    Ok(())
+}
+
+/// Exit now with 128 + `sig` (after any commit in progress).
+fn stop(sig: i32) -> ! {
+    let _hold = COMMITTING.lock();
+    eprintln!("kinrepro: {}: stopped", name(sig));
+    std::process::exit(128 + sig)
+}
+
+fn name(sig: i32) -> &'static str {
+    if sig == SIGINT { "SIGINT" } else { "SIGTERM" }
+}
+
+/// The exit code and message of a run stopped by a signal, if one came.
+pub fn received() -> Option<(u8, String)> {
+    match RECEIVED.load(Ordering::SeqCst) {
+        0 => None,
+        sig => Some((
+            (128 + sig) as u8,
+            format!(
+                "{}: interrupted; no output file replaced by a partial one",
+                name(sig)
+            ),
+        )),
+    }
+}
+
+/// Rename `files` into place, all of them, or none once a stop was asked
+/// for; returns their paths.
+pub fn commit(files: Vec<AtomicFile>) -> Result<Vec<String>, CliError> {
+    let _hold = COMMITTING.lock();
+    if kinrepro::cancel::requested() {
+        return Err(CliError::Interrupted);
+    }
+    Ok(commit_all(files)?)
+}
