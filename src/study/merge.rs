@@ -196,6 +196,7 @@ fn merge_variant(
     v.partial = false;
     v.shard = Shard::whole();
     v.records = records;
+    v.cannot_seat = parts.iter().find_map(|p| p.cannot_seat.clone());
     v.seating_paths = super::paths::SeatingPaths::total(parts.iter().map(|p| p.seating_paths));
     v.finish()?;
     Ok(v)

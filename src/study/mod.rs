@@ -57,6 +57,7 @@ pub mod stats;
 pub mod stream;
 pub mod summary;
 pub mod variation;
+pub mod verdict;
 
 pub use document::StudyPlan;
 pub use error::{Result, StudyError};

@@ -159,6 +159,8 @@ pub struct VariantRun {
     /// `point/component` for every evaluation point and component.
     pub output_names: Vec<String>,
     pub records: Vec<SampleRecord>,
+    /// Why the coupling cannot seat ([`super::verdict::cannot_seat`]), if it cannot.
+    pub cannot_seat: Option<String>,
 }
 
 /// The design a scene's study uses under `opts`.
@@ -298,6 +300,7 @@ pub fn run_variant<'a>(
         shard: opts.shard,
         output_names: recorded_output_names(coupling, &opts.variation),
         records,
+        cannot_seat: super::verdict::cannot_seat(coupling, &opts.method)?,
     })
 }
 
@@ -320,38 +323,6 @@ fn design_error(coupling: &Coupling, source: StudyError) -> RunError {
         file: coupling.scene.file.clone(),
         source,
     }
-}
-
-/// True if friction moves the seated pose: the coupling seated from the
-/// touching pose with every mu_s at mu0 - spread and at mu0 + spread (and
-/// mu0 +- 10 % for a scene without spread) ends in different poses. False
-/// means every contact stuck from the first load increment: the coupling
-/// cannot seat, and a friction study gives zero scatter.
-pub fn friction_moves_pose(coupling: &Coupling, method: &Method) -> Result<bool, RunError> {
-    let f = &coupling.scene.friction;
-    let d = if f.spread > 0.0 {
-        f.spread
-    } else {
-        0.1 * f.mu_static
-    };
-    let n = coupling.contacts.len();
-    let mut poses = Vec::new();
-    for mu in [(f.mu_static - d).max(0.0), f.mu_static + d] {
-        let m = vec![mu; n];
-        let s = method
-            .seat(coupling, &m, &StartPose::touching())
-            .map_err(|source| RunError::FrictionProbe {
-                file: coupling.scene.file.clone(),
-                mu: m,
-                source,
-            })?;
-        poses.push(s.pose);
-    }
-    let p = &coupling.scene.evaluation_points[0].position;
-    Ok(PointPose::between(&poses[0], &poses[1], p)
-        .components()
-        .iter()
-        .any(|c| *c != 0.0))
 }
 
 /// Run this shard's samples in chunks of `chunk` rows (rayon within a
