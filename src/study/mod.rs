@@ -56,6 +56,7 @@ pub mod sensitivity;
 pub mod stats;
 pub mod stream;
 pub mod summary;
+pub mod validate;
 pub mod variation;
 pub mod verdict;
 
