@@ -294,13 +294,14 @@ pub fn run_variant<'a>(
     let rows = design
         .range(range.clone())
         .map_err(|source| design_error(coupling, source))?;
+    let cannot_seat = super::verdict::cannot_seat(coupling, &opts.method)?;
     let records = evaluate_rows(coupling, opts, range.zip(rows).collect(), progress)?;
     Ok(VariantRun {
         design,
         shard: opts.shard,
         output_names: recorded_output_names(coupling, &opts.variation),
         records,
-        cannot_seat: super::verdict::cannot_seat(coupling, &opts.method)?,
+        cannot_seat,
     })
 }
 
