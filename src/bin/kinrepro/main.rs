@@ -14,7 +14,9 @@ fn main() -> ExitCode {
     match commands::dispatch(cli.command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(msg) => {
-            eprintln!("error: {msg}");
+            // One line, whatever the names in it hold.
+            let msg = msg.to_string();
+            eprintln!("error: {}", kinrepro::report::printable::printable(&msg));
             ExitCode::FAILURE
         }
     }
