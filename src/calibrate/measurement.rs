@@ -206,7 +206,8 @@ impl Measurement {
                 self.err(line, cn, "cycles", r)
             })?;
             if !(MIN_CYCLES..=MAX_CYCLES).contains(&n) {
-                let r = format!("{n} cycle(s), need {MIN_CYCLES} to {MAX_CYCLES}");
+                let r =
+                    format!("{n} cycle(s), need at least {MIN_CYCLES} and at most {MAX_CYCLES}");
                 return Err(self.err(line, cn, "cycles", r));
             }
             let (max, si) = (

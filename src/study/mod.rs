@@ -50,6 +50,7 @@ pub mod provenance;
 pub mod record;
 pub mod result;
 mod rng;
+pub mod run_error;
 pub mod runner;
 pub mod sampling;
 pub mod sensitivity;

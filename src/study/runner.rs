@@ -19,15 +19,15 @@
 //! (interchangeability of coupling halves, outputs `interchange/...`).
 
 use rayon::prelude::*;
-use thiserror::Error;
 
 use super::StudyError;
 pub use super::inputs::{Input, Tolerances};
 pub use super::paths::{PathTally, SeatingPaths};
+pub use super::run_error::RunError;
 use super::stats::SampleRecord;
 pub use super::variation::{START_CLEARANCE, Sample, StartBounds, Variation, lifted_clear};
 use super::{DesignSpec, Sampler, Shard};
-use crate::assembly::{AssemblyError, BodyPose, Coupling};
+use crate::assembly::{BodyPose, Coupling};
 use crate::dof::Dof;
 
 use crate::solve::dynamic::StartPose;
@@ -99,56 +99,6 @@ impl<'a> From<&'a (dyn Fn() + Sync + 'a)> for Progress<'a> {
     fn from(tick: &'a (dyn Fn() + Sync + 'a)) -> Self {
         Progress { tick, tally: None }
     }
-}
-
-/// A study could not be run.
-#[derive(Debug, Error)]
-pub enum RunError {
-    #[error("{file}: {source}")]
-    Design {
-        file: String,
-        #[source]
-        source: StudyError,
-    },
-    #[error("{file}: {reason}")]
-    Options { file: String, reason: String },
-    #[error(
-        "{file}: sample {index}: the coupling perturbed by the drawn tolerances does not \
-         assemble: {source}"
-    )]
-    Perturbed {
-        file: String,
-        index: usize,
-        #[source]
-        source: AssemblyError,
-    },
-    #[error(
-        "{file}: the nominal seating (the reference of every sample; mu_s = {mu:?}, touching start) failed: {source}"
-    )]
-    Nominal {
-        file: String,
-        mu: Vec<f64>,
-        #[source]
-        source: SolveError,
-    },
-    #[error(
-        "{file}: the seating at mu_s = {mu:?} (touching start) that tells whether friction \
-         moves the pose failed: {source}"
-    )]
-    FrictionProbe {
-        file: String,
-        mu: Vec<f64>,
-        #[source]
-        source: SolveError,
-    },
-    #[error("{file}: sample {index} (mu_s = {mu:?}): {source}")]
-    Seating {
-        file: String,
-        index: usize,
-        mu: Vec<f64>,
-        #[source]
-        source: SolveError,
-    },
 }
 
 /// The samples of one scene that this run (shard) computed.

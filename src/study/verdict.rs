@@ -15,7 +15,7 @@
 //! A frictionless coupling (mu_s = 0, no spread) always slides into its
 //! one equilibrium: it seats, and its zero scatter is the true answer.
 
-use super::runner::RunError;
+use super::run_error::RunError;
 use crate::assembly::Coupling;
 use crate::solve::dynamic::StartPose;
 use crate::solve::{Method, PointPose};
