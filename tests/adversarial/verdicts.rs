@@ -535,10 +535,10 @@ fn evaluation_point_names_are_unique_and_not_empty() {
         (
             "dup.toml",
             point("a", 0.0) + &point("a", 0.01),
-            6,
+            7,
             "also the name of evaluation point 1",
         ),
-        ("empty.toml", point(" ", 0.0), 2, "empty"),
+        ("empty.toml", point(" ", 0.0), 3, "empty"),
     ] {
         let base = std::fs::read_to_string(common::scene("01_maxwell_vgroove_steel.toml")).unwrap();
         let lines = base.lines().count();
