@@ -340,7 +340,8 @@ fn a_calibration_file_is_checked_like_a_scene() {
     let spread = v["parameters"]["spread"].clone();
     let high = spread["high"].as_f64().unwrap();
     let low = spread["low"].as_f64().unwrap();
-    let cases: Vec<(&str, Box<dyn Fn(&mut serde_json::Value)>)> = vec![
+    type Edit = Box<dyn Fn(&mut serde_json::Value)>;
+    let cases: Vec<(&str, Edit)> = vec![
         (
             "outside",
             Box::new(move |v| v["parameters"]["spread"]["estimate"] = (2.0 * high).into()),
