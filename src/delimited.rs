@@ -77,3 +77,17 @@ fn split(line: &str, delimiter: u8) -> Vec<String> {
     let record = reader.records().next().and_then(Result::ok);
     record.map_or_else(Vec::new, |r| r.iter().map(str::to_string).collect())
 }
+
+/// A cell as written to a CSV file, safe to open in a spreadsheet: a cell
+/// that is not a number and begins with `=`, `+`, `-`, `@`, a tab or a
+/// carriage return would be run as a formula (CSV injection), so it gets a
+/// leading `'`, which spreadsheets show as text (OWASP, "CSV Injection").
+/// Numbers such as `-1.5e-9` stay as they are.
+pub fn csv_cell(cell: &str) -> std::borrow::Cow<'_, str> {
+    let risky = cell.starts_with(['=', '+', '-', '@', '\t', '\r']);
+    if risky && cell.trim().parse::<f64>().is_err() {
+        format!("'{cell}").into()
+    } else {
+        cell.into()
+    }
+}

@@ -43,6 +43,7 @@ fn studies(c: &Coupling, specs: &[DesignSpec]) -> Vec<(PointStats, Vec<f64>)> {
                 shard: Shard::whole(),
                 output_names: recorded_output_names(c, &opts.variation),
                 records: recs,
+                cannot_seat: None,
             };
             let v = VariantReport::new(c, run, &opts).unwrap();
             (v.points[0].clone(), x)

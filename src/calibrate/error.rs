@@ -58,6 +58,10 @@ pub enum CalibrateError {
     /// A bad calibration file (`predict --calibration`).
     #[error("{file}: not a kinrepro calibration file: {reason}")]
     Calibration { file: String, reason: String },
+    /// A coupling that cannot seat ([`crate::study::verdict::cannot_seat`]):
+    /// its scatter is not a prediction.
+    #[error("{file}: cannot seat: {reason}")]
+    CannotSeat { file: String, reason: String },
     #[error(transparent)]
     Run(#[from] RunError),
     #[error("{file}: {source}")]

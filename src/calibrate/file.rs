@@ -254,6 +254,39 @@ pub fn dof_fits(
         .collect()
 }
 
+/// Most points of a calibration's parameter region (`predict` runs one
+/// Monte Carlo study per point; a fit of all four parameters has 3^4 = 81
+/// at most).
+pub const MAX_REGION: usize = 100;
+
+/// One fitted parameter as a fit writes it: finite, 0 <= low <= estimate
+/// <= high, a spread above zero, a level in (0, 1).
+fn check_parameter(name: &str, p: &Parameter) -> Result<(), String> {
+    let at = format!("`parameters.{name}`");
+    let (e, lo, hi) = (p.estimate, p.low, p.high);
+    if ![e, lo, hi, p.level].iter().all(|v| v.is_finite()) {
+        return Err(format!(
+            "{at}: estimate {e}, low {lo}, high {hi}, level {}: not finite",
+            p.level
+        ));
+    }
+    if !(0.0 <= lo && lo <= e && e <= hi) {
+        return Err(format!(
+            "{at}: estimate {e} with interval [{lo}, {hi}]: need 0 <= low <= estimate <= high"
+        ));
+    }
+    if name == "spread" && e <= 0.0 {
+        return Err(format!("{at}: estimate {e}: a calibrated spread is > 0"));
+    }
+    if !(p.level > 0.0 && p.level < 1.0) {
+        return Err(format!(
+            "{at}: level {}: need a probability in (0, 1)",
+            p.level
+        ));
+    }
+    Ok(())
+}
+
 impl Calibration {
     /// Parse a calibration file's text.
     pub fn parse(text: &str, file: &str) -> Result<Self, CalibrateError> {
@@ -277,6 +310,15 @@ impl Calibration {
             .find(|k| !PARAMETERS.contains(&k.as_str()))
         {
             return Err(bad(format!("unknown parameter `{p}` in `parameters`")));
+        }
+        for (k, p) in &c.parameters {
+            check_parameter(k, p).map_err(bad)?;
+        }
+        if c.region.len() > MAX_REGION {
+            return Err(bad(format!(
+                "`region`: {} points, at most {MAX_REGION} (predict runs one study per point)",
+                c.region.len()
+            )));
         }
         for (i, point) in c.region.iter().enumerate() {
             if let Some((k, v)) = point

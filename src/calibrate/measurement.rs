@@ -16,6 +16,14 @@ use crate::dof::Dof;
 /// Fewest re-seating cycles a measurement may have.
 pub const MIN_CYCLES: usize = 3;
 
+/// Most re-seating cycles a summary may claim: ten million (a rig at one
+/// cycle per second runs for four months).
+pub const MAX_CYCLES: usize = 10_000_000;
+
+/// Largest measured sigma of a translation [m] and a rotation [rad]: a
+/// coupling scattering by a millimetre or ten milliradians is not seated.
+pub const MAX_SIGMA: [f64; 2] = [1e-3, 1e-2];
+
 #[derive(Debug, Clone, PartialEq)]
 pub enum MeasuredData {
     /// One row per cycle, one value per measured DOF [SI].
@@ -161,6 +169,11 @@ impl Measurement {
             return Err(self.whole(header_line, r.into()));
         };
         let cp = col("point");
+        let known = ["dof", "unit", "sigma", "cycles", "point"];
+        if let Some(c) = names.iter().position(|n| !known.contains(&n.as_str())) {
+            let r = format!("unknown column (a summary has {})", known.join(", "));
+            return Err(self.err(header_line, c, &names[c], r));
+        }
         let (mut sigma, mut cycles) = (Vec::new(), Vec::new());
         for (line, cells) in rows {
             let line = *line;
@@ -192,9 +205,21 @@ impl Measurement {
                 let r = format!("`{}` is not a whole number of cycles", cells[cn]);
                 self.err(line, cn, "cycles", r)
             })?;
-            if n < MIN_CYCLES {
-                let r = format!("{n} cycle(s), need at least {MIN_CYCLES}");
+            if !(MIN_CYCLES..=MAX_CYCLES).contains(&n) {
+                let r =
+                    format!("{n} cycle(s), need at least {MIN_CYCLES} and at most {MAX_CYCLES}");
                 return Err(self.err(line, cn, "cycles", r));
+            }
+            let (max, si) = (
+                MAX_SIGMA[usize::from(d >= 3)],
+                ["m", "rad"][usize::from(d >= 3)],
+            );
+            if !(s * f > 0.0 && s * f <= max) {
+                let r = format!(
+                    "{s} {unit} = {:e} {si}: a measured sigma lies in (0, {max:e}] {si} (zero is below any sensor's noise)",
+                    s * f
+                );
+                return Err(self.err(line, cs, "sigma", r));
             }
             self.dofs.push(d);
             sigma.push(s * f);

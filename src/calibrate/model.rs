@@ -68,6 +68,15 @@ impl StudySpec<'_> {
     pub fn run(&self, c: &Coupling) -> Result<ModelStudy, CalibrateError> {
         let opts = model_options(self.samples, self.seed, self.method);
         let run = run_variant(c, &opts, &|| {})?;
+        if let Some(reason) = run.cannot_seat {
+            return Err(CalibrateError::CannotSeat {
+                file: c.scene.file.clone(),
+                reason: format!(
+                    "{reason} (model study at spread {})",
+                    c.scene.friction.spread
+                ),
+            });
+        }
         let point = self.point;
         Ok(ModelStudy {
             spread: c.scene.friction.spread,

@@ -91,6 +91,12 @@ pub fn predict(
     let opts = model_options(samples, seed, method);
     let report = |c: &Coupling| -> Result<VariantReport, CalibrateError> {
         let run = run_variant(c, &opts, &|| {})?;
+        if let Some(reason) = run.cannot_seat {
+            return Err(CalibrateError::CannotSeat {
+                file: file.clone(),
+                reason: format!("{reason} (study at spread {})", c.scene.friction.spread),
+            });
+        }
         VariantReport::new(c, run, &opts).map_err(|source| CalibrateError::Study {
             file: file.clone(),
             source,

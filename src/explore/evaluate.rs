@@ -17,7 +17,7 @@ use crate::assembly::constraint::friction_limit;
 use crate::scene::Scene;
 use crate::solve::dynamic::StartPose;
 use crate::solve::{PointPose, Seating, SolveError, nominal_mu};
-use crate::study::runner::{RunError, StudyOptions, VariantRun, friction_moves_pose, run_variant};
+use crate::study::runner::{RunError, StudyOptions, VariantRun, run_variant};
 
 /// Why a valid design point could not be evaluated (its `failed:` status).
 #[derive(Debug, Error)]
@@ -184,12 +184,8 @@ fn seat_and_study(
         .seat(c, &mu, &StartPose::touching())
         .map_err(|source| EvalError::NominalSeating { mu: mu[0], source })?;
     e.nominal = Some(nominal(c, &seating, &mu)?);
-    if !friction_moves_pose(c, &opts.method)? {
-        let f = &c.scene.friction;
-        return Ok(Outcome::CannotSeat(format!(
-            "with mu_s = {} +- {} every contact sticks from the first load increment: the seated pose does not depend on friction and the coupling does not centre",
-            f.mu_static, f.spread
-        )));
+    if let Some(reason) = crate::study::verdict::cannot_seat(c, &opts.method)? {
+        return Ok(Outcome::CannotSeat(reason));
     }
     e.run = Some(run_variant(c, opts, tick)?);
     Ok(Outcome::Ok)

@@ -8,17 +8,16 @@ use crate::contact::stress::contact_stress;
 use crate::report::preload;
 use crate::report::table::{Table, cells};
 
-/// What the friction limit means for this scene, given whether friction
-/// moves the seated pose from the touching pose (`friction_moves`, see
-/// `study::runner::friction_moves_pose`); empty below the limit.
-pub fn seating_note(c: &Coupling, friction_moves: bool) -> String {
+/// What the friction limit means for this scene, given why it cannot seat
+/// (`cannot_seat`, the verdict of `study::verdict::cannot_seat`), if it
+/// cannot; empty below the limit.
+pub fn seating_note(c: &Coupling, cannot_seat: Option<&str>) -> String {
     let f = &c.scene.friction;
     let mu_max = f.mu_static + f.spread;
     let limit = friction_limit(c).mu_limit;
-    if !friction_moves {
+    if let Some(reason) = cannot_seat {
         return format!(
-            "  CANNOT SEAT: with mu_s = {} +- {} every contact sticks from the first load increment: the seated pose does not depend on friction, the coupling does not centre, and a study reports zero scatter (and exits non-zero)\n",
-            f.mu_static, f.spread
+            "  CANNOT SEAT: {reason}; a study of it exits non-zero (its scatter is not a result)\n"
         );
     }
     if mu_max < limit {

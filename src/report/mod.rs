@@ -13,6 +13,7 @@ pub mod html;
 pub mod materials;
 pub mod plot;
 pub mod preload;
+pub mod printable;
 pub mod progress;
 pub mod run;
 pub mod safety;

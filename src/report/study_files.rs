@@ -5,6 +5,7 @@
 use std::io::Write as _;
 use std::path::Path;
 
+use crate::delimited::csv_cell;
 use crate::report::atomic::{self, AtomicFile, WriteError};
 use crate::report::html::charts::study_charts;
 use crate::report::study_text::point_csv_rows;
@@ -130,7 +131,7 @@ impl SamplesCsv {
                 &v.samples.to_string(),
                 &crate::study::result::varied_kinds(&v.variation()).join("+"),
             ),
-            v.scene
+            crate::report::printable::printable(&v.scene)
         )
         .map_err(|e| WriteError::io(path, e))?;
         let mut csv = SamplesCsv {
@@ -150,7 +151,7 @@ impl SamplesCsv {
     fn record(&mut self, cells: impl IntoIterator<Item = String>) -> Result<(), WriteError> {
         let path = Path::new(&self.path);
         self.out
-            .write_record(cells)
+            .write_record(cells.into_iter().map(|c| csv_cell(&c).into_owned()))
             .map_err(|e| WriteError::io(path, e))
     }
 

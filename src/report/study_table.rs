@@ -95,6 +95,11 @@ fn variant_text(v: &VariantReport) -> String {
             v.samples - k
         );
     }
+    if let Some(reason) = &v.cannot_seat {
+        // The samples' zero or noise-level scatter is not a result.
+        let _ = writeln!(s, "  CANNOT SEAT: {reason}");
+        return s;
+    }
     if !v.points.is_empty() {
         let _ = writeln!(s, "  re-seating scatter (one pair of halves):");
         s += &detail(&v.points);

@@ -45,6 +45,14 @@ pub(crate) fn sigma_table(
             ));
             continue;
         }
+        if v.cannot_seat.is_some() {
+            t.note(format!(
+                "{} {}: CANNOT SEAT: no scatter to report (see above)",
+                i + 1,
+                v.name
+            ));
+            continue;
+        }
         for p in points(v) {
             let (sigma, under) = sigma_cells(p);
             let mut row = cells![i + 1, truncate(&v.name, 45), &p.name, p.n];

@@ -9,6 +9,9 @@ use std::fmt::Write as _;
 
 use comfy_table::{CellAlignment, presets::NOTHING};
 
+use crate::delimited::csv_cell;
+use crate::report::printable::printable;
+
 /// How a column's numbers are written.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Format {
@@ -266,7 +269,13 @@ impl Table {
         for line in &self.lines {
             match line {
                 Line::Row(r) => {
-                    t.add_row(self.texts(r, "-"));
+                    let texts = self.texts(r, "-");
+                    t.add_row(
+                        texts
+                            .iter()
+                            .map(|c| printable(c).into_owned())
+                            .collect::<Vec<_>>(),
+                    );
                     after.push(Vec::new());
                     if !r.under.is_empty() {
                         t.add_row(r.under.clone());
@@ -289,7 +298,7 @@ impl Table {
         for (line, notes) in t.lines().zip(&after) {
             let _ = writeln!(s, "{pad}{}", line.trim_end());
             for n in notes {
-                let _ = writeln!(s, "{pad}{n}");
+                let _ = writeln!(s, "{pad}{}", printable(n));
             }
         }
         s
@@ -308,7 +317,7 @@ impl Table {
         }
         // Writing to memory cannot fail, and the cells are UTF-8.
         for r in rows {
-            let _ = w.write_record(r);
+            let _ = w.write_record(r.iter().map(|c| csv_cell(c).into_owned()));
         }
         String::from_utf8(w.into_inner().unwrap_or_default()).unwrap_or_default()
     }

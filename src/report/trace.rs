@@ -16,6 +16,7 @@ use std::io::Write;
 
 use crate::assembly::Coupling;
 use crate::dof::Dof;
+use crate::report::printable::printable;
 use crate::solve::PointPose;
 use crate::solve::dynamic::TraceSample;
 use crate::study::provenance::{SCHEMA_VERSION, VERSION};
@@ -38,7 +39,8 @@ impl<W: Write> TraceWriter<W> {
         writeln!(
             out,
             "# kinrepro {VERSION} (output schema {SCHEMA_VERSION}), solver dynamic, one seating of {} ({})",
-            coupling.scene.file, coupling.scene.name
+            printable(&coupling.scene.file),
+            printable(&coupling.scene.name)
         )?;
         let mut out = csv::Writer::from_writer(out);
         let mut head = vec!["time_s".to_string(), "load_fraction".to_string()];

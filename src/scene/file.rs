@@ -374,7 +374,7 @@ impl Default for StudyFile {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct EvaluationPointFile {
-    pub name: String,
+    pub name: Spanned<String>,
     /// Position in the moving half [m] (world frame in the touching pose).
     pub position: Spanned<Numbers>,
 }

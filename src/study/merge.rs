@@ -54,6 +54,13 @@ pub enum MergeError {
     BadShard { file: String, shard: Shard },
     #[error("{0} missing")]
     MissingShards(String),
+    /// A part that no study could have written.
+    #[error("{file}: {source}")]
+    Invalid {
+        file: String,
+        #[source]
+        source: super::validate::DocumentError,
+    },
     #[error("{scene}: {source}")]
     Records {
         scene: String,
@@ -72,6 +79,10 @@ pub fn merge_parts(parts: Vec<(String, StudyReport)>) -> Result<StudyReport, Mer
                 found: p.schema_version,
             });
         }
+        super::validate::check_document(p).map_err(|source| MergeError::Invalid {
+            file: file.clone(),
+            source,
+        })?;
         check_same_study(first_file, first, file, p)?;
     }
     let shards: Vec<(&str, Shard)> = parts.iter().map(|(f, p)| (f.as_str(), p.shard)).collect();
@@ -196,6 +207,7 @@ fn merge_variant(
     v.partial = false;
     v.shard = Shard::whole();
     v.records = records;
+    v.cannot_seat = parts.iter().find_map(|p| p.cannot_seat.clone());
     v.seating_paths = super::paths::SeatingPaths::total(parts.iter().map(|p| p.seating_paths));
     v.finish()?;
     Ok(v)

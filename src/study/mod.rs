@@ -51,13 +51,16 @@ pub mod provenance;
 pub mod record;
 pub mod result;
 mod rng;
+pub mod run_error;
 pub mod runner;
 pub mod sampling;
 pub mod sensitivity;
 pub mod stats;
 pub mod stream;
 pub mod summary;
+pub mod validate;
 pub mod variation;
+pub mod verdict;
 
 pub use document::StudyPlan;
 pub use error::{Result, StudyError};

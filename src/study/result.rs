@@ -184,7 +184,7 @@ impl VariantReport {
         VariantReport {
             fingerprint: Fingerprint::new(coupling, opts, &run.design),
             streamed: false,
-            cannot_seat: None,
+            cannot_seat: run.cannot_seat,
             seating_paths: None,
             scene: coupling.scene.file.clone(),
             name: coupling.scene.name.clone(),

@@ -19,15 +19,15 @@
 //! (interchangeability of coupling halves, outputs `interchange/...`).
 
 use rayon::prelude::*;
-use thiserror::Error;
 
 use super::StudyError;
 pub use super::inputs::{Input, Tolerances};
 pub use super::paths::{PathTally, SeatingPaths};
+pub use super::run_error::RunError;
 use super::stats::SampleRecord;
 pub use super::variation::{START_CLEARANCE, Sample, StartBounds, Variation, lifted_clear};
 use super::{DesignSpec, Sampler, Shard};
-use crate::assembly::{AssemblyError, BodyPose, Coupling};
+use crate::assembly::{BodyPose, Coupling};
 use crate::dof::Dof;
 
 use crate::solve::dynamic::StartPose;
@@ -101,59 +101,6 @@ impl<'a> From<&'a (dyn Fn() + Sync + 'a)> for Progress<'a> {
     }
 }
 
-/// A study could not be run.
-#[derive(Debug, Error)]
-pub enum RunError {
-    /// A stop was asked for ([`crate::cancel`]).
-    #[error("interrupted")]
-    Cancelled,
-    #[error("{file}: {source}")]
-    Design {
-        file: String,
-        #[source]
-        source: StudyError,
-    },
-    #[error("{file}: {reason}")]
-    Options { file: String, reason: String },
-    #[error(
-        "{file}: sample {index}: the coupling perturbed by the drawn tolerances does not \
-         assemble: {source}"
-    )]
-    Perturbed {
-        file: String,
-        index: usize,
-        #[source]
-        source: AssemblyError,
-    },
-    #[error(
-        "{file}: the nominal seating (the reference of every sample; mu_s = {mu:?}, touching start) failed: {source}"
-    )]
-    Nominal {
-        file: String,
-        mu: Vec<f64>,
-        #[source]
-        source: SolveError,
-    },
-    #[error(
-        "{file}: the seating at mu_s = {mu:?} (touching start) that tells whether friction \
-         moves the pose failed: {source}"
-    )]
-    FrictionProbe {
-        file: String,
-        mu: Vec<f64>,
-        #[source]
-        source: SolveError,
-    },
-    #[error("{file}: sample {index} (mu_s = {mu:?}): {source}")]
-    Seating {
-        file: String,
-        index: usize,
-        mu: Vec<f64>,
-        #[source]
-        source: SolveError,
-    },
-}
-
 /// The samples of one scene that this run (shard) computed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct VariantRun {
@@ -162,6 +109,8 @@ pub struct VariantRun {
     /// `point/component` for every evaluation point and component.
     pub output_names: Vec<String>,
     pub records: Vec<SampleRecord>,
+    /// Why the coupling cannot seat ([`super::verdict::cannot_seat`]), if it cannot.
+    pub cannot_seat: Option<String>,
 }
 
 /// The design a scene's study uses under `opts`.
@@ -295,12 +244,14 @@ pub fn run_variant<'a>(
     let rows = design
         .range(range.clone())
         .map_err(|source| design_error(coupling, source))?;
+    let cannot_seat = super::verdict::cannot_seat(coupling, &opts.method)?;
     let records = evaluate_rows(coupling, opts, range.zip(rows).collect(), progress)?;
     Ok(VariantRun {
         design,
         shard: opts.shard,
         output_names: recorded_output_names(coupling, &opts.variation),
         records,
+        cannot_seat,
     })
 }
 
@@ -323,38 +274,6 @@ fn design_error(coupling: &Coupling, source: StudyError) -> RunError {
         file: coupling.scene.file.clone(),
         source,
     }
-}
-
-/// True if friction moves the seated pose: the coupling seated from the
-/// touching pose with every mu_s at mu0 - spread and at mu0 + spread (and
-/// mu0 +- 10 % for a scene without spread) ends in different poses. False
-/// means every contact stuck from the first load increment: the coupling
-/// cannot seat, and a friction study gives zero scatter.
-pub fn friction_moves_pose(coupling: &Coupling, method: &Method) -> Result<bool, RunError> {
-    let f = &coupling.scene.friction;
-    let d = if f.spread > 0.0 {
-        f.spread
-    } else {
-        0.1 * f.mu_static
-    };
-    let n = coupling.contacts.len();
-    let mut poses = Vec::new();
-    for mu in [(f.mu_static - d).max(0.0), f.mu_static + d] {
-        let m = vec![mu; n];
-        let s = method
-            .seat(coupling, &m, &StartPose::touching())
-            .map_err(|source| RunError::FrictionProbe {
-                file: coupling.scene.file.clone(),
-                mu: m,
-                source,
-            })?;
-        poses.push(s.pose);
-    }
-    let p = &coupling.scene.evaluation_points[0].position;
-    Ok(PointPose::between(&poses[0], &poses[1], p)
-        .components()
-        .iter()
-        .any(|c| *c != 0.0))
 }
 
 /// Run this shard's samples in chunks of `chunk` rows (rayon within a

@@ -109,6 +109,7 @@ pub fn run_streamed<S: RecordSink>(
         shard: opts.shard,
         output_names: names.clone(),
         records: Vec::new(),
+        cannot_seat: super::verdict::cannot_seat(coupling, &opts.method)?,
     };
     let mut v = VariantReport::unfinished(coupling, shell, opts);
     let mut sink = open(&v).map_err(StudyRunError::sink)?;

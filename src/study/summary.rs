@@ -1,8 +1,7 @@
 //! The statistics of a study's variant: sigma, its interval and the
 //! extremes per evaluation point, built from one [`Summary`] per output
 //! whether the summaries come from the records (two passes) or from
-//! streamed moments; the checks around them (non-finite outputs before, a
-//! coupling that did not seat after); the regression sensitivity of the
+//! streamed moments; the check of non-finite outputs before them; the regression sensitivity of the
 //! first point and the Sobol indices attached to it.
 
 use super::StudyError;
@@ -80,7 +79,6 @@ impl VariantReport {
             let summaries = summarize_outputs(&samples, self.sigma_method(failed))?;
             (self.points, self.interchangeability) = split_points(&self.output_names, &summaries);
             self.count_failures(failed, self.records.len());
-            self.cannot_seat = self.zero_scatter();
         }
         if self.sensitivity.is_some() {
             self.sensitivity = Some(sensitivity_blocks(self));
@@ -106,7 +104,6 @@ impl VariantReport {
         (self.points, self.interchangeability) = split_points(&self.output_names, &summaries);
         self.count_failures(st.not_centred, st.samples);
         self.streamed = true;
-        self.cannot_seat = self.zero_scatter();
         Ok(())
     }
 
@@ -139,24 +136,6 @@ impl VariantReport {
                 samples - failed
             );
         }
-    }
-
-    /// The reason the coupling did not seat, if every re-seating sigma is
-    /// exactly zero although the inputs vary (friction with a spread, or
-    /// anything else): every sample stopped at the nominal pose and nothing
-    /// slid (above the friction limit every contact sticks from the first
-    /// load increment).
-    fn zero_scatter(&self) -> Option<String> {
-        let var = self.variation();
-        let varies = (var.friction && self.spread > 0.0) || var.preload || var.start.is_some();
-        let zero = !self.points.is_empty()
-            && self
-                .points
-                .iter()
-                .all(|p| p.sigma.values().iter().all(|s| *s == 0.0));
-        (varies && zero).then(|| {
-            "zero scatter: every sample seated at exactly the nominal pose, nothing slid; the coupling cannot seat (friction at or above its seating limit, see `kinrepro check`)".to_string()
-        })
     }
 }
 

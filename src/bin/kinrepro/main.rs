@@ -20,7 +20,9 @@ fn main() -> ExitCode {
     match run {
         Ok(()) => ExitCode::SUCCESS,
         Err(msg) => {
-            eprintln!("error: {msg}");
+            // One line, whatever the names in it hold.
+            let msg = msg.to_string();
+            eprintln!("error: {}", kinrepro::report::printable::printable(&msg));
             ExitCode::FAILURE
         }
     }

@@ -68,6 +68,7 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
     if report.variants.is_empty() {
         return Err(input("no variants: nothing to report".into()));
     }
+    crate::study::validate::check_document(&report).map_err(|e| input(e.to_string()))?;
     let prediction = PredictionInput::parse(&text)
         .map_err(|e| input(format!("not a kinrepro study or prediction JSON: {e}")))?;
     let dir = path.parent().unwrap_or(Path::new("."));
@@ -79,12 +80,7 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
                 v.scene, v.shard
             )));
         }
-        let scene_path = locate(&v.scene, dir).ok_or_else(|| {
-            input(format!(
-                "scene `{}` not found (neither from the current folder nor next to the JSON)",
-                v.scene
-            ))
-        })?;
+        let scene_path = locate(&v.scene, dir).map_err(input)?;
         let text = crate::input::read_to_string(&scene_path)
             .map_err(|e| input(format!("{}: cannot read: {e}", scene_path.display())))?;
         let scene = Scene::parse(&text, &v.scene)?;
@@ -119,12 +115,40 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
     })
 }
 
-/// The scene path as written, else relative to the JSON's folder.
-fn locate(scene: &str, json_dir: &Path) -> Option<PathBuf> {
+/// The scene path as written, else relative to the JSON's folder, and
+/// only inside the current folder or the JSON's folder (after resolving
+/// `..` and symbolic links): a path written in a JSON is data, not a
+/// licence to read any file the user can read. The error names the path,
+/// never the content of a file.
+fn locate(scene: &str, json_dir: &Path) -> Result<PathBuf, String> {
+    let json_dir = if json_dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        json_dir
+    };
+    let roots: Vec<PathBuf> = [Path::new("."), json_dir]
+        .iter()
+        .filter_map(|d| d.canonicalize().ok())
+        .collect();
     let p = PathBuf::from(scene);
-    if p.is_file() {
-        return Some(p);
+    let mut outside = false;
+    for candidate in [p.clone(), json_dir.join(&p)] {
+        let Ok(real) = candidate.canonicalize() else {
+            continue;
+        };
+        if !real.is_file() {
+            continue;
+        }
+        if roots.iter().any(|r| real.starts_with(r)) {
+            return Ok(candidate);
+        }
+        outside = true;
     }
-    let q = json_dir.join(scene);
-    q.is_file().then_some(q)
+    Err(if outside {
+        format!(
+            "scene `{scene}` is outside the folders a report reads scenes from (the current folder and the JSON's folder): refused"
+        )
+    } else {
+        format!("scene `{scene}` not found (neither from the current folder nor next to the JSON)")
+    })
 }

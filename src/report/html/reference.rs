@@ -64,10 +64,27 @@ pub fn parse_reference(text: &str, file: &str) -> Result<Vec<ReferenceRow>, Html
         let r = format!("expected `{}`, found `{}`", names.join(","), header.text);
         return Err(err(header.line, "header", r));
     }
-    rows.iter()
-        .map(|r| reference_row(r, &names, &err))
-        .collect()
+    let mut out: Vec<ReferenceRow> = Vec::new();
+    for r in rows {
+        let row = reference_row(r, &names, &err)?;
+        let same = |o: &&ReferenceRow| {
+            (&o.label, &o.scene, &o.point) == (&row.label, &row.scene, &row.point)
+        };
+        if out.iter().any(|o| same(&o)) {
+            let reason = format!(
+                "`{}`, `{}`, `{}` given twice (one reference per label, scene and point)",
+                row.label, row.scene, row.point
+            );
+            return Err(err(r.line, "row", reason));
+        }
+        out.push(row);
+    }
+    Ok(out)
 }
+
+/// Largest reference sigma: 1 mm in nm for a translation, 10 mrad in nrad
+/// for a rotation (as for a measured sigma, `calibrate::measurement::MAX_SIGMA`).
+const MAX_REFERENCE: [f64; 2] = [1e6, 1e7];
 
 /// One record of a reference file (checked against the header `names`).
 fn reference_row(
@@ -88,8 +105,9 @@ fn reference_row(
         }
         let v: f64 =
             (cell.parse()).map_err(|_| err(r.line, name, format!("`{cell}` is not a number")))?;
-        if !(v.is_finite() && v >= 0.0) {
-            let reason = format!("{cell}: a sigma must be finite and >= 0");
+        let max = MAX_REFERENCE[usize::from(k >= 3)];
+        if !(v.is_finite() && v >= 0.0 && v <= max) {
+            let reason = format!("{cell}: a sigma must lie in [0, {max:e}] (nm or nrad)");
             return Err(err(r.line, name, reason));
         }
         *s = Some(v);

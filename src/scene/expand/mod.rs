@@ -209,13 +209,13 @@ fn evaluation_points(
     let mut points = raw.evaluation_points.clone();
     if points.is_empty() {
         points.push(EvaluationPointFile {
-            name: "centre".to_string(),
+            name: Spanned::new(0..0, "centre".to_string()),
             position: Spanned::new(0..0, Numbers::of(&[0.0; 3])),
         });
         if c.arrangement == Arrangement::Kelvin {
             let c1 = centres[0];
             points.push(EvaluationPointFile {
-                name: "trihedral ball".to_string(),
+                name: Spanned::new(0..0, "trihedral ball".to_string()),
                 position: Spanned::new(0..0, Numbers::of(&[c1.x, c1.y, c1.z])),
             });
         }

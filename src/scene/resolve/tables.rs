@@ -90,8 +90,23 @@ pub fn study(st: &StudyFile, ctx: &ErrorContext) -> Result<StudySettings, SceneE
 pub fn evaluation_points(f: &SceneFile, fx: &Fields) -> Result<Vec<EvaluationPoint>, SceneError> {
     let mut points = Vec::new();
     for (i, e) in f.evaluation_points.iter().enumerate() {
+        let name = e.name.get_ref();
+        // A point's name heads its CSV columns and table rows: it must
+        // name one point.
+        let reason = if name.trim().is_empty() {
+            Some("empty: give the point a name".to_string())
+        } else {
+            (points
+                .iter()
+                .position(|p: &EvaluationPoint| p.name == *name))
+            .map(|k| format!("`{name}` is also the name of evaluation point {}", k + 1))
+        };
+        if let Some(reason) = reason {
+            let field = format!("evaluation_points[{}].name", i + 1);
+            return Err(fx.ctx.error(Some(&e.name.span()), &field, reason));
+        }
         points.push(EvaluationPoint {
-            name: e.name.clone(),
+            name: name.clone(),
             position: fx.finite(
                 &e.position,
                 &format!("evaluation_points[{}].position", i + 1),

@@ -52,6 +52,8 @@ pub fn print_study(report: &StudyReport, format: Format) -> Result<(), CliError>
 /// do; any other failure (a full disk) is one clear error.
 pub fn emit(text: &str) -> Result<(), CliError> {
     use std::io::Write;
+    // Control characters from the user's names are escaped (line breaks kept).
+    let text = kinrepro::report::printable::printable_lines(text);
     let mut out = std::io::stdout().lock();
     match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
         Ok(()) => Ok(()),

@@ -9,9 +9,9 @@ pub fn check(scenes: &[PathBuf]) -> Result<(), CliError> {
     for path in scenes {
         match kinrepro::error::read_coupling(path) {
             Ok(c) => {
-                let moves = kinrepro::study::runner::friction_moves_pose(&c, &Default::default())?;
-                unseated += usize::from(!moves);
-                let note = kinrepro::report::check::seating_note(&c, moves);
+                let verdict = kinrepro::study::verdict::cannot_seat(&c, &Default::default())?;
+                unseated += usize::from(verdict.is_some());
+                let note = kinrepro::report::check::seating_note(&c, verdict.as_deref());
                 let summary = kinrepro::report::check::check_summary(&c);
                 super::emit(&format!("{summary}{note}\n"))?
             }

@@ -69,7 +69,11 @@ fn refuse_unseated(report: &StudyReport, allow: bool) -> Result<(), CliError> {
 }
 
 pub fn merge(args: MergeArgs) -> Result<(), CliError> {
-    let MergeArgs { parts, format } = args;
+    let MergeArgs {
+        parts,
+        format,
+        allow_unseated,
+    } = args;
     // The first part (clap asks for one at least) says which kind of
     // document is merged; it is read once.
     let first = read_text(&parts[0])?;
@@ -79,5 +83,5 @@ pub fn merge(args: MergeArgs) -> Result<(), CliError> {
     let docs = read_json_parts::<StudyReport>(&parts, first, "study")?;
     let merged = kinrepro::study::merge::merge_parts(docs)?;
     print_study(&merged, format)?;
-    refuse_unseated(&merged, true)
+    refuse_unseated(&merged, allow_unseated)
 }

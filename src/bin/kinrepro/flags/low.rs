@@ -214,6 +214,10 @@ pub struct MergeArgs {
     pub parts: Vec<PathBuf>,
     #[arg(long, value_enum, default_value_t = Format::Json)]
     pub format: Format,
+    /// Exit 0 even if a merged study's coupling cannot seat (as `study
+    /// --allow-unseated`); the result still says so.
+    #[arg(long)]
+    pub allow_unseated: bool,
 }
 
 #[derive(Args)]

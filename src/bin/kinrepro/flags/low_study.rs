@@ -44,7 +44,7 @@ pub struct StudyArgs {
     /// Reference values of sigma for the --html report (CSV; see `kinrepro report`).
     #[arg(long, requires = "html")]
     pub reference: Option<PathBuf>,
-    /// Exit 0 even if a coupling cannot seat (zero scatter: nothing slid);
+    /// Exit 0 even if a coupling cannot seat (every contact sticks, see `kinrepro check`);
     /// the result still says so.
     #[arg(long)]
     pub allow_unseated: bool,

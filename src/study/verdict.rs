@@ -1,0 +1,67 @@
+//! The one rule for a coupling that cannot seat, applied by every command
+//! that seats a coupling (`check`, `study` with either solver, `merge`,
+//! `sweep`, `predict`).
+//!
+//! Rule: seat the coupling quasi-statically from the touching pose with
+//! every mu_s at mu0 - spread and at mu0 + spread (mu0 +- 10 % for a scene
+//! without spread). If both seatings end in exactly the same pose, every
+//! contact stuck from the first load increment: the seated pose does not
+//! depend on friction and the coupling does not centre, so the scatter a
+//! study would report (zero for the quasi-static solver, numerical noise
+//! for the dynamic one) is not a result. The probe is quasi-static for
+//! either solver: it is deterministic, so "the same pose" is exact, and
+//! whether the contacts stick is a question of the coupling's statics.
+//!
+//! A frictionless coupling (mu_s = 0, no spread) always slides into its
+//! one equilibrium: it seats, and its zero scatter is the true answer.
+
+use super::run_error::RunError;
+use crate::assembly::Coupling;
+use crate::solve::dynamic::StartPose;
+use crate::solve::{Method, PointPose};
+
+/// Why `coupling` cannot seat (one line, without the scene file), or
+/// `None` if it seats; an error only if a probe seating fails. The probe
+/// seats with `method`'s options if it is quasi-static, else with the
+/// default quasi-static solver.
+pub fn cannot_seat(coupling: &Coupling, method: &Method) -> Result<Option<String>, RunError> {
+    let f = &coupling.scene.friction;
+    if f.mu_static == 0.0 && f.spread == 0.0 {
+        return Ok(None);
+    }
+    let d = if f.spread > 0.0 {
+        f.spread
+    } else {
+        0.1 * f.mu_static
+    };
+    let n = coupling.contacts.len();
+    let method = match method {
+        Method::QuasiStatic(_) => *method,
+        _ => Method::default(),
+    };
+    let mut poses = Vec::new();
+    for mu in [(f.mu_static - d).max(0.0), f.mu_static + d] {
+        let m = vec![mu; n];
+        let s = method
+            .seat(coupling, &m, &StartPose::touching())
+            .map_err(|source| RunError::FrictionProbe {
+                file: coupling.scene.file.clone(),
+                mu: m,
+                source,
+            })?;
+        poses.push(s.pose);
+    }
+    let p = &coupling.scene.evaluation_points[0].position;
+    let moves = PointPose::between(&poses[0], &poses[1], p)
+        .components()
+        .iter()
+        .any(|c| *c != 0.0);
+    Ok((!moves).then(|| reason(f.mu_static, f.spread)))
+}
+
+/// The verdict's text for friction mu0 +- spread.
+pub fn reason(mu_static: f64, spread: f64) -> String {
+    format!(
+        "with mu_s = {mu_static} +- {spread} every contact sticks from the first load increment: the seated pose does not depend on friction and the coupling does not centre"
+    )
+}
