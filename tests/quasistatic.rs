@@ -282,7 +282,7 @@ fn bad_mu_vectors_are_errors() {
         &SolverOptions::default(),
     )
     .unwrap_err();
-    assert!(e.to_string().contains("value 3 = -0.1"));
+    assert!(e.to_string().contains("contact 3 = -0.1"));
     let e = seat(
         &c,
         &[0.5, 0.5, f64::NAN, 0.5, 0.5, 0.5],
