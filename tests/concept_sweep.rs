@@ -233,7 +233,7 @@ fn a_sweep_without_a_valid_point_lists_them_all_and_fails() {
     );
     assert!(!ok, "no valid point: non-zero exit");
     assert!(
-        err.contains("none of the 2 design points is valid"),
+        err.contains("none of the 2 design points was evaluated"),
         "{err}"
     );
     let doc = json(&out);

@@ -117,8 +117,12 @@ pub enum SweepError {
     Explore(#[from] ExploreError),
     #[error("{0}")]
     Setup(String),
-    /// No design point of a whole sweep loads and assembles.
-    #[error("{file}: none of the {points} design points is valid (each is listed with its reason)")]
+    /// No design point of a whole sweep was evaluated: each is invalid,
+    /// cannot seat or failed.
+    #[error(
+        "{file}: none of the {points} design points was evaluated (each is listed with its status: \
+         invalid, cannot seat or failed)"
+    )]
     NoValidDesign { file: String, points: usize },
     /// `--pareto-point` names no evaluation point of the base scene.
     #[error("{file}: --pareto-point {point}: no such evaluation point (the scene has {have})")]
@@ -291,11 +295,13 @@ impl SweepReport {
     }
 
     /// [`SweepError::NoValidDesign`] if this document holds the whole
-    /// sweep (not one shard of several) and none of its design points is
-    /// valid; a shard cannot tell, its `merge` does.
+    /// sweep (not one shard of several) and none of its design points was
+    /// evaluated (status `ok`): no point gives a result, as a study of a
+    /// coupling that cannot seat gives none; a shard cannot tell, its
+    /// `merge` does.
     pub fn check_any_valid(&self) -> Result<(), SweepError> {
         let whole = self.shard.count == 1;
-        match whole && self.designs.iter().all(|d| d.invalid_reason.is_some()) {
+        match whole && self.designs.iter().all(|d| d.status != "ok") {
             true => Err(SweepError::NoValidDesign {
                 file: self.scene.clone(),
                 points: self.designs.len(),

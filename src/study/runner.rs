@@ -241,6 +241,17 @@ pub fn run_variant<'a>(
     progress: impl Into<Progress<'a>>,
 ) -> Result<VariantRun, RunError> {
     let (design, range) = shard_design(coupling, opts)?;
+    // The records of this run are kept in memory (sweep points, calibration
+    // and prediction studies, shards): bounded before anything is drawn.
+    super::bounds::check(
+        "seatings kept in memory",
+        Some(range.len()),
+        super::bounds::MAX_KEPT_SEATINGS,
+    )
+    .map_err(|source| RunError::Design {
+        file: coupling.scene.file.clone(),
+        source,
+    })?;
     let rows = design
         .range(range.clone())
         .map_err(|source| design_error(coupling, source))?;

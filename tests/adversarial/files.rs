@@ -310,6 +310,57 @@ fn sobol_samples_beyond_memory_is_a_clear_error() {
     }
 }
 
+/// `predict --samples 1e9`, `calibrate --model-samples 1e9` and a sweep of
+/// 1e9 Monte Carlo samples per point keep their records: each is refused
+/// at the bound before anything is drawn (it grew to gigabytes before).
+#[test]
+fn studies_that_keep_their_records_are_bounded() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let s02 = root.join("scenes/02_maxwell_pins_steel.toml");
+    let cal = root.join("docs/calibration/calibration_02.json");
+    let measured = root.join("docs/calibration/measured_02.csv");
+    let (s02, cal, measured) = (
+        s02.to_str().unwrap(),
+        cal.to_str().unwrap(),
+        measured.to_str().unwrap(),
+    );
+    let bound = kinrepro::study::bounds::MAX_KEPT_SEATINGS.to_string();
+    let s01 = scene();
+    let cases: [&[&str]; 3] = [
+        &[
+            "predict",
+            s02,
+            "--calibration",
+            cal,
+            "--samples",
+            "1000000000",
+        ],
+        &[
+            "calibrate",
+            s02,
+            "--measured",
+            measured,
+            "--model-samples",
+            "1000000000",
+        ],
+        &[
+            "sweep",
+            &s01,
+            "--set",
+            "preload.force=10,20",
+            "--sampler",
+            "mc",
+            "--samples",
+            "1000000000",
+        ],
+    ];
+    for args in cases {
+        let (ok, out, err) = common::kinrepro(args);
+        assert!(!ok && !err.contains("panicked"), "{args:?}: {err}");
+        assert!((out + &err).contains(&bound), "{args:?}: {err}");
+    }
+}
+
 /// `--convergence 1e-300` asks for an infinite mesh, 0.001 for 1.8e10
 /// nodes: both refused before any FE solve, naming the option.
 #[test]

@@ -193,6 +193,24 @@ fn a_sweep_point_that_cannot_seat_has_the_verdict_of_check() {
     );
     assert_eq!(rc, 0, "{err}");
     assert!(out.contains(&format!("cannot seat: {reason}")), "{out}");
+    // A sweep in which no point seats gives no result: exit 1, as study.
+    let (rc, out, err) = run_in(
+        d,
+        &[
+            "sweep",
+            s01.to_str().unwrap(),
+            "--set",
+            "friction.mu_static=1.5",
+            "--samples",
+            "4",
+        ],
+    );
+    assert_eq!(rc, 1, "{out}");
+    assert!(out.contains(&format!("cannot seat: {reason}")), "{out}");
+    assert!(
+        err.contains("none of the 1 design points was evaluated"),
+        "{err}"
+    );
 }
 
 /// A whole study JSON of scene 01 (6 samples) in `d`, and its two shards.
