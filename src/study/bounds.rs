@@ -31,3 +31,38 @@ pub fn check(what: &'static str, count: Option<usize>, max: usize) -> Result<usi
         }),
     }
 }
+
+/// Typical cost of one seating on one core [s]: a quasi-static seating of a
+/// three-contact coupling (scene 01, about 50 us) or a dynamic one (about
+/// 0.08 s). Measured on the development machine; a run's progress line
+/// gives the measured rate.
+pub fn seating_seconds(method: &crate::solve::Method) -> f64 {
+    match method {
+        crate::solve::Method::QuasiStatic(_) => 50e-6,
+        crate::solve::Method::Dynamic(_) => 0.08,
+    }
+}
+
+/// Runs estimated above this many seconds say so before they start.
+pub const ANNOUNCE_ABOVE_S: f64 = 60.0;
+
+/// The estimate of a run of `seatings` on `threads` threads, if it is
+/// above [`ANNOUNCE_ABOVE_S`]: one line for the terminal.
+pub fn estimate_note(
+    seatings: usize,
+    method: &crate::solve::Method,
+    threads: usize,
+) -> Option<String> {
+    let per = seating_seconds(method);
+    let s = seatings as f64 * per / threads.max(1) as f64;
+    (s > ANNOUNCE_ABOVE_S).then(|| {
+        format!(
+            "note: {seatings} seatings, estimated about {:.0} min on {} thread(s) \
+             (about {:.0} us per seating on one core; Ctrl-C stops the run and removes \
+             its temporary files)",
+            s / 60.0,
+            threads.max(1),
+            per * 1e6
+        )
+    })
+}

@@ -423,3 +423,23 @@ fn tiny_inertia_is_refused_at_the_dynamic_step_bound() {
         "refused before stepping"
     );
 }
+
+/// A run estimated above a minute says so before it starts: 2e6
+/// quasi-static seatings at 50 us on one core are 100 s (announced), 1e6
+/// are 50 s (not); two threads halve the estimate.
+#[test]
+fn long_runs_announce_their_estimate() {
+    use kinrepro::solve::Method;
+    use kinrepro::study::bounds::estimate_note;
+    let qs = Method::default();
+    let note = estimate_note(2_000_000, &qs, 1).expect("100 s is announced");
+    assert!(
+        note.contains("2000000 seatings") && note.contains("2 min"),
+        "{note}"
+    );
+    assert!(estimate_note(1_000_000, &qs, 1).is_none());
+    assert!(
+        estimate_note(2_000_000, &qs, 2).is_none(),
+        "50 s on two threads"
+    );
+}

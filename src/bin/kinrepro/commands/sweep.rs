@@ -32,8 +32,13 @@ pub fn sweep(o: Checked<SweepArgs, StudyOptions>) -> Result<(), CliError> {
         .context(&file)?
         .n;
     let share = opts.shard.range(points).context("--shard")?.len();
-    set_jobs(a.jobs, share * samples)?;
-    let bar = progress(share * samples)?;
+    let seatings = share.saturating_mul(samples);
+    set_jobs(a.jobs, seatings)?;
+    let threads = rayon::current_num_threads();
+    if let Some(note) = kinrepro::study::bounds::estimate_note(seatings, &opts.method, threads) {
+        eprintln!("{note}");
+    }
+    let bar = progress(seatings)?;
     let report = run(&spec, &base, &opts, a.pareto_point.as_deref(), &|| {
         bar.inc(1)
     })?;
@@ -47,7 +52,7 @@ pub fn sweep(o: Checked<SweepArgs, StudyOptions>) -> Result<(), CliError> {
     if let Some(path) = &a.html {
         super::report::sweep_html(&report, &text, &base, path, a.force)?;
     }
-    // Exit 1 only when no design point is valid (all listed with reasons).
+    // Exit 1 only when no design point was evaluated (all listed with their status).
     Ok(report.check_any_valid()?)
 }
 
