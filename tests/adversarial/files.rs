@@ -443,3 +443,33 @@ fn long_runs_announce_their_estimate() {
         "50 s on two threads"
     );
 }
+
+/// 101 evaluation points are refused at the 101st, naming the field and the
+/// bound; 100 load.
+#[test]
+fn evaluation_points_are_bounded() {
+    let dir = tempfile::tempdir().unwrap();
+    let base = std::fs::read_to_string(scene()).unwrap();
+    let bound = kinrepro::scene::resolve::tables::MAX_EVALUATION_POINTS;
+    for n in [bound, bound + 1] {
+        let mut text = base.clone();
+        for i in 0..n {
+            let x = i as f64 * 1e-4;
+            text +=
+                &format!("\n[[evaluation_points]]\nname = \"p{i}\"\nposition = [{x}, 0.0, 0.0]\n");
+        }
+        let p = dir.path().join(format!("s{n}.toml"));
+        std::fs::write(&p, text).unwrap();
+        let (ok, _, err) = common::kinrepro(&["check", p.to_str().unwrap()]);
+        if n == bound {
+            assert!(ok, "{err}");
+        } else {
+            assert!(!ok, "{err}");
+            let field = format!("evaluation_points[{}]", bound + 1);
+            assert!(
+                err.contains(&field) && err.contains(&format!("at most {bound}")),
+                "{err}"
+            );
+        }
+    }
+}

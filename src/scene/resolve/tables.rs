@@ -86,10 +86,23 @@ pub fn study(st: &StudyFile, ctx: &ErrorContext) -> Result<StudySettings, SceneE
     })
 }
 
+/// Most `[[evaluation_points]]` of one scene: each adds six columns to the
+/// per-sample CSV and a panel to every chart and drawing; a hundred points
+/// already make a report no one reads.
+pub const MAX_EVALUATION_POINTS: usize = 100;
+
 /// `[[evaluation_points]]`, or the centre when there are none.
 pub fn evaluation_points(f: &SceneFile, fx: &Fields) -> Result<Vec<EvaluationPoint>, SceneError> {
     let mut points = Vec::new();
     for (i, e) in f.evaluation_points.iter().enumerate() {
+        if i == MAX_EVALUATION_POINTS {
+            let field = format!("evaluation_points[{}]", i + 1);
+            let reason = format!(
+                "{} evaluation points: at most {MAX_EVALUATION_POINTS} per scene (docs/output.md, Bounds)",
+                f.evaluation_points.len()
+            );
+            return Err(fx.ctx.error(Some(&e.name.span()), &field, reason));
+        }
         let name = e.name.get_ref();
         // A point's name heads its CSV columns and table rows: it must
         // name one point.
