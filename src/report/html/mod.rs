@@ -44,7 +44,7 @@ use crate::study::StudyError;
 use crate::study::VariantReport;
 use crate::study::provenance::VERSION;
 pub use inputs::{SceneInput, StudyInput, load_study, scene_input};
-pub use reference::{ReferenceRow, load_reference, parse_reference};
+pub use reference::{ReferenceRow, load_reference, parse_reference, unshown};
 
 /// The report could not be made.
 #[derive(Debug, Error)]

@@ -47,6 +47,24 @@ impl ReferenceRow {
     }
 }
 
+/// The rows that no variant and evaluation point of `variants` shows: a
+/// row whose scene or point is in none of them, or a second row (another
+/// label) for a variant and point that already has one ([`ReferenceRow::find`]
+/// shows the first).
+pub fn unshown<'a>(rows: &'a [ReferenceRow], variants: &[&VariantReport]) -> Vec<&'a ReferenceRow> {
+    let shown: Vec<&ReferenceRow> = variants
+        .iter()
+        .flat_map(|v| {
+            v.points
+                .iter()
+                .filter_map(|p| ReferenceRow::find(rows, v, &p.name))
+        })
+        .collect();
+    rows.iter()
+        .filter(|r| !shown.iter().any(|s| std::ptr::eq(*s, *r)))
+        .collect()
+}
+
 /// Parse reference text; `file` names it in errors.
 pub fn parse_reference(text: &str, file: &str) -> Result<Vec<ReferenceRow>, HtmlError> {
     let err = |line: usize, field: &str, reason: String| HtmlError::Reference {

@@ -67,6 +67,20 @@ fn write_html(
         Some(p) => load_reference(p)?,
         None => Vec::new(),
     };
+    let variants: Vec<_> = studies.iter().flat_map(|s| &s.report.variants).collect();
+    let unshown: Vec<String> = kinrepro::report::html::unshown(&references, &variants)
+        .iter()
+        .map(|r| format!("`{}` {}/{}", r.label, r.scene, r.point))
+        .collect();
+    if let (Some(p), false) = (reference, unshown.is_empty()) {
+        eprintln!(
+            "warning: {}: {} reference row(s) match no variant and evaluation point of the \
+             report, or follow another label's row for the same one, and are not shown: {}",
+            p.display(),
+            unshown.len(),
+            kinrepro::report::printable::printable(&unshown.join(", "))
+        );
+    }
     let html = HtmlReport {
         studies,
         references,
