@@ -214,7 +214,26 @@ pub struct LoadReport {
     pub points: Vec<DeflectionReport>,
     pub contacts: Vec<ContactResult>,
     pub seated_contacts: Vec<ContactResult>,
+    /// Per contact: lifted off at the end of the path (no normal force, or
+    /// below [`LIFT_OFF_RATIO`] of the seated one on a path that ended at a
+    /// lift-off); its `state` and friction ratios then mean nothing.
+    pub lifted_off: Vec<bool>,
     pub envelope: EnvelopeReport,
+}
+
+/// Per contact, whether it lifted off along `path` (see
+/// [`LoadReport::lifted_off`]). A path that ended short without an error
+/// ended at a lift-off.
+fn lifted_off(path: &LoadPath, seating: &Seating) -> Vec<bool> {
+    let lifted_path = path.factor < 1.0 && path.stopped.is_none();
+    path.contacts
+        .iter()
+        .zip(&seating.contacts)
+        .map(|(c, c0)| {
+            c.normal_force_n <= 0.0
+                || (lifted_path && c.normal_force_n < LIFT_OFF_RATIO * c0.normal_force_n)
+        })
+        .collect()
 }
 
 impl LoadReport {
@@ -247,6 +266,7 @@ impl LoadReport {
                 .collect(),
             contacts: path.contacts.clone(),
             seated_contacts: seating.contacts.clone(),
+            lifted_off: lifted_off(path, seating),
             envelope: EnvelopeReport {
                 event: envelope.event,
                 factor: envelope.factor(),
@@ -305,13 +325,9 @@ impl LoadReport {
         let mut t = Table::new(
             ">#; >F_n0 [N]:.6; >F_n [N]:.6; >|F_t| [N]:.6; >|F_t|/F_n:.6; >|F_t|/mu_sF_n:.4; >state",
         );
-        // A path that ended short without an error ended at a lift-off.
-        let lifted_path = self.factor_reached < 1.0 && self.stopped.is_none();
-        let mut lifted = 0;
-        for (i, (c, c0)) in self.contacts.iter().zip(&self.seated_contacts).enumerate() {
-            let off = c.normal_force_n <= 0.0
-                || (lifted_path && c.normal_force_n < LIFT_OFF_RATIO * c0.normal_force_n);
-            lifted += usize::from(off);
+        let lifted = self.lifted_off.iter().filter(|&&off| off).count();
+        let rows = self.contacts.iter().zip(&self.seated_contacts);
+        for (i, ((c, c0), &off)) in rows.zip(&self.lifted_off).enumerate() {
             let ratio = (!off).then(|| c.tangential_force_n / c.normal_force_n);
             let used = (c.mu_static > 0.0 && !off)
                 .then(|| c.tangential_force_n / (c.mu_static * c.normal_force_n));

@@ -159,6 +159,20 @@ fn load_lift_off_prints_no_friction_ratio() {
         assert_eq!(&cells[4..6], &["-", "-"], "{r}");
     }
     assert!(out.contains("WARNING: 6 contact(s) lifted off"), "{out}");
+    // The JSON says the same: every contact lifted off; a 1 N side load
+    // at the centre lifts none.
+    for (force, off) in [("0,0,50", true), ("1,0,0", false)] {
+        let args = ["load", &s, "--force", force, "--at", "0,0,0", "--json"];
+        let (ok, out, err) = kinrepro(&args);
+        assert!(ok, "{err}");
+        let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let flags = doc["lifted_off"].as_array().unwrap();
+        assert_eq!(flags.len(), 6, "{out}");
+        assert!(
+            flags.iter().all(|f| f.as_bool() == Some(off)),
+            "{force}: {flags:?}"
+        );
+    }
 }
 
 // ---- item 6: flags without effect ----
