@@ -121,22 +121,29 @@ pub struct GoodnessOfFit {
 /// none left: not testable.
 pub fn goodness_of_fit(obs: &Observed, fitted: &DMatrix<f64>, q: usize) -> GoodnessOfFit {
     let p = obs.dims();
-    let (stat, df, test) = match obs {
+    // `why`: the reason the statistic cannot be formed, if it cannot.
+    let (stat, df, test, why) = match obs {
         Observed::Covariance { s, n } => {
             let m = *n as f64 - 1.0;
             let pf = p as f64;
             let df = (p * (p + 1) / 2).saturating_sub(q);
             let name = "likelihood ratio vs the unrestricted covariance (Wishart), Bartlett-corrected, chi^2";
-            let stat = match (ln_det_inverse(fitted), s.clone().cholesky()) {
-                (Some((ld_f, inv)), Some(chs)) if *n > p => {
+            let (stat, why) = match (ln_det_inverse(fitted), s.clone().cholesky()) {
+                _ if *n <= p => (None, "fewer cycles than measured DOFs + 1"),
+                (None, _) => (None, "the fitted model covariance is singular"),
+                (_, None) => (
+                    None,
+                    "the measured covariance is singular (a DOF without scatter, or DOFs \
+                     that move together exactly)",
+                ),
+                (Some((ld_f, inv)), Some(chs)) => {
                     let ld_s = 2.0 * chs.l_dirty().diagonal().iter().map(|d| d.ln()).sum::<f64>();
                     let lr = m * ((inv * s).trace() - (ld_s - ld_f) - pf);
                     let rho = 1.0 - (2.0 * pf * pf + 3.0 * pf - 1.0) / (6.0 * m * (pf + 1.0));
-                    Some(rho * lr)
+                    (Some(rho * lr), "")
                 }
-                _ => None,
             };
-            (stat, df, name)
+            (stat, df, name, why)
         }
         Observed::Sigmas { sigma, cycles } => {
             let mut lr = 0.0;
@@ -146,7 +153,8 @@ pub fn goodness_of_fit(obs: &Observed, fitted: &DMatrix<f64>, q: usize) -> Goodn
                 lr += (1.0 - 1.0 / (3.0 * m)) * m * (r - r.ln() - 1.0);
             }
             let name = "likelihood ratio vs free sigma per DOF (chi-square, DOFs independent), Bartlett-corrected";
-            (lr.is_finite().then_some(lr), p.saturating_sub(q), name)
+            let why = "a measured or fitted sigma is zero";
+            (lr.is_finite().then_some(lr), p.saturating_sub(q), name, why)
         }
     };
     let p_value = match stat {
@@ -157,7 +165,7 @@ pub fn goodness_of_fit(obs: &Observed, fitted: &DMatrix<f64>, q: usize) -> Goodn
         (_, 0) => "not testable: the fitted parameters leave no shape to test \
                    (as many parameters as measured variances)"
             .to_string(),
-        (None, _) => format!("not testable: fewer cycles than measured DOFs + 1 ({test})"),
+        (None, _) => format!("not testable: {why} ({test})"),
         _ => test.to_string(),
     };
     GoodnessOfFit {

@@ -305,3 +305,34 @@ fn reference_rows_not_shown_are_named() {
         "the shown row is not listed: {warning}"
     );
 }
+
+/// A measured covariance with a DOF that did not move (singular, 50 cycles
+/// of 2 DOFs) is not testable for that reason, not for "fewer cycles"; 2
+/// cycles of 2 DOFs are too few; a regular one is tested.
+#[test]
+fn goodness_of_fit_names_why_it_cannot_test() {
+    use kinrepro::calibrate::likelihood::{Observed, goodness_of_fit};
+    use nalgebra::DMatrix;
+    let fitted = DMatrix::from_diagonal_element(2, 2, 1.0);
+    let singular = DMatrix::from_row_slice(2, 2, &[1.0, 0.0, 0.0, 0.0]);
+    let g = goodness_of_fit(
+        &Observed::Covariance {
+            s: singular.clone(),
+            n: 50,
+        },
+        &fitted,
+        1,
+    );
+    assert!(
+        g.statistic.is_none() && g.test.contains("singular"),
+        "{}",
+        g.test
+    );
+    assert!(!g.test.contains("fewer cycles"), "{}", g.test);
+    let g = goodness_of_fit(&Observed::Covariance { s: singular, n: 2 }, &fitted, 1);
+    assert!(g.test.contains("fewer cycles"), "{}", g.test);
+    let regular = DMatrix::from_diagonal_element(2, 2, 1.0);
+    let g = goodness_of_fit(&Observed::Covariance { s: regular, n: 50 }, &fitted, 1);
+    // S = F: the statistic is zero and the fit cannot be rejected.
+    assert!(g.statistic.unwrap().abs() < 1e-12 && g.ok, "{g:?}");
+}
