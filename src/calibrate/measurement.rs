@@ -24,6 +24,11 @@ pub const MAX_CYCLES: usize = 10_000_000;
 /// coupling scattering by a millimetre or ten milliradians is not seated.
 pub const MAX_SIGMA: [f64; 2] = [1e-3, 1e-2];
 
+/// Largest reading of a cycles file, translation [m] and rotation [rad]:
+/// gauge readings may carry an offset, but a seated coupling's pose lies
+/// within a metre and within pi.
+pub const MAX_READING: [f64; 2] = [1.0, std::f64::consts::PI];
+
 #[derive(Debug, Clone, PartialEq)]
 pub enum MeasuredData {
     /// One row per cycle, one value per measured DOF [SI].
@@ -136,8 +141,19 @@ impl Measurement {
                 self.check_point(line, pc, &cells[pc])?;
             }
             let mut row = Vec::with_capacity(columns.len());
-            for &(c, f) in &columns {
-                row.push(self.number(line, c, &names[c], &cells[c])? * f);
+            for (k, &(c, f)) in columns.iter().enumerate() {
+                let v = self.number(line, c, &names[c], &cells[c])? * f;
+                let max = MAX_READING[usize::from(self.dofs[k] >= 3)];
+                if v.abs() > max {
+                    let unit = ["m", "rad"][usize::from(self.dofs[k] >= 3)];
+                    let r = format!(
+                        "`{}` is {v:e} {unit}: a reading of a seated coupling lies within {max} {unit} \
+                         (check the column's unit)",
+                        cells[c]
+                    );
+                    return Err(self.err(line, c, &names[c], r));
+                }
+                row.push(v);
             }
             data.push(row);
         }

@@ -336,3 +336,24 @@ fn goodness_of_fit_names_why_it_cannot_test() {
     // S = F: the statistic is zero and the fit cannot be rejected.
     assert!(g.statistic.unwrap().abs() < 1e-12 && g.ok, "{g:?}");
 }
+
+/// A cycles file with a reading of 1e10 m (a unit slip) is refused with its
+/// line and column; the same file with sane readings loads.
+#[test]
+fn a_cycles_file_refuses_absurd_readings() {
+    use kinrepro::calibrate::measurement::Measurement;
+    let mut ok = String::from("x_nm,y_nm\n");
+    for i in 0..10 {
+        ok += &format!("{},{}\n", i as f64 * 0.7 - 3.0, 2.0 - i as f64 * 0.3);
+    }
+    Measurement::parse(&ok, "m.csv", None).unwrap();
+    let bad = ok.replacen("-3,2\n", "1e19,2\n", 1);
+    assert_ne!(bad, ok);
+    let e = Measurement::parse(&bad, "m.csv", None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("m.csv: line 2, column 1 (x_nm)") && e.contains("within 1 m"),
+        "{e}"
+    );
+}
