@@ -84,8 +84,17 @@ pub fn set_jobs(jobs: Option<usize>, samples: usize) -> Result<(), CliError> {
         .map_err(CliError::Jobs)
 }
 
-/// The progress bar (on a terminal only).
-pub fn progress(total: usize) -> Result<indicatif::ProgressBar, CliError> {
+/// The progress bar of `total` seatings by `method` (on a terminal only),
+/// after the run's estimate if it is above a minute (on stderr, terminal
+/// or not: `study::bounds::estimate_note`).
+pub fn progress(
+    total: usize,
+    method: &kinrepro::solve::Method,
+) -> Result<indicatif::ProgressBar, CliError> {
+    let threads = rayon::current_num_threads();
+    if let Some(note) = kinrepro::study::bounds::estimate_note(total, method, threads) {
+        eprintln!("{note}");
+    }
     if !std::io::IsTerminal::is_terminal(&std::io::stderr()) {
         return Ok(indicatif::ProgressBar::hidden());
     }

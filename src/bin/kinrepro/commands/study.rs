@@ -20,12 +20,7 @@ pub fn study(o: Checked<StudyArgs, StudyOptions>) -> Result<(), CliError> {
     let plan = StudyPlan::new(&couplings, opts, sobol)?;
     check_plan(&plan, &opts)?;
     set_jobs(a.jobs, plan.seatings)?;
-    let threads = rayon::current_num_threads();
-    if let Some(note) = kinrepro::study::bounds::estimate_note(plan.seatings, &opts.method, threads)
-    {
-        eprintln!("{note}");
-    }
-    let bar = progress(plan.seatings)?;
+    let bar = progress(plan.seatings, &opts.method)?;
     // A streamed study writes its per-sample CSV as the samples arrive.
     let samples_dir = a.out.as_deref().filter(|_| plan.streamed());
     if let Some(dir) = samples_dir {

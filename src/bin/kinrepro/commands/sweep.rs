@@ -34,11 +34,7 @@ pub fn sweep(o: Checked<SweepArgs, StudyOptions>) -> Result<(), CliError> {
     let share = opts.shard.range(points).context("--shard")?.len();
     let seatings = share.saturating_mul(samples);
     set_jobs(a.jobs, seatings)?;
-    let threads = rayon::current_num_threads();
-    if let Some(note) = kinrepro::study::bounds::estimate_note(seatings, &opts.method, threads) {
-        eprintln!("{note}");
-    }
-    let bar = progress(seatings)?;
+    let bar = progress(seatings, &opts.method)?;
     let report = run(&spec, &base, &opts, a.pareto_point.as_deref(), &|| {
         bar.inc(1)
     })?;
