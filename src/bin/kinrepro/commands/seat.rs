@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use kinrepro::assembly::Coupling;
+use kinrepro::contact::friction::{in_transition, transition_warning};
 use kinrepro::report::run::RunReport;
 use kinrepro::solve::dynamic::{DynamicOptions, seat_traced};
 use kinrepro::solve::{Method, Seating};
@@ -33,6 +34,10 @@ pub fn run(o: Checked<RunArgs, Method>) -> Result<(), CliError> {
         _ => seat(&mu)?,
     };
     let nominal = seat(&nominal_mu)?;
+    let weakening = seating.decay_cv.filter(|&cv| in_transition(cv));
+    if let Some(cv) = weakening {
+        eprintln!("warning: {file}: {}", transition_warning(cv));
+    }
     let report = RunReport::new(&coupling, &mu, &seating, &nominal, method.name());
     if a.json {
         print_json(&report)
