@@ -91,3 +91,86 @@ fn decay_law_in_its_transition_warns() {
         [false; 2]
     );
 }
+
+/// The bundled calibration of scene 02 with `edit` applied, written as `dir/name`.
+fn calibration(dir: &Path, name: &str, edit: &dyn Fn(&mut serde_json::Value)) -> String {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(root.join("docs/calibration/calibration_02.json")).unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    edit(&mut v);
+    std::fs::write(dir.join(name), v.to_string()).unwrap();
+    name.to_string()
+}
+
+/// A fitted parameter `name` at `estimate` in [low, high], like the spread's entry.
+fn add_parameter(v: &mut serde_json::Value, name: &str, [estimate, low, high]: [f64; 3]) {
+    let mut p = v["parameters"]["spread"].clone();
+    p["estimate"] = estimate.into();
+    p["low"] = low.into();
+    p["high"] = high.into();
+    v["parameters"][name] = p;
+}
+
+#[test]
+fn calibration_errors_name_the_calibration_file_the_field_and_the_reason() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::copy(
+        common::scene("02_maxwell_pins_steel.toml"),
+        d.join("s02.toml"),
+    )
+    .unwrap();
+    type Edit = Box<dyn Fn(&mut serde_json::Value)>;
+    // (case, edit, what the one error line must name besides the file)
+    let cases: Vec<(&str, Edit, &[&str])> = vec![
+        // A value no scene allows: mu_d above mu_s, mu_s above MU_MAX.
+        (
+            "ratio",
+            Box::new(|v| add_parameter(v, "dynamic_ratio", [1.5, 1.4, 1.6])),
+            &["`parameters.dynamic_ratio.estimate`", "(0, 1]"],
+        ),
+        (
+            "mu",
+            Box::new(|v| add_parameter(v, "mu_static", [3.0, 2.9, 3.1])),
+            &["`parameters.mu_static.estimate`", "[0, 2]"],
+        ),
+        // A region point whose spread leaves mu_s in [0, 2] with the scene's mu_static 0.5.
+        (
+            "region",
+            Box::new(|v| v["region"][1]["spread"] = 0.9.into()),
+            &["`region[1]`", "s02.toml", "spread 0.9", "mu_static 0.5"],
+        ),
+        // Estimates that make the scene's mu_s negative (spread > mu_static).
+        (
+            "estimate",
+            Box::new(|v| add_parameter(v, "mu_static", [0.05, 0.04, 0.06])),
+            &["`parameters` estimates", "s02.toml", "mu_static 0.05"],
+        ),
+        // Estimates at which the scene cannot seat (mu_static 1.9).
+        (
+            "cannot seat",
+            Box::new(|v| add_parameter(v, "mu_static", [1.9, 1.85, 1.95])),
+            &["`parameters` estimates", "s02.toml", "cannot seat"],
+        ),
+    ];
+    for (what, edit, names) in cases {
+        let cal = calibration(d, &format!("{}.json", what.replace(' ', "_")), &edit);
+        let (rc, out, err) = run_in(
+            d,
+            &[
+                "predict",
+                "s02.toml",
+                "--calibration",
+                &cal,
+                "--samples",
+                "100",
+            ],
+        );
+        assert_eq!(rc, 1, "{what}: {out}");
+        assert_eq!(err.lines().count(), 1, "{what}: {err}");
+        assert!(err.starts_with(&format!("error: {cal}: ")), "{what}: {err}");
+        for n in names {
+            assert!(err.contains(n), "{what}: {n}: {err}");
+        }
+    }
+}
