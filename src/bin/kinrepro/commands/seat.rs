@@ -47,7 +47,8 @@ pub fn run(o: Checked<RunArgs, Method>) -> Result<(), CliError> {
 }
 
 /// A dynamic seating with its trace written to `path` (whole or not at
-/// all; kept when the seating fails, and the error says so).
+/// all; kept when the seating fails, and the error says so, but not when
+/// a signal stopped it).
 fn traced(
     coupling: &Coupling,
     mu: &[f64],
@@ -71,7 +72,9 @@ fn traced(
         return Err(CliError::file(&name, "writing the trace failed: ", e));
     }
     w.finish().map_err(|e| CliError::file(&name, "", e))?;
-    trace_file.commit()?;
+    // Renamed into place under the signal lock; not at all once a signal
+    // asked to stop (the partial trace of a cancelled seating is dropped).
+    crate::signals::commit(vec![trace_file])?;
     result.map_err(|e| CliError::Traced {
         trace: name.clone(),
         source: Box::new(CliError::from(e).in_context(file)),
