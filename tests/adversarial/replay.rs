@@ -270,3 +270,34 @@ fn a_second_signal_exits_at_once_and_still_removes_the_temporary() {
     }
     assert!(hard > 0, "the second signal never stopped the run itself");
 }
+
+#[test]
+fn overlapping_balls_are_refused() {
+    // Balls 120 deg apart on an 80 mm circle are 80 sqrt(3)/2 = 69.28 mm
+    // apart: 79 mm balls (the case) and 69.3 mm ones overlap,
+    // 69.2 mm ones do not.
+    let dir = tempfile::tempdir().unwrap();
+    let limit = 0.080 * 3f64.sqrt() / 2.0;
+    for (d, overlap) in [
+        (0.079, true),
+        (limit * 1.0005, true),
+        (limit * 0.9995, false),
+    ] {
+        let text = std::fs::read_to_string(common::scene("04_maxwell_balls_steel.toml")).unwrap();
+        let from = "ball_diameter = 0.008 ";
+        assert!(text.contains(from));
+        let p = dir.path().join("balls.toml");
+        std::fs::write(&p, text.replace(from, &format!("ball_diameter = {d} "))).unwrap();
+        let (rc, _, err) = run_in(dir.path(), &["check", "balls.toml"]);
+        if overlap {
+            assert_eq!(rc, 1, "{d}: {err}");
+            assert!(
+                err.contains("balls.toml") && err.contains("coupling.ball_diameter"),
+                "{err}"
+            );
+            assert!(err.contains("the balls overlap"), "{err}");
+        } else {
+            assert!(!err.contains("overlap"), "{d}: {err}");
+        }
+    }
+}
