@@ -301,3 +301,76 @@ fn overlapping_balls_are_refused() {
         }
     }
 }
+
+/// `report --out` and `calibrate --out` into /dev/null (or a link to it)
+/// with --force write through and leave the device; without --force they
+/// refuse, naming it. A link to a regular file is replaced at its target.
+#[test]
+fn report_and_calibrate_outputs_never_replace_a_device() {
+    use std::os::unix::fs::FileTypeExt;
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::copy(
+        common::scene("02_maxwell_pins_steel.toml"),
+        d.join("s.toml"),
+    )
+    .unwrap();
+    let (rc, json, err) = run_in(d, &["study", "s.toml", "--format", "json"]);
+    assert_eq!(rc, 0, "{err}");
+    std::fs::write(d.join("s.json"), json).unwrap();
+    std::os::unix::fs::symlink("/dev/null", d.join("null_link")).unwrap();
+    std::fs::write(d.join("real.html"), "old").unwrap();
+    std::os::unix::fs::symlink("real.html", d.join("html_link")).unwrap();
+    let measured = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/calibration/measured_02.csv");
+    let m = measured.to_str().unwrap();
+    fn report(out: &str) -> Vec<&str> {
+        vec!["report", "s.json", "--out", out]
+    }
+    let calibrate = |out: &'static str| {
+        vec![
+            "calibrate",
+            "s.toml",
+            "--measured",
+            m,
+            "--model-samples",
+            "100",
+            "--out",
+            out,
+        ]
+    };
+    for out in ["/dev/null", "null_link"] {
+        for mut args in [report(out), calibrate(out)] {
+            let (rc, _, err) = run_in(d, &args);
+            assert_eq!(rc, 1, "{args:?}: {err}");
+            assert!(
+                err.contains(out) && err.contains("--force"),
+                "{args:?}: {err}"
+            );
+            args.push("--force");
+            let (rc, _, err) = run_in(d, &args);
+            assert_eq!(rc, 0, "{args:?}: {err}");
+            let t = std::fs::symlink_metadata("/dev/null").unwrap().file_type();
+            assert!(t.is_char_device(), "{args:?} replaced /dev/null");
+        }
+    }
+    assert!(
+        std::fs::symlink_metadata(d.join("null_link"))
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    let (rc, _, err) = run_in(d, &["report", "s.json", "--out", "html_link", "--force"]);
+    assert_eq!(rc, 0, "{err}");
+    assert!(
+        std::fs::symlink_metadata(d.join("html_link"))
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert!(
+        std::fs::read_to_string(d.join("real.html"))
+            .unwrap()
+            .contains("<html")
+    );
+    assert!(hidden(d).is_empty(), "{:?}", hidden(d));
+}
