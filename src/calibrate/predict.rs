@@ -91,18 +91,7 @@ pub fn predict(
     let points = std::iter::once((None, &estimate))
         .chain(region.iter().enumerate().map(|(i, c)| (Some(i), c)));
     for (k, c) in points {
-        let f = &c.scene.friction;
-        if !admissible(f.spread, f.mu_static) {
-            return Err(applied(
-                k,
-                format!(
-                    "spread {} with mu_static {}: mu_s = mu_static +- spread would leave [0, {}]",
-                    f.spread,
-                    f.mu_static,
-                    crate::scene::resolve::MU_MAX
-                ),
-            ));
-        }
+        inadmissible(c).map_or(Ok(()), |r| Err(applied(k, r)))?;
     }
     let opts = model_options(samples, seed, method);
     let report = |c: &Coupling, k: Option<usize>| -> Result<VariantReport, CalibrateError> {
@@ -149,6 +138,20 @@ pub fn predict(
     let measured =
         (design_hash(coupling) == cal.scene_content).then(|| (cal.point.clone(), cal.dofs.clone()));
     Ok(Prediction { variant, measured })
+}
+
+/// Why the friction of `c` (a scene at calibrated values) is no scene's:
+/// mu_s = mu_static +- spread leaves [0, MU_MAX].
+fn inadmissible(c: &Coupling) -> Option<String> {
+    let f = &c.scene.friction;
+    (!admissible(f.spread, f.mu_static)).then(|| {
+        format!(
+            "spread {} with mu_static {}: mu_s = mu_static +- spread would leave [0, {}]",
+            f.spread,
+            f.mu_static,
+            crate::scene::resolve::MU_MAX
+        )
+    })
 }
 
 /// The prediction interval per DOF: sigma `mid` at the estimate with its
