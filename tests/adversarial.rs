@@ -12,5 +12,7 @@ mod files;
 mod inputs;
 #[path = "adversarial/messages.rs"]
 mod messages;
+#[path = "adversarial/replay.rs"]
+mod replay;
 #[path = "adversarial/verdicts.rs"]
 mod verdicts;

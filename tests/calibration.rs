@@ -184,7 +184,15 @@ fn transfer_to_scenes_01_and_04_contains_direct_studies() {
     // The direct studies: at the true spread.
     assert_transfer(&cal, |c| with_spread(c, TRUE_SPREAD));
     // The calibrated design itself carries its measured values.
-    let p = predict(&c02, &cal, 200, MODEL_SEED, Method::default()).unwrap();
+    let p = predict(
+        &c02,
+        &cal,
+        "calibration.json",
+        200,
+        MODEL_SEED,
+        Method::default(),
+    )
+    .unwrap();
     let (point, dofs) = p.measured.expect("scene 02 is the calibrated design");
     assert_eq!(point, "centre");
     assert_eq!(dofs.len(), 6);
@@ -224,7 +232,15 @@ fn assert_transfer(cal: &kinrepro::calibrate::Calibration, truth: impl Fn(&Coupl
         "04_maxwell_balls_steel.toml",
     ] {
         let c = common::load(name);
-        let p = predict(&c, cal, MODEL_SAMPLES, MODEL_SEED, Method::default()).unwrap();
+        let p = predict(
+            &c,
+            cal,
+            "calibration.json",
+            MODEL_SAMPLES,
+            MODEL_SEED,
+            Method::default(),
+        )
+        .unwrap();
         assert!(p.measured.is_none(), "{name} is not the calibrated design");
         assert_direct_inside(name, &p, &truth(&c));
     }

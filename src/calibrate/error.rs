@@ -58,6 +58,15 @@ pub enum CalibrateError {
     /// A bad calibration file (`predict --calibration`).
     #[error("{file}: not a kinrepro calibration file: {reason}")]
     Calibration { file: String, reason: String },
+    /// A calibrated point (estimates or a region point) that does not apply
+    /// to the predicted scene: names the calibration file and the point.
+    #[error("{calibration}: {at} applied to {scene}: {reason}")]
+    Applied {
+        calibration: String,
+        at: String,
+        scene: String,
+        reason: String,
+    },
     /// A coupling that cannot seat ([`crate::study::verdict::cannot_seat`]):
     /// its scatter is not a prediction.
     #[error("{file}: cannot seat: {reason}")]

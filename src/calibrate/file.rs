@@ -275,6 +275,10 @@ fn check_parameter(name: &str, p: &Parameter) -> Result<(), String> {
             "{at}: estimate {e} with interval [{lo}, {hi}]: need 0 <= low <= estimate <= high"
         ));
     }
+    for (field, v) in [("estimate", e), ("low", lo), ("high", hi)] {
+        super::params::physical(name, v)
+            .map_err(|r| format!("`parameters.{name}.{field}`: {r}"))?;
+    }
     if name == "spread" && e <= 0.0 {
         return Err(format!("{at}: estimate {e}: a calibrated spread is > 0"));
     }
@@ -328,6 +332,10 @@ impl Calibration {
                 return Err(bad(format!(
                     "`region[{i}]`: `{k}` = {v} (need a fitted parameter with a finite value >= 0)"
                 )));
+            }
+            for (k, v) in point {
+                super::params::physical(k, *v)
+                    .map_err(|r| bad(format!("`region[{i}].{k}`: {r}")))?;
             }
         }
         Ok(c)

@@ -111,6 +111,28 @@ impl Param {
     }
 }
 
+/// Whether `v` is a value parameter `name` can have in any scene (the
+/// scene's own rules, `scene::resolve::tables`): a spread and mu_static
+/// within [0, MU_MAX] (spread <= mu_static and mu_static + spread <= MU_MAX
+/// give spread <= MU_MAX / 2), a dynamic ratio in (0, 1] (mu_d never
+/// exceeds mu_s), a finite support compliance >= 0. `Err` says the range.
+pub fn physical(name: &str, v: f64) -> Result<(), String> {
+    let (ok, range) = match Param::from_name(name) {
+        Some(Param::Spread) => (
+            (0.0..=MU_MAX / 2.0).contains(&v),
+            format!("[0, {}]", MU_MAX / 2.0),
+        ),
+        Some(Param::MuStatic) => ((0.0..=MU_MAX).contains(&v), format!("[0, {MU_MAX}]")),
+        Some(Param::DynamicRatio) => (v > 0.0 && v <= 1.0, "(0, 1]".into()),
+        Some(Param::SupportCompliance) | None => (v.is_finite() && v >= 0.0, "[0, inf) m/N".into()),
+    };
+    if ok {
+        Ok(())
+    } else {
+        Err(format!("{v} is outside {range}"))
+    }
+}
+
 /// Whether spread `s` and mu_static `mu` keep every mu_s in [0, MU_MAX].
 pub fn admissible(s: f64, mu: f64) -> bool {
     s >= 0.0 && s <= mu && mu + s <= MU_MAX

@@ -59,10 +59,13 @@ pub fn with_parameters(coupling: &Coupling, values: &BTreeMap<String, f64>) -> C
     c
 }
 
-/// Predict sigma of every evaluation point of `coupling` at the parameters of `cal`.
+/// Predict sigma of every evaluation point of `coupling` at the parameters
+/// of `cal`, read from `cal_file` (errors at a calibrated point name that
+/// file and the point: `parameters` estimates or `region[i]`).
 pub fn predict(
     coupling: &Coupling,
     cal: &Calibration,
+    cal_file: &str,
     samples: usize,
     seed: u64,
     method: Method,
@@ -74,41 +77,41 @@ pub fn predict(
         .iter()
         .map(|v| with_parameters(&estimate, v))
         .collect();
-    for c in std::iter::once(&estimate).chain(&region) {
-        let f = &c.scene.friction;
-        if !admissible(f.spread, f.mu_static) {
-            return Err(CalibrateError::Model {
-                file,
-                reason: format!(
-                    "the calibrated region reaches spread {:.4} with mu_static {}: mu_s would leave [0, {}]",
-                    f.spread,
-                    f.mu_static,
-                    crate::scene::resolve::MU_MAX
-                ),
-            });
-        }
+    let at = |k: Option<usize>| match k {
+        None => "the `parameters` estimates".to_string(),
+        Some(i) if cal.region.is_empty() => format!("the `parameters.spread` interval end {i}"),
+        Some(i) => format!("`region[{i}]`"),
+    };
+    let applied = |k: Option<usize>, reason: String| CalibrateError::Applied {
+        calibration: cal_file.to_string(),
+        at: at(k),
+        scene: file.clone(),
+        reason,
+    };
+    let points = std::iter::once((None, &estimate))
+        .chain(region.iter().enumerate().map(|(i, c)| (Some(i), c)));
+    for (k, c) in points {
+        inadmissible(c).map_or(Ok(()), |r| Err(applied(k, r)))?;
     }
     let opts = model_options(samples, seed, method);
-    let report = |c: &Coupling| -> Result<VariantReport, CalibrateError> {
-        let run = run_variant(c, &opts, &|| {})?;
+    let report = |c: &Coupling, k: Option<usize>| -> Result<VariantReport, CalibrateError> {
+        let run = run_variant(c, &opts, &|| {}).map_err(|e| applied(k, e.to_string()))?;
         if let Some(reason) = run.cannot_seat {
-            return Err(CalibrateError::CannotSeat {
-                file: file.clone(),
-                reason: format!("{reason} (study at spread {})", c.scene.friction.spread),
-            });
+            return Err(applied(k, format!("cannot seat: {reason}")));
         }
         VariantReport::new(c, run, &opts).map_err(|source| CalibrateError::Study {
             file: file.clone(),
             source,
         })
     };
-    let mut variant = report(&estimate)?;
+    let mut variant = report(&estimate, None)?;
     // A point at zero spread has no scatter (sigma 0): no study needed.
     let others: Vec<Option<Vec<PointStats>>> = region
         .iter()
-        .map(|c| {
+        .enumerate()
+        .map(|(i, c)| {
             (c.scene.friction.spread > 0.0)
-                .then(|| report(c).map(|v| v.points))
+                .then(|| report(c, Some(i)).map(|v| v.points))
                 .transpose()
         })
         .collect::<Result<_, _>>()?;
@@ -135,6 +138,20 @@ pub fn predict(
     let measured =
         (design_hash(coupling) == cal.scene_content).then(|| (cal.point.clone(), cal.dofs.clone()));
     Ok(Prediction { variant, measured })
+}
+
+/// Why the friction of `c` (a scene at calibrated values) is no scene's:
+/// mu_s = mu_static +- spread leaves [0, MU_MAX].
+fn inadmissible(c: &Coupling) -> Option<String> {
+    let f = &c.scene.friction;
+    (!admissible(f.spread, f.mu_static)).then(|| {
+        format!(
+            "spread {} with mu_static {}: mu_s = mu_static +- spread would leave [0, {}]",
+            f.spread,
+            f.mu_static,
+            crate::scene::resolve::MU_MAX
+        )
+    })
 }
 
 /// The prediction interval per DOF: sigma `mid` at the estimate with its

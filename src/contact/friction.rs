@@ -78,6 +78,41 @@ pub fn decay_coefficient(mu_s: f64, mu_d: f64, c: f64, v: f64) -> (f64, f64) {
     (mu_d + (mu_s - mu_d) * s, -c * (mu_s - mu_d) * s)
 }
 
+/// The decay law's transition, c v_slip "of order 1" (docs/model.md,
+/// "Velocity weakening"): here taken as within two decades of 1. v_slip is
+/// a seating's characteristic slip speed, a contact's slip path over the
+/// duration of the preload ramp. Below the band mu stays within 1 % of
+/// (mu_s - mu_d) of mu_s (1 - exp(-0.01)); above it the slowest slip of a
+/// seating, about a decade below its mean, still has exp(-c v) below
+/// exp(-10) = 5e-5, i.e. mu = mu_d. Inside, the coefficient falls as the
+/// slip speeds up and sliding is unstable: measured with the dynamic solver
+/// on scene 01, c v = 1.4 changes a sample's pose by a factor 2 between 30
+/// and 120 steps per period, c v = 15 by up to 10 %, c v = 160 by 0.1 %.
+pub const TRANSITION: [f64; 2] = [1e-2, 1e2];
+
+/// Whether `cv` = c v_slip lies in [`TRANSITION`] (results not converged).
+pub fn in_transition(cv: f64) -> bool {
+    (TRANSITION[0]..=TRANSITION[1]).contains(&cv)
+}
+
+/// The warning for a seating whose c v_slip `cv` lies in [`TRANSITION`].
+pub fn transition_warning(cv: f64) -> String {
+    format!(
+        "decay law in its transition: c v_slip = {cv:.3e} lies in [{}, {}] (decay_coefficient \
+         times a contact's slip over the ramp duration): the sliding is velocity-weakening and \
+         the result is not converged (docs/model.md, \"Velocity weakening\")",
+        TRANSITION[0], TRANSITION[1]
+    )
+}
+
+/// Of several c v_slip values (one per contact that slid), the one deepest
+/// inside [`TRANSITION`], nearest 1 on a log scale; `None` if none is positive.
+pub fn deepest(cv: impl IntoIterator<Item = f64>) -> Option<f64> {
+    cv.into_iter()
+        .filter(|&x| x > 0.0)
+        .min_by(|a, b| a.ln().abs().total_cmp(&b.ln().abs()))
+}
+
 /// The sliding coefficient of one return-mapping increment and its partial
 /// derivatives with respect to the trial force magnitude T, the normal
 /// force F_n and the tangential stiffness k (each the others held fixed).

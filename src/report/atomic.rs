@@ -14,6 +14,8 @@ use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 use tempfile::NamedTempFile;
+
+use super::temporaries::Registered;
 use thiserror::Error;
 
 /// A file could not be written; names the file and the reason.
@@ -120,8 +122,9 @@ fn follow_links(target: &Path) -> Result<PathBuf, WriteError> {
 
 /// The open output: a temporary file to rename, or the special file itself.
 enum Sink {
-    /// The temporary and the regular file it is renamed over.
-    Temp(BufWriter<NamedTempFile>, PathBuf),
+    /// The temporary, the regular file it is renamed over, and the
+    /// temporary's entry in the registry of the hard exit.
+    Temp(BufWriter<NamedTempFile>, PathBuf, Registered),
     Through(BufWriter<File>),
 }
 
@@ -137,7 +140,9 @@ impl AtomicFile {
     pub fn create(target: &Path, force: bool) -> Result<Self, WriteError> {
         let sink = match destination(target, force)? {
             Destination::Replace(real) => {
-                Sink::Temp(BufWriter::new(temp_next_to(&real, "")?), real)
+                let tmp = temp_next_to(&real, "")?;
+                let reg = Registered::new(tmp.path());
+                Sink::Temp(BufWriter::new(tmp), real, reg)
             }
             Destination::Through => {
                 let f = std::fs::OpenOptions::new()
@@ -167,9 +172,9 @@ impl AtomicFile {
     /// through a special file).
     pub fn commit(self) -> Result<(), WriteError> {
         let target = self.target;
-        let (w, real) = match self.sink {
+        let (w, real, _reg) = match self.sink {
             Sink::Through(mut w) => return w.flush().map_err(|e| WriteError::io(&target, e)),
-            Sink::Temp(w, real) => (w, real),
+            Sink::Temp(w, real, reg) => (w, real, reg),
         };
         let tmp = w
             .into_inner()
@@ -199,14 +204,14 @@ pub fn commit_all(files: Vec<AtomicFile>) -> Result<Vec<String>, WriteError> {
 impl Write for AtomicFile {
     fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
         match &mut self.sink {
-            Sink::Temp(w, _) => w.write(buf),
+            Sink::Temp(w, ..) => w.write(buf),
             Sink::Through(w) => w.write(buf),
         }
     }
 
     fn flush(&mut self) -> std::io::Result<()> {
         match &mut self.sink {
-            Sink::Temp(w, _) => w.flush(),
+            Sink::Temp(w, ..) => w.flush(),
             Sink::Through(w) => w.flush(),
         }
     }

@@ -26,5 +26,6 @@ pub mod sweep_plot;
 pub mod sweep_status;
 pub mod sweep_text;
 pub mod table;
+pub mod temporaries;
 pub mod trace;
 pub mod validate_hertz;

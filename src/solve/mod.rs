@@ -217,6 +217,10 @@ pub struct Seating {
     pub newton_iterations: usize,
     /// Which path of the solver produced it.
     pub path: SeatingPath,
+    /// The decay law's c v_slip in the dynamic solver (`contact::friction::
+    /// TRANSITION`): of the contacts that slid, the value deepest inside the
+    /// transition; `None` for the switch law, no slip or the quasi-static solver.
+    pub decay_cv: Option<f64>,
 }
 
 /// The pose-level result of a seating, without the per-contact report:
@@ -231,6 +235,10 @@ pub struct SeatedPose {
     pub newton_iterations: usize,
     /// Which path of the solver produced it.
     pub path: SeatingPath,
+    /// The decay law's c v_slip in the dynamic solver (`contact::friction::
+    /// TRANSITION`): of the contacts that slid, the value deepest inside the
+    /// transition; `None` for the switch law, no slip or the quasi-static solver.
+    pub decay_cv: Option<f64>,
 }
 
 impl Seating {
@@ -241,6 +249,7 @@ impl Seating {
             increments: self.increments,
             newton_iterations: self.newton_iterations,
             path: self.path,
+            decay_cv: self.decay_cv,
         }
     }
 }

@@ -65,6 +65,9 @@ pub struct VariantReport {
     /// Sample seatings per solver path (absent from `merge` output).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seating_paths: Option<super::paths::SeatingPaths>,
+    /// Sample seatings of the decay law in its transition (stderr only).
+    #[serde(skip)]
+    pub unconverged: Option<super::paths::Unconverged>,
     pub scene: String,
     pub name: String,
     /// Samples in the whole design.
@@ -186,6 +189,7 @@ impl VariantReport {
             streamed: false,
             cannot_seat: run.cannot_seat,
             seating_paths: None,
+            unconverged: None,
             scene: coupling.scene.file.clone(),
             name: coupling.scene.name.clone(),
             samples: run.design.n,
@@ -280,6 +284,25 @@ impl StudyReport {
         self.variants
             .iter()
             .filter_map(|v| v.cannot_seat.as_ref().map(|r| format!("{}: {r}", v.scene)))
+            .collect()
+    }
+}
+
+impl StudyReport {
+    /// One warning per variant with seatings in the decay law's transition.
+    pub fn unconverged(&self) -> Vec<String> {
+        self.variants
+            .iter()
+            .filter_map(|v| {
+                v.unconverged.map(|u| {
+                    format!(
+                        "{}: {} seatings: {}",
+                        v.scene,
+                        u.seatings,
+                        crate::contact::friction::transition_warning(u.max_cv)
+                    )
+                })
+            })
             .collect()
     }
 }

@@ -82,9 +82,9 @@ impl<'a> Progress<'a> {
         }
     }
 
-    fn record(&self, path: SeatingPath) {
+    fn record(&self, path: SeatingPath, decay_cv: Option<f64>) {
         if let Some(t) = self.tally {
-            t.record(path);
+            t.record(path, decay_cv);
         }
     }
 }
@@ -377,7 +377,7 @@ pub fn evaluate_rows<'a>(
                     }
                     s => s.map_err(|e| seat_err(index, &sample.mu, e))?,
                 };
-                progress.record(s.path);
+                progress.record(s.path, s.decay_cv);
                 outputs.extend(relative(s.pose));
             }
             if let Some(t) = &sample.tolerances {
@@ -390,7 +390,7 @@ pub fn evaluate_rows<'a>(
                     .method
                     .seat(&perturbed, &nominal_mu, &StartPose::touching())
                     .map_err(|e| seat_err(index, &nominal_mu, e))?;
-                progress.record(s.path);
+                progress.record(s.path, s.decay_cv);
                 outputs.extend(relative(s.pose));
             }
             (progress.tick)();

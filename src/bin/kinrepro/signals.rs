@@ -3,7 +3,9 @@
 //! by their destructors, and the process exits 128 + the signal (130, 143).
 //! A command that does not check the request (a single long FE solve) is
 //! stopped after [`GRACE`], as is any run at a second signal, but never in
-//! the middle of [`commit`]: a folder of outputs is renamed whole or not at all.
+//! the middle of [`commit`]: a folder of outputs is renamed whole or not at
+//! all. That exit does not unwind: it deletes the registered temporaries
+//! ([`kinrepro::report::temporaries`]) first.
 
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicI32, Ordering};
@@ -46,9 +48,11 @@ pub fn install() -> Result<(), CliError> {
     Ok(())
 }
 
-/// Exit now with 128 + `sig` (after any commit in progress).
+/// Exit now with 128 + `sig` (after any commit in progress), deleting the
+/// temporaries no destructor will delete.
 fn stop(sig: i32) -> ! {
     let _hold = COMMITTING.lock();
+    kinrepro::report::temporaries::remove_all();
     eprintln!("kinrepro: {}: stopped", name(sig));
     std::process::exit(128 + sig)
 }

@@ -69,11 +69,18 @@ pub(super) fn check_coupling(
             format!("{opening} must lie strictly between 0 and 180 degrees"),
         ));
     }
-    if r_ball >= diameter / 2.0 {
+    // Balls 120 deg apart on the circle of radius D/2 are D sqrt(3)/2 apart
+    // (centre to centre); two touch when their diameter reaches that.
+    let spacing = diameter * 3f64.sqrt() / 2.0;
+    if 2.0 * r_ball >= spacing {
         return Err(ctx.error(
             Some(&c.ball_diameter.span()),
             "coupling.ball_diameter",
-            "the balls overlap: ball diameter must be smaller than the coupling diameter",
+            format!(
+                "{} m: the balls overlap: it must be smaller than {spacing:.6} m, the distance \
+                 between ball centres 120 deg apart on the {diameter} m circle (diameter x sqrt(3)/2)",
+                2.0 * r_ball
+            ),
         ));
     }
     Ok(Dimensions {

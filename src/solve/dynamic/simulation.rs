@@ -11,6 +11,7 @@ use super::options::DynamicOptions;
 use super::trace::{Energy, TraceContact, TraceSample, TraceState};
 use super::world::{self, dvec, from_rapier, nvec};
 use crate::assembly::{BodyPose, Coupling};
+use crate::contact::friction::{self, FrictionLaw};
 use crate::contact::{Friction, SlipState, TangentialState};
 use crate::solve::preload_forces::{Applied, applied};
 use crate::solve::{SolveError, frictions};
@@ -38,6 +39,8 @@ pub struct Simulation<'a> {
     pub(super) steps: usize,
     committed_pose: BodyPose,
     states: Vec<TangentialState>,
+    /// Slip path of each contact so far [m] (committed slip velocity times dt).
+    slip_path: Vec<f64>,
     /// Pose x_n at which the last step evaluated its forces, and those forces.
     pub(super) pose: BodyPose,
     pub(super) contacts: Vec<StepContact>,
@@ -98,6 +101,7 @@ impl<'a> Simulation<'a> {
             steps: 0,
             committed_pose: start,
             states,
+            slip_path: vec![0.0; n],
             pose: start,
             contacts: Vec::new(),
             energy: Energy {
@@ -298,10 +302,36 @@ impl<'a> Simulation<'a> {
         for a in preload {
             rb.add_force_at_point(dvec(&a.force), dvec(&a.point), false);
         }
-        for (st, sc) in self.states.iter_mut().zip(contacts) {
+        for ((st, sc), path) in self
+            .states
+            .iter_mut()
+            .zip(contacts)
+            .zip(&mut self.slip_path)
+        {
             *st = sc.eval.tangential.state.clone();
+            *path += st.slip_velocity * self.dt;
         }
         self.committed_pose = pose;
+    }
+
+    /// The decay law's c v_slip so far ([`crate::solve::Seating::decay_cv`]):
+    /// v_slip of a contact is its slip path over the ramp duration (over
+    /// the time so far for a step load).
+    pub fn decay_cv(&self) -> Option<f64> {
+        let time = if self.ramp_time > 0.0 {
+            self.ramp_time
+        } else {
+            self.time_of_state()
+        };
+        let cv = self
+            .friction
+            .iter()
+            .zip(&self.slip_path)
+            .filter_map(|(f, path)| match f.law {
+                FrictionLaw::Decay { coefficient } => Some(coefficient * path / time),
+                FrictionLaw::Switch => None,
+            });
+        friction::deepest(cv)
     }
 
     /// Whether the state of the last step is at rest (module docs).

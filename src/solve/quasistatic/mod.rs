@@ -129,6 +129,7 @@ impl Workspace {
             increments: seated.increments,
             newton_iterations: seated.newton_iterations,
             path: seated.path,
+            decay_cv: seated.decay_cv,
         }
     }
 }
@@ -156,6 +157,7 @@ pub fn seat_in(
         } else {
             SeatingPath::Uniform
         },
+        decay_cv: None,
     })
 }
 

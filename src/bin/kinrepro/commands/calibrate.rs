@@ -54,7 +54,7 @@ pub fn predict(o: PredictArgs) -> Result<(), CliError> {
     set_jobs(o.jobs, o.samples)?;
     let predictions = couplings
         .iter()
-        .map(|c| predict_one(c, &cal, o.samples, o.seed, Method::default()))
+        .map(|c| predict_one(c, &cal, &file, o.samples, o.seed, Method::default()))
         .collect::<Result<Vec<_>, _>>()?;
     let report = PredictionReport {
         calibration_file: file,

@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use kinrepro::assembly::Coupling;
+use kinrepro::contact::friction::{in_transition, transition_warning};
 use kinrepro::report::run::RunReport;
 use kinrepro::solve::dynamic::{DynamicOptions, seat_traced};
 use kinrepro::solve::{Method, Seating};
@@ -33,6 +34,10 @@ pub fn run(o: Checked<RunArgs, Method>) -> Result<(), CliError> {
         _ => seat(&mu)?,
     };
     let nominal = seat(&nominal_mu)?;
+    let weakening = seating.decay_cv.filter(|&cv| in_transition(cv));
+    if let Some(cv) = weakening {
+        eprintln!("warning: {file}: {}", transition_warning(cv));
+    }
     let report = RunReport::new(&coupling, &mu, &seating, &nominal, method.name());
     if a.json {
         print_json(&report)
@@ -42,7 +47,8 @@ pub fn run(o: Checked<RunArgs, Method>) -> Result<(), CliError> {
 }
 
 /// A dynamic seating with its trace written to `path` (whole or not at
-/// all; kept when the seating fails, and the error says so).
+/// all; kept when the seating fails, and the error says so, but not when
+/// a signal stopped it).
 fn traced(
     coupling: &Coupling,
     mu: &[f64],
@@ -66,7 +72,9 @@ fn traced(
         return Err(CliError::file(&name, "writing the trace failed: ", e));
     }
     w.finish().map_err(|e| CliError::file(&name, "", e))?;
-    trace_file.commit()?;
+    // Renamed into place under the signal lock; not at all once a signal
+    // asked to stop (the partial trace of a cancelled seating is dropped).
+    crate::signals::commit(vec![trace_file])?;
     result.map_err(|e| CliError::Traced {
         trace: name.clone(),
         source: Box::new(CliError::from(e).in_context(file)),

@@ -35,6 +35,9 @@ pub fn study(o: Checked<StudyArgs, StudyOptions>) -> Result<(), CliError> {
     bar.finish_and_clear();
     // Results first: a failed file write must not lose them.
     print_study(&report, a.format)?;
+    for w in report.unconverged() {
+        eprintln!("warning: {w}");
+    }
     // Every file of --out under its temporary name, then all renamed at once.
     let mut staged = pending_csv
         .into_iter()
