@@ -17,3 +17,9 @@ pub fn request() {
 pub fn requested() -> bool {
     REQUESTED.load(Ordering::Relaxed)
 }
+
+/// Withdraw the request once the runs it stopped have ended: a host that
+/// outlives its runs (the Python package, after Ctrl-C) can run again.
+pub fn withdraw() {
+    REQUESTED.store(false, Ordering::SeqCst);
+}

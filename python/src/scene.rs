@@ -58,6 +58,16 @@ pub fn coupling(text: &str, file: &str) -> Result<Coupling, String> {
     })
 }
 
+/// One `Scene` or a list of them (`what`: the argument's name).
+pub fn scenes(arg: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Scene>> {
+    match arg.extract::<Scene>() {
+        Ok(s) => Ok(vec![s]),
+        Err(_) => arg
+            .extract()
+            .map_err(|_| err(format!("{what}: give a kinrepro.Scene or a list of them"))),
+    }
+}
+
 #[pymethods]
 impl Scene {
     /// Read and validate a scene file (TOML).
@@ -235,13 +245,13 @@ fn mu_of(c: &Coupling, mu: Option<Vec<f64>>) -> Vec<f64> {
 /// Seat the coupling once (`kinrepro run`): `mu` the static friction
 /// coefficient of each contact (None: the scene's mu_static everywhere).
 #[pyfunction]
-#[pyo3(signature = (scene, mu = None, solver = "quasi-static", increments = 20))]
+#[pyo3(signature = (scene, mu = None, solver = "quasi-static", increments = None))]
 pub fn seat(
     py: Python<'_>,
     scene: &Scene,
     mu: Option<Vec<f64>>,
     solver: &str,
-    increments: usize,
+    increments: Option<usize>,
 ) -> PyResult<Seating> {
     let method = crate::options::method(solver, increments)?;
     let (text, file) = (scene.text.clone(), scene.file.clone());

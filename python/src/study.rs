@@ -17,6 +17,11 @@ pub struct Study {
     pub report: StudyReport,
 }
 
+/// `json.loads(text)`.
+pub fn json_loads<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
+    py.import("json")?.call_method1("loads", (text,))
+}
+
 /// No records are kept: the records a study needs to answer `what`.
 fn no_records(what: &str) -> PyErr {
     err(format!(
@@ -34,8 +39,7 @@ impl Study {
     }
 
     fn json_value<'py, T: serde::Serialize>(py: Python<'py>, v: &T) -> PyResult<Bound<'py, PyAny>> {
-        let text = serde_json::to_string(v).map_err(err)?;
-        py.import("json")?.call_method1("loads", (text,))
+        json_loads(py, &serde_json::to_string(v).map_err(err)?)
     }
 }
 
@@ -230,11 +234,13 @@ impl Study {
 }
 
 /// Run a reproducibility study of one scene or a list of scenes
-/// (`kinrepro study`); see the stub for the arguments.
+/// (`kinrepro study`): the options are checked by the library's
+/// `StudyRequest` and the study planned and run by its `StudyPlan`, as the
+/// CLI does; see the stub for the arguments.
 #[pyfunction]
 #[pyo3(signature = (
     scene, samples = None, sampler = None, seed = None, vary = vec!["friction".to_string()],
-    shard = None, jobs = None, solver = "quasi-static".to_string(), increments = 20,
+    shard = None, jobs = None, solver = "quasi-static".to_string(), increments = None,
     replicates = None, sensitivity = false, sobol_samples = None, offset_bounds = None,
     tilt_bounds = None,
 ))]
@@ -249,53 +255,38 @@ pub fn study(
     shard: Option<&Bound<'_, PyAny>>,
     jobs: Option<usize>,
     solver: String,
-    increments: usize,
+    increments: Option<usize>,
     replicates: Option<usize>,
     sensitivity: bool,
     sobol_samples: Option<usize>,
     offset_bounds: Option<[f64; 3]>,
     tilt_bounds: Option<[f64; 3]>,
 ) -> PyResult<Study> {
-    let scenes: Vec<Scene> = match scene.extract::<Scene>() {
-        Ok(s) => vec![s],
-        Err(_) => scene
-            .extract()
-            .map_err(|_| err("scene: give a kinrepro.Scene or a list of them"))?,
-    };
-    let opts = StudyArgs {
+    let scenes = crate::scene::scenes(scene, "scene")?;
+    let settings = StudyArgs {
         samples,
         sampler,
         seed,
-        vary,
+        vary: Some(vary),
         shard: crate::options::shard(shard)?,
-        solver,
+        solver: Some(solver),
         increments,
         replicates,
         sensitivity,
+        sobol_samples,
         offset_bounds,
         tilt_bounds,
     }
-    .options()?;
-    let sobol = sensitivity.then_some(
-        sobol_samples.unwrap_or(kinrepro::study::sensitivity::sobol::DEFAULT_BASE_SAMPLES),
-    );
-    if sobol.is_some_and(|n| n < 2) {
-        return Err(err("sobol_samples: the base sample size must be at least 2"));
-    }
-    let report = crate::run::interruptible(py, jobs, move |tick| {
+    .settings()?;
+    let report = crate::run::interruptible(py, jobs, move || {
         let couplings = scenes
             .iter()
             .map(|s| coupling(&s.text, &s.file))
             .collect::<Result<Vec<_>, _>>()?;
-        let plan = StudyPlan::new(&couplings, opts, sobol).map_err(|e| e.to_string())?;
-        if plan.streamed() && sensitivity {
-            return Err(format!(
-                "sensitivity keeps every sample in memory: not available for Monte Carlo studies above {} samples",
-                kinrepro::study::stream::STREAM_ABOVE
-            ));
-        }
+        let plan = StudyPlan::new(&couplings, settings.options, settings.sobol_samples)
+            .map_err(|e| e.to_string())?;
         let (report, _) = plan
-            .run::<NoSink>(tick, |_, _| Ok(None))
+            .run::<NoSink>(&|| {}, |_, _| Ok(None))
             .map_err(|e| e.to_string())?;
         Ok(report)
     })?;
@@ -320,8 +311,8 @@ pub fn merge(py: Python<'_>, parts: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny>
     if parts.is_empty() {
         return Err(err("merge: give at least one part"));
     }
-    if parts[0].extract::<PyRef<crate::tools::Sweep>>().is_ok() {
-        return crate::tools::merge_sweeps(py, &parts);
+    if parts[0].extract::<PyRef<crate::sweep::Sweep>>().is_ok() {
+        return crate::sweep::merge_sweeps(py, &parts);
     }
     let docs = parts
         .iter()
