@@ -2,7 +2,7 @@
 //! `kinrepro calibrate` and `kinrepro predict` run them; the measured
 //! cycles come from a file or from a numpy array in SI.
 
-use kinrepro::calibrate::fit::{Calibration as LibCalibration, CalibrateOptions};
+use kinrepro::calibrate::fit::{CalibrateOptions, Calibration as LibCalibration};
 use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED, check_model_samples};
 use kinrepro::calibrate::{Measurement, predict as predict_one};
 use kinrepro::dof::{Dof, Dofs};
@@ -87,12 +87,16 @@ impl Measured {
             .map_err(err)?;
         if let Ok(path) = measured.extract::<std::path::PathBuf>() {
             if dofs.is_some() {
-                return Err(err("dofs: names the columns of an array; a file's header names its own"));
+                return Err(err(
+                    "dofs: names the columns of an array; a file's header names its own",
+                ));
             }
             return Ok(Measured::File(path, delimiter));
         }
         if delimiter.is_some() {
-            return Err(err("--delimiter: applies to a measurement file, not to an array"));
+            return Err(err(
+                "--delimiter: applies to a measurement file, not to an array",
+            ));
         }
         let np = measured.py().import("numpy")?;
         let array = np.call_method1("asarray", (measured, "float64"))?;
@@ -112,8 +116,9 @@ impl Measured {
             Some(names) => names
                 .iter()
                 .map(|n| {
-                    Dof::from_name(n)
-                        .ok_or_else(|| err(format!("dofs: unknown DOF `{n}` (one of {})", Dof::names())))
+                    Dof::from_name(n).ok_or_else(|| {
+                        err(format!("dofs: unknown DOF `{n}` (one of {})", Dof::names()))
+                    })
                 })
                 .collect::<PyResult<Vec<_>>>()?,
         };
@@ -233,7 +238,11 @@ impl Prediction {
     /// Predicted sigma of each DOF at `point` (None: the first evaluation
     /// point) per scene, (n_scenes, 6): x, y, z [m], phi_x, phi_y, phi_z [rad].
     #[pyo3(signature = (point = None))]
-    fn sigma<'py>(&self, py: Python<'py>, point: Option<&str>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    fn sigma<'py>(
+        &self,
+        py: Python<'py>,
+        point: Option<&str>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let rows: Vec<[f64; 6]> = self.points(point)?.iter().map(|p| p.sigma.si()).collect();
         Ok(Array2::from_shape_fn((rows.len(), 6), |(i, j)| rows[i][j]).into_pyarray(py))
     }
@@ -241,7 +250,11 @@ impl Prediction {
     /// The 90 % prediction interval of sigma at `point` per scene,
     /// (n_scenes, 2, 6): low and high, m and rad (NaN where there is none).
     #[pyo3(signature = (point = None))]
-    fn interval<'py>(&self, py: Python<'py>, point: Option<&str>) -> PyResult<Bound<'py, PyArray3<f64>>> {
+    fn interval<'py>(
+        &self,
+        py: Python<'py>,
+        point: Option<&str>,
+    ) -> PyResult<Bound<'py, PyArray3<f64>>> {
         let si = |d: &Option<Dofs>| d.as_ref().map_or([f64::NAN; 6], Dofs::si);
         let rows: Vec<[[f64; 6]; 2]> = (self.points(point)?.iter())
             .map(|p| [si(&p.sigma_ci90_low), si(&p.sigma_ci90_high)])

@@ -3,9 +3,9 @@
 //! flags): only the Python types are converted here.
 
 use kinrepro::solve::Method;
+use kinrepro::solve::dynamic::StartPose;
 use kinrepro::study::request::{self, Solver, StudyRequest, StudySettings, Varied};
 use kinrepro::study::{Sampler, Shard};
-use kinrepro::solve::dynamic::StartPose;
 use pyo3::prelude::*;
 
 use crate::err;
@@ -19,7 +19,9 @@ pub fn method(solver: &str, increments: Option<usize>) -> PyResult<Method> {
 
 /// `"INDEX/COUNT"` or a tuple `(index, count)` (1-based index).
 pub fn shard(s: Option<&Bound<'_, PyAny>>) -> PyResult<Shard> {
-    let Some(s) = s else { return Ok(Shard::whole()) };
+    let Some(s) = s else {
+        return Ok(Shard::whole());
+    };
     if let Ok(text) = s.extract::<String>() {
         return text.parse().map_err(err);
     }
@@ -37,7 +39,8 @@ pub struct StudyArgs {
     pub sampler: Option<String>,
     pub seed: Option<u64>,
     pub vary: Option<Vec<String>>,
-    pub shard: Shard,
+    /// None: the whole study.
+    pub shard: Option<Shard>,
     pub solver: Option<String>,
     pub increments: Option<usize>,
     pub replicates: Option<usize>,
@@ -73,7 +76,7 @@ impl StudyArgs {
             sampler,
             samples: self.samples,
             seed: self.seed,
-            shard: self.shard,
+            shard: self.shard.unwrap_or_else(Shard::whole),
             solver,
             increments: self.increments,
             vary,

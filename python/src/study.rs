@@ -8,7 +8,7 @@ use pyo3::prelude::*;
 
 use crate::err;
 use crate::options::StudyArgs;
-use crate::scene::{Scene, coupling};
+use crate::scene::coupling;
 
 /// A reproducibility study: the document of `kinrepro study --format json`
 /// (`to_json`), with numpy views of its samples.
@@ -104,9 +104,10 @@ impl Study {
             .iter()
             .map(|d| {
                 let name = format!("{prefix}{point}/{}", d.si_key());
-                v.output_names.iter().position(|n| *n == name).ok_or_else(|| {
-                    err(format!("point {point:?}: no output {name} in this study"))
-                })
+                v.output_names
+                    .iter()
+                    .position(|n| *n == name)
+                    .ok_or_else(|| err(format!("point {point:?}: no output {name} in this study")))
             })
             .collect::<PyResult<Vec<usize>>>()?;
         if v.records.is_empty() && v.streamed {
@@ -131,13 +132,23 @@ impl Study {
     /// Names of the columns of `inputs()` (`mu_1`, `offset_x_m`, ...).
     #[pyo3(signature = (variant = 0))]
     fn input_names(&self, variant: usize) -> PyResult<Vec<String>> {
-        Ok(self.variant(variant)?.inputs.iter().map(|i| i.name()).collect())
+        Ok(self
+            .variant(variant)?
+            .inputs
+            .iter()
+            .map(|i| i.name())
+            .collect())
     }
 
     /// Sample index of every row of `poses()` and `inputs()`.
     #[pyo3(signature = (variant = 0))]
     fn indices(&self, variant: usize) -> PyResult<Vec<usize>> {
-        Ok(self.variant(variant)?.records.iter().map(|r| r.index).collect())
+        Ok(self
+            .variant(variant)?
+            .records
+            .iter()
+            .map(|r| r.index)
+            .collect())
     }
 
     /// Sample standard deviation (n - 1) of each DOF at `point` (None: the
@@ -186,7 +197,12 @@ impl Study {
     }
 
     fn __repr__(&self) -> String {
-        let names: Vec<&str> = self.report.variants.iter().map(|v| v.scene.as_str()).collect();
+        let names: Vec<&str> = self
+            .report
+            .variants
+            .iter()
+            .map(|v| v.scene.as_str())
+            .collect();
         let r = &self.report;
         let or_none = |v: Option<String>| v.unwrap_or_else(|| "None".into());
         format!(
@@ -216,7 +232,11 @@ impl Study {
         interchange: bool,
     ) -> PyResult<&kinrepro::study::PointStats> {
         let v = self.variant(variant)?;
-        let list = if interchange { &v.interchangeability } else { &v.points };
+        let list = if interchange {
+            &v.interchangeability
+        } else {
+            &v.points
+        };
         if v.partial {
             return Err(err(
                 "this is one shard of a study: its statistics wait for kinrepro.merge of all shards",
@@ -228,7 +248,9 @@ impl Study {
         }
         .ok_or_else(|| {
             let have: Vec<&str> = list.iter().map(|s| s.name.as_str()).collect();
-            err(format!("point {point:?}: not in this study (have {have:?})"))
+            err(format!(
+                "point {point:?}: not in this study (have {have:?})"
+            ))
         })
     }
 }
@@ -268,7 +290,7 @@ pub fn study(
         sampler,
         seed,
         vary: Some(vary),
-        shard: crate::options::shard(shard)?,
+        shard: Some(crate::options::shard(shard)?),
         solver: Some(solver),
         increments,
         replicates,
@@ -323,7 +345,9 @@ pub fn merge(py: Python<'_>, parts: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny>
             } else if let Ok(text) = p.extract::<String>() {
                 Study::from_json(&text)?.report
             } else {
-                return Err(err(format!("merge: part {i} is neither a Study nor JSON text")));
+                return Err(err(format!(
+                    "merge: part {i} is neither a Study nor JSON text"
+                )));
             };
             Ok((format!("part {}", i + 1), report))
         })

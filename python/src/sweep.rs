@@ -2,7 +2,9 @@
 //! points) and the merge of sweep shards, as `kinrepro sweep` runs them.
 
 use kinrepro::explore::run::run;
-use kinrepro::explore::{DesignKind, SweepReport, SweepSpec, SweptValue, merge_sweeps as lib_merge};
+use kinrepro::explore::{
+    DesignKind, SweepReport, SweepSpec, SweptValue, merge_sweeps as lib_merge,
+};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2};
 use pyo3::prelude::*;
@@ -60,9 +62,11 @@ impl Sweep {
     /// (materials, arrangements: see `to_dict()`).
     fn values<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
         let (d, names) = (&self.report.designs, self.names());
-        Array2::from_shape_fn((d.len(), names.len()), |(i, j)| match d[i].values.get(&names[j]) {
-            Some(SweptValue::Number(v)) => *v,
-            _ => f64::NAN,
+        Array2::from_shape_fn((d.len(), names.len()), |(i, j)| {
+            match d[i].values.get(&names[j]) {
+                Some(SweptValue::Number(v)) => *v,
+                _ => f64::NAN,
+            }
         })
         .into_pyarray(py)
     }
@@ -74,7 +78,11 @@ impl Sweep {
 
     /// `"ok"`, or why the design point was not evaluated, per design point.
     fn status(&self) -> Vec<String> {
-        self.report.designs.iter().map(|d| d.status.clone()).collect()
+        self.report
+            .designs
+            .iter()
+            .map(|d| d.status.clone())
+            .collect()
     }
 
     /// Sample standard deviation (n - 1) of each DOF at evaluation point
@@ -96,7 +104,9 @@ impl Sweep {
                 None if design.points.is_empty() => [f64::NAN; 6],
                 None => {
                     let have: Vec<&str> = design.points.iter().map(|p| p.name.as_str()).collect();
-                    return Err(err(format!("point {name:?}: not in this sweep (have {have:?})")));
+                    return Err(err(format!(
+                        "point {name:?}: not in this sweep (have {have:?})"
+                    )));
                 }
             };
             rows.push(row);
@@ -161,7 +171,7 @@ pub fn sweep(
         samples,
         sampler,
         seed,
-        shard: crate::options::shard(shard)?,
+        shard: Some(crate::options::shard(shard)?),
         increments: Some(increments),
         replicates,
         ..StudyArgs::default()
