@@ -71,7 +71,7 @@ impl Calibration {
 /// are the DOFs `dofs` (None: all six, x, y, z, phi_x, phi_y, phi_z).
 enum Measured {
     File(std::path::PathBuf, Option<u8>),
-    Array(Measurement),
+    Array(Box<Measurement>),
 }
 
 impl Measured {
@@ -124,7 +124,7 @@ impl Measured {
         };
         let rows = a.rows().into_iter().map(|r| r.to_vec()).collect();
         Measurement::from_cycles("measured array", point, &dofs, rows, [None; 6])
-            .map(Measured::Array)
+            .map(|m| Measured::Array(Box::new(m)))
             .map_err(err)
     }
 
@@ -133,7 +133,7 @@ impl Measured {
             Measured::File(path, delimiter) => {
                 Measurement::load(&path, delimiter).map_err(|e| e.to_string())
             }
-            Measured::Array(m) => Ok(m),
+            Measured::Array(m) => Ok(*m),
         }
     }
 }
