@@ -1,5 +1,6 @@
 //! A process-wide request to stop the run in progress (set by the CLI on
-//! SIGINT or SIGTERM). The study loops check it before each seating and the
+//! SIGINT or SIGTERM, by the Python package on Ctrl-C). The study loops
+//! check it before each seating, a sweep before each design point and the
 //! dynamic solver before each time step, and return an error: the run
 //! unwinds normally, so every temporary output file is deleted by its
 //! destructor and nothing half-written is renamed over a result.
@@ -16,4 +17,10 @@ pub fn request() {
 /// Whether a stop was asked for.
 pub fn requested() -> bool {
     REQUESTED.load(Ordering::Relaxed)
+}
+
+/// Withdraw the request once the runs it stopped have ended: a host that
+/// outlives its runs (the Python package, after Ctrl-C) can run again.
+pub fn withdraw() {
+    REQUESTED.store(false, Ordering::SeqCst);
 }

@@ -24,6 +24,20 @@ pub struct Delimited {
     pub records: Vec<Record>,
 }
 
+/// A delimiter by name (`--delimiter`): one ASCII character other than `"`
+/// and `#`, or `tab` (also `\t`), `comma`, `semicolon`.
+pub fn delimiter_named(s: &str) -> Result<u8, String> {
+    match s {
+        "tab" | "\\t" | "\t" => Ok(b'\t'),
+        "comma" => Ok(b','),
+        "semicolon" => Ok(b';'),
+        _ if s.len() == 1 && s.is_ascii() && s != "\"" && s != "#" => Ok(s.as_bytes()[0]),
+        _ => Err(format!(
+            "--delimiter `{s}`: give one character such as `,` or `;`, or `tab` (not `\"` or `#`)"
+        )),
+    }
+}
+
 /// Split `text` into comments and records; `delimiter` None: detected from
 /// the first record ([`detect_delimiter`]).
 pub fn read(text: &str, delimiter: Option<u8>) -> Delimited {

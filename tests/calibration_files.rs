@@ -353,3 +353,44 @@ fn unit_columns_and_values() {
         "`q=1nm`: unknown DOF `q` (one of x, y, z, phi_x, phi_y, phi_z)"
     );
 }
+
+/// Cycles given as numbers in SI (`Measurement::from_cycles`, the Python
+/// package's array) are the cycles of the same readings in a file, with
+/// the file's checks: a unit slip, a non-finite value, too few cycles.
+#[test]
+fn cycles_given_as_numbers_are_the_files() {
+    use kinrepro::calibrate::MeasuredData;
+    use kinrepro::dof::Dof;
+    let text = "x_nm,phi_y_nrad\n1.5,-20\n-3.25,40\n2,10\n0.5,-5\n";
+    let file = Measurement::parse(text, "m.csv", None).unwrap();
+    let rows = vec![
+        vec![1.5e-9, -20e-9],
+        vec![-3.25e-9, 40e-9],
+        vec![2e-9, 10e-9],
+        vec![0.5e-9, -5e-9],
+    ];
+    let dofs = [Dof::X, Dof::PhiY];
+    let array = Measurement::from_cycles("array", None, &dofs, rows.clone(), [None; 6]).unwrap();
+    assert_eq!(array.dofs, file.dofs);
+    let (MeasuredData::Cycles(a), MeasuredData::Cycles(f)) = (&array.data, &file.data) else {
+        panic!("cycles expected");
+    };
+    for (ra, rf) in a.iter().zip(f) {
+        for (x, y) in ra.iter().zip(rf) {
+            assert!((x - y).abs() <= 1e-12 * y.abs(), "{x} {y}");
+        }
+    }
+    assert_eq!(array.sigma().len(), 2);
+    let e = |rows: Vec<Vec<f64>>| {
+        Measurement::from_cycles("array", None, &dofs, rows, [None; 6])
+            .unwrap_err()
+            .to_string()
+    };
+    let mut slip = rows.clone();
+    slip[2][0] = 2.0;
+    assert!(e(slip).starts_with("array: row 3, x_m: 2e0 m: a reading"));
+    let mut nan = rows.clone();
+    nan[1][1] = f64::NAN;
+    assert!(e(nan).contains("row 2, phi_y_rad: NaN is not a finite"));
+    assert!(e(rows[..2].to_vec()).contains("2 cycle(s), need at least 3"));
+}

@@ -5,6 +5,7 @@ from the library; every document (``Study.to_json()``, ``Sweep.to_json()``)
 is the JSON the ``kinrepro`` command line writes. Units are SI (m, rad, N)
 for arrays and inputs; the statistics of the study document (``sigma``) are
 in nm and nrad, as their keys say (``x_nm``, ``phi_x_nrad``).
+``kinrepro.cluster`` runs studies and sweeps in shards on a Dask cluster.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from ._kinrepro import (
     SCHEMA_VERSION,
     Calibration,
     KinreproError,
+    Prediction,
     Scene,
     Seating,
     Study,
@@ -33,6 +35,7 @@ __all__ = [
     "SCHEMA_VERSION",
     "Calibration",
     "KinreproError",
+    "Prediction",
     "Scene",
     "Seating",
     "Study",
@@ -86,8 +89,11 @@ def sweep(
     an LHS of ``points`` design points. ``pareto_point``: the evaluation
     point of the Pareto objective (None: the first). ``samples``,
     ``sampler``, ``seed``, ``shard``, ``jobs``, ``increments``,
-    ``replicates``: as for :func:`study`. ``Sweep.to_dict()["designs"]``
-    holds one entry per design point (sigma in nm and nrad).
+    ``replicates``: as for :func:`study`, checked by the library as the
+    CLI's flags are. ``Sweep.names()`` and ``Sweep.values()`` (n_designs,
+    k) give the design points, ``Sweep.sigma(point)`` (n_designs, 6) their
+    sigma in m and rad; ``Sweep.to_dict()["designs"]`` holds everything
+    (sigma in nm and nrad). GIL released; Ctrl-C raises KeyboardInterrupt.
     """
     args: List[str] = [_set_arg(f, v) for f, v in sets.items()]
     return _sweep(

@@ -119,14 +119,34 @@ class Study:
     def __len__(self) -> int: ...
 
 class Sweep:
-    """A sweep (``kinrepro sweep --format json``)."""
+    """A sweep (``kinrepro sweep --format json``) with numpy views over its
+    design points (rows, in document order). Picklable; ``==`` compares
+    the whole document."""
 
     @staticmethod
     def from_json(text: str) -> Sweep: ...
     def to_json(self) -> str: ...
-    def to_dict(self) -> dict[str, Any]: ...
+    def to_dict(self) -> dict[str, Any]:
+        """The document; ``designs`` holds every design point (sigma in nm
+        and nrad, stiffness, safety, Pareto flag)."""
     def table(self) -> str: ...
     def csv(self) -> str: ...
+    def names(self) -> list[str]:
+        """The swept fields (TOML paths): the columns of :meth:`values`."""
+    def values(self) -> Array:
+        """(n_designs, k) value of each swept field per design point, in the
+        scene file's SI units (N, m, ...); NaN for a field swept over names
+        (materials, arrangements: see :meth:`to_dict`)."""
+    def indices(self) -> list[int]:
+        """Row of each design point in the whole design (a shard holds some)."""
+    def status(self) -> list[str]:
+        """``"ok"`` or why the design point was not evaluated."""
+    def sigma(self, point: str | None = None) -> Array:
+        """(n_designs, 6) sample standard deviation (n - 1) at evaluation
+        point ``point`` (None: the Pareto point, by default the scene's
+        first) per design point: x, y, z [m], phi_x, phi_y, phi_z [rad]; a
+        row of NaN where the point was not evaluated."""
+    def __len__(self) -> int: ...
 
 class Calibration:
     """A calibration (``kinrepro calibrate --out``)."""
@@ -142,14 +162,32 @@ class Calibration:
         """Fitted value of each parameter (``spread``, ...)."""
     def table(self) -> str: ...
 
+class Prediction:
+    """Predicted scatter of other designs (``kinrepro predict``)."""
+
+    def to_json(self) -> str:
+        """The document of ``kinrepro predict --format json``."""
+    def to_dict(self) -> dict[str, Any]: ...
+    def table(self) -> str: ...
+    def scenes(self) -> list[str]:
+        """The scene file of each prediction: the rows of :meth:`sigma`."""
+    def sigma(self, point: str | None = None) -> Array:
+        """(n_scenes, 6) predicted sigma at ``point`` (None: the first
+        evaluation point): x, y, z [m], phi_x, phi_y, phi_z [rad]."""
+    def interval(self, point: str | None = None) -> Array:
+        """(n_scenes, 2, 6) 90 % prediction interval of sigma (low, high),
+        m and rad; NaN where there is none."""
+    def __len__(self) -> int: ...
+
 def seat(
     scene: Scene,
     mu: Sequence[float] | None = None,
     solver: str = "quasi-static",
-    increments: int = 20,
+    increments: int | None = None,
 ) -> Seating:
     """Seat the coupling once; ``mu``: static friction coefficient per
-    contact (None: the scene's ``mu_static``). GIL released."""
+    contact (None: the scene's ``mu_static``); ``increments``: nominal load
+    increments of the quasi-static solver (None: 20). GIL released."""
 
 def stiffness(
     scene: Scene,
@@ -169,7 +207,7 @@ def study(
     shard: Shard | None = None,
     jobs: int | None = None,
     solver: str = "quasi-static",
-    increments: int = 20,
+    increments: int | None = None,
     replicates: int | None = None,
     sensitivity: bool = False,
     sobol_samples: int | None = None,
@@ -179,9 +217,17 @@ def study(
     """A reproducibility study (``kinrepro study``). ``samples``,
     ``sampler`` (``"lhs"``, ``"mc"``, ``"corners"``) and ``seed``: None takes
     the scene's ``[study]`` values. ``vary``: any of ``"friction"``,
-    ``"preload"``, ``"start"``, ``"tolerances"``. ``shard``: run one part
-    (merge the parts with :func:`merge`). ``jobs``: worker threads (None:
-    all cores). GIL released; Ctrl-C raises KeyboardInterrupt."""
+    ``"preload"``, ``"start"``, ``"tolerances"``; ``"start"`` needs
+    ``solver="dynamic"`` and ``offset_bounds`` (x, y half-widths and the
+    largest height z [m]) and/or ``tilt_bounds`` (half-widths [rad]).
+    ``solver``: ``"quasi-static"`` (``increments``: nominal load
+    increments, None: 20) or ``"dynamic"``. ``sensitivity``: SRC and Sobol
+    indices (``sobol_samples``: base sample size N, None: 32768).
+    ``shard``: run one part (merge the parts with :func:`merge`).
+    ``jobs``: worker threads (None: all cores). The options are checked by
+    the library, as the CLI's flags are: a bad one raises KinreproError
+    with the CLI's message, naming the flag (``--samples`` for
+    ``samples``). GIL released; Ctrl-C raises KeyboardInterrupt."""
 
 def merge(parts: Sequence[Study | str] | Sequence[Sweep]) -> Any:
     """Merge the shards of a study (``Study`` objects or JSON texts; returns
@@ -205,7 +251,7 @@ def sweep(
 
 def calibrate(
     scene: Scene,
-    measured: Union[str, os.PathLike[str]],
+    measured: Union[str, os.PathLike[str], npt.ArrayLike],
     fit: Sequence[str] = ("spread",),
     noise: str | None = None,
     point: str | None = None,
@@ -213,11 +259,19 @@ def calibrate(
     seed: int = 15015,
     delimiter: str | None = None,
     jobs: int | None = None,
+    dofs: Sequence[str] | None = None,
 ) -> Calibration:
     """Fit the friction spread (and optionally ``mu_static``,
     ``dynamic_ratio``, ``support_compliance``) to the measured re-seating
-    scatter in the file ``measured`` (docs/measurements.md); ``noise``:
-    sensor noise as ``"x=1nm,phi_x=20nrad"``."""
+    scatter (``kinrepro calibrate``). ``measured``: a measurement file
+    (docs/measurements.md; ``delimiter`` as ``--delimiter``), or an
+    (n_cycles, k) array of the readings of each re-seating cycle in SI
+    (x, y, z [m], phi_x, phi_y, phi_z [rad]) whose columns are the DOFs
+    ``dofs`` (None: all six in that order), checked like a file's rows.
+    ``noise``: sensor noise sigma as ``"x=1nm,phi_x=20nrad"`` (a number
+    without unit is SI). ``point``: the evaluation point measured (None:
+    the file's, else the scene's first). GIL released; Ctrl-C raises
+    KeyboardInterrupt."""
 
 def predict(
     scenes: Scene | Sequence[Scene],
@@ -225,6 +279,8 @@ def predict(
     samples: int = 2000,
     seed: int = 15015,
     jobs: int | None = None,
-) -> dict[str, Any]:
-    """Predicted scatter of other designs (``kinrepro predict --format
-    json`` as a dict)."""
+) -> Prediction:
+    """Predicted scatter of other designs (``kinrepro predict``):
+    ``Prediction.to_dict()`` is ``kinrepro predict --format json``,
+    ``sigma()`` and ``interval()`` numpy arrays in SI. GIL released;
+    Ctrl-C raises KeyboardInterrupt."""

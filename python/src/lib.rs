@@ -2,15 +2,18 @@
 //! (docs/python.md). No physics and no statistics here: every function
 //! calls the library's public API the way the CLI does
 //! (`src/bin/kinrepro/commands`), and every document is the library's
-//! serde JSON. Long runs (study, sweep, calibrate, predict) run on a
-//! worker thread with the GIL released ([`run::interruptible`]), so that
-//! Ctrl-C raises `KeyboardInterrupt`.
+//! serde JSON; the options of a study are checked by the library's
+//! `StudyRequest`, as the CLI's flags are. Long runs (study, sweep,
+//! calibrate, predict) run on a worker thread with the GIL released
+//! ([`run::interruptible`]); Ctrl-C stops them through the library's stop
+//! request and raises `KeyboardInterrupt`.
 
+mod calibrate;
 mod options;
 mod run;
 mod scene;
 mod study;
-mod tools;
+mod sweep;
 
 use pyo3::prelude::*;
 
@@ -37,14 +40,15 @@ fn _kinrepro(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<scene::Scene>()?;
     m.add_class::<scene::Seating>()?;
     m.add_class::<study::Study>()?;
-    m.add_class::<tools::Sweep>()?;
-    m.add_class::<tools::Calibration>()?;
+    m.add_class::<sweep::Sweep>()?;
+    m.add_class::<calibrate::Calibration>()?;
+    m.add_class::<calibrate::Prediction>()?;
     m.add_function(wrap_pyfunction!(scene::seat, m)?)?;
     m.add_function(wrap_pyfunction!(scene::stiffness, m)?)?;
     m.add_function(wrap_pyfunction!(study::study, m)?)?;
     m.add_function(wrap_pyfunction!(study::merge, m)?)?;
-    m.add_function(wrap_pyfunction!(tools::sweep, m)?)?;
-    m.add_function(wrap_pyfunction!(tools::calibrate, m)?)?;
-    m.add_function(wrap_pyfunction!(tools::predict, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(calibrate::calibrate, m)?)?;
+    m.add_function(wrap_pyfunction!(calibrate::predict, m)?)?;
     Ok(())
 }

@@ -1,39 +1,71 @@
 //! Long runs off the GIL, stoppable by Ctrl-C.
 //!
-//! The work runs on its own thread (and the library's rayon pool, or a pool
-//! of `jobs` threads) while the calling thread waits with the GIL released
-//! and checks Python's signals every 50 ms. On Ctrl-C the library's
-//! progress tick (called once per seating) unwinds the run with a private
-//! payload through `resume_unwind` (no panic message: the hook is not
-//! called); rayon carries it to the worker thread, which catches it, so
-//! the run stops after the seatings in flight. A run without a tick
-//! (calibrate, predict) goes on to its end on its thread and its result is
-//! dropped; Python gets its `KeyboardInterrupt` at once either way.
+//! The work runs on a thread of its own (on the library's rayon pool, or a
+//! pool of `jobs` threads) while the calling thread waits with the GIL
+//! released and checks Python's signals every 50 ms. On Ctrl-C it asks the
+//! library to stop (`kinrepro::cancel::request`, checked before every
+//! seating and every time step of the dynamic solver, as for the CLI's
+//! SIGINT), waits for the run to end (at most [`GRACE`]) and raises the
+//! `KeyboardInterrupt`. The request is process-wide, as Ctrl-C is: it stops
+//! every kinrepro run in flight, and any of them raises `KeyboardInterrupt`;
+//! it is withdrawn when the last of them has ended, so the next call runs.
 
-use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
 use std::time::Duration;
 
-use pyo3::exceptions::PyRuntimeError;
+use kinrepro::cancel;
+use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError};
 use pyo3::prelude::*;
 
-/// The payload that stops a run.
-struct Cancelled;
+/// Longest wait for a run to stop after Ctrl-C before raising anyway (the
+/// run then ends on its own thread).
+const GRACE: Duration = Duration::from_secs(5);
+
+/// How often the waiting thread checks Python's signals.
+const POLL: Duration = Duration::from_millis(50);
 
 /// What a run returns: its value or the library's message.
 pub type Outcome<T> = Result<T, String>;
 
-/// Run `work` (given the tick to pass to the library) off the GIL on
-/// `jobs` threads (None: the global pool, all cores).
+/// Runs in flight in this process.
+static IN_FLIGHT: AtomicUsize = AtomicUsize::new(0);
+
+/// A run in flight; the last one to end withdraws a stop request.
+struct InFlight;
+
+impl InFlight {
+    fn start() -> InFlight {
+        IN_FLIGHT.fetch_add(1, Ordering::SeqCst);
+        InFlight
+    }
+}
+
+impl Drop for InFlight {
+    fn drop(&mut self) {
+        if IN_FLIGHT.fetch_sub(1, Ordering::SeqCst) == 1 {
+            cancel::withdraw();
+        }
+    }
+}
+
+/// A run's end: its outcome (or panic), and whether a stop was requested
+/// while it ran.
+struct Ended<T> {
+    outcome: std::thread::Result<Outcome<T>>,
+    stopped: bool,
+}
+
+/// Run `work` off the GIL on `jobs` threads (None: the global pool, all
+/// cores); Ctrl-C stops it with `KeyboardInterrupt`.
 pub fn interruptible<T, F>(py: Python<'_>, jobs: Option<usize>, work: F) -> PyResult<T>
 where
     T: Send + 'static,
-    F: FnOnce(&(dyn Fn() + Sync)) -> Outcome<T> + Send + 'static,
+    F: FnOnce() -> Outcome<T> + Send + 'static,
 {
     if jobs == Some(0) {
-        return Err(crate::err("jobs=0: need at least 1 worker thread"));
+        return Err(crate::err("--jobs 0: need at least 1 worker thread"));
     }
     let pool = match jobs {
         None => None,
@@ -44,45 +76,52 @@ where
                 .map_err(crate::err)?,
         ),
     };
-    let stop = Arc::new(AtomicBool::new(false));
     let (tx, rx) = mpsc::channel();
-    let flag = stop.clone();
+    let in_flight = InFlight::start();
     std::thread::spawn(move || {
-        let tick = move || {
-            if flag.load(Ordering::Relaxed) {
-                resume_unwind(Box::new(Cancelled));
-            }
-        };
         let body = AssertUnwindSafe(|| match &pool {
-            Some(p) => p.install(|| work(&tick)),
-            None => work(&tick),
+            Some(p) => p.install(work),
+            None => work(),
         });
-        let _ = tx.send(catch_unwind(body));
+        let outcome = catch_unwind(body);
+        let stopped = cancel::requested();
+        drop(in_flight);
+        let _ = tx.send(Ended { outcome, stopped });
     });
+    // The receiver crosses into the GIL-free closure and back (it is Send,
+    // not Sync).
+    let wait = |rx: mpsc::Receiver<Ended<T>>, t| py.detach(move || (rx.recv_timeout(t), rx));
     let mut rx = rx;
     loop {
-        // The receiver crosses into the GIL-free closure and back (it is
-        // Send, not Sync).
-        let (got, back) = py.detach(move || (rx.recv_timeout(Duration::from_millis(50)), rx));
+        let (got, back) = wait(rx, POLL);
         rx = back;
         match got {
-            Ok(Ok(Ok(v))) => return Ok(v),
-            Ok(Ok(Err(message))) => return Err(crate::err(message)),
-            Ok(Err(payload)) if payload.is::<Cancelled>() => {
-                // Only after a signal; check_signals below raised it already.
-                return Err(PyRuntimeError::new_err("kinrepro: run cancelled"));
-            }
-            Ok(Err(payload)) => return Err(PyRuntimeError::new_err(panic_text(&payload))),
+            Ok(ended) => return finish(ended),
             Err(mpsc::RecvTimeoutError::Timeout) => {
-                if let Err(e) = py.check_signals() {
-                    stop.store(true, Ordering::Relaxed);
-                    return Err(e);
+                if let Err(interrupt) = py.check_signals() {
+                    cancel::request();
+                    let _ = wait(rx, GRACE);
+                    return Err(interrupt);
                 }
             }
             Err(mpsc::RecvTimeoutError::Disconnected) => {
                 return Err(PyRuntimeError::new_err("kinrepro: the worker thread died"));
             }
         }
+    }
+}
+
+/// The run's value, its message as `KinreproError`, `KeyboardInterrupt`
+/// if a stop was requested while it ran (by Ctrl-C during another call of
+/// this process), or a panic as `RuntimeError`.
+fn finish<T>(ended: Ended<T>) -> PyResult<T> {
+    match ended.outcome {
+        Ok(_) if ended.stopped => Err(PyKeyboardInterrupt::new_err(
+            "kinrepro: run stopped by Ctrl-C",
+        )),
+        Ok(Ok(v)) => Ok(v),
+        Ok(Err(message)) => Err(crate::err(message)),
+        Err(payload) => Err(PyRuntimeError::new_err(panic_text(&payload))),
     }
 }
 

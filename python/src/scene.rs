@@ -58,6 +58,16 @@ pub fn coupling(text: &str, file: &str) -> Result<Coupling, String> {
     })
 }
 
+/// One `Scene` or a list of them (`what`: the argument's name).
+pub fn scenes(arg: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Scene>> {
+    match arg.extract::<Scene>() {
+        Ok(s) => Ok(vec![s]),
+        Err(_) => arg
+            .extract()
+            .map_err(|_| err(format!("{what}: give a kinrepro.Scene or a list of them"))),
+    }
+}
+
 #[pymethods]
 impl Scene {
     /// Read and validate a scene file (TOML).
@@ -92,18 +102,25 @@ impl Scene {
     /// `kinrepro sweep --set`, e.g. `preload.force` [N],
     /// `friction.mu_static`, `coupling.ball_radius` [m], `materials.NAME.KEY`.
     fn set(&self, field: &str, value: &Bound<'_, PyAny>) -> PyResult<Scene> {
-        let mut table: toml::Table = toml::from_str(&self.text)
-            .map_err(|e| err(format!("{}: not a TOML document: {}", self.file, e.message())))?;
+        let mut table: toml::Table = toml::from_str(&self.text).map_err(|e| {
+            err(format!(
+                "{}: not a TOML document: {}",
+                self.file,
+                e.message()
+            ))
+        })?;
         let kind = kind_of(field, &table).map_err(err)?;
         let v = match kind {
-            FieldKind::Number => SweptValue::Number(value.extract::<f64>().map_err(|_| {
-                err(format!("{field}: needs a number, got {value}"))
-            })?),
-            FieldKind::Material | FieldKind::Text => {
-                SweptValue::Name(value.extract::<String>().map_err(|_| {
-                    err(format!("{field}: needs a name, got {value}"))
-                })?)
-            }
+            FieldKind::Number => SweptValue::Number(
+                value
+                    .extract::<f64>()
+                    .map_err(|_| err(format!("{field}: needs a number, got {value}")))?,
+            ),
+            FieldKind::Material | FieldKind::Text => SweptValue::Name(
+                value
+                    .extract::<String>()
+                    .map_err(|_| err(format!("{field}: needs a name, got {value}")))?,
+            ),
         };
         set(&mut table, field, &v).map_err(err)?;
         let text = toml::to_string(&table).map_err(err)?;
@@ -183,7 +200,12 @@ impl Seating {
     /// Normal force of each contact [N], (n_contacts,).
     #[getter]
     fn normal_forces<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        let v: Vec<f64> = self.report.contacts.iter().map(|c| c.normal_force_n).collect();
+        let v: Vec<f64> = self
+            .report
+            .contacts
+            .iter()
+            .map(|c| c.normal_force_n)
+            .collect();
         PyArray1::from_vec(py, v)
     }
 
@@ -235,13 +257,13 @@ fn mu_of(c: &Coupling, mu: Option<Vec<f64>>) -> Vec<f64> {
 /// Seat the coupling once (`kinrepro run`): `mu` the static friction
 /// coefficient of each contact (None: the scene's mu_static everywhere).
 #[pyfunction]
-#[pyo3(signature = (scene, mu = None, solver = "quasi-static", increments = 20))]
+#[pyo3(signature = (scene, mu = None, solver = "quasi-static", increments = None))]
 pub fn seat(
     py: Python<'_>,
     scene: &Scene,
     mu: Option<Vec<f64>>,
     solver: &str,
-    increments: usize,
+    increments: Option<usize>,
 ) -> PyResult<Seating> {
     let method = crate::options::method(solver, increments)?;
     let (text, file) = (scene.text.clone(), scene.file.clone());
@@ -286,7 +308,10 @@ pub fn stiffness<'py>(
             Ok(name) => {
                 let found = c.scene.evaluation_points.iter().find(|p| p.name == name);
                 let p = found.ok_or_else(|| {
-                    err(format!("at={name:?}: no such evaluation point, have {:?}", scene.points))
+                    err(format!(
+                        "at={name:?}: no such evaluation point, have {:?}",
+                        scene.points
+                    ))
                 })?;
                 (p.name.clone(), p.position)
             }

@@ -8,13 +8,18 @@ use pyo3::prelude::*;
 
 use crate::err;
 use crate::options::StudyArgs;
-use crate::scene::{Scene, coupling};
+use crate::scene::coupling;
 
 /// A reproducibility study: the document of `kinrepro study --format json`
 /// (`to_json`), with numpy views of its samples.
 #[pyclass(module = "kinrepro", frozen)]
 pub struct Study {
     pub report: StudyReport,
+}
+
+/// `json.loads(text)`.
+pub fn json_loads<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
+    py.import("json")?.call_method1("loads", (text,))
 }
 
 /// No records are kept: the records a study needs to answer `what`.
@@ -34,8 +39,7 @@ impl Study {
     }
 
     fn json_value<'py, T: serde::Serialize>(py: Python<'py>, v: &T) -> PyResult<Bound<'py, PyAny>> {
-        let text = serde_json::to_string(v).map_err(err)?;
-        py.import("json")?.call_method1("loads", (text,))
+        json_loads(py, &serde_json::to_string(v).map_err(err)?)
     }
 }
 
@@ -100,9 +104,10 @@ impl Study {
             .iter()
             .map(|d| {
                 let name = format!("{prefix}{point}/{}", d.si_key());
-                v.output_names.iter().position(|n| *n == name).ok_or_else(|| {
-                    err(format!("point {point:?}: no output {name} in this study"))
-                })
+                v.output_names
+                    .iter()
+                    .position(|n| *n == name)
+                    .ok_or_else(|| err(format!("point {point:?}: no output {name} in this study")))
             })
             .collect::<PyResult<Vec<usize>>>()?;
         if v.records.is_empty() && v.streamed {
@@ -127,13 +132,23 @@ impl Study {
     /// Names of the columns of `inputs()` (`mu_1`, `offset_x_m`, ...).
     #[pyo3(signature = (variant = 0))]
     fn input_names(&self, variant: usize) -> PyResult<Vec<String>> {
-        Ok(self.variant(variant)?.inputs.iter().map(|i| i.name()).collect())
+        Ok(self
+            .variant(variant)?
+            .inputs
+            .iter()
+            .map(|i| i.name())
+            .collect())
     }
 
     /// Sample index of every row of `poses()` and `inputs()`.
     #[pyo3(signature = (variant = 0))]
     fn indices(&self, variant: usize) -> PyResult<Vec<usize>> {
-        Ok(self.variant(variant)?.records.iter().map(|r| r.index).collect())
+        Ok(self
+            .variant(variant)?
+            .records
+            .iter()
+            .map(|r| r.index)
+            .collect())
     }
 
     /// Sample standard deviation (n - 1) of each DOF at `point` (None: the
@@ -182,7 +197,12 @@ impl Study {
     }
 
     fn __repr__(&self) -> String {
-        let names: Vec<&str> = self.report.variants.iter().map(|v| v.scene.as_str()).collect();
+        let names: Vec<&str> = self
+            .report
+            .variants
+            .iter()
+            .map(|v| v.scene.as_str())
+            .collect();
         let r = &self.report;
         let or_none = |v: Option<String>| v.unwrap_or_else(|| "None".into());
         format!(
@@ -212,7 +232,11 @@ impl Study {
         interchange: bool,
     ) -> PyResult<&kinrepro::study::PointStats> {
         let v = self.variant(variant)?;
-        let list = if interchange { &v.interchangeability } else { &v.points };
+        let list = if interchange {
+            &v.interchangeability
+        } else {
+            &v.points
+        };
         if v.partial {
             return Err(err(
                 "this is one shard of a study: its statistics wait for kinrepro.merge of all shards",
@@ -224,17 +248,21 @@ impl Study {
         }
         .ok_or_else(|| {
             let have: Vec<&str> = list.iter().map(|s| s.name.as_str()).collect();
-            err(format!("point {point:?}: not in this study (have {have:?})"))
+            err(format!(
+                "point {point:?}: not in this study (have {have:?})"
+            ))
         })
     }
 }
 
 /// Run a reproducibility study of one scene or a list of scenes
-/// (`kinrepro study`); see the stub for the arguments.
+/// (`kinrepro study`): the options are checked by the library's
+/// `StudyRequest` and the study planned and run by its `StudyPlan`, as the
+/// CLI does; see the stub for the arguments.
 #[pyfunction]
 #[pyo3(signature = (
     scene, samples = None, sampler = None, seed = None, vary = vec!["friction".to_string()],
-    shard = None, jobs = None, solver = "quasi-static".to_string(), increments = 20,
+    shard = None, jobs = None, solver = "quasi-static".to_string(), increments = None,
     replicates = None, sensitivity = false, sobol_samples = None, offset_bounds = None,
     tilt_bounds = None,
 ))]
@@ -249,53 +277,38 @@ pub fn study(
     shard: Option<&Bound<'_, PyAny>>,
     jobs: Option<usize>,
     solver: String,
-    increments: usize,
+    increments: Option<usize>,
     replicates: Option<usize>,
     sensitivity: bool,
     sobol_samples: Option<usize>,
     offset_bounds: Option<[f64; 3]>,
     tilt_bounds: Option<[f64; 3]>,
 ) -> PyResult<Study> {
-    let scenes: Vec<Scene> = match scene.extract::<Scene>() {
-        Ok(s) => vec![s],
-        Err(_) => scene
-            .extract()
-            .map_err(|_| err("scene: give a kinrepro.Scene or a list of them"))?,
-    };
-    let opts = StudyArgs {
+    let scenes = crate::scene::scenes(scene, "scene")?;
+    let settings = StudyArgs {
         samples,
         sampler,
         seed,
-        vary,
-        shard: crate::options::shard(shard)?,
-        solver,
+        vary: Some(vary),
+        shard: Some(crate::options::shard(shard)?),
+        solver: Some(solver),
         increments,
         replicates,
         sensitivity,
+        sobol_samples,
         offset_bounds,
         tilt_bounds,
     }
-    .options()?;
-    let sobol = sensitivity.then_some(
-        sobol_samples.unwrap_or(kinrepro::study::sensitivity::sobol::DEFAULT_BASE_SAMPLES),
-    );
-    if sobol.is_some_and(|n| n < 2) {
-        return Err(err("sobol_samples: the base sample size must be at least 2"));
-    }
-    let report = crate::run::interruptible(py, jobs, move |tick| {
+    .settings()?;
+    let report = crate::run::interruptible(py, jobs, move || {
         let couplings = scenes
             .iter()
             .map(|s| coupling(&s.text, &s.file))
             .collect::<Result<Vec<_>, _>>()?;
-        let plan = StudyPlan::new(&couplings, opts, sobol).map_err(|e| e.to_string())?;
-        if plan.streamed() && sensitivity {
-            return Err(format!(
-                "sensitivity keeps every sample in memory: not available for Monte Carlo studies above {} samples",
-                kinrepro::study::stream::STREAM_ABOVE
-            ));
-        }
+        let plan = StudyPlan::new(&couplings, settings.options, settings.sobol_samples)
+            .map_err(|e| e.to_string())?;
         let (report, _) = plan
-            .run::<NoSink>(tick, |_, _| Ok(None))
+            .run::<NoSink>(&|| {}, |_, _| Ok(None))
             .map_err(|e| e.to_string())?;
         Ok(report)
     })?;
@@ -320,8 +333,8 @@ pub fn merge(py: Python<'_>, parts: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny>
     if parts.is_empty() {
         return Err(err("merge: give at least one part"));
     }
-    if parts[0].extract::<PyRef<crate::tools::Sweep>>().is_ok() {
-        return crate::tools::merge_sweeps(py, &parts);
+    if parts[0].extract::<PyRef<crate::sweep::Sweep>>().is_ok() {
+        return crate::sweep::merge_sweeps(py, &parts);
     }
     let docs = parts
         .iter()
@@ -332,7 +345,9 @@ pub fn merge(py: Python<'_>, parts: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny>
             } else if let Ok(text) = p.extract::<String>() {
                 Study::from_json(&text)?.report
             } else {
-                return Err(err(format!("merge: part {i} is neither a Study nor JSON text")));
+                return Err(err(format!(
+                    "merge: part {i} is neither a Study nor JSON text"
+                )));
             };
             Ok((format!("part {}", i + 1), report))
         })

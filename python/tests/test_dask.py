@@ -1,28 +1,59 @@
 """A study split into shards run as tasks on a dask.distributed cluster,
-merged: equal to one run (docs/python.md). The workers are separate
-processes, as on a cluster, so scenes and studies cross a pickle boundary."""
+merged: equal to one run. The workers are separate processes, as on a
+cluster, so scenes and studies cross a pickle boundary. The example of
+docs/python.md is run as written; its Slurm example calls the same
+function, with only the cluster made differently."""
 
+import pathlib
+import re
+
+import numpy as np
 import pytest
 
 import kinrepro
+import kinrepro.cluster
 
 distributed = pytest.importorskip("distributed")
 
+DOC = pathlib.Path(__file__).resolve().parents[2] / "docs" / "python.md"
 
-def test_four_shards_on_a_local_cluster_merge_to_one_run(scene01, study01):
+
+def doc_blocks():
+    text = DOC.read_text()
+    section = text.split("## Studies on a Dask cluster", 1)[1].split("\n## ", 1)[0]
+    return re.findall(r"```python\n(.*?)```", section, re.S)
+
+
+@pytest.fixture(scope="module")
+def client():
     with distributed.LocalCluster(
         n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
     ) as cluster, distributed.Client(cluster) as client:
-        futures = [
-            client.submit(
-                kinrepro.study, scene01, samples=400, sampler="mc", seed=9,
-                shard=f"{i}/4", jobs=1, pure=False,
-            )
-            for i in range(1, 5)
-        ]
-        parts = client.gather(futures)
-    assert sorted(p.shard for p in parts) == [(i, 4) for i in range(1, 5)]
-    merged = kinrepro.merge(parts)
+        yield client
+
+
+def test_four_shards_on_a_local_cluster_merge_to_one_run(client, scene01, study01):
+    merged = kinrepro.cluster.study(client, scene01, shards=4, samples=400, sampler="mc", seed=9,
+                                    jobs=1)
     assert merged.sigma("centre") == study01.sigma("centre")
-    assert merged.poses().tolist() == study01.poses().tolist()
+    np.testing.assert_array_equal(merged.poses(), study01.poses())
     assert merged.to_json() == kinrepro.merge([study01]).to_json()
+
+
+def test_sweep_shards_on_a_local_cluster(client, scene01):
+    sets = {"preload.force": [10, 20, 40]}
+    one = kinrepro.sweep(scene01, sets=sets, samples=10, seed=4)
+    assert kinrepro.cluster.sweep(client, scene01, sets, shards=2, samples=10, seed=4, jobs=1) == one
+
+
+def test_the_doc_example_runs_and_the_slurm_one_is_the_same_call(study01, tmp_path, monkeypatch):
+    local, slurm = doc_blocks()
+    assert "LocalCluster(" in local and "SLURMCluster(" in slurm
+    call = "kinrepro.cluster.study(client, scene, shards="
+    assert call in local and call in slurm
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "scenes").symlink_to(DOC.parents[1] / "scenes")
+    env = {}
+    exec(compile(local, str(DOC), "exec"), env)
+    assert env["study"] == kinrepro.merge([study01])
+    assert (tmp_path / "study.json").read_text() == kinrepro.merge([study01]).to_json()

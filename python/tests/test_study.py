@@ -153,3 +153,47 @@ def test_several_scenes_are_the_cli_study_of_several(cli):
     assert json.loads(s.to_json()) == theirs
     assert s.sigma(variant=1) == theirs["variants"][1]["points"][0]["sigma"]
     assert "samples=10" in repr(s) and '"lhs"' in repr(s)
+
+
+OPTION_ERRORS = [
+    (dict(vary=("friction", "start"), solver="dynamic"), ["--vary", "friction,start", "--solver", "dynamic"]),
+    (dict(offset_bounds=(0, 0, 1e-6)), ["--offset-bounds", "0,0,1e-6"]),
+    (dict(vary=("start",), solver="dynamic", tilt_bounds=(-1e-3, 0, 0)),
+     ["--vary", "start", "--solver", "dynamic", "--tilt-bounds=-1e-3,0,0"]),
+    (dict(sampler="corners", samples=10), ["--sampler", "corners", "--samples", 10]),
+    (dict(solver="dynamic", increments=5), ["--solver", "dynamic", "--increments", 5]),
+    (dict(increments=0), ["--increments", 0]),
+    (dict(sensitivity=True, sobol_samples=1), ["--sensitivity", "--sobol-samples", 1]),
+    (dict(sensitivity=True, samples=200_000, sampler="mc"),
+     ["--sensitivity", "--samples", 200_000, "--sampler", "mc"]),
+    (dict(vary=("preload",)), ["--vary", "preload"]),
+    (dict(jobs=0), ["--jobs", 0]),
+]
+
+
+@pytest.mark.parametrize("kwargs, flags", OPTION_ERRORS, ids=[str(k) for k, _ in OPTION_ERRORS])
+def test_option_errors_are_the_clis(scene01, kwargs, flags):
+    # One library function checks the options of both (study::request):
+    # the same options are refused with the same message.
+    from conftest import cli_path
+    import subprocess
+
+    with pytest.raises(kinrepro.KinreproError) as e:
+        kinrepro.study(scene01, **kwargs)
+    if not cli_path().is_file():
+        pytest.skip("the kinrepro CLI is not built")
+    r = subprocess.run([str(cli_path()), "study", "scenes/01_maxwell_vgroove_steel.toml",
+                        *map(str, flags)], capture_output=True, text=True)
+    assert r.returncode != 0
+    assert r.stderr.splitlines()[-1] == f"error: {e.value}"
+
+
+def test_dynamic_start_study_is_the_clis(scene01, cli):
+    # The options of the dynamic solver with a varied start pose, through
+    # the same request: the same document.
+    s = kinrepro.study(scene01, samples=4, sampler="mc", seed=2, vary=("friction", "start"),
+                       solver="dynamic", offset_bounds=(1e-5, 1e-5, 2e-5), tilt_bounds=(1e-3, 1e-3, 0))
+    theirs = cli("study", "scenes/01_maxwell_vgroove_steel.toml", "--samples", 4, "--sampler", "mc",
+                 "--seed", 2, "--vary", "friction,start", "--solver", "dynamic",
+                 "--offset-bounds", "1e-5,1e-5,2e-5", "--tilt-bounds", "1e-3,1e-3,0", "--format", "json")
+    assert json.loads(s.to_json()) == theirs

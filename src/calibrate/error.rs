@@ -26,6 +26,9 @@ pub enum CalibrateError {
         line: usize,
         reason: String,
     },
+    /// Bad measured numbers given as an array (`Measurement::from_cycles`).
+    #[error("{origin}: {reason}")]
+    Array { origin: String, reason: String },
     #[error("{file}: cannot read: {reason}")]
     Read { file: String, reason: String },
     /// A bad `--noise` entry (or `# noise:` metadata).

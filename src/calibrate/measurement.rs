@@ -143,14 +143,8 @@ impl Measurement {
             let mut row = Vec::with_capacity(columns.len());
             for (k, &(c, f)) in columns.iter().enumerate() {
                 let v = self.number(line, c, &names[c], &cells[c])? * f;
-                let max = MAX_READING[usize::from(self.dofs[k] >= 3)];
-                if v.abs() > max {
-                    let unit = ["m", "rad"][usize::from(self.dofs[k] >= 3)];
-                    let r = format!(
-                        "`{}` is {v:e} {unit}: a reading of a seated coupling lies within {max} {unit} \
-                         (check the column's unit)",
-                        cells[c]
-                    );
+                if let Some(r) = reading_out_of_range(self.dofs[k], v) {
+                    let r = format!("`{}` is {r} (check the column's unit)", cells[c]);
                     return Err(self.err(line, c, &names[c], r));
                 }
                 row.push(v);
@@ -344,6 +338,15 @@ impl Measurement {
         };
         Some(super::model::covariance(rows))
     }
+}
+
+/// Why a reading `v` [SI] of DOF `dof` cannot be a seated coupling's
+/// (`{v} m: a reading ... lies within 1 m`), or None.
+pub(crate) fn reading_out_of_range(dof: usize, v: f64) -> Option<String> {
+    let rotation = usize::from(dof >= 3);
+    let (max, unit) = (MAX_READING[rotation], ["m", "rad"][rotation]);
+    (v.abs() > max)
+        .then(|| format!("{v:e} {unit}: a reading of a seated coupling lies within {max} {unit}"))
 }
 
 /// `reason`, with a hint at `--delimiter` if `text` holds a delimiter other

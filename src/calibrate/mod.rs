@@ -3,7 +3,8 @@
 //! remedy: "the variation of the coefficient of friction in the
 //! model can be refined based on measurement results").
 //!
-//! * [`measurement`]: the measured-data formats (docs/measurements.md).
+//! * [`measurement`]: the measured-data formats (docs/measurements.md);
+//!   [`measured_array`]: the same cycles given as numbers in SI.
 //! * [`model`]: the model covariance of one point from a Monte Carlo study.
 //! * [`params`]: the parameters `--fit` may name and their searched ranges.
 //! * [`grid`]: the model covariance on a common-random-number grid over the
@@ -25,6 +26,7 @@ pub mod grid;
 pub mod information;
 pub mod joint;
 pub mod likelihood;
+pub mod measured_array;
 pub mod measurement;
 pub mod model;
 pub mod params;

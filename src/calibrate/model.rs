@@ -20,6 +20,20 @@ pub const MODEL_SAMPLES: usize = 2000;
 /// Seed of the model studies (`--seed`); a synthetic measurement must use another.
 pub const MODEL_SEED: u64 = 15_015;
 
+/// Fewest samples of a model study (`--model-samples`, `predict --samples`).
+pub const MIN_MODEL_SAMPLES: usize = 100;
+
+/// A model study's sample count `n` given by `flag`: at least
+/// [`MIN_MODEL_SAMPLES`].
+pub fn check_model_samples(flag: &str, n: usize) -> Result<usize, String> {
+    if n < MIN_MODEL_SAMPLES {
+        return Err(format!(
+            "{flag} {n}: need at least {MIN_MODEL_SAMPLES} samples"
+        ));
+    }
+    Ok(n)
+}
+
 /// What every model study of a calibration shares.
 #[derive(Debug, Clone, Copy)]
 pub struct StudySpec<'a> {

@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 use super::ExploreError;
 use super::field::SweptValue;
 use super::values::Set;
+use crate::assembly::Coupling;
 use crate::study::{Sampler, sampling};
 
 /// How the design points are chosen.
@@ -22,6 +23,18 @@ pub enum DesignKind {
 }
 
 impl DesignKind {
+    /// A grid (`points` None), or an LHS of `points` design points seeded
+    /// like each point's study: `seed`, else the scene's `[study]` seed.
+    pub fn new(points: Option<usize>, seed: Option<u64>, base: &Coupling) -> DesignKind {
+        match points {
+            None => DesignKind::Grid,
+            Some(points) => DesignKind::Lhs {
+                points,
+                seed: seed.unwrap_or(base.scene.study.seed),
+            },
+        }
+    }
+
     pub fn name(&self) -> &'static str {
         match self {
             DesignKind::Grid => "grid",

@@ -127,6 +127,11 @@ pub fn evaluate(
         nominal: None,
         run: None,
     };
+    // A stopped run (`cancel::request`) skips the points not yet begun.
+    if crate::cancel::requested() {
+        e.outcome = Outcome::Failed("stopped: a stop was requested".into());
+        return e;
+    }
     let scene = match Scene::parse(text, label) {
         Ok(s) => s,
         Err(err) => {

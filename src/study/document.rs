@@ -7,10 +7,11 @@
 
 use super::DesignSpec;
 use super::bounds::{self, MAX_KEPT_SEATINGS, MAX_STREAMED_SAMPLES};
+use super::request::OptionError;
 use super::result::{StudyReport, StudyRunError, VariantReport};
 use super::runner::{PathTally, Progress, StudyOptions, check_options, design_for, run_variant};
 use super::sensitivity::sobol_run::run_sobol;
-use super::stream::{RecordSink, run_streamed, streams};
+use super::stream::{RecordSink, STREAM_ABOVE, run_streamed, streams};
 use super::summary::attach_sobol;
 use crate::assembly::Coupling;
 
@@ -30,7 +31,9 @@ pub struct StudyPlan<'a> {
 
 impl<'a> StudyPlan<'a> {
     /// Check the options against every scene and draw up its design;
-    /// `sobol_samples`: the base sample size of Sobol indices, if asked for.
+    /// `sobol_samples`: the base sample size of Sobol indices, if asked for
+    /// (refused, like any sensitivity, on a streamed study: it keeps no
+    /// samples).
     pub fn new(
         couplings: &'a [Coupling],
         opts: StudyOptions,
@@ -66,13 +69,20 @@ impl<'a> StudyPlan<'a> {
             seatings += run + sobol_rows;
             designs.push(d);
         }
-        Ok(StudyPlan {
+        let plan = StudyPlan {
             couplings,
             designs,
             opts,
             sobol,
             seatings,
-        })
+        };
+        if plan.streamed() && opts.sensitivity {
+            return Err(OptionError(format!(
+                "--sensitivity keeps every sample in memory: not available for Monte Carlo studies above {STREAM_ABOVE} samples"
+            ))
+            .into());
+        }
+        Ok(plan)
     }
 
     /// True if scene `i` streams: a Monte Carlo design above

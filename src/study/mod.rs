@@ -4,6 +4,8 @@
 //!
 //! * [`document`]: a study of several scenes into one [`StudyReport`] (plan and run);
 //!   [`runner`]: one scene's seatings; [`stream`]: large Monte Carlo studies in bounded memory.
+//! * [`request`]: a study's options as the CLI and the Python package receive them, checked
+//!   into [`runner::StudyOptions`] in one place.
 //! * [`result`], [`record`]: the document's types ([`StudyReport`], [`VariantReport`],
 //!   [`PointStats`], [`StudyRecord`]); [`summary`]: their statistics; [`merge`]: shard parts
 //!   into one document; [`provenance`]: schema version and the fingerprint of a study.
@@ -49,6 +51,7 @@ pub mod merge;
 pub mod paths;
 pub mod provenance;
 pub mod record;
+pub mod request;
 pub mod result;
 mod rng;
 pub mod run_error;

@@ -31,6 +31,10 @@ pub enum StudyRunError {
         #[source]
         source: StudyError,
     },
+    /// Options that do not go together with the plan (`--sensitivity` on
+    /// a streamed study).
+    #[error(transparent)]
+    Option(#[from] super::request::OptionError),
     /// The sink of a streamed study's records failed (e.g. its CSV file).
     #[error(transparent)]
     Sink(Box<dyn std::error::Error + Send + Sync>),

@@ -5,20 +5,22 @@ use kinrepro::study::{StudyPlan, StudyReport};
 
 use super::*;
 use crate::error::CliError;
-use crate::flags::high::{Checked, check_plan};
+use crate::flags::high::Checked;
 use crate::flags::low::{MergeArgs, StudyArgs};
-use kinrepro::study::runner::StudyOptions;
+use kinrepro::study::request::StudySettings;
 
-pub fn study(o: Checked<StudyArgs, StudyOptions>) -> Result<(), CliError> {
+pub fn study(o: Checked<StudyArgs, StudySettings>) -> Result<(), CliError> {
     let Checked { args: a, opts } = o;
+    let StudySettings {
+        options: opts,
+        sobol_samples,
+    } = opts;
     let couplings = a
         .scenes
         .iter()
         .map(|p| kinrepro::error::read_coupling(p))
         .collect::<Result<Vec<_>, _>>()?;
-    let sobol = a.sensitivity.then_some(a.sobol_samples);
-    let plan = StudyPlan::new(&couplings, opts, sobol)?;
-    check_plan(&plan, &opts)?;
+    let plan = StudyPlan::new(&couplings, opts, sobol_samples)?;
     set_jobs(a.jobs, plan.seatings)?;
     let bar = progress(plan.seatings, &opts.method)?;
     // A streamed study writes its per-sample CSV as the samples arrive.

@@ -18,13 +18,7 @@ pub fn sweep(o: Checked<SweepArgs, StudyOptions>) -> Result<(), CliError> {
     let text = read_text(&a.scene)?;
     let base = kinrepro::scene::Scene::parse(&text, &file)?;
     let base = kinrepro::assembly::Coupling::new(&base).context(&file)?;
-    let design = match a.points {
-        None => DesignKind::Grid,
-        Some(points) => DesignKind::Lhs {
-            points,
-            seed: opts.seed.unwrap_or(base.scene.study.seed),
-        },
-    };
+    let design = DesignKind::new(a.points, opts.seed, &base);
     let spec = SweepSpec::new(&file, &text, &a.sets, design)?;
     // One tick per seated sample (points that cannot seat tick none).
     let points = spec.points()?.len();

@@ -9,12 +9,12 @@ use kinrepro::calibrate::units::parse_noise;
 use kinrepro::contact::{ContactPair, ContactShape, Friction, PairCurvature};
 use kinrepro::fe::MeshOptions;
 use kinrepro::material::Material;
-use kinrepro::solve::dynamic::{DynamicOptions, StartPose};
+use kinrepro::solve::Method;
+use kinrepro::solve::dynamic::StartPose;
 use kinrepro::solve::quasistatic::ExternalLoad;
-use kinrepro::solve::{Method, SolverOptions};
-use kinrepro::study::runner::{StartBounds, StudyOptions, Variation};
-use kinrepro::study::stream::STREAM_ABOVE;
-use kinrepro::study::{Sampler, Shard, StudyPlan};
+use kinrepro::study::Shard;
+use kinrepro::study::request::{self, StudyRequest, StudySettings};
+use kinrepro::study::runner::StudyOptions;
 use nalgebra::Vector3;
 
 use super::low::*;
@@ -55,9 +55,6 @@ fn usage(message: impl Into<String>) -> CliError {
     CliError::Usage(message.into())
 }
 
-/// Fewest model samples accepted (`--model-samples`, `predict --samples`).
-const MIN_MODEL_SAMPLES: usize = 100;
-
 /// The arguments that need no conversion, checked: `stiffness --at`.
 pub fn stiffness(a: &StiffnessArgs) -> Result<Option<Vector3<f64>>, CliError> {
     a.at.as_deref()
@@ -71,32 +68,14 @@ pub fn predict(a: &PredictArgs) -> Result<(), CliError> {
     jobs(a.jobs)
 }
 
-/// The seating solver: `--increments` (default 20) for the quasi-static
-/// one, `start` for the dynamic one.
+/// The seating solver: `--increments` for the quasi-static one, `start`
+/// for the dynamic one (checked by the library, [`request::method`]).
 fn method(
     solver: SolverKind,
     increments: Option<usize>,
     start: StartPose,
 ) -> Result<Method, CliError> {
-    use kinrepro::solve::INCREMENTS;
-    let increments = increments.unwrap_or(SolverOptions::default().increments);
-    if !INCREMENTS.contains(&increments) {
-        return Err(usage(format!(
-            "--increments {increments}: out of range, need {}..={} load increments",
-            INCREMENTS.start(),
-            INCREMENTS.end()
-        )));
-    }
-    Ok(match solver {
-        SolverKind::QuasiStatic => Method::QuasiStatic(SolverOptions {
-            increments,
-            ..Default::default()
-        }),
-        SolverKind::Dynamic => Method::Dynamic(DynamicOptions {
-            start,
-            ..Default::default()
-        }),
-    })
+    request::method(solver.into(), increments, start).map_err(|e| usage(e.0))
 }
 
 /// `--jobs`: at least one worker thread (capped when the pool is built).
@@ -132,24 +111,10 @@ fn finite3(flag: &str, v: Option<&[f64]>) -> Result<Vector3<f64>, CliError> {
     }
 }
 
-/// A sample count of a model study (`flag`): at least [`MIN_MODEL_SAMPLES`].
+/// A sample count of a model study (`flag`): at least
+/// [`kinrepro::calibrate::model::MIN_MODEL_SAMPLES`].
 fn model_samples(flag: &str, n: usize) -> Result<usize, CliError> {
-    if n < MIN_MODEL_SAMPLES {
-        return Err(usage(format!(
-            "{flag} {n}: need at least {MIN_MODEL_SAMPLES} samples"
-        )));
-    }
-    Ok(n)
-}
-
-/// The design of a study: `--samples` does not go with the corner design.
-fn study_design(opts: StudyOptions) -> Result<StudyOptions, CliError> {
-    if opts.sampler == Some(Sampler::Corners) && opts.samples.is_some() {
-        return Err(usage(
-            "--samples does not apply to --sampler corners: the corner design has all 2^d extremes",
-        ));
-    }
-    Ok(opts)
+    kinrepro::calibrate::model::check_model_samples(flag, n).map_err(usage)
 }
 
 pub fn contact(a: &ContactArgs) -> Result<ContactInputs, CliError> {
@@ -215,7 +180,6 @@ fn principal_radii(flag: &str, v: &[f64]) -> Result<[f64; 2], CliError> {
 }
 
 pub fn run(a: &RunArgs) -> Result<Method, CliError> {
-    super::unused::run(a)?;
     if a.solver == SolverKind::QuasiStatic
         && (a.trace.is_some() || a.offset.is_some() || a.tilt.is_some())
     {
@@ -242,64 +206,35 @@ pub fn load(a: &LoadArgs) -> Result<ExternalLoad, CliError> {
     Ok(load)
 }
 
-pub fn study(a: &StudyArgs) -> Result<StudyOptions, CliError> {
+/// `kinrepro study`: the flags as the library's [`StudyRequest`], checked
+/// there (the Python package's `study` makes the same request).
+pub fn study(a: &StudyArgs) -> Result<StudySettings, CliError> {
     super::unused::study(a)?;
-    let start = if a.vary.contains(&VaryKind::Start) {
-        let bounds = |flag: &str, v: Option<&[f64]>| {
-            let v = vector3(flag, v)?;
-            if v.iter().any(|x| !x.is_finite() || *x < 0.0) {
-                return Err(usage(format!("--{flag}: bounds must be finite and >= 0")));
-            }
-            Ok(v)
-        };
-        let b = StartBounds {
-            offset: bounds("offset-bounds", a.offset_bounds.as_deref())?,
-            tilt: bounds("tilt-bounds", a.tilt_bounds.as_deref())?,
-        };
-        if b.offset.iter().chain(b.tilt.iter()).all(|x| *x == 0.0) {
-            return Err(usage(
-                "--vary start needs its bounds: --offset-bounds X,Y,Z [m] and/or --tilt-bounds X,Y,Z [rad] (half-widths; without them the start would not vary)",
-            ));
-        }
-        Some(b)
-    } else if a.offset_bounds.is_some() || a.tilt_bounds.is_some() {
-        return Err(usage("--offset-bounds and --tilt-bounds need --vary start"));
-    } else {
-        None
-    };
-    if a.sensitivity && a.sobol_samples < 2 {
-        return Err(usage(
-            "--sobol-samples: the base sample size must be at least 2",
-        ));
-    }
     jobs(a.jobs)?;
-    study_design(StudyOptions {
+    let triple = |flag: &str, v: Option<&[f64]>| {
+        v.map(|v| vector3(flag, Some(v)).map(Into::into))
+            .transpose()
+    };
+    StudyRequest {
         sampler: a.sampler,
         samples: a.samples,
         seed: a.seed,
         shard: a.shard.unwrap_or_else(Shard::whole),
-        method: method(a.solver, a.increments, StartPose::touching())?,
-        variation: Variation {
-            friction: a.vary.contains(&VaryKind::Friction),
-            preload: a.vary.contains(&VaryKind::Preload),
-            tolerances: a.vary.contains(&VaryKind::Tolerances),
-            start,
-        },
+        solver: a.solver.into(),
+        increments: a.increments,
+        vary: a.vary.iter().map(|&v| v.into()).collect(),
+        offset_bounds: triple("offset-bounds", a.offset_bounds.as_deref())?,
+        tilt_bounds: triple("tilt-bounds", a.tilt_bounds.as_deref())?,
         sensitivity: a.sensitivity,
+        sobol_samples: a.sensitivity.then_some(a.sobol_samples),
         replicates: a.replicates,
-    })
-}
-
-/// `--sensitivity` against the plan: a streamed study keeps no samples.
-pub fn check_plan(plan: &StudyPlan, opts: &StudyOptions) -> Result<(), CliError> {
-    if plan.streamed() && opts.sensitivity {
-        return Err(usage(format!(
-            "--sensitivity keeps every sample in memory: not available for Monte Carlo studies above {STREAM_ABOVE} samples"
-        )));
     }
-    Ok(())
+    .check()
+    .map_err(|e| usage(e.0))
 }
 
+/// `kinrepro sweep`: each design point's study, friction varied and
+/// quasi-static, as the library's [`StudyRequest`].
 pub fn sweep(a: &SweepArgs) -> Result<StudyOptions, CliError> {
     super::unused::sweep(a)?;
     match (a.design, a.points) {
@@ -307,23 +242,16 @@ pub fn sweep(a: &SweepArgs) -> Result<StudyOptions, CliError> {
         (DesignArg::Lhs, None) => return Err(usage("--design lhs needs --points N")),
         _ => jobs(a.jobs)?,
     }
-    study_design(StudyOptions {
+    let request = StudyRequest {
         sampler: a.sampler,
         samples: a.samples,
         seed: a.seed,
         shard: a.shard.unwrap_or_else(Shard::whole),
-        method: method(
-            SolverKind::QuasiStatic,
-            Some(a.increments),
-            StartPose::touching(),
-        )?,
-        variation: Variation {
-            friction: true,
-            ..Default::default()
-        },
-        sensitivity: false,
+        increments: Some(a.increments),
         replicates: a.replicates,
-    })
+        ..StudyRequest::default()
+    };
+    Ok(request.check().map_err(|e| usage(e.0))?.options)
 }
 
 pub fn validate_hertz(a: &ValidateHertzArgs) -> Result<MeshOptions, CliError> {
@@ -372,7 +300,10 @@ pub fn calibrate(a: &CalibrateArgs) -> Result<CalibrateInputs, CliError> {
     }
     jobs(a.jobs)?;
     Ok(CalibrateInputs {
-        delimiter: a.delimiter.as_deref().map(delimiter).transpose()?,
+        delimiter: (a.delimiter.as_deref())
+            .map(kinrepro::delimited::delimiter_named)
+            .transpose()
+            .map_err(usage)?,
         options: CalibrateOptions {
             fit: a.fit.iter().map(|s| s.trim().to_string()).collect(),
             noise,
@@ -382,17 +313,4 @@ pub fn calibrate(a: &CalibrateArgs) -> Result<CalibrateInputs, CliError> {
             method: Method::default(),
         },
     })
-}
-
-/// `--delimiter`: one ASCII character, or `tab`, `comma`, `semicolon`.
-fn delimiter(s: &str) -> Result<u8, CliError> {
-    match s {
-        "tab" | "\\t" => Ok(b'\t'),
-        "comma" => Ok(b','),
-        "semicolon" => Ok(b';'),
-        _ if s.len() == 1 && s.is_ascii() && s != "\"" && s != "#" => Ok(s.as_bytes()[0]),
-        _ => Err(usage(format!(
-            "--delimiter `{s}`: give one character such as `,` or `;`, or `tab` (not `\"` or `#`)"
-        ))),
-    }
 }

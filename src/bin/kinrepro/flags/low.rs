@@ -309,3 +309,23 @@ pub enum SolverKind {
     /// Seating dynamics with rapier3d-f64 and the compliant contact layer.
     Dynamic,
 }
+
+impl From<VaryKind> for kinrepro::study::request::Varied {
+    fn from(v: VaryKind) -> Self {
+        match v {
+            VaryKind::Friction => Self::Friction,
+            VaryKind::Start => Self::Start,
+            VaryKind::Preload => Self::Preload,
+            VaryKind::Tolerances => Self::Tolerances,
+        }
+    }
+}
+
+impl From<SolverKind> for kinrepro::study::request::Solver {
+    fn from(s: SolverKind) -> Self {
+        match s {
+            SolverKind::QuasiStatic => Self::QuasiStatic,
+            SolverKind::Dynamic => Self::Dynamic,
+        }
+    }
+}

@@ -2,11 +2,13 @@
 //! naming the flag and what it needs, so that a run never silently ignores
 //! what the user asked for. Rules that clap expresses (`requires`) are on
 //! the flags themselves ([`super::low`]); these are the ones that depend on
-//! a flag's value or on one of several other flags.
+//! a flag's value or on one of several other flags. (`--increments` with
+//! the dynamic solver is refused by the library's
+//! `kinrepro::study::request::method`, for the Python package too.)
 
 use std::path::PathBuf;
 
-use super::low::{ContactArgs, RunArgs, SolverKind};
+use super::low::ContactArgs;
 use super::low_study::{StudyArgs, SweepArgs};
 use crate::error::CliError;
 
@@ -25,17 +27,6 @@ pub fn contact(a: &ContactArgs) -> Result<(), CliError> {
     }
 }
 
-/// `--increments` with the dynamic solver (its time step comes from the
-/// contact frequencies, not from load increments).
-fn increments(solver: SolverKind, increments: Option<usize>) -> Result<(), CliError> {
-    match (solver, increments) {
-        (SolverKind::Dynamic, Some(n)) => Err(usage(format!(
-            "--increments {n}: has no effect with --solver dynamic (load increments belong to the quasi-static solver; the dynamic one steps in time)"
-        ))),
-        _ => Ok(()),
-    }
-}
-
 /// `--force` without any of the output files it would replace.
 fn force(force: bool, outputs: [&Option<PathBuf>; 2]) -> Result<(), CliError> {
     if force && outputs.iter().all(|o| o.is_none()) {
@@ -46,12 +37,7 @@ fn force(force: bool, outputs: [&Option<PathBuf>; 2]) -> Result<(), CliError> {
     Ok(())
 }
 
-pub fn run(a: &RunArgs) -> Result<(), CliError> {
-    increments(a.solver, a.increments)
-}
-
 pub fn study(a: &StudyArgs) -> Result<(), CliError> {
-    increments(a.solver, a.increments)?;
     force(a.force, [&a.out, &a.html])
 }
 
