@@ -185,7 +185,9 @@ impl<'a> Solver<'a> {
         tangent: bool,
         out: &mut Vec<ContactEval>,
     ) {
-        out.resize_with(states.len(), ContactEval::empty);
+        if out.len() != states.len() {
+            out.resize_with(states.len(), ContactEval::empty);
+        }
         let motion = Motion::between(pose, committed_pose);
         // Two passes over each group of contacts: first geometry and the
         // normal part (the long square- and cube-root chains) of every
@@ -345,16 +347,6 @@ impl<'a> Solver<'a> {
     }
 }
 
-/// a x b on arrays.
-#[inline(always)]
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
 /// Add one contact to the Jacobian: force rows K dp, moment rows
 /// p x (K dp) + dp_moving x f, with dp = v - [p]x w at the contact point p
 /// and at the ball centre `moving` (the point the force's line moves with):
@@ -362,8 +354,10 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
 /// [ K        -K [p]x                      ]
 /// [ [p]x K - [f]x    -[p]x K [p]x + m f^T - (f . m) I ]
 /// ```
-/// ([f]x [m]x = m f^T - (f . m) I), written out on the components (no 3x3
-/// products formed).
+/// ([f]x [m]x = m f^T - (f . m) I), column by column on 3-vectors (no 3x3
+/// products formed): column c of -K [p]x is -K (p x e_c), a combination of
+/// two columns of K, and those of [p]x K and [p]x (-K [p]x) are p x the
+/// columns of K and of -K [p]x.
 #[inline(always)]
 fn add_contact(
     j: &mut Matrix6<f64>,
@@ -372,26 +366,32 @@ fn add_contact(
     p: &Vector3<f64>,
     moving: &Vector3<f64>,
 ) {
-    let pa = [p.x, p.y, p.z];
-    // kp = -K [p]x, row r: -(k_r x p).
-    let mut kp = [[0.0; 3]; 3];
-    for (r, row) in kp.iter_mut().enumerate() {
-        let c = cross([k[(r, 0)], k[(r, 1)], k[(r, 2)]], pa);
-        *row = [-c[0], -c[1], -c[2]];
-    }
+    let kc = [k.column(0), k.column(1), k.column(2)].map(|c| c.into_owned());
+    let kp = [
+        kc[2] * p.y - kc[1] * p.z,
+        kc[0] * p.z - kc[2] * p.x,
+        kc[1] * p.x - kc[0] * p.y,
+    ];
     let fx = f.cross_matrix();
     let dot = f.dot(moving);
+    let columns = &mut j.data.0;
     for c in 0..3 {
-        // Column c of [p]x K and of [p]x kp.
-        let pk = cross(pa, [k[(0, c)], k[(1, c)], k[(2, c)]]);
-        let pkp = cross(pa, [kp[0][c], kp[1][c], kp[2][c]]);
-        for r in 0..3 {
-            let fm = moving[r] * f[c] - if r == c { dot } else { 0.0 };
-            j[(r, c)] += k[(r, c)];
-            j[(r, c + 3)] += kp[r][c];
-            j[(r + 3, c)] += pk[r] - fx[(r, c)];
-            j[(r + 3, c + 3)] += pkp[r] + fm;
-        }
+        let pk = p.cross(&kc[c]) - fx.column(c);
+        let mut fm = moving * f[c];
+        fm[c] -= dot;
+        let pkp = p.cross(&kp[c]) + fm;
+        let (left, right) = columns.split_at_mut(3);
+        add3(&mut left[c], &kc[c], &pk);
+        add3(&mut right[c], &kp[c], &pkp);
+    }
+}
+
+/// Column `col` of the Jacobian += (top, bottom).
+#[inline(always)]
+fn add3(col: &mut [f64; 6], top: &Vector3<f64>, bottom: &Vector3<f64>) {
+    for r in 0..3 {
+        col[r] += top[r];
+        col[r + 3] += bottom[r];
     }
 }
 
