@@ -53,11 +53,17 @@ impl BodyPose {
 /// cos(t/2) = 1 - t^2/8 + t^4/384, sin(t/2)/t = 1/2 - t^2/48 + t^4/3840,
 /// whose first omitted terms (t^6/46080, t^6/645120) are below 1e-22, so
 /// that it equals sin and cos to rounding without calling them; above, as
-/// nalgebra's `UnitQuaternion::from_scaled_axis`.
+/// nalgebra's `UnitQuaternion::from_scaled_axis`. A turn t <= 2 eps is
+/// none, as in nalgebra's: the rounding noise of a symmetric seating's
+/// corrections leaves its pose exactly unrotated (`study::verdict` asks
+/// whether two seated poses are equal).
 pub fn rotation_exp(w: &Vector3<f64>) -> UnitQuaternion<f64> {
     let t2 = w.norm_squared();
     if t2 >= 1e-6 {
         return UnitQuaternion::from_scaled_axis(*w);
+    }
+    if 0.25 * t2 <= f64::EPSILON * f64::EPSILON {
+        return UnitQuaternion::identity();
     }
     let c = 1.0 - t2 / 8.0 * (1.0 - t2 / 48.0);
     let s = 0.5 * (1.0 - t2 / 24.0 * (1.0 - t2 / 80.0));

@@ -478,5 +478,12 @@ mod tests {
             }
         }
         assert_eq!(rotation_log(&UnitQuaternion::identity()), Vector3::zeros());
+        // A turn of rounding size is none, as in nalgebra's exp.
+        let noise = Vector3::new(1e-19, -2e-19, 4e-17);
+        assert_eq!(rotation_exp(&noise), UnitQuaternion::identity());
+        assert_eq!(
+            UnitQuaternion::from_scaled_axis(noise),
+            UnitQuaternion::identity()
+        );
     }
 }
