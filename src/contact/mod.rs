@@ -353,7 +353,10 @@ impl ContactLaw {
     /// k = coef a(F_mid) about `major_axis` (zero: circular), the 3x3
     /// tensor in the plane of `normal`, and, if `tangent`,
     /// dK_t/dF_n = K_t / (3 F_mid) d(F_mid)/dF_n = K_t / (6 F_mid) (zero
-    /// otherwise, or unloaded).
+    /// otherwise, or unloaded). Without `tangent` a circular contact's
+    /// tensor is left at zero: the laws read it only for the tangent (the
+    /// Coulomb law applies a circle's K_t by its value k, `coulomb::Circle`;
+    /// Mindlin-Deresiewicz reads its shape).
     #[inline]
     pub fn midpoint_stiffness(
         &self,
@@ -365,7 +368,11 @@ impl ContactLaw {
     ) -> (PrincipalStiffness, Matrix3<f64>, Matrix3<f64>) {
         let principal =
             PrincipalStiffness::new(self.mindlin.map(|c| c * a_mid), normal, major_axis);
-        let kt = principal.tensor(normal);
+        let kt = if tangent || principal.axes.is_some() {
+            principal.tensor(normal)
+        } else {
+            Matrix3::zeros()
+        };
         let dkt = if tangent && f_mid > 0.0 {
             kt * (1.0 / (6.0 * f_mid))
         } else {

@@ -83,7 +83,6 @@ pub fn evaluate(
 ) -> ContactEval {
     let g = coupling.geometry(i, pose);
     let moved = Moved {
-        geometry: g,
         du: Motion::between(pose, committed_pose).displacement(&g.point),
         committed,
         friction,
@@ -112,8 +111,20 @@ impl Motion {
     pub fn between(pose: &BodyPose, committed: &BodyPose) -> Self {
         let dq = committed.rotation * pose.rotation.inverse();
         let (w, v) = (dq.w, dq.imag());
-        let vx = v.cross_matrix();
-        let d = vx * (2.0 * w) + vx * vx * 2.0;
+        // [v]x^2 = v v^T - |v|^2 I, entry by entry (no 3x3 products; the
+        // diagonal -(v_j^2 + v_k^2) without cancellation).
+        let (xx, yy, zz) = (v.x * v.x, v.y * v.y, v.z * v.z);
+        let d = Matrix3::new(
+            -2.0 * (yy + zz),
+            2.0 * (v.x * v.y - w * v.z),
+            2.0 * (v.x * v.z + w * v.y),
+            2.0 * (v.y * v.x + w * v.z),
+            -2.0 * (xx + zz),
+            2.0 * (v.y * v.z - w * v.x),
+            2.0 * (v.z * v.x - w * v.y),
+            2.0 * (v.z * v.y + w * v.x),
+            -2.0 * (xx + yy),
+        );
         let b = (committed.translation - pose.translation) - d * pose.translation;
         Motion { d, b }
     }
@@ -124,12 +135,12 @@ impl Motion {
     }
 }
 
-/// The arguments of an evaluation: contact geometry at the trial pose,
-/// tangential increment du = p - p_c of the contact point ([`Motion`]),
-/// committed state and friction.
+/// The arguments of an evaluation besides the contact geometry at the
+/// trial pose (which the slot holds, [`evaluate_into`]): tangential
+/// increment du = p - p_c of the contact point ([`Motion`]), committed
+/// state and friction.
 #[derive(Debug, Clone, Copy)]
 pub struct Moved<'s> {
-    pub geometry: ContactGeometry,
     pub du: Vector3<f64>,
     pub committed: &'s TangentialState,
     pub friction: Friction,
@@ -178,7 +189,8 @@ impl NormalPart {
 
 /// Contact `i` evaluated into the slot `out` (the solvers' buffers,
 /// reused across iterations: no evaluation is built and then moved), from
-/// its [`NormalPart`]. With `tangent` false the tangent (`stiffness`,
+/// its [`NormalPart`] and the geometry at the trial pose, which the caller
+/// has written into `out.geometry`. With `tangent` false the tangent (`stiffness`,
 /// dK_t/dF_n and the law's derivatives) is not formed: `out.tangent` says
 /// whether `out.stiffness` belongs to this evaluation. Everything else is
 /// formed by the same operations either way, so a Newton iterate that
@@ -192,8 +204,8 @@ pub fn evaluate_into(
     normal: &NormalPart,
     tangent: bool,
 ) {
+    let g = out.geometry;
     let Moved {
-        geometry: g,
         du,
         committed,
         friction,
@@ -238,7 +250,6 @@ pub fn evaluate_into(
     }
     out.tangent = tangent;
     out.force = n * fn_ - tangential.force;
-    out.geometry = g;
     out.approach = approach;
     out.normal_force = fn_;
     out.normal_stiffness = kn;

@@ -30,11 +30,10 @@
 
 use std::ops::{AddAssign, SubAssign};
 
-use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
+use nalgebra::{Matrix3, Matrix6, UnitQuaternion, Vector3, Vector6};
 
 use super::external::ExternalLoad;
 use super::lu6::solve6;
-use crate::assembly::ContactGeometry;
 use crate::assembly::constraint::frictionless_preload_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
@@ -133,7 +132,8 @@ impl<'a> Solver<'a> {
     /// Preload factor and extra-load factor at path parameter s.
     pub fn loads_at(&self, s: f64) -> (f64, f64) {
         match self.program {
-            Program::Seat => (s.powf(1.5), 0.0),
+            // s^1.5 as s sqrt(s): one square root instead of pow.
+            Program::Seat => (s * s.sqrt(), 0.0),
             Program::Load { factor, .. } => (1.0, s * factor),
         }
     }
@@ -185,27 +185,26 @@ impl<'a> Solver<'a> {
         tangent: bool,
         out: &mut Vec<ContactEval>,
     ) {
-        out.resize_with(states.len(), ContactEval::empty);
+        if out.len() != states.len() {
+            out.resize_with(states.len(), ContactEval::empty);
+        }
         let motion = Motion::between(pose, committed_pose);
         // Two passes over each group of contacts: first geometry and the
         // normal part (the long square- and cube-root chains) of every
         // contact of the group, then the tangential law and the tangent, so
         // that the chains of different contacts overlap in the processor
         // (`contact_layer::NormalPart`; the same operations per contact).
-        let mut geometry = [ContactGeometry::default(); GROUP];
         let mut normal = [NormalPart::default(); GROUP];
         for start in (0..states.len()).step_by(GROUP) {
             let end = (start + GROUP).min(states.len());
             for i in start..end {
                 let g = self.coupling.geometry(i, pose);
                 normal[i - start] = NormalPart::new(self.coupling, i, &g, &states[i]);
-                geometry[i - start] = g;
+                out[i].geometry = g;
             }
             for i in start..end {
-                let g = geometry[i - start];
                 let moved = Moved {
-                    geometry: g,
-                    du: motion.displacement(&g.point),
+                    du: motion.displacement(&out[i].geometry.point),
                     committed: &states[i],
                     friction: self.friction[i].during(duration),
                 };
@@ -348,16 +347,6 @@ impl<'a> Solver<'a> {
     }
 }
 
-/// a x b on arrays.
-#[inline(always)]
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
 /// Add one contact to the Jacobian: force rows K dp, moment rows
 /// p x (K dp) + dp_moving x f, with dp = v - [p]x w at the contact point p
 /// and at the ball centre `moving` (the point the force's line moves with):
@@ -365,8 +354,10 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
 /// [ K        -K [p]x                      ]
 /// [ [p]x K - [f]x    -[p]x K [p]x + m f^T - (f . m) I ]
 /// ```
-/// ([f]x [m]x = m f^T - (f . m) I), written out on the components (no 3x3
-/// products formed).
+/// ([f]x [m]x = m f^T - (f . m) I), column by column on 3-vectors (no 3x3
+/// products formed): column c of -K [p]x is -K (p x e_c), a combination of
+/// two columns of K, and those of [p]x K and [p]x (-K [p]x) are p x the
+/// columns of K and of -K [p]x.
 #[inline(always)]
 fn add_contact(
     j: &mut Matrix6<f64>,
@@ -375,26 +366,32 @@ fn add_contact(
     p: &Vector3<f64>,
     moving: &Vector3<f64>,
 ) {
-    let pa = [p.x, p.y, p.z];
-    // kp = -K [p]x, row r: -(k_r x p).
-    let mut kp = [[0.0; 3]; 3];
-    for (r, row) in kp.iter_mut().enumerate() {
-        let c = cross([k[(r, 0)], k[(r, 1)], k[(r, 2)]], pa);
-        *row = [-c[0], -c[1], -c[2]];
-    }
+    let kc = [k.column(0), k.column(1), k.column(2)].map(|c| c.into_owned());
+    let kp = [
+        kc[2] * p.y - kc[1] * p.z,
+        kc[0] * p.z - kc[2] * p.x,
+        kc[1] * p.x - kc[0] * p.y,
+    ];
     let fx = f.cross_matrix();
     let dot = f.dot(moving);
+    let columns = &mut j.data.0;
     for c in 0..3 {
-        // Column c of [p]x K and of [p]x kp.
-        let pk = cross(pa, [k[(0, c)], k[(1, c)], k[(2, c)]]);
-        let pkp = cross(pa, [kp[0][c], kp[1][c], kp[2][c]]);
-        for r in 0..3 {
-            let fm = moving[r] * f[c] - if r == c { dot } else { 0.0 };
-            j[(r, c)] += k[(r, c)];
-            j[(r, c + 3)] += kp[r][c];
-            j[(r + 3, c)] += pk[r] - fx[(r, c)];
-            j[(r + 3, c + 3)] += pkp[r] + fm;
-        }
+        let pk = p.cross(&kc[c]) - fx.column(c);
+        let mut fm = moving * f[c];
+        fm[c] -= dot;
+        let pkp = p.cross(&kp[c]) + fm;
+        let (left, right) = columns.split_at_mut(3);
+        add3(&mut left[c], &kc[c], &pk);
+        add3(&mut right[c], &kp[c], &pkp);
+    }
+}
+
+/// Column `col` of the Jacobian += (top, bottom).
+#[inline(always)]
+fn add3(col: &mut [f64; 6], top: &Vector3<f64>, bottom: &Vector3<f64>) {
+    for r in 0..3 {
+        col[r] += top[r];
+        col[r + 3] += bottom[r];
     }
 }
 
@@ -427,7 +424,66 @@ pub(super) fn predictor(coupling: &Coupling) -> Vector6<f64> {
 /// The twist (v, w) with `from.moved(v, w) == to`.
 pub(super) fn twist_between(from: &BodyPose, to: &BodyPose) -> Vector6<f64> {
     let dq = to.rotation * from.rotation.inverse();
-    let w = dq.scaled_axis();
+    let w = rotation_log(&dq);
     let v = to.translation - dq * from.translation;
     Vector6::new(v.x, v.y, v.z, w.x, w.y, w.z)
+}
+
+/// The rotation vector w of the unit quaternion q = (c, v): w = 2
+/// atan2(|v|, |c|) v/|v| (v negated where c < 0: the angle in [0, pi]), as
+/// nalgebra's `UnitQuaternion::scaled_axis`. For |v| < 1e-4 (an
+/// increment's turn) by the series 2 atan(r)/r = 2 (1 - r^2/3 + r^4/5),
+/// r = |v|/|c|, whose first omitted term r^6/7 is below 1e-24: equal to
+/// rounding, without atan2 and the normalisation.
+fn rotation_log(q: &UnitQuaternion<f64>) -> Vector3<f64> {
+    let (c, v) = (q.w, q.imag());
+    let vv = v.norm_squared();
+    if vv >= 1e-8 {
+        return q.scaled_axis();
+    }
+    let r2 = vv / (c * c);
+    v * (2.0 / c * (1.0 - r2 / 3.0 * (1.0 - 0.6 * r2)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::assembly::rotation_exp;
+
+    /// The series of `rotation_exp` and `rotation_log` against nalgebra's
+    /// sin/cos and atan2 forms, over turns from 1e-12 to 1 rad on both
+    /// sides of the series' thresholds, and their round trip.
+    #[test]
+    fn rotation_series_equal_the_trigonometric_forms() {
+        let axes = [
+            Vector3::new(0.3, -0.5, 0.81),
+            Vector3::new(-1.0, 0.2, 0.0),
+            Vector3::new(0.0, 0.0, -1.0),
+        ];
+        for axis in axes {
+            let axis = axis.normalize();
+            for e in -120..=0 {
+                let w = axis * 10f64.powf(e as f64 / 10.0);
+                let q = rotation_exp(&w);
+                let reference = UnitQuaternion::from_scaled_axis(w);
+                assert!((q.coords - reference.coords).amax() <= 2e-16, "{w:?}");
+                assert!((q.norm() - 1.0).abs() <= 4e-16, "{w:?}");
+                let back = rotation_log(&reference);
+                let expected = reference.scaled_axis();
+                assert!((back - expected).amax() <= 1e-15 * w.norm(), "{w:?}");
+                assert!((back - w).amax() <= 1e-14 * w.norm(), "{w:?}");
+                // the other sign of the same rotation
+                let negated = UnitQuaternion::new_unchecked(-reference.into_inner());
+                assert!((rotation_log(&negated) - expected).amax() <= 1e-15 * w.norm());
+            }
+        }
+        assert_eq!(rotation_log(&UnitQuaternion::identity()), Vector3::zeros());
+        // A turn of rounding size is none, as in nalgebra's exp.
+        let noise = Vector3::new(1e-19, -2e-19, 4e-17);
+        assert_eq!(rotation_exp(&noise), UnitQuaternion::identity());
+        assert_eq!(
+            UnitQuaternion::from_scaled_axis(noise),
+            UnitQuaternion::identity()
+        );
+    }
 }
