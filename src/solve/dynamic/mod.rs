@@ -163,6 +163,7 @@ pub fn seat_traced(
         increments: sim.steps,
         newton_iterations: 0,
         path: crate::solve::SeatingPath::Dynamic,
+        path_error: None,
     })
 }
 

@@ -71,27 +71,46 @@ pub fn predict(a: &PredictArgs) -> Result<(), CliError> {
     jobs(a.jobs)
 }
 
-/// The seating solver: `--increments` (default 20) for the quasi-static
-/// one, `start` for the dynamic one.
+/// The seating solver: for the quasi-static one `--increments N` (fixed
+/// steps) or `--path-tolerance TOL` (load-path error control, the default
+/// at `DEFAULT_PATH_TOLERANCE`), `start` for the dynamic one.
 fn method(
     solver: SolverKind,
     increments: Option<usize>,
+    path_tolerance: Option<f64>,
     start: StartPose,
 ) -> Result<Method, CliError> {
-    use kinrepro::solve::INCREMENTS;
-    let increments = increments.unwrap_or(SolverOptions::default().increments);
-    if !INCREMENTS.contains(&increments) {
-        return Err(usage(format!(
-            "--increments {increments}: out of range, need {}..={} load increments",
-            INCREMENTS.start(),
-            INCREMENTS.end()
-        )));
-    }
-    Ok(match solver {
-        SolverKind::QuasiStatic => Method::QuasiStatic(SolverOptions {
-            increments,
+    use kinrepro::solve::{INCREMENTS, PATH_TOLERANCES};
+    let options = match (increments, path_tolerance) {
+        (Some(n), Some(t)) => {
+            return Err(usage(format!(
+                "--increments {n} and --path-tolerance {t} exclude each other: fixed load \
+                 increments are not error-controlled (give one)"
+            )));
+        }
+        (Some(n), None) if !INCREMENTS.contains(&n) => {
+            return Err(usage(format!(
+                "--increments {n}: out of range, need {}..={} load increments",
+                INCREMENTS.start(),
+                INCREMENTS.end()
+            )));
+        }
+        (Some(n), None) => SolverOptions::fixed(n),
+        (None, Some(t)) if !PATH_TOLERANCES.contains(&t) => {
+            return Err(usage(format!(
+                "--path-tolerance {t}: out of range, need {:e}..={:e} (the estimated error of \
+                 the seated pose relative to the seating's motion)",
+                PATH_TOLERANCES.start(),
+                PATH_TOLERANCES.end()
+            )));
+        }
+        (None, t) => SolverOptions {
+            path_tolerance: t.or(SolverOptions::default().path_tolerance),
             ..Default::default()
-        }),
+        },
+    };
+    Ok(match solver {
+        SolverKind::QuasiStatic => Method::QuasiStatic(options),
         SolverKind::Dynamic => Method::Dynamic(DynamicOptions {
             start,
             ..Default::default()
@@ -225,7 +244,7 @@ pub fn run(a: &RunArgs) -> Result<Method, CliError> {
         offset: vector3("offset", a.offset.as_deref())?,
         tilt: vector3("tilt", a.tilt.as_deref())?,
     };
-    method(a.solver, a.increments, start)
+    method(a.solver, a.increments, a.path_tolerance, start)
 }
 
 pub fn load(a: &LoadArgs) -> Result<ExternalLoad, CliError> {
@@ -278,7 +297,12 @@ pub fn study(a: &StudyArgs) -> Result<StudyOptions, CliError> {
         samples: a.samples,
         seed: a.seed,
         shard: a.shard.unwrap_or_else(Shard::whole),
-        method: method(a.solver, a.increments, StartPose::touching())?,
+        method: method(
+            a.solver,
+            a.increments,
+            a.path_tolerance,
+            StartPose::touching(),
+        )?,
         variation: Variation {
             friction: a.vary.contains(&VaryKind::Friction),
             preload: a.vary.contains(&VaryKind::Preload),
@@ -314,7 +338,8 @@ pub fn sweep(a: &SweepArgs) -> Result<StudyOptions, CliError> {
         shard: a.shard.unwrap_or_else(Shard::whole),
         method: method(
             SolverKind::QuasiStatic,
-            Some(a.increments),
+            a.increments,
+            a.path_tolerance,
             StartPose::touching(),
         )?,
         variation: Variation {

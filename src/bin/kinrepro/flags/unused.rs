@@ -25,12 +25,19 @@ pub fn contact(a: &ContactArgs) -> Result<(), CliError> {
     }
 }
 
-/// `--increments` with the dynamic solver (its time step comes from the
-/// contact frequencies, not from load increments).
-fn increments(solver: SolverKind, increments: Option<usize>) -> Result<(), CliError> {
-    match (solver, increments) {
-        (SolverKind::Dynamic, Some(n)) => Err(usage(format!(
+/// `--increments` or `--path-tolerance` with the dynamic solver (its time
+/// step comes from the contact frequencies, not from load increments).
+fn increments(
+    solver: SolverKind,
+    increments: Option<usize>,
+    tolerance: Option<f64>,
+) -> Result<(), CliError> {
+    match (solver, increments, tolerance) {
+        (SolverKind::Dynamic, Some(n), _) => Err(usage(format!(
             "--increments {n}: has no effect with --solver dynamic (load increments belong to the quasi-static solver; the dynamic one steps in time)"
+        ))),
+        (SolverKind::Dynamic, None, Some(t)) => Err(usage(format!(
+            "--path-tolerance {t}: has no effect with --solver dynamic (the load path belongs to the quasi-static solver; the dynamic one steps in time)"
         ))),
         _ => Ok(()),
     }
@@ -47,11 +54,11 @@ fn force(force: bool, outputs: [&Option<PathBuf>; 2]) -> Result<(), CliError> {
 }
 
 pub fn run(a: &RunArgs) -> Result<(), CliError> {
-    increments(a.solver, a.increments)
+    increments(a.solver, a.increments, a.path_tolerance)
 }
 
 pub fn study(a: &StudyArgs) -> Result<(), CliError> {
-    increments(a.solver, a.increments)?;
+    increments(a.solver, a.increments, a.path_tolerance)?;
     force(a.force, [&a.out, &a.html])
 }
 
