@@ -30,7 +30,7 @@ pub const PATH_TOLERANCES: std::ops::RangeInclusive<f64> = 1e-9..=1e-2;
 /// The default load-path tolerance: the estimated discretisation error of
 /// a seated pose relative to the seating's motion
 /// (`quasistatic::control`).
-pub const DEFAULT_PATH_TOLERANCE: f64 = 1e-6;
+pub const DEFAULT_PATH_TOLERANCE: f64 = 1e-5;
 
 /// Settings of the quasi-static solver.
 #[derive(Debug, Clone, Copy, PartialEq)]

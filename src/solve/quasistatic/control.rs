@@ -48,10 +48,10 @@ use crate::assembly::BodyPose;
 use crate::solve::{SeatedPose, SeatingPath, SolveError, SolverOptions};
 
 /// The coarsest level's graded increments.
-const FIRST: usize = 4;
+const FIRST: usize = 6;
 /// The finest level: a seating stops here even above its tolerance (its
 /// `path_error` says so).
-pub const FINEST: usize = 4096;
+pub const FINEST: usize = 6144;
 
 /// One seating on `n` increments (graded where `opts` control the path),
 /// from the touching pose and the virgin states; its contacts stay in `ws`.

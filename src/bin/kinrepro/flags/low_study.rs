@@ -58,7 +58,7 @@ pub struct StudyArgs {
     pub increments: Option<usize>,
     /// Load-path error control (quasi-static solver, the default): the
     /// tolerance on the estimated error of the seated pose relative to the
-    /// seating's motion, 1e-9..=1e-2 [default: 1e-6]; excludes --increments.
+    /// seating's motion, 1e-9..=1e-2 [default: 1e-5]; excludes --increments.
     #[arg(long)]
     pub path_tolerance: Option<f64>,
     /// Seating solver.
@@ -144,7 +144,7 @@ pub struct SweepArgs {
     pub increments: Option<usize>,
     /// Load-path error control (quasi-static solver, the default): the
     /// tolerance on the estimated error of the seated pose relative to the
-    /// seating's motion, 1e-9..=1e-2 [default: 1e-6]; excludes --increments.
+    /// seating's motion, 1e-9..=1e-2 [default: 1e-5]; excludes --increments.
     #[arg(long)]
     pub path_tolerance: Option<f64>,
     /// Worker threads (capped at 4 per core).
