@@ -118,6 +118,8 @@ impl<'a> StudyPlan<'a> {
         let mut v =
             VariantReport::new(c, run, &self.opts).map_err(StudyRunError::at(&c.scene.file))?;
         v.seating_paths = Some(tally.counts());
+        v.load_path = tally.load_path();
+        v.load_path = tally.load_path();
         if let Some(n) = self.sobol {
             attach_sobol(&mut v, &run_sobol(c, &self.opts, n, tick)?);
         }

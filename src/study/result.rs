@@ -65,6 +65,10 @@ pub struct VariantReport {
     /// Sample seatings per solver path (absent from `merge` output).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seating_paths: Option<super::paths::SeatingPaths>,
+    /// The load path of the quasi-static sample seatings: largest path
+    /// error, increments taken (mean, max); `merge` combines the shards'.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub load_path: Option<super::paths::LoadPath>,
     pub scene: String,
     pub name: String,
     /// Samples in the whole design.
@@ -186,6 +190,7 @@ impl VariantReport {
             streamed: false,
             cannot_seat: run.cannot_seat,
             seating_paths: None,
+            load_path: None,
             scene: coupling.scene.file.clone(),
             name: coupling.scene.name.clone(),
             samples: run.design.n,

@@ -143,6 +143,7 @@ pub fn run_streamed<S: RecordSink>(
         return Err(failure.take().unwrap_or(e.into()));
     }
     v.seating_paths = Some(tally.counts());
+    v.load_path = tally.load_path();
     v.set_moment_stats(&st).map_err(StudyRunError::at(file))?;
     Ok((v, sink))
 }
