@@ -152,7 +152,7 @@ pub struct RunArgs {
     /// Load-path error control (quasi-static solver, the default): the
     /// tolerance on the estimated error of the seated pose relative to the
     /// seating's motion, 1e-9..=1e-2 [default: 1e-5]; excludes --increments.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub path_tolerance: Option<f64>,
     /// Seating solver.
     #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]

@@ -59,7 +59,7 @@ pub struct StudyArgs {
     /// Load-path error control (quasi-static solver, the default): the
     /// tolerance on the estimated error of the seated pose relative to the
     /// seating's motion, 1e-9..=1e-2 [default: 1e-5]; excludes --increments.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub path_tolerance: Option<f64>,
     /// Seating solver.
     #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
@@ -145,7 +145,7 @@ pub struct SweepArgs {
     /// Load-path error control (quasi-static solver, the default): the
     /// tolerance on the estimated error of the seated pose relative to the
     /// seating's motion, 1e-9..=1e-2 [default: 1e-5]; excludes --increments.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub path_tolerance: Option<f64>,
     /// Worker threads (capped at 4 per core).
     #[arg(long)]
