@@ -49,10 +49,7 @@ fn limit(c: &Coupling, mu: &[f64]) -> BodyPose {
     let b = seat(c, mu, &SolverOptions::fixed(5120)).unwrap().pose;
     let d = twist(c, &a, &b);
     let l = c.length_scale();
-    b.moved(
-        &d.fixed_rows::<3>(0).into(),
-        &(d.fixed_rows::<3>(3) / l).into(),
-    )
+    b.moved(&d.fixed_rows::<3>(0).into(), &(d.fixed_rows::<3>(3) / l))
 }
 
 /// (true error, estimate, increments) of the controlled seating at
