@@ -92,9 +92,14 @@ fn a_seating_in_a_reused_workspace_allocates_nothing() {
             "{name}: a fresh workspace allocates"
         );
         // The buffers depend on the contact count only: the count stays
-        // zero with three times the increments (and Newton iterations).
-        for increments in [opts.increments, 3 * opts.increments] {
-            let opts = SolverOptions { increments, ..opts };
+        // zero on 20 and 60 fixed increments (three times the Newton
+        // iterations) and under load-path error control (several levels
+        // of increments in the one workspace).
+        for (increments, opts) in [
+            (20, SolverOptions::fixed(20)),
+            (60, SolverOptions::fixed(60)),
+            (12, opts),
+        ] {
             let mut poses = Vec::with_capacity(mus.len());
             let before = allocations();
             for mu in &mus[1..] {

@@ -108,10 +108,7 @@ fn cross_check_kelvin_balls_sic() {
 #[test]
 fn difference_shrinks_as_the_ramp_slows() {
     let c = coupling("06_kelvin_steel.toml");
-    let fine = SolverOptions {
-        increments: 320,
-        ..Default::default()
-    };
+    let fine = SolverOptions::fixed(320);
     let qs: Vec<[f64; 5]> = MU[..4]
         .iter()
         .map(|mu| point_pose(&c, &quasistatic::seat(&c, mu, &fine).unwrap()))

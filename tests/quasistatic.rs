@@ -204,17 +204,8 @@ fn halving_the_load_increment_changes_the_pose_by_less_than_one_percent() {
     ] {
         let c = load(name);
         let nominal = [c.scene.friction.mu_static; 6];
-        let run = |increments: usize, m: &[f64]| {
-            seat(
-                &c,
-                m,
-                &SolverOptions {
-                    increments,
-                    ..Default::default()
-                },
-            )
-            .unwrap()
-        };
+        let run =
+            |increments: usize, m: &[f64]| seat(&c, m, &SolverOptions::fixed(increments)).unwrap();
         let (a, b) = (run(20, &mu), run(40, &mu));
         let (na, nb) = (run(20, &nominal), run(40, &nominal));
         for p in c.scene.evaluation_points.iter().map(|e| e.position) {

@@ -44,7 +44,7 @@ fn frictions(c: &Coupling, samples: usize) -> Vec<Vec<f64>> {
 /// nominal count exactly without halving; a halved increment covers less
 /// of the path, so more increments).
 fn uniform_share(c: &Coupling, samples: usize) -> (usize, usize) {
-    let opts = SolverOptions::default();
+    let opts = SolverOptions::fixed(20);
     let mut uniform = 0;
     for mu in frictions(c, samples) {
         let s = seat(c, &mu, &opts).unwrap();
@@ -120,10 +120,7 @@ fn the_nominal_path_converges_as_the_increments_are_refined() {
             let poses: Vec<[f64; 6]> = [20, 40, 80, 160]
                 .iter()
                 .map(|&increments| {
-                    let opts = SolverOptions {
-                        increments,
-                        ..SolverOptions::default()
-                    };
+                    let opts = SolverOptions::fixed(increments);
                     let s = seat(&c, &mu, &opts).unwrap();
                     assert_eq!(s.path, SeatingPath::Uniform, "{name} {increments}");
                     motion(&c, &s)

@@ -75,7 +75,8 @@ def sweep(
     seed: Optional[int] = None,
     shard: Union[str, Tuple[int, int], None] = None,
     jobs: Optional[int] = None,
-    increments: int = 20,
+    increments: Optional[int] = None,
+    path_tolerance: Optional[float] = None,
     replicates: Optional[int] = None,
 ) -> Sweep:
     """Sweep scene fields (``kinrepro sweep``): every design point's
@@ -89,7 +90,7 @@ def sweep(
     an LHS of ``points`` design points. ``pareto_point``: the evaluation
     point of the Pareto objective (None: the first). ``samples``,
     ``sampler``, ``seed``, ``shard``, ``jobs``, ``increments``,
-    ``replicates``: as for :func:`study`, checked by the library as the
+    ``path_tolerance``, ``replicates``: as for :func:`study`, checked by the library as the
     CLI's flags are. ``Sweep.names()`` and ``Sweep.values()`` (n_designs,
     k) give the design points, ``Sweep.sigma(point)`` (n_designs, 6) their
     sigma in m and rad; ``Sweep.to_dict()["designs"]`` holds everything
@@ -99,5 +100,5 @@ def sweep(
     return _sweep(
         scene, args, points=points, pareto_point=pareto_point, samples=samples,
         sampler=sampler, seed=seed, shard=shard, jobs=jobs, increments=increments,
-        replicates=replicates,
+        path_tolerance=path_tolerance, replicates=replicates,
     )

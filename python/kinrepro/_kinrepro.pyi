@@ -184,10 +184,14 @@ def seat(
     mu: Sequence[float] | None = None,
     solver: str = "quasi-static",
     increments: int | None = None,
+    path_tolerance: float | None = None,
 ) -> Seating:
     """Seat the coupling once; ``mu``: static friction coefficient per
-    contact (None: the scene's ``mu_static``); ``increments``: nominal load
-    increments of the quasi-static solver (None: 20). GIL released."""
+    contact (None: the scene's ``mu_static``). Quasi-static solver: the load
+    path is error-controlled to ``path_tolerance`` (the estimated error of
+    the seated pose relative to the seating's motion, None: 1e-5), or
+    ``increments`` fixed load increments (not error-controlled; give one of
+    the two). GIL released."""
 
 def stiffness(
     scene: Scene,
@@ -208,6 +212,7 @@ def study(
     jobs: int | None = None,
     solver: str = "quasi-static",
     increments: int | None = None,
+    path_tolerance: float | None = None,
     replicates: int | None = None,
     sensitivity: bool = False,
     sobol_samples: int | None = None,
@@ -220,8 +225,9 @@ def study(
     ``"preload"``, ``"start"``, ``"tolerances"``; ``"start"`` needs
     ``solver="dynamic"`` and ``offset_bounds`` (x, y half-widths and the
     largest height z [m]) and/or ``tilt_bounds`` (half-widths [rad]).
-    ``solver``: ``"quasi-static"`` (``increments``: nominal load
-    increments, None: 20) or ``"dynamic"``. ``sensitivity``: SRC and Sobol
+    ``solver``: ``"quasi-static"`` (load path error-controlled to
+    ``path_tolerance``, None: 1e-5 of the seating's motion; or
+    ``increments`` fixed load increments) or ``"dynamic"``. ``sensitivity``: SRC and Sobol
     indices (``sobol_samples``: base sample size N, None: 32768).
     ``shard``: run one part (merge the parts with :func:`merge`).
     ``jobs``: worker threads (None: all cores). The options are checked by
@@ -243,7 +249,8 @@ def sweep(
     seed: int | None = None,
     shard: Shard | None = None,
     jobs: int | None = None,
-    increments: int = 20,
+    increments: int | None = None,
+    path_tolerance: float | None = None,
     replicates: int | None = None,
 ) -> Sweep:
     """The compiled sweep: ``sets`` as ``"FIELD=VALUES"`` strings

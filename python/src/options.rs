@@ -11,10 +11,15 @@ use pyo3::prelude::*;
 use crate::err;
 
 /// The seating method of `solver` (`"quasi-static"`, `"dynamic"`) with
-/// `increments` (None: 20; quasi-static only).
-pub fn method(solver: &str, increments: Option<usize>) -> PyResult<Method> {
+/// fixed `increments` or the load path's `path_tolerance` (None, None: the
+/// error-controlled default; quasi-static only).
+pub fn method(
+    solver: &str,
+    increments: Option<usize>,
+    path_tolerance: Option<f64>,
+) -> PyResult<Method> {
     let solver: Solver = solver.parse().map_err(err)?;
-    request::method(solver, increments, StartPose::touching()).map_err(err)
+    request::method(solver, increments, path_tolerance, StartPose::touching()).map_err(err)
 }
 
 /// `"INDEX/COUNT"` or a tuple `(index, count)` (1-based index).
@@ -43,6 +48,7 @@ pub struct StudyArgs {
     pub shard: Option<Shard>,
     pub solver: Option<String>,
     pub increments: Option<usize>,
+    pub path_tolerance: Option<f64>,
     pub replicates: Option<usize>,
     pub sensitivity: bool,
     pub sobol_samples: Option<usize>,
@@ -79,6 +85,7 @@ impl StudyArgs {
             shard: self.shard.unwrap_or_else(Shard::whole),
             solver,
             increments: self.increments,
+            path_tolerance: self.path_tolerance,
             vary,
             offset_bounds: self.offset_bounds,
             tilt_bounds: self.tilt_bounds,

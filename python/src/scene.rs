@@ -257,15 +257,18 @@ fn mu_of(c: &Coupling, mu: Option<Vec<f64>>) -> Vec<f64> {
 /// Seat the coupling once (`kinrepro run`): `mu` the static friction
 /// coefficient of each contact (None: the scene's mu_static everywhere).
 #[pyfunction]
-#[pyo3(signature = (scene, mu = None, solver = "quasi-static", increments = None))]
+#[pyo3(signature = (
+    scene, mu = None, solver = "quasi-static", increments = None, path_tolerance = None
+))]
 pub fn seat(
     py: Python<'_>,
     scene: &Scene,
     mu: Option<Vec<f64>>,
     solver: &str,
     increments: Option<usize>,
+    path_tolerance: Option<f64>,
 ) -> PyResult<Seating> {
-    let method = crate::options::method(solver, increments)?;
+    let method = crate::options::method(solver, increments, path_tolerance)?;
     let (text, file) = (scene.text.clone(), scene.file.clone());
     let report = py.detach(move || -> Result<RunReport, String> {
         let c = coupling(&text, &file)?;

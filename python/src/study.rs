@@ -263,7 +263,7 @@ impl Study {
 #[pyo3(signature = (
     scene, samples = None, sampler = None, seed = None, vary = vec!["friction".to_string()],
     shard = None, jobs = None, solver = "quasi-static".to_string(), increments = None,
-    replicates = None, sensitivity = false, sobol_samples = None, offset_bounds = None,
+    path_tolerance = None, replicates = None, sensitivity = false, sobol_samples = None, offset_bounds = None,
     tilt_bounds = None,
 ))]
 #[allow(clippy::too_many_arguments)]
@@ -278,6 +278,7 @@ pub fn study(
     jobs: Option<usize>,
     solver: String,
     increments: Option<usize>,
+    path_tolerance: Option<f64>,
     replicates: Option<usize>,
     sensitivity: bool,
     sobol_samples: Option<usize>,
@@ -293,6 +294,7 @@ pub fn study(
         shard: Some(crate::options::shard(shard)?),
         solver: Some(solver),
         increments,
+        path_tolerance,
         replicates,
         sensitivity,
         sobol_samples,

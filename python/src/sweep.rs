@@ -150,7 +150,8 @@ pub fn merge_sweeps(py: Python<'_>, parts: &[Bound<'_, PyAny>]) -> PyResult<Py<P
 #[pyfunction]
 #[pyo3(signature = (
     scene, sets, points = None, pareto_point = None, samples = None, sampler = None,
-    seed = None, shard = None, jobs = None, increments = 20, replicates = None,
+    seed = None, shard = None, jobs = None, increments = None, path_tolerance = None,
+    replicates = None,
 ))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep(
@@ -164,7 +165,8 @@ pub fn sweep(
     seed: Option<u64>,
     shard: Option<&Bound<'_, PyAny>>,
     jobs: Option<usize>,
-    increments: usize,
+    increments: Option<usize>,
+    path_tolerance: Option<f64>,
     replicates: Option<usize>,
 ) -> PyResult<Sweep> {
     let opts = StudyArgs {
@@ -172,7 +174,8 @@ pub fn sweep(
         sampler,
         seed,
         shard: Some(crate::options::shard(shard)?),
-        increments: Some(increments),
+        increments,
+        path_tolerance,
         replicates,
         ..StudyArgs::default()
     }

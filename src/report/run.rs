@@ -33,8 +33,14 @@ pub struct RunReport {
     pub pose_rel_nominal: PointPose,
     pub points: Vec<PointReport>,
     pub contacts: Vec<ContactResult>,
+    /// Load increments taken (all levels of a controlled seating), or the
+    /// dynamic solver's time steps.
     pub increments: usize,
     pub newton_iterations: usize,
+    /// Estimated discretisation error of the seated pose relative to the
+    /// seating's motion (load-path error control); null where not
+    /// estimated (`--increments`, the dynamic solver).
+    pub path_error: Option<f64>,
     /// Which path of the solver seated it: `uniform` (quasi-static fast
     /// path), `adaptive` (quasi-static with halving) or `dynamic`.
     pub seating_path: SeatingPath,
@@ -76,6 +82,7 @@ impl RunReport {
             contacts: seating.contacts.clone(),
             increments: seating.increments,
             newton_iterations: seating.newton_iterations,
+            path_error: seating.path_error,
             seating_path: seating.path,
             not_evaluated: Vec::new(),
         }
@@ -104,9 +111,13 @@ impl RunReport {
                 mu.join(", ")
             );
         } else {
+            let error = match self.path_error {
+                Some(e) => format!("path error {e:.1e}"),
+                None => "path error not estimated".to_string(),
+            };
             let _ = writeln!(
                 s,
-                "solver: {} ({} path), {} load increments, {} Newton iterations; mu_s = [{}]",
+                "solver: {} ({} path), {} load increments, {} Newton iterations, {error}; mu_s = [{}]",
                 self.solver,
                 self.seating_path.name(),
                 self.increments,

@@ -76,6 +76,17 @@ fn variant_text(v: &VariantReport) -> String {
         friction_law_text(&v.friction_law, v.ramp_time_s)
     );
     let _ = writeln!(s, "  varied: {}", varied(v));
+    if let Some(p) = &v.load_path {
+        let error = match p.max_path_error {
+            Some(e) => format!("largest path error {e:.1e}"),
+            None => "path error not estimated (fixed increments)".to_string(),
+        };
+        let _ = writeln!(
+            s,
+            "  load path: {error}; {:.1} load increments per seating (max {})",
+            p.increments_mean, p.increments_max
+        );
+    }
     if v.streamed {
         let _ = writeln!(
             s,

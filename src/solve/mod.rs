@@ -23,11 +23,25 @@ use contact_layer::ContactEval;
 /// The accepted numbers of nominal load increments (`--increments`).
 pub const INCREMENTS: std::ops::RangeInclusive<usize> = 1..=100_000;
 
+/// The accepted load-path tolerances (`--path-tolerance`): below about
+/// 1e-8 the Newton residual tolerance, not the path, bounds the pose.
+pub const PATH_TOLERANCES: std::ops::RangeInclusive<f64> = 1e-9..=1e-2;
+
+/// The default load-path tolerance: the estimated discretisation error of
+/// a seated pose relative to the seating's motion
+/// (`quasistatic::control`).
+pub const DEFAULT_PATH_TOLERANCE: f64 = 1e-5;
+
 /// Settings of the quasi-static solver.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverOptions {
-    /// Nominal number of load increments (uniform in F^(2/3), i.e. in approach).
+    /// Nominal number of load increments (uniform in F^(2/3), i.e. in
+    /// approach) of a fixed-step seating; a load path's increments.
     pub increments: usize,
+    /// Load-path error control of a seating (`quasistatic::control`): the
+    /// tolerance on the estimated relative error of the seated pose, or
+    /// `None` for the fixed `increments` (`--increments`).
+    pub path_tolerance: Option<f64>,
     /// How often an increment may be halved (stick/slip changes, Newton trouble).
     pub max_splits: u32,
     /// Newton iterations per increment.
@@ -37,10 +51,23 @@ pub struct SolverOptions {
     pub tolerance: f64,
 }
 
+impl SolverOptions {
+    /// A seating on `increments` fixed nominal increments, without
+    /// load-path error control (`--increments`).
+    pub fn fixed(increments: usize) -> Self {
+        SolverOptions {
+            increments,
+            path_tolerance: None,
+            ..Default::default()
+        }
+    }
+}
+
 impl Default for SolverOptions {
     fn default() -> Self {
         SolverOptions {
             increments: 20,
+            path_tolerance: Some(DEFAULT_PATH_TOLERANCE),
             max_splits: 8,
             max_newton: 40,
             tolerance: 1e-10,
@@ -221,6 +248,10 @@ pub struct Seating {
     /// TRANSITION`): of the contacts that slid, the value deepest inside the
     /// transition; `None` for the switch law, no slip or the quasi-static solver.
     pub decay_cv: Option<f64>,
+    /// Estimated discretisation error of `pose` relative to the seating's
+    /// motion (`quasistatic::control`); `None` where not estimated (fixed
+    /// increments, the dynamic solver).
+    pub path_error: Option<f64>,
 }
 
 /// The pose-level result of a seating, without the per-contact report:
@@ -239,6 +270,8 @@ pub struct SeatedPose {
     /// TRANSITION`): of the contacts that slid, the value deepest inside the
     /// transition; `None` for the switch law, no slip or the quasi-static solver.
     pub decay_cv: Option<f64>,
+    /// As [`Seating::path_error`].
+    pub path_error: Option<f64>,
 }
 
 impl Seating {
@@ -250,6 +283,7 @@ impl Seating {
             newton_iterations: self.newton_iterations,
             path: self.path,
             decay_cv: self.decay_cv,
+            path_error: self.path_error,
         }
     }
 }

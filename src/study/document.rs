@@ -129,7 +129,7 @@ impl<'a> StudyPlan<'a> {
             VariantReport::new(c, run, &self.opts).map_err(StudyRunError::at(&c.scene.file))?;
         v.seating_paths = Some(tally.counts());
         v.unconverged = tally.unconverged();
-        v.unconverged = tally.unconverged();
+        v.load_path = tally.load_path();
         if let Some(n) = self.sobol {
             attach_sobol(&mut v, &run_sobol(c, &self.opts, n, tick)?);
         }

@@ -209,6 +209,7 @@ fn merge_variant(
     v.records = records;
     v.cannot_seat = parts.iter().find_map(|p| p.cannot_seat.clone());
     v.seating_paths = super::paths::SeatingPaths::total(parts.iter().map(|p| p.seating_paths));
+    v.load_path = super::paths::LoadPath::total(parts.iter().map(|p| p.load_path));
     v.finish()?;
     Ok(v)
 }

@@ -13,7 +13,7 @@ use super::runner::{StartBounds, StudyOptions, Variation};
 use super::sensitivity::sobol::DEFAULT_BASE_SAMPLES;
 use super::{Sampler, Shard};
 use crate::solve::dynamic::{DynamicOptions, StartPose};
-use crate::solve::{INCREMENTS, Method, SolverOptions};
+use crate::solve::{INCREMENTS, Method, PATH_TOLERANCES, SolverOptions};
 
 /// An option out of range, or options that do not go together.
 #[derive(Debug, Clone, PartialEq, Eq, Error)]
@@ -83,8 +83,12 @@ pub struct StudyRequest {
     pub seed: Option<u64>,
     pub shard: Shard,
     pub solver: Solver,
-    /// Nominal load increments of the quasi-static solver (None: 20).
+    /// Fixed load increments of the quasi-static solver (None: the load
+    /// path is error-controlled).
     pub increments: Option<usize>,
+    /// Tolerance of the load-path error control (None: the default;
+    /// excludes `increments`).
+    pub path_tolerance: Option<f64>,
     pub vary: Vec<Varied>,
     /// Start variation: half-widths of the x, y offset and the largest
     /// height z above the seat [m].
@@ -108,6 +112,7 @@ impl Default for StudyRequest {
             shard: Shard::whole(),
             solver: Solver::QuasiStatic,
             increments: None,
+            path_tolerance: None,
             vary: vec![Varied::Friction],
             offset_bounds: None,
             tilt_bounds: None,
@@ -129,7 +134,12 @@ pub struct StudySettings {
 impl StudyRequest {
     /// Check every option and the options that go together.
     pub fn check(&self) -> Result<StudySettings, OptionError> {
-        let method = method(self.solver, self.increments, StartPose::touching())?;
+        let method = method(
+            self.solver,
+            self.increments,
+            self.path_tolerance,
+            StartPose::touching(),
+        )?;
         let start = self.start_bounds()?;
         let sobol_samples = self.sobol()?;
         if self.sampler == Some(Sampler::Corners) && self.samples.is_some() {
@@ -200,35 +210,48 @@ impl StudyRequest {
     }
 }
 
-/// The seating method: `increments` (None: 20) nominal load increments for
-/// the quasi-static solver, `start` for the dynamic one (whose time step
-/// comes from the contact frequencies: increments are refused there).
+/// The seating method. Quasi-static: `increments` N fixed load increments
+/// ([`SolverOptions::fixed`], not error-controlled), or else load-path
+/// error control to `path_tolerance` (None: [`SolverOptions::default`]'s);
+/// the two exclude each other. Dynamic: started at `start` (its time step
+/// comes from the contact frequencies: increments and a path tolerance are
+/// refused there).
 pub fn method(
     solver: Solver,
     increments: Option<usize>,
+    path_tolerance: Option<f64>,
     start: StartPose,
 ) -> Result<Method, OptionError> {
-    match (solver, increments) {
-        (Solver::Dynamic, Some(n)) => fail(format!(
+    match (solver, increments, path_tolerance) {
+        (Solver::Dynamic, Some(n), _) => fail(format!(
             "--increments {n}: has no effect with --solver dynamic (load increments belong to the quasi-static solver; the dynamic one steps in time)"
         )),
-        (Solver::Dynamic, None) => Ok(Method::Dynamic(DynamicOptions {
+        (Solver::Dynamic, None, Some(t)) => fail(format!(
+            "--path-tolerance {t}: has no effect with --solver dynamic (the load path belongs to the quasi-static solver; the dynamic one steps in time)"
+        )),
+        (Solver::Dynamic, None, None) => Ok(Method::Dynamic(DynamicOptions {
             start,
             ..Default::default()
         })),
-        (Solver::QuasiStatic, n) => {
-            let increments = n.unwrap_or(SolverOptions::default().increments);
-            if !INCREMENTS.contains(&increments) {
-                return fail(format!(
-                    "--increments {increments}: out of range, need {}..={} load increments",
-                    INCREMENTS.start(),
-                    INCREMENTS.end()
-                ));
-            }
-            Ok(Method::QuasiStatic(SolverOptions {
-                increments,
-                ..Default::default()
-            }))
-        }
+        (Solver::QuasiStatic, Some(n), Some(t)) => fail(format!(
+            "--increments {n} and --path-tolerance {t} exclude each other: fixed load \
+             increments are not error-controlled (give one)"
+        )),
+        (Solver::QuasiStatic, Some(n), None) if !INCREMENTS.contains(&n) => fail(format!(
+            "--increments {n}: out of range, need {}..={} load increments",
+            INCREMENTS.start(),
+            INCREMENTS.end()
+        )),
+        (Solver::QuasiStatic, Some(n), None) => Ok(Method::QuasiStatic(SolverOptions::fixed(n))),
+        (Solver::QuasiStatic, None, Some(t)) if !PATH_TOLERANCES.contains(&t) => fail(format!(
+            "--path-tolerance {t}: out of range, need {:e}..={:e} (the estimated error of \
+             the seated pose relative to the seating's motion)",
+            PATH_TOLERANCES.start(),
+            PATH_TOLERANCES.end()
+        )),
+        (Solver::QuasiStatic, None, t) => Ok(Method::QuasiStatic(SolverOptions {
+            path_tolerance: t.or(SolverOptions::default().path_tolerance),
+            ..Default::default()
+        })),
     }
 }

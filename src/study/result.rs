@@ -72,6 +72,10 @@ pub struct VariantReport {
     /// Sample seatings of the decay law in its transition (stderr only).
     #[serde(skip)]
     pub unconverged: Option<super::paths::Unconverged>,
+    /// The load path of the quasi-static sample seatings: largest path
+    /// error, increments taken (mean, max); `merge` combines the shards'.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub load_path: Option<super::paths::LoadPath>,
     pub scene: String,
     pub name: String,
     /// Samples in the whole design.
@@ -194,6 +198,7 @@ impl VariantReport {
             cannot_seat: run.cannot_seat,
             seating_paths: None,
             unconverged: None,
+            load_path: None,
             scene: coupling.scene.file.clone(),
             name: coupling.scene.name.clone(),
             samples: run.design.n,

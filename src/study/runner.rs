@@ -22,7 +22,7 @@ use rayon::prelude::*;
 
 use super::StudyError;
 pub use super::inputs::{Input, Tolerances};
-pub use super::paths::{PathTally, SeatingPaths};
+pub use super::paths::{LoadPath, PathTally, SeatingPaths};
 pub use super::run_error::RunError;
 use super::stats::SampleRecord;
 pub use super::variation::{START_CLEARANCE, Sample, StartBounds, Variation, lifted_clear};
@@ -32,7 +32,7 @@ use crate::dof::Dof;
 
 use crate::solve::dynamic::StartPose;
 use crate::solve::quasistatic::{SeatingSetup, Workspace, seat_in};
-use crate::solve::{Method, PointPose, SeatedPose, SeatingPath, SolveError, nominal_mu};
+use crate::solve::{Method, PointPose, SeatedPose, SolveError, nominal_mu};
 
 /// How to run a study; `None` takes the scene's study settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -82,9 +82,9 @@ impl<'a> Progress<'a> {
         }
     }
 
-    fn record(&self, path: SeatingPath, decay_cv: Option<f64>) {
+    fn record(&self, seated: &SeatedPose) {
         if let Some(t) = self.tally {
-            t.record(path, decay_cv);
+            t.record(seated);
         }
     }
 }
@@ -377,7 +377,7 @@ pub fn evaluate_rows<'a>(
                     }
                     s => s.map_err(|e| seat_err(index, &sample.mu, e))?,
                 };
-                progress.record(s.path, s.decay_cv);
+                progress.record(&s);
                 outputs.extend(relative(s.pose));
             }
             if let Some(t) = &sample.tolerances {
@@ -390,7 +390,7 @@ pub fn evaluate_rows<'a>(
                     .method
                     .seat(&perturbed, &nominal_mu, &StartPose::touching())
                     .map_err(|e| seat_err(index, &nominal_mu, e))?;
-                progress.record(s.path, s.decay_cv);
+                progress.record(&s.seated_pose());
                 outputs.extend(relative(s.pose));
             }
             (progress.tick)();

@@ -144,6 +144,7 @@ pub fn run_streamed<S: RecordSink>(
     }
     v.seating_paths = Some(tally.counts());
     v.unconverged = tally.unconverged();
+    v.load_path = tally.load_path();
     v.set_moment_stats(&st).map_err(StudyRunError::at(file))?;
     Ok((v, sink))
 }

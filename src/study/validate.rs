@@ -32,6 +32,7 @@ pub fn check_document(report: &StudyReport) -> Result<(), DocumentError> {
         let at = format!("variants[{i}]");
         check_friction(v, &at)?;
         check_samples(v, &at)?;
+        check_load_path(v, &at)?;
         for (j, r) in v.records.iter().enumerate() {
             check_record(v, r, &format!("{at}.records[{j}]"))?;
         }
@@ -117,6 +118,47 @@ fn check_samples(v: &VariantReport, at: &str) -> Result<(), DocumentError> {
         }
     }
     Ok(())
+}
+
+/// `load_path`: at most two seatings per sample of the shard (a sample
+/// with tolerances varied seats twice), a non-negative path error, and
+/// the mean and maximum consistent with the total (`merge` recomputes the
+/// mean from the integers, so a file must agree with them).
+fn check_load_path(v: &VariantReport, at: &str) -> Result<(), DocumentError> {
+    let Some(p) = v.load_path else {
+        return Ok(());
+    };
+    let field = format!("{at}.load_path");
+    let shard = v
+        .shard
+        .range(v.samples)
+        .map(|r| r.len())
+        .unwrap_or(v.samples);
+    let reason = if p.seatings > 2 * shard {
+        format!("{} seatings for {shard} samples", p.seatings)
+    } else if p
+        .max_path_error
+        .is_some_and(|e| !(e >= 0.0 && e.is_finite()))
+    {
+        "max_path_error must be a finite number >= 0".to_string()
+    } else if (p.increments_max as u64) > p.increments_total
+        || (p.seatings > 0 && p.increments_max == 0)
+    {
+        format!(
+            "increments_max {} does not fit increments_total {}",
+            p.increments_max, p.increments_total
+        )
+    } else if p.seatings > 0
+        && p.increments_mean.to_bits() != (p.increments_total as f64 / p.seatings as f64).to_bits()
+    {
+        format!(
+            "increments_mean {} is not increments_total / seatings",
+            p.increments_mean
+        )
+    } else {
+        return Ok(());
+    };
+    Err(bad(field, reason))
 }
 
 /// One record: its index inside the shard's samples, as many inputs as the

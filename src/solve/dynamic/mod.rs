@@ -164,6 +164,7 @@ pub fn seat_traced(
         newton_iterations: 0,
         path: crate::solve::SeatingPath::Dynamic,
         decay_cv: sim.decay_cv(),
+        path_error: None,
     })
 }
 

@@ -51,17 +51,19 @@
 //! request). [`seat`] is the one-seating convenience that builds both and
 //! the report.
 
+mod control;
 mod external;
 mod load;
 mod lu6;
 mod path;
 mod solver;
 
+pub use control::FINEST;
 pub use external::{ExternalLoad, LIFT_OFF_RATIO, LoadEvent, LoadEventKind};
 pub use load::{LoadPath, apply_load, at_rest_states};
 
 use path::Buffers;
-use solver::{Program, Solver, contact_results};
+use solver::contact_results;
 
 use nalgebra::Vector6;
 
@@ -130,6 +132,7 @@ impl Workspace {
             newton_iterations: seated.newton_iterations,
             path: seated.path,
             decay_cv: seated.decay_cv,
+            path_error: seated.path_error,
         }
     }
 }
@@ -143,11 +146,11 @@ pub fn seat_in(
     opts: &SolverOptions,
     ws: &mut Workspace,
 ) -> Result<SeatedPose, SolveError> {
-    let c = setup.coupling;
-    frictions_into(c, mu_s, &mut ws.friction)?;
-    let solver = Solver::new(c, &ws.friction, *opts, Program::Seat, setup.x1);
-    ws.bufs.states.clone_from(&setup.virgin);
-    let end = solver.run(c.touching_pose, &mut ws.bufs)?;
+    frictions_into(setup.coupling, mu_s, &mut ws.friction)?;
+    if let Some(tolerance) = opts.path_tolerance {
+        return control::seat_controlled(setup, opts, tolerance, ws);
+    }
+    let end = control::level(setup, opts, opts.increments, ws)?;
     Ok(SeatedPose {
         pose: end.pose,
         increments: end.increments,
@@ -158,6 +161,7 @@ pub fn seat_in(
             SeatingPath::Uniform
         },
         decay_cv: None,
+        path_error: None,
     })
 }
 

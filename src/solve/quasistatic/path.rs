@@ -1,7 +1,9 @@
 //! The path follower ([`Solver::run`]): increments in the path
 //! parameter s, halved on Newton failure and on a stick/slip change of a
 //! loaded contact, doubled back to the nominal size after a quiet one
-//! (module docs of [`super`]). The contact states and evaluations live in
+//! (module docs of [`super`]). A seating under load-path error control
+//! (`SolverOptions::path_tolerance`) takes its increments uniform in
+//! t = sqrt(s) instead, s = t^2 (`super::control`). The contact states and evaluations live in
 //! the caller's [`Buffers`] (reused from seating to seating, no allocation
 //! once they have grown to the coupling's contact count); the path's end
 //! leaves the committed ones there.
@@ -141,10 +143,14 @@ impl Solver<'_> {
             },
             seating,
         };
+        let graded = seating && self.opts.path_tolerance.is_some();
         let mut h = nominal;
+        // The increments are uniform in t: t = s, or t = sqrt(s) graded.
+        let mut t = 0.0;
         let mut last_step: Option<(Vector6<f64>, f64)> = None;
         while w.s < 1.0 {
-            let s_next = if w.s + h > 1.0 - 1e-12 { 1.0 } else { w.s + h };
+            let t_next = if t + h > 1.0 - 1e-12 { 1.0 } else { t + h };
+            let s_next = if graded { t_next * t_next } else { t_next };
             let (predictor, loads) = self.increment(&w, last_step, s_next, seating);
             let can_halve = h > h_min * 1.5;
             let step = self.newton(&w.pose, w.states, predictor, &loads, trial);
@@ -176,6 +182,7 @@ impl Solver<'_> {
                         unreachable!("only a converged increment is accepted")
                     };
                     last_step = Some(commit(&mut w, trial, new_pose, s_next));
+                    t = t_next;
                     if !changed {
                         h = (2.0 * h).min(nominal);
                     }

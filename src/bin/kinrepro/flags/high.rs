@@ -68,14 +68,17 @@ pub fn predict(a: &PredictArgs) -> Result<(), CliError> {
     jobs(a.jobs)
 }
 
-/// The seating solver: `--increments` for the quasi-static one, `start`
-/// for the dynamic one (checked by the library, [`request::method`]).
+/// The seating solver: for the quasi-static one `--increments N` (fixed
+/// steps) or `--path-tolerance TOL` (load-path error control, the
+/// default), `start` for the dynamic one (checked by the library,
+/// [`request::method`]).
 fn method(
     solver: SolverKind,
     increments: Option<usize>,
+    path_tolerance: Option<f64>,
     start: StartPose,
 ) -> Result<Method, CliError> {
-    request::method(solver.into(), increments, start).map_err(|e| usage(e.0))
+    request::method(solver.into(), increments, path_tolerance, start).map_err(|e| usage(e.0))
 }
 
 /// `--jobs`: at least one worker thread (capped when the pool is built).
@@ -189,7 +192,7 @@ pub fn run(a: &RunArgs) -> Result<Method, CliError> {
         offset: vector3("offset", a.offset.as_deref())?,
         tilt: vector3("tilt", a.tilt.as_deref())?,
     };
-    method(a.solver, a.increments, start)
+    method(a.solver, a.increments, a.path_tolerance, start)
 }
 
 pub fn load(a: &LoadArgs) -> Result<ExternalLoad, CliError> {
@@ -222,6 +225,7 @@ pub fn study(a: &StudyArgs) -> Result<StudySettings, CliError> {
         shard: a.shard.unwrap_or_else(Shard::whole),
         solver: a.solver.into(),
         increments: a.increments,
+        path_tolerance: a.path_tolerance,
         vary: a.vary.iter().map(|&v| v.into()).collect(),
         offset_bounds: triple("offset-bounds", a.offset_bounds.as_deref())?,
         tilt_bounds: triple("tilt-bounds", a.tilt_bounds.as_deref())?,
@@ -247,7 +251,8 @@ pub fn sweep(a: &SweepArgs) -> Result<StudyOptions, CliError> {
         samples: a.samples,
         seed: a.seed,
         shard: a.shard.unwrap_or_else(Shard::whole),
-        increments: Some(a.increments),
+        increments: a.increments,
+        path_tolerance: a.path_tolerance,
         replicates: a.replicates,
         ..StudyRequest::default()
     };

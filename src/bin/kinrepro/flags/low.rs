@@ -145,10 +145,15 @@ pub struct RunArgs {
     /// (default: the scene's nominal mu_static everywhere).
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub mu: Option<Vec<f64>>,
-    /// Nominal number of load increments (quasi-static solver), 1..=100000
-    /// [default: 20].
+    /// Fixed load increments (quasi-static solver), 1..=100000, instead
+    /// of the load-path error control.
     #[arg(long)]
     pub increments: Option<usize>,
+    /// Load-path error control (quasi-static solver, the default): the
+    /// tolerance on the estimated error of the seated pose relative to the
+    /// seating's motion, 1e-9..=1e-2 [default: 1e-5]; excludes --increments.
+    #[arg(long, allow_hyphen_values = true)]
+    pub path_tolerance: Option<f64>,
     /// Seating solver.
     #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
     pub solver: SolverKind,

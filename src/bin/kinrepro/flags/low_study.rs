@@ -52,10 +52,15 @@ pub struct StudyArgs {
     /// JSON outputs with `kinrepro merge`.
     #[arg(long)]
     pub shard: Option<Shard>,
-    /// Nominal number of load increments per seating (quasi-static
-    /// solver), 1..=100000 [default: 20].
+    /// Fixed load increments per seating (quasi-static solver),
+    /// 1..=100000, instead of the load-path error control.
     #[arg(long)]
     pub increments: Option<usize>,
+    /// Load-path error control (quasi-static solver, the default): the
+    /// tolerance on the estimated error of the seated pose relative to the
+    /// seating's motion, 1e-9..=1e-2 [default: 1e-5]; excludes --increments.
+    #[arg(long, allow_hyphen_values = true)]
+    pub path_tolerance: Option<f64>,
     /// Seating solver.
     #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
     pub solver: SolverKind,
@@ -133,9 +138,15 @@ pub struct SweepArgs {
     /// LHS replicates of each point's study (see `study --replicates`).
     #[arg(long)]
     pub replicates: Option<usize>,
-    /// Nominal number of load increments per seating, 1..=100000.
-    #[arg(long, default_value_t = 20)]
-    pub increments: usize,
+    /// Fixed load increments per seating, 1..=100000, instead of the
+    /// load-path error control.
+    #[arg(long)]
+    pub increments: Option<usize>,
+    /// Load-path error control (quasi-static solver, the default): the
+    /// tolerance on the estimated error of the seated pose relative to the
+    /// seating's motion, 1e-9..=1e-2 [default: 1e-5]; excludes --increments.
+    #[arg(long, allow_hyphen_values = true)]
+    pub path_tolerance: Option<f64>,
     /// Worker threads (capped at 4 per core).
     #[arg(long)]
     pub jobs: Option<usize>,

@@ -2,8 +2,8 @@
 //! naming the flag and what it needs, so that a run never silently ignores
 //! what the user asked for. Rules that clap expresses (`requires`) are on
 //! the flags themselves ([`super::low`]); these are the ones that depend on
-//! a flag's value or on one of several other flags. (`--increments` with
-//! the dynamic solver is refused by the library's
+//! a flag's value or on one of several other flags. (`--increments` and
+//! `--path-tolerance` with the dynamic solver, or together, are refused by the library's
 //! `kinrepro::study::request::method`, for the Python package too.)
 
 use std::path::PathBuf;
