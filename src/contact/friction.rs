@@ -105,6 +105,23 @@ pub fn transition_warning(cv: f64) -> String {
     )
 }
 
+/// The decay law's c v_slip of a seating: per decay-law contact, its
+/// coefficient c times v_slip = slip path / `time` (the contact's slip
+/// summed over the seating [m], over the preload ramp's duration [s]); of
+/// these, the one [`deepest`] inside [`TRANSITION`]. `None` without a
+/// decay-law contact that slid. Both solvers report it
+/// (`crate::solve::Seating::decay_cv`).
+pub fn seating_cv(friction: &[super::Friction], slip_path: &[f64], time: f64) -> Option<f64> {
+    let cv = friction
+        .iter()
+        .zip(slip_path)
+        .filter_map(|(f, path)| match f.law {
+            FrictionLaw::Decay { coefficient } => Some(coefficient * path / time),
+            FrictionLaw::Switch => None,
+        });
+    deepest(cv)
+}
+
 /// Of several c v_slip values (one per contact that slid), the one deepest
 /// inside [`TRANSITION`], nearest 1 on a log scale; `None` if none is positive.
 pub fn deepest(cv: impl IntoIterator<Item = f64>) -> Option<f64> {

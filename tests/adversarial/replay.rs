@@ -8,7 +8,7 @@ use std::path::Path;
 use kinrepro::contact::FrictionLaw;
 use kinrepro::contact::friction::{TRANSITION, in_transition};
 use kinrepro::solve::dynamic::{self, DynamicOptions};
-use kinrepro::solve::nominal_mu;
+use kinrepro::solve::{SolverOptions, nominal_mu, quasistatic};
 
 use crate::common;
 use crate::verdicts::{run_in, variant};
@@ -33,6 +33,29 @@ fn decay_cv(c: f64) -> f64 {
     s.decay_cv.unwrap()
 }
 
+/// The quasi-static solver's c v_slip at nominal friction for `c`.
+fn quasi_static_cv(c: f64) -> f64 {
+    let mut cp = common::load("01_maxwell_vgroove_steel.toml");
+    cp.scene.friction.law = FrictionLaw::Decay { coefficient: c };
+    let s = quasistatic::seat(&cp, &nominal_mu(&cp), &SolverOptions::default()).unwrap();
+    s.decay_cv.unwrap()
+}
+
+#[test]
+fn quasi_static_decay_cv_is_the_slip_path_over_the_ramp() {
+    // docs/scenes.md: the grooves of scene 01 slip about 0.5 um over the
+    // 1 s ramp, so c v_slip is about c 5e-7 m/s. In the large-c limit
+    // (mu = mu_d for any slip) the slip path does not depend on c, so
+    // c v_slip grows as c.
+    let (a, b) = (quasi_static_cv(1e9), quasi_static_cv(1e10));
+    assert!((b / a / 10.0 - 1.0).abs() < 1e-6, "{a:e} {b:e}");
+    let v_slip = a / 1e9;
+    assert!((1e-7..2e-6).contains(&v_slip), "v_slip {v_slip:e} m/s");
+    let cp = common::load("01_maxwell_vgroove_steel.toml");
+    let s = quasistatic::seat(&cp, &nominal_mu(&cp), &SolverOptions::default()).unwrap();
+    assert_eq!(s.decay_cv, None);
+}
+
 #[test]
 fn decay_cv_is_the_coefficient_times_a_slip_speed() {
     // In the large-c limit mu = mu_d for any slip, so the slip path, and
@@ -46,9 +69,9 @@ fn decay_cv_is_the_coefficient_times_a_slip_speed() {
     assert_eq!(s.decay_cv, None);
 }
 
-/// Whether `run --solver dynamic` and `study --solver dynamic` of `scene` warn
-/// (and exit 0 either way).
-fn warns(dir: &Path, scene: &Path) -> [bool; 2] {
+/// Whether `run` and `study` of `scene` warn, with the dynamic solver and
+/// with the quasi-static one (and exit 0 either way).
+fn warns(dir: &Path, scene: &Path) -> [bool; 4] {
     let s = scene.to_str().unwrap();
     let warned = |args: &[&str]| {
         let (code, _, err) = run_in(dir, args);
@@ -60,6 +83,8 @@ fn warns(dir: &Path, scene: &Path) -> [bool; 2] {
     [
         warned(&["run", "--solver", "dynamic", s]),
         warned(&["study", "--solver", "dynamic", "--samples", "4", s]),
+        warned(&["run", s]),
+        warned(&["study", "--samples", "4", s]),
     ]
 }
 
@@ -70,25 +95,27 @@ fn decay_law_in_its_transition_warns() {
     let dir = tempfile::tempdir().unwrap();
     for (c, text) in [(2e6, "2e6"), (20.0, "20.0"), (1e10, "1e10")] {
         let expect = in_transition(decay_cv(c));
+        let quasi = in_transition(quasi_static_cv(c));
         assert_eq!(
             warns(dir.path(), &decay_scene(dir.path(), text)),
-            [expect; 2],
+            [expect, expect, quasi, quasi],
             "c = {c}"
         );
         if c == 2e6 {
             assert!(
-                expect,
-                "c = 2e6 s/m: {} outside {TRANSITION:?}",
-                decay_cv(c)
+                expect && quasi,
+                "c = 2e6 s/m: {} and {} outside {TRANSITION:?}",
+                decay_cv(c),
+                quasi_static_cv(c)
             );
         } else {
-            assert!(!expect, "c = {c}");
+            assert!(!expect && !quasi, "c = {c}");
         }
     }
     // The default scene (switch law) never warns.
     assert_eq!(
         warns(dir.path(), &common::scene("01_maxwell_vgroove_steel.toml")),
-        [false; 2]
+        [false; 4]
     );
 }
 

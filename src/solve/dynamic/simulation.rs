@@ -11,7 +11,7 @@ use super::options::DynamicOptions;
 use super::trace::{Energy, TraceContact, TraceSample, TraceState};
 use super::world::{self, dvec, from_rapier, nvec};
 use crate::assembly::{BodyPose, Coupling};
-use crate::contact::friction::{self, FrictionLaw};
+use crate::contact::friction;
 use crate::contact::{Friction, SlipState, TangentialState};
 use crate::solve::preload_forces::{Applied, applied};
 use crate::solve::{SolveError, frictions};
@@ -323,15 +323,7 @@ impl<'a> Simulation<'a> {
         } else {
             self.time_of_state()
         };
-        let cv = self
-            .friction
-            .iter()
-            .zip(&self.slip_path)
-            .filter_map(|(f, path)| match f.law {
-                FrictionLaw::Decay { coefficient } => Some(coefficient * path / time),
-                FrictionLaw::Switch => None,
-            });
-        friction::deepest(cv)
+        friction::seating_cv(&self.friction, &self.slip_path, time)
     }
 
     /// Whether the state of the last step is at rest (module docs).

@@ -119,7 +119,7 @@ pub(super) fn seat_controlled(
                     SeatingPath::Uniform
                 },
                 path_error: Some(error),
-                decay_cv: None,
+                decay_cv: fine.decay_cv,
             });
         }
         coarse = fine.pose;

@@ -160,7 +160,7 @@ pub fn seat_in(
         } else {
             SeatingPath::Uniform
         },
-        decay_cv: None,
+        decay_cv: end.decay_cv,
         path_error: None,
     })
 }

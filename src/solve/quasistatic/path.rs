@@ -13,6 +13,7 @@ use nalgebra::Vector6;
 use super::external::LoadEvent;
 use super::solver::{Loads, Program, Solver, Step, twist_between};
 use crate::assembly::BodyPose;
+use crate::contact::friction;
 use crate::contact::{SlipState, TangentialState};
 use crate::solve::SolveError;
 use crate::solve::contact_layer::ContactEval;
@@ -25,6 +26,9 @@ pub(super) struct Buffers {
     pub states: Vec<TangentialState>,
     pub evals: Vec<ContactEval>,
     pub trial: Vec<ContactEval>,
+    /// Each contact's slip summed over the path [m] (slip velocity times
+    /// increment duration): the decay law's v_slip ([`End::decay_cv`]).
+    pub slip_path: Vec<f64>,
 }
 
 /// The end of a path; its contact states and evaluations are in the
@@ -41,6 +45,8 @@ pub(super) struct End {
     /// Whether an increment was halved (else the path took the nominal
     /// increments s_k = k/N).
     pub halved: bool,
+    /// The decay law's c v_slip of the path (`friction::seating_cv`).
+    pub decay_cv: Option<f64>,
 }
 
 /// The committed state of a path between increments.
@@ -49,6 +55,8 @@ pub(super) struct Walk<'w> {
     pub states: &'w mut Vec<TangentialState>,
     /// The contacts at `pose` (empty before the first increment of a seating).
     pub evals: &'w mut Vec<ContactEval>,
+    /// Each contact's slip so far [m] ([`Buffers::slip_path`]).
+    pub slip_path: &'w mut Vec<f64>,
     /// Path parameter reached.
     pub s: f64,
     pub event: Option<LoadEvent>,
@@ -78,16 +86,24 @@ enum Verdict {
     Stop(SolveError),
 }
 
-/// Accept an increment: the trial evaluations and states become the
-/// committed ones. Returns the increment's twist and its length in s.
+/// Accept an increment lasting `duration` [s]: the trial evaluations and
+/// states become the committed ones, and each contact's slip velocity times
+/// `duration` adds to its slip path. Returns the increment's twist and its
+/// length in s.
 fn commit(
     w: &mut Walk,
     trial: &mut Vec<ContactEval>,
     new_pose: BodyPose,
-    s_next: f64,
+    (s_next, duration): (f64, f64),
 ) -> (Vector6<f64>, f64) {
-    for (st, e) in w.states.iter_mut().zip(trial.iter()) {
+    for ((st, e), path) in w
+        .states
+        .iter_mut()
+        .zip(trial.iter())
+        .zip(w.slip_path.iter_mut())
+    {
         st.clone_from(&e.tangential.state);
+        *path += st.slip_velocity * duration;
     }
     let step = (twist_between(&w.pose, &new_pose), s_next - w.s);
     w.pose = new_pose;
@@ -120,11 +136,14 @@ impl Solver<'_> {
         let nominal = 1.0 / self.opts.increments.max(1) as f64;
         let h_min = nominal / f64::powi(2.0, self.opts.max_splits as i32);
         bufs.evals.clear();
+        bufs.slip_path.clear();
+        bufs.slip_path.resize(bufs.states.len(), 0.0);
         let trial = &mut bufs.trial;
         let mut w = Walk {
             pose: start,
             states: &mut bufs.states,
             evals: &mut bufs.evals,
+            slip_path: &mut bufs.slip_path,
             s: 0.0,
             event: None,
             accepted: 0,
@@ -181,7 +200,8 @@ impl Solver<'_> {
                     let Step::Converged(new_pose, _) = step else {
                         unreachable!("only a converged increment is accepted")
                     };
-                    last_step = Some(commit(&mut w, trial, new_pose, s_next));
+                    let span = (s_next, loads.duration);
+                    last_step = Some(commit(&mut w, trial, new_pose, span));
                     t = t_next;
                     if !changed {
                         h = (2.0 * h).min(nominal);
@@ -309,6 +329,7 @@ impl Solver<'_> {
             increments: w.accepted,
             newton_iterations: w.iterations,
             halved: w.halved,
+            decay_cv: friction::seating_cv(self.friction, w.slip_path, self.ramp_time),
         }
     }
 }
