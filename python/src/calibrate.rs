@@ -288,7 +288,8 @@ pub fn predict(
             .iter()
             .map(|s| {
                 let c = coupling(&s.text, &s.file)?;
-                predict_one(&c, &cal, samples, seed, Method::default()).map_err(|e| e.to_string())
+                predict_one(&c, &cal, &file, samples, seed, Method::default())
+                    .map_err(|e| e.to_string())
             })
             .collect::<Result<Vec<_>, String>>()?;
         Ok(PredictionReport {
