@@ -43,11 +43,12 @@
 //! along a straight path (scene 01) the first pair agrees to rounding and
 //! the seating takes 6 + 12 increments.
 
+use nalgebra::Vector6;
+
 use super::path::End;
 use super::solver::{Program, Solver, twist_between};
 use super::{SeatingSetup, Workspace};
-use crate::assembly::BodyPose;
-use crate::solve::{SeatedPose, SeatingPath, SolveError, SolverOptions};
+use crate::solve::{SeatedPose, SolveError, SolverOptions};
 
 /// The coarsest level's graded increments.
 const FIRST: usize = 6;
@@ -73,9 +74,8 @@ pub(super) fn level(
     solver.run(c.touching_pose, &mut ws.bufs)
 }
 
-/// |(v, w)|_L of the twist from `a` to `b` (module docs).
-fn size(a: &BodyPose, b: &BodyPose, length: f64) -> f64 {
-    let t = twist_between(a, b);
+/// |(v, w)|_L of the twist `t` (module docs).
+fn size(t: &Vector6<f64>, length: f64) -> f64 {
     let v = t.fixed_rows::<3>(0).norm();
     let w = t.fixed_rows::<3>(3).norm();
     v.hypot(length * w)
@@ -101,9 +101,10 @@ pub(super) fn seat_controlled(
         increments += fine.increments;
         iterations += fine.newton_iterations;
         halved |= fine.halved;
-        let d = twist_between(&coarse, &fine.pose) / 3.0;
-        let motion = size(&c.touching_pose, &fine.pose, length);
-        let change = size(&coarse, &fine.pose, length);
+        let change = twist_between(&coarse, &fine.pose);
+        let d = change / 3.0;
+        let motion = size(&twist_between(&c.touching_pose, &fine.pose), length);
+        let change = size(&change, length);
         let floor = fine.increments as f64 * opts.tolerance;
         let error = if motion > 0.0 { change / motion } else { 0.0 } + floor;
         if error <= tolerance || n >= FINEST {
@@ -113,11 +114,7 @@ pub(super) fn seat_controlled(
                     .moved(&d.fixed_rows::<3>(0).into(), &d.fixed_rows::<3>(3).into()),
                 increments,
                 newton_iterations: iterations,
-                path: if halved {
-                    SeatingPath::Adaptive
-                } else {
-                    SeatingPath::Uniform
-                },
+                path: super::path_of(halved),
                 path_error: Some(error),
                 decay_cv: fine.decay_cv,
             });

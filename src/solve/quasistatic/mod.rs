@@ -155,14 +155,20 @@ pub fn seat_in(
         pose: end.pose,
         increments: end.increments,
         newton_iterations: end.newton_iterations,
-        path: if end.halved {
-            SeatingPath::Adaptive
-        } else {
-            SeatingPath::Uniform
-        },
+        path: path_of(end.halved),
         decay_cv: end.decay_cv,
         path_error: None,
     })
+}
+
+/// The path that served a quasi-static seating: adaptive where an
+/// increment was halved, else uniform.
+fn path_of(halved: bool) -> SeatingPath {
+    if halved {
+        SeatingPath::Adaptive
+    } else {
+        SeatingPath::Uniform
+    }
 }
 
 /// Zero tangential force at every contact, tangent to its normal at the
