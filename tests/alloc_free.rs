@@ -94,11 +94,11 @@ fn a_seating_in_a_reused_workspace_allocates_nothing() {
         // The buffers depend on the contact count only: the count stays
         // zero on 20 and 60 fixed increments (three times the Newton
         // iterations) and under load-path error control (several levels
-        // of increments in the one workspace).
+        // of increments in the one workspace: 3 and 6 at least).
         for (increments, opts) in [
             (20, SolverOptions::fixed(20)),
             (60, SolverOptions::fixed(60)),
-            (12, opts),
+            (9, opts),
         ] {
             let mut poses = Vec::with_capacity(mus.len());
             let before = allocations();

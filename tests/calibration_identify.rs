@@ -17,6 +17,12 @@ use rand_chacha::ChaCha8Rng;
 /// The grid's interpolation against direct studies (same seed) half way
 /// between nodes, for each grid parameter of scene 02: sigma per DOF within
 /// 1 % (the grid's check at the estimate reports the same quantity).
+/// For mu_static the checked intervals keep their four Catmull-Rom nodes
+/// at or below mu0 = 0.7125 (mu_s <= 0.7625): above about mu_s = 0.78 some
+/// pin contacts of scene 02 stick from the first load on (all six stick
+/// above Mindlin's ratio of the pin contact, 0.854; `tests/fresh_contact.rs`),
+/// a change of regime that a smooth interpolation does not follow; there
+/// the grid's check says so.
 #[test]
 fn grid_interpolation_matches_direct_studies_between_nodes() {
     let c = common::load("02_maxwell_pins_steel.toml");
@@ -38,7 +44,8 @@ fn grid_interpolation_matches_direct_studies_between_nodes() {
         let grid = ModelGrid::build(&spec, &[p], &[range], 0.05).unwrap();
         let nodes = &grid.nodes[0];
         let mut worst = 0.0f64;
-        for i in [0, nodes.len() / 2, nodes.len() - 2] {
+        let last = if p == Param::MuStatic { 4 } else { 2 };
+        for i in [0, nodes.len() / 2, nodes.len() - last] {
             let v = 0.5 * (nodes[i] + nodes[i + 1]);
             let g = grid.at(&[v]);
             let direct = spec

@@ -170,7 +170,10 @@ fn cli_path_tolerance_and_load_path() {
     let run = json(&["run", scene, "--json", "--path-tolerance", "1e-6"]);
     let e = run["path_error"].as_f64().unwrap();
     assert!(e > 0.0 && e <= 1e-6, "{e}");
-    assert!(run["increments"].as_u64().unwrap() > 20);
+    // Levels of 3, 6, 12, ... increments (no halving on scene 06): at
+    // least the first two, 3 (2^k - 1) in all.
+    let n = run["increments"].as_u64().unwrap();
+    assert!(n >= 9 && n % 3 == 0 && (n / 3 + 1).is_power_of_two(), "{n}");
     let fixed = json(&["run", scene, "--json", "--increments", "20"]);
     assert!(fixed["path_error"].is_null());
     assert_eq!(fixed["increments"], 20);

@@ -8,7 +8,7 @@
 //! step solves F_t(s) = Q for the increment of s by Newton's method with the
 //! law's consistent tangent, starting from the committed state (the laws are
 //! displacement driven). The solvers' contact layer makes the same choices
-//! (K_t at the step's mean normal force; `solve::contact_layer`).
+//! (K_t integrated over the step's change of normal force; `solve::contact_layer`).
 //!
 //! Convergence: on a partial-slip branch Q(s) is concave along the motion,
 //! so Newton from the elastic predictor approaches the root from below; a
@@ -109,8 +109,9 @@ pub fn drive(
     Ok(out)
 }
 
-/// The law's input at load `p` from `state` (zero increment), K_t at the
-/// step's mean normal force as the solvers' contact layer forms it.
+/// The law's input at load `p` from `state` (zero increment), K_t of the
+/// step from the committed to the new normal force as the solvers' contact
+/// layer forms it.
 fn step_input(
     law: &ContactLaw,
     tangential: TangentialLaw,
@@ -119,9 +120,9 @@ fn step_input(
     friction: Friction,
 ) -> TangentialInput {
     let (n, x) = (Vector3::z(), Vector3::x());
-    let (f_mid, a_mid) = law.midpoint_semi_axis(state.normal_force, p);
+    let (a_eff, dlog) = law.increment_semi_axis(state.normal_force, p);
     let (principal, stiffness, d_stiffness_d_fn) =
-        law.midpoint_stiffness(f_mid, a_mid, &n, &x, true);
+        law.increment_stiffness(a_eff, dlog, &n, &x, true);
     let (contact_radius, mindlin_shape) = law.mindlin_deresiewicz_inputs(tangential, p, &n, &x);
     TangentialInput {
         normal: n,

@@ -337,47 +337,53 @@ impl ContactLaw {
         (kt, kt / (3.0 * load))
     }
 
-    /// The mean normal force F_mid = (committed_fn + fn_)/2 of an increment
-    /// from `committed_fn` to `fn_` (midpoint rule, module docs of
-    /// `solve::contact_layer`) and the major semi-axis a(F_mid) (the fast
-    /// cube root): the long-latency part of [`Self::midpoint_stiffness`],
-    /// which the solver forms for all contacts before the rest.
+    /// The increment's effective semi-axis for K_t and its relative
+    /// derivative: a_eff = (2/3) (a0^2 + a0 a1 + a1^2) / (a0 + a1) from
+    /// a0 = a(`committed_fn`) and a1 = a(`fn_`) (the fast cube root), and
+    /// d(ln a_eff)/dF_n (module docs of `solve::contact_layer`). It is the
+    /// long-latency part of [`Self::increment_stiffness`], which the solver
+    /// forms for all contacts before the rest.
     #[inline]
-    pub fn midpoint_semi_axis(&self, committed_fn: f64, fn_: f64) -> (f64, f64) {
-        let f_mid = 0.5 * (committed_fn + fn_);
-        (f_mid, self.hertz.major_semi_axis_fast(f_mid))
+    pub fn increment_semi_axis(&self, committed_fn: f64, fn_: f64) -> (f64, f64) {
+        let a0 = self.hertz.major_semi_axis_fast(committed_fn);
+        let a1 = self.hertz.major_semi_axis_fast(fn_);
+        let sum = a0 + a1;
+        if sum <= 0.0 || fn_ <= 0.0 {
+            return (0.5 * sum, 0.0);
+        }
+        let q = a0 * a0 + a0 * a1 + a1 * a1;
+        let a_eff = (2.0 / 3.0) * q / sum;
+        // d a_eff / d a1 = (2/3) (2 a0 a1 + a1^2) / (a0 + a1)^2, d a1 / dF = a1 / (3 F).
+        let dlog = (2.0 * a0 + a1) * a1 * a1 / (sum * q * 3.0 * fn_);
+        (a_eff, dlog)
     }
 
-    /// K_t of an increment from F_mid and a(F_mid)
-    /// ([`Self::midpoint_semi_axis`]): Mindlin's principal stiffnesses
-    /// k = coef a(F_mid) about `major_axis` (zero: circular), the 3x3
-    /// tensor in the plane of `normal`, and, if `tangent`,
-    /// dK_t/dF_n = K_t / (3 F_mid) d(F_mid)/dF_n = K_t / (6 F_mid) (zero
-    /// otherwise, or unloaded). Without `tangent` a circular contact's
-    /// tensor is left at zero: the laws read it only for the tangent (the
-    /// Coulomb law applies a circle's K_t by its value k, `coulomb::Circle`;
-    /// Mindlin-Deresiewicz reads its shape).
+    /// K_t of an increment from its effective semi-axis and the relative
+    /// derivative ([`Self::increment_semi_axis`]): Mindlin's principal
+    /// stiffnesses k = coef a_eff about `major_axis` (zero: circular), the
+    /// 3x3 tensor in the plane of `normal`, and, if `tangent`,
+    /// dK_t/dF_n = K_t d(ln a_eff)/dF_n (zero otherwise, or unloaded).
+    /// Without `tangent` a circular contact's tensor is left at zero: the
+    /// laws read it only for the tangent (the Coulomb law applies a
+    /// circle's K_t by its value k, `coulomb::Circle`; Mindlin-Deresiewicz
+    /// reads its shape).
     #[inline]
-    pub fn midpoint_stiffness(
+    pub fn increment_stiffness(
         &self,
-        f_mid: f64,
-        a_mid: f64,
+        a_eff: f64,
+        dlog: f64,
         normal: &Vector3<f64>,
         major_axis: &Vector3<f64>,
         tangent: bool,
     ) -> (PrincipalStiffness, Matrix3<f64>, Matrix3<f64>) {
         let principal =
-            PrincipalStiffness::new(self.mindlin.map(|c| c * a_mid), normal, major_axis);
+            PrincipalStiffness::new(self.mindlin.map(|c| c * a_eff), normal, major_axis);
         let kt = if tangent || principal.axes.is_some() {
             principal.tensor(normal)
         } else {
             Matrix3::zeros()
         };
-        let dkt = if tangent && f_mid > 0.0 {
-            kt * (1.0 / (6.0 * f_mid))
-        } else {
-            Matrix3::zeros()
-        };
+        let dkt = if tangent { kt * dlog } else { Matrix3::zeros() };
         (principal, kt, dkt)
     }
 

@@ -134,7 +134,7 @@ pub struct TangentialState {
     /// before a Mindlin-Deresiewicz contact first carries load).
     pub row: Option<Box<SpringRow>>,
     /// Normal force when this state was committed [N] (the solvers integrate
-    /// k_t at the mean normal force of an increment, see `solve::contact_layer`).
+    /// k_t over an increment from it to the trial force, see `solve::contact_layer`).
     pub normal_force: f64,
     /// Slip velocity of the committed increment [m/s] (0 while sticking; the
     /// decay friction law's velocity, `contact::friction`).

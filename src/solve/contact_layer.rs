@@ -9,10 +9,12 @@
 //! F = F_n n - F_t (F_t the law's force, see `contact::tangential`), applied
 //! at p.
 //!
-//! Mindlin's stiffness follows the normal load (K_t ~ F_n^(1/3)), so an
-//! increment integrates dF_t = K_t(F_n) du with K_t at the mean normal force
-//! of the increment, (F_n,committed + F_n)/2 (midpoint rule: second order in
-//! the increment, where K_t at the end force would be first order). K_t is
+//! Mindlin's stiffness follows the normal load (K_t ~ a ~ F_n^(1/3)), so an
+//! increment integrates dF_t = K_t(a) du with du taken to grow with the
+//! Hertz approach (du ~ d(a^2)) inside the increment: K_t at
+//! a_eff = (2/3)(a0^2 + a0 a1 + a1^2)/(a0 + a1), a0 at the committed normal
+//! force and a1 at the trial one (`ContactLaw::increment_semi_axis`; exact
+//! along a proportional path, second order otherwise). K_t is
 //! Mindlin's 2x2 elliptical stiffness in the tangent plane, its major axis
 //! the contact's (`assembly::Contact::major_axis`: along the pin for a
 //! sphere-cylinder contact, across the groove for a sphere-groove one)
@@ -159,8 +161,8 @@ pub struct NormalPart {
     pub approach: f64,
     pub normal_force: f64,
     pub normal_stiffness: f64,
-    pub f_mid: f64,
-    pub a_mid: f64,
+    pub dlog: f64,
+    pub a_eff: f64,
 }
 
 impl NormalPart {
@@ -176,13 +178,13 @@ impl NormalPart {
         let approach = -g.gap;
         // Hertz in series with the support compliance (`contact::series`).
         let (fn_, kn) = contact.normal.force_and_stiffness(approach);
-        let (f_mid, a_mid) = contact.law.midpoint_semi_axis(committed.normal_force, fn_);
+        let (a_eff, dlog) = contact.law.increment_semi_axis(committed.normal_force, fn_);
         NormalPart {
             approach,
             normal_force: fn_,
             normal_stiffness: kn,
-            f_mid,
-            a_mid,
+            dlog,
+            a_eff,
         }
     }
 }
@@ -215,13 +217,13 @@ pub fn evaluate_into(
         approach,
         normal_force: fn_,
         normal_stiffness: kn,
-        f_mid,
-        a_mid,
+        dlog,
+        a_eff,
     } = *normal;
     let major_axis = contact.major_axis;
     let law = &contact.law;
     let (principal, kt, dkt) =
-        law.midpoint_stiffness(f_mid, a_mid, &g.normal, &major_axis, tangent);
+        law.increment_stiffness(a_eff, dlog, &g.normal, &major_axis, tangent);
     let tangential_law = coupling.scene.friction.tangential_law;
     let (contact_radius, mindlin_shape) =
         law.mindlin_deresiewicz_inputs(tangential_law, fn_, &g.normal, &major_axis);

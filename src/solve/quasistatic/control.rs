@@ -3,21 +3,21 @@
 //! The path follower is first order in its increment: the friction force
 //! of an increment points along R F_old + K_t du (a backward-Euler step of
 //! the slip-direction history), so a seating on N increments differs from
-//! the limit of the path by about C / N. Uniform in s (lambda = s^(3/2))
-//! the Mindlin stiffness k_t ~ a ~ s^(1/2) of a sticking contact has an
-//! infinite slope at s = 0, which leaves a slowly decaying h log h part
-//! in the error (measured on scenes 06 and 07); a controlled seating
-//! therefore takes its increments uniform in t = sqrt(s) (lambda = t^3,
-//! approach ~ t^2, k_t ~ t: smooth in t), where the error of the seated
-//! pose x_N behaves as C_1 h + C_2 h^2 + ... with h = 1/N and falls by a
-//! factor 3 to 3.5 per doubling of N on the bundled scenes.
+//! the limit of the path by about C / N. The increment's K_t integrates
+//! Mindlin's stiffness exactly along a proportional path
+//! (`ContactLaw::increment_semi_axis`), which leaves the turning of the
+//! slip directions and the contact geometry. A controlled seating takes
+//! its increments uniform in t = sqrt(s) (lambda = t^3, approach ~ t^2,
+//! k_t ~ t: smooth in t), where the error of the seated pose x_N behaves
+//! as C_1 h with h = 1/N: it halves per doubling of N on every bundled
+//! scene.
 //!
-//! The controller seats on N = 6, 12, 24, ... graded increments, each
-//! level from the touching pose, and after every level N >= 12 forms
+//! The controller seats on N = 3, 6, 12, ... graded increments, each
+//! level from the touching pose, and after every level N >= 6 forms
 //!
 //! ```text
 //! d   = x_N - x_{N/2}                  (a twist: `twist_between`)
-//! x*  = x_N + d / 3                    (Richardson, second order)
+//! x*  = x_N + d                        (Richardson, first order)
 //! err = |d|_L / |x_N - x_0|_L + M tol_Newton
 //! ```
 //!
@@ -30,18 +30,15 @@
 //! history). It stops at the first level with err <= tolerance (or at
 //! [`FINEST`] increments) and reports x* with `path_error` = err.
 //!
-//! err is the whole change of the last doubling. With x_N = x + C_1 h +
-//! C_2 h^2, d = -(C_1 h + 3 C_2 h^2) and x* - x = (2/3) C_1 h: err bounds
-//! the error left by a margin of 1.5 where the first-order term
-//! dominates (scene 04) and of 3 where the second-order one does (the
-//! Kelvin scenes). Measured against the limit of the fixed path
+//! err estimates the error of x_N (with x_N = x + C_1 h + C_2 h^2,
+//! d = -(C_1 h + 3 C_2 h^2)); x* removes the first-order part, so err
+//! bounds the error left. Measured against the limit of the fixed path
 //! (first-order Richardson of 2560 and 5120 uniform increments,
-//! tests/path_control.rs) the true error is at most 0.16 of err for 200
-//! friction vectors each of scenes 02 and 06. A contact that changes
-//! between stick and slip is located by halving inside every level
-//! (`path`), to 2^-max_splits of its increment. Where every contact slides
-//! along a straight path (scene 01) the first pair agrees to rounding and
-//! the seating takes 6 + 12 increments.
+//! tests/path_control.rs) the true error is below err for 200 friction
+//! vectors each of scenes 02 and 06. A contact that changes between stick
+//! and slip is located by halving inside every level (`path`), to
+//! 2^-max_splits of its increment. On every bundled scene the first pair,
+//! 3 + 6 increments, meets the default tolerance.
 
 use nalgebra::Vector6;
 
@@ -51,9 +48,9 @@ use super::{SeatingSetup, Workspace};
 use crate::solve::{SeatedPose, SolveError, SolverOptions};
 
 /// The coarsest level's graded increments.
-const FIRST: usize = 6;
-/// The finest level: a seating stops here even above its tolerance (its
-/// `path_error` says so).
+const FIRST: usize = 3;
+/// The finest level (3 x 2^11): a seating stops here even above its
+/// tolerance (its `path_error` says so).
 pub const FINEST: usize = 6144;
 
 /// One seating on `n` increments (graded where `opts` control the path),
@@ -101,10 +98,10 @@ pub(super) fn seat_controlled(
         increments += fine.increments;
         iterations += fine.newton_iterations;
         halved |= fine.halved;
-        let change = twist_between(&coarse, &fine.pose);
-        let d = change / 3.0;
+        // d = x_N - x_{N/2}, which x* = x_N + d adds (module docs).
+        let d = twist_between(&coarse, &fine.pose);
         let motion = size(&twist_between(&c.touching_pose, &fine.pose), length);
-        let change = size(&change, length);
+        let change = size(&d, length);
         let floor = fine.increments as f64 * opts.tolerance;
         let error = if motion > 0.0 { change / motion } else { 0.0 } + floor;
         if error <= tolerance || n >= FINEST {

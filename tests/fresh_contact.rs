@@ -1,0 +1,77 @@
+//! A fresh contact loaded from zero along a fixed direction: whether it
+//! sticks, and the force ratio it then carries, must not depend on the
+//! load increments. Mindlin (1949; Johnson 1985, §7.3): a Hertz contact
+//! whose tangential and normal displacements grow in a fixed ratio u / delta
+//! carries F_t / F_n = (k_t / k_n) (u / delta) with no slip anywhere, where
+//! k_t / k_n = 8 G* a / (2 E* a) = 2 (1 - nu) / (2 - nu) for equal
+//! materials; it sticks if mu_s exceeds that ratio and slides otherwise.
+//!
+//! Scene 01 (three V-grooves of planes, 45-degree flanks, steel, no
+//! support compliance) seated with one mu_s at every contact descends
+//! along z alone (its three-fold symmetry), so every contact's
+//! u / delta = tan 45 = 1 and the ratio is 2 (1 - nu) / (2 - nu) = 0.8235
+//! for nu = 0.3. Each increment's K_t integrates Mindlin's stiffness over
+//! the increment (`contact::ContactLaw::increment_semi_axis`), so the first
+//! increment already carries the exact ratio and the stick/slip decision,
+//! which a fresh contact keeps along a proportional path, is the limit's
+//! at any number of increments.
+
+mod common;
+use common::load;
+
+use kinrepro::contact::SlipState;
+use kinrepro::solve::SolverOptions;
+use kinrepro::solve::quasistatic::seat;
+
+/// Mindlin's F_t / F_n of a contact of equal materials with u / delta = 1.
+fn mindlin_ratio(nu: f64) -> f64 {
+    2.0 * (1.0 - nu) / (2.0 - nu)
+}
+
+fn options() -> Vec<(String, SolverOptions)> {
+    let mut out: Vec<(String, SolverOptions)> = [1, 2, 20, 320]
+        .into_iter()
+        .map(|n| (format!("{n} fixed increments"), SolverOptions::fixed(n)))
+        .collect();
+    out.push(("the controlled path".into(), SolverOptions::default()));
+    out
+}
+
+#[test]
+fn a_fresh_contact_above_mindlins_ratio_sticks_at_that_ratio_at_any_increments() {
+    let c = load("01_maxwell_vgroove_steel.toml");
+    let ratio = mindlin_ratio(0.3);
+    for (label, opts) in options() {
+        let mu = vec![1.01 * ratio; c.contacts.len()];
+        let s = seat(&c, &mu, &opts).unwrap();
+        for (i, k) in s.contacts.iter().enumerate() {
+            assert_eq!(k.state, SlipState::Stick, "{label}: contact {}", i + 1);
+            let r = k.tangential_force_n / k.normal_force_n;
+            assert!(
+                (r / ratio - 1.0).abs() < 1e-6,
+                "{label}: contact {} carries {r}, Mindlin {ratio}",
+                i + 1
+            );
+        }
+    }
+}
+
+#[test]
+fn a_fresh_contact_below_mindlins_ratio_slides_at_any_increments() {
+    let c = load("01_maxwell_vgroove_steel.toml");
+    let ratio = mindlin_ratio(0.3);
+    for (label, opts) in options() {
+        let mu = vec![0.99 * ratio; c.contacts.len()];
+        let s = seat(&c, &mu, &opts).unwrap();
+        for (i, k) in s.contacts.iter().enumerate() {
+            assert_eq!(k.state, SlipState::Slip, "{label}: contact {}", i + 1);
+            let r = k.tangential_force_n / k.normal_force_n;
+            assert!(
+                (r / k.mu_dynamic - 1.0).abs() < 1e-9,
+                "{label}: contact {} carries {r}, mu_d {}",
+                i + 1,
+                k.mu_dynamic
+            );
+        }
+    }
+}
