@@ -140,7 +140,7 @@ impl Setting {
     }
 
     /// The contact layer's preparation (`evaluate_into`, with the same
-    /// `ContactLaw` calls): K_t at the mean normal force of the increment,
+    /// `ContactLaw` calls): K_t of the increment from the committed to the new normal force,
     /// its derivative, the MDR shape.
     fn input(
         &self,
@@ -150,9 +150,9 @@ impl Setting {
         friction: Friction,
     ) -> TangentialInput {
         let (fn_, _) = normal_law.force_and_stiffness(self.approach);
-        let (f_mid, a_mid) = law.midpoint_semi_axis(self.committed_fn, fn_);
+        let (a_eff, dlog) = law.increment_semi_axis(self.committed_fn, fn_);
         let (principal, kt, dkt) =
-            law.midpoint_stiffness(f_mid, a_mid, &self.normal, &self.major_axis, true);
+            law.increment_stiffness(a_eff, dlog, &self.normal, &self.major_axis, true);
         let (contact_radius, mindlin_shape) =
             law.mindlin_deresiewicz_inputs(tl, fn_, &self.normal, &self.major_axis);
         TangentialInput {

@@ -75,3 +75,52 @@ fn a_fresh_contact_below_mindlins_ratio_slides_at_any_increments() {
         }
     }
 }
+
+/// The increment's effective semi-axis against an independent quadrature:
+/// a_eff = int a d(a^2) / int d(a^2) over the increment, by Simpson's rule
+/// on a fine grid of the normal force (a ~ F^(1/3)), for increments from
+/// zero, small and large; and its relative derivative against a central
+/// difference in the new normal force.
+#[test]
+fn the_increments_semi_axis_is_mindlins_stiffness_integrated_over_the_increment() {
+    let c = load("02_maxwell_pins_steel.toml");
+    let law = &c.contacts[0].law;
+    let a = |f: f64| law.hertz.semi_axes(f)[0];
+    for (f0, f1) in [(0.0, 3.0), (1.0, 1.1), (0.2, 3.0), (3.0, 1.0), (2.0, 2.0)] {
+        let (a_eff, dlog) = law.increment_semi_axis(f0, f1);
+        // Simpson on F in [f0, f1] of a(F) d(a^2)/dF, over the same of d(a^2)/dF,
+        // d(a^2)/dF = (2/3) a^2 / F; in the variable t = F^(1/3) it is smooth.
+        let n = 2000;
+        let (t0, t1) = (f0.cbrt(), f1.cbrt());
+        let (mut num, mut den) = (0.0, 0.0);
+        for k in 0..=n {
+            let t = t0 + (t1 - t0) * k as f64 / n as f64;
+            let w = if k == 0 || k == n {
+                1.0
+            } else if k % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            };
+            let f = t * t * t;
+            let ai = a(f);
+            // d(a^2)/dt = 2 a da/dt, a ~ t: d(a^2)/dt = 2 a^2 / t.
+            let da2 = if t > 0.0 { 2.0 * ai * ai / t } else { 0.0 };
+            num += w * ai * da2;
+            den += w * da2;
+        }
+        let expect = if f0 == f1 { a(f1) } else { num / den };
+        assert!(
+            (a_eff / expect - 1.0).abs() < 1e-9,
+            "{f0} -> {f1}: {a_eff} against {expect}"
+        );
+        let h = 1e-6 * f1;
+        let (up, _) = law.increment_semi_axis(f0, f1 + h);
+        let (down, _) = law.increment_semi_axis(f0, f1 - h);
+        let numeric = (up - down) / (2.0 * h) / a_eff;
+        assert!(
+            (dlog / numeric - 1.0).abs() < 1e-6,
+            "{f0} -> {f1}: d ln a_eff / dF {dlog} against {numeric}"
+        );
+    }
+}

@@ -8,7 +8,7 @@
 //! (3) with the spread fitted, the grid again at the estimated spread, and
 //! the estimate again, so that sigma ∝ spread spans only the interval;
 //! (4) a direct study at the estimate: the check of grid and linear law
-//! (`model.grid.check`), the change of sigma / spread from the reference
+//! (`model.grid.check`, with the region points of step 6 too), the change of sigma / spread from the reference
 //! (`model.linearity`) and the pose samples for the information; (5) per
 //! parameter the adjusted profile interval, widened in quadrature by the
 //! model study's error (on ln s for the spread, linearly for the others);
@@ -81,19 +81,16 @@ pub fn calibrate(
     let fit = fit_at(&jm, &u_hat, l_max, &at_estimate.samples_of(&m.dofs));
     let fitted = jm.sigma(&theta).ok_or_else(|| singular(m))?;
     let s_hat = jm.spread(&theta);
-    let g_hat = (&fitted - DMatrix::from_diagonal(&DVector::from_column_slice(&noise_var)))
-        / (s_hat * s_hat);
+    let g_hat = per_unit_model(&fitted, &noise_var, s_hat);
     let gof = goodness_of_fit(&obs, &fitted, params.len());
     let direct = at_estimate.per_unit(&m.dofs);
     let phi_hat = jm.phi(&theta);
     let linearity = sigma_difference(&reference.at(&phi_hat), &direct);
-    let info = model_info(
-        opts,
-        s_ref,
-        grid,
-        linearity,
-        sigma_difference(&g_hat, &direct),
-    );
+    let mut check = sigma_difference(&g_hat, &direct);
+    if !grid.params.is_empty() {
+        check = check.max(region_check(&spec, &jm, &params, &fit.region, &noise_var)?);
+    }
+    let info = model_info(opts, s_ref, grid, linearity, check);
     let mut cal = skeleton(
         coupling,
         m,
@@ -207,6 +204,37 @@ fn singular(m: &Measurement) -> CalibrateError {
 
 /// Largest relative difference of sigma between two model covariances per
 /// unit spread^2 (`b` the direct study's).
+/// The model covariance per unit spread^2, (Sigma - N) / s^2, of the
+/// model's Sigma (noise N on the diagonal) at spread `s`.
+fn per_unit_model(sigma: &DMatrix<f64>, noise_var: &[f64], s: f64) -> DMatrix<f64> {
+    (sigma - DMatrix::from_diagonal(&DVector::from_column_slice(noise_var))) / (s * s)
+}
+
+/// The grid's check at the region points: the largest relative sigma
+/// difference between the interpolated grid (scaled by s^2) and a direct
+/// study at each point. The intervals are read off the grid, so where the
+/// model changes regime between nodes (a contact that begins to stick as
+/// mu_static rises) this shows how far the grid strays there, not only at
+/// the estimate.
+fn region_check(
+    spec: &StudySpec,
+    jm: &JointModel,
+    params: &[Param],
+    region: &[Vec<f64>],
+    noise_var: &[f64],
+) -> Result<f64, CalibrateError> {
+    let mut worst = 0.0f64;
+    for theta in region {
+        let Some(sigma) = jm.sigma(theta) else {
+            continue;
+        };
+        let model = per_unit_model(&sigma, noise_var, jm.spread(theta));
+        let direct = spec.run(&with_values(spec.coupling, params, theta))?;
+        worst = worst.max(sigma_difference(&model, &direct.per_unit(spec.dofs)));
+    }
+    Ok(worst)
+}
+
 fn sigma_difference(a: &DMatrix<f64>, b: &DMatrix<f64>) -> f64 {
     (0..a.nrows())
         .map(|j| {

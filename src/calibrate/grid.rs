@@ -49,7 +49,7 @@ pub struct GridInfo {
     pub spread: f64,
     /// Largest relative difference, over the measured DOFs, between sigma
     /// from the interpolated grid (scaled by s^2) and sigma of a direct
-    /// study at the estimate (same seed).
+    /// study (same seed) at the estimate and at each region point.
     pub check: f64,
 }
 

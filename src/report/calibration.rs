@@ -138,7 +138,7 @@ pub fn calibration_table(c: &Calibration) -> String {
         }
         Some(g) => {
             s += &format!(
-                "model: {} node studies over {} (spread {:.5}); grid and sigma ∝ spread against a direct study at the estimate: largest sigma difference {:.2} %\n\n",
+                "model: {} node studies over {} (spread {:.5}); grid and sigma ∝ spread against direct studies at the estimate and the region points: largest sigma difference {:.2} %\n\n",
                 g.nodes.iter().map(Vec::len).product::<usize>(),
                 g.parameters.join(" x "),
                 g.spread,
@@ -146,7 +146,7 @@ pub fn calibration_table(c: &Calibration) -> String {
             );
             if g.check > GRID_CHECK_WARN {
                 s += &format!(
-                    "  WARNING: the grid's model covariance differs from a direct study at the estimate by more than {:.0} % (sigma ∝ spread fails near spread = mu_static, or the grid is too coarse): read the intervals with care\n\n",
+                    "  WARNING: the grid's model covariance differs from a direct study at the estimate or a region point by more than {:.0} % (sigma ∝ spread fails near spread = mu_static, or the model changes between nodes, as where contacts begin to stick, and the grid is too coarse for it): read the intervals with care\n\n",
                     100.0 * GRID_CHECK_WARN
                 );
             }
