@@ -151,8 +151,10 @@ impl StiffnessReport {
                 s,
                 "  stiffness matrix (u [m], phi [rad]) -> (F [N], M [N m]), SI:"
             );
-            for row in &p.matrix {
-                let cells: Vec<String> = row.iter().map(|v| format!("{v:>12.4e}")).collect();
+            for (i, row) in p.matrix.iter().enumerate() {
+                let cells: Vec<String> = (row.iter().enumerate())
+                    .map(|(j, &v)| format!("{:>12.4e}", rounding_zero(&p.matrix, i, j, v)))
+                    .collect();
                 let _ = writeln!(s, "   {}", cells.join(" "));
             }
             for (title, rows, unit) in [
@@ -169,12 +171,26 @@ impl StiffnessReport {
             ] {
                 let _ = writeln!(s, "  {title}");
                 for r in rows {
-                    let ([x, y, z], k) = (r.direction, r.stiffness * 1e-6);
+                    // A component below 1e-9 of the unit direction is rounding: 0.
+                    let [x, y, z] = r.direction.map(|c| if c.abs() < 1e-9 { 0.0 } else { c });
+                    let k = r.stiffness * 1e-6;
                     let _ = writeln!(s, "    {k:>12.4} {unit} ({x:>7.4}, {y:>7.4}, {z:>7.4})");
                 }
             }
         }
         s
+    }
+}
+
+/// An off-diagonal entry K_ij below 1e-9 sqrt(|K_ii K_jj|) is the
+/// rounding of terms that cancel (a symmetric coupling's couplings between
+/// DOFs): the table prints 0 for it, so that it does not change with the
+/// order of floating-point operations; the JSON keeps the computed value.
+fn rounding_zero(m: &[[f64; 6]; 6], i: usize, j: usize, v: f64) -> f64 {
+    if i != j && v.abs() < 1e-9 * (m[i][i] * m[j][j]).abs().sqrt() {
+        0.0
+    } else {
+        v
     }
 }
 
