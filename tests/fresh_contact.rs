@@ -20,30 +20,33 @@ mod common;
 use common::load;
 
 use kinrepro::contact::SlipState;
-use kinrepro::solve::SolverOptions;
 use kinrepro::solve::quasistatic::seat;
+use kinrepro::solve::{Seating, SolverOptions};
 
 /// Mindlin's F_t / F_n of a contact of equal materials with u / delta = 1.
 fn mindlin_ratio(nu: f64) -> f64 {
     2.0 * (1.0 - nu) / (2.0 - nu)
 }
 
-fn options() -> Vec<(String, SolverOptions)> {
-    let mut out: Vec<(String, SolverOptions)> = [1, 2, 20, 320]
+/// Scene 01 seated with mu_s = `factor` x Mindlin's ratio at every
+/// contact, at 1, 2, 20 and 320 fixed increments and on the controlled path.
+fn seatings(factor: f64) -> Vec<(String, Seating)> {
+    let c = load("01_maxwell_vgroove_steel.toml");
+    let mu = vec![factor * mindlin_ratio(0.3); c.contacts.len()];
+    let mut opts: Vec<(String, SolverOptions)> = [1, 2, 20, 320]
         .into_iter()
         .map(|n| (format!("{n} fixed increments"), SolverOptions::fixed(n)))
         .collect();
-    out.push(("the controlled path".into(), SolverOptions::default()));
-    out
+    opts.push(("the controlled path".into(), SolverOptions::default()));
+    opts.into_iter()
+        .map(|(label, o)| (label, seat(&c, &mu, &o).unwrap()))
+        .collect()
 }
 
 #[test]
 fn a_fresh_contact_above_mindlins_ratio_sticks_at_that_ratio_at_any_increments() {
-    let c = load("01_maxwell_vgroove_steel.toml");
     let ratio = mindlin_ratio(0.3);
-    for (label, opts) in options() {
-        let mu = vec![1.01 * ratio; c.contacts.len()];
-        let s = seat(&c, &mu, &opts).unwrap();
+    for (label, s) in seatings(1.01) {
         for (i, k) in s.contacts.iter().enumerate() {
             assert_eq!(k.state, SlipState::Stick, "{label}: contact {}", i + 1);
             let r = k.tangential_force_n / k.normal_force_n;
@@ -56,13 +59,10 @@ fn a_fresh_contact_above_mindlins_ratio_sticks_at_that_ratio_at_any_increments()
     }
 }
 
+/// Below the ratio every contact slides at mu_d F_n.
 #[test]
 fn a_fresh_contact_below_mindlins_ratio_slides_at_any_increments() {
-    let c = load("01_maxwell_vgroove_steel.toml");
-    let ratio = mindlin_ratio(0.3);
-    for (label, opts) in options() {
-        let mu = vec![0.99 * ratio; c.contacts.len()];
-        let s = seat(&c, &mu, &opts).unwrap();
+    for (label, s) in seatings(0.99) {
         for (i, k) in s.contacts.iter().enumerate() {
             assert_eq!(k.state, SlipState::Slip, "{label}: contact {}", i + 1);
             let r = k.tangential_force_n / k.normal_force_n;
