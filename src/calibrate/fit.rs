@@ -202,8 +202,6 @@ fn singular(m: &Measurement) -> CalibrateError {
     }
 }
 
-/// Largest relative difference of sigma between two model covariances per
-/// unit spread^2 (`b` the direct study's).
 /// The model covariance per unit spread^2, (Sigma - N) / s^2, of the
 /// model's Sigma (noise N on the diagonal) at spread `s`.
 fn per_unit_model(sigma: &DMatrix<f64>, noise_var: &[f64], s: f64) -> DMatrix<f64> {
@@ -235,6 +233,8 @@ fn region_check(
     Ok(worst)
 }
 
+/// Largest relative difference of sigma between two model covariances per
+/// unit spread^2 (`b` the direct study's).
 fn sigma_difference(a: &DMatrix<f64>, b: &DMatrix<f64>) -> f64 {
     (0..a.nrows())
         .map(|j| {

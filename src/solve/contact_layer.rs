@@ -149,9 +149,10 @@ pub struct Moved<'s> {
 }
 
 /// The normal part of one contact's evaluation: approach, Hertz (with the
-/// support compliance) force and stiffness, and the increment's mean normal
-/// force and semi-axis for K_t. It holds the evaluation's long chains of
-/// dependent operations (square root, cube root); [`Solver::evaluate_all`]
+/// support compliance) force and stiffness, and the increment's effective
+/// semi-axis for K_t with its relative derivative d(ln a_eff)/dF_n
+/// (`ContactLaw::increment_semi_axis`). It holds the evaluation's long chains of
+/// dependent operations (square root, cube roots); [`Solver::evaluate_all`]
 /// forms it for every contact before the rest of any, so that the
 /// processor overlaps the contacts' chains.
 ///
@@ -161,7 +162,9 @@ pub struct NormalPart {
     pub approach: f64,
     pub normal_force: f64,
     pub normal_stiffness: f64,
+    /// d(ln a_eff)/dF_n [1/N].
     pub dlog: f64,
+    /// The increment's effective semi-axis a_eff [m].
     pub a_eff: f64,
 }
 
