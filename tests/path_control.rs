@@ -8,14 +8,12 @@
 //! study code's).
 
 mod common;
-use common::load;
+use common::{load, mc_frictions as frictions};
 
 use kinrepro::assembly::{BodyPose, Coupling};
 use kinrepro::solve::quasistatic::seat;
 use kinrepro::solve::{DEFAULT_PATH_TOLERANCE, SolverOptions};
 use nalgebra::Vector6;
-use rand::{Rng, SeedableRng};
-use rand_chacha::ChaCha8Rng;
 
 /// The twist from `a` to `b` with its rotation times the coupling radius
 /// L: the size measure of the controller (v the translation of the
@@ -25,19 +23,6 @@ fn twist(c: &Coupling, a: &BodyPose, b: &BodyPose) -> Vector6<f64> {
     let w = dq.scaled_axis() * c.length_scale();
     let v = b.translation - dq * a.translation;
     Vector6::new(v.x, v.y, v.z, w.x, w.y, w.z)
-}
-
-/// `samples` friction vectors of the scene's distribution.
-fn frictions(c: &Coupling, samples: usize, seed: u64) -> Vec<Vec<f64>> {
-    let f = &c.scene.friction;
-    let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    (0..samples)
-        .map(|_| {
-            (0..c.contacts.len())
-                .map(|_| f.mu_static + f.spread * rng.random_range(-1.0..1.0))
-                .collect()
-        })
-        .collect()
 }
 
 /// The limit of the fixed-step path: x_5120 + (x_5120 - x_2560), the

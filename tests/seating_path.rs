@@ -13,8 +13,6 @@ use kinrepro::contact::{FrictionLaw, TangentialLaw};
 use kinrepro::solve::quasistatic::seat;
 use kinrepro::solve::{PointPose, Seating, SeatingPath, SolverOptions};
 use nalgebra::Vector3;
-use rand::{Rng, SeedableRng};
-use rand_chacha::ChaCha8Rng;
 
 const SCENES: [&str; 7] = [
     "01_maxwell_vgroove_steel.toml",
@@ -26,17 +24,9 @@ const SCENES: [&str; 7] = [
     "07_kelvin_sic.toml",
 ];
 
-/// `samples` friction vectors of the scene's distribution.
+/// `samples` friction vectors of the scene's distribution (seed 16).
 fn frictions(c: &Coupling, samples: usize) -> Vec<Vec<f64>> {
-    let f = &c.scene.friction;
-    let mut rng = ChaCha8Rng::seed_from_u64(16);
-    (0..samples)
-        .map(|_| {
-            (0..c.contacts.len())
-                .map(|_| f.mu_static + f.spread * rng.random_range(-1.0..1.0))
-                .collect()
-        })
-        .collect()
+    common::mc_frictions(c, samples, 16)
 }
 
 /// Seat `c` at every friction vector: the seatings on the nominal

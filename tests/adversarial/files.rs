@@ -15,12 +15,23 @@ fn scene() -> String {
 }
 
 /// The names in `dir` that start with a dot (the temporaries of atomic writes).
-fn hidden(dir: &Path) -> Vec<String> {
+pub(crate) fn hidden(dir: &Path) -> Vec<String> {
     fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .filter(|n| n.starts_with('.'))
         .collect()
+}
+
+/// Wait until a run writes into a temporary in `dir` (at most 60 s), and
+/// 300 ms more, so that a signal sent next meets the write under way.
+pub(crate) fn wait_for_temporary(dir: &Path) {
+    let start = std::time::Instant::now();
+    while hidden(dir).is_empty() {
+        assert!(start.elapsed().as_secs() < 60, "no temporary appeared");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    std::thread::sleep(std::time::Duration::from_millis(300));
 }
 
 fn mkfifo(path: &Path) {
@@ -230,12 +241,7 @@ fn signal_during_study_leaves_out_folder_as_it_was() {
             .spawn()
             .unwrap();
         // Wait until the run streams its samples into its temporary.
-        let start = std::time::Instant::now();
-        while hidden(dir.path()).is_empty() {
-            assert!(start.elapsed().as_secs() < 60, "no temporary appeared");
-            std::thread::sleep(std::time::Duration::from_millis(20));
-        }
-        std::thread::sleep(std::time::Duration::from_millis(300));
+        wait_for_temporary(dir.path());
         let pid = child.id().to_string();
         let sent = Command::new("kill")
             .args([&format!("-{signal}"), &pid])

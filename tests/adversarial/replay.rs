@@ -11,6 +11,7 @@ use kinrepro::solve::dynamic::{self, DynamicOptions};
 use kinrepro::solve::{SolverOptions, nominal_mu, quasistatic};
 
 use crate::common;
+use crate::files::{hidden, wait_for_temporary};
 use crate::verdicts::{run_in, variant};
 
 /// Scene 01 with the decay law at coefficient `c` [s/m].
@@ -202,15 +203,6 @@ fn calibration_errors_name_the_calibration_file_the_field_and_the_reason() {
     }
 }
 
-/// The names in `dir` that start with a dot (the temporaries of atomic writes).
-fn hidden(dir: &Path) -> Vec<String> {
-    std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .filter(|n| n.starts_with('.'))
-        .collect()
-}
-
 /// `run --solver dynamic --trace FILE --force` over an earlier FILE, stopped
 /// by `signals` (sent to the stopped process at once when `together`) once
 /// its temporary trace exists. Asserts no temporary is left and FILE is
@@ -233,12 +225,7 @@ fn interrupted_trace(signals: &[&str], together: bool) -> (i32, String) {
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    let start = std::time::Instant::now();
-    while hidden(dir.path()).is_empty() {
-        assert!(start.elapsed().as_secs() < 60, "no temporary appeared");
-        std::thread::sleep(std::time::Duration::from_millis(20));
-    }
-    std::thread::sleep(std::time::Duration::from_millis(300));
+    wait_for_temporary(dir.path());
     let pid = child.id().to_string();
     let kill = |sig: &str| {
         assert!(

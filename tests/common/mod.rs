@@ -32,6 +32,22 @@ pub fn worked_measurement() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/calibration/measured_02.csv")
 }
 
+/// `samples` Monte Carlo friction vectors of the scene's distribution:
+/// mu_s uniform in mu0 +- spread per contact, drawn here with ChaCha8
+/// seeded by `seed` (not by the study code).
+pub fn mc_frictions(c: &kinrepro::assembly::Coupling, samples: usize, seed: u64) -> Vec<Vec<f64>> {
+    use rand::{Rng, SeedableRng};
+    let f = &c.scene.friction;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    (0..samples)
+        .map(|_| {
+            (0..c.contacts.len())
+                .map(|_| f.mu_static + f.spread * rng.random_range(-1.0..1.0))
+                .collect()
+        })
+        .collect()
+}
+
 /// Load and assemble a bundled scene.
 pub fn load(name: &str) -> kinrepro::assembly::Coupling {
     kinrepro::error::read_coupling(&scene(name)).unwrap()
