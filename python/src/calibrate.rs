@@ -9,12 +9,12 @@ use kinrepro::dof::{Dof, Dofs};
 use kinrepro::report::calibration::PredictionReport;
 use kinrepro::solve::Method;
 use kinrepro::study::PointStats;
-use numpy::ndarray::{Array2, Array3};
+use numpy::ndarray::Array3;
 use numpy::{IntoPyArray, PyArray2, PyArray3, PyReadonlyArray2};
 use pyo3::prelude::*;
 
 use crate::err;
-use crate::scene::{Scene, coupling};
+use crate::scene::{Scene, coupling, pose_rows};
 use crate::study::json_loads;
 
 /// A calibration (`kinrepro calibrate`): the fitted friction parameters
@@ -243,8 +243,7 @@ impl Prediction {
         py: Python<'py>,
         point: Option<&str>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let rows: Vec<[f64; 6]> = self.points(point)?.iter().map(|p| p.sigma.si()).collect();
-        Ok(Array2::from_shape_fn((rows.len(), 6), |(i, j)| rows[i][j]).into_pyarray(py))
+        Ok(pose_rows(self.points(point)?.iter().map(|p| p.sigma.si())).into_pyarray(py))
     }
 
     /// The 90 % prediction interval of sigma at `point` per scene,

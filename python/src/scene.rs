@@ -166,7 +166,8 @@ pub struct Seating {
     report: RunReport,
 }
 
-fn pose_rows(rows: impl Iterator<Item = [f64; 6]>) -> Array2<f64> {
+/// Rows of six DOFs (SI) as an (n, 6) array.
+pub(crate) fn pose_rows(rows: impl Iterator<Item = [f64; 6]>) -> Array2<f64> {
     let v: Vec<[f64; 6]> = rows.collect();
     Array2::from_shape_fn((v.len(), 6), |(i, j)| v[i][j])
 }

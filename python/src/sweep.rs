@@ -11,7 +11,7 @@ use pyo3::prelude::*;
 
 use crate::err;
 use crate::options::StudyArgs;
-use crate::scene::{Scene, coupling};
+use crate::scene::{Scene, coupling, pose_rows};
 
 /// A sweep over scene fields: the document of `kinrepro sweep --format json`.
 #[pyclass(module = "kinrepro", frozen)]
@@ -111,7 +111,7 @@ impl Sweep {
             };
             rows.push(row);
         }
-        Ok(Array2::from_shape_fn((rows.len(), 6), |(i, j)| rows[i][j]).into_pyarray(py))
+        Ok(pose_rows(rows.into_iter()).into_pyarray(py))
     }
 
     fn __len__(&self) -> usize {
