@@ -1,0 +1,322 @@
+//! Real preloads (`[[preload.forces]]`, springs, `gravity`), each against
+//! an independent value: statics of a rigid half (three forces with the
+//! central force's resultant and moment), the Hertz closed form of scene
+//! 01's settlement (the spring's effect), the linear stiffness analysis
+//! (a moved force), m g (the weight), and the lines of bad input.
+
+use crate::common;
+use crate::common::{kinrepro, scene};
+
+use kinrepro::analysis::stiffness::CouplingStiffness;
+use kinrepro::assembly::Coupling;
+use kinrepro::scene::Scene;
+use kinrepro::solve::{SolverOptions, quasistatic};
+use kinrepro::study::runner::Variation;
+use nalgebra::{Vector3, Vector6};
+
+/// Scene 01 without its `[preload] force` line, so that `extra` (appended)
+/// gives the preload.
+fn scene01_without_force(extra: &str) -> String {
+    let text = std::fs::read_to_string(scene("01_maxwell_vgroove_steel.toml")).unwrap();
+    let kept: Vec<&str> = text
+        .lines()
+        .filter(|l| !l.starts_with("force = 20.0"))
+        .collect();
+    kept.join("\n") + "\n" + extra
+}
+
+/// Ball centres of scene 01: radius 40 mm, azimuths 90, 210, 330 degrees.
+fn ball_centres() -> Vec<Vector3<f64>> {
+    [90.0f64, 210.0, 330.0]
+        .iter()
+        .map(|a| {
+            Vector3::new(
+                0.04 * a.to_radians().cos(),
+                0.04 * a.to_radians().sin(),
+                0.0,
+            )
+        })
+        .collect()
+}
+
+/// One `[[preload.forces]]` entry along -z at `p`, with `more` lines.
+fn force_entry(force: f64, p: &Vector3<f64>, more: &str) -> String {
+    format!(
+        "\n[[preload.forces]]\nforce = {force:?}\npoint = [{:?}, {:?}, {:?}]\ndirection = [0.0, 0.0, -1.0]\n{more}",
+        p.x, p.y, p.z
+    )
+}
+
+/// A third of the central 20 N at each ball centre (in the plane of the
+/// centres, z = 0, like the central force at the origin: a force at
+/// another height has another moment once the half turns).
+fn three_forces(more: &str) -> String {
+    ball_centres()
+        .iter()
+        .map(|c| force_entry(20.0 / 3.0, c, more))
+        .collect()
+}
+
+/// Write `text` as a scene file in the temporary directory.
+fn write(name: &str, text: &str) -> String {
+    let path = std::env::temp_dir().join(format!("kinrepro_preloads_{name}.toml"));
+    std::fs::write(&path, text).unwrap();
+    path.display().to_string()
+}
+
+/// Every sigma of `kinrepro study FILE --sampler mc --samples 50 --format json`.
+fn study_sigmas(file: &str) -> Vec<f64> {
+    let args = [
+        "study",
+        file,
+        "--sampler",
+        "mc",
+        "--samples",
+        "50",
+        "--format",
+        "json",
+    ];
+    let (ok, out, err) = kinrepro(&args);
+    assert!(ok, "{err}");
+    let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let mut v = Vec::new();
+    for p in doc["variants"][0]["points"].as_array().unwrap() {
+        for (_, s) in p["sigma"].as_object().unwrap() {
+            v.push(s.as_f64().unwrap());
+        }
+    }
+    assert!(!v.is_empty() && v.iter().all(|s| *s > 0.0), "{v:?}");
+    v
+}
+
+fn max_relative(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x / y - 1.0).abs())
+        .fold(0.0, f64::max)
+}
+
+fn coupling(text: &str) -> Coupling {
+    Coupling::new(&Scene::parse(text, "preloads.toml").unwrap()).unwrap()
+}
+
+#[test]
+fn three_forces_above_the_balls_give_the_central_preloads_sigma() {
+    // Parallel forces F/3 at the ball centres (which sum to zero) have the
+    // resultant F and, about any point of the half, the moment of F at the
+    // centre: on a rigid half the same load at every pose.
+    let central = scene("01_maxwell_vgroove_steel.toml").display().to_string();
+    let three = write("three", &scene01_without_force(&three_forces("")));
+    let (a, b) = (study_sigmas(&central), study_sigmas(&three));
+    let d = max_relative(&b, &a);
+    assert!(d < 1e-9, "largest relative sigma difference {d:e}");
+}
+
+#[test]
+fn spring_preloads_change_sigma_by_less_than_their_stiffness_share() {
+    let k = 2.0e4; // each spring [N/m]
+    let spring = format!("stiffness = {k:?}\nfree_length = 0.02\n");
+    let sprung = write("sprung", &scene01_without_force(&three_forces(&spring)));
+    let central = scene("01_maxwell_vgroove_steel.toml").display().to_string();
+    let (a, b) = (study_sigmas(&central), study_sigmas(&sprung));
+    // Scene 01 by hand (tests/quasistatic.rs): six 45-degree contacts share
+    // F = 20 N, each f = F / (6 cos 45), Hertz K = 4/3 E* sqrt(R), approach
+    // delta = (f/K)^(2/3), the half settles z = delta / cos 45; each contact's
+    // k_n = 3/2 K delta^(1/2), the vertical stiffness K_z = 6 k_n cos^2 45.
+    let cos_a = 45f64.to_radians().cos();
+    let f = 20.0 / (6.0 * cos_a);
+    let e_star = 210e9 / (2.0 * (1.0 - 0.09));
+    let kh = 4.0 / 3.0 * e_star * 5e-3f64.sqrt();
+    let delta = (f / kh).powf(2.0 / 3.0);
+    let kz = 6.0 * 1.5 * kh * delta.sqrt() * cos_a * cos_a;
+    // The springs lose 3 k z of the preload at the seat and add 3 k to K_z:
+    // to first order the scatter changes by these relative amounts.
+    let lost = 3.0 * k * (delta / cos_a) / 20.0;
+    let stiffer = 3.0 * k / kz;
+    let d = max_relative(&b, &a);
+    println!(
+        "springs of {k} N/m: preload lost at the seat {lost:.3e}, stiffness share {stiffer:.3e}; \
+         largest relative sigma change {d:.3e}"
+    );
+    assert!(d > 1e-6, "the springs must change sigma: {d:e}");
+    assert!(
+        d < 3.0 * (lost + stiffer),
+        "{d:e} vs {lost:e} + {stiffer:e}"
+    );
+}
+
+#[test]
+fn a_force_moved_sideways_turns_the_half_as_the_linear_stiffness_predicts() {
+    // Frictionless, so that the seating is path independent and the linear
+    // analysis (analysis::stiffness, the `load` command's K) applies.
+    let frictionless = |forces: &str| {
+        let t = scene01_without_force(forces);
+        coupling(
+            &t.replace("mu_static = 0.5", "mu_static = 0.0")
+                .replace("spread = 0.05", "spread = 0.0"),
+        )
+    };
+    let centres = ball_centres();
+    let f = 20.0 / 3.0;
+    let e = 2.0e-4; // force 1 moved along x [m]
+    let moved: String = centres
+        .iter()
+        .enumerate()
+        .map(|(i, c)| force_entry(f, &(c + Vector3::x() * if i == 0 { e } else { 0.0 }), ""))
+        .collect();
+    let base: String = centres.iter().map(|c| force_entry(f, c, "")).collect();
+    let (ca, cb) = (frictionless(&base), frictionless(&moved));
+    let opts = SolverOptions::default();
+    let sa = quasistatic::seat(&ca, &[0.0; 6], &opts).unwrap();
+    let sb = quasistatic::seat(&cb, &[0.0; 6], &opts).unwrap();
+    // The added load: a pure moment (e x) x (-f z) = e f y.
+    let moment = (Vector3::x() * e).cross(&Vector3::new(0.0, 0.0, -f));
+    let q = sa.pose.apply(&Vector3::zeros());
+    let c = CouplingStiffness::new(&ca, &sa, &[0.0; 6]).unwrap();
+    let predicted =
+        c.compliance_at(&q).unwrap() * Vector6::new(0.0, 0.0, 0.0, moment.x, moment.y, moment.z);
+    let u = sb.pose.apply(&Vector3::zeros()) - q;
+    let phi = (sb.pose.rotation * sa.pose.rotation.inverse()).scaled_axis();
+    let (pu, pphi) = (
+        predicted.fixed_rows::<3>(0).into_owned(),
+        predicted.fixed_rows::<3>(3).into_owned(),
+    );
+    println!("rotation {phi:?} predicted {pphi:?}; translation {u:?} predicted {pu:?}");
+    assert!(
+        pphi.norm() > 1e-9,
+        "the moment must turn the half: {pphi:?}"
+    );
+    // Linear theory: errors of the order of the contact force change
+    // (e f / (R F) ~ 2e-3) and the left-out geometric stiffness (~1e-4).
+    assert!(
+        (phi - pphi).norm() < 1e-2 * pphi.norm(),
+        "{phi:?} vs {pphi:?}"
+    );
+    assert!(
+        (u - pu).norm() < 1e-2 * (pu.norm() + 0.04 * pphi.norm()),
+        "{u:?} vs {pu:?}"
+    );
+}
+
+#[test]
+fn gravity_alone_equals_a_single_force_m_g_at_the_centre_of_mass() {
+    let (m, com) = (2.0, [1.0e-3, -2.0e-3, 0.01]);
+    let weight = scene01_without_force("").replace(
+        "[preload]\n",
+        &format!("[preload]\ngravity = true\nmass = {m:?}\ncentre_of_mass = {com:?}\n"),
+    );
+    let single = scene01_without_force("").replace(
+        "[preload]\n",
+        &format!(
+            "[preload]\nforce = {:?}\npoint = {com:?}\ndirection = [0.0, 0.0, -1.0]\n",
+            m * 9.80665
+        ),
+    );
+    let a = study_sigmas(&write("weight", &weight));
+    let b = study_sigmas(&write("weight_as_force", &single));
+    let d = max_relative(&a, &b);
+    assert!(d < 1e-9, "{d:e}");
+    // The mass may come from [dynamics] instead.
+    let dynamics = scene01_without_force(&format!(
+        "\n[dynamics]\nmass = {m:?}\ninertia = [0.01, 0.01, 0.02]\ncentre_of_mass = {com:?}\n"
+    ))
+    .replace("[preload]\n", "[preload]\ngravity = true\n");
+    let p = Scene::parse(&dynamics, "d.toml").unwrap().preload;
+    let w = Scene::parse(&weight, "w.toml").unwrap().preload;
+    assert_eq!(p, w);
+    assert!((w.scale() - m * 9.80665).abs() < 1e-12 * m * 9.80665);
+}
+
+/// The error of `text` names `file:line: field`, the line that holds `marker`.
+fn assert_error_at(text: &str, marker: &str, field: &str) {
+    let line = text.lines().position(|l| l.contains(marker)).unwrap() + 1;
+    let err = Scene::parse(text, "bad.toml").unwrap_err().to_string();
+    assert!(
+        err.starts_with(&format!("bad.toml:{line}: {field}: ")),
+        "{err}"
+    );
+}
+
+#[test]
+fn bad_preloads_are_refused_naming_the_field_and_line() {
+    let zero = force_entry(5.0, &Vector3::new(0.0, 0.0, 0.01), "")
+        .replace("[0.0, 0.0, -1.0]", "[0.0, 0.0, 0.0]");
+    let text = scene01_without_force(&(three_forces("") + &zero));
+    assert_error_at(
+        &text,
+        "direction = [0.0, 0.0, 0.0]",
+        "preload.forces[4].direction",
+    );
+    let text = scene01_without_force(&three_forces("stiffness = -1.0e3\nfree_length = 0.02\n"));
+    assert_error_at(&text, "stiffness = -1", "preload.forces[1].stiffness");
+    let text = scene01_without_force(&three_forces("stiffness = 1.0e3\n"));
+    assert_error_at(&text, "stiffness = 1", "preload.forces[1].stiffness");
+    // 6.67 N from a 1 N/mm spring needs more than 6.67 mm of free length.
+    let text = scene01_without_force(&three_forces("stiffness = 1.0e3\nfree_length = 0.005\n"));
+    assert_error_at(&text, "free_length", "preload.forces[1].free_length");
+    let text = scene01_without_force("").replace("[preload]\n", "[preload]\ngravity = true\n");
+    assert_error_at(&text, "gravity = true", "preload.gravity");
+    let text = std::fs::read_to_string(scene("01_maxwell_vgroove_steel.toml")).unwrap()
+        + &three_forces("");
+    assert_error_at(&text, "force = 20.0", "preload.force");
+    let err = Scene::parse(&scene01_without_force(""), "bad.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("preload.force: missing"), "{err}");
+}
+
+#[test]
+fn expand_prints_the_forces_and_loads_back_to_the_same_preload() {
+    let text = scene01_without_force(&three_forces("stiffness = 1.0e4\nfree_length = 0.02\n"))
+        .replace("[preload]\n", "[preload]\ngravity = true\nmass = 1.5\n");
+    let expanded = Scene::expand_text(&text, "s.toml").unwrap();
+    assert_eq!(
+        expanded.matches("[[preload.forces]]").count(),
+        3,
+        "{expanded}"
+    );
+    let a = Scene::parse(&text, "s.toml").unwrap().preload;
+    let b = Scene::parse(&expanded, "s.toml").unwrap().preload;
+    // `expand` writes 15 significant digits: equal within 1e-12 relative.
+    common::assert_close_debug(&a, &b, "expanded preload");
+    assert_eq!(a.forces.len(), 4, "three springs and the weight");
+}
+
+#[test]
+fn vary_preload_moves_and_tilts_each_force_but_not_the_weight() {
+    let text = scene01_without_force(&three_forces(""))
+        .replace("[preload]\n", "[preload]\ngravity = true\nmass = 1.0\n")
+        + "\n[variation]\npreload_offset = [1.0e-3, 2.0e-3]\npreload_tilt = 0.01\n";
+    let c = coupling(&text);
+    let var = Variation {
+        friction: false,
+        preload: true,
+        ..Default::default()
+    };
+    let names: Vec<String> = var.inputs(&c).iter().map(|i| i.name()).collect();
+    let per = ["x_m", "y_m", "tilt_x_rad", "tilt_y_rad"];
+    let expect: Vec<String> = ["preload_", "preload_2_", "preload_3_"]
+        .iter()
+        .flat_map(|p| per.iter().map(move |s| format!("{p}{s}")))
+        .collect();
+    assert_eq!(names, expect);
+    // Force 2's x offset at its upper bound, everything else at the middle.
+    let mut row = vec![0.5; 12];
+    row[4] = 1.0;
+    let s = var.sample(&c, &row);
+    let nominal = &c.scene.preload.forces;
+    for (i, (f, n)) in s.preload.forces.iter().zip(nominal).enumerate() {
+        let shift = if i == 1 {
+            Vector3::new(1.0e-3, 0.0, 0.0)
+        } else {
+            Vector3::zeros()
+        };
+        assert!(
+            (f.point - n.point - shift).norm() < 1e-15,
+            "force {}",
+            i + 1
+        );
+        assert!((f.direction - n.direction).norm() < 1e-15);
+    }
+}

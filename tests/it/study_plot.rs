@@ -1,0 +1,314 @@
+//! The plots are SVG with real <text> labels carrying units; the sigma bars
+//! carry the interval of each sigma and the reference values at the right
+//! height; the scatter names every evaluation point; the convergence plot
+//! has all six DOFs; the interchangeability is plotted when tolerances vary.
+
+use crate::common;
+
+use kinrepro::dof::Dof;
+use kinrepro::report::html::charts::study_charts;
+use kinrepro::report::plot::{
+    ConvergenceSeries, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
+    xy_scatter_svg,
+};
+use kinrepro::study::VariantReport;
+use kinrepro::study::runner::{StudyOptions, Variation, run_variant};
+use kinrepro::study::stats::sigma_convergence;
+use kinrepro::study::{Sampler, StudyError};
+
+fn variants() -> Vec<VariantSigma> {
+    vec![
+        VariantSigma::new("three-groove", [12.0, 9.5, 3.1, 40.0, 35.0, 20.0]),
+        VariantSigma::new(
+            "tetrahedron-groove-flat",
+            [20.0, 14.0, 5.0, 55.0, 61.0, 30.0],
+        ),
+        VariantSigma::new("coated", [4.0, 3.0, 1.0, 12.0, 10.0, 5.0]),
+    ]
+}
+
+/// Numeric attribute `name` of an SVG element's text.
+fn attr(el: &str, name: &str) -> Option<f64> {
+    let el = format!(" {el}");
+    let key = format!(" {name}=\"");
+    let i = el.find(&key)? + key.len();
+    el[i..].split('"').next()?.parse().ok()
+}
+
+/// The elements `<tag ...>` of an SVG.
+fn elements<'a>(svg: &'a str, tag: &str) -> Vec<&'a str> {
+    svg.split(&format!("<{tag} "))
+        .skip(1)
+        .map(|s| s.split('>').next().unwrap_or(""))
+        .collect()
+}
+
+/// The point list of a polyline element.
+fn points(el: &str) -> Vec<(f64, f64)> {
+    let i = el.find("points=\"").unwrap() + 8;
+    el[i..]
+        .split('"')
+        .next()
+        .unwrap()
+        .split_whitespace()
+        .map(|p| {
+            let (x, y) = p.split_once(',').unwrap();
+            (x.parse().unwrap(), y.parse().unwrap())
+        })
+        .collect()
+}
+
+#[test]
+fn sigma_bars_svg_has_units_and_names() {
+    let svg = sigma_bars_svg(&variants(), "re-seating σ").unwrap();
+    assert!(svg.contains("<svg") && svg.contains("<text"));
+    for label in [
+        "σ [nm]",
+        "σ [nrad]",
+        "degree of freedom",
+        "three-groove",
+        "coated",
+        "\nφx\n",
+        "\nφz\n",
+        "\nz\n",
+    ] {
+        assert!(svg.contains(label), "missing {label}");
+    }
+}
+
+/// The error bar of each sigma spans [low, high] on the bar's own axis: with
+/// the bar drawn from pixel y0 (sigma 0) to y_s (sigma s), a value v sits at
+/// y0 - (y0 - y_s) v / s. Reference ticks sit at their value likewise.
+#[test]
+fn sigma_bars_draw_intervals_and_references_at_their_values() {
+    let mut data = variants();
+    let sigma = data[0].sigma;
+    let lo = sigma.map(|s| 0.7 * s);
+    let hi = sigma.map(|s| 1.4 * s);
+    data[0].interval = Some((lo, hi));
+    data[1].interval = Some((
+        data[1].sigma.map(|s| 0.9 * s),
+        data[1].sigma.map(|s| 1.1 * s),
+    ));
+    data[0].reference = Some([Some(15.0), None, Some(2.0), Some(50.0), None, None]);
+    let svg = sigma_bars_svg(&data, "re-seating σ").unwrap();
+    assert!(svg.contains("reference value (tick); 90 % interval (bar)"));
+    // Bars of variant 0 (first colour), in drawing order x, y, z | phi_x, phi_y, phi_z.
+    let bars: Vec<(f64, f64, f64, f64)> = elements(&svg, "rect")
+        .into_iter()
+        .filter(|r| r.contains("fill=\"#0072B2\"") && attr(r, "width").is_some_and(|w| w < 100.0))
+        .map(|r| {
+            let (x, y, w, h) = (
+                attr(r, "x").unwrap(),
+                attr(r, "y").unwrap(),
+                attr(r, "width").unwrap(),
+                attr(r, "height").unwrap(),
+            );
+            (x, w, y + h, y)
+        })
+        .collect();
+    // The bars stand on the x axis (the lowest bottom); the legend's sample
+    // rectangle does not.
+    let axis = bars.iter().map(|b| b.2).fold(0.0, f64::max);
+    let bars: Vec<_> = bars.into_iter().filter(|b| b.2 == axis).collect();
+    assert_eq!(bars.len(), 6, "six bars of variant 0");
+    let lines = elements(&svg, "polyline");
+    let error_bars: Vec<Vec<(f64, f64)>> = lines
+        .iter()
+        .filter(|l| l.contains("stroke=\"#000000\" stroke-width=\"2\""))
+        .map(|l| points(l))
+        .filter(|p| p.len() == 2 && p[0].0 == p[1].0)
+        .collect();
+    assert_eq!(
+        error_bars.len(),
+        12,
+        "one error bar per DOF of both variants with intervals"
+    );
+    let ticks: Vec<Vec<(f64, f64)>> = lines
+        .iter()
+        .filter(|l| l.contains("stroke=\"#000000\" stroke-width=\"4\""))
+        .map(|l| points(l))
+        .collect();
+    // Three reference values, plus the legend's sample tick.
+    assert_eq!(ticks.len(), 4);
+    let at = |bar: (f64, f64, f64, f64), v: f64, s: f64| bar.2 - (bar.2 - bar.3) * v / s;
+    for (k, &bar) in bars.iter().enumerate() {
+        let e = error_bars
+            .iter()
+            .find(|p| p[0].0 >= bar.0 && p[0].0 <= bar.0 + bar.1)
+            .unwrap_or_else(|| panic!("no error bar over bar {k}"));
+        let (top, bottom) = (e[0].1.min(e[1].1), e[0].1.max(e[1].1));
+        assert!(
+            (bottom - at(bar, lo[k], sigma[k])).abs() < 1.6,
+            "dof {k}: low end {bottom}"
+        );
+        assert!(
+            (top - at(bar, hi[k], sigma[k])).abs() < 1.6,
+            "dof {k}: high end {top}"
+        );
+        let reference = data[0].reference.unwrap()[k];
+        let tick = ticks
+            .iter()
+            .find(|p| p[0].0 >= bar.0 - 0.5 && p[1].0 <= bar.0 + bar.1 + 0.5);
+        match (reference, tick) {
+            (Some(v), Some(t)) => assert!((t[0].1 - at(bar, v, sigma[k])).abs() < 1.6),
+            (None, None) => {}
+            (r, t) => panic!("dof {k}: reference {r:?} but tick {t:?}"),
+        }
+    }
+}
+
+#[test]
+fn bad_plot_inputs_are_errors() {
+    assert!(matches!(
+        sigma_bars_svg(&[], "σ"),
+        Err(StudyError::NothingToPlot(_))
+    ));
+    let mut v = variants();
+    v[0].sigma[2] = f64::NAN;
+    assert!(matches!(
+        sigma_bars_svg(&v, "σ"),
+        Err(StudyError::NonFinite { .. })
+    ));
+    let mut v = variants();
+    v[1].interval = Some(([1.0; 6], [f64::INFINITY; 6]));
+    assert!(matches!(
+        sigma_bars_svg(&v, "σ"),
+        Err(StudyError::NonFinite { .. })
+    ));
+    assert!(xy_scatter_svg(&[]).is_err());
+    assert!(convergence_svg(&[]).is_err());
+    let mut huge = variants();
+    huge[1].sigma[0] = 1.7e308;
+    assert!(matches!(
+        sigma_bars_svg(&huge, "σ"),
+        Err(StudyError::NonFinite { .. })
+    ));
+    let scatter = VariantScatter {
+        variant: "a".into(),
+        point: "centre".into(),
+        xy: vec![(f64::NAN, 0.0)],
+    };
+    assert!(xy_scatter_svg(&[scatter]).is_err());
+}
+
+/// A study of `scene` with `samples` Monte Carlo samples (sigma: the plain
+/// sample standard deviation), as its report.
+fn study(scene: &str, samples: usize, variation: Variation) -> VariantReport {
+    let c = common::load(scene);
+    let opts = StudyOptions {
+        samples: Some(samples),
+        sampler: Some(Sampler::MonteCarlo),
+        variation,
+        ..Default::default()
+    };
+    let run = run_variant(&c, &opts, &|| {}).unwrap();
+    VariantReport::new(&c, run, &opts).unwrap()
+}
+
+/// The Kelvin clamp has two evaluation points: the scatter has a named
+/// panel with every sample for each; the convergence plot has one panel per
+/// DOF (all six), one line per variant and point, each ending at the sigma
+/// of all samples (computed here from the records, two-pass).
+#[test]
+fn scatter_names_every_point_and_convergence_has_six_dofs() {
+    let n = 10;
+    let v = study("06_kelvin_steel.toml", n, Variation::default());
+    let charts = study_charts(&[&v], &[]).unwrap();
+    let names: Vec<&str> = charts.iter().map(|c| c.file_name).collect();
+    assert_eq!(
+        names,
+        ["sigma_bars.svg", "scatter_xy.svg", "sigma_convergence.svg"]
+    );
+    let scatter = &charts[1].svg;
+    for point in ["centre", "trihedral ball"] {
+        let caption = format!("06_kelvin_steel · {point} ({n} samples)");
+        assert!(scatter.contains(&caption), "missing {caption}");
+    }
+    assert_eq!(elements(scatter, "circle").len(), 2 * n);
+    let conv = &charts[2].svg;
+    for (dof, unit) in [
+        ("x", "nm"),
+        ("y", "nm"),
+        ("z", "nm"),
+        ("φx", "nrad"),
+        ("φy", "nrad"),
+        ("φz", "nrad"),
+    ] {
+        let caption = format!("convergence of σ {dof} [{unit}]");
+        assert!(conv.contains(&caption), "missing {caption}");
+    }
+    assert!(conv.contains("06_kelvin_steel · trihedral ball"));
+    // Series: 2 points x 6 DOFs; the last value of each is the sigma of all samples.
+    let k_of = |dof: usize, point: usize| -> f64 {
+        let values: Vec<f64> = v
+            .records
+            .iter()
+            .map(|r| r.outputs[6 * point + dof] * 1e9)
+            .collect();
+        let last = sigma_convergence(&values).unwrap().last().unwrap().sigma;
+        let mean = values.iter().sum::<f64>() / n as f64;
+        let s = (values.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64).sqrt();
+        assert!((last / s - 1.0).abs() < 1e-9, "{last} vs {s}");
+        s
+    };
+    for point in 0..2 {
+        for dof in 0..6 {
+            let s = k_of(dof, point);
+            let table = &v.points[point].sigma.values()[dof];
+            assert!(
+                (s / table - 1.0).abs() < 1e-9,
+                "plotted series ends at the table's sigma"
+            );
+        }
+    }
+}
+
+#[test]
+fn convergence_svg_has_a_panel_per_dof_given() {
+    let series: Vec<ConvergenceSeries> = [(Dof::X, 1.0), (Dof::PhiZ, 10.0)]
+        .iter()
+        .map(|&(dof, scale)| {
+            let x: Vec<f64> = (0..25)
+                .map(|i| scale * (f64::from(i) * 2.1).sin())
+                .collect();
+            ConvergenceSeries {
+                variant: "three-groove".into(),
+                dof,
+                points: sigma_convergence(&x).unwrap(),
+            }
+        })
+        .collect();
+    let svg = convergence_svg(&series).unwrap();
+    assert!(svg.contains("convergence of σ x [nm]") && svg.contains("convergence of σ φz [nrad]"));
+    assert!(!svg.contains("convergence of σ y"));
+    assert!(svg.contains("number of samples k"));
+}
+
+/// Interchangeability bars and scatter appear exactly when tolerances vary.
+#[test]
+fn interchangeability_is_plotted_when_tolerances_vary() {
+    let tol = Variation {
+        friction: true,
+        tolerances: true,
+        ..Default::default()
+    };
+    let v = study("tolerances_maxwell_vgroove.toml", 8, tol);
+    let charts = study_charts(&[&v], &[]).unwrap();
+    let names: Vec<&str> = charts.iter().map(|c| c.file_name).collect();
+    assert!(names.contains(&"interchange_sigma_bars.svg"), "{names:?}");
+    assert!(names.contains(&"interchange_scatter_xy.svg"), "{names:?}");
+    let bars = &charts
+        .iter()
+        .find(|c| c.file_name == "interchange_sigma_bars.svg")
+        .unwrap()
+        .svg;
+    assert!(bars.contains("interchange σ, translations"));
+    let plain = study("tolerances_maxwell_vgroove.toml", 8, Variation::default());
+    let charts = study_charts(&[&plain], &[]).unwrap();
+    assert!(
+        charts
+            .iter()
+            .all(|c| !c.file_name.starts_with("interchange"))
+    );
+}
