@@ -1,6 +1,6 @@
 //! Complete elliptic integrals by the arithmetic-geometric mean and the
 //! ellipticity of a Hertz contact (Hamrock & Brewe's curve fits, a
-//! cross-check, are in tests/contact_laws.rs).
+//! cross-check, are in tests/it/contact_laws.rs).
 //!
 //! Notation: a >= b are the semi-axes of the contact ellipse, k' = b/a,
 //! m = e^2 = 1 - k'^2 the parameter, K(m) and E(m) the complete elliptic

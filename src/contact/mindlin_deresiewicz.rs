@@ -39,7 +39,7 @@
 //!   are merged in pairs (which keeps Q exactly). So N/2 to N springs carry
 //!   a loaded contact (fewer after a large unloading). The error is that of
 //!   lumping each cell's slip: largest when the slip annulus is about one
-//!   cell wide (tests/contact_laws.rs prints the measured errors).
+//!   cell wide (tests/it/contact_laws.rs prints the measured errors).
 //! - Time: a step from P_old to P with increment du is split as
 //!   normal(P_old -> P), then tangential(du) at P: first order in the step
 //!   for a sticking contact under a changing load (k_t of the end radius;

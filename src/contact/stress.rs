@@ -95,7 +95,7 @@ pub fn circular_max_shear(nu: f64) -> (f64, f64) {
 /// ... with t1 = atan(b/a)/2 (R changes on the angular scale b/a near the
 /// major axis); phi on [0, phi1] and [phi1, pi/2] with 48 nodes each, phi1
 /// the angle where r = 4 z (the near field). Converged to 1e-8 for
-/// 0.01 <= b/a <= 1 and 2e-6 at b/a = 0.002 (sigma_z against its closed form, tests/contact_laws.rs).
+/// 0.01 <= b/a <= 1 and 2e-6 at b/a = 0.002 (sigma_z against its closed form, tests/it/contact_laws.rs).
 pub fn elliptical_axis_stresses(nu: f64, kp: f64, zeta: f64) -> [f64; 3] {
     let (a, b, z) = (1.0 / kp, 1.0, zeta);
     let mut s = [0.0; 3];

@@ -250,7 +250,7 @@ impl TangentialState {
 
 /// Springs in the row (0 <= x <= a): 128 (96 to 128 carry a contact at
 /// constant load, 64 to 128 while it grows) keep Cattaneo's curve within
-/// 2.3e-3 at every step (tests/contact_laws.rs).
+/// 2.3e-3 at every step (tests/it/contact_laws.rs).
 pub const SPRINGS: usize = 128;
 
 /// The MDR row of one contact: cell width and each cell's 2-D value

@@ -3,7 +3,7 @@
 //! significant digits, so that 0.04 reads 0.04 and not 0.040000000000000001.
 //!
 //! Both changes stay below 1e-15 relative to the vector they belong to, far
-//! inside what the scene's numbers mean (tests/scenes.rs reloads the
+//! inside what the scene's numbers mean (tests/it/scenes.rs reloads the
 //! expanded form and compares the scene at 1e-12).
 
 /// Significant digits kept (an f64 holds 15 to 17).

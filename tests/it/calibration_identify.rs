@@ -20,7 +20,7 @@ use rand_chacha::ChaCha8Rng;
 /// For mu_static the checked intervals keep their four Catmull-Rom nodes
 /// at or below mu0 = 0.7125 (mu_s <= 0.7625): above about mu_s = 0.78 some
 /// pin contacts of scene 02 stick from the first load on (all six stick
-/// above Mindlin's ratio of the pin contact, 0.854; `tests/fresh_contact.rs`),
+/// above Mindlin's ratio of the pin contact, 0.854; `tests/it/fresh_contact.rs`),
 /// a change of regime that a smooth interpolation does not follow; there
 /// the grid's check says so.
 #[test]

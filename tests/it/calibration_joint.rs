@@ -1,7 +1,7 @@
 //! Calibration of several parameters (issue 15, `--fit spread,mu_static,...`):
 //! coverage of the joint fit's profile intervals for a pair the data can
 //! separate (spread, mu_static). Which pairs the data cannot separate:
-//! tests/calibration_identify.rs.
+//! tests/it/calibration_identify.rs.
 
 use crate::common;
 

@@ -28,7 +28,7 @@ fn twist(c: &Coupling, a: &BodyPose, b: &BodyPose) -> Vector6<f64> {
 /// The limit of the fixed-step path: x_5120 + (x_5120 - x_2560), the
 /// first-order Richardson extrapolation of 2560 and 5120 uniform
 /// increments (the fixed path converges to first order,
-/// tests/seating_path.rs).
+/// tests/it/seating_path.rs).
 fn limit(c: &Coupling, mu: &[f64]) -> BodyPose {
     let a = seat(c, mu, &SolverOptions::fixed(2560)).unwrap().pose;
     let b = seat(c, mu, &SolverOptions::fixed(5120)).unwrap().pose;

@@ -120,7 +120,7 @@ fn spring_preloads_change_sigma_by_less_than_their_stiffness_share() {
     let sprung = write("sprung", &scene01_without_force(&three_forces(&spring)));
     let central = scene("01_maxwell_vgroove_steel.toml").display().to_string();
     let (a, b) = (study_sigmas(&central), study_sigmas(&sprung));
-    // Scene 01 by hand (tests/quasistatic.rs): six 45-degree contacts share
+    // Scene 01 by hand (tests/it/quasistatic.rs): six 45-degree contacts share
     // F = 20 N, each f = F / (6 cos 45), Hertz K = 4/3 E* sqrt(R), approach
     // delta = (f/K)^(2/3), the half settles z = delta / cos 45; each contact's
     // k_n = 3/2 K delta^(1/2), the vertical stiffness K_z = 6 k_n cos^2 45.

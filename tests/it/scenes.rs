@@ -1,6 +1,6 @@
 //! Bundled scenes: load, expand and load back to the same scene (1e-12); exactly
 //! constrained; contact normals at the angles of docs/model.md ("Axes and contact numbering"); balls touch
-//! at zero gap (the geometry itself: tests/geometry.rs).
+//! at zero gap (the geometry itself: tests/it/geometry.rs).
 
 use crate::common;
 

@@ -229,7 +229,7 @@ mod coulomb {
     /// The closed forms of a circular contact ([`Circle`]) against the
     /// elliptical route with two equal principal values (K_t and dK_t/dF_n
     /// as matrices, the projection in principal axes and its general
-    /// tangent), which `tests/contact_laws.rs` checks by finite
+    /// tangent), which `tests/it/contact_laws.rs` checks by finite
     /// differences: force and both tangents agree to rounding, about many
     /// normals, sticking, sliding on and starting to slide, for the switch
     /// and the decay law (whose dmu terms the closed form carries too).

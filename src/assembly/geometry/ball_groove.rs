@@ -6,7 +6,7 @@
 //! v = (c - a) - ((c - a) . d) d,    gap = R - |v| - r,    n = -v / |v|
 //! ```
 //! (n from the wall into the ball, towards the axis). parry has no hollow
-//! cylinder; `tests/geometry.rs` checks this against the projection of the
+//! cylinder; `tests/it/geometry.rs` checks this against the projection of the
 //! ball centre onto the boundary of parry's solid `Cylinder` from inside.
 
 use nalgebra::Vector3;

@@ -8,7 +8,7 @@
 //! p = c - n (r + gap/2) (the ball's surface point c - n r and the fixed
 //! surface's c - n (r + gap)).
 //!
-//! parry3d-f64 is the reference: `tests/geometry.rs` checks each closed
+//! parry3d-f64 is the reference: `tests/it/geometry.rs` checks each closed
 //! form against parry's `query::contact` with the shapes of
 //! [`parry_shape`] on random poses at the coupling's scale. The closed
 //! forms replace parry's query in the solvers because the query's shape

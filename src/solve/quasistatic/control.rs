@@ -34,7 +34,7 @@
 //! d = -(C_1 h + 3 C_2 h^2)); x* removes the first-order part, so err
 //! bounds the error left. Measured against the limit of the fixed path
 //! (first-order Richardson of 2560 and 5120 uniform increments,
-//! tests/path_control.rs) the true error is below err for 200 of 200
+//! tests/it/path_control.rs) the true error is below err for 200 of 200
 //! friction vectors of scene 06 and 199 of 200 of scene 02 (the exception
 //! 3.0e-9 against 1.6e-9, at the Newton floor). A contact that changes between stick
 //! and slip is located by halving inside every level (`path`), to
