@@ -18,6 +18,8 @@ pub mod explore;
 pub mod fe;
 pub mod input;
 pub mod material;
+pub mod output;
+pub mod param;
 pub mod report;
 pub mod scene;
 pub mod solve;

@@ -4,7 +4,7 @@ each other and that the modules import each other without a cycle
 (docs/architecture.md).
 
 Layers, low to high (a file may import its own layer or a lower one):
-  0 cancel, input, dof, delimited, material, contact   1 scene   2 assembly, error   3 solve
+  0 cancel, input, output, param, dof, delimited, material, contact   1 scene   2 assembly, error   3 solve
   4 analysis, fe        5 study   6 explore, calibrate
   7 report (renders the results of all below)   8 bin (the CLI)
 An import is any `crate::a::b` or `super::...` path in a file (use lines
@@ -21,7 +21,7 @@ import re
 import sys
 
 LAYER = {
-    "cancel": 0, "input": 0, "dof": 0, "delimited": 0, "material": 0, "contact": 0, "scene": 1, "assembly": 2, "error": 2,
+    "cancel": 0, "input": 0, "output": 0, "param": 0, "dof": 0, "delimited": 0, "material": 0, "contact": 0, "scene": 1, "assembly": 2, "error": 2,
     "solve": 3, "analysis": 4, "fe": 4, "study": 5, "explore": 6,
     "calibrate": 6, "report": 7, "bin": 8,
 }

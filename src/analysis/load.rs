@@ -19,7 +19,7 @@
 
 use crate::assembly::Coupling;
 use crate::solve::quasistatic::{ExternalLoad, LoadEvent, LoadPath, apply_load, at_rest_states};
-use crate::solve::{Seating, SolveError, SolverOptions};
+use crate::solve::{Load, Seating, SolveError, SolverOptions};
 
 /// Relative width of the final bracket of the envelope factor.
 pub const ENVELOPE_TOLERANCE: f64 = 1e-5;
@@ -38,7 +38,7 @@ pub const LEVER_RATIO_MAX: f64 = 1e3;
 /// cannot overflow) over the coupling's size (see [`LEVER_RATIO_MAX`]),
 /// and that size [m].
 pub fn lever_ratio(coupling: &Coupling, point: &nalgebra::Vector3<f64>) -> (f64, f64) {
-    let size = (coupling.scene.balls.iter())
+    let size = (coupling.balls.iter())
         .map(|b| b.centre.norm())
         .fold(0.0, f64::max);
     (point.amax() / size, size)
@@ -61,28 +61,37 @@ impl Envelope {
     }
 }
 
-/// A load path from the seated state to `factor` x `load`.
+/// A load path from the state `seating` seated under `seated` to
+/// `factor` x `external`.
 pub fn load_path(
     coupling: &Coupling,
-    mu_s: &[f64],
+    seated: &Load,
     seating: &Seating,
-    load: &ExternalLoad,
+    external: &ExternalLoad,
     factor: f64,
     opts: &SolverOptions,
 ) -> Result<LoadPath, SolveError> {
     let states = at_rest_states(seating);
-    apply_load(coupling, mu_s, &seating.pose, &states, load, factor, opts)
+    apply_load(
+        coupling,
+        seated,
+        &seating.pose(),
+        &states,
+        external,
+        factor,
+        opts,
+    )
 }
 
 /// The safe load envelope (module doc).
 pub fn envelope(
     coupling: &Coupling,
-    mu_s: &[f64],
+    seated: &Load,
     seating: &Seating,
-    load: &ExternalLoad,
+    external: &ExternalLoad,
     opts: &SolverOptions,
 ) -> Result<Envelope, SolveError> {
-    let run = |f: f64| load_path(coupling, mu_s, seating, load, f, opts);
+    let run = |f: f64| load_path(coupling, seated, seating, external, f, opts);
     let mut lo = 0.0;
     let mut f = 1.0;
     let first = loop {

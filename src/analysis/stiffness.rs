@@ -42,7 +42,7 @@ use crate::assembly::{BodyPose, Coupling};
 use crate::solve::contact_layer::evaluate;
 use crate::solve::preload_forces::applied;
 use crate::solve::quasistatic::at_rest_states;
-use crate::solve::{Seating, SolveError, frictions};
+use crate::solve::{Load, Seating, SolveError};
 
 /// One contact's spring at rest.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -78,12 +78,12 @@ pub struct Principal {
 }
 
 impl CouplingStiffness {
-    /// The at-rest contact springs of a seating made with static
-    /// coefficients `mu_s` (the seating's own contact states).
-    pub fn new(coupling: &Coupling, seating: &Seating, mu_s: &[f64]) -> Result<Self, SolveError> {
-        let friction = frictions(coupling, mu_s)?;
+    /// The at-rest contact springs of a seating made under `load` (the
+    /// seating's own contact states), and the preload's springs.
+    pub fn new(coupling: &Coupling, seating: &Seating, load: &Load) -> Result<Self, SolveError> {
+        let friction = load.frictions(coupling)?;
         let states = at_rest_states(seating);
-        let pose = seating.pose;
+        let pose = seating.pose();
         let springs = (0..coupling.contacts.len())
             .map(|i| {
                 let e = evaluate(coupling, i, &pose, &pose, &states[i], friction[i]);
@@ -106,7 +106,7 @@ impl CouplingStiffness {
                 }
             })
             .collect();
-        let preload_springs = applied(coupling, &pose, 1.0)
+        let preload_springs = applied(coupling, &load.preload, &pose, 1.0)
             .filter_map(|a| a.stiffness.map(|k| (a.point, k)))
             .collect();
         Ok(CouplingStiffness {

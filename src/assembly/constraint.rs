@@ -16,6 +16,7 @@ use microlp::{ComparisonOp, OptimizationDirection, Problem};
 use nalgebra::{DMatrix, Vector3, Vector6};
 
 use super::{BodyPose, Coupling};
+use crate::scene::Preload;
 
 /// Rank threshold on the eigenvalues of A^T A and A A^T (the squared
 /// singular values), relative to the largest: singular values below 1e-6 of
@@ -209,30 +210,30 @@ fn describe_twist(v: &Vector3<f64>, wl: &Vector3<f64>, o: &Vector3<f64>, l: f64)
     )
 }
 
-/// Contact forces that balance the preload with no friction: solve
+/// Contact forces that balance `preload` with no friction: solve
 /// sum_i f_i [n_i; c_i x n_i] = -[F; p x F] (a positive f_i presses).
-pub fn frictionless_preload_forces(coupling: &Coupling) -> Vec<f64> {
+pub fn frictionless_preload_forces(coupling: &Coupling, preload: &Preload) -> Vec<f64> {
+    frictionless_forces(coupling, preload).as_slice().to_vec()
+}
+
+/// [`frictionless_preload_forces`] without allocating (zero where the
+/// system is singular).
+pub fn frictionless_forces(coupling: &Coupling, preload: &Preload) -> Vector6<f64> {
     let pose = coupling.touching_pose;
-    let rows = coupling.constraint_rows(&pose);
-    let m = rows.len();
-    let a = DMatrix::from_fn(6, m, |r, c| rows[c][r]);
-    let (f, mom) = preload_wrench(coupling, &pose, None);
+    let a = coupling.constraint_rows(&pose).transpose();
+    let (f, mom) = preload_wrench(preload, &pose, None);
     let rhs = -Vector6::new(f.x, f.y, f.z, mom.x, mom.y, mom.z);
-    let x = a
-        .lu()
-        .solve(&nalgebra::DVector::from_column_slice(rhs.as_slice()));
-    x.map_or_else(|| vec![0.0; m], |x| x.as_slice().to_vec())
+    a.lu().solve(&rhs).unwrap_or_else(Vector6::zeros)
 }
 
 /// The preload's full-load force and moment about the origin in the
 /// touching pose `pose` (each spring gives its `force` there); with `unit`,
-/// per unit of [`crate::scene::Preload::scale`] and about that point.
+/// per unit of [`Preload::scale`] and about that point.
 fn preload_wrench(
-    coupling: &Coupling,
+    p: &Preload,
     pose: &BodyPose,
     unit: Option<Vector3<f64>>,
 ) -> (Vector3<f64>, Vector3<f64>) {
-    let p = &coupling.scene.preload;
     let scale = p.scale();
     let (mut f, mut m) = (Vector3::zeros(), Vector3::zeros());
     for k in &p.forces {
@@ -274,13 +275,13 @@ const MU_RESOLUTION: f64 = 1e-4;
 /// cone replaced by an inscribed pyramid of K facets, microlp); the limit is
 /// the least over i. Below it the preload always drives the last contact
 /// closed.
-pub fn friction_limit(coupling: &Coupling) -> FrictionLimit {
+pub fn friction_limit(coupling: &Coupling, preload: &Preload) -> FrictionLimit {
     let (o, l) = reference(coupling);
     let pose = coupling.touching_pose;
     let m = coupling.contacts.len();
     let geoms: Vec<_> = (0..m).map(|i| coupling.geometry(i, &pose)).collect();
     // The preload per unit of its scale (a single force: its direction).
-    let (target_f, target_m) = preload_wrench(coupling, &pose, Some(o));
+    let (target_f, target_m) = preload_wrench(preload, &pose, Some(o));
     let target_f = -target_f;
     let target_m = -target_m / l;
     let feasible = |open: usize, mu: f64| -> bool {

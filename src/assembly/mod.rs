@@ -9,9 +9,11 @@ use nalgebra::{Matrix6, Quaternion, UnitQuaternion, Vector3, Vector6};
 use thiserror::Error;
 
 use crate::contact::stress::ShearRatios;
-use crate::contact::{ContactError, ContactLaw, ContactPair, ContactShape, SeriesNormal};
+use crate::contact::{
+    ContactError, ContactLaw, ContactPair, ContactShape, FrictionLaw, SeriesNormal, TangentialLaw,
+};
 use crate::material::Material;
-use crate::scene::{Scene, SurfaceGeometry};
+use crate::scene::{DynamicsSettings, Scene, SurfaceGeometry};
 pub use constraint::{ConstraintReport, FrictionLimit};
 pub use geometry::ContactGeometry;
 
@@ -104,13 +106,30 @@ pub struct MovingBall {
     pub material: Material,
 }
 
+/// The friction laws every contact follows (the scene's `[friction]`
+/// without the coefficients, which each seating is given: `solve::Load`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrictionLaws {
+    /// mu_d = dynamic_ratio * mu_s.
+    pub dynamic_ratio: f64,
+    /// The sliding coefficient: sudden switch or decay with slip velocity.
+    pub law: FrictionLaw,
+    pub tangential: TangentialLaw,
+}
+
+/// An assembled coupling: its geometry, materials and laws. What a seating
+/// varies (friction coefficients, preload, start) is not here: the solvers
+/// take it as an argument (`solve::Load`).
 #[derive(Debug, Clone)]
 pub struct Coupling {
-    pub scene: Scene,
     pub balls: Vec<MovingBall>,
     pub contacts: Vec<Contact>,
     /// The unloaded touching pose: every contact at zero gap.
     pub touching_pose: BodyPose,
+    pub friction: FrictionLaws,
+    /// Mass properties of the moving half given by the scene (`[dynamics]`;
+    /// `None`: the dynamic solver's default model).
+    pub dynamics: Option<DynamicsSettings>,
 }
 
 /// The assembly failed: the scene describes no working coupling.
@@ -147,7 +166,8 @@ pub const TOUCH_TOLERANCE: f64 = 1e-6;
 
 impl Coupling {
     /// Assemble a validated scene: laws, exact-constraint check,
-    /// touching pose, and the check that the preload loads every contact.
+    /// touching pose, and the check that the scene's preload loads every
+    /// contact.
     pub fn new(scene: &Scene) -> Result<Coupling, AssemblyError> {
         Coupling::assemble(scene, TOUCH_TOLERANCE)
     }
@@ -187,11 +207,17 @@ impl Coupling {
         let contacts = (scene.surfaces.iter().enumerate())
             .map(|(i, s)| contacts::build(i, s, &balls[s.ball]))
             .collect::<Result<Vec<_>, _>>()?;
+        let f = &scene.friction;
         let mut coupling = Coupling {
-            scene: scene.clone(),
             balls,
             contacts,
             touching_pose: BodyPose::identity(),
+            friction: FrictionLaws {
+                dynamic_ratio: f.dynamic_ratio,
+                law: f.law,
+                tangential: f.tangential_law,
+            },
+            dynamics: scene.dynamics,
         };
         for (i, c) in coupling.contacts.iter().enumerate() {
             let g = coupling.geometry(i, &BodyPose::identity());
@@ -209,7 +235,7 @@ impl Coupling {
             return Err(AssemblyError::NotExactlyConstrained(report.describe()));
         }
         coupling.touching_pose = coupling.solve_touching_pose();
-        let forces = constraint::frictionless_preload_forces(&coupling);
+        let forces = constraint::frictionless_preload_forces(&coupling, &scene.preload);
         if let Some((i, f)) = forces.iter().enumerate().find(|(_, f)| **f <= 0.0) {
             return Err(AssemblyError::PreloadLifts {
                 contact: i + 1,
@@ -253,17 +279,18 @@ impl Coupling {
     }
 
     /// Constraint rows w_i = [n_i; p_i x n_i] at `pose` (p_i the contact
-    /// point, on the line of the contact normal):
+    /// point, on the line of the contact normal), row i of the matrix:
     /// d(gap_i) = w_i . (v, w) for a twist (v, w) about the world origin.
-    pub fn constraint_rows(&self, pose: &BodyPose) -> Vec<Vector6<f64>> {
-        (0..self.contacts.len())
-            .map(|i| {
-                let g = self.geometry(i, pose);
-                let n = g.normal;
-                let m = g.point.cross(&n);
-                Vector6::new(n.x, n.y, n.z, m.x, m.y, m.z)
-            })
-            .collect()
+    /// An assembled coupling is exactly constrained: six contacts, six rows.
+    pub fn constraint_rows(&self, pose: &BodyPose) -> Matrix6<f64> {
+        let mut w = Matrix6::zeros();
+        for i in 0..6 {
+            let g = self.geometry(i, pose);
+            let n = g.normal;
+            let m = g.point.cross(&n);
+            w.set_row(i, &Vector6::new(n.x, n.y, n.z, m.x, m.y, m.z).transpose());
+        }
+        w
     }
 
     /// Newton on the six gaps: the pose at which every contact touches at
@@ -275,8 +302,7 @@ impl Coupling {
             if gaps.amax() < 1e-16 {
                 break;
             }
-            let rows = self.constraint_rows(&pose);
-            let j = Matrix6::from_fn(|r, c| rows[r][c]);
+            let j = self.constraint_rows(&pose);
             let Some(step) = j.lu().solve(&(-gaps)) else {
                 break;
             };

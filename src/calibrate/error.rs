@@ -4,8 +4,8 @@
 use thiserror::Error;
 
 use super::units::UnitError;
+use crate::param::{Param, ParamError};
 use crate::study::StudyError;
-use crate::study::runner::RunError;
 
 /// A calibration or prediction could not be made.
 #[derive(Debug, Error)]
@@ -31,23 +31,28 @@ pub enum CalibrateError {
     Array { origin: String, reason: String },
     #[error("{file}: cannot read: {reason}")]
     Read { file: String, reason: String },
-    /// A bad `--noise` entry (or `# noise:` metadata).
+    /// A bad `noise` entry (or `# noise:` metadata).
     #[error("{origin}: {reason}")]
     Noise { origin: String, reason: UnitError },
-    /// A parameter name `--fit` does not know.
+    /// A parameter name `fit` does not know.
     #[error(
-        "--fit {0}: unknown parameter (known: spread, mu_static, dynamic_ratio, support_compliance)"
+        "{}: unknown parameter (known: spread, mu_static, dynamic_ratio, support_compliance)",
+        Param::Fit.with(.0)
     )]
     UnknownParameter(String),
-    /// A parameter named twice in `--fit`.
-    #[error("--fit {0}: named twice")]
+    /// A parameter named twice in `fit`.
+    #[error("{}: named twice", Param::Fit.with(.0))]
     DuplicateParameter(String),
-    /// An empty `--fit` list or an empty name in it.
+    /// An empty `fit` list or an empty name in it.
     #[error(
-        "--fit: empty parameter name (give a comma-separated list of spread, mu_static, \
-         dynamic_ratio, support_compliance)"
+        "{}: empty parameter name (give a comma-separated list of spread, mu_static, \
+         dynamic_ratio, support_compliance)",
+        Param::Fit
     )]
     EmptyFit,
+    /// An option out of range (the model samples, ...).
+    #[error(transparent)]
+    Param(#[from] ParamError),
     /// The measured evaluation point is not in the scene.
     #[error("{file}: evaluation point `{point}` is not in the scene (it has: {have})")]
     Point {
@@ -74,12 +79,7 @@ pub enum CalibrateError {
     /// its scatter is not a prediction.
     #[error("{file}: cannot seat: {reason}")]
     CannotSeat { file: String, reason: String },
+    /// A model study could not be planned or run (its message names the scene).
     #[error(transparent)]
-    Run(#[from] RunError),
-    #[error("{file}: {source}")]
-    Study {
-        file: String,
-        #[source]
-        source: StudyError,
-    },
+    Study(#[from] StudyError),
 }

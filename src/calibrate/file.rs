@@ -12,10 +12,10 @@ use super::error::CalibrateError;
 use super::grid::GridInfo;
 use super::likelihood::{GoodnessOfFit, Observed};
 use super::measurement::{MeasuredData, Measurement};
-use crate::assembly::Coupling;
 use crate::dof::Dof;
-use crate::solve::Method;
-use crate::study::provenance::{Fingerprint, VERSION, fnv1a64};
+use crate::scene::{Sampler, Scene, StudyDefaults};
+use crate::solve::Solver;
+use crate::study::provenance::{Fingerprint, VERSION, content_hash};
 
 /// Version of the calibration file's schema (docs/measurements.md).
 pub const CALIBRATION_SCHEMA_VERSION: u32 = 2;
@@ -35,7 +35,8 @@ pub struct CalibrateOptions {
     pub point: Option<String>,
     pub samples: usize,
     pub seed: u64,
-    pub method: Method,
+    /// The solver of the model studies.
+    pub solver: Solver,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -134,25 +135,25 @@ pub struct Calibration {
     pub fingerprint: Fingerprint,
 }
 
-/// Hash of a scene that ignores its file, spread and study defaults.
-pub fn design_hash(coupling: &Coupling) -> String {
-    let s = &coupling.scene;
-    let mut f = s.friction;
-    f.spread = 0.0;
-    let text = format!(
-        "{:?}{:?}{:?}{:?}{:?}{:?}{:?}",
-        s.balls, s.surfaces, s.preload, f, s.evaluation_points, s.dynamics, s.variation
-    );
-    format!("{:016x}", fnv1a64(text.as_bytes()))
+/// The design hash of a scene: [`content_hash`] of the scene without its
+/// file, name, spread and study defaults (the calibrated design,
+/// whichever spread and study it is run with).
+pub fn design_hash(scene: &Scene) -> String {
+    let mut s = scene.clone();
+    s.file = String::new();
+    s.name = String::new();
+    s.friction.spread = 0.0;
+    s.study = StudyDefaults {
+        samples: 0,
+        sampler: Sampler::MonteCarlo,
+        seed: 0,
+    };
+    content_hash(&s)
 }
 
 /// Index of the evaluation point `name` (None: the first).
-pub fn point_index(
-    coupling: &Coupling,
-    name: Option<&str>,
-    file: &str,
-) -> Result<usize, CalibrateError> {
-    let pts = &coupling.scene.evaluation_points;
+pub fn point_index(scene: &Scene, name: Option<&str>, file: &str) -> Result<usize, CalibrateError> {
+    let pts = &scene.evaluation_points;
     match name {
         None => Ok(0),
         Some(n) => pts
@@ -196,7 +197,7 @@ pub fn noise_of(m: &Measurement, opts: &CalibrateOptions) -> Vec<f64> {
 /// model; `parameters`, `fixed`, `dofs`, `correlation` and `region` are
 /// left empty for the caller.
 pub fn skeleton(
-    coupling: &Coupling,
+    scene: &Scene,
     m: &Measurement,
     point: usize,
     gof: GoodnessOfFit,
@@ -207,10 +208,10 @@ pub fn skeleton(
         schema_version: CALIBRATION_SCHEMA_VERSION,
         kind: "calibration".into(),
         kinrepro_version: VERSION.into(),
-        scene: coupling.scene.file.clone(),
-        scene_name: coupling.scene.name.clone(),
-        scene_content: design_hash(coupling),
-        point: coupling.scene.evaluation_points[point].name.clone(),
+        scene: scene.file.clone(),
+        scene_name: scene.name.clone(),
+        scene_content: design_hash(scene),
+        point: scene.evaluation_points[point].name.clone(),
         measured_file: m.file.clone(),
         data: match m.data {
             MeasuredData::Cycles(_) => "cycles",

@@ -32,38 +32,44 @@ use super::measurement::Measurement;
 use super::model::StudySpec;
 use super::params::{Param, parse_fit, with_values};
 use crate::assembly::Coupling;
+use crate::param::Param as Arg;
+use crate::scene::Scene;
 use crate::study::stats::quantile::normal_quantile;
+use crate::study::{StudyOptions, StudyPlan, Variant};
 
-/// Calibrate the parameters `opts.fit` of the scene on measurement `m`.
+/// Calibrate the parameters `opts.fit` of `scene` (assembled as
+/// `coupling`) on measurement `m`.
 pub fn calibrate(
+    scene: &Scene,
     coupling: &Coupling,
     m: &Measurement,
     opts: &CalibrateOptions,
 ) -> Result<Calibration, CalibrateError> {
     let params = parse_fit(&opts.fit)?;
     let point_name = opts.point.as_deref().or(m.point.as_deref());
-    let point = point_index(coupling, point_name, &m.file)?;
-    let f = coupling.scene.friction;
+    let point = point_index(scene, point_name, &m.file)?;
+    let f = scene.friction;
     let fit_spread = params.contains(&Param::Spread);
     if !fit_spread && f.spread == 0.0 {
         return Err(CalibrateError::Model {
             file: m.file.clone(),
-            reason: "the scene's friction spread is 0, so the model has no scatter: \
-                     fit the spread too (--fit spread,...)"
-                .into(),
+            reason: format!(
+                "the scene's friction spread is 0, so the model has no scatter: fit the spread too ({})",
+                Arg::Fit.with("spread,...")
+            ),
         });
     }
     let noise = noise_of(m, opts);
     let noise_var: Vec<f64> = noise.iter().map(|v| v * v).collect();
     let obs = observed(m);
+    let models = StudyOptions::monte_carlo(opts.samples, opts.seed, opts.solver);
+    let plan = StudyPlan::new(vec![(scene.clone(), coupling.clone())], &models)?;
     let spec = StudySpec {
-        coupling,
+        plan: &plan,
         point,
         dofs: &m.dofs,
-        samples: opts.samples,
-        seed: opts.seed,
-        method: opts.method,
     };
+    let base: &Variant = spec.base();
     let s_ref = if f.spread > 0.0 {
         f.spread
     } else {
@@ -71,13 +77,13 @@ pub fn calibrate(
     };
     let (reference, grid) = two_pass_grid(&spec, &obs, &params, &noise_var, s_ref)?;
     let grid = grid.as_ref().unwrap_or(&reference);
-    let jm = JointModel::new(&obs, grid, &params, coupling, &noise_var);
+    let jm = JointModel::new(&obs, grid, &params, base, &noise_var);
     let (u_hat, l_max) = estimate(&jm);
     if !l_max.is_finite() {
         return Err(singular(m));
     }
     let theta = jm.theta(&u_hat);
-    let at_estimate = spec.run(&with_values(coupling, &params, &theta))?;
+    let at_estimate = spec.run(&with_values(base, &params, &theta))?;
     let fit = fit_at(&jm, &u_hat, l_max, &at_estimate.samples_of(&m.dofs));
     let fitted = jm.sigma(&theta).ok_or_else(|| singular(m))?;
     let s_hat = jm.spread(&theta);
@@ -90,9 +96,9 @@ pub fn calibrate(
     if !grid.params.is_empty() {
         check = check.max(region_check(&spec, &jm, &params, &fit.region, &noise_var)?);
     }
-    let info = model_info(opts, s_ref, grid, linearity, check);
+    let info = model_info(&spec, s_ref, grid, linearity, check);
     let mut cal = skeleton(
-        coupling,
+        scene,
         m,
         point,
         gof,
@@ -108,7 +114,7 @@ pub fn calibrate(
         .collect();
     cal.parameters = names().zip(fit.parameters).collect();
     cal.correlation = fit.correlation;
-    cal.fixed = fixed(coupling, &params);
+    cal.fixed = fixed(base, &params);
     Ok(cal)
 }
 
@@ -130,13 +136,13 @@ fn two_pass_grid(
     let fit_mu = params.contains(&Param::MuStatic);
     let ranges: Vec<(f64, f64)> = grid_params
         .iter()
-        .map(|p| p.range(spec.coupling, fit_mu))
+        .map(|p| p.range(spec.base(), fit_mu))
         .collect();
     let reference = ModelGrid::build(spec, &grid_params, &ranges, s_ref)?;
     if !params.contains(&Param::Spread) {
         return Ok((reference, None));
     }
-    let jm = JointModel::new(obs, &reference, params, spec.coupling, noise_var);
+    let jm = JointModel::new(obs, &reference, params, spec.base(), noise_var);
     let s1 = jm.theta(&estimate(&jm).0)[0];
     let grid = ModelGrid::build(spec, &grid_params, &ranges, s1)?;
     Ok((reference, Some(grid)))
@@ -144,17 +150,18 @@ fn two_pass_grid(
 
 /// The `model` block: the grid if there are grid parameters.
 fn model_info(
-    opts: &CalibrateOptions,
+    spec: &StudySpec,
     s_ref: f64,
     grid: &ModelGrid,
     linearity: f64,
     check: f64,
 ) -> ModelInfo {
+    let design = spec.base().design;
     ModelInfo {
-        solver: opts.method.name().into(),
+        solver: spec.plan.method().name().into(),
         sampler: "mc".into(),
-        seed: opts.seed,
-        samples: opts.samples,
+        seed: design.seed,
+        samples: design.n,
         reference_spread: s_ref,
         linearity,
         grid: (!grid.params.is_empty()).then(|| GridInfo {
@@ -197,8 +204,9 @@ fn singular(m: &Measurement) -> CalibrateError {
     CalibrateError::Model {
         file: m.file.clone(),
         reason: "the model covariance of the measured DOFs plus the sensor noise is singular \
-                 everywhere in the searched range: give the sensor noise of every measured DOF (--noise)"
-            .into(),
+                 everywhere in the searched range: give the sensor noise of every measured DOF ("
+            .to_string()
+            + &format!("{})", Arg::Noise),
     }
 }
 
@@ -227,7 +235,7 @@ fn region_check(
             continue;
         };
         let model = per_unit_model(&sigma, noise_var, jm.spread(theta));
-        let direct = spec.run(&with_values(spec.coupling, params, theta))?;
+        let direct = spec.run(&with_values(spec.base(), params, theta))?;
         worst = worst.max(sigma_difference(&model, &direct.per_unit(spec.dofs)));
     }
     Ok(worst)
@@ -396,10 +404,10 @@ fn correlation(params: &[Param], v: &DMatrix<f64>) -> Correlation {
 }
 
 /// The parameters not fitted, at the scene's values.
-fn fixed(coupling: &Coupling, params: &[Param]) -> BTreeMap<String, f64> {
+fn fixed(v: &Variant, params: &[Param]) -> BTreeMap<String, f64> {
     Param::ALL
         .into_iter()
         .filter(|p| !params.contains(p))
-        .map(|p| (p.name().to_string(), p.value(coupling)))
+        .map(|p| (p.name().to_string(), p.value(v)))
         .collect()
 }

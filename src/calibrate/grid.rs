@@ -76,10 +76,10 @@ impl ModelGrid {
             let values: Vec<f64> = (node_indices(nodes.len(), k, flat).iter().zip(&nodes))
                 .map(|(&i, n)| n[i])
                 .collect();
-            let mut c = with_values(spec.coupling, params, &values);
+            let mut c = with_values(spec.base(), params, &values);
             let mu = c.scene.friction.mu_static;
             let s = if cap { spread.min(0.5 * mu) } else { spread };
-            Param::Spread.set(&mut c, s);
+            Param::Spread.set(&mut c.scene, &mut c.coupling, s);
             g.push(spec.run(&c)?.per_unit(spec.dofs));
         }
         Ok(ModelGrid {

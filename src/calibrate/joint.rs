@@ -44,23 +44,23 @@ pub struct JointModel<'a> {
 }
 
 impl<'a> JointModel<'a> {
-    /// The model of `params` (sorted) on `grid` for the scene `coupling`:
-    /// the searched ranges from [`Param::range`], the spread and mu_static
-    /// from the scene where they are not fitted.
+    /// The model of `params` (sorted) on `grid` for the scene `v`: the
+    /// searched ranges from [`Param::range`], the spread and mu_static from
+    /// the scene where they are not fitted.
     pub fn new(
         obs: &'a Observed,
         grid: &'a ModelGrid,
         params: &[Param],
-        coupling: &crate::assembly::Coupling,
+        v: &crate::study::Variant,
         noise_var: &[f64],
     ) -> Self {
         let fit_mu = params.contains(&Param::MuStatic);
-        let f = &coupling.scene.friction;
+        let f = &v.scene.friction;
         JointModel {
             obs,
             grid,
             params: params.to_vec(),
-            ranges: params.iter().map(|p| p.range(coupling, fit_mu)).collect(),
+            ranges: params.iter().map(|p| p.range(v, fit_mu)).collect(),
             spread_fixed: f.spread,
             mu_fixed: f.mu_static,
             noise_var: noise_var.to_vec(),

@@ -1,49 +1,51 @@
-//! The model studies of a calibration: Monte Carlo studies
-//! (`study::runner::run_variant`) of the scene with fitted parameters
-//! replaced, giving the pose samples of one evaluation point and their
-//! covariance.
+//! The model studies of a calibration: Monte Carlo studies of the scene
+//! with fitted parameters replaced (one study plan, its variant of the
+//! scene with the parameters set: `super::params`), giving the pose
+//! samples of one evaluation point and their covariance.
 
 use nalgebra::DMatrix;
 
 use super::error::CalibrateError;
-use crate::assembly::Coupling;
-use crate::solve::Method;
-use crate::study::Sampler;
+use crate::param::{Param, ParamError};
 use crate::study::provenance::Fingerprint;
-use crate::study::runner::{StudyOptions, run_variant};
+use crate::study::runner::run_variant;
+use crate::study::{StudyPlan, Variant};
 
-/// Samples of the model studies (`--model-samples`): the relative standard
+/// Samples of the model studies (`model_samples`): the relative standard
 /// error of a model variance, sqrt(2 / (N - 1)) = 3.2 % at 2000, is small
 /// against that of a 50-cycle measurement (20 %).
 pub const MODEL_SAMPLES: usize = 2000;
 
-/// Seed of the model studies (`--seed`); a synthetic measurement must use another.
+/// Seed of the model studies (`seed`); a synthetic measurement must use another.
 pub const MODEL_SEED: u64 = 15_015;
 
-/// Fewest samples of a model study (`--model-samples`, `predict --samples`).
+/// Fewest samples of a model study (`model_samples` of a calibration,
+/// `samples` of a prediction).
 pub const MIN_MODEL_SAMPLES: usize = 100;
 
-/// A model study's sample count `n` given by `flag`: at least
+/// A model study's sample count `n`, given as `param`: at least
 /// [`MIN_MODEL_SAMPLES`].
-pub fn check_model_samples(flag: &str, n: usize) -> Result<usize, String> {
+pub fn check_model_samples(param: Param, n: usize) -> Result<usize, ParamError> {
     if n < MIN_MODEL_SAMPLES {
-        return Err(format!(
-            "{flag} {n}: need at least {MIN_MODEL_SAMPLES} samples"
+        return Err(ParamError::new(
+            param,
+            format!(
+                "{}: need at least {MIN_MODEL_SAMPLES} samples",
+                param.with(n)
+            ),
         ));
     }
     Ok(n)
 }
 
-/// What every model study of a calibration shares.
+/// What every model study of a calibration shares: the plan of the
+/// scene's Monte Carlo study (`plan.variants[0]`, the scene as given).
 #[derive(Debug, Clone, Copy)]
 pub struct StudySpec<'a> {
-    pub coupling: &'a Coupling,
+    pub plan: &'a StudyPlan,
     /// Index of the measured evaluation point.
     pub point: usize,
     pub dofs: &'a [usize],
-    pub samples: usize,
-    pub seed: u64,
-    pub method: Method,
 }
 
 /// The pose samples of one point at one spread.
@@ -55,49 +57,33 @@ pub struct ModelStudy {
     pub fingerprint: Fingerprint,
 }
 
-/// The scene with its friction spread replaced by `spread`.
-pub fn with_spread(coupling: &Coupling, spread: f64) -> Coupling {
-    let mut c = coupling.clone();
-    c.scene.friction.spread = spread;
-    c
-}
-
-/// Study options of a model study: plain Monte Carlo (an unbiased sample
-/// covariance; Bonett's interval for sigma), friction varied.
-pub fn model_options(samples: usize, seed: u64, method: Method) -> StudyOptions {
-    StudyOptions {
-        sampler: Some(Sampler::MonteCarlo),
-        samples: Some(samples),
-        seed: Some(seed),
-        method,
-        ..StudyOptions::default()
-    }
-}
-
 impl StudySpec<'_> {
-    /// The model study of `c` (a variant of the scene) at its own spread.
-    /// The same seed draws the same design rows at every spread and node
-    /// (common random numbers), so the ratio of two model studies carries
-    /// little sampling noise.
-    pub fn run(&self, c: &Coupling) -> Result<ModelStudy, CalibrateError> {
-        let opts = model_options(self.samples, self.seed, self.method);
-        let run = run_variant(c, &opts, &|| {})?;
+    /// The scene as given.
+    pub fn base(&self) -> &Variant {
+        &self.plan.variants[0]
+    }
+
+    /// The model study of `v` (the scene with parameters set) at its own
+    /// spread. The same seed draws the same design rows at every spread
+    /// and node (common random numbers), so the ratio of two model studies
+    /// carries little sampling noise.
+    pub fn run(&self, v: &Variant) -> Result<ModelStudy, CalibrateError> {
+        let s = &self.plan.settings;
+        let run = run_variant(s, v, &|| {})?;
+        let spread = v.scene.friction.spread;
         if let Some(reason) = run.cannot_seat {
             return Err(CalibrateError::CannotSeat {
-                file: c.scene.file.clone(),
-                reason: format!(
-                    "{reason} (model study at spread {})",
-                    c.scene.friction.spread
-                ),
+                file: v.file().to_string(),
+                reason: format!("{reason} (model study at spread {spread})"),
             });
         }
         let point = self.point;
         Ok(ModelStudy {
-            spread: c.scene.friction.spread,
+            spread,
             rows: (run.records.iter())
                 .map(|r| std::array::from_fn(|j| r.outputs[6 * point + j]))
                 .collect(),
-            fingerprint: Fingerprint::new(c, &opts, &run.design),
+            fingerprint: Fingerprint::new(&v.scene, s, &run.design),
         })
     }
 }

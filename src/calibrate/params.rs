@@ -1,5 +1,6 @@
-//! The parameters `calibrate --fit` may name, their admissible ranges, and
-//! setting them in a coupling.
+//! The parameters a calibration may fit (`fit`), their admissible ranges,
+//! and setting them in a model of the scene (a study [`Variant`]: its scene
+//! and its coupling together).
 //!
 //! * `spread`: `[friction] spread`, the half-width of mu_s in mu0 +- spread,
 //!   searched in (1e-4 s_max, s_max] with s_max = min(mu_static,
@@ -16,13 +17,17 @@
 //!   softer than four times the Hertz contact itself is a design fault, not
 //!   a scatter to calibrate.
 
+use std::collections::BTreeMap;
+
 use super::error::CalibrateError;
 use crate::assembly::Coupling;
 use crate::assembly::constraint::frictionless_preload_forces;
 use crate::contact::SeriesNormal;
+use crate::scene::Scene;
 use crate::scene::resolve::MU_MAX;
+use crate::study::Variant;
 
-/// The parameters `--fit` may name, in the order they are fitted and reported.
+/// The parameters `fit` may name, in the order they are fitted and reported.
 pub const PARAMETERS: [&str; 4] = ["spread", "mu_static", "dynamic_ratio", "support_compliance"];
 
 /// Searched range of `mu_static`.
@@ -53,34 +58,35 @@ impl Param {
         PARAMETERS[self as usize]
     }
 
-    /// The parameter of a `--fit` name.
+    /// The parameter of a `fit` name.
     pub fn from_name(name: &str) -> Option<Param> {
         Param::ALL.into_iter().find(|p| p.name() == name)
     }
 
-    /// Its value in `coupling` (the compliance of the first contact).
-    pub fn value(self, coupling: &Coupling) -> f64 {
-        let f = &coupling.scene.friction;
+    /// Its value in the model `v` (the compliance of the first contact).
+    pub fn value(self, v: &Variant) -> f64 {
+        let f = &v.scene.friction;
         match self {
             Param::Spread => f.spread,
             Param::MuStatic => f.mu_static,
             Param::DynamicRatio => f.dynamic_ratio,
-            Param::SupportCompliance => coupling
+            Param::SupportCompliance => v
+                .coupling
                 .contacts
                 .first()
                 .map_or(0.0, |c| c.normal.compliance),
         }
     }
 
-    /// The searched range [low, high] for the scene `coupling`. The spread's
+    /// The searched range [low, high] for the model `v`. The spread's
     /// upper end also depends on mu_static (see [`admissible`]).
-    pub fn range(self, coupling: &Coupling, fit_mu: bool) -> (f64, f64) {
+    pub fn range(self, v: &Variant, fit_mu: bool) -> (f64, f64) {
         match self {
             Param::Spread => {
                 let mu = if fit_mu {
                     MU_STATIC_RANGE.1
                 } else {
-                    coupling.scene.friction.mu_static
+                    v.scene.friction.mu_static
                 };
                 (0.0, mu.min(MU_MAX - mu))
             }
@@ -88,23 +94,29 @@ impl Param {
             Param::DynamicRatio => DYNAMIC_RATIO_RANGE,
             Param::SupportCompliance => (
                 0.0,
-                SUPPORT_COMPLIANCE_HERTZ_MULTIPLE * hertz_compliance(coupling),
+                SUPPORT_COMPLIANCE_HERTZ_MULTIPLE * hertz_compliance(v),
             ),
         }
     }
 
-    pub fn set(self, coupling: &mut Coupling, v: f64) {
-        let f = &mut coupling.scene.friction;
+    /// Set this parameter to `x` in a scene and its coupling: in the
+    /// scene and, where the coupling carries it (the dynamic ratio, the
+    /// compliances), there.
+    pub fn set(self, scene: &mut Scene, coupling: &mut Coupling, x: f64) {
+        let f = &mut scene.friction;
         match self {
-            Param::Spread => f.spread = v,
-            Param::MuStatic => f.mu_static = v,
-            Param::DynamicRatio => f.dynamic_ratio = v,
+            Param::Spread => f.spread = x,
+            Param::MuStatic => f.mu_static = x,
+            Param::DynamicRatio => {
+                f.dynamic_ratio = x;
+                coupling.friction.dynamic_ratio = x;
+            }
             Param::SupportCompliance => {
-                for s in &mut coupling.scene.surfaces {
-                    s.support_compliance = v;
+                for s in &mut scene.surfaces {
+                    s.support_compliance = x;
                 }
                 for c in &mut coupling.contacts {
-                    c.normal = SeriesNormal::new(c.normal.hertz, v);
+                    c.normal = SeriesNormal::new(c.normal.hertz, x);
                 }
             }
         }
@@ -138,28 +150,38 @@ pub fn admissible(s: f64, mu: f64) -> bool {
     s >= 0.0 && s <= mu && mu + s <= MU_MAX
 }
 
-/// The coupling with the parameters `params` set to `values`.
-pub fn with_values(coupling: &Coupling, params: &[Param], values: &[f64]) -> Coupling {
-    let mut c = coupling.clone();
-    for (p, v) in params.iter().zip(values) {
-        p.set(&mut c, *v);
+/// The model `v` with the parameters `params` set to `values`.
+pub fn with_values(v: &Variant, params: &[Param], values: &[f64]) -> Variant {
+    let mut out = v.clone();
+    for (p, x) in params.iter().zip(values) {
+        p.set(&mut out.scene, &mut out.coupling, *x);
     }
-    c
+    out
+}
+
+/// Set the parameters named in `values` (unknown names are left out) in a
+/// scene and its coupling.
+pub fn apply_named(scene: &mut Scene, coupling: &mut Coupling, values: &BTreeMap<String, f64>) {
+    for (name, x) in values {
+        if let Some(p) = Param::from_name(name) {
+            p.set(scene, coupling, *x);
+        }
+    }
 }
 
 /// The largest Hertz compliance d delta / dF = 2 delta / (3 F) of the
 /// contacts at their frictionless preload forces F [m/N] (Hertz:
 /// delta = (F / K)^(2/3)).
-pub fn hertz_compliance(coupling: &Coupling) -> f64 {
-    frictionless_preload_forces(coupling)
+pub fn hertz_compliance(v: &Variant) -> f64 {
+    frictionless_preload_forces(&v.coupling, &v.scene.preload)
         .iter()
-        .zip(&coupling.contacts)
+        .zip(&v.coupling.contacts)
         .filter(|(f, _)| **f > 0.0)
         .map(|(f, c)| 2.0 * c.normal.hertz.approach(*f) / (3.0 * f))
         .fold(0.0, f64::max)
 }
 
-/// Parse `--fit`: a non-empty list of known, distinct names, returned in
+/// Parse `fit`: a non-empty list of known, distinct names, returned in
 /// the order of [`PARAMETERS`].
 pub fn parse_fit(fit: &[String]) -> Result<Vec<Param>, CalibrateError> {
     if fit.is_empty() || fit.iter().all(|f| f.is_empty()) {

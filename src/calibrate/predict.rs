@@ -28,12 +28,12 @@ use std::collections::BTreeMap;
 
 use super::error::CalibrateError;
 use super::file::{Calibration, DofFit, design_hash};
-use super::model::model_options;
-use super::params::{Param, admissible};
+use super::params::{admissible, apply_named};
 use crate::assembly::Coupling;
-use crate::solve::Method;
+use crate::scene::Scene;
+use crate::solve::Solver;
 use crate::study::runner::run_variant;
-use crate::study::{Dofs, PointStats, VariantReport};
+use crate::study::{Dofs, PointStats, StudyOptions, StudyPlan, Variant, VariantReport};
 
 /// The interval method named in `sigma_interval_method`.
 pub const PREDICTION_METHOD: &str = "calibrated prediction: range of sigma over the calibration's 90 % profile-likelihood parameter region (studies at its points, common random numbers) and Bonett's 90 % interval of the Monte Carlo study at the estimate, combined in quadrature on ln sigma";
@@ -49,30 +49,29 @@ pub struct Prediction {
 }
 
 /// The scene with the calibrated `values` set (names of [`super::params::PARAMETERS`]; other names are ignored).
-pub fn with_parameters(coupling: &Coupling, values: &BTreeMap<String, f64>) -> Coupling {
-    let mut c = coupling.clone();
-    for (name, v) in values {
-        if let Some(p) = Param::from_name(name) {
-            p.set(&mut c, *v);
-        }
-    }
-    c
+pub fn with_parameters(v: &Variant, values: &BTreeMap<String, f64>) -> Variant {
+    let mut out = v.clone();
+    apply_named(&mut out.scene, &mut out.coupling, values);
+    out
 }
 
-/// Predict sigma of every evaluation point of `coupling` at the parameters
-/// of `cal`, read from `cal_file` (errors at a calibrated point name that
-/// file and the point: `parameters` estimates or `region[i]`).
+/// Predict sigma of every evaluation point of `scene` (assembled as
+/// `coupling`) at the parameters of `cal`, read from `cal_file` (errors at
+/// a calibrated point name that file and the point: `parameters`
+/// estimates or `region[i]`), by Monte Carlo studies of `samples` samples
+/// seeded `seed`, seated by `solver`.
 pub fn predict(
+    scene: &Scene,
     coupling: &Coupling,
     cal: &Calibration,
     cal_file: &str,
-    samples: usize,
-    seed: u64,
-    method: Method,
+    (samples, seed, solver): (usize, u64, Solver),
 ) -> Result<Prediction, CalibrateError> {
-    let file = coupling.scene.file.clone();
-    let estimate = with_parameters(coupling, &cal.estimates());
-    let region: Vec<Coupling> = cal
+    let file = scene.file.clone();
+    let options = StudyOptions::monte_carlo(samples, seed, solver);
+    let plan = StudyPlan::new(vec![(scene.clone(), coupling.clone())], &options)?;
+    let estimate = with_parameters(&plan.variants[0], &cal.estimates());
+    let region: Vec<Variant> = cal
         .region_points()
         .iter()
         .map(|v| with_parameters(&estimate, v))
@@ -90,19 +89,16 @@ pub fn predict(
     };
     let points = std::iter::once((None, &estimate))
         .chain(region.iter().enumerate().map(|(i, c)| (Some(i), c)));
-    for (k, c) in points {
-        inadmissible(c).map_or(Ok(()), |r| Err(applied(k, r)))?;
+    for (k, v) in points {
+        inadmissible(v).map_or(Ok(()), |r| Err(applied(k, r)))?;
     }
-    let opts = model_options(samples, seed, method);
-    let report = |c: &Coupling, k: Option<usize>| -> Result<VariantReport, CalibrateError> {
-        let run = run_variant(c, &opts, &|| {}).map_err(|e| applied(k, e.to_string()))?;
+    let s = &plan.settings;
+    let report = |v: &Variant, k: Option<usize>| -> Result<VariantReport, CalibrateError> {
+        let run = run_variant(s, v, &|| {}).map_err(|e| applied(k, e.to_string()))?;
         if let Some(reason) = run.cannot_seat {
             return Err(applied(k, format!("cannot seat: {reason}")));
         }
-        VariantReport::new(c, run, &opts).map_err(|source| CalibrateError::Study {
-            file: file.clone(),
-            source,
-        })
+        Ok(VariantReport::new(s, v, run).map_err(|e| e.in_file(&file))?)
     };
     let mut variant = report(&estimate, None)?;
     // A point at zero spread has no scatter (sigma 0): no study needed.
@@ -136,14 +132,14 @@ pub fn predict(
     // for a streamed study): `kinrepro study` at the calibrated values gives them.
     variant.records.clear();
     let measured =
-        (design_hash(coupling) == cal.scene_content).then(|| (cal.point.clone(), cal.dofs.clone()));
+        (design_hash(scene) == cal.scene_content).then(|| (cal.point.clone(), cal.dofs.clone()));
     Ok(Prediction { variant, measured })
 }
 
 /// Why the friction of `c` (a scene at calibrated values) is no scene's:
 /// mu_s = mu_static +- spread leaves [0, MU_MAX].
-fn inadmissible(c: &Coupling) -> Option<String> {
-    let f = &c.scene.friction;
+fn inadmissible(v: &Variant) -> Option<String> {
+    let f = &v.scene.friction;
     (!admissible(f.spread, f.mu_static)).then(|| {
         format!(
             "spread {} with mu_static {}: mu_s = mu_static +- spread would leave [0, {}]",

@@ -8,7 +8,8 @@ use serde::{Deserialize, Serialize};
 use super::ExploreError;
 use super::field::SweptValue;
 use super::values::Set;
-use crate::assembly::Coupling;
+use crate::param::Param;
+use crate::scene::Scene;
 use crate::study::{Sampler, sampling};
 
 /// How the design points are chosen.
@@ -25,12 +26,12 @@ pub enum DesignKind {
 impl DesignKind {
     /// A grid (`points` None), or an LHS of `points` design points seeded
     /// like each point's study: `seed`, else the scene's `[study]` seed.
-    pub fn new(points: Option<usize>, seed: Option<u64>, base: &Coupling) -> DesignKind {
+    pub fn new(points: Option<usize>, seed: Option<u64>, base: &Scene) -> DesignKind {
         match points {
             None => DesignKind::Grid,
             Some(points) => DesignKind::Lhs {
                 points,
-                seed: seed.unwrap_or(base.scene.study.seed),
+                seed: seed.unwrap_or(base.study.seed),
             },
         }
     }
@@ -56,15 +57,16 @@ pub const MAX_DESIGN_POINTS: usize = 100_000;
 /// The design points of `sets` under `kind`.
 pub fn design_points(sets: &[Set], kind: DesignKind) -> Result<Vec<DesignPoint>, ExploreError> {
     if sets.is_empty() {
-        return Err(ExploreError::Design(
-            "nothing to sweep: give at least one --set FIELD=VALUES".into(),
-        ));
+        return Err(ExploreError::Design(format!(
+            "nothing to sweep: give at least one {}",
+            Param::Sets.with("FIELD=VALUES")
+        )));
     }
     for (i, a) in sets.iter().enumerate() {
         if sets[..i].iter().any(|b| b.path == a.path) {
             return Err(ExploreError::Design(format!(
-                "--set {} is given twice",
-                a.path
+                "{} is given twice",
+                Param::Sets.with(&a.path)
             )));
         }
     }
@@ -77,8 +79,8 @@ pub fn design_points(sets: &[Set], kind: DesignKind) -> Result<Vec<DesignPoint>,
 fn grid(sets: &[Set]) -> Result<Vec<DesignPoint>, ExploreError> {
     if let Some(s) = sets.iter().find(|s| s.levels.is_empty()) {
         return Err(ExploreError::Design(format!(
-            "--set {}={}: a grid needs a count (a:b:count) or a list",
-            s.path, s.spec
+            "{}: a grid needs a count (a:b:count) or a list",
+            Param::Sets.with(format!("{}={}", s.path, s.spec))
         )));
     }
     let total = sets
@@ -104,7 +106,13 @@ fn grid(sets: &[Set]) -> Result<Vec<DesignPoint>, ExploreError> {
 
 fn lhs(sets: &[Set], points: usize, seed: u64) -> Result<Vec<DesignPoint>, ExploreError> {
     let rows = sampling::design(Sampler::Lhs, sets.len(), points, seed)
-        .map_err(|e| ExploreError::Design(format!("--design lhs --points {points}: {e}")))?;
+        .map_err(|e| {
+            ExploreError::Design(format!(
+                "{} {}: {e}",
+                Param::Design.with("lhs"),
+                Param::Points.with(points)
+            ))
+        })?;
     Ok(rows
         .into_iter()
         .enumerate()

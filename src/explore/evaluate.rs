@@ -1,23 +1,19 @@
-//! One design point of a sweep: its scene text (the base scene with the
-//! swept fields set), validated by the normal scene loader, and its
-//! evaluation: the nominal seating's principal stiffnesses, smallest
+//! One design point of a sweep: its scene (the base scene's typed form
+//! with the swept fields set), validated by the normal scene loader, and
+//! its evaluation: the nominal seating's principal stiffnesses, smallest
 //! pressure safety factor, friction limit and approach, then the
-//! reproducibility study (`study::runner::run_variant`, the study's own
-//! design and statistics).
+//! reproducibility study of the sweep's plan (its design and statistics).
 
 use thiserror::Error;
-use toml::Table;
 
-use super::ExploreError;
 use super::field::{SweptValue, set};
 use super::values::Set;
 use crate::analysis::stiffness::CouplingStiffness;
 use crate::assembly::Coupling;
 use crate::assembly::constraint::friction_limit;
-use crate::scene::Scene;
-use crate::solve::dynamic::StartPose;
-use crate::solve::{PointPose, Seating, SolveError, nominal_mu};
-use crate::study::runner::{RunError, StudyOptions, VariantRun, run_variant};
+use crate::scene::{Scene, SceneFile};
+use crate::solve::{Load, PointPose, Seating, SolveError};
+use crate::study::{StudyError, StudyPlan, Variant, VariantReport};
 
 /// Why a valid design point could not be evaluated (its `failed:` status).
 #[derive(Debug, Error)]
@@ -36,7 +32,7 @@ pub enum EvalError {
     NotPositiveDefinite,
     /// The friction check or the reproducibility study failed.
     #[error(transparent)]
-    Run(#[from] RunError),
+    Study(#[from] StudyError),
 }
 
 /// What became of a design point.
@@ -93,59 +89,47 @@ pub struct Nominal {
 #[derive(Debug, Clone)]
 pub struct Evaluation {
     pub outcome: Outcome,
-    /// The assembled coupling (None if the scene is invalid).
-    pub coupling: Option<Coupling>,
     pub nominal: Option<Nominal>,
-    /// The study's samples (Some when `outcome` is `Ok`).
-    pub run: Option<VariantRun>,
+    /// The study's report (Some when `outcome` is `Ok`).
+    pub report: Option<VariantReport>,
 }
 
-/// The scene text of a design point: `base` with each set field replaced.
-pub fn point_text(
-    base: &Table,
-    sets: &[Set],
-    values: &[SweptValue],
-) -> Result<String, ExploreError> {
-    let mut doc = base.clone();
+/// The scene of a design point: `base` with each set field set; a value
+/// the field does not take is the point's invalid reason (`FIELD: reason`).
+pub fn point_file(base: &SceneFile, sets: &[Set], values: &[SweptValue]) -> Result<SceneFile, String> {
+    let mut file = base.clone();
     for (s, v) in sets.iter().zip(values) {
-        set(&mut doc, &s.path, v)?;
+        set(&mut file, &s.path, v).map_err(|e| format!("{}: {e}", s.path))?;
     }
-    toml::to_string(&doc).map_err(|e| ExploreError::Design(format!("cannot write the scene: {e}")))
+    Ok(file)
 }
 
-/// Validate and evaluate one design point; `label` names it in messages.
-/// Never fails: a bad point is an [`Outcome`] other than `Ok`.
+/// Validate and evaluate one design point, its scene `point` (from
+/// [`point_file`]) read from `source`; `label` names it in messages, and
+/// its study is `base`'s design and samples in `plan`. Never fails: a bad
+/// point is an [`Outcome`] other than `Ok`.
 pub fn evaluate(
-    text: &str,
+    point: Result<SceneFile, String>,
+    source: &str,
     label: &str,
-    opts: &StudyOptions,
+    plan: &StudyPlan,
+    base: &Variant,
     tick: &(dyn Fn() + Sync),
 ) -> Evaluation {
     let mut e = Evaluation {
         outcome: Outcome::Ok,
-        coupling: None,
         nominal: None,
-        run: None,
+        report: None,
     };
     // A stopped run (`cancel::request`) skips the points not yet begun.
     if crate::cancel::requested() {
         e.outcome = Outcome::Failed("stopped: a stop was requested".into());
         return e;
     }
-    let scene = match Scene::parse(text, label) {
+    let scene = match point.and_then(|f| Scene::from_file(&f, label, source).map_err(invalid)) {
         Ok(s) => s,
-        Err(err) => {
-            // Line numbers would point into the generated text: name the
-            // field only (for a parser error, the key on the error's line).
-            let field = match (err.field.is_empty(), err.line) {
-                (true, Some(line)) => field_at(text, line).unwrap_or_default(),
-                _ => err.field,
-            };
-            e.outcome = Outcome::Invalid(if field.is_empty() {
-                err.reason
-            } else {
-                format!("{field}: {}", err.reason)
-            });
+        Err(reason) => {
+            e.outcome = Outcome::Invalid(reason);
             return e;
         }
     };
@@ -156,56 +140,64 @@ pub fn evaluate(
             return e;
         }
     };
-    e.outcome = match seat_and_study(&coupling, opts, tick, &mut e) {
+    let v = base.with_model(scene, coupling);
+    e.outcome = match seat_and_study(&v, plan, tick, &mut e) {
         Ok(o) => o,
         Err(reason) => Outcome::Failed(reason.to_string()),
     };
-    e.coupling = Some(coupling);
     e
 }
 
-/// The dotted path (`table.key`) of the `key = value` at 1-based `line`
-/// of a TOML text, its table from the last header above it.
-fn field_at(text: &str, line: usize) -> Option<String> {
-    let lines: Vec<&str> = text.lines().take(line).collect();
-    let key = lines.last()?.split_once('=')?.0.trim();
-    let table = lines
-        .iter()
-        .rev()
-        .find_map(|l| l.trim().strip_prefix('['))
-        .map(|h| h.trim_matches(|c| c == '[' || c == ']').trim())?;
-    Some(format!("{table}.{key}"))
+/// A design point's invalid reason: the field and the scene loader's
+/// reason (no line: the point has no text of its own).
+fn invalid(err: crate::scene::SceneError) -> String {
+    match err.field.is_empty() {
+        true => err.reason,
+        false => format!("{}: {}", err.field, err.reason),
+    }
 }
 
 fn seat_and_study(
-    c: &Coupling,
-    opts: &StudyOptions,
+    v: &Variant,
+    plan: &StudyPlan,
     tick: &(dyn Fn() + Sync),
     e: &mut Evaluation,
 ) -> Result<Outcome, EvalError> {
-    let mu = nominal_mu(c);
-    let seating = opts
-        .method
-        .seat(c, &mu, &StartPose::touching())
-        .map_err(|source| EvalError::NominalSeating { mu: mu[0], source })?;
-    e.nominal = Some(nominal(c, &seating, &mu)?);
-    if let Some(reason) = crate::study::verdict::cannot_seat(c, &opts.method)? {
+    let load = Load::nominal(&v.scene);
+    let seating = plan
+        .method()
+        .seat(&v.coupling, &load)
+        .map_err(|source| EvalError::NominalSeating {
+            mu: load.mu[0],
+            source,
+        })?;
+    e.nominal = Some(nominal(&v.scene, &v.coupling, &seating, &load)?);
+    if let Some(reason) = crate::study::verdict::cannot_seat(&v.scene, &v.coupling, plan.method())? {
         return Ok(Outcome::CannotSeat(reason));
     }
-    e.run = Some(run_variant(c, opts, tick)?);
+    let report = plan.kept(v, tick)?;
+    if let Some(r) = &report.cannot_seat {
+        return Ok(Outcome::CannotSeat(r.clone()));
+    }
+    e.report = Some(report);
     Ok(Outcome::Ok)
 }
 
 /// Stiffness, safety, friction limit and approach of the nominal seating.
-fn nominal(c: &Coupling, seating: &Seating, mu: &[f64]) -> Result<Nominal, EvalError> {
-    let point = c.scene.evaluation_points[0].position;
-    let k = CouplingStiffness::new(c, seating, mu).map_err(EvalError::Stiffness)?;
-    let at = seating.pose.apply(&point);
+fn nominal(
+    scene: &Scene,
+    c: &Coupling,
+    seating: &Seating,
+    load: &Load,
+) -> Result<Nominal, EvalError> {
+    let point = scene.evaluation_points[0].position;
+    let k = CouplingStiffness::new(c, seating, load).map_err(EvalError::Stiffness)?;
+    let at = seating.pose().apply(&point);
     let principal = k.principal_at(&at).ok_or(EvalError::NotPositiveDefinite)?;
-    let limit = friction_limit(c).mu_limit;
-    let f = &c.scene.friction;
+    let limit = friction_limit(c, &load.preload).mu_limit;
+    let f = &scene.friction;
     let limit = limit.is_finite().then_some(limit);
-    let approach = PointPose::between(&c.touching_pose, &seating.pose, &point);
+    let approach = PointPose::between(&c.touching_pose, &seating.pose(), &point);
     let d = nalgebra::Vector3::new(approach.x_m, approach.y_m, approach.z_m);
     Ok(Nominal {
         translational_n_per_m: principal.translational.map(|(k, _)| k),
@@ -217,7 +209,7 @@ fn nominal(c: &Coupling, seating: &Seating, mu: &[f64]) -> Result<Nominal, EvalE
             .reduce(f64::min),
         friction_limit: limit,
         friction_limit_margin: limit.map(|l| l - (f.mu_static + f.spread)),
-        approach_m: d.dot(&c.scene.preload.resultant_direction()),
+        approach_m: d.dot(&scene.preload.resultant_direction()),
         max_contact_approach_m: seating
             .contacts
             .iter()

@@ -1,6 +1,10 @@
 //! The fields a sweep may set, by their TOML path in the high-level scene
 //! (docs/scenes.md), and setting one in the parsed scene document.
 //!
+//! A design point is the base scene's typed form ([`SceneFile`]) with its
+//! swept fields set ([`set`]): each field is set by its path, so the field
+//! of a value the scene loader refuses is known, not looked for in text.
+//!
 //! Numeric fields: `coupling.{diameter, ball_diameter,
 //! groove_element_diameter, groove_radius, canoe_radius, opening_angle_deg,
 //! support_compliance}`, `preload.{force, ramp_time}`, `friction.{mu_static,
@@ -17,12 +21,14 @@
 //! invalid. Not sweepable: `[variation]` (a sweep varies the friction
 //! only) and the study settings (`[study]`: given as options).
 
+use serde::de::value::{Error as ValueError, StrDeserializer};
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
-use toml::{Table, Value};
+use toml::Spanned;
 
 use super::ExploreError;
 use crate::material::Material;
+use crate::scene::file::{CouplingFile, MaterialFile, SceneFile};
 
 /// What a field holds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -54,30 +60,20 @@ impl std::fmt::Display for SweptValue {
     }
 }
 
-/// Why a `--set` field cannot be swept in this scene.
+/// Why a field cannot be swept in this scene, or a value set in it.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum FieldError {
     #[error("not a sweepable field; sweepable: {}", sweepable())]
     NotSweepable,
-    /// The scene holds a value of another type (its TOML type and value).
-    #[error("the scene gives it as {type_name} ({value}), not as {}", kind_text(*kind))]
-    WrongType {
-        type_name: &'static str,
-        value: String,
-        kind: FieldKind,
-    },
-    #[error("[{0}] is not a table in the scene")]
-    NotATable(String),
     #[error("the scene has no [{0}] table")]
     NoTable(String),
-    #[error("not a sweepable field")]
-    BadPath,
     #[error(
         "the scene has no [[materials]] entry named \"{0}\" and there is no such built-in material"
     )]
     NoMaterial(String),
-    #[error("not present in the scene")]
-    NotPresent,
+    /// A keyword the field does not take (the scene format's message).
+    #[error("{0}")]
+    Keyword(String),
 }
 
 const NUMBERS: [(&str, &[&str]); 3] = [
@@ -131,14 +127,13 @@ pub fn sweepable() -> String {
 }
 
 /// The kind of the field at `path`, checked against the sweepable fields
-/// and against `scene` (its table must exist, an existing value must have
-/// the field's type).
-pub fn kind_of(path: &str, scene: &Table) -> Result<FieldKind, ExploreError> {
+/// and against `scene` (a `coupling` field needs the high-level form, a
+/// material constant a material of that name).
+pub fn kind_of(path: &str, scene: &SceneFile) -> Result<FieldKind, ExploreError> {
     let err = |reason: FieldError| ExploreError::Field {
         path: path.to_string(),
         reason,
     };
-    let unknown = || err(FieldError::NotSweepable);
     let seg: Vec<&str> = path.split('.').collect();
     let kind = match seg.as_slice() {
         ["materials", _, key] if MATERIAL_NUMBERS.contains(key) => FieldKind::Number,
@@ -147,129 +142,122 @@ pub fn kind_of(path: &str, scene: &Table) -> Result<FieldKind, ExploreError> {
         }
         _ if MATERIALS.contains(&path) => FieldKind::Material,
         _ if TEXTS.contains(&path) => FieldKind::Text,
-        _ => return Err(unknown()),
+        _ => return Err(err(FieldError::NotSweepable)),
     };
-    match lookup(scene, &seg).map_err(err)? {
-        Some(v) if !type_fits(v, kind) => Err(err(FieldError::WrongType {
-            type_name: v.type_str(),
-            value: v.to_string(),
-            kind,
-        })),
+    match seg.as_slice() {
+        ["coupling", ..] if scene.coupling.is_none() => {
+            Err(err(FieldError::NoTable("coupling".into())))
+        }
+        ["materials", name, _] if material(scene, name).is_none() && !builtin(name) => {
+            Err(err(FieldError::NoMaterial(name.to_string())))
+        }
         _ => Ok(kind),
     }
 }
 
-fn kind_text(kind: FieldKind) -> &'static str {
-    match kind {
-        FieldKind::Number => "a number",
-        FieldKind::Material => "a material name",
-        FieldKind::Text => "a string",
-    }
-}
-
-fn type_fits(v: &Value, kind: FieldKind) -> bool {
-    match kind {
-        FieldKind::Number => v.is_float() || v.is_integer(),
-        FieldKind::Material | FieldKind::Text => v.is_str(),
-    }
-}
-
-/// The present value at `seg` (None if the field is absent but its table
-/// exists).
-fn lookup<'a>(scene: &'a Table, seg: &[&str]) -> Result<Option<&'a Value>, FieldError> {
-    match seg {
-        ["materials", name, key] => match material(scene, name) {
-            Ok(t) => Ok(t.get(*key)),
-            Err(_) if Material::builtin(name).is_ok() => Ok(None),
-            Err(e) => Err(e),
-        },
-        [table, key] => match scene.get(*table) {
-            Some(Value::Table(t)) => Ok(t.get(*key)),
-            Some(_) => Err(FieldError::NotATable(table.to_string())),
-            None => Err(FieldError::NoTable(table.to_string())),
-        },
-        _ => Err(FieldError::BadPath),
-    }
+fn builtin(name: &str) -> bool {
+    Material::builtin(name).is_ok()
 }
 
 /// The `[[materials]]` entry named `name`.
-fn material<'a>(scene: &'a Table, name: &str) -> Result<&'a Table, FieldError> {
-    scene
-        .get("materials")
-        .and_then(Value::as_array)
-        .into_iter()
-        .flatten()
-        .filter_map(Value::as_table)
-        .find(|t| t.get("name").and_then(Value::as_str) == Some(name))
-        .ok_or_else(|| FieldError::NoMaterial(name.to_string()))
+fn material<'a>(scene: &'a SceneFile, name: &str) -> Option<&'a MaterialFile> {
+    scene.materials.iter().find(|m| m.name.get_ref() == name)
 }
 
-/// Set the field at `path` (checked by [`kind_of`]) to `value`. A
+/// A set value: no place in the scene file, so no line.
+fn at<T>(v: T) -> Spanned<T> {
+    Spanned::new(0..0, v)
+}
+
+/// Set the field at `path` (checked by [`kind_of`]) to `value`, as
+/// [`kind_of`]'s kind says (a number for a numeric field, a name else). A
 /// constant of a built-in material the scene does not define goes into a
 /// new `[[materials]]` entry with `override = true` and the built-in's
-/// other constants, so only that constant changes.
-pub fn set(scene: &mut Table, path: &str, value: &SweptValue) -> Result<(), ExploreError> {
-    let v = match value {
-        SweptValue::Number(x) => Value::Float(*x),
-        SweptValue::Name(s) => Value::String(s.clone()),
+/// other constants, so only that constant changes. A keyword the field
+/// does not take is [`FieldError::Keyword`], in the scene format's words.
+pub fn set(scene: &mut SceneFile, path: &str, value: &SweptValue) -> Result<(), FieldError> {
+    let (x, name) = match value {
+        SweptValue::Number(x) => (*x, String::new()),
+        SweptValue::Name(s) => (f64::NAN, s.clone()),
     };
     let seg: Vec<&str> = path.split('.').collect();
-    if let ["materials", name, _] = seg.as_slice()
-        && material(scene, name).is_err()
-    {
-        add_override(scene, name);
-    }
-    let target = match seg.as_slice() {
-        ["materials", name, _] => scene
-            .get_mut("materials")
-            .and_then(Value::as_array_mut)
-            .into_iter()
-            .flatten()
-            .filter_map(Value::as_table_mut)
-            .find(|t| t.get("name").and_then(Value::as_str) == Some(*name)),
-        [table, _] => scene
-            .entry(table.to_string())
-            .or_insert_with(|| Value::Table(Table::new()))
-            .as_table_mut(),
-        _ => None,
-    };
-    match target {
-        Some(t) => {
-            t.insert(seg[seg.len() - 1].to_string(), v);
-            Ok(())
+    match seg.as_slice() {
+        ["coupling", key] => {
+            let c = scene
+                .coupling
+                .as_mut()
+                .ok_or_else(|| FieldError::NoTable("coupling".into()))?;
+            set_coupling(c, key, x, name)
         }
-        None => Err(ExploreError::Field {
-            path: path.to_string(),
-            reason: FieldError::NotPresent,
-        }),
+        ["preload", "force"] => Ok(scene.preload.force = Some(at(x))),
+        ["preload", "ramp_time"] => Ok(scene.preload.ramp_time = Some(at(x))),
+        ["friction", key] => set_friction(scene, key, x, name),
+        ["materials", m, key] => set_material(scene, m, key, x),
+        _ => Err(FieldError::NotSweepable),
     }
 }
 
-/// Append `[[materials]] name = NAME, override = true` with the constants
-/// of the built-in NAME (nothing if there is no such built-in: `set` then
-/// reports the field as not present).
-fn add_override(scene: &mut Table, name: &str) {
-    let Ok(m) = Material::builtin(name) else {
-        return;
-    };
-    let mut t = Table::new();
-    t.insert("name".into(), Value::String(m.name));
-    t.insert("override".into(), Value::Boolean(true));
-    t.insert("youngs_modulus".into(), Value::Float(m.youngs_modulus));
-    t.insert("poisson_ratio".into(), Value::Float(m.poisson_ratio));
-    let optional = [
-        ("allowable_pressure", m.allowable_pressure),
-        ("allowable_shear_stress", m.allowable_shear_stress),
-    ];
-    for (key, x) in optional {
-        if let Some(x) = x {
-            t.insert(key.into(), Value::Float(x));
-        }
+fn set_coupling(c: &mut CouplingFile, key: &str, x: f64, name: String) -> Result<(), FieldError> {
+    match key {
+        "diameter" => c.diameter = at(x),
+        "ball_diameter" => c.ball_diameter = at(x),
+        "groove_element_diameter" => c.groove_element_diameter = Some(at(x)),
+        "groove_radius" => c.groove_radius = Some(at(x)),
+        "canoe_radius" => c.canoe_radius = Some(at(x)),
+        "opening_angle_deg" => c.opening_angle_deg = at(x),
+        "support_compliance" => c.support_compliance = Some(at(x)),
+        "ball_material" => c.ball_material = at(name),
+        "groove_material" => c.groove_material = at(name),
+        "arrangement" => c.arrangement = keyword(&name)?,
+        "groove" => c.groove = keyword(&name)?,
+        "ball_shape" => c.ball_shape = Some(keyword(&name)?),
+        "seat" => c.seat = Some(keyword(&name)?),
+        _ => return Err(FieldError::NotSweepable),
     }
-    let list = scene
-        .entry("materials")
-        .or_insert_with(|| Value::Array(Vec::new()));
-    if let Some(list) = list.as_array_mut() {
-        list.push(Value::Table(t));
+    Ok(())
+}
+
+fn set_friction(scene: &mut SceneFile, key: &str, x: f64, name: String) -> Result<(), FieldError> {
+    let f = &mut scene.friction;
+    match key {
+        "mu_static" => f.mu_static = at(x),
+        "spread" => f.spread = at(x),
+        "dynamic_ratio" => f.dynamic_ratio = at(x),
+        "decay_coefficient" => f.decay_coefficient = Some(at(x)),
+        "distribution" => f.distribution = keyword(&name)?,
+        "tangential_law" => f.tangential_law = keyword(&name)?,
+        _ => return Err(FieldError::NotSweepable),
     }
+    Ok(())
+}
+
+fn set_material(scene: &mut SceneFile, name: &str, key: &str, x: f64) -> Result<(), FieldError> {
+    if material(scene, name).is_none() {
+        let m = Material::builtin(name).map_err(|_| FieldError::NoMaterial(name.into()))?;
+        scene.materials.push(MaterialFile {
+            name: at(m.name),
+            youngs_modulus: at(m.youngs_modulus),
+            poisson_ratio: at(m.poisson_ratio),
+            allowable_pressure: m.allowable_pressure.map(at),
+            allowable_shear_stress: m.allowable_shear_stress.map(at),
+            replaces: Some(at(true)),
+        });
+    }
+    let m = (scene.materials.iter_mut())
+        .find(|m| m.name.get_ref() == name)
+        .ok_or_else(|| FieldError::NoMaterial(name.into()))?;
+    match key {
+        "youngs_modulus" => m.youngs_modulus = at(x),
+        "poisson_ratio" => m.poisson_ratio = at(x),
+        "allowable_pressure" => m.allowable_pressure = Some(at(x)),
+        "allowable_shear_stress" => m.allowable_shear_stress = Some(at(x)),
+        _ => return Err(FieldError::NotSweepable),
+    }
+    Ok(())
+}
+
+/// A keyword field's value read as the scene format reads it.
+fn keyword<'de, T: Deserialize<'de>>(name: &'de str) -> Result<T, FieldError> {
+    T::deserialize(StrDeserializer::<ValueError>::new(name))
+        .map_err(|e| FieldError::Keyword(e.to_string()))
 }

@@ -1,10 +1,10 @@
 //! Design exploration: `kinrepro sweep`. A sweep sets fields of a
 //! high-level scene by their TOML path ([`field`]) to the values of a grid
-//! or a Latin hypercube over the `--set` ranges ([`values`], [`design`]),
-//! validates every design point exactly like a scene file (the text goes
-//! through [`crate::scene::Scene::parse`]) and evaluates it
-//! ([`evaluate`]): the reproducibility study of `study::runner` with the
-//! same design (same seed: common random numbers across the designs), plus
+//! or a Latin hypercube over the swept ranges ([`values`], [`design`]),
+//! validates every design point exactly like a scene file (its typed form
+//! goes through [`crate::scene::Scene::from_file`]) and evaluates it
+//! ([`evaluate`]): the reproducibility study of the sweep's study plan with
+//! the same design (same seed: common random numbers across the designs), plus
 //! the nominal seating's principal stiffnesses, smallest safety factor
 //! against the allowable pressure, friction limit and approach. [`pareto`]
 //! marks the designs no other design beats. [`run`] runs the design points
@@ -12,8 +12,8 @@
 //! shards.
 //!
 //! Data flow: scene -> assembly -> solve -> study -> explore; the sweep's
-//! tables, CSV and charts are in `report::sweep_text` and
-//! `report::sweep_plot`.
+//! tables, CSV and charts are in `report::sweep::text` and
+//! `report::sweep::plot`.
 
 pub mod design;
 pub mod evaluate;
@@ -25,8 +25,10 @@ pub mod values;
 
 use thiserror::Error;
 
+use crate::param::Param;
+use crate::scene::{SceneError, SceneFile};
 pub use design::{DesignKind, DesignPoint, design_points};
-pub use evaluate::{Evaluation, Nominal, Outcome, evaluate, point_text};
+pub use evaluate::{Evaluation, Nominal, Outcome, evaluate, point_file};
 pub use field::{FieldError, FieldKind, SweptValue};
 pub use merge::{SweepMergeError, merge_sweeps};
 pub use run::{DesignReport, SweepError, SweepReport};
@@ -36,18 +38,18 @@ pub use values::{Levels, Set, ValuesError};
 /// a bad design point is reported in the output instead).
 #[derive(Debug, Error)]
 pub enum ExploreError {
-    #[error("--set {path}: {reason}")]
+    #[error("{}: {reason}", Param::Sets.with(path))]
     Field { path: String, reason: FieldError },
-    #[error("--set {path}={spec}: {reason}")]
+    #[error("{}: {reason}", Param::Sets.with(format!("{path}={spec}")))]
     Values {
         path: String,
         spec: String,
         reason: ValuesError,
     },
-    #[error("--set {arg}: expected FIELD=VALUES, e.g. preload.force=5,10,20")]
+    #[error("{}: expected FIELD=VALUES, e.g. preload.force=5,10,20", Param::Sets.with(arg))]
     SetSyntax { arg: String },
-    #[error("{file}: not a TOML document: {reason}")]
-    SceneToml { file: String, reason: String },
+    #[error(transparent)]
+    Scene(#[from] SceneError),
     #[error("{file}: a sweep needs the high-level form of a scene ([coupling] table)")]
     NotHighLevel { file: String },
     #[error("sweep design: {0}")]
@@ -61,27 +63,24 @@ pub struct SweepSpec {
     pub file: String,
     /// Its text as read (its hash enters the fingerprint).
     pub text: String,
-    /// Its TOML document (each design point sets fields in a copy).
-    pub base: toml::Table,
+    /// Its typed form (each design point sets fields in a copy).
+    pub base: SceneFile,
     pub sets: Vec<Set>,
     pub design: DesignKind,
 }
 
 impl SweepSpec {
-    /// Parse the base scene text and the `--set` arguments. The base scene
-    /// must be a high-level scene; whether it validates is checked by the
-    /// caller (it loads it like any scene).
+    /// Parse the base scene text and the swept fields (`FIELD=VALUES`
+    /// each). The base scene must be a high-level scene; whether it
+    /// validates is checked by the caller (it loads it like any scene).
     pub fn new(
         file: &str,
         text: &str,
         set_args: &[String],
         design: DesignKind,
     ) -> Result<Self, ExploreError> {
-        let base: toml::Table = toml::from_str(text).map_err(|e| ExploreError::SceneToml {
-            file: file.to_string(),
-            reason: e.message().trim().to_string(),
-        })?;
-        if !base.contains_key("coupling") {
+        let base = SceneFile::parse(text, file)?;
+        if base.coupling.is_none() {
             return Err(ExploreError::NotHighLevel {
                 file: file.to_string(),
             });

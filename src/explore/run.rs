@@ -5,7 +5,7 @@
 //! evaluation point exactly as a study's `points`, the nominal seating's
 //! stiffness, safety factor, friction limit and approach, and the Pareto
 //! mark. Shard merging: [`super::merge`]; table, CSV and charts:
-//! `report::sweep_text`, `report::sweep_plot`.
+//! `report::sweep::text`, `report::sweep::plot`.
 
 use std::collections::BTreeMap;
 
@@ -15,11 +15,12 @@ use thiserror::Error;
 
 use super::pareto::{Objectives, front};
 use super::{DesignKind, Evaluation, FieldKind, Outcome, SweepSpec, SweptValue};
-use super::{ExploreError, evaluate, point_text};
+use super::{ExploreError, evaluate, point_file};
 use crate::assembly::Coupling;
+use crate::param::Param;
+use crate::scene::Scene;
 use crate::study::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, fnv1a64, produced_by};
-use crate::study::runner::{StudyOptions, design_for};
-use crate::study::{PointStats, Sampler, Shard, VariantReport};
+use crate::study::{PointStats, Sampler, Shard, StudyError, StudyOptions, StudyPlan};
 
 /// One `--set` as given.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -115,8 +116,9 @@ pub struct SweepReport {
 pub enum SweepError {
     #[error(transparent)]
     Explore(#[from] ExploreError),
-    #[error("{0}")]
-    Setup(String),
+    /// The study of the base scene cannot be planned.
+    #[error(transparent)]
+    Study(#[from] StudyError),
     /// No design point of a whole sweep was evaluated: each is invalid,
     /// cannot seat or failed.
     #[error(
@@ -124,8 +126,8 @@ pub enum SweepError {
          invalid, cannot seat or failed)"
     )]
     NoValidDesign { file: String, points: usize },
-    /// `--pareto-point` names no evaluation point of the base scene.
-    #[error("{file}: --pareto-point {point}: no such evaluation point (the scene has {have})")]
+    /// `pareto_point` names no evaluation point of the base scene.
+    #[error("{file}: {}: no such evaluation point (the scene has {have})", Param::ParetoPoint.with(point))]
     ParetoPoint {
         file: String,
         point: String,
@@ -133,43 +135,50 @@ pub enum SweepError {
     },
 }
 
-/// Run this shard's design points of `spec` (rayon across designs and
-/// samples). The base scene must load (`base`); `pareto_point` names the
-/// evaluation point of the Pareto objective (None: the first).
+/// The plan of every design point's study: `options` for the base scene
+/// `scene` (assembled as `coupling`), the whole design (a sweep's shards
+/// split its design points, not a point's samples).
+pub fn study_plan(
+    scene: Scene,
+    coupling: Coupling,
+    options: &StudyOptions,
+) -> Result<StudyPlan, StudyError> {
+    let whole = StudyOptions {
+        shard: Shard::whole(),
+        ..options.clone()
+    };
+    StudyPlan::new(vec![(scene, coupling)], &whole)
+}
+
+/// Run shard `shard` of the design points of `spec` (rayon across designs
+/// and samples), each point's study the base scene's in `plan` (from
+/// [`study_plan`]); `pareto_point` names the evaluation point of the
+/// Pareto objective (None: the first).
 pub fn run(
     spec: &SweepSpec,
-    base: &Coupling,
-    opts: &StudyOptions,
+    plan: &StudyPlan,
+    shard: Shard,
     pareto_point: Option<&str>,
     tick: &(dyn Fn() + Sync),
 ) -> Result<SweepReport, SweepError> {
-    let setup = |e: String| SweepError::Setup(format!("{}: {e}", spec.file));
+    let base = &plan.variants[0];
     let points = spec.points()?;
-    let study_design = design_for(base, opts).map_err(|e| setup(e.to_string()))?;
-    let pareto_point = pareto_point_of(&spec.file, base, pareto_point)?;
-    let whole = StudyOptions {
-        shard: Shard::whole(),
-        ..*opts
-    };
-    let range = opts
-        .shard
+    let pareto_point = pareto_point_of(&spec.file, &base.scene, pareto_point)?;
+    let range = shard
         .range(points.len())
-        .map_err(|e| setup(format!("--shard: {e}")))?;
-    let texts = points[range]
-        .iter()
-        .map(|p| Ok((p, point_text(&spec.base, &spec.sets, &p.values)?)))
-        .collect::<Result<Vec<_>, ExploreError>>()?;
-    let designs: Vec<DesignReport> = texts
-        .into_par_iter()
-        .map(|(p, text)| {
-            let e = evaluate(&text, &spec.label(p), &whole, tick);
+        .map_err(|e| StudyError::from(e).at(Param::Shard))?;
+    let designs: Vec<DesignReport> = points[range]
+        .par_iter()
+        .map(|p| {
+            let file = point_file(&spec.base, &spec.sets, &p.values);
+            let e = evaluate(file, &spec.text, &spec.label(p), plan, base, tick);
             let values = spec
                 .sets
                 .iter()
                 .map(|s| s.path.clone())
                 .zip(p.values.iter().cloned())
                 .collect();
-            design_report(p.index, values, e, &whole)
+            design_report(p.index, values, e)
         })
         .collect();
     let sets: Vec<SetRecord> = spec
@@ -185,10 +194,10 @@ pub fn run(
         schema_version: SCHEMA_VERSION,
         kinrepro_version: VERSION.to_string(),
         document: "sweep".to_string(),
-        solver: opts.method.name().to_string(),
-        sampler: study_design.sampler,
-        seed: study_design.seed,
-        samples: study_design.n,
+        solver: plan.method().name().to_string(),
+        sampler: base.design.sampler,
+        seed: base.design.seed,
+        samples: base.design.n,
         vary: vec!["friction".to_string()],
         scene: spec.file.clone(),
         name: base.scene.name.clone(),
@@ -202,9 +211,9 @@ pub fn run(
             design: spec.design,
             design_points: points.len(),
             pareto_point,
-            study: Fingerprint::new(base, &whole, &study_design),
+            study: Fingerprint::new(&base.scene, &plan.settings, &base.design),
         },
-        shard: opts.shard,
+        shard,
         designs,
     };
     report.mark_pareto();
@@ -212,9 +221,8 @@ pub fn run(
 }
 
 /// The evaluation point of the Pareto objective: `asked`, or the first.
-fn pareto_point_of(file: &str, base: &Coupling, asked: Option<&str>) -> Result<String, SweepError> {
+fn pareto_point_of(file: &str, base: &Scene, asked: Option<&str>) -> Result<String, SweepError> {
     let names: Vec<&str> = base
-        .scene
         .evaluation_points
         .iter()
         .map(|p| p.name.as_str())
@@ -231,15 +239,10 @@ fn pareto_point_of(file: &str, base: &Coupling, asked: Option<&str>) -> Result<S
 }
 
 /// The report of one evaluated design point: the study statistics by the
-/// study's own machinery ([`VariantReport::new`]).
-fn design_report(
-    index: usize,
-    values: BTreeMap<String, SweptValue>,
-    e: Evaluation,
-    opts: &StudyOptions,
-) -> DesignReport {
+/// study's own machinery (its [`crate::study::VariantReport`]).
+fn design_report(index: usize, values: BTreeMap<String, SweptValue>, e: Evaluation) -> DesignReport {
     let n = e.nominal;
-    let mut d = DesignReport {
+    DesignReport {
         index,
         values,
         status: e.outcome.status(),
@@ -248,7 +251,7 @@ fn design_report(
             _ => None,
         },
         pareto: None,
-        points: Vec::new(),
+        points: e.report.map(|r| r.points).unwrap_or_default(),
         principal_stiffness_n_per_m: n.map(|n| n.translational_n_per_m),
         principal_rotational_stiffness_nm_per_rad: n.map(|n| n.rotational_nm_per_rad),
         min_pressure_safety_factor: n.and_then(|n| n.min_pressure_safety_factor),
@@ -256,17 +259,7 @@ fn design_report(
         friction_limit_margin: n.and_then(|n| n.friction_limit_margin),
         nominal_approach_m: n.map(|n| n.approach_m),
         max_contact_approach_m: n.map(|n| n.max_contact_approach_m),
-    };
-    if let (Outcome::Ok, Some(c), Some(run)) = (&e.outcome, &e.coupling, e.run) {
-        match VariantReport::new(c, run, opts) {
-            Ok(v) => match v.cannot_seat {
-                Some(r) => d.status = Outcome::CannotSeat(r).status(),
-                None => d.points = v.points,
-            },
-            Err(err) => d.status = Outcome::Failed(err.to_string()).status(),
-        }
     }
-    d
 }
 
 impl SweepReport {

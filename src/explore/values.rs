@@ -13,10 +13,10 @@
 
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
-use toml::Table;
 
 use super::ExploreError;
 use super::field::{FieldKind, SweptValue, kind_of};
+use crate::scene::SceneFile;
 
 /// The discrete values of a `--set` (a grid uses them all).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -109,8 +109,8 @@ pub struct Set {
 pub const MAX_LEVELS: usize = 10_000;
 
 impl Set {
-    /// Parse `FIELD=VALUES` against the base scene document.
-    pub fn parse(arg: &str, scene: &Table) -> Result<Set, ExploreError> {
+    /// Parse `FIELD=VALUES` against the base scene.
+    pub fn parse(arg: &str, scene: &SceneFile) -> Result<Set, ExploreError> {
         let (path, spec) = arg
             .split_once('=')
             .filter(|(p, s)| !p.trim().is_empty() && !s.trim().is_empty())

@@ -10,7 +10,8 @@ use super::{
 use crate::assembly::Coupling;
 use crate::contact::{ContactPair, ContactShape};
 use crate::solve::quasistatic::seat;
-use crate::solve::{SolveError, SolverOptions, nominal_mu};
+use crate::scene::Scene;
+use crate::solve::{Load, SolveError, SolverOptions};
 
 /// A distinct contact pair and the load to check it at.
 #[derive(Debug, Clone, PartialEq)]
@@ -49,25 +50,28 @@ pub struct PairValidation {
     pub convergence: Vec<ConvergenceRow>,
 }
 
-/// The distinct pairs of the couplings, with the largest load each reaches
-/// in the nominal quasi-static seating.
-pub fn distinct_pairs(couplings: &[Coupling]) -> Result<Vec<PairCase>, (String, SolveError)> {
+/// The distinct pairs of the scenes' couplings (each scene with its
+/// coupling), with the largest load each reaches in the nominal
+/// quasi-static seating.
+pub fn distinct_pairs(
+    models: &[(Scene, Coupling)],
+) -> Result<Vec<PairCase>, (String, SolveError)> {
     let mut out: Vec<PairCase> = Vec::new();
-    for c in couplings {
-        let s = seat(c, &nominal_mu(c), &SolverOptions::default())
-            .map_err(|e| (c.scene.file.clone(), e))?;
+    for (scene, c) in models {
+        let s = seat(c, &Load::nominal(scene), &SolverOptions::default())
+            .map_err(|e| (scene.file.clone(), e))?;
         for (k, r) in c.contacts.iter().zip(&s.contacts) {
             match out.iter_mut().find(|p| p.pair == k.pair) {
                 Some(p) => {
                     p.load = p.load.max(r.normal_force_n);
-                    if !p.scenes.contains(&c.scene.file) {
-                        p.scenes.push(c.scene.file.clone());
+                    if !p.scenes.contains(&scene.file) {
+                        p.scenes.push(scene.file.clone());
                     }
                 }
                 None => out.push(PairCase {
                     pair: k.pair.clone(),
                     load: r.normal_force_n,
-                    scenes: vec![c.scene.file.clone()],
+                    scenes: vec![scene.file.clone()],
                 }),
             }
         }

@@ -22,22 +22,25 @@ use serde::{Deserialize, Serialize};
 
 use crate::contact::{FrictionLaw, TangentialLaw};
 use crate::material::Material;
+use crate::param::{Param, ParamError};
 use error::ErrorContext;
 pub use error::SceneError;
 pub use file::{Arrangement, GrooveKind, SceneFile};
 pub use preload::{ForceLaw, Preload, PreloadForce};
 
 /// A moving ball (body frame = world frame in the touching pose).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Ball {
     pub centre: Vector3<f64>,
     pub radius: f64,
     pub material: Material,
-    /// Line in the scene file, for error messages.
+    /// Line in the scene file, for error messages (not part of the
+    /// coupling: left out of its serialisation, the fingerprint's).
+    #[serde(skip)]
     pub line: Option<usize>,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub enum SurfaceGeometry {
     /// Half-space below `point` with unit outward `normal` (towards the ball).
     Plane {
@@ -68,7 +71,7 @@ pub enum SurfaceGeometry {
 /// frame), e.g. one face of a canoe ball; or, with an `axis`, a pin of
 /// `radius` about the line through `centre` along the unit `axis` (crossed
 /// pins).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct MovingPatch {
     /// Centre of curvature (a point of the axis for a pin), body frame [m].
     pub centre: Vector3<f64>,
@@ -79,12 +82,14 @@ pub struct MovingPatch {
 }
 
 /// A fixed surface serving one moving ball: one contact.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Surface {
     pub geometry: SurfaceGeometry,
     pub material: Material,
     /// Index of the moving ball (0-based).
     pub ball: usize,
+    /// Line in the scene file, for error messages (not serialised).
+    #[serde(skip)]
     pub line: Option<usize>,
     /// Support compliance in series with the contact, normal direction [m/N].
     pub support_compliance: f64,
@@ -98,7 +103,7 @@ pub const DEFAULT_RAMP_TIME: f64 = 1.0;
 
 /// Friction settings: mu_s in mu0 +- spread (uniform), mu_d = ratio mu_s,
 /// and the law of the sliding coefficient (switch or decay).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct FrictionSettings {
     pub mu_static: f64,
     pub spread: f64,
@@ -107,45 +112,79 @@ pub struct FrictionSettings {
     pub law: FrictionLaw,
 }
 
-/// Study defaults of a scene.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct StudySettings {
+/// The study defaults of a scene (`[study]`).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct StudyDefaults {
     pub samples: usize,
-    pub sampler: SamplerChoice,
+    pub sampler: Sampler,
     pub seed: u64,
 }
 
-/// The sampler a scene asks for (`[study] sampler`), as plain data: the
-/// scene only checks the name; `study` turns it into its `Sampler` (the
-/// variants match one to one).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum SamplerChoice {
+/// Which design a study draws (`[study] sampler`, `--sampler`); the designs
+/// themselves are `study::sampling`'s. Serialised (and parsed by
+/// [`FromStr`](std::str::FromStr)) as `lhs`, `mc`, `corners`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Sampler {
+    /// Space-filling optimised Latin hypercube.
+    #[serde(rename = "lhs")]
     Lhs,
+    /// Plain Monte Carlo, independently computable per sample index.
+    #[serde(rename = "mc")]
     MonteCarlo,
+    /// All 2^d corners of the hypercube.
+    #[serde(rename = "corners")]
     Corners,
 }
 
-impl SamplerChoice {
-    /// The scene-file spelling, ASCII case-insensitive and trimmed.
+impl Sampler {
+    /// The name used in files and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Sampler::Lhs => "lhs",
+            Sampler::MonteCarlo => "mc",
+            Sampler::Corners => "corners",
+        }
+    }
+
+    /// The sampler named `name` (ASCII case-insensitive, trimmed).
     pub fn parse(name: &str) -> Option<Self> {
         match name.trim().to_ascii_lowercase().as_str() {
-            "lhs" => Some(SamplerChoice::Lhs),
-            "mc" => Some(SamplerChoice::MonteCarlo),
-            "corners" => Some(SamplerChoice::Corners),
+            "lhs" => Some(Sampler::Lhs),
+            "mc" => Some(Sampler::MonteCarlo),
+            "corners" => Some(Sampler::Corners),
             _ => None,
         }
     }
 }
 
+impl std::fmt::Display for Sampler {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl std::str::FromStr for Sampler {
+    type Err = ParamError;
+
+    fn from_str(s: &str) -> Result<Self, ParamError> {
+        Sampler::parse(s).ok_or_else(|| {
+            ParamError::new(
+                Param::Sampler,
+                format!("unknown sampler '{s}': expected lhs, mc or corners"),
+            )
+        })
+    }
+}
+
 /// A point of the moving half whose pose is reported.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct EvaluationPoint {
     pub name: String,
     pub position: Vector3<f64>,
 }
 
 /// Mass properties of the moving half given in the scene (`[dynamics]`).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct DynamicsSettings {
     /// Mass [kg].
     pub mass: f64,
@@ -155,8 +194,9 @@ pub struct DynamicsSettings {
     pub centre_of_mass: Vector3<f64>,
 }
 
-/// A validated scene in explicit form.
-#[derive(Debug, Clone, PartialEq)]
+/// A validated scene in explicit form. Its serialisation (serde_json) is
+/// the canonical form the study fingerprint hashes (`study::provenance`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Scene {
     /// The file it came from (for messages).
     pub file: String,
@@ -166,7 +206,7 @@ pub struct Scene {
     pub surfaces: Vec<Surface>,
     pub preload: Preload,
     pub friction: FrictionSettings,
-    pub study: StudySettings,
+    pub study: StudyDefaults,
     pub evaluation_points: Vec<EvaluationPoint>,
     /// Mass properties for the dynamic solver; `None`: the default model.
     pub dynamics: Option<DynamicsSettings>,
@@ -232,6 +272,16 @@ impl Scene {
         resolve::resolve(&explicit, &ctx)
     }
 
+    /// Validate a scene file's typed form, e.g. one whose fields a sweep
+    /// set ([`crate::explore::field`]): `source` is the text it was read
+    /// from (errors name its lines; a value set since has none), `file`
+    /// names it in errors.
+    pub fn from_file(raw: &SceneFile, file: &str, source: &str) -> Result<Scene, SceneError> {
+        let ctx = ErrorContext::new(file, source);
+        let explicit = expand::to_explicit(raw, &ctx)?;
+        resolve::resolve(&explicit, &ctx)
+    }
+
     /// The explicit TOML of a scene file (`kinrepro expand`).
     pub fn expand_text(source: &str, file: &str) -> Result<String, SceneError> {
         let ctx = ErrorContext::new(file, source);
@@ -249,6 +299,14 @@ impl Scene {
             "# Explicit form of {file}, written by `kinrepro expand`.\n\
              # Lengths in m, forces in N, moduli in Pa; contacts in the order of --mu.\n\n{body}"
         ))
+    }
+}
+
+impl SceneFile {
+    /// The typed form of scene text, not yet validated; `file` names it in
+    /// errors.
+    pub fn parse(source: &str, file: &str) -> Result<SceneFile, SceneError> {
+        parse_file(source, &ErrorContext::new(file, source))
     }
 }
 

@@ -3,12 +3,13 @@
 //! (docs/scenes.md, `[preload]`).
 
 use nalgebra::Vector3;
+use serde::Serialize;
 
 /// Standard gravity [m/s^2] (CGPM 1901), along -z for `[preload] gravity`.
 pub const STANDARD_GRAVITY: f64 = 9.80665;
 
 /// How a preload force follows the motion of the moving half.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub enum ForceLaw {
     /// Constant magnitude and direction (the load factor scales it).
     Constant,
@@ -28,7 +29,7 @@ pub enum ForceLaw {
 }
 
 /// One force of the preload.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct PreloadForce {
     /// Magnitude at full load in the touching pose [N].
     pub force: f64,
@@ -76,7 +77,7 @@ impl PreloadForce {
 }
 
 /// The preload: its forces (at least one) and the duration of the ramp.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Preload {
     /// The forces, in the order of `[[preload.forces]]` (or the single
     /// `force`), the weight last.

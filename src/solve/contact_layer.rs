@@ -227,7 +227,7 @@ pub fn evaluate_into(
     let law = &contact.law;
     let (principal, kt, dkt) =
         law.increment_stiffness(a_eff, dlog, &g.normal, &major_axis, tangent);
-    let tangential_law = coupling.scene.friction.tangential_law;
+    let tangential_law = coupling.friction.tangential;
     let (contact_radius, mindlin_shape) =
         law.mindlin_deresiewicz_inputs(tangential_law, fn_, &g.normal, &major_axis);
     let input = TangentialInput {

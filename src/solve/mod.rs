@@ -7,6 +7,7 @@
 
 pub mod contact_layer;
 pub mod dynamic;
+pub mod load;
 pub mod preload_forces;
 pub mod quasistatic;
 
@@ -17,13 +18,14 @@ use thiserror::Error;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::stress::{LeftOut, contact_stress};
 use crate::contact::{Friction, SlipState};
-use crate::scene::resolve::MU_MAX;
+use crate::param::{Param, ParamError};
 use contact_layer::ContactEval;
+pub use load::{Load, frictions_into, nominal_mu};
 
-/// The accepted numbers of nominal load increments (`--increments`).
+/// The accepted numbers of nominal load increments (`increments`).
 pub const INCREMENTS: std::ops::RangeInclusive<usize> = 1..=100_000;
 
-/// The accepted load-path tolerances (`--path-tolerance`): below about
+/// The accepted load-path tolerances (`path_tolerance`): below about
 /// 1e-8 the Newton residual tolerance, not the path, bounds the pose.
 pub const PATH_TOLERANCES: std::ops::RangeInclusive<f64> = 1e-9..=1e-2;
 
@@ -33,7 +35,7 @@ pub const PATH_TOLERANCES: std::ops::RangeInclusive<f64> = 1e-9..=1e-2;
 pub const DEFAULT_PATH_TOLERANCE: f64 = 1e-5;
 
 /// Settings of the quasi-static solver.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct SolverOptions {
     /// Nominal number of load increments (uniform in F^(2/3), i.e. in
     /// approach) of a fixed-step seating; a load path's increments.
@@ -78,11 +80,15 @@ impl Default for SolverOptions {
 /// A seating that did not end in a valid seated pose.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SolveError {
-    #[error("--mu needs {expected} values (one per contact, in contact order), got {got}")]
+    #[error(
+        "{} needs {expected} values (one per contact, in contact order), got {got}",
+        Param::Mu
+    )]
     MuCount { expected: usize, got: usize },
     #[error(
         "the static friction coefficient of contact {index} = {value} is outside [0, {max}] \
-         (the value given by --mu, or drawn from the scene's mu_static +- spread)"
+         (the value given by {}, or drawn from the scene's mu_static +- spread)",
+        Param::Mu
     )]
     MuRange { index: usize, value: f64, max: f64 },
     #[error(
@@ -234,24 +240,12 @@ impl ContactResult {
     }
 }
 
+/// A seating with its per-contact report.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Seating {
-    /// Final pose of the moving half.
-    pub pose: BodyPose,
+    /// The pose-level result.
+    pub seated: SeatedPose,
     pub contacts: Vec<ContactResult>,
-    /// Accepted load increments and Newton iterations in all.
-    pub increments: usize,
-    pub newton_iterations: usize,
-    /// Which path of the solver produced it.
-    pub path: SeatingPath,
-    /// The decay law's c v_slip in the dynamic solver (`contact::friction::
-    /// TRANSITION`): of the contacts that slid, the value deepest inside the
-    /// transition; `None` for the switch law, no slip or the quasi-static solver.
-    pub decay_cv: Option<f64>,
-    /// Estimated discretisation error of `pose` relative to the seating's
-    /// motion (`quasistatic::control`); `None` where not estimated (fixed
-    /// increments, the dynamic solver).
-    pub path_error: Option<f64>,
 }
 
 /// The pose-level result of a seating, without the per-contact report:
@@ -266,25 +260,20 @@ pub struct SeatedPose {
     pub newton_iterations: usize,
     /// Which path of the solver produced it.
     pub path: SeatingPath,
-    /// The decay law's c v_slip in the dynamic solver (`contact::friction::
-    /// TRANSITION`): of the contacts that slid, the value deepest inside the
-    /// transition; `None` for the switch law, no slip or the quasi-static solver.
+    /// The decay law's c v_slip (`contact::friction::TRANSITION`): of the
+    /// contacts that slid, the value deepest inside the transition; `None`
+    /// for the switch law or no slip.
     pub decay_cv: Option<f64>,
-    /// As [`Seating::path_error`].
+    /// Estimated discretisation error of `pose` relative to the seating's
+    /// motion (`quasistatic::control`); `None` where not estimated (fixed
+    /// increments, the dynamic solver).
     pub path_error: Option<f64>,
 }
 
 impl Seating {
-    /// The pose-level part of this result.
-    pub fn seated_pose(&self) -> SeatedPose {
-        SeatedPose {
-            pose: self.pose,
-            increments: self.increments,
-            newton_iterations: self.newton_iterations,
-            path: self.path,
-            decay_cv: self.decay_cv,
-            path_error: self.path_error,
-        }
+    /// Final pose of the moving half.
+    pub fn pose(&self) -> BodyPose {
+        self.seated.pose
     }
 }
 
@@ -326,53 +315,38 @@ impl PointPose {
     }
 }
 
-/// Static coefficients -> per-contact friction (mu_d = ratio mu_s, the
-/// scene's friction law), checked. The solver sets each increment's duration.
-pub fn frictions(coupling: &Coupling, mu_s: &[f64]) -> Result<Vec<Friction>, SolveError> {
-    let mut out = Vec::with_capacity(mu_s.len());
-    frictions_into(coupling, mu_s, &mut out)?;
-    Ok(out)
+/// The seating solver (`solver`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Solver {
+    /// Quasi-static path following (Newton per load increment).
+    #[default]
+    #[value(alias = "quasistatic", alias = "quasi_static")]
+    QuasiStatic,
+    /// Seating dynamics with rapier3d-f64 and the compliant contact layer.
+    Dynamic,
 }
 
-/// [`frictions`] into `out` (cleared first; no allocation once it has the
-/// capacity).
-pub fn frictions_into(
-    coupling: &Coupling,
-    mu_s: &[f64],
-    out: &mut Vec<Friction>,
-) -> Result<(), SolveError> {
-    if mu_s.len() != coupling.contacts.len() {
-        return Err(SolveError::MuCount {
-            expected: coupling.contacts.len(),
-            got: mu_s.len(),
-        });
+impl std::str::FromStr for Solver {
+    type Err = ParamError;
+
+    /// `quasi-static` (or `quasistatic`, `quasi_static`), `dynamic`.
+    fn from_str(s: &str) -> Result<Self, ParamError> {
+        <Solver as clap::ValueEnum>::from_str(s, false).map_err(|_| {
+            ParamError::new(
+                Param::Solver,
+                format!(
+                    "{}: unknown, need quasi-static or dynamic",
+                    Param::Solver.with(s)
+                ),
+            )
+        })
     }
-    let ratio = coupling.scene.friction.dynamic_ratio;
-    let law = coupling.scene.friction.law;
-    out.clear();
-    for (i, &m) in mu_s.iter().enumerate() {
-        if !(0.0..=MU_MAX).contains(&m) {
-            return Err(SolveError::MuRange {
-                index: i + 1,
-                value: m,
-                max: MU_MAX,
-            });
-        }
-        out.push(Friction {
-            law,
-            ..Friction::switch(m, ratio * m)
-        });
-    }
-    Ok(())
 }
 
-/// The nominal static coefficients of a scene (mu0 at every contact).
-pub fn nominal_mu(coupling: &Coupling) -> Vec<f64> {
-    vec![coupling.scene.friction.mu_static; coupling.contacts.len()]
-}
-
-/// Which solver seats the coupling, with its settings.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// Which solver seats the coupling, with its settings (serialised as
+/// `{"quasi-static": {...}}`, the fingerprint's `solver_settings`).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Method {
     /// Quasi-static path following (the default).
     QuasiStatic(SolverOptions),
@@ -387,6 +361,49 @@ impl Default for Method {
 }
 
 impl Method {
+    /// The seating method of `solver`. Quasi-static: `increments` N fixed
+    /// load increments ([`SolverOptions::fixed`], not error-controlled), or
+    /// else load-path error control to `path_tolerance` (None:
+    /// [`SolverOptions::default`]'s); the two exclude each other. Dynamic:
+    /// its time step comes from the contact frequencies, so increments and
+    /// a path tolerance are refused there.
+    pub fn new(
+        solver: Solver,
+        increments: Option<usize>,
+        path_tolerance: Option<f64>,
+    ) -> Result<Method, ParamError> {
+        let (inc, tol) = (Param::Increments, Param::PathTolerance);
+        let fail = |p: Param, m: String| Err(ParamError::new(p, m));
+        match (solver, increments, path_tolerance) {
+            (Solver::Dynamic, Some(n), _) => fail(inc, format!(
+                "{}: has no effect with {} (load increments belong to the quasi-static solver; the dynamic one steps in time)",
+                inc.with(n), Param::Solver.with("dynamic")
+            )),
+            (Solver::Dynamic, None, Some(t)) => fail(tol, format!(
+                "{}: has no effect with {} (the load path belongs to the quasi-static solver; the dynamic one steps in time)",
+                tol.with(t), Param::Solver.with("dynamic")
+            )),
+            (Solver::Dynamic, None, None) => Ok(Method::Dynamic(Default::default())),
+            (Solver::QuasiStatic, Some(n), Some(t)) => fail(inc, format!(
+                "{} and {} exclude each other: fixed load increments are not error-controlled (give one)",
+                inc.with(n), tol.with(t)
+            )),
+            (Solver::QuasiStatic, Some(n), None) if !INCREMENTS.contains(&n) => fail(inc, format!(
+                "{}: out of range, need {}..={} load increments",
+                inc.with(n), INCREMENTS.start(), INCREMENTS.end()
+            )),
+            (Solver::QuasiStatic, Some(n), None) => Ok(Method::QuasiStatic(SolverOptions::fixed(n))),
+            (Solver::QuasiStatic, None, Some(t)) if !PATH_TOLERANCES.contains(&t) => fail(tol, format!(
+                "{}: out of range, need {:e}..={:e} (the estimated error of the seated pose relative to the seating's motion)",
+                tol.with(t), PATH_TOLERANCES.start(), PATH_TOLERANCES.end()
+            )),
+            (Solver::QuasiStatic, None, t) => Ok(Method::QuasiStatic(SolverOptions {
+                path_tolerance: t.or(SolverOptions::default().path_tolerance),
+                ..Default::default()
+            })),
+        }
+    }
+
     /// The solver's name, as on the command line.
     pub fn name(&self) -> &'static str {
         match self {
@@ -395,24 +412,12 @@ impl Method {
         }
     }
 
-    /// Seat with static coefficients `mu_s`; `start` is where the dynamic
-    /// solver starts (the quasi-static solver always starts touching).
-    pub fn seat(
-        &self,
-        coupling: &Coupling,
-        mu_s: &[f64],
-        start: &dynamic::StartPose,
-    ) -> Result<Seating, SolveError> {
+    /// Seat the coupling under `load` (the dynamic solver starts at
+    /// `load.start`, the quasi-static one from the touching pose).
+    pub fn seat(&self, coupling: &Coupling, load: &Load) -> Result<Seating, SolveError> {
         match self {
-            Method::QuasiStatic(o) => quasistatic::seat(coupling, mu_s, o),
-            Method::Dynamic(o) => dynamic::seat(
-                coupling,
-                mu_s,
-                &dynamic::DynamicOptions {
-                    start: *start,
-                    ..*o
-                },
-            ),
+            Method::QuasiStatic(o) => quasistatic::seat(coupling, load, o),
+            Method::Dynamic(o) => dynamic::seat(coupling, load, o),
         }
     }
 }

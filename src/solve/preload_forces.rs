@@ -17,6 +17,7 @@
 use nalgebra::{Matrix3, Vector3};
 
 use crate::assembly::{BodyPose, Coupling};
+use crate::scene::Preload;
 
 /// One preload force at a pose.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -29,14 +30,15 @@ pub struct Applied {
     pub stiffness: Option<Matrix3<f64>>,
 }
 
-/// Every preload force of `coupling` at `pose` and load factor `lambda`,
-/// in scene order (module docs).
+/// Every force of `preload` on `coupling`'s moving half at `pose` and load
+/// factor `lambda`, in scene order (module docs).
 pub fn applied<'a>(
     coupling: &'a Coupling,
+    preload: &'a Preload,
     pose: &'a BodyPose,
     lambda: f64,
 ) -> impl Iterator<Item = Applied> + 'a {
-    coupling.scene.preload.forces.iter().map(move |f| {
+    preload.forces.iter().map(move |f| {
         let point = pose.apply(&f.point);
         let k = f.stiffness();
         if k > 0.0 {

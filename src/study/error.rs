@@ -1,10 +1,73 @@
-//! Error type of the study module: every bad input is reported, nothing panics.
+//! The error of the study module: designing, planning, running and
+//! summarising a study (every bad input is reported, nothing panics).
 
 use thiserror::Error;
 
-/// Everything that can go wrong while designing, summarising, merging or plotting a study.
+use crate::assembly::AssemblyError;
+use crate::param::{Param, ParamError};
+use crate::solve::SolveError;
+
+/// Everything that can go wrong while planning, running or summarising a
+/// study; an error about one scene of it carries the scene file
+/// ([`StudyError::In`]).
 #[derive(Debug, Error)]
 pub enum StudyError {
+    /// A parameter out of range, or parameters that do not go together.
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    /// `source` about a bound of parameter `param`.
+    #[error("{param}: {source}")]
+    At {
+        param: Param,
+        #[source]
+        source: Box<StudyError>,
+    },
+    /// `source` about the scene read from `file`.
+    #[error("{file}: {source}")]
+    In {
+        file: String,
+        #[source]
+        source: Box<StudyError>,
+    },
+    /// A stop was asked for ([`crate::cancel`]).
+    #[error("interrupted")]
+    Cancelled,
+    #[error(
+        "sample {index}: the coupling perturbed by the drawn tolerances does not assemble: \
+         {source}"
+    )]
+    Perturbed {
+        index: usize,
+        #[source]
+        source: AssemblyError,
+    },
+    #[error(
+        "the nominal seating (the reference of every sample; mu_s = {mu:?}, touching start) failed: {source}"
+    )]
+    Nominal {
+        mu: Vec<f64>,
+        #[source]
+        source: SolveError,
+    },
+    #[error(
+        "the seating at mu_s = {mu:?} (touching start) that tells whether friction moves the \
+         pose failed: {source}"
+    )]
+    FrictionProbe {
+        mu: Vec<f64>,
+        #[source]
+        source: SolveError,
+    },
+    #[error("sample {index} (mu_s = {mu:?}): {source}")]
+    Seating {
+        index: usize,
+        mu: Vec<f64>,
+        #[source]
+        source: SolveError,
+    },
+    /// The sink of a streamed study's records failed (e.g. its CSV file).
+    #[error(transparent)]
+    Sink(Box<dyn std::error::Error + Send + Sync>),
     /// A run size above its bound (`study::bounds`).
     #[error("{what} = {count} is above the bound of {max} (docs/output.md, Bounds)")]
     AboveBound {
@@ -44,8 +107,6 @@ pub enum StudyError {
     /// A `--shard` argument could not be parsed.
     #[error("cannot parse shard '{0}': expected INDEX/COUNT, e.g. 3/8")]
     ShardParse(String),
-    #[error("unknown sampler '{0}': expected lhs, mc or corners")]
-    UnknownSampler(String),
     /// Statistics need at least two samples.
     #[error("statistics need at least 2 samples, got {n}")]
     TooFewSamples { n: usize },
@@ -76,11 +137,29 @@ pub enum StudyError {
     /// Stored inputs differ from the regenerated design.
     #[error("sample {0}: stored inputs differ from the regenerated design")]
     InputsMismatch(usize),
-    #[error("nothing to plot: {0}")]
-    NothingToPlot(String),
-    /// Error reported by the plotting backend.
-    #[error("plotting failed: {0}")]
-    Plot(String),
+}
+
+impl StudyError {
+    /// This error about the scene read from `file`.
+    pub fn in_file(self, file: &str) -> Self {
+        StudyError::In {
+            file: file.to_string(),
+            source: Box::new(self),
+        }
+    }
+
+    /// This error about a bound of parameter `param`.
+    pub fn at(self, param: Param) -> Self {
+        StudyError::At {
+            param,
+            source: Box::new(self),
+        }
+    }
+
+    /// The error of a record sink.
+    pub fn sink(e: impl std::error::Error + Send + Sync + 'static) -> Self {
+        StudyError::Sink(Box::new(e))
+    }
 }
 
 pub type Result<T> = std::result::Result<T, StudyError>;

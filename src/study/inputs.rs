@@ -5,6 +5,7 @@
 use nalgebra::{UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
 
+use crate::param::{Param, ParamError};
 use crate::assembly::{AssemblyError, Coupling};
 use crate::dof::Dof;
 use crate::scene::{Scene, SurfaceGeometry};
@@ -33,29 +34,20 @@ pub enum Input {
     GroovePosition(usize, usize),
 }
 
-/// What an input varies (the `--vary` kinds).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum InputKind {
-    Friction,
-    Preload,
-    Start,
-    /// A manufacturing tolerance (interchangeability input).
-    Tolerance,
-}
-
 impl Input {
-    pub fn kind(&self) -> InputKind {
+    /// What this input varies.
+    pub fn kind(&self) -> Varied {
         match self {
-            Input::Mu(_) => InputKind::Friction,
-            Input::PreloadOffset(..) | Input::PreloadTilt(..) => InputKind::Preload,
-            Input::Start(_) => InputKind::Start,
-            _ => InputKind::Tolerance,
+            Input::Mu(_) => Varied::Friction,
+            Input::PreloadOffset(..) | Input::PreloadTilt(..) => Varied::Preload,
+            Input::Start(_) => Varied::Start,
+            _ => Varied::Tolerances,
         }
     }
 
     /// True for the manufacturing tolerances (interchangeability inputs).
     pub fn is_tolerance(&self) -> bool {
-        self.kind() == InputKind::Tolerance
+        self.kind() == Varied::Tolerances
     }
 
     /// The column name (SI unit as suffix), e.g. `mu_1`, `ball_2_x_m`.
@@ -133,6 +125,47 @@ impl<'de> Deserialize<'de> for Input {
     }
 }
 
+/// What varies from sample to sample (`vary`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, clap::ValueEnum)]
+pub enum Varied {
+    /// The six static friction coefficients.
+    Friction,
+    /// The preload point and direction (scene [variation] bounds).
+    Preload,
+    /// The start pose of the moving half (dynamic solver).
+    Start,
+    /// Manufacturing tolerances (scene [variation] bounds): interchangeability.
+    Tolerances,
+}
+
+impl Varied {
+    /// The name as in `vary` and in the study document.
+    pub fn name(self) -> &'static str {
+        match self {
+            Varied::Friction => "friction",
+            Varied::Preload => "preload",
+            Varied::Start => "start",
+            Varied::Tolerances => "tolerances",
+        }
+    }
+}
+
+impl std::str::FromStr for Varied {
+    type Err = ParamError;
+
+    fn from_str(s: &str) -> Result<Self, ParamError> {
+        <Varied as clap::ValueEnum>::from_str(s, false).map_err(|_| {
+            ParamError::new(
+                Param::Vary,
+                format!(
+                    "{}: unknown, need any of friction, preload, start, tolerances",
+                    Param::Vary.with(s)
+                ),
+            )
+        })
+    }
+}
+
 /// Manufacturing errors of one sample: each value drawn within the
 /// scene's `[variation]` bounds.
 #[derive(Debug, Clone, PartialEq)]
@@ -151,8 +184,8 @@ pub struct Tolerances {
 
 impl Tolerances {
     /// No error anywhere.
-    pub fn zero(coupling: &Coupling) -> Self {
-        let (b, s) = (coupling.balls.len(), coupling.contacts.len());
+    pub fn zero(scene: &Scene) -> Self {
+        let (b, s) = (scene.balls.len(), scene.surfaces.len());
         Tolerances {
             ball_diameter: vec![0.0; b],
             ball_position: vec![Vector3::zeros(); b],
@@ -172,8 +205,8 @@ impl Tolerances {
     /// groove's x, y error. Ball k's centre moves by its position error and
     /// its radius grows by half its diameter error; a moving patch (canoe
     /// face) of ball k moves and grows with it.
-    pub fn apply(&self, coupling: &Coupling) -> Scene {
-        let mut scene = coupling.scene.clone();
+    pub fn apply(&self, scene: &Scene, coupling: &Coupling) -> Scene {
+        let mut scene = scene.clone();
         for (k, b) in scene.balls.iter_mut().enumerate() {
             b.centre += self.ball_position[k];
             b.radius += 0.5 * self.ball_diameter[k];
@@ -242,8 +275,9 @@ impl Tolerances {
                 + r * amax(&self.surface_tilt))
     }
 
-    /// The perturbed coupling (touching pose solved for the perturbed geometry).
-    pub fn coupling(&self, coupling: &Coupling) -> Result<Coupling, AssemblyError> {
-        Coupling::new_perturbed(&self.apply(coupling), self.max_gap(coupling))
+    /// The perturbed coupling of `scene` assembled as `coupling` (touching
+    /// pose solved for the perturbed geometry).
+    pub fn coupling(&self, scene: &Scene, coupling: &Coupling) -> Result<Coupling, AssemblyError> {
+        Coupling::new_perturbed(&self.apply(scene, coupling), self.max_gap(coupling))
     }
 }

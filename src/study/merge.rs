@@ -29,6 +29,17 @@ pub enum MergeError {
         found: usize,
         expected: usize,
     },
+    #[error(
+        "{file}: its study fingerprint is of version {found} ({first} has version {expected}): \
+         parts written by kinrepro releases with different fingerprints do not merge (re-run \
+         the shards with one version)"
+    )]
+    FingerprintVersion {
+        file: String,
+        first: String,
+        found: u32,
+        expected: u32,
+    },
     #[error("{file}: not a part of the study of {first}: {scene}: {field} differs")]
     Fingerprint {
         file: String,
@@ -118,6 +129,15 @@ fn check_same_study(
     }
     for (a, b) in first.variants.iter().zip(&p.variants) {
         let fa: &Fingerprint = &a.fingerprint;
+        let (expected, found) = (fa.fingerprint_version, b.fingerprint.fingerprint_version);
+        if found != expected {
+            return Err(MergeError::FingerprintVersion {
+                file: file.to_string(),
+                first: first_file.to_string(),
+                found,
+                expected,
+            });
+        }
         if let Some(field) = fa.first_difference(&b.fingerprint) {
             return Err(MergeError::Fingerprint {
                 file: file.to_string(),

@@ -2,10 +2,11 @@
 //! sample, the study document with its statistics (the numbers every output renders) and
 //! merging of sharded runs; `report` renders them (text, CSV, SVG, HTML).
 //!
-//! * [`document`]: a study of several scenes into one [`StudyReport`] (plan and run);
-//!   [`runner`]: one scene's seatings; [`stream`]: large Monte Carlo studies in bounded memory.
-//! * [`request`]: a study's options as the CLI and the Python package receive them, checked
-//!   into [`runner::StudyOptions`] in one place.
+//! * [`options`]: a study's options as the CLI and the Python package give them
+//!   ([`StudyOptions`]), checked in one place into the [`options::Settings`] of a run;
+//!   [`plan`]: the [`StudyPlan`], every scene's coupling, design and shard of samples, checked
+//!   and bounded once; [`document`]: a plan run into one [`StudyReport`]; [`runner`]: one
+//!   scene's seatings; [`stream`]: large Monte Carlo studies in bounded memory.
 //! * [`result`], [`record`]: the document's types ([`StudyReport`], [`VariantReport`],
 //!   [`PointStats`], [`StudyRecord`]); [`summary`]: their statistics; [`merge`]: shard parts
 //!   into one document; [`provenance`]: schema version and the fingerprint of a study.
@@ -48,13 +49,13 @@ pub mod document;
 pub mod error;
 pub mod inputs;
 pub mod merge;
+pub mod options;
 pub mod paths;
+pub mod plan;
 pub mod provenance;
 pub mod record;
-pub mod request;
 pub mod result;
 mod rng;
-pub mod run_error;
 pub mod runner;
 pub mod sampling;
 pub mod sensitivity;
@@ -62,12 +63,15 @@ pub mod stats;
 pub mod stream;
 pub mod summary;
 pub mod validate;
+pub mod variant;
 pub mod variation;
 pub mod verdict;
 
-pub use document::StudyPlan;
 pub use error::{Result, StudyError};
+pub use options::{StudyOptions, Varied};
+pub use plan::StudyPlan;
+pub use variant::Variant;
 pub use record::{Dofs, PointStats, StudyRecord};
-pub use result::{StudyReport, StudyRunError, VariantReport};
+pub use result::{StudyReport, VariantReport};
 pub use sampling::shard::{Shard, shard_range};
 pub use sampling::{DesignSpec, Sampler, design, sample_range};

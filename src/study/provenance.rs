@@ -7,14 +7,29 @@
 //! settings, the design (sampler, seed, sample count), the varied inputs and
 //! kinrepro's version. Two parts belong to one study exactly when their
 //! fingerprints are equal.
+//!
+//! Hashes and settings are of canonical serialisations, never of Rust's
+//! `Debug` text (which a compiler release may change): [`content_hash`] is
+//! FNV-1a 64 of the value's serde_json text (fields in declaration order,
+//! floats as the shortest decimal that reads back to the same f64, the
+//! scene file's line numbers left out). [`FINGERPRINT_VERSION`] names this
+//! scheme; a document from before it has none (version 1: `Debug` text).
 
 use serde::{Deserialize, Serialize};
 
 use super::DesignSpec;
+use super::options::Settings;
 use super::inputs::Input;
-use super::runner::StudyOptions;
-use crate::assembly::Coupling;
-use crate::scene::{ForceLaw, PreloadForce};
+use crate::scene::{ForceLaw, PreloadForce, Scene};
+
+/// The fingerprint's scheme: 2, canonical serialisations hashed by
+/// FNV-1a 64 ([`content_hash`]); 1 (documents without the field), the
+/// `Debug` text of kinrepro before it.
+pub const FINGERPRINT_VERSION: u32 = 2;
+
+fn version_one() -> u32 {
+    1
+}
 
 /// Version of the output schema (docs/output.md). 2: the clocking about z evaluated, JSON
 /// records with `inputs_si` and `design_u`, provenance and fingerprint.
@@ -26,13 +41,17 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 /// The settings one study's numbers depend on.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Fingerprint {
+    /// The scheme of this fingerprint ([`FINGERPRINT_VERSION`]).
+    #[serde(default = "version_one")]
+    pub fingerprint_version: u32,
     pub kinrepro_version: String,
-    /// FNV-1a 64 hash (hex) of the resolved scene, file path excluded and the
-    /// `[study]` defaults replaced by the design actually run.
+    /// [`content_hash`] (hex) of the resolved scene, file path excluded and
+    /// the `[study]` defaults replaced by the design actually run.
     pub scene_content: String,
     pub scene_name: String,
     pub solver: String,
-    /// The solver's settings (increments, tolerances, ...), as text.
+    /// The solver's settings (increments, tolerances, ...) as canonical
+    /// JSON text.
     pub solver_settings: String,
     pub sampler: String,
     pub seed: u64,
@@ -64,36 +83,39 @@ pub struct Fingerprint {
 }
 
 impl Fingerprint {
-    /// The fingerprint of one scene's study run with `opts` on `design`.
-    pub fn new(coupling: &Coupling, opts: &StudyOptions, design: &DesignSpec) -> Self {
-        let s = &coupling.scene;
-        let mut resolved = s.clone();
+    /// The fingerprint's `scene_content` of `scene` run on `design`:
+    /// [`content_hash`] of the resolved scene, file path excluded and the
+    /// `[study]` defaults replaced by the design.
+    pub fn scene_content(scene: &Scene, design: &DesignSpec) -> String {
+        let mut resolved = scene.clone();
         resolved.file = String::new();
-        resolved.study.sampler = design.sampler.into();
+        resolved.study.sampler = design.sampler;
         resolved.study.samples = design.n;
         resolved.study.seed = design.seed;
-        let p = &s.preload;
+        content_hash(&resolved)
+    }
+
+    /// The fingerprint of one scene's study run with `s` on `design`.
+    pub fn new(scene: &Scene, s: &Settings, design: &DesignSpec) -> Self {
+        let p = &scene.preload;
+        let f = &scene.friction;
         Fingerprint {
+            fingerprint_version: FINGERPRINT_VERSION,
             kinrepro_version: VERSION.to_string(),
-            scene_content: format!("{:016x}", fnv1a64(format!("{resolved:?}").as_bytes())),
-            scene_name: s.name.clone(),
-            solver: opts.method.name().to_string(),
-            solver_settings: format!("{:?}", opts.method),
+            scene_content: Fingerprint::scene_content(scene, design),
+            scene_name: scene.name.clone(),
+            solver: s.method.name().to_string(),
+            solver_settings: canonical_text(&s.method),
             sampler: design.sampler.to_string(),
             seed: design.seed,
             samples: design.n,
             replicates: design.replicates,
-            vary: opts
-                .variation
-                .inputs(coupling)
-                .iter()
-                .map(Input::name)
-                .collect(),
-            mu_static: s.friction.mu_static,
-            spread: s.friction.spread,
-            dynamic_ratio: s.friction.dynamic_ratio,
-            tangential_law: format!("{:?}", s.friction.tangential_law),
-            friction_law: format!("{:?}", s.friction.law),
+            vary: s.variation.inputs(scene).iter().map(Input::name).collect(),
+            mu_static: f.mu_static,
+            spread: f.spread,
+            dynamic_ratio: f.dynamic_ratio,
+            tangential_law: f.tangential_law.name().to_string(),
+            friction_law: canonical_text(&f.law),
             preload_n: match p.forces.as_slice() {
                 [one] => one.force,
                 _ => p.resultant().norm(),
@@ -104,10 +126,7 @@ impl Fingerprint {
                 true => Vec::new(),
                 false => p.forces.iter().map(PreloadForceRecord::new).collect(),
             },
-            start_bounds: opts
-                .variation
-                .start
-                .map(|b| [b.offset.into(), b.tilt.into()]),
+            start_bounds: s.variation.start.map(|b| [b.offset.into(), b.tilt.into()]),
         }
     }
 
@@ -123,8 +142,9 @@ impl Fingerprint {
     /// Every field by name, as `first_difference` compares and prints them:
     /// the named settings before the scene content, so that a changed
     /// friction coefficient is named as such.
-    fn settings(&self) -> [(&'static str, String); 20] {
+    fn settings(&self) -> [(&'static str, String); 21] {
         [
+            ("fingerprint_version", d(&self.fingerprint_version)),
             ("kinrepro_version", q(&self.kinrepro_version)),
             ("solver", q(&self.solver)),
             ("solver_settings", q(&self.solver_settings)),
@@ -190,17 +210,50 @@ fn q(s: &str) -> String {
     format!("\"{s}\"")
 }
 
-fn d<T: std::fmt::Debug>(v: &T) -> String {
-    format!("{v:?}")
+fn d<T: Serialize>(v: &T) -> String {
+    canonical_text(v)
+}
+
+/// The canonical serialisation of `value`: serde_json's compact text.
+pub fn canonical_text<T: Serialize>(value: &T) -> String {
+    serde_json::to_string(value).expect("the fingerprint's values serialise to JSON")
+}
+
+/// FNV-1a 64 (hex) of [`canonical_text`] of `value`, hashed as it is
+/// written (a stable content hash: neither `Debug` text nor std's hasher,
+/// which may change between Rust releases).
+pub fn content_hash<T: Serialize>(value: &T) -> String {
+    let mut h = Fnv1a64(FNV_OFFSET);
+    serde_json::to_writer(&mut h, value).expect("the fingerprint's values serialise to JSON");
+    format!("{:016x}", h.0)
+}
+
+const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
+const FNV_PRIME: u64 = 0x0100_0000_01b3;
+
+/// FNV-1a 64 as an `io::Write` that hashes the bytes written to it.
+struct Fnv1a64(u64);
+
+impl std::io::Write for Fnv1a64 {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.0 = buf
+            .iter()
+            .fold(self.0, |h, &b| (h ^ u64::from(b)).wrapping_mul(FNV_PRIME));
+        Ok(buf.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
 }
 
 /// FNV-1a, 64 bit (Fowler, Noll, Vo; offset basis 0xcbf29ce484222325,
 /// prime 0x100000001b3): a stable content hash (std's hasher may change
 /// between Rust releases).
 pub fn fnv1a64(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
-    })
+    bytes
+        .iter()
+        .fold(FNV_OFFSET, |h, &b| (h ^ u64::from(b)).wrapping_mul(FNV_PRIME))
 }
 
 /// One line naming what produced an output: version, schema, solver,

@@ -5,9 +5,9 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::variant::Variant;
 use super::runner::Variation;
 use super::stats::SampleRecord;
-use crate::assembly::Coupling;
 
 pub use crate::dof::Dofs;
 
@@ -30,12 +30,12 @@ pub struct StudyRecord {
 }
 
 impl StudyRecord {
-    /// The record of a seated sample, with the physical values its design
-    /// row maps to under `variation`.
-    pub fn new(coupling: &Coupling, variation: &Variation, r: SampleRecord) -> Self {
+    /// The record of a seated sample of `v`, with the physical values its
+    /// design row maps to under `variation`.
+    pub fn new(v: &Variant, variation: &Variation, r: SampleRecord) -> Self {
         StudyRecord {
             index: r.index,
-            physical: variation.sample(coupling, &r.inputs).physical,
+            physical: variation.sample(&v.scene, &v.coupling, &r.inputs).physical,
             inputs: r.inputs,
             outputs: r.outputs,
         }

@@ -1,58 +1,22 @@
 //! The study document (`kinrepro study --format json`, docs/output.md): one
 //! [`VariantReport`] per scene (SI records, nm/nrad statistics) in a
-//! [`StudyReport`], and the error of running one. The records and
+//! [`StudyReport`]. The records and
 //! statistics are in [`super::record`], their summarising in
 //! [`super::summary`], streamed studies in [`super::stream`], shard merging
 //! in [`super::merge`]; `report` renders the document.
 
 use serde::{Deserialize, Serialize};
-use thiserror::Error;
 
-use super::inputs::{Input, InputKind};
+use super::inputs::Input;
+use super::options::{Settings, Varied};
+use super::variant::Variant;
 use super::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, produced_by};
 use super::record::{PointStats, StudyRecord};
-use super::runner::{RunError, StartBounds, StudyOptions, VariantRun, Variation};
+use super::runner::{StartBounds, VariantRun, Variation};
 use super::sensitivity::SensitivityBlock;
 use super::{DesignSpec, Sampler, Shard, StudyError};
-use crate::assembly::Coupling;
 use crate::contact::FrictionLaw;
 use crate::scene::{DEFAULT_RAMP_TIME, VariationBounds};
-
-/// A study of one or several scenes could not be run.
-#[derive(Debug, Error)]
-pub enum StudyRunError {
-    #[error(transparent)]
-    Run(#[from] RunError),
-    /// The design or the statistics of one scene (`context`: its file), or
-    /// an option (`context`: its name).
-    #[error("{context}: {source}")]
-    Study {
-        context: String,
-        #[source]
-        source: StudyError,
-    },
-    /// Options that do not go together with the plan (`--sensitivity` on
-    /// a streamed study).
-    #[error(transparent)]
-    Option(#[from] super::request::OptionError),
-    /// The sink of a streamed study's records failed (e.g. its CSV file).
-    #[error(transparent)]
-    Sink(Box<dyn std::error::Error + Send + Sync>),
-}
-
-impl StudyRunError {
-    /// `source` with where it happened (a scene file, an option).
-    pub(crate) fn at(context: &str) -> impl FnOnce(StudyError) -> Self + '_ {
-        move |source| StudyRunError::Study {
-            context: context.to_string(),
-            source,
-        }
-    }
-
-    pub(crate) fn sink(e: impl std::error::Error + Send + Sync + 'static) -> Self {
-        StudyRunError::Sink(Box::new(e))
-    }
-}
 
 /// One scene's study.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -155,52 +119,51 @@ pub struct StudyReport {
     pub variants: Vec<VariantReport>,
 }
 
-/// The `--vary` names of what a variation varies.
+/// The names of what a variation varies ([`Varied::name`]), in the order
+/// friction, preload, start, tolerances.
 pub fn varied_kinds(var: &Variation) -> Vec<&'static str> {
     [
-        (var.friction, "friction"),
-        (var.preload, "preload"),
-        (var.start.is_some(), "start"),
-        (var.tolerances, "tolerances"),
+        (var.friction, Varied::Friction),
+        (var.preload, Varied::Preload),
+        (var.start.is_some(), Varied::Start),
+        (var.tolerances, Varied::Tolerances),
     ]
     .into_iter()
-    .filter_map(|(on, kind)| on.then_some(kind))
+    .filter_map(|(on, kind)| on.then_some(kind.name()))
     .collect()
 }
 
 impl VariantReport {
-    /// Build from a run; statistics only when the run holds every sample.
-    pub fn new(
-        coupling: &Coupling,
-        run: VariantRun,
-        opts: &StudyOptions,
-    ) -> Result<Self, StudyError> {
-        let mut v = Self::unfinished(coupling, run, opts);
-        if !v.partial {
-            v.finish()?;
+    /// Build from a run of `v`; statistics only when the run holds every
+    /// sample.
+    pub fn new(s: &Settings, v: &Variant, run: VariantRun) -> Result<Self, StudyError> {
+        let mut r = Self::unfinished(s, v, run);
+        if !r.partial {
+            r.finish()?;
         }
-        Ok(v)
+        Ok(r)
     }
 
-    /// The report of a run without its statistics (a streamed study sets
-    /// them with [`VariantReport::set_moment_stats`]).
-    pub fn unfinished(coupling: &Coupling, run: VariantRun, opts: &StudyOptions) -> Self {
-        let f = &coupling.scene.friction;
-        let var = &opts.variation;
+    /// The report of a run of `v` without its statistics (a streamed study
+    /// sets them with [`VariantReport::set_moment_stats`]).
+    pub fn unfinished(s: &Settings, v: &Variant, run: VariantRun) -> Self {
+        let scene = &v.scene;
+        let f = &scene.friction;
+        let var = &s.variation;
         let records = run
             .records
             .into_iter()
-            .map(|r| StudyRecord::new(coupling, var, r))
+            .map(|r| StudyRecord::new(v, var, r))
             .collect();
         VariantReport {
-            fingerprint: Fingerprint::new(coupling, opts, &run.design),
+            fingerprint: Fingerprint::new(scene, s, &run.design),
             streamed: false,
             cannot_seat: run.cannot_seat,
             seating_paths: None,
             unconverged: None,
             load_path: None,
-            scene: coupling.scene.file.clone(),
-            name: coupling.scene.name.clone(),
+            scene: scene.file.clone(),
+            name: scene.name.clone(),
             samples: run.design.n,
             sampler: run.design.sampler,
             seed: run.design.seed,
@@ -208,17 +171,17 @@ impl VariantReport {
             spread: f.spread,
             dynamic_ratio: f.dynamic_ratio,
             friction_law: f.law,
-            ramp_time_s: coupling.scene.preload.ramp_time,
-            solver: opts.method.name().to_string(),
-            inputs: var.inputs(coupling),
+            ramp_time_s: scene.preload.ramp_time,
+            solver: s.method.name().to_string(),
+            inputs: var.inputs(scene),
             start_bounds: var.start.map(|b| [b.offset.into(), b.tilt.into()]),
-            variation_bounds: (var.preload || var.tolerances).then_some(coupling.scene.variation),
+            variation_bounds: (var.preload || var.tolerances).then_some(scene.variation),
             seating_failures: None,
             seating_failure_share: None,
             partial: run.shard.count > 1,
             points: Vec::new(),
             interchangeability: Vec::new(),
-            sensitivity: opts.sensitivity.then(Vec::new),
+            sensitivity: s.sensitivity.then(Vec::new),
             design: run.design,
             shard: run.shard,
             output_names: run.output_names,
@@ -226,16 +189,16 @@ impl VariantReport {
         }
     }
 
-    fn varies(&self, kind: InputKind) -> bool {
+    fn varies(&self, kind: Varied) -> bool {
         self.inputs.iter().any(|i| i.kind() == kind)
     }
 
     /// The variation this study used (to map design rows to inputs).
     pub fn variation(&self) -> Variation {
         Variation {
-            friction: self.varies(InputKind::Friction),
-            preload: self.varies(InputKind::Preload),
-            tolerances: self.varies(InputKind::Tolerance),
+            friction: self.varies(Varied::Friction),
+            preload: self.varies(Varied::Preload),
+            tolerances: self.varies(Varied::Tolerances),
             start: self.start_bounds.map(|[o, t]| StartBounds {
                 offset: o.into(),
                 tilt: t.into(),

@@ -25,82 +25,13 @@ pub mod lhs;
 pub mod monte_carlo;
 pub mod shard;
 
-use std::fmt;
 use std::ops::Range;
-use std::str::FromStr;
 
 use serde::{Deserialize, Serialize};
 
 use super::error::{Result, StudyError};
 use super::rng::{DOMAIN_REPLICATE, splitmix64};
-use crate::scene::SamplerChoice;
-
-/// Which design to draw. Serialised (and parsed by [`FromStr`]) as `lhs`, `mc`, `corners`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
-pub enum Sampler {
-    /// Space-filling optimised Latin hypercube.
-    #[serde(rename = "lhs")]
-    Lhs,
-    /// Plain Monte Carlo, independently computable per sample index.
-    #[serde(rename = "mc")]
-    MonteCarlo,
-    /// All 2^d corners of the hypercube.
-    #[serde(rename = "corners")]
-    Corners,
-}
-
-impl Sampler {
-    /// The name used in files and on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            Sampler::Lhs => "lhs",
-            Sampler::MonteCarlo => "mc",
-            Sampler::Corners => "corners",
-        }
-    }
-}
-
-impl fmt::Display for Sampler {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for Sampler {
-    type Err = StudyError;
-
-    /// Accepts `lhs`, `mc`, `corners` (ASCII case-insensitive).
-    fn from_str(s: &str) -> Result<Self> {
-        match s.trim().to_ascii_lowercase().as_str() {
-            "lhs" => Ok(Sampler::Lhs),
-            "mc" => Ok(Sampler::MonteCarlo),
-            "corners" => Ok(Sampler::Corners),
-            _ => Err(StudyError::UnknownSampler(s.to_owned())),
-        }
-    }
-}
-
-/// A scene's sampler setting, interpreted.
-impl From<SamplerChoice> for Sampler {
-    fn from(c: SamplerChoice) -> Self {
-        match c {
-            SamplerChoice::Lhs => Sampler::Lhs,
-            SamplerChoice::MonteCarlo => Sampler::MonteCarlo,
-            SamplerChoice::Corners => Sampler::Corners,
-        }
-    }
-}
-
-/// The scene setting that asks for this sampler.
-impl From<Sampler> for SamplerChoice {
-    fn from(s: Sampler) -> Self {
-        match s {
-            Sampler::Lhs => SamplerChoice::Lhs,
-            Sampler::MonteCarlo => SamplerChoice::MonteCarlo,
-            Sampler::Corners => SamplerChoice::Corners,
-        }
-    }
-}
+pub use crate::scene::Sampler;
 
 /// Everything a design depends on. Shard files carry it to be validated on merge.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]

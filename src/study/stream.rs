@@ -10,15 +10,13 @@
 //! interval of sigma is Bonett's (2006) from the moments
 //! (`study::stats::summarize_moments`), valid for independent samples.
 
+use super::options::Settings;
+use super::variant::Variant;
 use super::record::StudyRecord;
-use super::result::{StudyRunError, VariantReport};
-use super::runner::{
-    PathTally, Progress, RunError, StudyOptions, VariantRun, design_for, recorded_output_names,
-    run_chunked,
-};
+use super::result::VariantReport;
+use super::runner::{PathTally, Progress, VariantRun, recorded_output_names, run_chunked};
 use super::stats::{Moments, SampleRecord};
 use super::{DesignSpec, Sampler, StudyError};
-use crate::assembly::Coupling;
 
 /// Monte Carlo studies of more samples than this are summarised from
 /// streaming moments and keep no records in memory.
@@ -97,54 +95,37 @@ pub trait RecordSink {
 /// seated; `None`: records are dropped). Returns the report with its
 /// statistics and the sink, still to be completed by the caller.
 pub fn run_streamed<S: RecordSink>(
-    coupling: &Coupling,
-    opts: &StudyOptions,
+    s: &Settings,
+    v: &Variant,
     tick: &(dyn Fn() + Sync),
     open: impl FnOnce(&VariantReport) -> Result<Option<S>, S::Error>,
-) -> Result<(VariantReport, Option<S>), StudyRunError> {
-    let file = &coupling.scene.file;
-    let names = recorded_output_names(coupling, &opts.variation);
+) -> Result<(VariantReport, Option<S>), StudyError> {
+    let in_file = |e: StudyError| e.in_file(v.file());
+    let names = recorded_output_names(&v.scene, &s.variation);
     let shell = VariantRun {
-        design: design_for(coupling, opts).map_err(StudyRunError::at(file))?,
-        shard: opts.shard,
+        design: v.design,
+        shard: s.shard,
         output_names: names.clone(),
         records: Vec::new(),
-        cannot_seat: super::verdict::cannot_seat(coupling, &opts.method)?,
+        cannot_seat: super::verdict::cannot_seat(&v.scene, &v.coupling, &s.method)?,
     };
-    let mut v = VariantReport::unfinished(coupling, shell, opts);
-    let mut sink = open(&v).map_err(StudyRunError::sink)?;
+    let mut r = VariantReport::unfinished(s, v, shell);
+    let mut sink = open(&r).map_err(StudyError::sink)?;
     let mut st = StreamStats::new(names.len());
-    let mut failure = None;
     let tally = PathTally::default();
-    let run = run_chunked(
-        coupling,
-        opts,
-        CHUNK,
-        Progress::with_tally(tick, &tally),
-        &mut |records| {
-            let pushed = st.push(&records, &names).map_err(StudyRunError::at(file));
-            let step = pushed.and_then(|()| match sink.as_mut() {
-                Some(s) => records.into_iter().try_for_each(|r| {
-                    s.push(&StudyRecord::new(coupling, &opts.variation, r))
-                        .map_err(StudyRunError::sink)
-                }),
-                None => Ok(()),
-            });
-            step.map_err(|e| {
-                failure = Some(e);
-                RunError::Options {
-                    file: file.clone(),
-                    reason: "stopped".into(),
-                }
-            })
-        },
-    );
-    if let Err(e) = run {
-        return Err(failure.take().unwrap_or(e.into()));
-    }
-    v.seating_paths = Some(tally.counts());
-    v.unconverged = tally.unconverged();
-    v.load_path = tally.load_path();
-    v.set_moment_stats(&st).map_err(StudyRunError::at(file))?;
-    Ok((v, sink))
+    run_chunked(s, v, CHUNK, Progress::with_tally(tick, &tally), &mut |records| {
+        st.push(&records, &names).map_err(in_file)?;
+        match sink.as_mut() {
+            Some(k) => records.into_iter().try_for_each(|rec| {
+                k.push(&StudyRecord::new(v, &s.variation, rec))
+                    .map_err(StudyError::sink)
+            }),
+            None => Ok(()),
+        }
+    })?;
+    r.seating_paths = Some(tally.counts());
+    r.unconverged = tally.unconverged();
+    r.load_path = tally.load_path();
+    r.set_moment_stats(&st).map_err(in_file)?;
+    Ok((r, sink))
 }

@@ -6,9 +6,9 @@ use nalgebra::{UnitQuaternion, Vector3};
 
 use super::inputs::{Input, Tolerances};
 use crate::assembly::Coupling;
-use crate::scene::{Preload, VariationBounds};
+use crate::scene::{Scene, VariationBounds};
 use crate::solve::dynamic::StartPose;
-use crate::solve::nominal_mu;
+use crate::solve::{Load, nominal_mu};
 
 /// Bounds of a randomly drawn start pose of the moving half (dynamic solver).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -49,12 +49,8 @@ impl Default for Variation {
 /// Everything one design row sets.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Sample {
-    /// Static coefficients, one per contact.
-    pub mu: Vec<f64>,
-    /// Start pose (dynamic solver).
-    pub start: StartPose,
-    /// Preload of this cycle.
-    pub preload: Preload,
+    /// The load of this cycle's seating: static coefficients, preload, start.
+    pub load: Load,
     /// Manufacturing errors (when tolerances vary).
     pub tolerances: Option<Tolerances>,
     /// Each design column in SI units (mu, m, rad), in row order.
@@ -65,15 +61,15 @@ impl Variation {
     /// The design columns, in row order: friction, preload, start,
     /// tolerances. Preload and tolerance columns appear only for non-zero
     /// bounds of the scene's `[variation]` table.
-    pub fn inputs(&self, coupling: &Coupling) -> Vec<Input> {
-        let b = &coupling.scene.variation;
+    pub fn inputs(&self, scene: &Scene) -> Vec<Input> {
+        let b = &scene.variation;
         let mut v = Vec::new();
         if self.friction {
-            v.extend((0..coupling.contacts.len()).map(Input::Mu));
+            v.extend((0..scene.surfaces.len()).map(Input::Mu));
         }
         if self.preload {
             // Each force but the weight, force by force: its offsets, then its tilts.
-            let forces = coupling.scene.preload.forces.iter().enumerate();
+            let forces = scene.preload.forces.iter().enumerate();
             for (f, _) in forces.filter(|(_, f)| f.varies()) {
                 let offsets = (0..2).filter(|&a| b.preload_offset_m[a] > 0.0);
                 v.extend(offsets.map(|a| Input::PreloadOffset(f, a)));
@@ -86,8 +82,8 @@ impl Variation {
             v.extend((0..6).map(Input::Start));
         }
         if self.tolerances {
-            let balls = coupling.balls.len();
-            let surfaces = coupling.contacts.len();
+            let balls = scene.balls.len();
+            let surfaces = scene.surfaces.len();
             if b.ball_diameter_m > 0.0 {
                 v.extend((0..balls).map(Input::BallDiameter));
             }
@@ -123,19 +119,20 @@ impl Variation {
         self.friction || self.preload || self.start.is_some()
     }
 
-    /// Everything one design row sets. Each column u in [0, 1] maps to
-    /// b (2u - 1), uniform in +-b (mu: mu0 + spread (2u - 1)); the start
-    /// pose as described in the module documentation.
-    pub fn sample(&self, coupling: &Coupling, row: &[f64]) -> Sample {
-        let inputs = self.inputs(coupling);
-        let b = coupling.scene.variation;
-        let f = &coupling.scene.friction;
-        let mut preload = coupling.scene.preload.clone();
-        let mut mu = nominal_mu(coupling);
+    /// Everything one design row sets for the scene `scene` assembled as
+    /// `coupling`. Each column u in [0, 1] maps to b (2u - 1), uniform in
+    /// +-b (mu: mu0 + spread (2u - 1)); the start pose as described in the
+    /// module documentation of `study::runner`.
+    pub fn sample(&self, scene: &Scene, coupling: &Coupling, row: &[f64]) -> Sample {
+        let inputs = self.inputs(scene);
+        let b = scene.variation;
+        let f = &scene.friction;
+        let mut preload = scene.preload.clone();
+        let mut mu = nominal_mu(scene);
         let mut start_u = [0.5; 6];
         let mut offset = vec![Vector3::zeros(); preload.forces.len()];
         let mut tilt = offset.clone();
-        let mut tol = self.tolerances.then(|| Tolerances::zero(coupling));
+        let mut tol = self.tolerances.then(|| Tolerances::zero(scene));
         let mut physical = Vec::with_capacity(inputs.len());
         for (input, &u) in inputs.iter().zip(row) {
             let c = 2.0 * u - 1.0;
@@ -174,9 +171,7 @@ impl Variation {
             f.direction = UnitQuaternion::from_scaled_axis(tilt) * f.direction;
         }
         Sample {
-            mu,
-            start,
-            preload,
+            load: Load { mu, preload, start },
             tolerances: tol,
             physical,
         }

@@ -15,17 +15,22 @@
 //! A frictionless coupling (mu_s = 0, no spread) always slides into its
 //! one equilibrium: it seats, and its zero scatter is the true answer.
 
-use super::run_error::RunError;
+use super::StudyError;
 use crate::assembly::Coupling;
-use crate::solve::dynamic::StartPose;
-use crate::solve::{Method, PointPose};
+use crate::scene::Scene;
+use crate::solve::{Load, Method, PointPose};
 
-/// Why `coupling` cannot seat (one line, without the scene file), or
-/// `None` if it seats; an error only if a probe seating fails. The probe
-/// seats with `method`'s options if it is quasi-static, else with the
-/// default quasi-static solver.
-pub fn cannot_seat(coupling: &Coupling, method: &Method) -> Result<Option<String>, RunError> {
-    let f = &coupling.scene.friction;
+/// Why `scene`, assembled as `coupling`, cannot seat (one line, without
+/// the scene file), or `None` if it seats; an error only if a probe
+/// seating fails. The probe seats under the scene's preload with
+/// `method`'s options if it is quasi-static, else with the default
+/// quasi-static solver.
+pub fn cannot_seat(
+    scene: &Scene,
+    coupling: &Coupling,
+    method: &Method,
+) -> Result<Option<String>, StudyError> {
+    let f = &scene.friction;
     if f.mu_static == 0.0 && f.spread == 0.0 {
         return Ok(None);
     }
@@ -39,19 +44,20 @@ pub fn cannot_seat(coupling: &Coupling, method: &Method) -> Result<Option<String
         Method::QuasiStatic(_) => *method,
         _ => Method::default(),
     };
+    let nominal = Load::nominal(scene);
     let mut poses = Vec::new();
     for mu in [(f.mu_static - d).max(0.0), f.mu_static + d] {
-        let m = vec![mu; n];
-        let s = method
-            .seat(coupling, &m, &StartPose::touching())
-            .map_err(|source| RunError::FrictionProbe {
-                file: coupling.scene.file.clone(),
-                mu: m,
+        let load = nominal.with_mu(&vec![mu; n]);
+        let s = method.seat(coupling, &load).map_err(|source| {
+            StudyError::FrictionProbe {
+                mu: load.mu.clone(),
                 source,
-            })?;
-        poses.push(s.pose);
+            }
+            .in_file(&scene.file)
+        })?;
+        poses.push(s.pose());
     }
-    let p = &coupling.scene.evaluation_points[0].position;
+    let p = &scene.evaluation_points[0].position;
     let moves = PointPose::between(&poses[0], &poses[1], p)
         .components()
         .iter()

@@ -88,7 +88,7 @@ fn a_calibration_file_is_checked_like_a_scene() {
 
 #[test]
 fn a_reference_csv_refuses_duplicates_and_absurd_values_with_its_line() {
-    use kinrepro::report::html::reference::parse_reference;
+    use kinrepro::report::study::reference::parse_reference;
     let head = "label,scene,point,x_nm,y_nm,z_nm,phi_x_nrad,phi_y_nrad,phi_z_nrad\n";
     let row = "paper,01_maxwell_vgroove_steel,centre,1,2,3,4,5,\n";
     assert_eq!(
@@ -114,7 +114,7 @@ fn a_reference_csv_refuses_duplicates_and_absurd_values_with_its_line() {
 #[test]
 fn a_byte_order_mark_is_accepted_in_every_csv_kinrepro_reads() {
     use kinrepro::calibrate::measurement::Measurement;
-    use kinrepro::report::html::reference::parse_reference;
+    use kinrepro::report::study::reference::parse_reference;
     let bom = '\u{feff}';
     let m = "x_nm,y_nm\n1,2\n3,5\n4,1\n";
     assert_eq!(

@@ -389,7 +389,7 @@ fn the_conformity_report_states_its_limits_and_ratios() {
         conformity_at_limit: Some(0.33),
         warning_ratio: Some(1.004),
     };
-    let text = kinrepro::report::validate_hertz::conformity_table(&[st]);
+    let text = kinrepro::report::contact::validate_hertz::conformity_table(&[st]);
     for needle in [
         "not where the half-space assumption",
         "R_g/r = 1.000250",

@@ -6,8 +6,8 @@
 use crate::common;
 
 use kinrepro::dof::Dof;
-use kinrepro::report::html::charts::study_charts;
-use kinrepro::report::plot::{
+use kinrepro::report::study::charts::study_charts;
+use kinrepro::report::study::plot::{
     ConvergenceSeries, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
     xy_scatter_svg,
 };

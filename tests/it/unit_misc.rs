@@ -112,7 +112,7 @@ mod contact_layer {
 }
 
 mod sweep_text {
-    use kinrepro::report::sweep_text::short;
+    use kinrepro::report::sweep::text::short;
 
     #[test]
     fn short_numbers() {
@@ -169,7 +169,7 @@ mod html {
 /// label nor a marker (radius 4 px).
 #[test]
 fn pareto_labels_are_placed_apart_and_inside() {
-    use kinrepro::report::sweep_pareto::place_labels;
+    use kinrepro::report::sweep::pareto::place_labels;
     let bounds = [0.0, 0.0, 400.0, 300.0];
     let mut points: Vec<(f64, f64)> = (0..12)
         .map(|i| (200.0 + 3.0 * (i % 4) as f64, 150.0 + 3.0 * (i / 4) as f64))

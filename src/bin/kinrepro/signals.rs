@@ -5,13 +5,13 @@
 //! stopped after [`GRACE`], as is any run at a second signal, but never in
 //! the middle of [`commit`]: a folder of outputs is renamed whole or not at
 //! all. That exit does not unwind: it deletes the registered temporaries
-//! ([`kinrepro::report::temporaries`]) first.
+//! ([`kinrepro::output::temporaries`]) first.
 
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicI32, Ordering};
 use std::time::Duration;
 
-use kinrepro::report::atomic::{AtomicFile, commit_all};
+use kinrepro::output::atomic::{AtomicFile, commit_all};
 use signal_hook::consts::{SIGINT, SIGTERM};
 use signal_hook::iterator::Signals;
 
@@ -52,7 +52,7 @@ pub fn install() -> Result<(), CliError> {
 /// temporaries no destructor will delete.
 fn stop(sig: i32) -> ! {
     let _hold = COMMITTING.lock();
-    kinrepro::report::temporaries::remove_all();
+    kinrepro::output::temporaries::remove_all();
     eprintln!("kinrepro: {}: stopped", name(sig));
     std::process::exit(128 + sig)
 }

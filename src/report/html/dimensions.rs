@@ -7,7 +7,7 @@ use nalgebra::Vector3;
 
 use super::svg::{FIXED, Shape};
 use crate::assembly::Coupling;
-use crate::report::sweep_text::short;
+use crate::report::sweep::text::short;
 
 type P = (f64, f64);
 

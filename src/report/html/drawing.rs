@@ -25,8 +25,8 @@ use nalgebra::Vector3;
 use super::dimensions::{ball_circle, ball_diameter, groove_angle};
 use super::svg::{Shape, bounds, svg};
 use crate::assembly::Coupling;
-use crate::report::preload::force_text;
-use crate::scene::{Preload, SurfaceGeometry};
+use crate::report::coupling::preload::force_text;
+use crate::scene::{Preload, Scene, SurfaceGeometry};
 use crate::solve::{ContactResult, Seating};
 
 use super::svg::{BALL, CONTACT, FIXED, FORCE, NORMAL, PRELOAD};
@@ -59,7 +59,7 @@ impl Proj {
     /// product of its two contact normals, when horizontal), where the V
     /// shows its true opening; else along e_r. With the caption.
     fn side(c: &Coupling, s: &Seating, b: usize) -> (Self, &'static str) {
-        let centre = s.pose.apply(&c.balls[b].centre);
+        let centre = s.pose().apply(&c.balls[b].centre);
         if let [i, j] = contacts_of(c, b)[..] {
             let (i, j) = (&s.contacts[i], &s.contacts[j]);
             let g = Vector3::from(i.normal).cross(&Vector3::from(j.normal));
@@ -82,7 +82,7 @@ fn force_vector(k: &ContactResult) -> Vector3<f64> {
 }
 
 /// The layout and the close-ups of every ball, with the legend.
-pub fn coupling_views(id: &str, c: &Coupling, s: &Seating) -> String {
+pub fn coupling_views(id: &str, (scene, c): (&Scene, &Coupling), s: &Seating) -> String {
     let r = c.balls.iter().map(|b| b.radius).fold(0.0, f64::max);
     let fmax = s
         .contacts
@@ -95,7 +95,7 @@ pub fn coupling_views(id: &str, c: &Coupling, s: &Seating) -> String {
     let layout = svg(
         &format!("{id}-layout"),
         640.0,
-        &layout_shapes(c, s),
+        &layout_shapes(scene, c, s),
         None,
         None,
     );
@@ -145,7 +145,7 @@ pub fn coupling_views(id: &str, c: &Coupling, s: &Seating) -> String {
     let _ = writeln!(
         out,
         "<p class=\"note\">Nominal seating (nominal μ, quasi-static). <span style=\"color:{BALL}\">Blue</span>: moving balls; <span style=\"color:{FIXED}\">grey</span>: fixed elements; <span style=\"color:{CONTACT}\">red dots</span>: contact points, numbered in the order of --mu; <span style=\"color:{NORMAL}\">green</span>: contact normals (unit length, not to scale); <span style=\"color:{FORCE}\">orange</span>: seated contact force on the moving half, N n + T, to the force bar's scale (largest {fmax:.3} N); <span style=\"color:{PRELOAD}\">pink</span>: {}.</p>",
-        preload_note(&c.scene.preload)
+        preload_note(&scene.preload)
     );
     out
 }
@@ -170,13 +170,13 @@ fn preload_note(p: &Preload) -> String {
     }
 }
 
-fn layout_shapes(c: &Coupling, s: &Seating) -> Vec<Shape> {
+fn layout_shapes(scene: &Scene, c: &Coupling, s: &Seating) -> Vec<Shape> {
     let proj = Proj::top();
     let p = |v: &Vector3<f64>| proj.p(v);
     let r = c.balls.iter().map(|b| b.radius).fold(0.0, f64::max);
     let mut out = ball_circle(c);
     out.extend((c.contacts.iter()).flat_map(|k| fixed_element(proj, &k.surface, r)));
-    let centres: Vec<Vector3<f64>> = c.balls.iter().map(|b| s.pose.apply(&b.centre)).collect();
+    let centres: Vec<Vector3<f64>> = c.balls.iter().map(|b| s.pose().apply(&b.centre)).collect();
     for (i, (b, centre)) in c.balls.iter().zip(&centres).enumerate() {
         out.push(Shape::Circle {
             c: p(centre),
@@ -197,7 +197,7 @@ fn layout_shapes(c: &Coupling, s: &Seating) -> Vec<Shape> {
             colour: CONTACT,
         });
     }
-    let forces = &c.scene.preload.forces;
+    let forces = &scene.preload.forces;
     for (i, f) in forces.iter().enumerate() {
         let pl = p(&f.point);
         out.push(Shape::Dot {
@@ -213,8 +213,8 @@ fn layout_shapes(c: &Coupling, s: &Seating) -> Vec<Shape> {
             colour: PRELOAD,
         });
     }
-    for e in &c.scene.evaluation_points {
-        let q = p(&s.pose.apply(&e.position));
+    for e in &scene.evaluation_points {
+        let q = p(&s.pose().apply(&e.position));
         let d = 0.35 * r;
         out.push(Shape::Line {
             a: (q.0 - d, q.1 - d),
@@ -229,7 +229,7 @@ fn layout_shapes(c: &Coupling, s: &Seating) -> Vec<Shape> {
             colour: "#000",
         });
         // A point at a ball is labelled inside the coupling, others below.
-        let at = s.pose.apply(&e.position);
+        let at = s.pose().apply(&e.position);
         let near = centres.iter().any(|b| (b - at).xy().norm() < 1.5 * r);
         out.push(Shape::Text {
             at: match near {
@@ -268,7 +268,7 @@ fn side_dimensions(c: &Coupling, s: &Seating, b: usize, proj: Proj) -> Vec<Shape
         return Vec::new();
     }
     let r = c.balls[b].radius;
-    let mut out = ball_diameter(proj.p(&s.pose.apply(&c.balls[b].centre)), r);
+    let mut out = ball_diameter(proj.p(&s.pose().apply(&c.balls[b].centre)), r);
     if let [i, j] = mine[..] {
         let (ki, kj) = (&s.contacts[i], &s.contacts[j]);
         let n = [Vector3::from(ki.normal), Vector3::from(kj.normal)];
@@ -295,14 +295,14 @@ fn ball_shapes(c: &Coupling, s: &Seating, b: usize, proj: Proj, scale: f64) -> V
         .collect();
     if pins.is_empty() {
         out.push(Shape::Circle {
-            c: p(&s.pose.apply(&ball.centre)),
+            c: p(&s.pose().apply(&ball.centre)),
             r,
             stroke: BALL,
             fill: "#cfe6f5",
         });
     }
     for (k, axis) in pins {
-        let (at, d) = (s.pose.apply(&k.centre), s.pose.rotation * axis);
+        let (at, d) = (s.pose().apply(&k.centre), s.pose().rotation * axis);
         out.push(match rod_ends(proj, &at, &d, 1.6 * r, k.radius) {
             None => Shape::Circle {
                 c: p(&at),

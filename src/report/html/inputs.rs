@@ -17,13 +17,13 @@ use super::prediction::PredictionInput;
 use crate::assembly::Coupling;
 use crate::scene::Scene;
 use crate::study::StudyReport;
-use crate::study::provenance::{Fingerprint, SCHEMA_VERSION};
-use crate::study::runner::StudyOptions;
+use crate::study::provenance::{FINGERPRINT_VERSION, Fingerprint, SCHEMA_VERSION};
 
-/// One scene of a study: its file text and its coupling.
+/// One scene of a study: its file text, the scene and its coupling.
 #[derive(Debug, Clone)]
 pub struct SceneInput {
     pub text: String,
+    pub scene: Scene,
     pub coupling: Coupling,
 }
 
@@ -38,14 +38,17 @@ pub struct StudyInput {
     pub prediction: PredictionInput,
 }
 
-/// The scene of an assembled coupling, its text read from `coupling.scene.file`.
-pub fn scene_input(coupling: Coupling) -> Result<SceneInput, HtmlError> {
-    let file = coupling.scene.file.clone();
-    let text = crate::input::read_to_string(&file).map_err(|e| HtmlError::Input {
-        file,
+/// The input of a scene and its coupling, its text read from `scene.file`.
+pub fn scene_input(scene: Scene, coupling: Coupling) -> Result<SceneInput, HtmlError> {
+    let text = crate::input::read_to_string(&scene.file).map_err(|e| HtmlError::Input {
+        file: scene.file.clone(),
         reason: format!("cannot read the scene file: {e}"),
     })?;
-    Ok(SceneInput { text, coupling })
+    Ok(SceneInput {
+        text,
+        scene,
+        coupling,
+    })
 }
 
 /// Read a study JSON file and the scenes it names.
@@ -83,14 +86,21 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
         let scene_path = locate(&v.scene, dir).map_err(input)?;
         let text = crate::input::read_to_string(&scene_path)
             .map_err(|e| input(format!("{}: cannot read: {e}", scene_path.display())))?;
-        let scene = Scene::parse(&text, &v.scene)?;
-        let coupling = Coupling::new(&scene).map_err(|source| HtmlError::Assembly {
+        let mut scene = Scene::parse(&text, &v.scene)?;
+        let mut coupling = Coupling::new(&scene).map_err(|source| HtmlError::Assembly {
             file: v.scene.clone(),
             source,
         })?;
         // A prediction ran the scene with the calibrated parameters.
-        let coupling = prediction.applied(coupling);
-        let now = Fingerprint::new(&coupling, &StudyOptions::default(), &v.design).scene_content;
+        prediction.apply(&mut scene, &mut coupling);
+        if v.fingerprint.fingerprint_version != FINGERPRINT_VERSION {
+            return Err(input(format!(
+                "{}: study fingerprint of version {} (this kinrepro writes version \
+                 {FINGERPRINT_VERSION}, and checks a scene against its own): rerun the study",
+                v.scene, v.fingerprint.fingerprint_version
+            )));
+        }
+        let now = Fingerprint::scene_content(&scene, &v.design);
         if now != v.fingerprint.scene_content {
             let why = if prediction.calibration.is_some() {
                 "with the calibrated parameters applied, it is not the scene the prediction ran: \
@@ -105,7 +115,11 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
                 v.fingerprint.scene_content
             )));
         }
-        scenes.push(SceneInput { text, coupling });
+        scenes.push(SceneInput {
+            text,
+            scene,
+            coupling,
+        });
     }
     Ok(StudyInput {
         source,

@@ -5,12 +5,17 @@
 
 use crate::analysis::stiffness::CouplingStiffness;
 use crate::assembly::Coupling;
+use crate::scene::Scene;
 use crate::report::table::{Cell, Table, cells};
 use crate::solve::Seating;
 
 /// The contact table (N, MPa) and the stiffness table (N/µm, N m/µrad),
 /// one below the other: each gets the page's full width.
-pub fn mechanics(c: &Coupling, s: &Seating, k: &CouplingStiffness) -> String {
+pub fn mechanics(
+    (scene, c): (&Scene, &Coupling),
+    s: &Seating,
+    k: &CouplingStiffness,
+) -> String {
     let mut t = Table::new(
         ">#; >ball; >N [N]:.3; >|T| [N]:.3; >state; >μ_s:.3; >p0 [MPa]:.0; >τ_max [MPa]:.0; >safety:.2",
     );
@@ -32,8 +37,8 @@ pub fn mechanics(c: &Coupling, s: &Seating, k: &CouplingStiffness) -> String {
     let mut t = Table::new(
         "<point; >k_t1:.2; >k_t2:.2; >k_t3 [N/µm]:.2; >k_r1:.4; >k_r2:.4; >k_r3 [N m/µrad]:.4",
     );
-    for e in &c.scene.evaluation_points {
-        let q = s.pose.apply(&e.position);
+    for e in &scene.evaluation_points {
+        let q = s.pose().apply(&e.position);
         let mut row = cells![&e.name];
         match k.principal_at(&q) {
             Some(p) => {

@@ -4,7 +4,7 @@
 //!
 //! Sections, in order: the run's metadata (version, schema, solver, sampler,
 //! seed, samples, what varied), the sigma tables with intervals (nm, nrad)
-//! and reference values, the charts ([`charts::study_charts`]: sigma bars
+//! and reference values, the charts (`report::study::charts`: sigma bars
 //! with interval bars and reference ticks, x-y scatter of every evaluation
 //! point, convergence of sigma in all six DOFs, interchangeability), then per
 //! scene a top and a side view of the coupling at its nominal seating
@@ -19,14 +19,12 @@
 //! Every element the browser test checks carries `data-check` (`table`,
 //! `chart`, `drawing`).
 
-pub mod charts;
 mod dimensions;
 mod drawing;
 pub mod inputs;
 mod mechanics;
 pub(crate) mod page;
 pub mod prediction;
-pub mod reference;
 mod svg;
 pub mod sweep;
 mod tables;
@@ -39,23 +37,17 @@ use crate::analysis::stiffness::CouplingStiffness;
 use crate::assembly::{AssemblyError, Coupling};
 use crate::report::table::escape;
 use crate::scene::{Scene, SceneError};
-use crate::solve::{Seating, SolveError};
-use crate::study::StudyError;
+use crate::solve::{Load, Seating, SolveError};
 use crate::study::VariantReport;
 use crate::study::provenance::VERSION;
 pub use inputs::{SceneInput, StudyInput, load_study, scene_input};
-pub use reference::{ReferenceRow, load_reference, parse_reference, unshown};
+pub use crate::report::study::reference::{ReferenceRow, load_reference, parse_reference, unshown};
 
 /// The report could not be made.
 #[derive(Debug, Error)]
 pub enum HtmlError {
-    #[error("{file}:{line}: {field}: {reason}")]
-    Reference {
-        file: String,
-        line: usize,
-        field: String,
-        reason: String,
-    },
+    #[error(transparent)]
+    Reference(#[from] crate::report::study::reference::ReferenceError),
     #[error("{file}: {reason}")]
     Input { file: String, reason: String },
     #[error(transparent)]
@@ -73,9 +65,9 @@ pub enum HtmlError {
         source: SolveError,
     },
     #[error("charts: {0}")]
-    Chart(#[from] StudyError),
+    Chart(#[from] crate::report::study::plot::PlotError),
     #[error(transparent)]
-    SweepChart(#[from] crate::report::sweep_plot::SweepPlotError),
+    SweepChart(#[from] crate::report::sweep::plot::SweepPlotError),
 }
 
 /// An extra section of the report: a title and an SVG (e.g. a sweep's
@@ -110,7 +102,7 @@ impl HtmlReport {
         for st in &self.studies {
             references.extend(st.prediction.measured.iter().cloned());
         }
-        let charts = charts::study_charts(&variants, &references)?;
+        let charts = crate::report::study::charts::study_charts(&variants, &references)?;
         let mut body = String::new();
         let mut toc: Vec<(String, String)> = Vec::new();
         if !self.studies.is_empty() {
@@ -241,13 +233,13 @@ fn chart_caption(file: &str) -> &'static str {
     }
 }
 
-/// The nominal seating of the coupling of scene `file` (nominal mu,
-/// quasi-static, default settings), as the drawings show it.
-fn nominal_seating(file: &str, c: &Coupling) -> Result<Seating, HtmlError> {
-    let mu = crate::solve::nominal_mu(c);
-    crate::solve::quasistatic::seat(c, &mu, &Default::default()).map_err(|source| {
+/// The nominal seating of `scene` (assembled as `c`) under its nominal
+/// load, quasi-static with default settings, as the drawings show it.
+fn nominal_seating(scene: &Scene, c: &Coupling) -> Result<Seating, HtmlError> {
+    let load = Load::nominal(scene);
+    crate::solve::quasistatic::seat(c, &load, &Default::default()).map_err(|source| {
         HtmlError::Solve {
-            file: file.to_string(),
+            file: scene.file.clone(),
             source,
         }
     })
@@ -260,11 +252,11 @@ fn scene_section(
     v: &VariantReport,
     scene: &SceneInput,
 ) -> Result<(), HtmlError> {
-    let c = &scene.coupling;
+    let (c, model) = (&scene.coupling, (&scene.scene, &scene.coupling));
     let file = v.scene.clone();
-    let mu = crate::solve::nominal_mu(c);
-    let seating = nominal_seating(&file, c)?;
-    let k = CouplingStiffness::new(c, &seating, &mu).map_err(|source| HtmlError::Solve {
+    let seating = nominal_seating(&scene.scene, c)?;
+    let load = Load::nominal(&scene.scene);
+    let k = CouplingStiffness::new(c, &seating, &load).map_err(|source| HtmlError::Solve {
         file: file.clone(),
         source,
     })?;
@@ -274,9 +266,9 @@ fn scene_section(
         escape(&v.name),
         escape(&v.scene)
     );
-    body.push_str(&drawing::coupling_views(&format!("d{n}"), c, &seating));
+    body.push_str(&drawing::coupling_views(&format!("d{n}"), model, &seating));
     body.push_str("<h3>Stiffness and stresses</h3>\n");
-    body.push_str(&mechanics::mechanics(c, &seating, &k));
+    body.push_str(&mechanics::mechanics(model, &seating, &k));
     let explicit = Scene::expand_text(&scene.text, &file)?;
     let _ = writeln!(
         body,

@@ -6,7 +6,7 @@
 //!
 //! The scenes of a prediction ran with the calibrated parameters in place
 //! of the file's, so the report applies the same estimates
-//! ([`crate::calibrate::predict::with_parameters`]) before it checks the
+//! ([`crate::calibrate::params::apply_named`]) before it checks the
 //! scene file against the prediction's `scene_content` hash and seats it.
 
 use std::collections::BTreeMap;
@@ -15,9 +15,10 @@ use std::path::Path;
 
 use serde::Deserialize;
 
-use super::reference::ReferenceRow;
+use crate::report::study::reference::ReferenceRow;
 use crate::assembly::Coupling;
-use crate::calibrate::predict::with_parameters;
+use crate::calibrate::params::apply_named;
+use crate::scene::Scene;
 use crate::dof::Dof;
 use crate::report::table::escape;
 
@@ -96,19 +97,16 @@ impl PredictionInput {
         })
     }
 
-    /// The coupling as the prediction ran it: the calibrated estimates in
-    /// place of the scene's values.
-    pub fn applied(&self, coupling: Coupling) -> Coupling {
-        match &self.calibration {
-            Some(c) => {
-                let values: BTreeMap<String, f64> = c
-                    .parameters
-                    .iter()
-                    .map(|(k, p)| (k.clone(), p.estimate))
-                    .collect();
-                with_parameters(&coupling, &values)
-            }
-            None => coupling,
+    /// The scene and coupling as the prediction ran them: the calibrated
+    /// estimates in place of the scene's values.
+    pub fn apply(&self, scene: &mut Scene, coupling: &mut Coupling) {
+        if let Some(c) = &self.calibration {
+            let values: BTreeMap<String, f64> = c
+                .parameters
+                .iter()
+                .map(|(k, p)| (k.clone(), p.estimate))
+                .collect();
+            apply_named(scene, coupling, &values);
         }
     }
 

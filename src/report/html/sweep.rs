@@ -3,7 +3,7 @@
 //! points (swept values by field, sigma per DOF at each evaluation point
 //! with its 90 % interval, k_min, SF_p, mu_lim and its margin, the Pareto
 //! mark, the status with the reason of a point not evaluated), the design
-//! charts (`report::sweep_plot`, whose Pareto labels are the table's `#`),
+//! charts (`report::sweep::plot`, whose Pareto labels are the table's `#`),
 //! the drawing of the base coupling at its nominal seating and the base
 //! scene's text. It renders the sweep document; nothing is
 //! recomputed.
@@ -13,18 +13,23 @@ use std::fmt::Write;
 use super::tables::settings;
 use super::{HtmlError, drawing, page};
 use crate::assembly::Coupling;
+use crate::scene::Scene;
 use crate::explore::{DesignKind, DesignReport, SweepReport, SweptValue};
-use crate::report::study_text::{interval_methods, sigma_cells, sigma_columns};
-use crate::report::sweep_plot::charts;
-use crate::report::sweep_text::{field_label, short, sigma_estimates};
+use crate::report::study::text::{interval_methods, sigma_cells, sigma_columns};
+use crate::report::sweep::plot::charts;
+use crate::report::sweep::text::{field_label, short, sigma_estimates};
 use crate::report::table::{Cell, Column, Table, cells, escape};
 use crate::study::provenance::VERSION;
 
 /// The whole document; `scene_text`: the base scene file as read, `base`:
-/// its coupling (drawn at its nominal seating).
-pub fn sweep_html(r: &SweepReport, scene_text: &str, base: &Coupling) -> Result<String, HtmlError> {
+/// the base scene and its coupling (drawn at its nominal seating).
+pub fn sweep_html(
+    r: &SweepReport,
+    scene_text: &str,
+    base: (&Scene, &Coupling),
+) -> Result<String, HtmlError> {
     let charts = charts(r)?;
-    let seating = super::nominal_seating(&r.scene, base)?;
+    let seating = super::nominal_seating(base.0, base.1)?;
     let mut body = String::new();
     let _ = writeln!(
         body,

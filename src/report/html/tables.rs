@@ -1,8 +1,8 @@
 //! The run's metadata and the sigma tables (nm, nrad) with the 90 %
 //! interval of each sigma under it, and the reference values that match.
 
-use super::reference::ReferenceRow;
-use crate::report::study_text::{interval_methods, sigma_cells, sigma_columns, sigma_estimates};
+use crate::report::study::reference::ReferenceRow;
+use crate::report::study::text::{interval_methods, sigma_cells, sigma_columns, sigma_estimates};
 use crate::report::table::escape;
 use crate::report::table::{Cell, Table, cells};
 use crate::study::result::varied_kinds;

@@ -11,7 +11,7 @@ use crate::scene::file::{
     DynamicsFile, FrictionFile, FrictionLawName, Numbers, SceneFile, StudyFile, VariationFile,
 };
 use crate::scene::{
-    DynamicsSettings, EvaluationPoint, FrictionSettings, SamplerChoice, StudySettings,
+    DynamicsSettings, EvaluationPoint, FrictionSettings, Sampler, StudyDefaults,
     VariationBounds,
 };
 
@@ -62,7 +62,7 @@ pub fn friction(fr: &FrictionFile, ctx: &ErrorContext) -> Result<FrictionSetting
 }
 
 /// `[study]`: at least 2 samples and a known sampler name.
-pub fn study(st: &StudyFile, ctx: &ErrorContext) -> Result<StudySettings, SceneError> {
+pub fn study(st: &StudyFile, ctx: &ErrorContext) -> Result<StudyDefaults, SceneError> {
     let samples = *st.samples.get_ref();
     if samples < 2 {
         return Err(ctx.error(
@@ -72,14 +72,14 @@ pub fn study(st: &StudyFile, ctx: &ErrorContext) -> Result<StudySettings, SceneE
         ));
     }
     let name = st.sampler.get_ref();
-    let sampler = SamplerChoice::parse(name).ok_or_else(|| {
+    let sampler = Sampler::parse(name).ok_or_else(|| {
         ctx.error(
             Some(&st.sampler.span()),
             "study.sampler",
             format!("unknown sampler '{name}': expected lhs, mc or corners"),
         )
     })?;
-    Ok(StudySettings {
+    Ok(StudyDefaults {
         samples: samples as usize,
         sampler,
         seed: st.seed,

@@ -47,7 +47,7 @@ use crate::contact::{Friction, SlipState, TangentialState};
 use crate::solve::contact_layer::{ContactEval, evaluate};
 
 /// The damping ratios of the contact dashpots.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Damping {
     /// zeta_n of the normal dashpot (0: none).
     pub normal: f64,

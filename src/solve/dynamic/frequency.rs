@@ -22,6 +22,7 @@ use nalgebra::{Matrix3, Matrix6};
 use super::mass::MassModel;
 use crate::assembly::Coupling;
 use crate::assembly::constraint::frictionless_preload_forces;
+use crate::scene::Preload;
 
 /// Highest and lowest natural circular frequency at full preload [rad/s].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -44,10 +45,14 @@ impl Frequencies {
 
 /// The natural frequencies of `coupling` with mass model `mass` (module docs).
 /// `None` if the preload leaves a contact unloaded or the matrices are singular.
-pub fn seated_frequencies(coupling: &Coupling, mass: &MassModel) -> Option<Frequencies> {
+pub fn seated_frequencies(
+    coupling: &Coupling,
+    preload: &Preload,
+    mass: &MassModel,
+) -> Option<Frequencies> {
     let pose = coupling.touching_pose;
     let com = pose.apply(&mass.centre_of_mass);
-    let forces = frictionless_preload_forces(coupling);
+    let forces = frictionless_preload_forces(coupling, preload);
     let mut k = Matrix6::zeros();
     for (i, &f) in forces.iter().enumerate() {
         if f.is_nan() || f <= 0.0 {

@@ -49,7 +49,7 @@ pub struct MassModel {
 impl MassModel {
     /// The scene's `[dynamics]` table, or the default model.
     pub fn of(coupling: &Coupling) -> Self {
-        match coupling.scene.dynamics {
+        match coupling.dynamics {
             Some(d) => MassModel {
                 mass: d.mass,
                 centre_of_mass: d.centre_of_mass,

@@ -70,7 +70,7 @@ pub mod simulation;
 pub mod trace;
 pub mod world;
 
-use super::{ContactResult, Seating, SolveError};
+use super::{ContactResult, Load, SeatedPose, Seating, SolveError};
 use crate::assembly::Coupling;
 use crate::assembly::constraint::friction_limit;
 pub use forces::{Damping, StepContact};
@@ -80,13 +80,9 @@ pub use options::{DynamicOptions, StartPose};
 pub use simulation::Simulation;
 pub use trace::{Energy, TraceContact, TraceSample, TraceState};
 
-/// Seat the coupling dynamically with static coefficients `mu_s` (contact order).
-pub fn seat(
-    coupling: &Coupling,
-    mu_s: &[f64],
-    opts: &DynamicOptions,
-) -> Result<Seating, SolveError> {
-    seat_traced(coupling, mu_s, opts, &mut |_| {})
+/// Seat the coupling dynamically under `load`, from its start pose.
+pub fn seat(coupling: &Coupling, load: &Load, opts: &DynamicOptions) -> Result<Seating, SolveError> {
+    seat_traced(coupling, load, opts, &mut |_| {})
 }
 
 /// Most time steps of one dynamic seating: 10^7, about a minute and a
@@ -96,11 +92,11 @@ pub const MAX_STEPS: usize = 10_000_000;
 /// [`seat`], calling `trace` after every step with the state at the start of it.
 pub fn seat_traced(
     coupling: &Coupling,
-    mu_s: &[f64],
+    load: &Load,
     opts: &DynamicOptions,
     trace: &mut dyn FnMut(&TraceSample),
 ) -> Result<Seating, SolveError> {
-    let mut sim = Simulation::new(coupling, mu_s, opts)?;
+    let mut sim = Simulation::new(coupling, load, opts)?;
     let max_time = sim.ramp_time + opts.max_settle_periods * sim.freq.longest_period();
     check_steps(&sim, max_time)?;
     loop {
@@ -136,7 +132,7 @@ pub fn seat_traced(
         .map(|(i, _)| i)
         .collect();
     if !open.is_empty() {
-        let limit = friction_limit(coupling);
+        let limit = friction_limit(coupling, &load.preload);
         return Err(SolveError::NotCentred {
             open: open
                 .iter()
@@ -147,24 +143,26 @@ pub fn seat_traced(
                 .iter()
                 .map(|&i| sim.contacts[i].eval.geometry.gap)
                 .fold(f64::NEG_INFINITY, f64::max),
-            mu_max: mu_s.iter().copied().fold(0.0, f64::max),
+            mu_max: load.mu.iter().copied().fold(0.0, f64::max),
             mu_limit: limit.mu_limit,
             critical_contact: limit.critical_contact,
         });
     }
     Ok(Seating {
-        pose: sim.pose,
+        seated: SeatedPose {
+            pose: sim.pose,
+            increments: sim.steps,
+            newton_iterations: 0,
+            path: crate::solve::SeatingPath::Dynamic,
+            decay_cv: sim.decay_cv(),
+            path_error: None,
+        },
         contacts: sim
             .contacts
             .iter()
             .enumerate()
             .map(|(i, c)| ContactResult::from_eval(coupling, i, &c.eval, sim.friction[i]))
             .collect(),
-        increments: sim.steps,
-        newton_iterations: 0,
-        path: crate::solve::SeatingPath::Dynamic,
-        decay_cv: sim.decay_cv(),
-        path_error: None,
     })
 }
 

@@ -25,9 +25,34 @@ impl StartPose {
     }
 }
 
-#[derive(Debug, Clone, Copy, PartialEq)]
+impl StartPose {
+    /// A start must be finite and tilted by at most 0.1 rad.
+    pub(super) fn check(&self) -> Result<(), SolveError> {
+        let finite3 = |v: &Vector3<f64>| v.iter().all(|x| x.is_finite());
+        if !finite3(&self.offset) || !finite3(&self.tilt) {
+            return Err(SolveError::BadOption(
+                "the start offset and tilt must be finite numbers".into(),
+            ));
+        }
+        if self.tilt.norm() > 0.1 {
+            return Err(SolveError::BadOption(format!(
+                "tilt {:.3e} rad is too large: a seating start is tilted by at most 0.1 rad",
+                self.tilt.norm()
+            )));
+        }
+        Ok(())
+    }
+
+    /// True unless this is the touching pose.
+    pub fn is_offset(&self) -> bool {
+        self.offset.norm() > 0.0 || self.tilt.norm() > 0.0
+    }
+}
+
+/// Settings of the dynamic solver (its start is the seating's:
+/// `solve::Load::start`).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct DynamicOptions {
-    pub start: StartPose,
     /// Time steps per period of the highest natural mode at full preload.
     pub steps_per_period: f64,
     /// Ramp duration in periods of the fundamental (lowest) mode; 0: step load.
@@ -44,7 +69,6 @@ pub struct DynamicOptions {
 impl Default for DynamicOptions {
     fn default() -> Self {
         DynamicOptions {
-            start: StartPose::touching(),
             steps_per_period: 30.0,
             ramp_periods: 40.0,
             damping: Damping {
@@ -61,16 +85,6 @@ impl Default for DynamicOptions {
 impl DynamicOptions {
     pub(super) fn check(&self) -> Result<(), SolveError> {
         let bad = |m: String| Err(SolveError::BadOption(m));
-        let finite3 = |v: &Vector3<f64>| v.iter().all(|x| x.is_finite());
-        if !finite3(&self.start.offset) || !finite3(&self.start.tilt) {
-            return bad("the start offset and tilt must be finite numbers".into());
-        }
-        if self.start.tilt.norm() > 0.1 {
-            return bad(format!(
-                "tilt {:.3e} rad is too large: a seating start is tilted by at most 0.1 rad",
-                self.start.tilt.norm()
-            ));
-        }
         if !(self.steps_per_period >= 20.0 && self.steps_per_period.is_finite()) {
             return bad(format!(
                 "steps_per_period = {} must be at least 20 (explicit damping needs zeta omega dt < 1)",

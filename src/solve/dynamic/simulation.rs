@@ -13,8 +13,9 @@ use super::world::{self, dvec, from_rapier, nvec};
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::friction;
 use crate::contact::{Friction, SlipState, TangentialState};
+use crate::scene::Preload;
 use crate::solve::preload_forces::{Applied, applied};
-use crate::solve::{SolveError, frictions};
+use crate::solve::{Load, SolveError};
 
 /// Settling status of the last step.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -29,6 +30,7 @@ pub(super) struct Status {
 pub struct Simulation<'a> {
     coupling: &'a Coupling,
     pub(super) friction: Vec<Friction>,
+    preload: &'a Preload,
     opts: DynamicOptions,
     mass: MassModel,
     pub(super) freq: Frequencies,
@@ -52,16 +54,17 @@ pub struct Simulation<'a> {
 }
 
 impl<'a> Simulation<'a> {
-    /// Set up the world at the start pose, at rest.
+    /// Set up the world at the load's start pose, at rest.
     pub fn new(
         coupling: &'a Coupling,
-        mu_s: &[f64],
+        load: &'a Load,
         opts: &DynamicOptions,
     ) -> Result<Self, SolveError> {
+        load.start.check()?;
         opts.check()?;
-        let friction = frictions(coupling, mu_s)?;
+        let friction = load.frictions(coupling)?;
         let mass = MassModel::of(coupling);
-        let freq = frequency::seated_frequencies(coupling, &mass).ok_or_else(|| {
+        let freq = frequency::seated_frequencies(coupling, &load.preload, &mass).ok_or_else(|| {
             SolveError::BadOption(
                 "the seated coupling has no positive natural frequencies (a contact unloaded \
                  by the preload, or singular mass properties)"
@@ -69,12 +72,12 @@ impl<'a> Simulation<'a> {
             )
         })?;
         let touching = coupling.touching_pose;
-        let start = touching.moved(&opts.start.offset, &opts.start.tilt);
+        let start = touching.moved(&load.start.offset, &load.start.tilt);
         let n = coupling.contacts.len();
         let mut states = Vec::with_capacity(n);
         for i in 0..n {
             let g = coupling.geometry(i, &start);
-            if g.gap < 0.0 && (opts.start.offset.norm() > 0.0 || opts.start.tilt.norm() > 0.0) {
+            if g.gap < 0.0 && load.start.is_offset() {
                 return Err(SolveError::StartOverlaps {
                     contact: i + 1,
                     overlap_m: -g.gap,
@@ -86,11 +89,12 @@ impl<'a> Simulation<'a> {
         let (world, body) = world::build(coupling, &mass, &start, dt);
         let length = coupling.length_scale();
         let max_travel = coupling.slide_away_travel()
-            + opts.start.offset.norm()
-            + opts.start.tilt.norm() * 2.0 * length;
+            + load.start.offset.norm()
+            + load.start.tilt.norm() * 2.0 * length;
         Ok(Simulation {
             coupling,
             friction,
+            preload: &load.preload,
             opts: *opts,
             mass,
             freq,
@@ -197,7 +201,7 @@ impl<'a> Simulation<'a> {
             mass: &self.mass,
         };
         let contacts = self.contact_forces(&motion);
-        let preload: Vec<Applied> = applied(self.coupling, &pose, lambda).collect();
+        let preload: Vec<Applied> = applied(self.coupling, self.preload, &pose, lambda).collect();
         let (residual, max_speed, hertz) = self.balance(&motion, &contacts, &preload);
         let kinetic_before = self.kinetic(&linvel, &angvel, &rot);
         self.apply_and_commit(&contacts, &preload, pose);
@@ -224,7 +228,7 @@ impl<'a> Simulation<'a> {
             hertz,
             preload_work: self.work,
         };
-        let points = self.coupling.scene.preload.forces.iter().map(|f| f.point);
+        let points = self.preload.forces.iter().map(|f| f.point);
         for (a, point) in preload.iter().zip(points) {
             self.work += a.force.dot(&(new_pose.apply(&point) - a.point));
         }
@@ -267,7 +271,7 @@ impl<'a> Simulation<'a> {
         preload: &[Applied],
     ) -> (f64, f64, f64) {
         let c = self.coupling;
-        let scale = c.scene.preload.scale();
+        let scale = self.preload.scale();
         let (mut rf, mut rm) = (Vector3::zeros(), Vector3::zeros());
         for a in preload {
             rf += a.force;

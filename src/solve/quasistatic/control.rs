@@ -45,7 +45,7 @@ use nalgebra::Vector6;
 
 use super::path::End;
 use super::solver::{Program, Solver, twist_between};
-use super::{SeatingSetup, Workspace};
+use super::{Ramp, SeatingSetup, Workspace};
 use crate::solve::{SeatedPose, SolveError, SolverOptions};
 
 /// The coarsest level's graded increments.
@@ -58,6 +58,7 @@ pub const FINEST: usize = 6144;
 /// from the touching pose and the virgin states; its contacts stay in `ws`.
 pub(super) fn level(
     setup: &SeatingSetup,
+    ramp: Ramp,
     opts: &SolverOptions,
     n: usize,
     ws: &mut Workspace,
@@ -67,7 +68,7 @@ pub(super) fn level(
         increments: n,
         ..*opts
     };
-    let solver = Solver::new(c, &ws.friction, opts, Program::Seat, setup.x1);
+    let solver = Solver::new(c, &ws.friction, ramp.preload, opts, Program::Seat, ramp.x1);
     ws.bufs.states.clone_from(&setup.virgin);
     solver.run(c.touching_pose, &mut ws.bufs)
 }
@@ -82,6 +83,7 @@ fn size(t: &Vector6<f64>, length: f64) -> f64 {
 /// Seat to `tolerance` (module docs); `ws.friction` holds the frictions.
 pub(super) fn seat_controlled(
     setup: &SeatingSetup,
+    ramp: Ramp,
     opts: &SolverOptions,
     tolerance: f64,
     ws: &mut Workspace,
@@ -89,13 +91,13 @@ pub(super) fn seat_controlled(
     let c = setup.coupling;
     let length = c.length_scale();
     let mut n = FIRST;
-    let first = level(setup, opts, n, ws)?;
+    let first = level(setup, ramp, opts, n, ws)?;
     let mut coarse = first.pose;
     let (mut increments, mut iterations, mut halved) =
         (first.increments, first.newton_iterations, first.halved);
     loop {
         n *= 2;
-        let fine = level(setup, opts, n, ws)?;
+        let fine = level(setup, ramp, opts, n, ws)?;
         increments += fine.increments;
         iterations += fine.newton_iterations;
         halved |= fine.halved;

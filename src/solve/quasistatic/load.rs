@@ -10,7 +10,7 @@ use super::solver::{Program, Solver, contact_results};
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{SlipState, TangentialState};
 use crate::solve::contact_layer::ContactEval;
-use crate::solve::{ContactResult, Seating, SolveError, SolverOptions, frictions};
+use crate::solve::{ContactResult, Load, Seating, SolveError, SolverOptions};
 
 /// The end of a load path.
 #[derive(Debug, Clone, PartialEq)]
@@ -51,20 +51,21 @@ pub fn at_rest_states(seating: &Seating) -> Vec<TangentialState> {
         .collect()
 }
 
-/// Apply `load` x `factor` to the coupling seated at `start` with contact
-/// states `states` (usually [`at_rest_states`] of a seating with the same
-/// `mu_s`), holding the full preload. The load ramps from 0 in
-/// `opts.increments` equal steps.
+/// Apply `external` x `factor` to the coupling seated under `seated` at
+/// `start` with contact states `states` (usually [`at_rest_states`] of
+/// that seating), holding its full preload with its friction
+/// coefficients. The external load ramps from 0 in `opts.increments`
+/// equal steps.
 pub fn apply_load(
     coupling: &Coupling,
-    mu_s: &[f64],
+    seated: &Load,
     start: &BodyPose,
     states: &[TangentialState],
-    load: &ExternalLoad,
+    external: &ExternalLoad,
     factor: f64,
     opts: &SolverOptions,
 ) -> Result<LoadPath, SolveError> {
-    let fr = frictions(coupling, mu_s)?;
+    let fr = seated.frictions(coupling)?;
     if states.len() != coupling.contacts.len() {
         return Err(SolveError::MuCount {
             expected: coupling.contacts.len(),
@@ -72,10 +73,17 @@ pub fn apply_load(
         });
     }
     let program = Program::Load {
-        load: *load,
+        load: *external,
         factor,
     };
-    let solver = Solver::new(coupling, &fr, *opts, program, Vector6::zeros());
+    let solver = Solver::new(
+        coupling,
+        &fr,
+        &seated.preload,
+        *opts,
+        program,
+        Vector6::zeros(),
+    );
     let mut bufs = Buffers {
         states: states.to_vec(),
         ..Buffers::default()

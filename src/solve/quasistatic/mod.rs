@@ -42,8 +42,9 @@
 //! support compliance).
 //!
 //! A study seats one coupling many times: [`SeatingSetup`] holds what
-//! every seating of it computes first (the predictor x_1, the virgin
-//! contact states), and a [`Workspace`] the buffers of one seating;
+//! every seating of it computes first (the predictor x_1 of the nominal
+//! preload, the virgin contact states), and a [`Workspace`] the buffers of
+//! one seating;
 //! [`seat_in`], the seat kernel, reuses both (one workspace per rayon
 //! worker in a study), so that a seating allocates nothing once they have
 //! grown (tests/alloc_free.rs), and returns the pose-level [`SeatedPose`]
@@ -67,38 +68,38 @@ use solver::contact_results;
 
 use nalgebra::Vector6;
 
-use super::{SeatedPose, Seating, SeatingPath, SolveError, SolverOptions, frictions_into};
+use super::{Load, SeatedPose, Seating, SeatingPath, SolveError, SolverOptions, frictions_into};
 use crate::assembly::Coupling;
 use crate::contact::{Friction, TangentialState};
+use crate::scene::Preload;
 
-/// Seat the coupling with static coefficients `mu_s` (contact order), with
-/// the per-contact report: [`seat_in`] in a fresh workspace.
-pub fn seat(
-    coupling: &Coupling,
-    mu_s: &[f64],
-    opts: &SolverOptions,
-) -> Result<Seating, SolveError> {
+/// Seat the coupling under `load` (from the touching pose), with the
+/// per-contact report: [`seat_in`] in a fresh workspace.
+pub fn seat(coupling: &Coupling, load: &Load, opts: &SolverOptions) -> Result<Seating, SolveError> {
     let mut ws = Workspace::new();
-    let seated = seat_in(&SeatingSetup::new(coupling), mu_s, opts, &mut ws)?;
+    let seated = seat_in(&SeatingSetup::new(coupling, &load.preload), load, opts, &mut ws)?;
     Ok(ws.seating(coupling, seated))
 }
 
-/// What every seating of one coupling computes before its first
-/// increment, computed once and shared (it is `Sync`) by the seatings of a
-/// study: the frictionless predictor x_1 and the virgin contact states
-/// (zero force, tangent to the normals at the touching pose).
+/// What every seating of one coupling under one preload computes before
+/// its first increment, computed once and shared (it is `Sync`) by the
+/// seatings of a study: the frictionless predictor x_1 of that preload and
+/// the virgin contact states (zero force, tangent to the normals at the
+/// touching pose).
 pub struct SeatingSetup<'a> {
     coupling: &'a Coupling,
+    preload: Preload,
     x1: Vector6<f64>,
     /// Virgin states at the normals of the touching pose.
     virgin: Vec<TangentialState>,
 }
 
 impl<'a> SeatingSetup<'a> {
-    pub fn new(coupling: &'a Coupling) -> Self {
+    pub fn new(coupling: &'a Coupling, preload: &Preload) -> Self {
         SeatingSetup {
             coupling,
-            x1: solver::predictor(coupling),
+            preload: preload.clone(),
+            x1: solver::predictor(coupling, preload),
             virgin: virgin_states(coupling),
         }
     }
@@ -106,6 +107,13 @@ impl<'a> SeatingSetup<'a> {
     pub fn coupling(&self) -> &'a Coupling {
         self.coupling
     }
+}
+
+/// The preload a seating ramps and its frictionless predictor x_1.
+#[derive(Clone, Copy)]
+pub(super) struct Ramp<'a> {
+    pub preload: &'a Preload,
+    pub x1: Vector6<f64>,
 }
 
 /// The buffers of a seating, reused from one seating to the next
@@ -126,31 +134,35 @@ impl Workspace {
     /// workspace, with the per-contact report (allocates it).
     pub fn seating(&self, coupling: &Coupling, seated: SeatedPose) -> Seating {
         Seating {
-            pose: seated.pose,
+            seated,
             contacts: contact_results(coupling, &self.friction, &self.bufs.evals),
-            increments: seated.increments,
-            newton_iterations: seated.newton_iterations,
-            path: seated.path,
-            decay_cv: seated.decay_cv,
-            path_error: seated.path_error,
         }
     }
 }
 
-/// The seat kernel: seat `setup`'s coupling with static coefficients
-/// `mu_s` in the reused buffers of `ws`, without the per-contact report
-/// (no allocation once `ws` has served one seating of this coupling).
+/// The seat kernel: seat `setup`'s coupling under `load` in the reused
+/// buffers of `ws`, without the per-contact report (no allocation once
+/// `ws` has served one seating of this coupling, whatever the load's
+/// preload: a preload other than the setup's gets its predictor here,
+/// without allocating).
 pub fn seat_in(
     setup: &SeatingSetup,
-    mu_s: &[f64],
+    load: &Load,
     opts: &SolverOptions,
     ws: &mut Workspace,
 ) -> Result<SeatedPose, SolveError> {
-    frictions_into(setup.coupling, mu_s, &mut ws.friction)?;
+    frictions_into(setup.coupling, &load.mu, &mut ws.friction)?;
+    let ramp = Ramp {
+        preload: &load.preload,
+        x1: match load.preload == setup.preload {
+            true => setup.x1,
+            false => solver::predictor(setup.coupling, &load.preload),
+        },
+    };
     if let Some(tolerance) = opts.path_tolerance {
-        return control::seat_controlled(setup, opts, tolerance, ws);
+        return control::seat_controlled(setup, ramp, opts, tolerance, ws);
     }
-    let end = control::level(setup, opts, opts.increments, ws)?;
+    let end = control::level(setup, ramp, opts, opts.increments, ws)?;
     Ok(SeatedPose {
         pose: end.pose,
         increments: end.increments,

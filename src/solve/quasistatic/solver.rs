@@ -34,11 +34,12 @@ use nalgebra::{Matrix3, Matrix6, UnitQuaternion, Vector3, Vector6};
 
 use super::external::ExternalLoad;
 use super::lu6::solve6;
-use crate::assembly::constraint::frictionless_preload_forces;
+use crate::assembly::constraint::frictionless_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
 use crate::solve::contact_layer::{ContactEval, Motion, Moved, NormalPart, evaluate_into};
 use crate::solve::preload_forces::applied;
+use crate::scene::Preload;
 use crate::solve::{ContactResult, SolveError, SolverOptions};
 
 /// Contacts evaluated together by [`Solver::evaluate_all`] (a kinematic
@@ -80,6 +81,8 @@ pub(super) enum Step {
 pub(super) struct Solver<'a> {
     pub coupling: &'a Coupling,
     pub friction: &'a [Friction],
+    /// The preload the path ramps (a seating) or holds (a load path).
+    pub preload: &'a Preload,
     pub opts: SolverOptions,
     pub program: Program,
     /// Force scale of the residual [N].
@@ -101,17 +104,18 @@ impl<'a> Solver<'a> {
     pub fn new(
         coupling: &'a Coupling,
         friction: &'a [Friction],
+        preload: &'a Preload,
         opts: SolverOptions,
         program: Program,
         x1: Vector6<f64>,
     ) -> Self {
         let length = coupling.length_scale();
-        let preload = coupling.scene.preload.scale();
+        let scale = preload.scale();
         let force_scale = match program {
-            Program::Seat => preload,
+            Program::Seat => scale,
             Program::Load { load, factor } => {
                 let f = factor.abs();
-                preload
+                scale
                     .max(f * load.force.norm())
                     .max(f * load.moment.norm() / length)
             }
@@ -119,13 +123,14 @@ impl<'a> Solver<'a> {
         Solver {
             coupling,
             friction,
+            preload,
             opts,
             program,
             force_scale,
             length,
             x1,
             max_travel: coupling.slide_away_travel(),
-            ramp_time: coupling.scene.preload.ramp_time,
+            ramp_time: preload.ramp_time,
         }
     }
 
@@ -228,7 +233,7 @@ impl<'a> Solver<'a> {
             let m = at.cross(f);
             r += Vector6::new(f.x, f.y, f.z, m.x, m.y, m.z);
         };
-        for a in applied(self.coupling, pose, loads.lambda) {
+        for a in applied(self.coupling, self.preload, pose, loads.lambda) {
             add(&a.force, &a.point);
         }
         for e in evals {
@@ -328,7 +333,7 @@ impl<'a> Solver<'a> {
             let centre = e.geometry.point + e.geometry.normal * self.coupling.contacts[i].radius;
             add_contact(&mut j, &e.stiffness, &e.force, &e.geometry.point, &centre);
         }
-        let preload = applied(self.coupling, pose, loads.lambda);
+        let preload = applied(self.coupling, self.preload, pose, loads.lambda);
         let forces = preload.map(|a| (a.force, a.point, a.stiffness));
         for (f, p, k) in forces.chain(self.extra_force(pose, loads).map(|(f, p)| (f, p, None))) {
             match k {
@@ -412,11 +417,11 @@ pub(super) fn contact_results(
 /// The predictor twist per unit s of a seating (module docs of [`super`]):
 /// W x_1 = -delta_i(f_i), W the constraint rows at the touching pose, f_i
 /// the frictionless contact forces at full preload, delta_i the approach
-/// (Hertz plus support compliance). Depends on the coupling only.
-pub(super) fn predictor(coupling: &Coupling) -> Vector6<f64> {
-    let rows = coupling.constraint_rows(&coupling.touching_pose);
-    let w = Matrix6::from_fn(|r, c| rows[r][c]);
-    let f = frictionless_preload_forces(coupling);
+/// (Hertz plus support compliance). Depends on the coupling and the
+/// preload; allocates nothing.
+pub(super) fn predictor(coupling: &Coupling, preload: &Preload) -> Vector6<f64> {
+    let w = coupling.constraint_rows(&coupling.touching_pose);
+    let f = frictionless_forces(coupling, preload);
     let rhs = Vector6::from_fn(|i, _| -coupling.contacts[i].normal.approach(f[i].max(0.0)));
     w.lu().solve(&rhs).unwrap_or_else(Vector6::zeros)
 }

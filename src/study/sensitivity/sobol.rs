@@ -24,8 +24,9 @@ use super::super::rng::{DOMAIN_BOOT, DOMAIN_SOBOL, below, chacha, unit_f64};
 use super::super::stats::bootstrap::quantile_sorted;
 use super::super::stats::{BOOTSTRAP_SEED, BootstrapConfig};
 
-/// Default base sample size N (the Ishigami indices are then within 0.02, tests/it/sobol.rs).
-pub const DEFAULT_BASE_SAMPLES: usize = 32768;
+/// Default base sample size N (the Ishigami indices are then within 0.02,
+/// tests/it/sobol.rs): the study option's default.
+pub use super::super::options::DEFAULT_BASE_SAMPLES;
 
 /// Bootstrap resamples of the Sobol intervals.
 pub const SOBOL_RESAMPLES: usize = 500;

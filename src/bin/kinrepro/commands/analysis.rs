@@ -2,7 +2,7 @@
 
 use kinrepro::analysis::load::{LEVER_RATIO_MAX, envelope, lever_ratio, load_path};
 use kinrepro::analysis::stiffness::CouplingStiffness;
-use kinrepro::report::analysis::{LoadReport, StiffnessReport};
+use kinrepro::report::coupling::analysis::{LoadReport, StiffnessReport};
 use kinrepro::solve::SolverOptions;
 use kinrepro::solve::quasistatic::seat;
 use nalgebra::Vector3;

@@ -4,7 +4,7 @@
 
 use kinrepro::calibrate::fit::Calibration;
 use kinrepro::calibrate::{Measurement, predict as predict_one};
-use kinrepro::report::atomic::{check_overwrite, write_file};
+use kinrepro::output::atomic::{check_overwrite, write_file};
 use kinrepro::report::calibration::{PredictionReport, calibration_table};
 use kinrepro::solve::Method;
 
@@ -66,7 +66,7 @@ pub fn predict(o: PredictArgs) -> Result<(), CliError> {
         TextFormat::Json => print_json(&report.json()?)?,
     }
     if let Some(p) = &o.plot {
-        kinrepro::report::calibration_plot::plot_predictions(p, &report, o.force)?;
+        kinrepro::report::calibration::plot::plot_predictions(p, &report, o.force)?;
         eprintln!("wrote {}", p.display());
     }
     if !report.calibration.goodness_of_fit.ok {

@@ -4,7 +4,7 @@
 use kinrepro::contact::ContactPair;
 use kinrepro::contact::history::{HistoryError, LoadStep, drive, parse_history_csv};
 use kinrepro::report::contact::{HistoryProvenance, contact_table, history_csv};
-use kinrepro::report::contact_validity::{HertzValidity, hertz_validity, radius_hint};
+use kinrepro::report::contact::validity::{HertzValidity, hertz_validity, radius_hint};
 
 use super::{emit, number, print_json, read_text};
 use crate::error::CliError;

@@ -48,7 +48,7 @@ pub fn validate_hertz(o: Checked<ValidateHertzArgs, MeshOptions>) -> Result<(), 
     if a.json {
         print_json(&rows)
     } else {
-        emit(&kinrepro::report::validate_hertz::table(&rows))
+        emit(&kinrepro::report::contact::validate_hertz::table(&rows))
     }
 }
 
@@ -85,7 +85,7 @@ fn conformity(
     if json {
         print_json(&studies)
     } else {
-        emit(&kinrepro::report::validate_hertz::conformity_table(
+        emit(&kinrepro::report::contact::validate_hertz::conformity_table(
             &studies,
         ))
     }

@@ -52,7 +52,7 @@ pub fn sweep_html(
     force: bool,
 ) -> Result<(), CliError> {
     let html = kinrepro::report::html::sweep::sweep_html(report, scene_text, base)?;
-    kinrepro::report::atomic::write_file(out, &html, force)?;
+    kinrepro::output::atomic::write_file(out, &html, force)?;
     eprintln!("wrote {}", out.display());
     Ok(())
 }
@@ -88,7 +88,7 @@ fn write_html(
         sections: Vec::new(),
     }
     .render()?;
-    kinrepro::report::atomic::write_file(out, &html, force)?;
+    kinrepro::output::atomic::write_file(out, &html, force)?;
     eprintln!("wrote {}", out.display());
     Ok(())
 }

@@ -11,8 +11,8 @@ pub fn check(scenes: &[PathBuf]) -> Result<(), CliError> {
             Ok(c) => {
                 let verdict = kinrepro::study::verdict::cannot_seat(&c, &Default::default())?;
                 unseated += usize::from(verdict.is_some());
-                let note = kinrepro::report::check::seating_note(&c, verdict.as_deref());
-                let summary = kinrepro::report::check::check_summary(&c);
+                let note = kinrepro::report::coupling::check::seating_note(&c, verdict.as_deref());
+                let summary = kinrepro::report::coupling::check::check_summary(&c);
                 super::emit(&format!("{summary}{note}\n"))?
             }
             Err(e) => {

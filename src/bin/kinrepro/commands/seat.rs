@@ -4,7 +4,7 @@ use std::path::Path;
 
 use kinrepro::assembly::Coupling;
 use kinrepro::contact::friction::{in_transition, transition_warning};
-use kinrepro::report::run::RunReport;
+use kinrepro::report::seating::run::RunReport;
 use kinrepro::solve::dynamic::{DynamicOptions, seat_traced};
 use kinrepro::solve::{Method, Seating};
 
@@ -59,8 +59,8 @@ fn traced(
     let file = &coupling.scene.file;
     let name = path.display().to_string();
     let mut trace_file =
-        kinrepro::report::atomic::AtomicFile::create(path, force).context("--trace")?;
-    let mut w = kinrepro::report::trace::TraceWriter::new(trace_file.writer(), coupling)
+        kinrepro::output::atomic::AtomicFile::create(path, force).context("--trace")?;
+    let mut w = kinrepro::report::seating::trace::TraceWriter::new(trace_file.writer(), coupling)
         .map_err(|e| CliError::file(&name, "", e))?;
     let mut io_err = None;
     let result = seat_traced(coupling, mu, dyn_opts, &mut |s| {

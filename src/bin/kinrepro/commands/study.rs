@@ -1,6 +1,6 @@
 //! `kinrepro study` and `kinrepro merge`: reproducibility studies.
 
-use kinrepro::report::study_files::{SamplesCsv, samples_file_name};
+use kinrepro::report::study::files::{SamplesCsv, samples_file_name};
 use kinrepro::study::{StudyPlan, StudyReport};
 
 use super::*;

@@ -1,5 +1,5 @@
 //! `kinrepro sweep`: reproducibility, stiffness and safety over a grid or
-//! an LHS of scene fields (library: `explore`; output: `report::sweep_text`, `report::sweep_plot`).
+//! an LHS of scene fields (library: `explore`; output: `report::sweep::text`, `report::sweep::plot`).
 
 use std::path::PathBuf;
 
@@ -35,7 +35,7 @@ pub fn sweep(o: Checked<SweepArgs, StudyOptions>) -> Result<(), CliError> {
     bar.finish_and_clear();
     print_sweep(&report, a.format)?;
     if let Some(dir) = &a.out {
-        for f in kinrepro::report::sweep_plot::write_charts(&report, dir, a.force)? {
+        for f in kinrepro::report::sweep::plot::write_charts(&report, dir, a.force)? {
             eprintln!("wrote {f}");
         }
     }

@@ -6,7 +6,7 @@ use plotters::prelude::*;
 
 use super::{VariantSigma, check_finite, color, headroom, legend_room, plot_err};
 use crate::dof::Dof;
-use crate::study::{Result, StudyError};
+use super::{PlotError, Result};
 
 /// An SVG with two panels, translations \[nm\] and rotations \[nrad\]: one
 /// group of bars per DOF, one bar per variant, a vertical error bar from the
@@ -15,7 +15,7 @@ use crate::study::{Result, StudyError};
 /// `what` heads the panels (e.g. "re-seating σ", "interchangeability σ").
 pub fn sigma_bars_svg(data: &[VariantSigma], what: &str) -> Result<String> {
     if data.is_empty() {
-        return Err(StudyError::NothingToPlot("no variants".into()));
+        return Err(PlotError::NothingToPlot("no variants".into()));
     }
     check_finite(data.iter().flat_map(|v| v.sigma.iter()), "sigma")?;
     check_finite(
@@ -32,7 +32,7 @@ pub fn sigma_bars_svg(data: &[VariantSigma], what: &str) -> Result<String> {
     )?;
     for v in data {
         if let Some((d, s)) = v.sigma.iter().enumerate().find(|(_, s)| **s < 0.0) {
-            return Err(StudyError::InvalidParameter(format!(
+            return Err(PlotError::InvalidParameter(format!(
                 "variant `{}`: sigma of {} = {s} is negative (a standard deviation is >= 0)",
                 v.variant,
                 Dof::ALL[d].name()

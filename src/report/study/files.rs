@@ -6,9 +6,9 @@ use std::io::Write as _;
 use std::path::Path;
 
 use crate::delimited::csv_cell;
-use crate::report::atomic::{self, AtomicFile, WriteError};
-use crate::report::html::charts::study_charts;
-use crate::report::study_text::point_csv_rows;
+use crate::output::atomic::{self, AtomicFile, WriteError};
+use crate::report::study::charts::study_charts;
+use crate::report::study::text::point_csv_rows;
 use crate::report::table::{Column, Table};
 use crate::study::provenance::{SCHEMA_VERSION, VERSION, produced_by};
 use crate::study::runner::INTERCHANGE_PREFIX;

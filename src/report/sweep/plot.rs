@@ -17,12 +17,10 @@ use thiserror::Error;
 use crate::dof::Dof;
 use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
-use crate::report::atomic::{WriteError, check_overwrite, write_file};
-use crate::report::plot::color;
-use crate::report::sweep_pareto;
-use crate::report::sweep_status;
-use crate::report::sweep_text::field_label;
-use crate::report::sweep_text::short as tick;
+use crate::output::atomic::{WriteError, check_overwrite, write_file};
+use crate::report::study::plot::color;
+use crate::report::sweep::text::field_label;
+use crate::report::sweep::text::short as tick;
 use crate::study::PointStats;
 
 /// A chart could not be drawn or written.
@@ -45,7 +43,7 @@ type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64
 /// `sweep_sigma_<field>` per swept field, `sweep_heatmap` (grids of two
 /// fields), `sweep_pareto` (when two or more designs were evaluated),
 /// `sweep_not_evaluated` (when a design point was not evaluated:
-/// `report::sweep_status`).
+/// `report::sweep::status`).
 pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> {
     let foot = r.produced_by();
     let mut out = Vec::new();
@@ -71,9 +69,9 @@ pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> 
             svg(&foot, (1200, 700), |a| pareto_chart(r, a))?,
         ));
     }
-    if !sweep_status::not_evaluated(r).is_empty() {
-        let size = (1200, sweep_status::height(r));
-        let chart = svg(&foot, size, |a| sweep_status::draw(r, a).map_err(draw_err))?;
+    if !super::status::not_evaluated(r).is_empty() {
+        let size = (1200, super::status::height(r));
+        let chart = svg(&foot, size, |a| super::status::draw(r, a).map_err(draw_err))?;
         out.push(("sweep_not_evaluated".to_string(), chart));
     }
     Ok(out)
@@ -381,7 +379,7 @@ fn levels(r: &SweepReport, k: usize) -> Vec<SweptValue> {
     v
 }
 
-/// The Pareto chart (`report::sweep_pareto`) of the evaluated designs.
+/// The Pareto chart (`report::sweep::pareto`) of the evaluated designs.
 fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
     let pts: Vec<(f64, f64, &DesignReport)> = r
         .designs
@@ -389,7 +387,7 @@ fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
         .filter_map(|d| Some((r.objectives(d)?.stiffness_min * 1e-6, sigma_max(r, d)?, d)))
         .collect();
     let xr = span(&pts.iter().map(|p| p.0).collect::<Vec<_>>());
-    sweep_pareto::draw(r, &pts, xr, area).map_err(SweepPlotError::Draw)
+    super::pareto::draw(r, &pts, xr, area).map_err(SweepPlotError::Draw)
 }
 
 /// Heat map over the two fields of a grid: cells by level index, coloured

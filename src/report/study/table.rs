@@ -5,7 +5,7 @@ use std::fmt::Write;
 
 use crate::contact::FrictionLaw;
 use crate::dof::Dof;
-use crate::report::study_text::{
+use crate::report::study::text::{
     bounds_text, detail, interval_methods, sigma_estimates, sigma_table, varied,
 };
 use crate::report::table::{Cell, Column, Table, cells};

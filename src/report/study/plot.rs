@@ -32,8 +32,29 @@ use plotters::style::RGBColor;
 use serde::{Deserialize, Serialize};
 
 use crate::dof::Dof;
+use crate::study::StudyError;
 use crate::study::stats::ConvergencePoint;
-use crate::study::{Result, StudyError};
+
+/// A plot that cannot be drawn.
+#[derive(Debug, thiserror::Error)]
+pub enum PlotError {
+    #[error("nothing to plot: {0}")]
+    NothingToPlot(String),
+    /// NaN or infinity among the values to plot.
+    #[error("non-finite value in {what}")]
+    NonFinite { what: String },
+    /// Series that do not fit together (lengths, ...).
+    #[error("invalid parameter: {0}")]
+    InvalidParameter(String),
+    /// Error reported by the plotting backend.
+    #[error("plotting failed: {0}")]
+    Backend(String),
+    /// The statistics plotted could not be formed.
+    #[error(transparent)]
+    Study(#[from] StudyError),
+}
+
+pub type Result<T> = std::result::Result<T, PlotError>;
 
 /// Sigma of one variant, per DOF in the order of [`Dof::ALL`], in nm and nrad.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -106,8 +127,8 @@ pub(crate) fn legend_room(entries: usize, plot_px: f64) -> f64 {
     1.0 / (1.0 - frac)
 }
 
-pub(crate) fn plot_err<E: std::fmt::Display>(e: E) -> StudyError {
-    StudyError::Plot(e.to_string())
+pub(crate) fn plot_err<E: std::fmt::Display>(e: E) -> PlotError {
+    PlotError::Backend(e.to_string())
 }
 
 pub(crate) fn check_finite<'a>(
@@ -117,7 +138,7 @@ pub(crate) fn check_finite<'a>(
     if values.into_iter().all(|v| v.is_finite()) {
         Ok(())
     } else {
-        Err(StudyError::NonFinite { what: what.into() })
+        Err(PlotError::NonFinite { what: what.into() })
     }
 }
 
@@ -128,7 +149,7 @@ pub(crate) fn headroom(max: f64) -> Result<f64> {
     if top.is_finite() {
         Ok(top)
     } else {
-        Err(StudyError::NonFinite {
+        Err(PlotError::NonFinite {
             what: "axis range (values too large)".into(),
         })
     }

@@ -4,13 +4,13 @@
 //! design points). Labels are placed ([`place_labels`]) so that none
 //! overlaps another label or a marker and none leaves the plot; a label
 //! pushed away from its point is joined to it by a thin line. The data
-//! (which designs, where) come from `report::sweep_plot`.
+//! (which designs, where) come from `report::sweep::plot`.
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use crate::explore::{DesignReport, SweepReport};
-use crate::report::plot::color;
+use crate::report::study::plot::color;
 
 /// Label font size [px] and the width of one of its characters (digits
 /// and `#` of a sans-serif font, rounded up) [px].

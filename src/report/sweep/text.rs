@@ -5,7 +5,7 @@ use std::fmt::Write;
 use crate::dof::nano;
 use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
-use crate::report::study_text::{
+use crate::report::study::text::{
     estimates, interval_methods, point_csv_rows, sigma_cells, sigma_columns, truncate,
 };
 use crate::report::table::{Cell, Column, Table, cells};

@@ -7,8 +7,8 @@ use std::path::Path;
 use plotters::prelude::*;
 use thiserror::Error;
 
-use super::atomic::{WriteError, write_file};
-use super::calibration::PredictionReport;
+use crate::output::atomic::{WriteError, write_file};
+use super::PredictionReport;
 use crate::dof::{Dof, nano};
 
 /// The plot could not be drawn or written.
@@ -84,7 +84,7 @@ pub fn plot_predictions(
         let title = format!(
             "{}; {} calibrated on {}",
             report.study().produced_by(),
-            super::calibration::parameters_summary(&report.calibration),
+            super::parameters_summary(&report.calibration),
             report.calibration.scene
         );
         let root = root

@@ -6,6 +6,7 @@ use serde::Serialize;
 
 use crate::assembly::Coupling;
 use crate::dof::{Dof, nano};
+use crate::scene::Scene;
 use crate::report::table::{Cell, Column, Table, cells};
 use crate::solve::{ContactResult, PointPose, Seating, SeatingPath};
 
@@ -51,39 +52,42 @@ pub struct RunReport {
 }
 
 impl RunReport {
+    /// The report of `seating` with static coefficients `mu` of `scene`
+    /// (assembled as `coupling`), against its `nominal` seating.
     pub fn new(
-        coupling: &Coupling,
+        (scene, coupling): (&Scene, &Coupling),
         mu: &[f64],
         seating: &Seating,
         nominal: &Seating,
         solver: &str,
     ) -> Self {
-        let points: Vec<PointReport> = coupling
-            .scene
+        let at = seating.pose();
+        let points: Vec<PointReport> = scene
             .evaluation_points
             .iter()
             .map(|p| PointReport {
                 name: p.name.clone(),
                 position_m: [p.position.x, p.position.y, p.position.z],
-                pose: PointPose::between(&coupling.touching_pose, &seating.pose, &p.position),
-                pose_rel_nominal: PointPose::between(&nominal.pose, &seating.pose, &p.position),
+                pose: PointPose::between(&coupling.touching_pose, &at, &p.position),
+                pose_rel_nominal: PointPose::between(&nominal.pose(), &at, &p.position),
             })
             .collect();
+        let seated = &seating.seated;
         RunReport {
             kinrepro_version: crate::study::provenance::VERSION.to_string(),
             schema_version: crate::study::provenance::SCHEMA_VERSION,
-            scene: coupling.scene.file.clone(),
-            name: coupling.scene.name.clone(),
+            scene: scene.file.clone(),
+            name: scene.name.clone(),
             solver: solver.to_string(),
             mu_static: mu.to_vec(),
             pose: points[0].pose,
             pose_rel_nominal: points[0].pose_rel_nominal,
             points,
             contacts: seating.contacts.clone(),
-            increments: seating.increments,
-            newton_iterations: seating.newton_iterations,
-            path_error: seating.path_error,
-            seating_path: seating.path,
+            increments: seated.increments,
+            newton_iterations: seated.newton_iterations,
+            path_error: seated.path_error,
+            seating_path: seated.path,
             not_evaluated: Vec::new(),
         }
     }
@@ -173,7 +177,7 @@ impl RunReport {
             .contacts
             .iter()
             .map(|c| c.safety_factor_left_out.as_slice());
-        for note in crate::report::safety::left_out_notes(left_out) {
+        for note in crate::report::contact::safety::left_out_notes(left_out) {
             let _ = writeln!(s, "{note}");
         }
     }

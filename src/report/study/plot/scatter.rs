@@ -4,7 +4,7 @@
 use plotters::prelude::*;
 
 use super::{VariantScatter, check_finite, color, headroom, plot_err};
-use crate::study::{Result, StudyError};
+use super::{PlotError, Result};
 
 /// An SVG with one square panel per variant and evaluation point (grid),
 /// captioned `variant · point (n samples)`, all with the same symmetric axes
@@ -12,7 +12,7 @@ use crate::study::{Result, StudyError};
 /// Panels of one variant share its colour.
 pub fn xy_scatter_svg(data: &[VariantScatter]) -> Result<String> {
     if data.is_empty() {
-        return Err(StudyError::NothingToPlot("no variants".into()));
+        return Err(PlotError::NothingToPlot("no variants".into()));
     }
     check_finite(
         data.iter()

@@ -13,8 +13,22 @@
 use std::path::Path;
 
 use crate::dof::Dof;
-use crate::report::html::HtmlError;
+
 use crate::study::VariantReport;
+
+/// A reference file that cannot be read or holds a bad row.
+#[derive(Debug, thiserror::Error)]
+pub enum ReferenceError {
+    #[error("{file}:{line}: {field}: {reason}")]
+    Row {
+        file: String,
+        line: usize,
+        field: String,
+        reason: String,
+    },
+    #[error("{file}: {reason}")]
+    File { file: String, reason: String },
+}
 
 /// The header a reference file must have.
 pub fn reference_header() -> Vec<String> {
@@ -66,8 +80,8 @@ pub fn unshown<'a>(rows: &'a [ReferenceRow], variants: &[&VariantReport]) -> Vec
 }
 
 /// Parse reference text; `file` names it in errors.
-pub fn parse_reference(text: &str, file: &str) -> Result<Vec<ReferenceRow>, HtmlError> {
-    let err = |line: usize, field: &str, reason: String| HtmlError::Reference {
+pub fn parse_reference(text: &str, file: &str) -> Result<Vec<ReferenceRow>, ReferenceError> {
+    let err = |line: usize, field: &str, reason: String| ReferenceError::Row {
         file: file.to_string(),
         line,
         field: field.to_string(),
@@ -108,8 +122,8 @@ const MAX_REFERENCE: [f64; 2] = [1e6, 1e7];
 fn reference_row(
     r: &crate::delimited::Record,
     names: &[String],
-    err: &dyn Fn(usize, &str, String) -> HtmlError,
-) -> Result<ReferenceRow, HtmlError> {
+    err: &dyn Fn(usize, &str, String) -> ReferenceError,
+) -> Result<ReferenceRow, ReferenceError> {
     let f = &r.cells;
     if f.len() != names.len() {
         let reason = format!("{} fields, the header has {}", f.len(), names.len());
@@ -143,9 +157,9 @@ fn reference_row(
 }
 
 /// Read and parse a reference file.
-pub fn load_reference(path: &Path) -> Result<Vec<ReferenceRow>, HtmlError> {
+pub fn load_reference(path: &Path) -> Result<Vec<ReferenceRow>, ReferenceError> {
     let file = path.display().to_string();
-    let text = crate::input::read_to_string(path).map_err(|e| HtmlError::Input {
+    let text = crate::input::read_to_string(path).map_err(|e| ReferenceError::File {
         file: file.clone(),
         reason: format!("cannot read the file: {e}"),
     })?;

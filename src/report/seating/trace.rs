@@ -15,6 +15,7 @@
 use std::io::Write;
 
 use crate::assembly::Coupling;
+use crate::scene::Scene;
 use crate::dof::Dof;
 use crate::report::printable::printable;
 use crate::solve::PointPose;
@@ -33,14 +34,14 @@ fn io(e: csv::Error) -> std::io::Error {
 }
 
 impl<W: Write> TraceWriter<W> {
-    /// Write the provenance line and the header for `coupling` and return
-    /// the writer.
-    pub fn new(mut out: W, coupling: &Coupling) -> std::io::Result<Self> {
+    /// Write the provenance line and the header for `scene` assembled as
+    /// `coupling` and return the writer.
+    pub fn new(mut out: W, scene: &Scene, coupling: &Coupling) -> std::io::Result<Self> {
         writeln!(
             out,
             "# kinrepro {VERSION} (output schema {SCHEMA_VERSION}), solver dynamic, one seating of {} ({})",
-            printable(&coupling.scene.file),
-            printable(&coupling.scene.name)
+            printable(&scene.file),
+            printable(&scene.name)
         )?;
         let mut out = csv::Writer::from_writer(out);
         let mut head = vec!["time_s".to_string(), "load_fraction".to_string()];
@@ -53,7 +54,7 @@ impl<W: Write> TraceWriter<W> {
         out.write_record(&head).map_err(io)?;
         Ok(TraceWriter {
             out,
-            point: coupling.scene.evaluation_points[0].position,
+            point: scene.evaluation_points[0].position,
             touching: coupling.touching_pose,
         })
     }

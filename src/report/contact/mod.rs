@@ -1,4 +1,11 @@
-//! The table printed by `kinrepro contact`.
+//! One contact pair rendered: the table printed by `kinrepro contact` and
+//! its load history's CSV (here), Hertz's validity at a load
+//! ([`validity`]), the notes on what a safety factor leaves out
+//! ([`safety`]) and the FE check of the Hertz law ([`validate_hertz`]).
+
+pub mod safety;
+pub mod validate_hertz;
+pub mod validity;
 
 use std::fmt::Write;
 

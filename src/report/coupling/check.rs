@@ -3,18 +3,19 @@
 use std::fmt::Write;
 
 use crate::assembly::Coupling;
+use crate::scene::Scene;
 use crate::assembly::constraint::{analyse, friction_limit, frictionless_preload_forces};
 use crate::contact::stress::contact_stress;
-use crate::report::preload;
+use crate::report::coupling::preload;
 use crate::report::table::{Table, cells};
 
 /// What the friction limit means for this scene, given why it cannot seat
 /// (`cannot_seat`, the verdict of `study::verdict::cannot_seat`), if it
 /// cannot; empty below the limit.
-pub fn seating_note(c: &Coupling, cannot_seat: Option<&str>) -> String {
-    let f = &c.scene.friction;
+pub fn seating_note(scene: &Scene, c: &Coupling, cannot_seat: Option<&str>) -> String {
+    let f = &scene.friction;
     let mu_max = f.mu_static + f.spread;
-    let limit = friction_limit(c).mu_limit;
+    let limit = friction_limit(c, &scene.preload).mu_limit;
     if let Some(reason) = cannot_seat {
         return format!(
             "  CANNOT SEAT: {reason}; a study of it exits non-zero (its scatter is not a result)\n"
@@ -28,14 +29,14 @@ pub fn seating_note(c: &Coupling, cannot_seat: Option<&str>) -> String {
     )
 }
 
-/// Summary of one assembled scene: contacts, constraint status, friction limit.
-pub fn check_summary(c: &Coupling) -> String {
-    let s = &c.scene;
+/// Summary of one scene assembled as `c`: contacts, constraint status,
+/// friction limit.
+pub fn check_summary(s: &Scene, c: &Coupling) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "{}  ({})", s.file, s.name);
     let report = analyse(c);
     let _ = writeln!(out, "  constraint: {}", report.describe());
-    let limit = friction_limit(c);
+    let limit = friction_limit(c, &s.preload);
     let limit_text = if limit.mu_limit.is_finite() {
         format!(
             "mu < {:.4} (contact {} is the first that can stay open; polyhedral cone: true limit within -{:.2} %)",
@@ -57,14 +58,14 @@ pub fn check_summary(c: &Coupling) -> String {
         s.friction.tangential_law
     );
     out.push_str(&preload::force_lines(&s.preload, "    "));
-    contact_rows(&mut out, c);
+    contact_rows(&mut out, s, c);
     out
 }
 
 /// One row per contact at the frictionless preload forces: geometry,
 /// moduli, peak stresses and safety factors, with the notes.
-fn contact_rows(out: &mut String, c: &Coupling) {
-    let forces = frictionless_preload_forces(c);
+fn contact_rows(out: &mut String, s: &Scene, c: &Coupling) {
+    let forces = frictionless_preload_forces(c, &s.preload);
     let mut t = Table::new(">#; >ball; <pair; >normal (x, y, z); >Rx, Ry [mm]; >E* [GPa]:.2; >G* [GPa]:.2; >F_n(mu=0) [N]:.4; >p0 [MPa]:.2; >tau_max [MPa]:.2; >SF_p:.2; >SF_tau:.2; >SF:.2")
     .indent(2);
     let mut left_out = Vec::new();
@@ -94,7 +95,7 @@ fn contact_rows(out: &mut String, c: &Coupling) {
         out,
         "  p0, tau_max (subsurface shear on the contact axis: closed form for circles, quadrature for ellipses) and safety factors SF = allowable / actual at the frictionless preload forces; \"-\": no allowable given"
     );
-    for note in crate::report::safety::left_out_notes(left_out.iter().map(Vec::as_slice)) {
+    for note in crate::report::contact::safety::left_out_notes(left_out.iter().map(Vec::as_slice)) {
         let _ = writeln!(out, "  {note}");
     }
     for (i, k) in c.contacts.iter().enumerate() {

@@ -4,7 +4,7 @@ use plotters::prelude::*;
 
 use super::{ConvergenceSeries, check_finite, color, headroom, legend_room, plot_err};
 use crate::dof::Dof;
-use crate::study::{Result, StudyError};
+use super::{PlotError, Result};
 
 /// An SVG of sigma of the first k samples against k: one panel per DOF that
 /// has series (in the order of [`Dof::ALL`]; three per row),
@@ -12,7 +12,7 @@ use crate::study::{Result, StudyError};
 /// first appearance), the legend in the first panel.
 pub fn convergence_svg(data: &[ConvergenceSeries]) -> Result<String> {
     if data.iter().all(|s| s.points.is_empty()) {
-        return Err(StudyError::NothingToPlot("no convergence points".into()));
+        return Err(PlotError::NothingToPlot("no convergence points".into()));
     }
     check_finite(
         data.iter().flat_map(|s| s.points.iter().map(|p| &p.sigma)),

@@ -3,7 +3,7 @@
 
 use std::fmt::Write;
 
-use crate::report::run::{pose_cells, pose_table};
+use crate::report::seating::run::{pose_cells, pose_table};
 use crate::report::table::{Table, cells};
 
 use nalgebra::Vector3;
@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use crate::analysis::load::Envelope;
 use crate::analysis::stiffness::CouplingStiffness;
-use crate::assembly::Coupling;
+use crate::scene::Scene;
 use crate::solve::quasistatic::{ExternalLoad, LIFT_OFF_RATIO, LoadEvent, LoadPath};
 use crate::solve::{ContactResult, PointPose, Seating};
 
@@ -71,9 +71,10 @@ fn rows(m: &nalgebra::Matrix6<f64>) -> [[f64; 6]; 6] {
 }
 
 impl StiffnessReport {
-    /// `points`: (name, body point); the matrix is taken at the seated position.
+    /// `points`: (name, body point); the matrix is taken at the seated
+    /// position. `scene` names the scene.
     pub fn new(
-        coupling: &Coupling,
+        scene: &Scene,
         mu: &[f64],
         seating: &Seating,
         k: &CouplingStiffness,
@@ -82,7 +83,7 @@ impl StiffnessReport {
         let pts = points
             .iter()
             .map(|(name, p)| {
-                let q = seating.pose.apply(p);
+                let q = seating.pose().apply(p);
                 let m = k.matrix_at(&q);
                 let c = k
                     .compliance_at(&q)
@@ -107,8 +108,8 @@ impl StiffnessReport {
             })
             .collect::<Result<Vec<_>, ReportError>>()?;
         Ok(StiffnessReport {
-            scene: coupling.scene.file.clone(),
-            name: coupling.scene.name.clone(),
+            scene: scene.file.clone(),
+            name: scene.name.clone(),
             mu_static: mu.to_vec(),
             points: pts,
             contacts: k
@@ -254,7 +255,7 @@ fn lifted_off(path: &LoadPath, seating: &Seating) -> Vec<bool> {
 
 impl LoadReport {
     pub fn new(
-        coupling: &Coupling,
+        scene: &Scene,
         mu: &[f64],
         seating: &Seating,
         load: &ExternalLoad,
@@ -264,8 +265,8 @@ impl LoadReport {
     ) -> Self {
         let v = |x: &Vector3<f64>| [x.x, x.y, x.z];
         LoadReport {
-            scene: coupling.scene.file.clone(),
-            name: coupling.scene.name.clone(),
+            scene: scene.file.clone(),
+            name: scene.name.clone(),
             mu_static: mu.to_vec(),
             force_n: v(&load.force),
             point_m: v(&load.point),
@@ -277,7 +278,7 @@ impl LoadReport {
                 .map(|(name, p)| DeflectionReport {
                     name: name.clone(),
                     position_m: v(p),
-                    deflection: PointPose::between(&seating.pose, &path.pose, p),
+                    deflection: PointPose::between(&seating.pose(), &path.pose, p),
                 })
                 .collect(),
             contacts: path.contacts.clone(),

@@ -7,13 +7,13 @@
 use std::path::Path;
 
 use crate::dof::{Dof, nano};
-use crate::report::html::reference::ReferenceRow;
-use crate::report::plot::{
+use crate::report::study::reference::ReferenceRow;
+use crate::report::study::plot::{
     ConvergenceSeries, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
     xy_scatter_svg,
 };
-use crate::report::study_text::truncate;
-use crate::study::StudyError;
+use crate::report::study::text::truncate;
+use crate::report::study::plot::PlotError;
 use crate::study::runner::INTERCHANGE_PREFIX;
 use crate::study::stats::sigma_convergence;
 use crate::study::{PointStats, VariantReport};
@@ -100,7 +100,7 @@ fn scatter(variants: &[&VariantReport], interchange: bool) -> Vec<VariantScatter
 
 /// Sigma of the first k samples for all six DOFs of every re-seating
 /// evaluation point.
-fn convergence(variants: &[&VariantReport]) -> Result<Vec<ConvergenceSeries>, StudyError> {
+fn convergence(variants: &[&VariantReport]) -> Result<Vec<ConvergenceSeries>, PlotError> {
     let (mut out, x) = (Vec::new(), format!("/{}", Dof::X.si_key()));
     for v in variants.iter().filter(|v| !v.records.is_empty()) {
         let starts: Vec<(usize, &str)> = v
@@ -132,7 +132,7 @@ fn convergence(variants: &[&VariantReport]) -> Result<Vec<ConvergenceSeries>, St
 pub fn study_charts(
     variants: &[&VariantReport],
     references: &[ReferenceRow],
-) -> Result<Vec<Chart>, StudyError> {
+) -> Result<Vec<Chart>, PlotError> {
     let full: Vec<&VariantReport> = variants
         .iter()
         .copied()
