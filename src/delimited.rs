@@ -6,6 +6,8 @@
 //! comma, semicolon or tab: the one of the three the first record holds
 //! most of (a comma on a tie or when there is none), unless given.
 
+use crate::param::{Param, ParamError};
+
 /// One record: its line in the file (1-based), the line as written
 /// (trimmed) and its cells.
 #[derive(Debug, Clone, PartialEq)]
@@ -24,16 +26,20 @@ pub struct Delimited {
     pub records: Vec<Record>,
 }
 
-/// A delimiter by name (`--delimiter`): one ASCII character other than `"`
+/// A delimiter by name (`delimiter`): one ASCII character other than `"`
 /// and `#`, or `tab` (also `\t`), `comma`, `semicolon`.
-pub fn delimiter_named(s: &str) -> Result<u8, String> {
+pub fn delimiter_named(s: &str) -> Result<u8, ParamError> {
     match s {
         "tab" | "\\t" | "\t" => Ok(b'\t'),
         "comma" => Ok(b','),
         "semicolon" => Ok(b';'),
         _ if s.len() == 1 && s.is_ascii() && s != "\"" && s != "#" => Ok(s.as_bytes()[0]),
-        _ => Err(format!(
-            "--delimiter `{s}`: give one character such as `,` or `;`, or `tab` (not `\"` or `#`)"
+        _ => Err(ParamError::new(
+            Param::Delimiter,
+            format!(
+                "{} `{s}`: give one character such as `,` or `;`, or `tab` (not `\"` or `#`)",
+                Param::Delimiter
+            ),
         )),
     }
 }

@@ -1,6 +1,6 @@
-//! The library's top-level error: reading and assembling a scene file, with
-//! the file it concerns, for the CLI to print before exiting non-zero. Each
-//! layer below has its own typed error; the CLI's `CliError` wraps them all.
+//! The library's top-level error: reading and assembling a scene, with the
+//! file it concerns, for a front end to print. Each layer below has its own
+//! typed error.
 
 use std::path::Path;
 
@@ -21,11 +21,23 @@ pub enum Error {
     },
 }
 
-/// Read a scene file, validate it and assemble the coupling.
-pub fn read_coupling(path: &Path) -> Result<Coupling, Error> {
-    let scene = Scene::load(path)?;
-    Coupling::new(&scene).map_err(|source| Error::Assembly {
-        file: scene.file.clone(),
-        source,
-    })
+/// Read a scene file, validate it and assemble its coupling.
+pub fn read_scene(path: &Path) -> Result<(Scene, Coupling), Error> {
+    assembled(Scene::load(path)?)
+}
+
+/// Validate scene text and assemble its coupling; `file` names it.
+pub fn parse_scene(text: &str, file: &str) -> Result<(Scene, Coupling), Error> {
+    assembled(Scene::parse(text, file)?)
+}
+
+/// A validated scene with its coupling.
+fn assembled(scene: Scene) -> Result<(Scene, Coupling), Error> {
+    match Coupling::new(&scene) {
+        Ok(c) => Ok((scene, c)),
+        Err(source) => Err(Error::Assembly {
+            file: scene.file,
+            source,
+        }),
+    }
 }

@@ -261,35 +261,36 @@ pub fn dof_fits(
 pub const MAX_REGION: usize = 100;
 
 /// One fitted parameter as a fit writes it: finite, 0 <= low <= estimate
-/// <= high, a spread above zero, a level in (0, 1).
-fn check_parameter(name: &str, p: &Parameter) -> Result<(), String> {
+/// <= high, a spread above zero, a level in (0, 1); what is wrong, if anything.
+fn check_parameter(name: &str, p: &Parameter) -> Option<String> {
     let at = format!("`parameters.{name}`");
     let (e, lo, hi) = (p.estimate, p.low, p.high);
     if ![e, lo, hi, p.level].iter().all(|v| v.is_finite()) {
-        return Err(format!(
+        return Some(format!(
             "{at}: estimate {e}, low {lo}, high {hi}, level {}: not finite",
             p.level
         ));
     }
     if !(0.0 <= lo && lo <= e && e <= hi) {
-        return Err(format!(
+        return Some(format!(
             "{at}: estimate {e} with interval [{lo}, {hi}]: need 0 <= low <= estimate <= high"
         ));
     }
     for (field, v) in [("estimate", e), ("low", lo), ("high", hi)] {
-        super::params::physical(name, v)
-            .map_err(|r| format!("`parameters.{name}.{field}`: {r}"))?;
+        if let Err(r) = super::params::physical(name, v) {
+            return Some(format!("`parameters.{name}.{field}`: {r}"));
+        }
     }
     if name == "spread" && e <= 0.0 {
-        return Err(format!("{at}: estimate {e}: a calibrated spread is > 0"));
+        return Some(format!("{at}: estimate {e}: a calibrated spread is > 0"));
     }
     if !(p.level > 0.0 && p.level < 1.0) {
-        return Err(format!(
+        return Some(format!(
             "{at}: level {}: need a probability in (0, 1)",
             p.level
         ));
     }
-    Ok(())
+    None
 }
 
 impl Calibration {
@@ -316,8 +317,8 @@ impl Calibration {
         {
             return Err(bad(format!("unknown parameter `{p}` in `parameters`")));
         }
-        for (k, p) in &c.parameters {
-            check_parameter(k, p).map_err(bad)?;
+        if let Some(reason) = c.parameters.iter().find_map(|(k, p)| check_parameter(k, p)) {
+            return Err(bad(reason));
         }
         if c.region.len() > MAX_REGION {
             return Err(bad(format!(

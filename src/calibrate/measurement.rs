@@ -349,13 +349,16 @@ pub(crate) fn reading_out_of_range(dof: usize, v: f64) -> Option<String> {
         .then(|| format!("{v:e} {unit}: a reading of a seated coupling lies within {max} {unit}"))
 }
 
-/// `reason`, with a hint at `--delimiter` if `text` holds a delimiter other
+/// `reason`, with a hint at `delimiter` if `text` holds a delimiter other
 /// than the one the file was split by.
 fn with_hint(reason: String, text: &str) -> String {
     match [',', ';', '\t'].into_iter().find(|d| text.contains(*d)) {
         Some(d) => {
             let d = d.escape_default();
-            format!("{reason} (`{d}` in it: a file separated by `{d}`? see --delimiter)")
+            format!(
+                "{reason} (`{d}` in it: a file separated by `{d}`? see {})",
+                crate::param::Param::Delimiter
+            )
         }
         None => reason,
     }

@@ -128,7 +128,7 @@ impl Param {
 /// within [0, MU_MAX] (spread <= mu_static and mu_static + spread <= MU_MAX
 /// give spread <= MU_MAX / 2), a dynamic ratio in (0, 1] (mu_d never
 /// exceeds mu_s), a finite support compliance >= 0. `Err` says the range.
-pub fn physical(name: &str, v: f64) -> Result<(), String> {
+pub fn physical(name: &str, v: f64) -> Result<(), OutOfRange> {
     let (ok, range) = match Param::from_name(name) {
         Some(Param::Spread) => (
             (0.0..=MU_MAX / 2.0).contains(&v),
@@ -141,8 +141,16 @@ pub fn physical(name: &str, v: f64) -> Result<(), String> {
     if ok {
         Ok(())
     } else {
-        Err(format!("{v} is outside {range}"))
+        Err(OutOfRange { value: v, range })
     }
+}
+
+/// A parameter value outside the range any scene allows.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{value} is outside {range}")]
+pub struct OutOfRange {
+    pub value: f64,
+    pub range: String,
 }
 
 /// Whether spread `s` and mu_static `mu` keep every mu_s in [0, MU_MAX].

@@ -165,7 +165,11 @@ pub enum ContactError {
         r1: f64,
         r2: f64,
     },
-    #[error("the general contact needs the principal radii of both bodies (--radii1, --radii2)")]
+    #[error(
+        "the general contact needs the principal radii of both bodies ({}, {})",
+        crate::param::Param::Radii1,
+        crate::param::Param::Radii2
+    )]
     GeneralNeedsRadii,
     #[error(
         "angle = {0} rad is invalid: the angle between the principal directions must be finite"

@@ -6,7 +6,7 @@
 
 use thiserror::Error;
 
-use super::field::{SweptValue, set};
+use super::field::{SetError, SweptValue, set};
 use super::values::Set;
 use crate::analysis::stiffness::CouplingStiffness;
 use crate::assembly::Coupling;
@@ -96,10 +96,17 @@ pub struct Evaluation {
 
 /// The scene of a design point: `base` with each set field set; a value
 /// the field does not take is the point's invalid reason (`FIELD: reason`).
-pub fn point_file(base: &SceneFile, sets: &[Set], values: &[SweptValue]) -> Result<SceneFile, String> {
+pub fn point_file(
+    base: &SceneFile,
+    sets: &[Set],
+    values: &[SweptValue],
+) -> Result<SceneFile, SetError> {
     let mut file = base.clone();
     for (s, v) in sets.iter().zip(values) {
-        set(&mut file, &s.path, v).map_err(|e| format!("{}: {e}", s.path))?;
+        set(&mut file, &s.path, v).map_err(|reason| SetError {
+            path: s.path.clone(),
+            reason,
+        })?;
     }
     Ok(file)
 }
@@ -109,7 +116,7 @@ pub fn point_file(base: &SceneFile, sets: &[Set], values: &[SweptValue]) -> Resu
 /// its study is `base`'s design and samples in `plan`. Never fails: a bad
 /// point is an [`Outcome`] other than `Ok`.
 pub fn evaluate(
-    point: Result<SceneFile, String>,
+    point: Result<SceneFile, SetError>,
     source: &str,
     label: &str,
     plan: &StudyPlan,
@@ -126,6 +133,7 @@ pub fn evaluate(
         e.outcome = Outcome::Failed("stopped: a stop was requested".into());
         return e;
     }
+    let point = point.map_err(|e| e.to_string());
     let scene = match point.and_then(|f| Scene::from_file(&f, label, source).map_err(invalid)) {
         Ok(s) => s,
         Err(reason) => {

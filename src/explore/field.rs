@@ -126,6 +126,15 @@ pub fn sweepable() -> String {
     all.join(", ")
 }
 
+/// A value the field at `path` does not take (a design point's invalid
+/// reason: `FIELD: reason`).
+#[derive(Debug, Clone, PartialEq, Error)]
+#[error("{path}: {reason}")]
+pub struct SetError {
+    pub path: String,
+    pub reason: FieldError,
+}
+
 /// The kind of the field at `path`, checked against the sweepable fields
 /// and against `scene` (a `coupling` field needs the high-level form, a
 /// material constant a material of that name).

@@ -16,14 +16,18 @@ use std::path::{Path, PathBuf};
 use tempfile::NamedTempFile;
 
 use super::temporaries::Registered;
+use crate::param::Param;
 use thiserror::Error;
 
 /// A file could not be written; names the file and the reason.
 #[derive(Debug, Error)]
 pub enum WriteError {
-    #[error("{path}: exists; not overwritten (pass --force to replace it)")]
+    #[error("{path}: exists; not overwritten (pass {} to replace it)", Param::Force)]
     Exists { path: String },
-    #[error("{path}: is a {kind}, not a regular file; not written (pass --force to write into it)")]
+    #[error(
+        "{path}: is a {kind}, not a regular file; not written (pass {} to write into it)",
+        Param::Force
+    )]
     NotRegular { path: String, kind: &'static str },
     #[error("{path}: cannot write: {reason}")]
     Io { path: String, reason: String },

@@ -72,6 +72,6 @@ pub use options::{StudyOptions, Varied};
 pub use plan::StudyPlan;
 pub use variant::Variant;
 pub use record::{Dofs, PointStats, StudyRecord};
-pub use result::{StudyReport, VariantReport};
+pub use result::{StudyDocument, StudyReport, VariantReport};
 pub use sampling::shard::{Shard, shard_range};
 pub use sampling::{DesignSpec, Sampler, design, sample_range};

@@ -95,9 +95,12 @@ pub struct VariantReport {
     pub records: Vec<StudyRecord>,
 }
 
-/// The whole study document (`--format json`).
+/// The whole study document (`--format json`): the header and one entry
+/// per scene of type `V` ([`StudyReport`]: a study's [`VariantReport`]s; a
+/// prediction's document adds to each its measured sigma:
+/// `report::calibration`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct StudyReport {
+pub struct StudyDocument<V> {
     /// Version of this document's layout (docs/output.md); 0: written before
     /// schema versions existed.
     #[serde(default)]
@@ -116,7 +119,27 @@ pub struct StudyReport {
     #[serde(default)]
     pub vary: Vec<String>,
     pub shard: Shard,
-    pub variants: Vec<VariantReport>,
+    pub variants: Vec<V>,
+}
+
+/// A study's document.
+pub type StudyReport = StudyDocument<VariantReport>;
+
+impl<V> StudyDocument<V> {
+    /// The same header over other entries: `f` of each variant.
+    pub fn map_variants<W>(self, f: impl FnMut(V) -> W) -> StudyDocument<W> {
+        StudyDocument {
+            schema_version: self.schema_version,
+            kinrepro_version: self.kinrepro_version,
+            solver: self.solver,
+            seed: self.seed,
+            sampler: self.sampler,
+            samples: self.samples,
+            vary: self.vary,
+            shard: self.shard,
+            variants: self.variants.into_iter().map(f).collect(),
+        }
+    }
 }
 
 /// The names of what a variation varies ([`Varied::name`]), in the order
@@ -226,7 +249,7 @@ impl StudyReport {
                 }
             }
         }
-        StudyReport {
+        StudyDocument {
             schema_version: SCHEMA_VERSION,
             kinrepro_version: VERSION.to_string(),
             solver,

@@ -31,6 +31,7 @@ use serde::{Deserialize, Serialize};
 
 use super::error::{Result, StudyError};
 use super::rng::{DOMAIN_REPLICATE, splitmix64};
+use crate::param::Param;
 pub use crate::scene::Sampler;
 
 /// Everything a design depends on. Shard files carry it to be validated on merge.
@@ -107,9 +108,13 @@ impl DesignSpec {
         }
         Err(StudyError::InvalidParameter(match self.sampler {
             Sampler::Lhs => format!(
-                "--replicates {r}: an LHS of {n} samples needs a replicate count that divides {n} and leaves at least 2 points per replicate (1 = a single LHS, no interval)"
+                "{}: an LHS of {n} samples needs a replicate count that divides {n} and leaves at least 2 points per replicate (1 = a single LHS, no interval)",
+                Param::Replicates.with(r)
             ),
-            s => format!("--replicates {r}: only an LHS is replicated, not {s}"),
+            s => format!(
+                "{}: only an LHS is replicated, not {s}",
+                Param::Replicates.with(r)
+            ),
         }))
     }
 

@@ -94,10 +94,10 @@ impl SigmaMethod {
             }
             SigmaMethod::Corners => interval::METHOD_NONE_CORNERS.to_string(),
             SigmaMethod::SingleLhs => {
-                "none (single LHS: resampling breaks its strata; use --replicates)".to_string()
+                "none (single LHS: resampling breaks its strata; use 2 or more replicates)".to_string()
             }
             SigmaMethod::IncompleteLhs => {
-                "none (seatings that did not centre leave the LHS strata incomplete; --sampler mc gives an interval)".to_string()
+                "none (seatings that did not centre leave the LHS strata incomplete; a Monte Carlo design gives an interval)".to_string()
             }
         }
     }

@@ -1,5 +1,5 @@
-//! The kinrepro command line: parse and check the flags, call the library,
-//! print. No physics here.
+//! The kinrepro command line: parse the flags, turn them into the
+//! library's values, call the library, print. No physics here.
 
 mod commands;
 mod error;
@@ -12,6 +12,8 @@ use clap::Parser;
 
 fn main() -> ExitCode {
     let cli = flags::Cli::parse();
+    // The library names its parameters; here they are flags.
+    kinrepro::param::set_spelling(flags::spelling);
     let run = signals::install().and_then(|()| commands::dispatch(cli.command));
     if let Some((code, msg)) = signals::received() {
         eprintln!("kinrepro: {msg}");

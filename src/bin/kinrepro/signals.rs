@@ -15,7 +15,7 @@ use kinrepro::output::atomic::{AtomicFile, commit_all};
 use signal_hook::consts::{SIGINT, SIGTERM};
 use signal_hook::iterator::Signals;
 
-use crate::error::CliError;
+use crate::error::Error;
 
 /// Time a run has to unwind after the first signal.
 pub const GRACE: Duration = Duration::from_secs(3);
@@ -27,9 +27,9 @@ static RECEIVED: AtomicI32 = AtomicI32::new(0);
 static COMMITTING: Mutex<()> = Mutex::new(());
 
 /// Handle SIGINT and SIGTERM on a thread of their own.
-pub fn install() -> Result<(), CliError> {
+pub fn install() -> Result<(), Error> {
     let mut signals = Signals::new([SIGINT, SIGTERM])
-        .map_err(|e| CliError::Usage(format!("cannot handle signals: {e}")))?;
+        .map_err(|e| Error::new(format!("cannot handle signals: {e}")))?;
     std::thread::spawn(move || {
         for sig in signals.forever() {
             if RECEIVED
@@ -77,10 +77,10 @@ pub fn received() -> Option<(u8, String)> {
 
 /// Rename `files` into place, all of them, or none once a stop was asked
 /// for; returns their paths.
-pub fn commit(files: Vec<AtomicFile>) -> Result<Vec<String>, CliError> {
+pub fn commit(files: Vec<AtomicFile>) -> Result<Vec<String>, Error> {
     let _hold = COMMITTING.lock();
     if kinrepro::cancel::requested() {
-        return Err(CliError::Interrupted);
+        return Err(Error::new("interrupted"));
     }
     Ok(commit_all(files)?)
 }

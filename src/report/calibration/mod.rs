@@ -1,15 +1,18 @@
 //! Text and JSON of `kinrepro calibrate` and `kinrepro predict`
-//! (docs/measurements.md). Every number comes from `calibrate`; nothing
-//! here computes statistics.
+//! (docs/measurements.md), and the plot of predictions ([`plot`]). Every
+//! number comes from `calibrate`; nothing here computes statistics.
 
-use serde_json::{Map, Value, json};
+pub mod plot;
 
-use crate::calibrate::fit::{Calibration, Correlation, DofFit};
+use std::collections::BTreeMap;
+
+use serde::Serialize;
+
+use crate::calibrate::fit::{Calibration, Correlation, DofFit, Parameter};
 use crate::calibrate::predict::Prediction;
 use crate::dof::{Dof, nano};
 use crate::report::table::{Cell, Column, Table, cells};
-use crate::study::Shard;
-use crate::study::StudyReport;
+use crate::study::{Shard, StudyDocument, StudyReport, VariantReport};
 use crate::study::provenance::VERSION;
 
 /// The first line of a calibration's table.
@@ -191,22 +194,62 @@ pub struct PredictionReport {
     pub predictions: Vec<Prediction>,
 }
 
-/// Measured values of DOF fits, keyed by [`Dof::key`] (nm, nrad).
-fn measured_block(point: &str, dofs: &[DofFit]) -> Value {
-    let map = |f: &dyn Fn(&DofFit) -> f64| {
-        Value::Object(
-            dofs.iter()
-                .map(|d| (d.dof.key(), json!(nano(f(d)))))
-                .collect::<Map<_, _>>(),
-        )
-    };
-    json!({
-        "point": point,
-        "cycles": dofs.first().map(|d| d.cycles),
-        "sigma": map(&|d| d.measured_sigma),
-        "noise_sigma": map(&|d| d.noise_sigma),
-        "fitted_sigma": map(&|d| d.fitted_sigma),
-    })
+/// Values of DOF fits, keyed by [`Dof::key`] (nm, nrad).
+fn by_dof(dofs: &[DofFit], f: impl Fn(&DofFit) -> f64) -> BTreeMap<String, f64> {
+    dofs.iter().map(|d| (d.dof.key(), nano(f(d)))).collect()
+}
+
+/// The measured sigma of the calibrated design in a prediction (nm, nrad).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MeasuredBlock {
+    pub point: String,
+    pub cycles: Option<usize>,
+    pub sigma: BTreeMap<String, f64>,
+    pub noise_sigma: BTreeMap<String, f64>,
+    pub fitted_sigma: BTreeMap<String, f64>,
+}
+
+impl MeasuredBlock {
+    fn new(point: &str, dofs: &[DofFit]) -> Self {
+        MeasuredBlock {
+            point: point.to_string(),
+            cycles: dofs.first().map(|d| d.cycles),
+            sigma: by_dof(dofs, |d| d.measured_sigma),
+            noise_sigma: by_dof(dofs, |d| d.noise_sigma),
+            fitted_sigma: by_dof(dofs, |d| d.fitted_sigma),
+        }
+    }
+}
+
+/// A prediction's variant: the study's, and the measured sigma where it is
+/// the calibrated design (null otherwise).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PredictedVariant {
+    #[serde(flatten)]
+    pub variant: VariantReport,
+    pub measured: Option<MeasuredBlock>,
+}
+
+/// The `calibration` block of a prediction: the calibration it used.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CalibrationBlock {
+    pub file: String,
+    pub scene: String,
+    pub point: String,
+    pub spread: Option<Parameter>,
+    pub parameters: BTreeMap<String, Parameter>,
+    pub region: Vec<BTreeMap<String, f64>>,
+    pub goodness_of_fit_ok: bool,
+    pub kinrepro_version: String,
+}
+
+/// The document of `predict --format json`: the study schema with the
+/// measured sigma in each variant, and the calibration at the top.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PredictionDocument {
+    #[serde(flatten)]
+    pub study: StudyDocument<PredictedVariant>,
+    pub calibration: CalibrationBlock,
 }
 
 impl PredictionReport {
@@ -218,30 +261,30 @@ impl PredictionReport {
         )
     }
 
-    /// JSON: the study schema, plus `calibration` at the top and `measured`
-    /// in each variant (null unless it is the calibrated design).
-    pub fn json(&self) -> Result<Value, serde_json::Error> {
-        let mut v = serde_json::to_value(self.study())?;
+    /// The document of `predict --format json` ([`PredictionDocument`]).
+    pub fn document(&self) -> PredictionDocument {
         let c = &self.calibration;
-        v["calibration"] = json!({
-            "file": self.calibration_file,
-            "scene": c.scene,
-            "point": c.point,
-            "spread": c.spread(),
-            "parameters": c.parameters,
-            "region": c.region_points(),
-            "goodness_of_fit_ok": c.goodness_of_fit.ok,
-            "kinrepro_version": c.kinrepro_version,
+        let mut measured = self.predictions.iter().map(|p| {
+            p.measured
+                .as_ref()
+                .map(|(point, dofs)| MeasuredBlock::new(point, dofs))
         });
-        if let Some(vars) = v["variants"].as_array_mut() {
-            for (var, p) in vars.iter_mut().zip(&self.predictions) {
-                var["measured"] = p
-                    .measured
-                    .as_ref()
-                    .map_or(Value::Null, |(pt, d)| measured_block(pt, d));
-            }
+        PredictionDocument {
+            study: self.study().map_variants(|variant| PredictedVariant {
+                variant,
+                measured: measured.next().flatten(),
+            }),
+            calibration: CalibrationBlock {
+                file: self.calibration_file.clone(),
+                scene: c.scene.clone(),
+                point: c.point.clone(),
+                spread: c.spread().cloned(),
+                parameters: c.parameters.clone(),
+                region: c.region_points(),
+                goodness_of_fit_ok: c.goodness_of_fit.ok,
+                kinrepro_version: c.kinrepro_version.clone(),
+            },
         }
-        Ok(v)
     }
 
     /// Human table: sigma with its prediction interval per scene, point and

@@ -84,6 +84,9 @@ pub struct HistoryProvenance<'a> {
     pub mu_static: f64,
     pub mu_dynamic: f64,
     pub history_file: &'a str,
+    /// The command that drove it, as its user wrote it (e.g. the CLI's
+    /// `contact --history`).
+    pub command: &'a str,
 }
 
 /// The CSV of `kinrepro contact --history`: `#` provenance lines, then the
@@ -95,8 +98,9 @@ pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
     let [c1, c2] = [p.curvature.radii1, p.curvature.radii2];
     let _ = writeln!(
         s,
-        "# kinrepro {} contact --history {}: {} radii1 {:e},{:e} m radii2 {:e},{:e} m angle {} deg, {} on {}, tangential law {}, mu_s {}, mu_d {}",
+        "# kinrepro {} {} {}: {} radii1 {:e},{:e} m radii2 {:e},{:e} m angle {} deg, {} on {}, tangential law {}, mu_s {}, mu_d {}",
         env!("CARGO_PKG_VERSION"),
+        p.command,
         p.history_file,
         p.shape,
         c1[0],

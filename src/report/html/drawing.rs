@@ -144,7 +144,7 @@ pub fn coupling_views(id: &str, (scene, c): (&Scene, &Coupling), s: &Seating) ->
     out.push_str("</div>\n");
     let _ = writeln!(
         out,
-        "<p class=\"note\">Nominal seating (nominal μ, quasi-static). <span style=\"color:{BALL}\">Blue</span>: moving balls; <span style=\"color:{FIXED}\">grey</span>: fixed elements; <span style=\"color:{CONTACT}\">red dots</span>: contact points, numbered in the order of --mu; <span style=\"color:{NORMAL}\">green</span>: contact normals (unit length, not to scale); <span style=\"color:{FORCE}\">orange</span>: seated contact force on the moving half, N n + T, to the force bar's scale (largest {fmax:.3} N); <span style=\"color:{PRELOAD}\">pink</span>: {}.</p>",
+        "<p class=\"note\">Nominal seating (nominal μ, quasi-static). <span style=\"color:{BALL}\">Blue</span>: moving balls; <span style=\"color:{FIXED}\">grey</span>: fixed elements; <span style=\"color:{CONTACT}\">red dots</span>: contact points, numbered in contact order; <span style=\"color:{NORMAL}\">green</span>: contact normals (unit length, not to scale); <span style=\"color:{FORCE}\">orange</span>: seated contact force on the moving half, N n + T, to the force bar's scale (largest {fmax:.3} N); <span style=\"color:{PRELOAD}\">pink</span>: {}.</p>",
         preload_note(&scene.preload)
     );
     out

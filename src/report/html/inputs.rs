@@ -83,7 +83,7 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
                 v.scene, v.shard
             )));
         }
-        let scene_path = locate(&v.scene, dir).map_err(input)?;
+        let scene_path = locate(&v.scene, dir).map_err(|e| input(e.to_string()))?;
         let text = crate::input::read_to_string(&scene_path)
             .map_err(|e| input(format!("{}: cannot read: {e}", scene_path.display())))?;
         let mut scene = Scene::parse(&text, &v.scene)?;
@@ -134,7 +134,7 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
 /// `..` and symbolic links): a path written in a JSON is data, not a
 /// licence to read any file the user can read. The error names the path,
 /// never the content of a file.
-fn locate(scene: &str, json_dir: &Path) -> Result<PathBuf, String> {
+fn locate(scene: &str, json_dir: &Path) -> Result<PathBuf, Unlocated> {
     let json_dir = if json_dir.as_os_str().is_empty() {
         Path::new(".")
     } else {
@@ -158,11 +158,20 @@ fn locate(scene: &str, json_dir: &Path) -> Result<PathBuf, String> {
         }
         outside = true;
     }
-    Err(if outside {
-        format!(
-            "scene `{scene}` is outside the folders a report reads scenes from (the current folder and the JSON's folder): refused"
-        )
-    } else {
-        format!("scene `{scene}` not found (neither from the current folder nor next to the JSON)")
+    let scene = scene.to_string();
+    Err(match outside {
+        true => Unlocated::Outside(scene),
+        false => Unlocated::NotFound(scene),
     })
+}
+
+/// Why a study's scene file was not read.
+#[derive(Debug, thiserror::Error)]
+enum Unlocated {
+    #[error(
+        "scene `{0}` is outside the folders a report reads scenes from (the current folder and the JSON's folder): refused"
+    )]
+    Outside(String),
+    #[error("scene `{0}` not found (neither from the current folder nor next to the JSON)")]
+    NotFound(String),
 }

@@ -6,6 +6,7 @@
 //! pushed away from its point is joined to it by a thin line. The data
 //! (which designs, where) come from `report::sweep::plot`.
 
+use super::SweepPlotError;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -97,8 +98,8 @@ pub fn draw(
     pts: &[(f64, f64, &DesignReport)],
     (x0, x1): (f64, f64),
     area: &DrawingArea<SVGBackend<'_>, Shift>,
-) -> Result<(), String> {
-    let draw_err = |e: DrawingAreaErrorKind<_>| e.to_string();
+) -> Result<(), SweepPlotError> {
+    let draw_err = |e: DrawingAreaErrorKind<_>| SweepPlotError::Draw(e.to_string());
     let ymax = pts.iter().map(|p| p.1).fold(0.0, f64::max);
     let mut chart = ChartBuilder::on(area)
         .caption(

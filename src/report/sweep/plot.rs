@@ -12,25 +12,16 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
-use thiserror::Error;
 
 use crate::dof::Dof;
 use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
+pub use super::SweepPlotError;
 use crate::output::atomic::{WriteError, check_overwrite, write_file};
 use crate::report::study::plot::color;
 use crate::report::sweep::text::field_label;
 use crate::report::sweep::text::short as tick;
 use crate::study::PointStats;
-
-/// A chart could not be drawn or written.
-#[derive(Debug, Error)]
-pub enum SweepPlotError {
-    #[error("sweep chart: {0}")]
-    Draw(String),
-    #[error(transparent)]
-    Write(#[from] WriteError),
-}
 
 fn draw_err<E: std::fmt::Display>(e: E) -> SweepPlotError {
     SweepPlotError::Draw(e.to_string())
@@ -71,7 +62,7 @@ pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> 
     }
     if !super::status::not_evaluated(r).is_empty() {
         let size = (1200, super::status::height(r));
-        let chart = svg(&foot, size, |a| super::status::draw(r, a).map_err(draw_err))?;
+        let chart = svg(&foot, size, |a| super::status::draw(r, a))?;
         out.push(("sweep_not_evaluated".to_string(), chart));
     }
     Ok(out)
@@ -387,7 +378,7 @@ fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
         .filter_map(|d| Some((r.objectives(d)?.stiffness_min * 1e-6, sigma_max(r, d)?, d)))
         .collect();
     let xr = span(&pts.iter().map(|p| p.0).collect::<Vec<_>>());
-    super::pareto::draw(r, &pts, xr, area).map_err(SweepPlotError::Draw)
+    super::pareto::draw(r, &pts, xr, area)
 }
 
 /// Heat map over the two fields of a grid: cells by level index, coloured

@@ -3,6 +3,7 @@
 //! `sweep_not_evaluated` of `--out DIR` and `--html FILE`, so that a
 //! report of charts names every point missing from them and why.
 
+use super::SweepPlotError;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -44,8 +45,11 @@ pub fn height(r: &SweepReport) -> u32 {
 }
 
 /// Draw the list into `area` (the error: plotters' message).
-pub fn draw(r: &SweepReport, area: &DrawingArea<SVGBackend<'_>, Shift>) -> Result<(), String> {
-    let draw_err = |e: DrawingAreaErrorKind<_>| e.to_string();
+pub fn draw(
+    r: &SweepReport,
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+) -> Result<(), SweepPlotError> {
+    let draw_err = |e: DrawingAreaErrorKind<_>| SweepPlotError::Draw(e.to_string());
     let n = not_evaluated(r).len();
     area.draw(&Text::new(
         format!(

@@ -2,33 +2,81 @@
 //! optionally mu_static, dynamic_ratio, support_compliance) to a measured
 //! scatter, and predict other designs with it (docs/measurements.md).
 
-use kinrepro::calibrate::fit::Calibration;
+use std::path::PathBuf;
+
+use kinrepro::calibrate::fit::{CalibrateOptions, Calibration};
+use kinrepro::calibrate::model::check_model_samples;
+use kinrepro::calibrate::units::parse_noise;
 use kinrepro::calibrate::{Measurement, predict as predict_one};
 use kinrepro::output::atomic::{check_overwrite, write_file};
+use kinrepro::param::Param;
 use kinrepro::report::calibration::{PredictionReport, calibration_table};
-use kinrepro::solve::Method;
+use kinrepro::solve::Solver;
 
-use super::{emit, print_json, read_text, set_jobs};
-use crate::error::CliError;
-use crate::flags::high::{CalibrateInputs, Checked};
-use crate::flags::low_study::{CalibrateArgs, PredictArgs, TextFormat};
+use super::{check_jobs, emit, print_json, read_scene, read_text, set_jobs};
+use crate::error::{Context, Error, Result};
+use crate::flags::{CalibrateArgs, PredictArgs, TextFormat};
 
-pub fn calibrate(o: Checked<CalibrateArgs, CalibrateInputs>) -> Result<(), CliError> {
-    let Checked { args: a, opts } = o;
-    let coupling = kinrepro::error::read_coupling(&a.scene)?;
-    let m = Measurement::load(&a.measured, opts.delimiter)?;
-    if let Some(out) = &a.out {
-        check_overwrite(out, a.force)?;
+/// `kinrepro calibrate`: the measured scene, the measurement with its
+/// delimiter, the calibration's options and the outputs.
+pub struct Calibrate {
+    scene: PathBuf,
+    measured: PathBuf,
+    delimiter: Option<u8>,
+    options: CalibrateOptions,
+    format: TextFormat,
+    out: Option<PathBuf>,
+    force: bool,
+    jobs: Option<usize>,
+}
+
+impl TryFrom<CalibrateArgs> for Calibrate {
+    type Error = Error;
+
+    fn try_from(a: CalibrateArgs) -> Result<Calibrate> {
+        let mut noise = [None; 6];
+        if let Some(n) = &a.noise {
+            parse_noise(n, &mut noise).context("--noise")?;
+        }
+        check_jobs(a.jobs)?;
+        let delimiter = (a.delimiter.as_deref())
+            .map(kinrepro::delimited::delimiter_named)
+            .transpose()?;
+        Ok(Calibrate {
+            options: CalibrateOptions {
+                fit: a.fit.iter().map(|s| s.trim().to_string()).collect(),
+                noise,
+                point: a.point,
+                samples: check_model_samples(Param::ModelSamples, a.model_samples)?,
+                seed: a.seed,
+                solver: Solver::QuasiStatic,
+            },
+            scene: a.scene,
+            measured: a.measured,
+            delimiter,
+            format: a.format,
+            out: a.out,
+            force: a.force,
+            jobs: a.jobs,
+        })
     }
-    set_jobs(a.jobs, opts.options.samples)?;
-    let cal = kinrepro::calibrate::calibrate(&coupling, &m, &opts.options)?;
+}
+
+pub fn calibrate(c: Calibrate) -> Result {
+    let (scene, coupling) = read_scene(&c.scene)?;
+    let m = Measurement::load(&c.measured, c.delimiter)?;
+    if let Some(out) = &c.out {
+        check_overwrite(out, c.force)?;
+    }
+    set_jobs(c.jobs, c.options.samples)?;
+    let cal = kinrepro::calibrate::calibrate(&scene, &coupling, &m, &c.options)?;
     let json = format!("{}\n", serde_json::to_string_pretty(&cal)?);
-    match a.format {
+    match c.format {
         TextFormat::Table => emit(&calibration_table(&cal))?,
         TextFormat::Json => emit(&json)?,
     }
-    if let Some(out) = &a.out {
-        write_file(out, &json, a.force)?;
+    if let Some(out) = &c.out {
+        write_file(out, &json, c.force)?;
         eprintln!("wrote {}", out.display());
     }
     if !cal.goodness_of_fit.ok {
@@ -40,22 +88,32 @@ pub fn calibrate(o: Checked<CalibrateArgs, CalibrateInputs>) -> Result<(), CliEr
     Ok(())
 }
 
-pub fn predict(o: PredictArgs) -> Result<(), CliError> {
+/// `kinrepro predict`, its flags checked.
+pub struct Predict(PredictArgs);
+
+impl TryFrom<PredictArgs> for Predict {
+    type Error = Error;
+
+    fn try_from(a: PredictArgs) -> Result<Predict> {
+        check_model_samples(Param::Samples, a.samples)?;
+        check_jobs(a.jobs)?;
+        Ok(Predict(a))
+    }
+}
+
+pub fn predict(Predict(o): Predict) -> Result {
     let file = o.calibration.display().to_string();
     let cal = Calibration::parse(&read_text(&o.calibration)?, &file)?;
     if let Some(p) = &o.plot {
         check_overwrite(p, o.force)?;
     }
-    let couplings = o
-        .scenes
-        .iter()
-        .map(|p| kinrepro::error::read_coupling(p))
-        .collect::<Result<Vec<_>, _>>()?;
+    let models = o.scenes.iter().map(|p| read_scene(p)).collect::<Result<Vec<_>>>()?;
     set_jobs(o.jobs, o.samples)?;
-    let predictions = couplings
+    let studies = (o.samples, o.seed, Solver::QuasiStatic);
+    let predictions = models
         .iter()
-        .map(|c| predict_one(c, &cal, &file, o.samples, o.seed, Method::default()))
-        .collect::<Result<Vec<_>, _>>()?;
+        .map(|(s, c)| predict_one(s, c, &cal, &file, studies))
+        .collect::<std::result::Result<Vec<_>, _>>()?;
     let report = PredictionReport {
         calibration_file: file,
         calibration: cal,
@@ -63,7 +121,7 @@ pub fn predict(o: PredictArgs) -> Result<(), CliError> {
     };
     match o.format {
         TextFormat::Table => emit(&report.table())?,
-        TextFormat::Json => print_json(&report.json()?)?,
+        TextFormat::Json => print_json(&report.document())?,
     }
     if let Some(p) = &o.plot {
         kinrepro::report::calibration::plot::plot_predictions(p, &report, o.force)?;

@@ -1,35 +1,119 @@
 //! `kinrepro contact`: one contact pair by hand, at a load or through a
 //! load history.
 
-use kinrepro::contact::ContactPair;
+use std::path::{Path, PathBuf};
+
 use kinrepro::contact::history::{HistoryError, LoadStep, drive, parse_history_csv};
-use kinrepro::report::contact::{HistoryProvenance, contact_table, history_csv};
+use kinrepro::contact::{ContactPair, ContactShape, Friction, PairCurvature, TangentialLaw};
+use kinrepro::material::Material;
 use kinrepro::report::contact::validity::{HertzValidity, hertz_validity, radius_hint};
+use kinrepro::report::contact::{HistoryProvenance, contact_table, history_csv};
 
 use super::{emit, number, print_json, read_text};
-use crate::error::CliError;
-use crate::flags::high::{Checked, ContactInputs};
-use crate::flags::low::ContactArgs;
-use kinrepro::contact::{Friction, TangentialLaw};
-use std::path::Path;
+use crate::error::{Context, Error, Result, usage};
+use crate::flags::ContactArgs;
 
-pub fn contact(o: Checked<ContactArgs, ContactInputs>) -> Result<(), CliError> {
-    let Checked { args: a, opts } = o;
-    radius_hints(&a);
-    if let (Some(path), Some(friction)) = (&a.history, opts.history_friction) {
-        if let Some(load) = a.load {
+/// `kinrepro contact`, its flags checked: the pair with its materials, and
+/// the friction and file of `--history`.
+pub struct Contact {
+    pair: ContactPair,
+    load: Option<f64>,
+    history: Option<(PathBuf, Friction, TangentialLaw)>,
+    json: bool,
+}
+
+impl TryFrom<ContactArgs> for Contact {
+    type Error = Error;
+
+    fn try_from(a: ContactArgs) -> Result<Contact> {
+        if let (Some(shape), Some(r2)) = (a.shape, a.radius2)
+            && !shape.needs_radius2()
+        {
+            usage!(
+                "--radius2 {r2}: has no effect with --shape {}, whose fixed body has no radius (leave it out)",
+                shape.name()
+            );
+        }
+        let history = match a.history.clone() {
+            None => None,
+            Some(path) => Some((path, history_friction(&a)?, a.tangential_law)),
+        };
+        let pair = pair(&a)?;
+        radius_hints(&a);
+        Ok(Contact {
+            pair,
+            load: a.load,
+            history,
+            json: a.json,
+        })
+    }
+}
+
+/// `--mu` and `--dynamic-ratio` of `--history`.
+fn history_friction(a: &ContactArgs) -> Result<Friction> {
+    let mu = a.mu.unwrap_or(f64::NAN);
+    if !(mu.is_finite() && mu > 0.0) {
+        usage!("--mu {mu}: the friction coefficient must be positive and finite");
+    }
+    let ratio = a.dynamic_ratio;
+    if !(ratio > 0.0 && ratio <= 1.0) {
+        usage!("--dynamic-ratio {ratio}: must lie in (0, 1]");
+    }
+    Ok(Friction::switch(mu, ratio * mu))
+}
+
+/// The pair of `--shape` with its radii, or of `--radii1` and `--radii2`;
+/// one that is not a point contact is refused, in words.
+fn pair(a: &ContactArgs) -> Result<ContactPair> {
+    let material1 = Material::builtin(&a.material1).context("--material1")?;
+    let material2 = Material::builtin(&a.material2).context("--material2")?;
+    let pair = match (a.shape, &a.radii1, &a.radii2) {
+        (Some(shape), _, _) => {
+            let r1 = a.radius1.unwrap_or(f64::NAN);
+            ContactPair::from_shape(shape, r1, a.radius2, material1, material2)?
+        }
+        (None, Some(r1), Some(r2)) => ContactPair {
+            shape: ContactShape::General,
+            curvature: PairCurvature {
+                radii1: principal_radii("--radii1", r1)?,
+                radii2: principal_radii("--radii2", r2)?,
+                angle: a.angle_deg.unwrap_or(0.0).to_radians(),
+            },
+            material1,
+            material2,
+        },
+        _ => usage!("give --shape with --radius1, or --radii1 with --radii2"),
+    };
+    pair.law()?;
+    Ok(pair)
+}
+
+/// The two principal radii RX,RY [m] of `--radii1` or `--radii2`.
+fn principal_radii(flag: &str, v: &[f64]) -> Result<[f64; 2]> {
+    match v {
+        [x, y] => Ok([*x, *y]),
+        _ => usage!(
+            "{flag} needs two comma-separated principal radii RX,RY [m] (inf: flat, negative: concave), got {} value(s)",
+            v.len()
+        ),
+    }
+}
+
+pub fn contact(c: Contact) -> Result {
+    if let Some((path, friction, law)) = &c.history {
+        if let Some(load) = c.load {
             eprintln!(
                 "warning: --load {load} is not used with --history: the normal loads come from the P_N column of {}",
                 path.display()
             );
         }
-        return history(&opts.pair, path, friction, a.tangential_law);
+        return history(&c.pair, path, *friction, *law);
     }
     // Without --history the flags require --load.
-    let load = a.load.unwrap_or(f64::NAN);
-    let eval = opts.pair.evaluate(load)?;
-    validity(&opts.pair, load).map_err(|e| e.in_context(format!("--load {}", number(load))))?;
-    if a.json {
+    let load = c.load.unwrap_or(f64::NAN);
+    let eval = c.pair.evaluate(load)?;
+    validity(&c.pair, load).context(format!("--load {}", number(load)))?;
+    if c.json {
         print_json(&eval)
     } else {
         emit(&contact_table(&eval))
@@ -38,14 +122,14 @@ pub fn contact(o: Checked<ContactArgs, ContactInputs>) -> Result<(), CliError> {
 
 /// Hertz's validity at `load`: a warning where the numbers are only
 /// indicative, an error where they mean nothing.
-fn validity(pair: &ContactPair, load: f64) -> Result<(), CliError> {
+fn validity(pair: &ContactPair, load: f64) -> Result {
     match hertz_validity(&pair.law()?.hertz, &pair.curvature, load) {
         HertzValidity::Valid => Ok(()),
         HertzValidity::Indicative(w) => {
             eprintln!("warning: {w}");
             Ok(())
         }
-        HertzValidity::Meaningless(why) => Err(CliError::Usage(why)),
+        HertzValidity::Meaningless(why) => Err(Error::new(why)),
     }
 }
 
@@ -70,14 +154,14 @@ fn history(
     path: &Path,
     friction: Friction,
     tangential_law: TangentialLaw,
-) -> Result<(), CliError> {
+) -> Result {
     let file = path.display().to_string();
     let rows = parse_history_csv(&read_text(path)?, &file)?;
     let loads: Vec<LoadStep> = rows.iter().map(|r| r.load).collect();
     let law = pair.law()?;
     // Hertz's half-space assumption is checked at the largest normal load.
     let peak = loads.iter().map(|l| l.normal_force).fold(0.0, f64::max);
-    validity(pair, peak).map_err(|e| e.in_context(format!("{file}: P_N {}", number(peak))))?;
+    validity(pair, peak).context(format!("{file}: P_N {}", number(peak)))?;
     let steps = drive(&law, tangential_law, friction, &loads).map_err(|e| {
         let step = match &e {
             HistoryError::BadNormal { step, .. }
@@ -85,7 +169,7 @@ fn history(
             | HistoryError::Slides { step, .. }
             | HistoryError::NoConvergence { step, .. } => *step,
         };
-        CliError::from(e).in_context(format!("{file}:{}", rows[step - 1].line))
+        Error::new(format!("{file}:{}: {e}", rows[step - 1].line))
     })?;
     let prov = HistoryProvenance {
         shape: pair.shape.name(),
@@ -95,6 +179,7 @@ fn history(
         mu_static: friction.mu_s,
         mu_dynamic: friction.mu_d,
         history_file: &file,
+        command: "contact --history",
     };
     emit(&history_csv(&prov, &steps))
 }

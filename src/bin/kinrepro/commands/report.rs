@@ -4,35 +4,35 @@
 
 use std::path::Path;
 
-use kinrepro::assembly::Coupling;
 use kinrepro::report::html::{HtmlReport, StudyInput, load_reference, load_study, scene_input};
-use kinrepro::study::StudyReport;
+use kinrepro::study::{StudyPlan, StudyReport};
 
-use super::*;
-use crate::error::CliError;
-use crate::flags::low::ReportArgs;
+use super::print_as;
+use crate::error::Result;
+use crate::flags::{Format, ReportArgs};
 
-pub fn report(args: ReportArgs) -> Result<(), CliError> {
+pub fn report(args: ReportArgs) -> Result {
     let studies = args
         .studies
         .iter()
         .map(|p| load_study(p))
-        .collect::<Result<Vec<_>, _>>()?;
+        .collect::<std::result::Result<Vec<_>, _>>()?;
     write_html(studies, args.reference.as_deref(), &args.out, args.force)
 }
 
-/// `study --html FILE`: the report of the study just run.
+/// `study --html FILE`: the report of the study just run under `plan`.
 pub fn study_html(
     report: &StudyReport,
-    couplings: &[Coupling],
+    plan: &StudyPlan,
     reference: Option<&Path>,
     out: &Path,
     force: bool,
-) -> Result<(), CliError> {
-    let scenes = couplings
+) -> Result {
+    let scenes = plan
+        .variants
         .iter()
-        .map(|c| scene_input(c.clone()))
-        .collect::<Result<Vec<_>, _>>()?;
+        .map(|v| scene_input(v.scene.clone(), v.coupling.clone()))
+        .collect::<std::result::Result<Vec<_>, _>>()?;
     let study = StudyInput {
         source: "this run".into(),
         report: report.clone(),
@@ -42,27 +42,12 @@ pub fn study_html(
     write_html(vec![study], reference, out, force)
 }
 
-/// `sweep --html FILE`: the sweep's report (provenance, design points,
-/// charts, base scene); `scene_text`: the base scene file as read.
-pub fn sweep_html(
-    report: &kinrepro::explore::SweepReport,
-    scene_text: &str,
-    base: &kinrepro::assembly::Coupling,
-    out: &Path,
-    force: bool,
-) -> Result<(), CliError> {
-    let html = kinrepro::report::html::sweep::sweep_html(report, scene_text, base)?;
-    kinrepro::output::atomic::write_file(out, &html, force)?;
-    eprintln!("wrote {}", out.display());
-    Ok(())
-}
-
 fn write_html(
     studies: Vec<StudyInput>,
     reference: Option<&Path>,
     out: &Path,
     force: bool,
-) -> Result<(), CliError> {
+) -> Result {
     let references = match reference {
         Some(p) => load_reference(p)?,
         None => Vec::new(),
@@ -93,11 +78,7 @@ fn write_html(
     Ok(())
 }
 
-pub fn materials(format: Format) -> Result<(), CliError> {
+pub fn materials(format: Format) -> Result {
     use kinrepro::report::materials::*;
-    match format {
-        Format::Table => emit(&materials_table()),
-        Format::Csv => emit(&materials_csv()),
-        Format::Json => print_json(&materials_doc()),
-    }
+    print_as(format, &materials_doc(), materials_table, materials_csv)
 }

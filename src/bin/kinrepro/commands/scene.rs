@@ -2,18 +2,20 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::error::{CliError, Context};
+use kinrepro::report::coupling::check::{check_summary, seating_note};
 
-pub fn check(scenes: &[PathBuf]) -> Result<(), CliError> {
+use super::{emit, read_text};
+use crate::error::{Context, Error, Result};
+
+pub fn check(scenes: &[PathBuf]) -> Result {
     let (mut failed, mut unseated) = (0, 0);
     for path in scenes {
-        match kinrepro::error::read_coupling(path) {
-            Ok(c) => {
-                let verdict = kinrepro::study::verdict::cannot_seat(&c, &Default::default())?;
+        match kinrepro::error::read_scene(path) {
+            Ok((s, c)) => {
+                let verdict = kinrepro::study::verdict::cannot_seat(&s, &c, &Default::default())?;
                 unseated += usize::from(verdict.is_some());
-                let note = kinrepro::report::coupling::check::seating_note(&c, verdict.as_deref());
-                let summary = kinrepro::report::coupling::check::check_summary(&c);
-                super::emit(&format!("{summary}{note}\n"))?
+                let note = seating_note(&s, &c, verdict.as_deref());
+                emit(&format!("{}{note}\n", check_summary(&s, &c)))?
             }
             Err(e) => {
                 eprintln!("error: {e}");
@@ -21,29 +23,26 @@ pub fn check(scenes: &[PathBuf]) -> Result<(), CliError> {
             }
         }
     }
+    let total = scenes.len();
     if failed > 0 {
-        return Err(CliError::InvalidScenes {
-            failed,
-            total: scenes.len(),
-        });
+        return Err(Error::new(format!("{failed} of {total} scenes are invalid")));
     }
     // A coupling that cannot seat is valid TOML but not a usable design: a
     // script that checks scenes before a batch run must see it fail.
     if unseated > 0 {
-        return Err(CliError::UnseatableScenes {
-            count: unseated,
-            total: scenes.len(),
-        });
+        return Err(Error::new(format!(
+            "{unseated} of {total} scenes cannot seat (CANNOT SEAT above)"
+        )));
     }
     Ok(())
 }
 
-pub fn expand(scene: &Path) -> Result<(), CliError> {
+pub fn expand(scene: &Path) -> Result {
     let file = scene.display().to_string();
-    let source = super::read_text(scene)?;
+    let source = read_text(scene)?;
     let text = kinrepro::scene::Scene::expand_text(&source, &file)?;
     // The explicit form must assemble too.
     let explicit = kinrepro::scene::Scene::parse(&text, &file)?;
     kinrepro::assembly::Coupling::new(&explicit).context(&file)?;
-    super::emit(&text)
+    emit(&text)
 }

@@ -1,42 +1,79 @@
 //! `kinrepro study` and `kinrepro merge`: reproducibility studies.
 
+use std::path::PathBuf;
+
 use kinrepro::report::study::files::{SamplesCsv, samples_file_name};
-use kinrepro::study::{StudyPlan, StudyReport};
+use kinrepro::study::{StudyOptions, StudyPlan, StudyReport};
 
-use super::*;
-use crate::error::CliError;
-use crate::flags::high::Checked;
-use crate::flags::low::{MergeArgs, StudyArgs};
-use kinrepro::study::request::StudySettings;
+use super::{
+    check_jobs, force_needs_output, print_as, progress, read_json_parts, read_scene, read_text,
+    set_jobs, vector3,
+};
+use crate::error::{Error, Result};
+use crate::flags::groups::OutputFlags;
+use crate::flags::{Format, MergeArgs, StudyArgs};
 
-pub fn study(o: Checked<StudyArgs, StudySettings>) -> Result<(), CliError> {
-    let Checked { args: a, opts } = o;
-    let StudySettings {
-        options: opts,
-        sobol_samples,
-    } = opts;
-    let couplings = a
-        .scenes
-        .iter()
-        .map(|p| kinrepro::error::read_coupling(p))
-        .collect::<Result<Vec<_>, _>>()?;
-    let plan = StudyPlan::new(&couplings, opts, sobol_samples)?;
-    set_jobs(a.jobs, plan.seatings)?;
-    let bar = progress(plan.seatings, &opts.method)?;
+/// `kinrepro study`: the scenes, the library's study options, and what
+/// the command does with the result.
+pub struct Study {
+    scenes: Vec<PathBuf>,
+    options: StudyOptions,
+    jobs: Option<usize>,
+    output: OutputFlags,
+    reference: Option<PathBuf>,
+    allow_unseated: bool,
+}
+
+impl TryFrom<StudyArgs> for Study {
+    type Error = Error;
+
+    fn try_from(a: StudyArgs) -> Result<Study> {
+        force_needs_output(a.output.force, [&a.output.out, &a.output.html])?;
+        check_jobs(a.run.jobs)?;
+        let triple = |flag: &str, v: Option<&[f64]>| {
+            v.map(|v| vector3(flag, Some(v)).map(Into::into))
+                .transpose()
+        };
+        let options = StudyOptions {
+            solver: a.solver,
+            vary: a.vary,
+            offset_bounds: triple("offset-bounds", a.offset_bounds.as_deref())?,
+            tilt_bounds: triple("tilt-bounds", a.tilt_bounds.as_deref())?,
+            sensitivity: a.sensitivity,
+            sobol_samples: a.sensitivity.then_some(a.sobol_samples),
+            ..a.design.options(&a.path, &a.run)
+        };
+        Ok(Study {
+            scenes: a.scenes,
+            options,
+            jobs: a.run.jobs,
+            output: a.output,
+            reference: a.reference,
+            allow_unseated: a.allow_unseated,
+        })
+    }
+}
+
+pub fn study(s: Study) -> Result {
+    let models = s.scenes.iter().map(|p| read_scene(p)).collect::<Result<Vec<_>>>()?;
+    let plan = StudyPlan::new(models, &s.options)?;
+    set_jobs(s.jobs, plan.seatings)?;
+    let bar = progress(plan.seatings, plan.method())?;
+    let out = &s.output;
     // A streamed study writes its per-sample CSV as the samples arrive.
-    let samples_dir = a.out.as_deref().filter(|_| plan.streamed());
+    let samples_dir = out.out.as_deref().filter(|_| plan.streamed());
     if let Some(dir) = samples_dir {
         std::fs::create_dir_all(dir)
-            .map_err(|e| CliError::file(dir.display(), "cannot create the folder: ", e))?;
+            .map_err(|e| Error::new(format!("{}: cannot create the folder: {e}", dir.display())))?;
     }
     let (report, pending_csv) = plan.run(&|| bar.inc(1), |i, v| {
         samples_dir
-            .map(|dir| SamplesCsv::create(&dir.join(samples_file_name(i, v)), v, a.force))
+            .map(|dir| SamplesCsv::create(&dir.join(samples_file_name(i, v)), v, out.force))
             .transpose()
     })?;
     bar.finish_and_clear();
     // Results first: a failed file write must not lose them.
-    print_study(&report, a.format)?;
+    print_study(&report, out.format)?;
     for w in report.unconverged() {
         eprintln!("warning: {w}");
     }
@@ -44,22 +81,26 @@ pub fn study(o: Checked<StudyArgs, StudySettings>) -> Result<(), CliError> {
     let mut staged = pending_csv
         .into_iter()
         .map(SamplesCsv::finish)
-        .collect::<Result<Vec<_>, _>>()?;
+        .collect::<std::result::Result<Vec<_>, _>>()?;
     let streamed = staged.len();
-    if let Some(dir) = &a.out {
-        staged.extend(report.stage_files(dir, a.force, plan.streamed())?);
+    if let Some(dir) = &out.out {
+        staged.extend(report.stage_files(dir, out.force, plan.streamed())?);
     }
     for f in crate::signals::commit(staged)?.iter().skip(streamed) {
         eprintln!("wrote {f}");
     }
-    if let Some(path) = &a.html {
-        super::report::study_html(&report, &couplings, a.reference.as_deref(), path, a.force)?;
+    if let Some(path) = &out.html {
+        super::report::study_html(&report, &plan, s.reference.as_deref(), path, out.force)?;
     }
-    refuse_unseated(&report, a.allow_unseated)
+    refuse_unseated(&report, s.allow_unseated)
+}
+
+fn print_study(report: &StudyReport, format: Format) -> Result {
+    print_as(format, report, || report.table(), || report.csv())
 }
 
 /// A study whose coupling cannot seat fails unless `--allow-unseated`.
-fn refuse_unseated(report: &StudyReport, allow: bool) -> Result<(), CliError> {
+fn refuse_unseated(report: &StudyReport, allow: bool) -> Result {
     let bad = report.cannot_seat();
     if bad.is_empty() {
         return Ok(());
@@ -70,10 +111,13 @@ fn refuse_unseated(report: &StudyReport, allow: bool) -> Result<(), CliError> {
         }
         return Ok(());
     }
-    Err(CliError::CannotSeat(bad.join("; ")))
+    Err(Error::new(format!(
+        "cannot seat: {} (pass --allow-unseated to accept this result)",
+        bad.join("; ")
+    )))
 }
 
-pub fn merge(args: MergeArgs) -> Result<(), CliError> {
+pub fn merge(args: MergeArgs) -> Result {
     let MergeArgs {
         parts,
         format,
@@ -86,7 +130,8 @@ pub fn merge(args: MergeArgs) -> Result<(), CliError> {
         return super::sweep::merge(&parts, first, format);
     }
     let docs = read_json_parts::<StudyReport>(&parts, first, "study")?;
-    let merged = kinrepro::study::merge::merge_parts(docs)?;
+    let merged = kinrepro::study::merge::merge_parts(docs)
+        .map_err(|e| Error::new(format!("merge: {e}")))?;
     print_study(&merged, format)?;
     refuse_unseated(&merged, allow_unseated)
 }

@@ -1,64 +1,92 @@
 //! `kinrepro sweep`: reproducibility, stiffness and safety over a grid or
-//! an LHS of scene fields (library: `explore`; output: `report::sweep::text`, `report::sweep::plot`).
+//! an LHS of scene fields (library: `explore`; output: `report::sweep`).
 
 use std::path::PathBuf;
 
-use kinrepro::explore::run::run;
+use kinrepro::explore::run::{run, study_plan};
 use kinrepro::explore::{DesignKind, SweepReport, SweepSpec, merge_sweeps};
+use kinrepro::study::StudyOptions;
 
-use super::*;
-use crate::error::{CliError, Context};
-use crate::flags::high::Checked;
-use crate::flags::low::SweepArgs;
-use kinrepro::study::runner::StudyOptions;
+use super::{check_jobs, force_needs_output, print_as, progress, read_json_parts, read_text, set_jobs};
+use crate::error::{Context, Error, Result, usage};
+use crate::flags::groups::{DesignArg, OutputFlags};
+use crate::flags::{Format, SweepArgs};
 
-pub fn sweep(o: Checked<SweepArgs, StudyOptions>) -> Result<(), CliError> {
-    let Checked { args: a, opts } = o;
-    let file = a.scene.display().to_string();
-    let text = read_text(&a.scene)?;
-    let base = kinrepro::scene::Scene::parse(&text, &file)?;
-    let base = kinrepro::assembly::Coupling::new(&base).context(&file)?;
-    let design = DesignKind::new(a.points, opts.seed, &base);
-    let spec = SweepSpec::new(&file, &text, &a.sets, design)?;
+/// `kinrepro sweep`: the base scene, the swept fields, each design point's
+/// study options (friction varied, quasi-static) and the outputs.
+pub struct Sweep {
+    scene: PathBuf,
+    sets: Vec<String>,
+    points: Option<usize>,
+    pareto_point: Option<String>,
+    options: StudyOptions,
+    jobs: Option<usize>,
+    output: OutputFlags,
+}
+
+impl TryFrom<SweepArgs> for Sweep {
+    type Error = Error;
+
+    fn try_from(a: SweepArgs) -> Result<Sweep> {
+        force_needs_output(a.output.force, [&a.output.out, &a.output.html])?;
+        match (a.design, a.points) {
+            (DesignArg::Grid, Some(_)) => usage!("--points needs --design lhs"),
+            (DesignArg::Lhs, None) => usage!("--design lhs needs --points N"),
+            _ => check_jobs(a.run.jobs)?,
+        }
+        Ok(Sweep {
+            options: a.study.options(&a.path, &a.run),
+            scene: a.scene,
+            sets: a.sets,
+            points: a.points,
+            pareto_point: a.pareto_point,
+            jobs: a.run.jobs,
+            output: a.output,
+        })
+    }
+}
+
+pub fn sweep(s: Sweep) -> Result {
+    let file = s.scene.display().to_string();
+    let text = read_text(&s.scene)?;
+    let (scene, coupling) = kinrepro::error::parse_scene(&text, &file)?;
+    let design = DesignKind::new(s.points, s.options.seed, &scene);
+    let spec = SweepSpec::new(&file, &text, &s.sets, design)?;
+    let base = (scene.clone(), coupling.clone());
+    let plan = study_plan(scene, coupling, &s.options)?;
     // One tick per seated sample (points that cannot seat tick none).
     let points = spec.points()?.len();
-    let samples = kinrepro::study::runner::design_for(&base, &opts)
-        .context(&file)?
-        .n;
-    let share = opts.shard.range(points).context("--shard")?.len();
-    let seatings = share.saturating_mul(samples);
-    set_jobs(a.jobs, seatings)?;
-    let bar = progress(seatings, &opts.method)?;
-    let report = run(&spec, &base, &opts, a.pareto_point.as_deref(), &|| {
-        bar.inc(1)
-    })?;
+    let shard = s.options.shard;
+    let share = shard.range(points).context("--shard")?.len();
+    let seatings = share.saturating_mul(plan.variants[0].design.n);
+    set_jobs(s.jobs, seatings)?;
+    let bar = progress(seatings, plan.method())?;
+    let report = run(&spec, &plan, shard, s.pareto_point.as_deref(), &|| bar.inc(1))?;
     bar.finish_and_clear();
-    print_sweep(&report, a.format)?;
-    if let Some(dir) = &a.out {
-        for f in kinrepro::report::sweep::plot::write_charts(&report, dir, a.force)? {
+    print_sweep(&report, s.output.format)?;
+    if let Some(dir) = &s.output.out {
+        for f in kinrepro::report::sweep::plot::write_charts(&report, dir, s.output.force)? {
             eprintln!("wrote {f}");
         }
     }
-    if let Some(path) = &a.html {
-        super::report::sweep_html(&report, &text, &base, path, a.force)?;
+    if let Some(path) = &s.output.html {
+        let html = kinrepro::report::html::sweep::sweep_html(&report, &text, (&base.0, &base.1))?;
+        kinrepro::output::atomic::write_file(path, &html, s.output.force)?;
+        eprintln!("wrote {}", path.display());
     }
     // Exit 1 only when no design point was evaluated (all listed with their status).
     Ok(report.check_any_valid()?)
 }
 
-fn print_sweep(report: &SweepReport, format: Format) -> Result<(), CliError> {
-    match format {
-        Format::Table => emit(&report.table()),
-        Format::Csv => emit(&report.csv()),
-        Format::Json => print_json(report),
-    }
+fn print_sweep(report: &SweepReport, format: Format) -> Result {
+    print_as(format, report, || report.table(), || report.csv())
 }
 
 /// `kinrepro merge` of sweep parts (JSON documents with `"document":
 /// "sweep"`); `first`: the first part's text, already read.
-pub fn merge(parts: &[PathBuf], first: String, format: Format) -> Result<(), CliError> {
+pub fn merge(parts: &[PathBuf], first: String, format: Format) -> Result {
     let docs = read_json_parts::<SweepReport>(parts, first, "sweep")?;
-    let merged = merge_sweeps(docs)?;
+    let merged = merge_sweeps(docs).map_err(|e| Error::new(format!("merge: {e}")))?;
     print_sweep(&merged, format)?;
     Ok(merged.check_any_valid()?)
 }

@@ -1,13 +1,81 @@
-//! The command line's flags in two layers (ripgrep's split of low- and
-//! high-level arguments): [`low`] and [`low_study`] are what clap parses,
-//! one struct per verb; [`high`] checks them, once, into the typed options
-//! the commands use ([`high::Checked`]: the arguments and what was made of
-//! them); [`unused`] refuses flags that would have no effect. A flag's value
-//! or a combination of flags is checked nowhere else.
+//! The flags, as clap parses them: one struct per verb ([`verbs`],
+//! [`studies`]), the groups several verbs share ([`groups`], flattened
+//! into each), and the library's enums parsed directly (`Solver`,
+//! `Varied`, `Sampler`). Each command turns its struct into the one value
+//! it runs (`crate::commands`); a flag's value is checked there or by the
+//! library, never twice.
 
-pub mod high;
-pub mod low;
-pub mod low_study;
-pub mod unused;
+pub mod groups;
+pub mod studies;
+pub mod verbs;
 
-pub use low::Cli;
+use clap::{Parser, Subcommand};
+use kinrepro::param::Param;
+
+pub use groups::{Format, TextFormat};
+pub use studies::{CalibrateArgs, PredictArgs, StudyArgs, SweepArgs};
+pub use verbs::*;
+
+#[derive(Parser)]
+#[command(
+    name = "kinrepro",
+    version,
+    about = "Re-seating reproducibility of kinematic couplings"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand)]
+pub enum Command {
+    /// Evaluate one contact pair (Hertz, Mindlin, tau_max) at a load, or drive
+    /// it through a load history (--history).
+    Contact(ContactArgs),
+    /// Load and validate scenes; print contacts, constraint status and friction limit.
+    Check(CheckArgs),
+    /// Seat the coupling once and print pose and contact states.
+    Run(RunArgs),
+    /// Stiffness of the seated coupling: 6x6 matrix, compliance and principal
+    /// stiffnesses at a point (contacts at rest: static friction sticks).
+    Stiffness(StiffnessArgs),
+    /// Apply a force (and moment) after seating, preload held: deflection,
+    /// contact forces and the safe load envelope (first separation or slip).
+    Load(LoadArgs),
+    /// Reproducibility study: seat each scene once per friction sample and
+    /// report the scatter of the pose (Table 2 of the paper).
+    Study(StudyArgs),
+    /// Merge the JSON outputs of sharded studies (or sweeps) into the result of one run.
+    Merge(MergeArgs),
+    /// Sweep scene fields over a grid or an LHS: reproducibility, stiffness,
+    /// safety and friction limit per design point, and the Pareto front.
+    Sweep(SweepArgs),
+    /// Check the Hertz law of every distinct contact pair of the scenes with
+    /// the mini FE solver, at the load the nominal seating reaches.
+    ValidateHertz(ValidateHertzArgs),
+    /// Print the explicit form of a scene (loads back to the same coupling).
+    Expand(ExpandArgs),
+    /// Write one self-contained HTML report of study JSON files.
+    Report(ReportArgs),
+    /// List the built-in materials with E, nu, density, allowable pressure and sources.
+    Materials(MaterialsArgs),
+    /// Fit the friction spread of a scene to a measured re-seating scatter
+    /// (docs/measurements.md) and write a calibration file.
+    Calibrate(CalibrateArgs),
+    /// Predict sigma of other scenes with a calibrated friction spread, with
+    /// a prediction interval.
+    Predict(PredictArgs),
+}
+
+/// A library parameter as the command line writes it: its flag
+/// (`--path-tolerance`), followed by its value where the message gives one.
+pub fn spelling(param: Param, value: Option<&str>) -> String {
+    let flag = match param {
+        Param::Sets => "--set".to_string(),
+        p => format!("--{}", p.name().replace('_', "-")),
+    };
+    match value {
+        None => flag,
+        Some(v) => format!("{flag} {v}"),
+    }
+}

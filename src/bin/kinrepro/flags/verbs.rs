@@ -1,65 +1,14 @@
-//! The low-level arguments: what clap parses, one struct per verb, as
-//! close to the command line as the types allow (numbers, paths, names of
-//! a fixed set). Nothing here checks a value against a range or another
-//! flag; [`super::high`] does that, once, for every verb.
+//! The flags of the verbs that seat a coupling once, look at one contact
+//! or a scene, or render and merge outputs (the verbs that run studies:
+//! [`super::studies`]).
 
 use std::path::PathBuf;
 
-use clap::{Args, Parser, Subcommand, ValueEnum};
+use clap::Args;
 use kinrepro::contact::{ContactShape, TangentialLaw};
+use kinrepro::solve::Solver;
 
-#[derive(Parser)]
-#[command(
-    name = "kinrepro",
-    version,
-    about = "Re-seating reproducibility of kinematic couplings"
-)]
-pub struct Cli {
-    #[command(subcommand)]
-    pub command: Command,
-}
-
-pub use super::low_study::{CalibrateArgs, PredictArgs, StudyArgs, SweepArgs};
-
-#[derive(Subcommand)]
-pub enum Command {
-    /// Evaluate one contact pair (Hertz, Mindlin, tau_max) at a load, or drive
-    /// it through a load history (--history).
-    Contact(ContactArgs),
-    /// Load and validate scenes; print contacts, constraint status and friction limit.
-    Check(CheckArgs),
-    /// Seat the coupling once and print pose and contact states.
-    Run(RunArgs),
-    /// Stiffness of the seated coupling: 6x6 matrix, compliance and principal
-    /// stiffnesses at a point (contacts at rest: static friction sticks).
-    Stiffness(StiffnessArgs),
-    /// Apply a force (and moment) after seating, preload held: deflection,
-    /// contact forces and the safe load envelope (first separation or slip).
-    Load(LoadArgs),
-    /// Reproducibility study: seat each scene once per friction sample and
-    /// report the scatter of the pose (Table 2 of the paper).
-    Study(StudyArgs),
-    /// Merge the JSON outputs of sharded studies (or sweeps) into the result of one run.
-    Merge(MergeArgs),
-    /// Sweep scene fields over a grid or an LHS: reproducibility, stiffness,
-    /// safety and friction limit per design point, and the Pareto front.
-    Sweep(SweepArgs),
-    /// Check the Hertz law of every distinct contact pair of the scenes with
-    /// the mini FE solver, at the load the nominal seating reaches.
-    ValidateHertz(ValidateHertzArgs),
-    /// Print the explicit form of a scene (loads back to the same coupling).
-    Expand(ExpandArgs),
-    /// Write one self-contained HTML report of study JSON files.
-    Report(ReportArgs),
-    /// List the built-in materials with E, nu, density, allowable pressure and sources.
-    Materials(MaterialsArgs),
-    /// Fit the friction spread of a scene to a measured re-seating scatter
-    /// (docs/measurements.md) and write a calibration file.
-    Calibrate(CalibrateArgs),
-    /// Predict sigma of other scenes with a calibrated friction spread, with
-    /// a prediction interval.
-    Predict(PredictArgs),
-}
+use super::groups::{Format, MeshKind, PathFlags};
 
 #[derive(Args)]
 pub struct ContactArgs {
@@ -145,18 +94,11 @@ pub struct RunArgs {
     /// (default: the scene's nominal mu_static everywhere).
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub mu: Option<Vec<f64>>,
-    /// Fixed load increments (quasi-static solver), 1..=100000, instead
-    /// of the load-path error control.
-    #[arg(long)]
-    pub increments: Option<usize>,
-    /// Load-path error control (quasi-static solver, the default): the
-    /// tolerance on the estimated error of the seated pose relative to the
-    /// seating's motion, 1e-9..=1e-2 [default: 1e-5]; excludes --increments.
-    #[arg(long, allow_hyphen_values = true)]
-    pub path_tolerance: Option<f64>,
+    #[command(flatten)]
+    pub path: PathFlags,
     /// Seating solver.
-    #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
-    pub solver: SolverKind,
+    #[arg(long, value_enum, default_value_t = Solver::QuasiStatic)]
+    pub solver: Solver,
     /// Dynamic solver: write the time history (CSV, SI units) to this file
     /// (refused if it exists, unless --force).
     #[arg(long)]
@@ -280,57 +222,4 @@ pub struct MaterialsArgs {
     /// table (GPa, MPa, kg/m^3, with sources) | csv (SI) | json (SI).
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum Format {
-    Table,
-    Csv,
-    Json,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum MeshKind {
-    Default,
-    Coarse,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum VaryKind {
-    /// The six static friction coefficients.
-    Friction,
-    /// The start pose of the moving half (dynamic solver).
-    Start,
-    /// The preload point and direction (scene [variation] bounds).
-    Preload,
-    /// Manufacturing tolerances (scene [variation] bounds): interchangeability.
-    Tolerances,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum SolverKind {
-    /// Quasi-static path following (Newton per load increment).
-    QuasiStatic,
-    /// Seating dynamics with rapier3d-f64 and the compliant contact layer.
-    Dynamic,
-}
-
-impl From<VaryKind> for kinrepro::study::request::Varied {
-    fn from(v: VaryKind) -> Self {
-        match v {
-            VaryKind::Friction => Self::Friction,
-            VaryKind::Start => Self::Start,
-            VaryKind::Preload => Self::Preload,
-            VaryKind::Tolerances => Self::Tolerances,
-        }
-    }
-}
-
-impl From<SolverKind> for kinrepro::study::request::Solver {
-    fn from(s: SolverKind) -> Self {
-        match s {
-            SolverKind::QuasiStatic => Self::QuasiStatic,
-            SolverKind::Dynamic => Self::Dynamic,
-        }
-    }
 }

@@ -1,46 +1,26 @@
-//! The low-level arguments of the verbs that run studies: `study`,
-//! `sweep`, `calibrate` and `predict` (what clap parses; the checks are in
-//! [`super::high`]).
+//! The flags of the verbs that run studies: `study`, `sweep`, `calibrate`
+//! and `predict`.
 
 use std::path::PathBuf;
 
-use clap::{Args, ValueEnum};
+use clap::Args;
 use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED};
-use kinrepro::study::{Sampler, Shard};
+use kinrepro::solve::Solver;
+use kinrepro::study::Varied;
 
-use super::low::{Format, SolverKind, VaryKind};
+use super::groups::{DesignArg, DesignFlags, OutputFlags, PathFlags, RunFlags, TextFormat};
 
 #[derive(Args)]
 pub struct StudyArgs {
     /// Scene files (TOML); the variants are reported side by side.
     #[arg(required = true)]
     pub scenes: Vec<PathBuf>,
-    /// Samples per scene (default: the scene's [study] samples; corners: 2^6).
-    #[arg(long)]
-    pub samples: Option<usize>,
-    /// lhs (space-filling Latin hypercube) | mc (Monte Carlo) | corners (all 2^6 extremes).
-    #[arg(long)]
-    pub sampler: Option<Sampler>,
-    /// Seed of the design (default: the scene's [study] seed).
-    #[arg(long)]
-    pub seed: Option<u64>,
-    /// Worker threads (default: all cores; capped at 4 per core and at the
-    /// number of samples).
-    #[arg(long)]
-    pub jobs: Option<usize>,
-    /// Output: table (nm, nrad) | csv (SI) | json (statistics in nm/nrad, samples in SI).
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
-    /// Also write per-sample CSV files and SVG plots into this directory
-    /// (existing files are refused, unless --force).
-    #[arg(long)]
-    pub out: Option<PathBuf>,
-    /// Replace existing files of --out (and --html).
-    #[arg(long)]
-    pub force: bool,
-    /// Also write the self-contained HTML report of this study to FILE.
-    #[arg(long)]
-    pub html: Option<PathBuf>,
+    #[command(flatten)]
+    pub design: DesignFlags,
+    #[command(flatten)]
+    pub run: RunFlags,
+    #[command(flatten)]
+    pub output: OutputFlags,
     /// Reference values of sigma for the --html report (CSV; see `kinrepro report`).
     #[arg(long, requires = "html")]
     pub reference: Option<PathBuf>,
@@ -48,29 +28,18 @@ pub struct StudyArgs {
     /// the result still says so.
     #[arg(long)]
     pub allow_unseated: bool,
-    /// Run only shard I of N of the samples (1-based, e.g. 3/16); merge the
-    /// JSON outputs with `kinrepro merge`.
-    #[arg(long)]
-    pub shard: Option<Shard>,
-    /// Fixed load increments per seating (quasi-static solver),
-    /// 1..=100000, instead of the load-path error control.
-    #[arg(long)]
-    pub increments: Option<usize>,
-    /// Load-path error control (quasi-static solver, the default): the
-    /// tolerance on the estimated error of the seated pose relative to the
-    /// seating's motion, 1e-9..=1e-2 [default: 1e-5]; excludes --increments.
-    #[arg(long, allow_hyphen_values = true)]
-    pub path_tolerance: Option<f64>,
+    #[command(flatten)]
+    pub path: PathFlags,
     /// Seating solver.
-    #[arg(long, value_enum, default_value_t = SolverKind::QuasiStatic)]
-    pub solver: SolverKind,
+    #[arg(long, value_enum, default_value_t = Solver::QuasiStatic)]
+    pub solver: Solver,
     /// What varies from sample to sample, comma-separated: friction,
     /// preload (point offset and direction tilt, bounds from the scene's
     /// [variation] table), tolerances (manufacturing errors from
     /// [variation], reported separately as interchangeability), start (a
     /// random start pose above the seat; needs --solver dynamic).
-    #[arg(long, value_delimiter = ',', default_value = "friction")]
-    pub vary: Vec<VaryKind>,
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "friction")]
+    pub vary: Vec<Varied>,
     /// Start variation: half-widths of the x and y offset and the largest
     /// height z above the seat [m].
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
@@ -87,23 +56,10 @@ pub struct StudyArgs {
     /// extra seatings for d inputs).
     #[arg(
         long,
-        default_value_t = kinrepro::study::sensitivity::sobol::DEFAULT_BASE_SAMPLES,
+        default_value_t = kinrepro::study::options::DEFAULT_BASE_SAMPLES,
         requires = "sensitivity"
     )]
     pub sobol_samples: usize,
-    /// LHS: number of independent replicates the samples are split into
-    /// (default 5, or the largest divisor of the samples in 2..=5); the
-    /// interval of sigma comes from their spread. 1: a single LHS, no interval.
-    #[arg(long)]
-    pub replicates: Option<usize>,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum DesignArg {
-    /// Every combination of the --set values.
-    Grid,
-    /// A space-filling Latin hypercube of --points points over the ranges.
-    Lhs,
 }
 
 #[derive(Args)]
@@ -126,55 +82,14 @@ pub struct SweepArgs {
     /// objective (default: the scene's first).
     #[arg(long)]
     pub pareto_point: Option<String>,
-    /// Samples per design point (default: the scene's [study] samples).
-    #[arg(long)]
-    pub samples: Option<usize>,
-    /// lhs | mc | corners: the study design of every point.
-    #[arg(long)]
-    pub sampler: Option<Sampler>,
-    /// Seed of the study design (the same for every point) and of an LHS sweep design.
-    #[arg(long)]
-    pub seed: Option<u64>,
-    /// LHS replicates of each point's study (see `study --replicates`).
-    #[arg(long)]
-    pub replicates: Option<usize>,
-    /// Fixed load increments per seating, 1..=100000, instead of the
-    /// load-path error control.
-    #[arg(long)]
-    pub increments: Option<usize>,
-    /// Load-path error control (quasi-static solver, the default): the
-    /// tolerance on the estimated error of the seated pose relative to the
-    /// seating's motion, 1e-9..=1e-2 [default: 1e-5]; excludes --increments.
-    #[arg(long, allow_hyphen_values = true)]
-    pub path_tolerance: Option<f64>,
-    /// Worker threads (capped at 4 per core).
-    #[arg(long)]
-    pub jobs: Option<usize>,
-    /// table (nm, nrad) | csv (SI, long format) | json (docs/output.md).
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
-    /// Write the SVG design charts into this directory.
-    #[arg(long)]
-    pub out: Option<PathBuf>,
-    /// Write the design charts as one self-contained HTML report
-    /// (inline SVG, no network).
-    #[arg(long)]
-    pub html: Option<PathBuf>,
-    /// Replace existing files of --out and --html.
-    #[arg(long)]
-    pub force: bool,
-    /// Evaluate only shard I of N of the design points; merge the JSON
-    /// parts with `kinrepro merge`.
-    #[arg(long)]
-    pub shard: Option<Shard>,
-}
-
-#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum TextFormat {
-    /// Human table (nm, nrad).
-    Table,
-    /// JSON (calibration: SI; predict: the study schema, nm and nrad).
-    Json,
+    #[command(flatten)]
+    pub study: DesignFlags,
+    #[command(flatten)]
+    pub path: PathFlags,
+    #[command(flatten)]
+    pub run: RunFlags,
+    #[command(flatten)]
+    pub output: OutputFlags,
 }
 
 #[derive(Args)]
