@@ -9,12 +9,12 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::calibrate::fit::CalibrateOptions;
 use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED};
 use kinrepro::calibrate::{Measurement, calibrate};
-use kinrepro::solve::Method;
+use kinrepro::solve::Solver;
 
 fn calibration(c: &mut Criterion) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let coupling =
-        kinrepro::error::read_coupling(&root.join("scenes/02_maxwell_pins_steel.toml")).unwrap();
+    let (scene, coupling) =
+        kinrepro::error::read_scene(&root.join("scenes/02_maxwell_pins_steel.toml")).unwrap();
     let m = Measurement::load(&root.join("docs/calibration/measured_02.csv"), None).unwrap();
     let opts = CalibrateOptions {
         fit: vec!["spread".into()],
@@ -22,7 +22,7 @@ fn calibration(c: &mut Criterion) {
         point: None,
         samples: MODEL_SAMPLES,
         seed: MODEL_SEED,
-        method: Method::default(),
+        solver: Solver::QuasiStatic,
     };
     let two = CalibrateOptions {
         fit: vec!["spread".into(), "mu_static".into()],
@@ -31,10 +31,10 @@ fn calibration(c: &mut Criterion) {
     let mut g = c.benchmark_group("calibration");
     g.sample_size(10);
     g.bench_function("scene 02, 50 cycles, fit spread", |b| {
-        b.iter(|| calibrate(&coupling, &m, &opts).unwrap())
+        b.iter(|| calibrate(&scene, &coupling, &m, &opts).unwrap())
     });
     g.bench_function("scene 02, 50 cycles, fit spread,mu_static", |b| {
-        b.iter(|| calibrate(&coupling, &m, &two).unwrap())
+        b.iter(|| calibrate(&scene, &coupling, &m, &two).unwrap())
     });
     g.finish();
 }

@@ -28,7 +28,7 @@ fn many_surfaces(m: usize) -> String {
 }
 
 fn check(c: &mut Criterion) {
-    let base = kinrepro::error::read_coupling(&scene01()).unwrap();
+    let (_, base) = kinrepro::error::read_scene(&scene01()).unwrap();
     let mut group = c.benchmark_group("check");
     group.sample_size(10);
     for m in [1000, 3000, 10000] {

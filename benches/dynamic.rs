@@ -8,9 +8,9 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::solve::dynamic::{DynamicOptions, seat};
 
 fn dynamic_seating(c: &mut Criterion) {
-    let coupling =
-        kinrepro::error::read_coupling(Path::new("scenes/01_maxwell_vgroove_steel.toml")).unwrap();
-    let mu = kinrepro::solve::nominal_mu(&coupling);
+    let (scene, coupling) =
+        kinrepro::error::read_scene(Path::new("scenes/01_maxwell_vgroove_steel.toml")).unwrap();
+    let mu = kinrepro::solve::Load::nominal(&scene);
     let opts = DynamicOptions::default();
     c.bench_function("dynamic seating, scene 01", |b| {
         b.iter(|| seat(black_box(&coupling), black_box(&mu), &opts).unwrap())

@@ -12,7 +12,7 @@ use std::path::Path;
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::assembly::geometry::{contact, parry_shape};
 use kinrepro::solve::quasistatic::{SeatingSetup, Workspace, seat, seat_in};
-use kinrepro::solve::{SeatingPath, SolverOptions};
+use kinrepro::solve::{Load, SeatingPath, SolverOptions};
 use nalgebra::Vector3;
 use parry3d_f64::math::{Pose, Vector};
 use parry3d_f64::query;
@@ -27,15 +27,15 @@ fn seating(c: &mut Criterion) {
         let path = Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("scenes")
             .join(name);
-        let coupling = kinrepro::error::read_coupling(&path).unwrap();
-        let mu = [0.46, 0.53, 0.51, 0.47, 0.545, 0.455];
+        let (scene, coupling) = kinrepro::error::read_scene(&path).unwrap();
+        let mu = Load::nominal(&scene).with_mu(&[0.46, 0.53, 0.51, 0.47, 0.545, 0.455]);
         let opts = SolverOptions::default();
-        let served = seat(&coupling, &mu, &opts).unwrap().path;
+        let served = seat(&coupling, &mu, &opts).unwrap().seated.path;
         assert_eq!(served, SeatingPath::Uniform, "{name}: an increment halved");
         c.bench_function(&format!("quasi-static seating/seat/{name}"), |b| {
             b.iter(|| seat(black_box(&coupling), black_box(&mu), &opts).unwrap())
         });
-        let setup = SeatingSetup::new(&coupling);
+        let setup = SeatingSetup::new(&coupling, &scene.preload);
         let mut ws = Workspace::new();
         c.bench_function(&format!("quasi-static seating/workspace/{name}"), |b| {
             b.iter(|| seat_in(black_box(&setup), black_box(&mu), &opts, &mut ws).unwrap())

@@ -7,9 +7,10 @@ use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::assembly::Coupling;
-use kinrepro::study::Sampler;
-use kinrepro::study::runner::{StudyOptions, output_names, run_chunked, run_variant};
+use kinrepro::scene::Scene;
+use kinrepro::study::runner::{output_names, run_chunked, run_variant};
 use kinrepro::study::stream::StreamStats;
+use kinrepro::study::{Sampler, StudyOptions, StudyPlan};
 
 const SCENES: [&str; 7] = [
     "01_maxwell_vgroove_steel.toml",
@@ -21,8 +22,8 @@ const SCENES: [&str; 7] = [
     "07_kelvin_sic.toml",
 ];
 
-fn load(name: &str) -> Coupling {
-    kinrepro::error::read_coupling(
+fn load(name: &str) -> (Scene, Coupling) {
+    kinrepro::error::read_scene(
         &Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("scenes")
             .join(name),
@@ -38,30 +39,38 @@ fn mc(samples: usize) -> StudyOptions {
     }
 }
 
+/// The plan of the seven scenes under `opts` (checked once, outside the
+/// timed runs).
+fn plan(opts: &StudyOptions) -> StudyPlan {
+    StudyPlan::new(SCENES.iter().map(|n| load(n)).collect(), opts).unwrap()
+}
+
 fn study(c: &mut Criterion) {
-    let couplings: Vec<_> = SCENES.iter().map(|n| load(n)).collect();
     let mut g = c.benchmark_group("study");
     g.sample_size(10);
+    let lhs = plan(&StudyOptions::default());
     g.bench_function("seven scenes x 25 LHS samples", |b| {
         b.iter(|| {
-            for coupling in &couplings {
-                run_variant(coupling, &StudyOptions::default(), &|| {}).unwrap();
+            for v in &lhs.variants {
+                run_variant(&lhs.settings, v, &|| {}).unwrap();
             }
         })
     });
+    let mc2000 = plan(&mc(2000));
     g.bench_function("seven scenes x 2000 MC samples", |b| {
         b.iter(|| {
-            for coupling in &couplings {
-                run_variant(coupling, &mc(2000), &|| {}).unwrap();
+            for v in &mc2000.variants {
+                run_variant(&mc2000.settings, v, &|| {}).unwrap();
             }
         })
     });
-    let scene01 = &couplings[0];
-    let names = output_names(scene01);
+    let streamed = StudyPlan::new(vec![load(SCENES[0])], &mc(100_000)).unwrap();
+    let scene01 = &streamed.variants[0];
+    let names = output_names(&scene01.scene);
     g.bench_function("scene 01 x 10^5 MC samples, streamed", |b| {
         b.iter(|| {
             let mut stats = StreamStats::new(names.len());
-            run_chunked(scene01, &mc(100_000), 8192, &|| {}, &mut |records| {
+            run_chunked(&streamed.settings, scene01, 8192, &|| {}, &mut |records| {
                 stats.push(&records, &names).unwrap();
                 Ok(())
             })

@@ -5,19 +5,14 @@
 use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use kinrepro::explore::run::run;
+use kinrepro::explore::run::{run, study_plan};
 use kinrepro::explore::{DesignKind, SweepSpec};
-use kinrepro::study::Sampler;
-use kinrepro::study::runner::{StudyOptions, Variation};
+use kinrepro::study::{Sampler, Shard, StudyOptions, Varied};
 
 fn sweep(c: &mut Criterion) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/01_maxwell_vgroove_steel.toml");
     let text = std::fs::read_to_string(&path).unwrap();
-    let base = kinrepro::error::read_coupling(&path).unwrap();
-    let variation = Variation {
-        friction: true,
-        ..Default::default()
-    };
+    let (scene, base) = kinrepro::error::read_scene(&path).unwrap();
     let mut g = c.benchmark_group("sweep");
     g.sample_size(10);
     for (label, grid, sampler, samples) in [
@@ -45,11 +40,12 @@ fn sweep(c: &mut Criterion) {
         let opts = StudyOptions {
             sampler: Some(sampler),
             samples: Some(samples),
-            variation,
+            vary: vec![Varied::Friction],
             ..Default::default()
         };
+        let plan = study_plan(scene.clone(), base.clone(), &opts).unwrap();
         g.bench_function(label, |b| {
-            b.iter(|| run(&spec, &base, &opts, None, &|| {}).unwrap())
+            b.iter(|| run(&spec, &plan, Shard::whole(), None, &|| {}).unwrap())
         });
     }
     g.finish();

@@ -17,7 +17,7 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
 use kinrepro::solve::quasistatic::{SeatingSetup, Workspace, seat, seat_in};
-use kinrepro::solve::{PointPose, SeatingPath, SolverOptions};
+use kinrepro::solve::{Load, PointPose, SeatingPath, SolverOptions};
 use nalgebra::Vector3;
 
 struct Counting;
@@ -79,10 +79,15 @@ fn a_seating_in_a_reused_workspace_allocates_nothing() {
         "02_maxwell_pins_steel.toml",
         "06_kelvin_steel.toml",
     ] {
-        let c = load(name);
-        let f = &c.scene.friction;
-        let mus = frictions(f.mu_static, f.spread, c.contacts.len());
-        let setup = SeatingSetup::new(&c);
+        let (scene, c) = load(name);
+        let f = &scene.friction;
+        // The loads (the scene's preload with each friction vector) are
+        // made before any seating is counted.
+        let mus: Vec<Load> = frictions(f.mu_static, f.spread, c.contacts.len())
+            .iter()
+            .map(|mu| Load::nominal(&scene).with_mu(mu))
+            .collect();
+        let setup = SeatingSetup::new(&c, &scene.preload);
         let mut ws = Workspace::new();
         seat_in(&setup, &mus[0], &opts, &mut ws).unwrap();
         let before = allocations();
@@ -110,12 +115,13 @@ fn a_seating_in_a_reused_workspace_allocates_nothing() {
                 made, 0,
                 "{name}, {increments} increments: {made} allocations"
             );
-            for (mu, seated) in mus[1..].iter().zip(&poses) {
+            for (load, seated) in mus[1..].iter().zip(&poses) {
+                let mu = &load.mu;
                 assert_eq!(seated.path, SeatingPath::Uniform, "{name}: {mu:?}");
                 assert!(seated.increments >= increments, "{name}");
-                let fresh = seat(&c, mu, &opts).unwrap();
-                assert_eq!(fresh.path, seated.path, "{name}: {mu:?}");
-                assert_eq!(fresh.increments, seated.increments, "{name}: {mu:?}");
+                let fresh = seat(&c, load, &opts).unwrap();
+                assert_eq!(fresh.seated.path, seated.path, "{name}: {mu:?}");
+                assert_eq!(fresh.seated.increments, seated.increments, "{name}: {mu:?}");
                 // The motion of the origin from the touching pose (translation
                 // and the rotation times the coupling radius).
                 let motion = |pose| {
@@ -124,7 +130,7 @@ fn a_seating_in_a_reused_workspace_allocates_nothing() {
                     let v = m.components();
                     [v[0], v[1], v[2], v[3] * l, v[4] * l, v[5] * l]
                 };
-                let (a, b) = (motion(&fresh.pose), motion(&seated.pose));
+                let (a, b) = (motion(&fresh.pose()), motion(&seated.pose));
                 let size = a.iter().fold(0.0f64, |m, v| m.max(v.abs()));
                 for k in 0..6 {
                     assert!((a[k] - b[k]).abs() <= 1e-12 * size, "{name}: {mu:?}");

@@ -5,10 +5,12 @@
 
 use std::path::Path;
 
+use kinrepro::assembly::Coupling;
 use kinrepro::contact::FrictionLaw;
 use kinrepro::contact::friction::{TRANSITION, in_transition};
+use kinrepro::scene::Scene;
 use kinrepro::solve::dynamic::{self, DynamicOptions};
-use kinrepro::solve::{SolverOptions, nominal_mu, quasistatic};
+use kinrepro::solve::{Load, SolverOptions, quasistatic};
 
 use crate::common;
 use crate::files::{hidden, wait_for_temporary};
@@ -26,20 +28,26 @@ fn decay_scene(dir: &Path, c: &str) -> std::path::PathBuf {
     )
 }
 
+/// Scene 01 with the decay law at coefficient `c` [s/m], assembled.
+fn decay_coupling(c: f64) -> (Scene, Coupling) {
+    let (mut scene, _) = common::load("01_maxwell_vgroove_steel.toml");
+    scene.friction.law = FrictionLaw::Decay { coefficient: c };
+    let cp = Coupling::new(&scene).unwrap();
+    (scene, cp)
+}
+
 /// The dynamic solver's c v_slip at nominal friction for coefficient `c`.
 fn decay_cv(c: f64) -> f64 {
-    let mut cp = common::load("01_maxwell_vgroove_steel.toml");
-    cp.scene.friction.law = FrictionLaw::Decay { coefficient: c };
-    let s = dynamic::seat(&cp, &nominal_mu(&cp), &DynamicOptions::default()).unwrap();
-    s.decay_cv.unwrap()
+    let (scene, cp) = decay_coupling(c);
+    let s = dynamic::seat(&cp, &Load::nominal(&scene), &DynamicOptions::default()).unwrap();
+    s.seated.decay_cv.unwrap()
 }
 
 /// The quasi-static solver's c v_slip at nominal friction for `c`.
 fn quasi_static_cv(c: f64) -> f64 {
-    let mut cp = common::load("01_maxwell_vgroove_steel.toml");
-    cp.scene.friction.law = FrictionLaw::Decay { coefficient: c };
-    let s = quasistatic::seat(&cp, &nominal_mu(&cp), &SolverOptions::default()).unwrap();
-    s.decay_cv.unwrap()
+    let (scene, cp) = decay_coupling(c);
+    let s = quasistatic::seat(&cp, &Load::nominal(&scene), &SolverOptions::default()).unwrap();
+    s.seated.decay_cv.unwrap()
 }
 
 #[test]
@@ -52,9 +60,9 @@ fn quasi_static_decay_cv_is_the_slip_path_over_the_ramp() {
     assert!((b / a / 10.0 - 1.0).abs() < 1e-6, "{a:e} {b:e}");
     let v_slip = a / 1e9;
     assert!((1e-7..2e-6).contains(&v_slip), "v_slip {v_slip:e} m/s");
-    let cp = common::load("01_maxwell_vgroove_steel.toml");
-    let s = quasistatic::seat(&cp, &nominal_mu(&cp), &SolverOptions::default()).unwrap();
-    assert_eq!(s.decay_cv, None);
+    let (scene, cp) = common::load("01_maxwell_vgroove_steel.toml");
+    let s = quasistatic::seat(&cp, &Load::nominal(&scene), &SolverOptions::default()).unwrap();
+    assert_eq!(s.seated.decay_cv, None);
 }
 
 #[test]
@@ -65,9 +73,9 @@ fn decay_cv_is_the_coefficient_times_a_slip_speed() {
     let (a, b) = (decay_cv(1e9), decay_cv(1e10));
     assert!((b / a / 10.0 - 1.0).abs() < 1e-3, "{a:e} {b:e}");
     // The switch law has none.
-    let cp = common::load("01_maxwell_vgroove_steel.toml");
-    let s = dynamic::seat(&cp, &nominal_mu(&cp), &DynamicOptions::default()).unwrap();
-    assert_eq!(s.decay_cv, None);
+    let (scene, cp) = common::load("01_maxwell_vgroove_steel.toml");
+    let s = dynamic::seat(&cp, &Load::nominal(&scene), &DynamicOptions::default()).unwrap();
+    assert_eq!(s.seated.decay_cv, None);
 }
 
 /// Whether `run` and `study` of `scene` warn, with the dynamic solver and

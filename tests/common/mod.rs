@@ -35,9 +35,14 @@ pub fn worked_measurement() -> PathBuf {
 /// `samples` Monte Carlo friction vectors of the scene's distribution:
 /// mu_s uniform in mu0 +- spread per contact, drawn here with ChaCha8
 /// seeded by `seed` (not by the study code).
-pub fn mc_frictions(c: &kinrepro::assembly::Coupling, samples: usize, seed: u64) -> Vec<Vec<f64>> {
+pub fn mc_frictions(
+    s: &kinrepro::scene::Scene,
+    c: &kinrepro::assembly::Coupling,
+    samples: usize,
+    seed: u64,
+) -> Vec<Vec<f64>> {
     use rand::{Rng, SeedableRng};
-    let f = &c.scene.friction;
+    let f = &s.friction;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
     (0..samples)
         .map(|_| {
@@ -48,9 +53,18 @@ pub fn mc_frictions(c: &kinrepro::assembly::Coupling, samples: usize, seed: u64)
         .collect()
 }
 
-/// Load and assemble a bundled scene.
-pub fn load(name: &str) -> kinrepro::assembly::Coupling {
-    kinrepro::error::read_coupling(&scene(name)).unwrap()
+/// Load and assemble a bundled scene: the scene and its coupling.
+pub fn load(name: &str) -> (kinrepro::scene::Scene, kinrepro::assembly::Coupling) {
+    kinrepro::error::read_scene(&scene(name)).unwrap()
+}
+
+/// Load and assemble a bundled scene and plan a friction-varied Monte
+/// Carlo study of it (`samples` samples seeded `seed`, quasi-static): its
+/// variant is the scene as given, the model of a calibration.
+pub fn model_plan(name: &str, samples: usize, seed: u64) -> kinrepro::study::StudyPlan {
+    use kinrepro::study::{StudyOptions, StudyPlan};
+    let opts = StudyOptions::monte_carlo(samples, seed, kinrepro::solve::Solver::QuasiStatic);
+    StudyPlan::new(vec![load(name)], &opts).unwrap()
 }
 
 /// Steel (E = 210 GPa, nu = 0.3) on steel: E* = E / (2 (1 - nu^2)) (Hertz; Johnson 1985, eq. 4.22).
@@ -122,4 +136,19 @@ pub fn assert_close_debug<T: std::fmt::Debug>(a: &T, b: &T, what: &str) {
         let tol = 1e-12 * x.abs().max(y.abs()) + 1e-16;
         assert!((x - y).abs() <= tol, "{what}: number {k}: {x} vs {y}");
     }
+}
+
+/// Plan a study of `models` (each a scene and its coupling) under `opts`.
+pub fn plan(
+    models: Vec<(kinrepro::scene::Scene, kinrepro::assembly::Coupling)>,
+    opts: &kinrepro::study::StudyOptions,
+) -> kinrepro::study::StudyPlan {
+    kinrepro::study::StudyPlan::new(models, opts).unwrap()
+}
+
+/// Run the first scene of `plan` and report it (the records kept).
+pub fn report(plan: &kinrepro::study::StudyPlan) -> kinrepro::study::VariantReport {
+    use kinrepro::study::runner::run_variant;
+    let (s, v) = (&plan.settings, &plan.variants[0]);
+    kinrepro::study::VariantReport::new(s, v, run_variant(s, v, &|| {}).unwrap()).unwrap()
 }

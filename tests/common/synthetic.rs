@@ -3,25 +3,27 @@
 //! ChaCha stream of the test's own seed (not the model's), one seating per
 //! cycle, plus Gaussian sensor noise (Box-Muller).
 
-use kinrepro::assembly::Coupling;
 use kinrepro::calibrate::fit::CalibrateOptions;
-use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED, model_options};
-use kinrepro::solve::Method;
+use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED};
+use kinrepro::solve::Solver;
 use kinrepro::study::runner::evaluate_rows;
+use kinrepro::study::{StudyOptions, Variant};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 
 /// Sensor noise: 1 nm on translations, 20 nrad on rotations.
 pub const NOISE: [f64; 6] = [1e-9, 1e-9, 1e-9, 20e-9, 20e-9, 20e-9];
 
-/// `cycles` re-seatings of point 0 of `c` (its own friction), with noise [SI].
-pub fn synthetic(c: &Coupling, cycles: usize, rng: &mut ChaCha8Rng) -> Vec<[f64; 6]> {
-    let dims = c.contacts.len();
+/// `cycles` re-seatings of point 0 of `v` (its own friction), with noise [SI].
+pub fn synthetic(v: &Variant, cycles: usize, rng: &mut ChaCha8Rng) -> Vec<[f64; 6]> {
+    let dims = v.coupling.contacts.len();
     let rows: Vec<(usize, Vec<f64>)> = (0..cycles)
         .map(|i| (i, (0..dims).map(|_| rng.random::<f64>()).collect()))
         .collect();
-    let opts = model_options(cycles, 1, Method::default());
-    let recs = evaluate_rows(c, &opts, rows, &|| {}).unwrap();
+    let settings = StudyOptions::monte_carlo(cycles, 1, Solver::QuasiStatic)
+        .settings()
+        .unwrap();
+    let recs = evaluate_rows(&settings, v, rows, &|| {}).unwrap();
     recs.iter()
         .map(|r| std::array::from_fn(|j| r.outputs[j] + NOISE[j] * gaussian(rng)))
         .collect()
@@ -58,6 +60,6 @@ pub fn calibrate_options(fit: &[&str]) -> CalibrateOptions {
         point: None,
         samples: MODEL_SAMPLES,
         seed: MODEL_SEED,
-        method: Method::default(),
+        solver: Solver::QuasiStatic,
     }
 }

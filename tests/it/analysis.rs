@@ -14,7 +14,7 @@ use kinrepro::analysis::stiffness::CouplingStiffness;
 use kinrepro::assembly::Coupling;
 use kinrepro::contact::stress::{circular_axis_shear, circular_max_shear, max_shear_ratio};
 use kinrepro::solve::quasistatic::{ExternalLoad, LoadEventKind, seat};
-use kinrepro::solve::{PointPose, SolverOptions, nominal_mu};
+use kinrepro::solve::{Load, PointPose, SolverOptions};
 use nalgebra::{Matrix6, Vector3, Vector6};
 
 const ALL_SCENES: [&str; 8] = [
@@ -57,8 +57,8 @@ fn statics(
 
 #[test]
 fn frictionless_vgroove_stiffness_equals_the_hand_closed_form() {
-    let c = load("01_maxwell_vgroove_steel.toml");
-    let mu = [0.0; 6];
+    let (scene, c) = load("01_maxwell_vgroove_steel.toml");
+    let mu = Load::nominal(&scene).with_mu(&[0.0; 6]);
     let s = seat(&c, &mu, &SolverOptions::default()).unwrap();
     let k = CouplingStiffness::new(&c, &s, &mu).unwrap();
     // By hand: each contact carries F = 20 / (6 cos a); Hertz sphere-plane,
@@ -74,7 +74,7 @@ fn frictionless_vgroove_stiffness_equals_the_hand_closed_form() {
     let kn = 1.5 * kh * (f / kh).powf(1.0 / 3.0);
     let kz = 6.0 * kn * alpha.cos().powi(2);
     let kx = 3.0 * kn * alpha.sin().powi(2);
-    let q = s.pose.apply(&Vector3::zeros());
+    let q = s.pose().apply(&Vector3::zeros());
     let m = k.matrix_at(&q);
     assert!((m[(2, 2)] / kz - 1.0).abs() < 1e-6, "{} vs {kz}", m[(2, 2)]);
     assert!((m[(0, 0)] / kx - 1.0).abs() < 1e-6, "{} vs {kx}", m[(0, 0)]);
@@ -107,12 +107,12 @@ fn frictionless_vgroove_stiffness_equals_the_hand_closed_form() {
 #[test]
 fn stiffness_is_symmetric_positive_definite_for_every_bundled_scene() {
     for name in ALL_SCENES {
-        let c = load(name);
-        let mu = nominal_mu(&c);
+        let (scene, c) = load(name);
+        let mu = Load::nominal(&scene);
         let s = seat(&c, &mu, &SolverOptions::default()).unwrap();
         let k = CouplingStiffness::new(&c, &s, &mu).unwrap();
-        for p in &c.scene.evaluation_points {
-            let m = k.matrix_at(&s.pose.apply(&p.position));
+        for p in &scene.evaluation_points {
+            let m = k.matrix_at(&s.pose().apply(&p.position));
             assert!((m - m.transpose()).amax() <= 1e-12 * m.amax(), "{name}");
             let eig = m.symmetric_eigen();
             assert!(eig.eigenvalues.min() > 0.0, "{name}: {:?}", eig.eigenvalues);
@@ -148,11 +148,12 @@ fn a_small_load_through_the_nonlinear_solver_deflects_by_the_compliance() {
         ("06_kelvin_steel.toml", vec![0.5; 6]),
         ("custom_kelvin_explicit.toml", vec![0.15; 6]),
     ] {
-        let c = load(name);
+        let (scene, c) = load(name);
+        let mu = Load::nominal(&scene).with_mu(&mu);
         let s = seat(&c, &mu, &SolverOptions::default()).unwrap();
         let k = CouplingStiffness::new(&c, &s, &mu).unwrap();
-        let q_body = c.scene.evaluation_points.last().unwrap().position;
-        let q = s.pose.apply(&q_body);
+        let q_body = scene.evaluation_points.last().unwrap().position;
+        let q = s.pose().apply(&q_body);
         let comp = k.compliance_at(&q).unwrap();
         // 5 mN forces and 0.2 mN m moments, one axis at a time, at q.
         for axis in 0..6 {
@@ -166,10 +167,11 @@ fn a_small_load_through_the_nonlinear_solver_deflects_by_the_compliance() {
             let path = load_path(&c, &mu, &s, &load, 1.0, &SolverOptions::default()).unwrap();
             assert!(
                 path.first_event.is_none(),
-                "{name} {mu:?}: {:?}",
+                "{name} {:?}: {:?}",
+                mu.mu,
                 path.first_event
             );
-            let nonlinear = deflection(&s.pose, &path.pose, &q_body);
+            let nonlinear = deflection(&s.pose(), &path.pose, &q_body);
             let linear = comp * w;
             let (lt, lr) = (
                 linear.fixed_rows::<3>(0).norm(),
@@ -184,7 +186,8 @@ fn a_small_load_through_the_nonlinear_solver_deflects_by_the_compliance() {
                 };
                 assert!(
                     (nonlinear[r] - linear[r]).abs() < 0.01 * scale,
-                    "{name} {mu:?} load axis {axis} dof {r}: nonlinear {:e} vs K^-1 W {:e}",
+                    "{name} {:?} load axis {axis} dof {r}: nonlinear {:e} vs K^-1 W {:e}",
+                    mu.mu,
                     nonlinear[r],
                     linear[r]
                 );
@@ -195,8 +198,8 @@ fn a_small_load_through_the_nonlinear_solver_deflects_by_the_compliance() {
 
 #[test]
 fn frictionless_separation_load_equals_six_constraint_statics() {
-    let c = load("01_maxwell_vgroove_steel.toml");
-    let mu = [0.0; 6];
+    let (scene, c) = load("01_maxwell_vgroove_steel.toml");
+    let mu = Load::nominal(&scene).with_mu(&[0.0; 6]);
     let s = seat(&c, &mu, &SolverOptions::default()).unwrap();
     // 1 N along x, 50 mm above the centre: it tips the coupling about y.
     let (f, p) = (Vector3::new(1.0, 0.0, 0.0), Vector3::new(0.0, 0.0, 0.05));
@@ -259,8 +262,8 @@ fn slip_envelope_is_bracketed_by_full_load_paths() {
             Vector3::new(0.0, 0.0, 0.02),
         ),
     ] {
-        let c = load(name);
-        let mu = nominal_mu(&c);
+        let (scene, c) = load(name);
+        let mu = Load::nominal(&scene);
         let s = seat(&c, &mu, &SolverOptions::default()).unwrap();
         let load = ExternalLoad {
             force,
@@ -310,11 +313,16 @@ fn slip_envelope_is_bracketed_by_full_load_paths() {
 
 #[test]
 fn off_centre_preload_shifts_the_frictionless_forces_as_statics_says() {
-    let mut scene = load("01_maxwell_vgroove_steel.toml").scene;
+    let mut scene = load("01_maxwell_vgroove_steel.toml").0;
     let offset = Vector3::new(0.006, -0.004, 0.0);
     scene.preload.forces[0].point = offset;
     let c = Coupling::new(&scene).unwrap();
-    let s = seat(&c, &[0.0; 6], &SolverOptions::default()).unwrap();
+    let s = seat(
+        &c,
+        &Load::nominal(&scene).with_mu(&[0.0; 6]),
+        &SolverOptions::default(),
+    )
+    .unwrap();
     let hand = statics(
         &maxwell_by_hand(45f64.to_radians()),
         Vector3::new(0.0, 0.0, -20.0),
@@ -369,8 +377,13 @@ fn hertz_subsurface_shear_matches_johnson_and_a_brute_force_scan() {
         assert!((circular_axis_shear(nu, 0.7) - johnson(nu, 0.7)).abs() < 1e-12);
     }
     // In a seating: tau_max = ratio p0 and the steel pressure safety factor.
-    let c = load("01_maxwell_vgroove_steel.toml");
-    let s = seat(&c, &[0.5; 6], &SolverOptions::default()).unwrap();
+    let (scene, c) = load("01_maxwell_vgroove_steel.toml");
+    let s = seat(
+        &c,
+        &Load::nominal(&scene).with_mu(&[0.5; 6]),
+        &SolverOptions::default(),
+    )
+    .unwrap();
     for r in &s.contacts {
         assert!((r.max_shear_stress_pa / (ratio * r.max_pressure_pa) - 1.0).abs() < 1e-12);
         assert!(
@@ -398,7 +411,12 @@ fn scene_allowable_shear_stress_sets_the_shear_safety_factor_and_is_validated() 
     };
     let scene = with("1.0e9").unwrap();
     let c = Coupling::new(&scene).unwrap();
-    let s = seat(&c, &[0.5; 6], &SolverOptions::default()).unwrap();
+    let s = seat(
+        &c,
+        &Load::nominal(&scene).with_mu(&[0.5; 6]),
+        &SolverOptions::default(),
+    )
+    .unwrap();
     let (ratio, _) = circular_max_shear(0.3);
     for r in &s.contacts {
         let sf = 1.0e9 / (ratio * r.max_pressure_pa);

@@ -10,19 +10,18 @@
 
 use crate::common;
 
-use kinrepro::assembly::Coupling;
 use kinrepro::calibrate::file::Parameter;
 use kinrepro::calibrate::fit::{fit_at, observed};
 use kinrepro::calibrate::grid::ModelGrid;
 use kinrepro::calibrate::joint::{JointModel, estimate};
 use kinrepro::calibrate::likelihood::{GoodnessOfFit, goodness_of_fit};
-use kinrepro::calibrate::model::{
-    MODEL_SAMPLES, MODEL_SEED, StudySpec, model_options, with_spread,
-};
-use kinrepro::calibrate::params::Param;
+use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED, StudySpec};
+use kinrepro::calibrate::params::{Param, with_values};
 use kinrepro::calibrate::{Measurement, calibrate, predict};
-use kinrepro::solve::Method;
+use kinrepro::solve::Solver;
+use kinrepro::study::options::Settings;
 use kinrepro::study::runner::{evaluate_rows, run_variant};
+use kinrepro::study::{StudyOptions, StudyPlan, Variant};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -30,15 +29,28 @@ const TRUE_SPREAD: f64 = 0.08;
 /// Sensor noise: 1 nm on translations, 20 nrad on rotations.
 const NOISE: [f64; 6] = [1e-9, 1e-9, 1e-9, 20e-9, 20e-9, 20e-9];
 
+/// The model `v` with its friction spread replaced by `spread`.
+fn with_spread(v: &Variant, spread: f64) -> Variant {
+    with_values(v, &[Param::Spread], &[spread])
+}
+
+/// The Monte Carlo model study of scene `name` (the calibration's
+/// defaults): its plan, whose variant is the scene as given.
+fn model_plan(name: &str) -> StudyPlan {
+    common::model_plan(name, MODEL_SAMPLES, MODEL_SEED)
+}
+
 /// `cycles` re-seatings of point 0 at `spread`, with sensor noise [SI].
-fn synthetic(c: &Coupling, spread: f64, cycles: usize, rng: &mut ChaCha8Rng) -> Vec<[f64; 6]> {
-    let c = with_spread(c, spread);
-    let dims = c.contacts.len();
+fn synthetic(v: &Variant, spread: f64, cycles: usize, rng: &mut ChaCha8Rng) -> Vec<[f64; 6]> {
+    let v = with_spread(v, spread);
+    let dims = v.coupling.contacts.len();
     let rows: Vec<(usize, Vec<f64>)> = (0..cycles)
         .map(|i| (i, (0..dims).map(|_| rng.random::<f64>()).collect()))
         .collect();
-    let opts = model_options(cycles, 1, Method::default());
-    let recs = evaluate_rows(&c, &opts, rows, &|| {}).unwrap();
+    let settings = StudyOptions::monte_carlo(cycles, 1, Solver::QuasiStatic)
+        .settings()
+        .unwrap();
+    let recs = evaluate_rows(&settings, &v, rows, &|| {}).unwrap();
     recs.iter()
         .map(|r| std::array::from_fn(|j| r.outputs[j] + NOISE[j] * gaussian(rng)))
         .collect()
@@ -99,24 +111,24 @@ struct FixedModel {
 }
 
 impl FixedModel {
-    fn new(c: &Coupling) -> Self {
+    fn new(plan: &StudyPlan) -> Self {
         let dofs = [0, 1, 2, 3, 4, 5];
         let spec = StudySpec {
-            coupling: c,
+            plan,
             point: 0,
             dofs: &dofs,
-            samples: MODEL_SAMPLES,
-            seed: MODEL_SEED,
-            method: Method::default(),
         };
         let grid = ModelGrid::build(&spec, &[], &[], S_REF).unwrap();
-        let samples = spec.run(&with_spread(c, S_REF)).unwrap().samples_of(&dofs);
+        let samples = spec
+            .run(&with_spread(spec.base(), S_REF))
+            .unwrap()
+            .samples_of(&dofs);
         FixedModel { grid, samples }
     }
 
-    fn fit(&self, c: &Coupling, m: &Measurement) -> (Parameter, GoodnessOfFit) {
+    fn fit(&self, v: &Variant, m: &Measurement) -> (Parameter, GoodnessOfFit) {
         let obs = observed(m);
-        let jm = JointModel::new(&obs, &self.grid, &[Param::Spread], c, &noise_var());
+        let jm = JointModel::new(&obs, &self.grid, &[Param::Spread], v, &noise_var());
         let (u_hat, l_max) = estimate(&jm);
         let s = jm.theta(&u_hat)[0];
         let x: Vec<Vec<f64>> = (self.samples.iter())
@@ -130,20 +142,21 @@ impl FixedModel {
 
 #[test]
 fn recovery_coverage_of_the_spread_interval() {
-    let c = common::load("02_maxwell_pins_steel.toml");
-    let model = FixedModel::new(&c);
+    let plan = model_plan("02_maxwell_pins_steel.toml");
+    let c = &plan.variants[0];
+    let model = FixedModel::new(&plan);
     let mut rng = ChaCha8Rng::seed_from_u64(2026);
     let reps = 120;
     let (mut covered, mut abs_err, mut bias) = (0, 0.0, 0.0);
     let (mut flagged, mut covered_summary) = (0, 0);
     for _ in 0..reps {
-        let rows = synthetic(&c, TRUE_SPREAD, 50, &mut rng);
+        let rows = synthetic(c, TRUE_SPREAD, 50, &mut rng);
         let m = Measurement::parse(&csv(&rows), "synthetic.csv", None).unwrap();
-        let (f, gof) = model.fit(&c, &m);
+        let (f, gof) = model.fit(c, &m);
         flagged += usize::from(!gof.ok);
         // The same cycles as a summary file (sigma per DOF, DOFs taken as independent).
         let sm = Measurement::parse(&summary(&m), "summary.csv", None).unwrap();
-        let (fs, _) = model.fit(&c, &sm);
+        let (fs, _) = model.fit(c, &sm);
         covered_summary += usize::from(fs.low <= TRUE_SPREAD && TRUE_SPREAD <= fs.high);
         assert!(f.low < f.estimate && f.estimate < f.high);
         covered += usize::from(f.low <= TRUE_SPREAD && TRUE_SPREAD <= f.high);
@@ -168,16 +181,17 @@ fn recovery_coverage_of_the_spread_interval() {
 
 #[test]
 fn transfer_to_scenes_01_and_04_contains_direct_studies() {
-    let c02 = common::load("02_maxwell_pins_steel.toml");
+    let plan = model_plan("02_maxwell_pins_steel.toml");
+    let c02 = &plan.variants[0];
     let mut rng = ChaCha8Rng::seed_from_u64(31);
     let m = Measurement::parse(
-        &csv(&synthetic(&c02, TRUE_SPREAD, 50, &mut rng)),
+        &csv(&synthetic(c02, TRUE_SPREAD, 50, &mut rng)),
         "syn02.csv",
         None,
     )
     .unwrap();
     let opts = common::synthetic::calibrate_options(&["spread"]);
-    let cal = calibrate(&c02, &m, &opts).unwrap();
+    let cal = calibrate(&c02.scene, &c02.coupling, &m, &opts).unwrap();
     let sp = cal.spread().expect("the spread is fitted");
     eprintln!("spread {} [{}, {}]", sp.estimate, sp.low, sp.high);
     assert!(cal.goodness_of_fit.ok);
@@ -185,12 +199,11 @@ fn transfer_to_scenes_01_and_04_contains_direct_studies() {
     assert_transfer(&cal, |c| with_spread(c, TRUE_SPREAD));
     // The calibrated design itself carries its measured values.
     let p = predict(
-        &c02,
+        &c02.scene,
+        &c02.coupling,
         &cal,
         "calibration.json",
-        200,
-        MODEL_SEED,
-        Method::default(),
+        (200, MODEL_SEED, Solver::QuasiStatic),
     )
     .unwrap();
     let (point, dofs) = p.measured.expect("scene 02 is the calibrated design");
@@ -204,20 +217,20 @@ fn transfer_to_scenes_01_and_04_contains_direct_studies() {
 /// and 04 at the true pair (another seed).
 #[test]
 fn joint_transfer_to_scenes_01_and_04_contains_direct_studies() {
-    use kinrepro::calibrate::params::{Param, with_values};
     let params = [Param::Spread, Param::MuStatic];
     let truth = [TRUE_SPREAD, 0.40];
-    let c02 = common::load("02_maxwell_pins_steel.toml");
+    let plan = model_plan("02_maxwell_pins_steel.toml");
+    let c02 = &plan.variants[0];
     let mut rng = ChaCha8Rng::seed_from_u64(33);
     let rows = synthetic(
-        &with_values(&c02, &[Param::MuStatic], &[0.40]),
+        &with_values(c02, &[Param::MuStatic], &[0.40]),
         TRUE_SPREAD,
         50,
         &mut rng,
     );
     let m = Measurement::parse(&csv(&rows), "syn02.csv", None).unwrap();
     let opts = common::synthetic::calibrate_options(&["spread", "mu_static"]);
-    let cal = calibrate(&c02, &m, &opts).unwrap();
+    let cal = calibrate(&c02.scene, &c02.coupling, &m, &opts).unwrap();
     eprintln!("{:?}", cal.parameters);
     assert!(cal.goodness_of_fit.ok);
     assert_transfer(&cal, |c| with_values(c, &params, &truth));
@@ -226,31 +239,39 @@ fn joint_transfer_to_scenes_01_and_04_contains_direct_studies() {
 /// The prediction of `cal` for scenes 01 and 04, neither of them the
 /// calibrated design, contains sigma of the direct study of `truth` applied
 /// to each ([`assert_direct_inside`]).
-fn assert_transfer(cal: &kinrepro::calibrate::Calibration, truth: impl Fn(&Coupling) -> Coupling) {
+fn assert_transfer(cal: &kinrepro::calibrate::Calibration, truth: impl Fn(&Variant) -> Variant) {
     for name in [
         "01_maxwell_vgroove_steel.toml",
         "04_maxwell_balls_steel.toml",
     ] {
-        let c = common::load(name);
+        let (scene, c) = common::load(name);
         let p = predict(
+            &scene,
             &c,
             cal,
             "calibration.json",
-            MODEL_SAMPLES,
-            MODEL_SEED,
-            Method::default(),
+            (MODEL_SAMPLES, MODEL_SEED, Solver::QuasiStatic),
         )
         .unwrap();
         assert!(p.measured.is_none(), "{name} is not the calibrated design");
-        assert_direct_inside(name, &p, &truth(&c));
+        let direct = StudyPlan::new(
+            vec![(scene, c)],
+            &StudyOptions::monte_carlo(2000, 4242, Solver::QuasiStatic),
+        )
+        .unwrap();
+        assert_direct_inside(name, &p, &direct.settings, &truth(&direct.variants[0]));
     }
 }
 
 /// sigma of a direct 2000-sample study of `direct` (point 0, seed 4242)
 /// lies inside the prediction interval of `p` for every DOF.
-fn assert_direct_inside(name: &str, p: &kinrepro::calibrate::Prediction, direct: &Coupling) {
-    let opts = model_options(2000, 4242, Method::default());
-    let run = run_variant(direct, &opts, &|| {}).unwrap();
+fn assert_direct_inside(
+    name: &str,
+    p: &kinrepro::calibrate::Prediction,
+    settings: &Settings,
+    direct: &Variant,
+) {
+    let run = run_variant(settings, direct, &|| {}).unwrap();
     let pt = &p.variant.points[0];
     let (lo, hi) = (
         pt.sigma_ci90_low.unwrap().values(),
@@ -277,14 +298,15 @@ fn assert_direct_inside(name: &str, p: &kinrepro::calibrate::Prediction, direct:
 
 #[test]
 fn misfit_sigma_z_three_times_sigma_x_is_flagged() {
-    let c = common::load("01_maxwell_vgroove_steel.toml");
-    let model = FixedModel::new(&c);
+    let plan = model_plan("01_maxwell_vgroove_steel.toml");
+    let c = &plan.variants[0];
+    let model = FixedModel::new(&plan);
     let g = model.grid.at(&[]);
     let ratio = (g[(2, 2)] / g[(0, 0)]).sqrt();
     // The model's own ratio is far from 3: no spread can produce it.
     assert!(ratio < 1.0, "model sigma_z / sigma_x = {ratio}");
     let mut rng = ChaCha8Rng::seed_from_u64(5);
-    let mut rows = synthetic(&c, TRUE_SPREAD, 50, &mut rng);
+    let mut rows = synthetic(c, TRUE_SPREAD, 50, &mut rng);
     let sd = |j: usize, r: &[[f64; 6]]| {
         let m = r.iter().map(|x| x[j]).sum::<f64>() / r.len() as f64;
         (r.iter().map(|x| (x[j] - m).powi(2)).sum::<f64>() / (r.len() as f64 - 1.0)).sqrt()
@@ -295,7 +317,7 @@ fn misfit_sigma_z_three_times_sigma_x_is_flagged() {
         r[2] *= scale;
     }
     let bad = Measurement::parse(&csv(&rows), "bad.csv", None).unwrap();
-    let (g_good, g_bad) = (model.fit(&c, &good).1, model.fit(&c, &bad).1);
+    let (g_good, g_bad) = (model.fit(c, &good).1, model.fit(c, &bad).1);
     eprintln!("p good {:?}, p bad {:?}", g_good.p_value, g_bad.p_value);
     assert!(g_good.ok, "data drawn from the model flagged: {g_good:?}");
     assert!(

@@ -403,7 +403,8 @@ fn cycles_given_as_numbers_are_the_files() {
 #[test]
 fn bundled_calibrations_still_name_scene_02() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let hash = kinrepro::calibrate::file::design_hash(&common::load("02_maxwell_pins_steel.toml"));
+    let hash =
+        kinrepro::calibrate::file::design_hash(&common::load("02_maxwell_pins_steel.toml").0);
     for name in ["calibration_02.json", "calibration_02_mu.json"] {
         let text = std::fs::read_to_string(root.join("docs/calibration").join(name)).unwrap();
         let v: serde_json::Value = serde_json::from_str(&text).unwrap();

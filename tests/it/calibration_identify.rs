@@ -7,10 +7,9 @@ use crate::common;
 
 use crate::common::synthetic::{calibrate_options, csv, synthetic};
 use kinrepro::calibrate::grid::ModelGrid;
-use kinrepro::calibrate::model::{MODEL_SEED, StudySpec};
+use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED, StudySpec};
 use kinrepro::calibrate::params::{Param, with_values};
 use kinrepro::calibrate::{Measurement, calibrate};
-use kinrepro::solve::Method;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
@@ -25,22 +24,20 @@ use rand_chacha::ChaCha8Rng;
 /// the grid's check says so.
 #[test]
 fn grid_interpolation_matches_direct_studies_between_nodes() {
-    let c = common::load("02_maxwell_pins_steel.toml");
+    let plan = common::model_plan("02_maxwell_pins_steel.toml", 1000, MODEL_SEED);
+    let c = &plan.variants[0];
     let dofs = [0, 1, 2, 3, 4, 5];
     let spec = StudySpec {
-        coupling: &c,
+        plan: &plan,
         point: 0,
         dofs: &dofs,
-        samples: 1000,
-        seed: MODEL_SEED,
-        method: Method::default(),
     };
     for p in [
         Param::MuStatic,
         Param::DynamicRatio,
         Param::SupportCompliance,
     ] {
-        let range = p.range(&c, false);
+        let range = p.range(c, false);
         let grid = ModelGrid::build(&spec, &[p], &[range], 0.05).unwrap();
         let nodes = &grid.nodes[0];
         let mut worst = 0.0f64;
@@ -49,7 +46,7 @@ fn grid_interpolation_matches_direct_studies_between_nodes() {
             let v = 0.5 * (nodes[i] + nodes[i + 1]);
             let g = grid.at(&[v]);
             let direct = spec
-                .run(&with_values(&c, &[p, Param::Spread], &[v, 0.05]))
+                .run(&with_values(c, &[p, Param::Spread], &[v, 0.05]))
                 .unwrap();
             let gd = direct.per_unit(&dofs);
             for j in 0..6 {
@@ -71,13 +68,15 @@ fn grid_interpolation_matches_direct_studies_between_nodes() {
 /// the spread-alone fit.
 #[test]
 fn support_compliance_beside_the_spread_is_flagged_not_determined() {
-    let c = common::load("02_maxwell_pins_steel.toml");
-    let truth = with_values(&c, &[Param::Spread], &[0.08]);
+    let plan = common::model_plan("02_maxwell_pins_steel.toml", MODEL_SAMPLES, MODEL_SEED);
+    let c = &plan.variants[0];
+    let truth = with_values(c, &[Param::Spread], &[0.08]);
     let mut rng = ChaCha8Rng::seed_from_u64(152);
     let m = Measurement::parse(&csv(&synthetic(&truth, 50, &mut rng)), "syn.csv", None).unwrap();
-    let alone = calibrate(&c, &m, &calibrate_options(&["spread"])).unwrap();
+    let alone = calibrate(&c.scene, &c.coupling, &m, &calibrate_options(&["spread"])).unwrap();
     let joint = calibrate(
-        &c,
+        &c.scene,
+        &c.coupling,
         &m,
         &calibrate_options(&["spread", "support_compliance"]),
     )
@@ -120,13 +119,15 @@ fn support_compliance_beside_the_spread_is_flagged_not_determined() {
 /// degrees of freedom; the unscaled data are not.
 #[test]
 fn joint_misfit_is_flagged() {
-    let c = common::load("01_maxwell_vgroove_steel.toml");
-    let truth = with_values(&c, &[Param::Spread], &[0.08]);
+    let plan = common::model_plan("01_maxwell_vgroove_steel.toml", MODEL_SAMPLES, MODEL_SEED);
+    let c = &plan.variants[0];
+    let truth = with_values(c, &[Param::Spread], &[0.08]);
     let mut rng = ChaCha8Rng::seed_from_u64(5);
     let mut rows = synthetic(&truth, 50, &mut rng);
     let opts = calibrate_options(&["spread", "mu_static"]);
     let good = calibrate(
-        &c,
+        &c.scene,
+        &c.coupling,
         &Measurement::parse(&csv(&rows), "good.csv", None).unwrap(),
         &opts,
     )
@@ -140,7 +141,8 @@ fn joint_misfit_is_flagged() {
         r[2] *= scale;
     }
     let bad = calibrate(
-        &c,
+        &c.scene,
+        &c.coupling,
         &Measurement::parse(&csv(&rows), "bad.csv", None).unwrap(),
         &opts,
     )

@@ -12,7 +12,6 @@ use kinrepro::calibrate::grid::ModelGrid;
 use kinrepro::calibrate::joint::{JointModel, estimate};
 use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED, StudySpec};
 use kinrepro::calibrate::params::{Param, with_values};
-use kinrepro::solve::Method;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
@@ -24,20 +23,18 @@ use rand_chacha::ChaCha8Rng;
 /// 0.90, 0.97 is 2.3 sd above).
 #[test]
 fn joint_spread_and_mu_static_intervals_cover_the_truth() {
-    let c = common::load("02_maxwell_pins_steel.toml");
+    let plan = common::model_plan("02_maxwell_pins_steel.toml", MODEL_SAMPLES, MODEL_SEED);
+    let c = &plan.variants[0];
     let params = [Param::Spread, Param::MuStatic];
     let truth = [0.08, 0.40];
-    let truth_scene = with_values(&c, &params, &truth);
+    let truth_scene = with_values(c, &params, &truth);
     let dofs = [0, 1, 2, 3, 4, 5];
     let spec = StudySpec {
-        coupling: &c,
+        plan: &plan,
         point: 0,
         dofs: &dofs,
-        samples: MODEL_SAMPLES,
-        seed: MODEL_SEED,
-        method: Method::default(),
     };
-    let range = Param::MuStatic.range(&c, true);
+    let range = Param::MuStatic.range(c, true);
     let grid = ModelGrid::build(&spec, &[Param::MuStatic], &[range], 0.05).unwrap();
     let mut rng = ChaCha8Rng::seed_from_u64(72_026);
     let reps = 100;
@@ -50,10 +47,10 @@ fn joint_spread_and_mu_static_intervals_cover_the_truth() {
         )
         .unwrap();
         let obs = observed(&m);
-        let jm = JointModel::new(&obs, &grid, &params, &c, &noise_var());
+        let jm = JointModel::new(&obs, &grid, &params, c, &noise_var());
         let (u_hat, l_max) = estimate(&jm);
         let theta = jm.theta(&u_hat);
-        let at = spec.run(&with_values(&c, &params, &theta)).unwrap();
+        let at = spec.run(&with_values(c, &params, &theta)).unwrap();
         let fit = fit_at(&jm, &u_hat, l_max, &at.samples_of(&dofs));
         for a in 0..2 {
             let p = &fit.parameters[a];

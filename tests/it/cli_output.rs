@@ -446,22 +446,18 @@ fn phi_z_is_the_rotation_seen_by_two_points() {
     // phi_z (the clocking) from the study equals the rotation a second
     // method sees: the y motion of a point 10 mm along x from the centre,
     // minus the centre's, divided by 10 mm (small rotation).
-    use kinrepro::solve::dynamic::StartPose;
-    use kinrepro::solve::{Method, PointPose};
-    let c = common::load("01_maxwell_vgroove_steel.toml");
+    use kinrepro::solve::{Load, Method, PointPose};
+    let (scene, c) = common::load("01_maxwell_vgroove_steel.toml");
     let m = Method::default();
-    let nominal = m.seat(&c, &[0.5; 6], &StartPose::touching()).unwrap();
+    let load = Load::nominal(&scene);
+    let nominal = m.seat(&c, &load.with_mu(&[0.5; 6])).unwrap();
     let s = m
-        .seat(
-            &c,
-            &[0.45, 0.55, 0.5, 0.46, 0.54, 0.5],
-            &StartPose::touching(),
-        )
+        .seat(&c, &load.with_mu(&[0.45, 0.55, 0.5, 0.46, 0.54, 0.5]))
         .unwrap();
-    let p = c.scene.evaluation_points[0].position;
+    let p = scene.evaluation_points[0].position;
     let q = p + nalgebra::Vector3::new(0.01, 0.0, 0.0);
-    let a = PointPose::between(&nominal.pose, &s.pose, &p);
-    let b = PointPose::between(&nominal.pose, &s.pose, &q);
+    let a = PointPose::between(&nominal.pose(), &s.pose(), &p);
+    let b = PointPose::between(&nominal.pose(), &s.pose(), &q);
     let phi_z = a.components()[5];
     assert!(phi_z.abs() > 1e-9, "{phi_z}");
     let seen = (b.y_m - a.y_m) / 0.01;
@@ -552,15 +548,16 @@ fn run_reports_phi_z_as_evaluated() {
     let phi_z = p["phi_z_rad"].as_f64().unwrap();
     assert!(phi_z.abs() > 1e-9, "{phi_z}");
     // The same seating seen from a point 10 mm along x: y moves by phi_z * 10 mm.
-    let c = common::load("01_maxwell_vgroove_steel.toml");
+    let (scene, c) = common::load("01_maxwell_vgroove_steel.toml");
     let m = kinrepro::solve::Method::default();
-    let start = kinrepro::solve::dynamic::StartPose::touching();
-    let nominal = m.seat(&c, &[0.5; 6], &start).unwrap();
+    // The touching start.
+    let load = kinrepro::solve::Load::nominal(&scene);
+    let nominal = m.seat(&c, &load.with_mu(&[0.5; 6])).unwrap();
     let seated = m
-        .seat(&c, &[0.45, 0.55, 0.5, 0.46, 0.54, 0.5], &start)
+        .seat(&c, &load.with_mu(&[0.45, 0.55, 0.5, 0.46, 0.54, 0.5]))
         .unwrap();
-    let q = c.scene.evaluation_points[0].position + nalgebra::Vector3::new(0.01, 0.0, 0.0);
-    let b = kinrepro::solve::PointPose::between(&nominal.pose, &seated.pose, &q);
+    let q = scene.evaluation_points[0].position + nalgebra::Vector3::new(0.01, 0.0, 0.0);
+    let b = kinrepro::solve::PointPose::between(&nominal.pose(), &seated.pose(), &q);
     let seen = (b.y_m - p["y_m"].as_f64().unwrap()) / 0.01;
     assert!(
         (phi_z - seen).abs() < 1e-6 * phi_z.abs(),

@@ -5,7 +5,7 @@
 use crate::common;
 use crate::common::kinrepro;
 
-use kinrepro::solve::dynamic::{DynamicOptions, StartPose};
+use kinrepro::solve::dynamic::DynamicOptions;
 use kinrepro::solve::{Method, SolveError};
 use kinrepro::study::runner::{StartBounds, Variation};
 use nalgebra::Vector3;
@@ -54,7 +54,7 @@ fn seatings_that_do_not_centre_are_counted_and_left_out() {
     assert!((share - k as f64 / 10.0).abs() < 1e-15);
     // Each record re-seated on its own by the library: the failed ones do
     // not centre, the others do.
-    let c = common::load("01_maxwell_vgroove_steel.toml");
+    let (scene, c) = common::load("01_maxwell_vgroove_steel.toml");
     let var = Variation {
         friction: true,
         start: Some(StartBounds {
@@ -63,14 +63,11 @@ fn seatings_that_do_not_centre_are_counted_and_left_out() {
         }),
         ..Default::default()
     };
-    let method = Method::Dynamic(DynamicOptions {
-        start: StartPose::touching(),
-        ..Default::default()
-    });
+    let method = Method::Dynamic(DynamicOptions::default());
     for r in records {
         let u: Vec<f64> = serde_json::from_value(r["design_u"].clone()).unwrap();
-        let s = var.sample(&c, &u);
-        let seated = method.seat(&c, &s.mu, &s.start);
+        let s = var.sample(&scene, &c, &u);
+        let seated = method.seat(&c, &s.load);
         let empty = r["outputs_si"].as_array().unwrap().is_empty();
         assert_eq!(
             matches!(seated, Err(SolveError::NotCentred { .. })),

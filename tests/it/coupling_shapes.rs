@@ -11,10 +11,10 @@ use kinrepro::contact::{ContactPair, ContactShape};
 use kinrepro::material::Material;
 use kinrepro::scene::Scene;
 use kinrepro::solve::quasistatic::seat;
-use kinrepro::solve::{SolverOptions, nominal_mu};
+use kinrepro::solve::{Load, SolverOptions};
 
 /// Scene 01 with its `[coupling]` lines edited: `(old line, new lines)`.
-fn scene01_with(edits: &[(&str, &str)]) -> Coupling {
+fn scene01_with(edits: &[(&str, &str)]) -> (Scene, Coupling) {
     let mut text = std::fs::read_to_string(scene("01_maxwell_vgroove_steel.toml")).unwrap();
     for (old, new) in edits {
         let line = text
@@ -24,16 +24,18 @@ fn scene01_with(edits: &[(&str, &str)]) -> Coupling {
             .to_string();
         text = text.replace(&line, new);
     }
-    Coupling::new(&Scene::parse(&text, "edited 01").unwrap()).unwrap()
+    let scene = Scene::parse(&text, "edited 01").unwrap();
+    let c = Coupling::new(&scene).unwrap();
+    (scene, c)
 }
 
 /// The principal stiffnesses (three translational, three rotational) of
 /// the coupling seated at nominal friction, at the centre.
-fn principal(c: &Coupling) -> [f64; 6] {
-    let mu = nominal_mu(c);
+fn principal((scene, c): &(Scene, Coupling)) -> [f64; 6] {
+    let mu = Load::nominal(scene);
     let s = seat(c, &mu, &SolverOptions::default()).unwrap();
     let k = CouplingStiffness::new(c, &s, &mu).unwrap();
-    let p = k.principal_at(&s.pose.translation).unwrap();
+    let p = k.principal_at(&s.pose().translation).unwrap();
     let t = p.translational.map(|(k, _)| k);
     let r = p.rotational.map(|(k, _)| k);
     [t[0], t[1], t[2], r[0], r[1], r[2]]
@@ -61,7 +63,7 @@ fn a_ball_in_a_gothic_arch_has_the_closed_form_radii() {
         "{radii:?}"
     );
     // In scene 08 every contact is that pair, the long axis across the groove.
-    let c = load("maxwell_gothic_arch_steel.toml");
+    let (_, c) = load("maxwell_gothic_arch_steel.toml");
     for k in &c.contacts {
         assert_eq!(k.shape, ContactShape::SphereGroove);
         let groove = match k.surface {
@@ -99,11 +101,11 @@ fn crossed_equal_pins_at_right_angles_seat_like_a_ball_on_planes() {
     // planes, along the same normals. The two couplings then differ only in
     // second-order geometry, of the order of the contact's motion over its
     // radius (um against mm).
-    let pins = scene01_with(&[(
+    let (pins_scene, pins) = scene01_with(&[(
         "groove = ",
         "groove = \"cylinders\"\ngroove_element_diameter = 0.010\nball_shape = \"pins\"",
     )]);
-    let balls = load("01_maxwell_vgroove_steel.toml");
+    let (balls_scene, balls) = load("01_maxwell_vgroove_steel.toml");
     for k in &pins.contacts {
         assert_eq!(k.shape, ContactShape::CrossedCylinders);
         let radii = k.law.hertz.radii;
@@ -116,9 +118,19 @@ fn crossed_equal_pins_at_right_angles_seat_like_a_ball_on_planes() {
         [0.45, 0.55, 0.5, 0.47, 0.53, 0.5],
         [0.55, 0.45, 0.52, 0.5, 0.46, 0.54],
     ] {
-        let a = seat(&pins, &mu, &SolverOptions::default()).unwrap();
-        let b = seat(&balls, &mu, &SolverOptions::default()).unwrap();
-        let (da, db) = (a.pose.translation, b.pose.translation);
+        let a = seat(
+            &pins,
+            &Load::nominal(&pins_scene).with_mu(&mu),
+            &SolverOptions::default(),
+        )
+        .unwrap();
+        let b = seat(
+            &balls,
+            &Load::nominal(&balls_scene).with_mu(&mu),
+            &SolverOptions::default(),
+        )
+        .unwrap();
+        let (da, db) = (a.pose().translation, b.pose().translation);
         assert!(
             (da - db).norm() <= 1e-4 * db.norm(),
             "crossed pins {da} against balls on planes {db}"

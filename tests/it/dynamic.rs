@@ -6,12 +6,26 @@ use crate::common;
 
 use kinrepro::assembly::Coupling;
 use kinrepro::assembly::constraint::friction_limit;
+use kinrepro::scene::Scene;
 use kinrepro::solve::dynamic::{self, Damping, DynamicOptions, Simulation, StartPose};
-use kinrepro::solve::{PointPose, Seating, SolveError, SolverOptions, quasistatic};
+use kinrepro::solve::{Load, PointPose, Seating, SolveError, SolverOptions, quasistatic};
 use nalgebra::Vector3;
 
-fn coupling(name: &str) -> Coupling {
+fn coupling(name: &str) -> (Scene, Coupling) {
     common::load(name)
+}
+
+/// The scene's load with the static coefficients `mu`, from the touching pose.
+fn at(scene: &Scene, mu: &[f64]) -> Load {
+    Load::nominal(scene).with_mu(mu)
+}
+
+/// The scene's load with the static coefficients `mu`, from `start`.
+fn from(scene: &Scene, mu: &[f64], start: StartPose) -> Load {
+    Load {
+        start,
+        ..at(scene, mu)
+    }
 }
 
 /// Ten mu_s vectors drawn uniformly in 0.5 +- 0.05 (Python `random`, seed
@@ -29,23 +43,25 @@ const MU: [[f64; 6]; 10] = [
     [0.4810, 0.4743, 0.4900, 0.5107, 0.5329, 0.4619],
 ];
 
-fn point_pose(c: &Coupling, s: &Seating) -> [f64; 5] {
-    let p = c.scene.evaluation_points[0].position;
-    PointPose::between(&c.touching_pose, &s.pose, &p).evaluated()
+fn point_pose((scene, c): &(Scene, Coupling), s: &Seating) -> [f64; 5] {
+    let p = scene.evaluation_points[0].position;
+    PointPose::between(&c.touching_pose, &s.pose(), &p).evaluated()
 }
 
 /// Per DOF: sample sigma (n-1) of the quasi-static poses, and the largest
 /// |dynamic - quasi-static| over the ten mu vectors.
 fn cross_check(name: &str) -> [(f64, f64); 5] {
-    let c = coupling(name);
+    let m = coupling(name);
+    let c = &m.1;
     let opts = DynamicOptions::default();
     let (mut qs, mut ds) = (Vec::new(), Vec::new());
     for mu in &MU {
+        let mu = at(&m.0, mu);
         qs.push(point_pose(
-            &c,
-            &quasistatic::seat(&c, mu, &SolverOptions::default()).unwrap(),
+            &m,
+            &quasistatic::seat(c, &mu, &SolverOptions::default()).unwrap(),
         ));
-        ds.push(point_pose(&c, &dynamic::seat(&c, mu, &opts).unwrap()));
+        ds.push(point_pose(&m, &dynamic::seat(c, &mu, &opts).unwrap()));
     }
     let mut out = [(0.0, 0.0); 5];
     for (k, o) in out.iter_mut().enumerate() {
@@ -107,11 +123,12 @@ fn cross_check_kelvin_balls_sic() {
 /// shrinks as the ramp slows.
 #[test]
 fn difference_shrinks_as_the_ramp_slows() {
-    let c = coupling("06_kelvin_steel.toml");
+    let m = coupling("06_kelvin_steel.toml");
+    let c = &m.1;
     let fine = SolverOptions::fixed(320);
     let qs: Vec<[f64; 5]> = MU[..4]
         .iter()
-        .map(|mu| point_pose(&c, &quasistatic::seat(&c, mu, &fine).unwrap()))
+        .map(|mu| point_pose(&m, &quasistatic::seat(c, &at(&m.0, mu), &fine).unwrap()))
         .collect();
     let dev = |ramp: f64| {
         let opts = DynamicOptions {
@@ -122,7 +139,7 @@ fn difference_shrinks_as_the_ramp_slows() {
             .iter()
             .zip(&qs)
             .map(|(mu, q)| {
-                let d = point_pose(&c, &dynamic::seat(&c, mu, &opts).unwrap());
+                let d = point_pose(&m, &dynamic::seat(c, &at(&m.0, mu), &opts).unwrap());
                 (0..2).map(|k| (d[k] - q[k]).abs()).fold(0.0, f64::max)
             })
             .fold(0.0, f64::max)
@@ -135,18 +152,17 @@ fn difference_shrinks_as_the_ramp_slows() {
 /// A drop from 50 um with mu = 0 ends at the frictionless quasi-static pose.
 #[test]
 fn frictionless_drop_ends_at_the_frictionless_seating() {
-    let c = coupling("01_maxwell_vgroove_steel.toml");
+    let m = coupling("01_maxwell_vgroove_steel.toml");
+    let c = &m.1;
     let mu = [0.0; 6];
-    let q = quasistatic::seat(&c, &mu, &SolverOptions::default()).unwrap();
-    let opts = DynamicOptions {
-        start: StartPose {
-            offset: Vector3::new(0.0, 0.0, 50e-6),
-            tilt: Vector3::zeros(),
-        },
-        ..Default::default()
+    let q = quasistatic::seat(c, &at(&m.0, &mu), &SolverOptions::default()).unwrap();
+    let opts = DynamicOptions::default();
+    let start = StartPose {
+        offset: Vector3::new(0.0, 0.0, 50e-6),
+        tilt: Vector3::zeros(),
     };
-    let d = dynamic::seat(&c, &mu, &opts).unwrap();
-    let (pq, pd) = (point_pose(&c, &q), point_pose(&c, &d));
+    let d = dynamic::seat(c, &from(&m.0, &mu, start), &opts).unwrap();
+    let (pq, pd) = (point_pose(&m, &q), point_pose(&m, &d));
     eprintln!(
         "drop: dx {:.3e} dy {:.3e} dz {:.3e} m, dphi_x {:.3e} dphi_y {:.3e} rad",
         pd[0] - pq[0],
@@ -174,14 +190,11 @@ fn offset_start() -> StartPose {
 /// as an error, not a pose.
 #[test]
 fn above_the_friction_limit_an_offset_start_does_not_centre() {
-    let c = coupling("01_maxwell_vgroove_steel.toml");
-    let limit = friction_limit(&c).mu_limit;
+    let (scene, c) = coupling("01_maxwell_vgroove_steel.toml");
+    let limit = friction_limit(&c, &scene.preload).mu_limit;
     let mu = [2.0 * limit; 6];
-    let opts = DynamicOptions {
-        start: offset_start(),
-        ..Default::default()
-    };
-    match dynamic::seat(&c, &mu, &opts) {
+    let opts = DynamicOptions::default();
+    match dynamic::seat(&c, &from(&scene, &mu, offset_start()), &opts) {
         Err(e @ SolveError::NotCentred { .. }) => {
             let msg = e.to_string();
             eprintln!("{msg}");
@@ -194,17 +207,15 @@ fn above_the_friction_limit_an_offset_start_does_not_centre() {
 /// Below the friction limit the same start centres: all six contacts closed.
 #[test]
 fn below_the_friction_limit_an_offset_start_centres() {
-    let c = coupling("01_maxwell_vgroove_steel.toml");
-    let limit = friction_limit(&c).mu_limit;
+    let (scene, c) = coupling("01_maxwell_vgroove_steel.toml");
+    let limit = friction_limit(&c, &scene.preload).mu_limit;
     let mu = [0.9 * limit; 6];
-    let opts = DynamicOptions {
-        start: StartPose {
-            offset: Vector3::new(20e-6, -10e-6, 60e-6),
-            tilt: Vector3::new(1e-4, -1e-4, 1e-4),
-        },
-        ..Default::default()
+    let opts = DynamicOptions::default();
+    let start = StartPose {
+        offset: Vector3::new(20e-6, -10e-6, 60e-6),
+        tilt: Vector3::new(1e-4, -1e-4, 1e-4),
     };
-    let s = dynamic::seat(&c, &mu, &opts).unwrap();
+    let s = dynamic::seat(&c, &from(&scene, &mu, start), &opts).unwrap();
     assert!(s.contacts.iter().all(|k| k.normal_force_n > 0.0));
     let total: f64 = s.contacts.iter().map(|k| k.normal_force_n).sum();
     assert!(total > 20.0, "{total}");
@@ -215,8 +226,8 @@ fn below_the_friction_limit_an_offset_start_centres() {
 /// energy over 100 000 steps, with no secular drift.
 #[test]
 fn energy_is_conserved_without_damping() {
-    let c = coupling("01_maxwell_vgroove_steel.toml");
-    let mu = [0.0; 6];
+    let (scene, c) = coupling("01_maxwell_vgroove_steel.toml");
+    let mu = at(&scene, &[0.0; 6]);
     let opts = DynamicOptions {
         ramp_periods: 0.0,
         damping: Damping {
@@ -235,7 +246,7 @@ fn energy_is_conserved_without_damping() {
         .zip(&c.contacts)
         .map(|(r, k)| 0.4 * k.law.hertz.hertz_constant * r.approach_m.powf(2.5))
         .sum();
-    let w_eq = 20.0 * -(q.pose.translation.z - c.touching_pose.translation.z);
+    let w_eq = 20.0 * -(q.pose().translation.z - c.touching_pose.translation.z);
     let scale = w_eq - u_eq;
     assert!(scale > 0.0);
     let n = 100_000;
@@ -287,8 +298,9 @@ fn energy_is_conserved_without_damping() {
 /// rapier's own rigid contact is off: its narrow phase holds no pair.
 #[test]
 fn rapier_contact_is_off() {
-    let c = coupling("06_kelvin_steel.toml");
-    let mut sim = Simulation::new(&c, &[0.5; 6], &DynamicOptions::default()).unwrap();
+    let (scene, c) = coupling("06_kelvin_steel.toml");
+    let load = at(&scene, &[0.5; 6]);
+    let mut sim = Simulation::new(&c, &load, &DynamicOptions::default()).unwrap();
     for _ in 0..200 {
         sim.step().unwrap();
     }
@@ -298,26 +310,26 @@ fn rapier_contact_is_off() {
 
 #[test]
 fn bad_starts_and_options_are_errors() {
-    let c = coupling("01_maxwell_vgroove_steel.toml");
-    let mu = [0.5; 6];
-    let below = DynamicOptions {
+    let (scene, c) = coupling("01_maxwell_vgroove_steel.toml");
+    let mu = at(&scene, &[0.5; 6]);
+    let below = Load {
         start: StartPose {
             offset: Vector3::new(0.0, 0.0, -1e-6),
             tilt: Vector3::zeros(),
         },
-        ..Default::default()
+        ..mu.clone()
     };
-    let e = dynamic::seat(&c, &mu, &below).unwrap_err();
+    let e = dynamic::seat(&c, &below, &DynamicOptions::default()).unwrap_err();
     assert!(matches!(e, SolveError::StartOverlaps { .. }), "{e}");
-    let nan = DynamicOptions {
+    let nan = Load {
         start: StartPose {
             offset: Vector3::new(f64::NAN, 0.0, 1e-6),
             tilt: Vector3::zeros(),
         },
-        ..Default::default()
+        ..mu.clone()
     };
     assert!(matches!(
-        dynamic::seat(&c, &mu, &nan),
+        dynamic::seat(&c, &nan, &DynamicOptions::default()),
         Err(SolveError::BadOption(_))
     ));
     let coarse = DynamicOptions {
@@ -329,7 +341,7 @@ fn bad_starts_and_options_are_errors() {
         Err(SolveError::BadOption(_))
     ));
     assert!(matches!(
-        dynamic::seat(&c, &[0.5; 5], &DynamicOptions::default()),
+        dynamic::seat(&c, &mu.with_mu(&[0.5; 5]), &DynamicOptions::default()),
         Err(SolveError::MuCount { .. })
     ));
 }
@@ -337,18 +349,21 @@ fn bad_starts_and_options_are_errors() {
 /// The trace holds one sample per step, starting at rest and zero load.
 #[test]
 fn trace_records_the_seating() {
-    let c = coupling("01_maxwell_vgroove_steel.toml");
+    let (scene, c) = coupling("01_maxwell_vgroove_steel.toml");
     let mut samples = Vec::new();
-    let s = dynamic::seat_traced(&c, &[0.5; 6], &DynamicOptions::default(), &mut |t| {
-        samples.push(t.clone())
-    })
+    let s = dynamic::seat_traced(
+        &c,
+        &at(&scene, &[0.5; 6]),
+        &DynamicOptions::default(),
+        &mut |t| samples.push(t.clone()),
+    )
     .unwrap();
-    assert_eq!(samples.len(), s.increments);
+    assert_eq!(samples.len(), s.seated.increments);
     assert_eq!(samples[0].time, 0.0);
     assert_eq!(samples[0].load_fraction, 0.0);
     let last = samples.last().unwrap();
     assert_eq!(last.load_fraction, 1.0);
-    assert_eq!(last.pose, s.pose);
+    assert_eq!(last.pose, s.pose());
     assert!(samples.windows(2).all(|w| w[1].time > w[0].time));
 }
 
@@ -356,7 +371,7 @@ fn trace_records_the_seating() {
 /// disc of radius 40 + 10 mm, 10 mm thick.
 #[test]
 fn default_mass_is_balls_plus_plate() {
-    let c = coupling("01_maxwell_vgroove_steel.toml");
+    let (_, c) = coupling("01_maxwell_vgroove_steel.toml");
     let m = dynamic::MassModel::of(&c);
     let rho = 7850.0;
     let ball = rho * 4.0 / 3.0 * std::f64::consts::PI * 0.005_f64.powi(3);
@@ -385,9 +400,10 @@ fn dynamics_table_is_read_and_checked() {
     assert_eq!(m.centre_of_mass.z, 0.01);
     assert_eq!(m.source, dynamic::MassSource::Scene);
     // It seats, and the mass sets only the time scale.
-    let seated = dynamic::seat(&c, &[0.0; 6], &DynamicOptions::default()).unwrap();
-    let reference = quasistatic::seat(&c, &[0.0; 6], &SolverOptions::default()).unwrap();
-    assert!((seated.pose.translation - reference.pose.translation).norm() < 1e-13);
+    let mu = at(&s, &[0.0; 6]);
+    let seated = dynamic::seat(&c, &mu, &DynamicOptions::default()).unwrap();
+    let reference = quasistatic::seat(&c, &mu, &SolverOptions::default()).unwrap();
+    assert!((seated.pose().translation - reference.pose().translation).norm() < 1e-13);
 
     for (bad, field) in [
         (

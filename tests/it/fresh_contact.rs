@@ -20,7 +20,7 @@ use crate::common::load;
 
 use kinrepro::contact::SlipState;
 use kinrepro::solve::quasistatic::seat;
-use kinrepro::solve::{Seating, SolverOptions};
+use kinrepro::solve::{Load, Seating, SolverOptions};
 
 /// Mindlin's F_t / F_n of a contact of equal materials with u / delta = 1.
 fn mindlin_ratio(nu: f64) -> f64 {
@@ -30,8 +30,8 @@ fn mindlin_ratio(nu: f64) -> f64 {
 /// Scene 01 seated with mu_s = `factor` x Mindlin's ratio at every
 /// contact, at 1, 2, 20 and 320 fixed increments and on the controlled path.
 fn seatings(factor: f64) -> Vec<(String, Seating)> {
-    let c = load("01_maxwell_vgroove_steel.toml");
-    let mu = vec![factor * mindlin_ratio(0.3); c.contacts.len()];
+    let (scene, c) = load("01_maxwell_vgroove_steel.toml");
+    let mu = Load::nominal(&scene).with_mu(&vec![factor * mindlin_ratio(0.3); c.contacts.len()]);
     let mut opts: Vec<(String, SolverOptions)> = [1, 2, 20, 320]
         .into_iter()
         .map(|n| (format!("{n} fixed increments"), SolverOptions::fixed(n)))
@@ -82,7 +82,7 @@ fn a_fresh_contact_below_mindlins_ratio_slides_at_any_increments() {
 /// difference in the new normal force.
 #[test]
 fn the_increments_semi_axis_is_mindlins_stiffness_integrated_over_the_increment() {
-    let c = load("02_maxwell_pins_steel.toml");
+    let (_, c) = load("02_maxwell_pins_steel.toml");
     let law = &c.contacts[0].law;
     let a = |f: f64| law.hertz.semi_axes(f)[0];
     for (f0, f1) in [(0.0, 3.0), (1.0, 1.1), (0.2, 3.0), (3.0, 1.0), (2.0, 2.0)] {

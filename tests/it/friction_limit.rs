@@ -91,8 +91,8 @@ fn maxwell_friction_limit_matches_an_independent_statics_solution() {
         "{other}"
     );
 
-    let c = common::load("01_maxwell_vgroove_steel.toml");
-    let limit = kinrepro::assembly::constraint::friction_limit(&c);
+    let (scene, c) = common::load("01_maxwell_vgroove_steel.toml");
+    let limit = kinrepro::assembly::constraint::friction_limit(&c, &scene.preload);
     // The code reports its inscribed 64-facet pyramid's limit (bisection to
     // 1e-4), which lies in [true, true / cos(pi/64)] = true + at most 0.12 %.
     let code = limit.mu_limit;

@@ -13,14 +13,17 @@ use kinrepro::contact::FrictionLaw;
 use kinrepro::scene::Scene;
 use kinrepro::solve::dynamic::{self, DynamicOptions};
 use kinrepro::solve::quasistatic::seat;
-use kinrepro::solve::{PointPose, Seating, SolverOptions, nominal_mu};
+use kinrepro::solve::{Load, PointPose, Seating, SolverOptions, nominal_mu};
 use nalgebra::Vector3;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
+/// A scene and its coupling.
+type Model = (Scene, Coupling);
+
 /// `n` Monte Carlo draws of the six mu_s, uniform in mu0 +- spread.
-fn mc_samples(c: &Coupling, n: usize, seed: u64) -> Vec<Vec<f64>> {
-    let f = &c.scene.friction;
+fn mc_samples((scene, c): &Model, n: usize, seed: u64) -> Vec<Vec<f64>> {
+    let f = &scene.friction;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     (0..n)
         .map(|_| {
@@ -31,20 +34,22 @@ fn mc_samples(c: &Coupling, n: usize, seed: u64) -> Vec<Vec<f64>> {
         .collect()
 }
 
-fn with_law(c: &Coupling, law: FrictionLaw, ratio: f64) -> Coupling {
-    let mut c = c.clone();
-    c.scene.friction.law = law;
-    c.scene.friction.dynamic_ratio = ratio;
-    c
+/// The scene with its friction reading replaced, assembled again.
+fn with_law((scene, _): &Model, law: FrictionLaw, ratio: f64) -> Model {
+    let mut scene = scene.clone();
+    scene.friction.law = law;
+    scene.friction.dynamic_ratio = ratio;
+    let c = Coupling::new(&scene).unwrap();
+    (scene, c)
 }
 
 /// The evaluated pose [x, y, z, phi_x, phi_y] of every evaluation point,
 /// relative to the seating at nominal friction (what a study's sigma is made of).
-fn pose(c: &Coupling, s: &Seating, nominal: &Seating) -> Vec<[f64; 5]> {
-    c.scene
+fn pose((scene, _): &Model, s: &Seating, nominal: &Seating) -> Vec<[f64; 5]> {
+    scene
         .evaluation_points
         .iter()
-        .map(|p| PointPose::between(&nominal.pose, &s.pose, &p.position).evaluated())
+        .map(|p| PointPose::between(&nominal.pose(), &s.pose(), &p.position).evaluated())
         .collect()
 }
 
@@ -63,7 +68,7 @@ fn max_rel(a: &[[f64; 5]], b: &[[f64; 5]]) -> f64 {
     worst
 }
 
-type Seat = dyn Fn(&Coupling, &[f64]) -> Seating;
+type Seat = dyn Fn(&Model, &[f64]) -> Seating;
 
 /// Seat `n` MC samples of `scene` under two readings, return the worst
 /// per-sample relative difference of the poses.
@@ -76,7 +81,7 @@ fn compare(
 ) -> f64 {
     let base = load(scene);
     let (ca, cb) = (with_law(&base, a.0, a.1), with_law(&base, b.0, b.1));
-    let mu0 = nominal_mu(&base);
+    let mu0 = nominal_mu(&base.0);
     let (na, nb) = (seat(&ca, &mu0), seat(&cb, &mu0));
     let mut worst: f64 = 0.0;
     for mu in mc_samples(&base, n, 7) {
@@ -87,12 +92,15 @@ fn compare(
     worst
 }
 
-fn quasi_static(c: &Coupling, mu: &[f64]) -> Seating {
-    seat(c, mu, &SolverOptions::default()).unwrap()
+/// Seated under the scene's preload with the static coefficients `mu`.
+fn quasi_static((scene, c): &Model, mu: &[f64]) -> Seating {
+    let load = Load::nominal(scene).with_mu(mu);
+    seat(c, &load, &SolverOptions::default()).unwrap()
 }
 
-fn dynamic(c: &Coupling, mu: &[f64]) -> Seating {
-    dynamic::seat(c, mu, &DynamicOptions::default()).unwrap()
+fn dynamic((scene, c): &Model, mu: &[f64]) -> Seating {
+    let load = Load::nominal(scene).with_mu(mu);
+    dynamic::seat(c, &load, &DynamicOptions::default()).unwrap()
 }
 
 const SCENES: [&str; 3] = [
@@ -164,7 +172,7 @@ fn an_fe_codes_decay_coefficient_slides_at_mu_s_at_seating_speeds() {
     let mu = &mc_samples(&base, 1, 3)[0];
     let pose_of = |law, ratio| {
         let c = with_law(&base, law, ratio);
-        let nominal = quasi_static(&c, &nominal_mu(&c));
+        let nominal = quasi_static(&c, &nominal_mu(&c.0));
         pose(&c, &quasi_static(&c, mu), &nominal)
     };
     let a = pose_of(FrictionLaw::Switch, 0.8);
@@ -183,18 +191,18 @@ fn slip_velocity_scales_with_the_ramp_time() {
     let law = |c: f64| FrictionLaw::Decay { coefficient: c };
     let c1 = with_law(&base, law(4e6), 0.8);
     let mut c2 = with_law(&base, law(2e6), 0.8);
-    c2.scene.preload.ramp_time = 0.5;
+    c2.0.preload.ramp_time = 0.5;
     let c3 = with_law(&base, law(2e6), 0.8);
     for mu in mc_samples(&base, 5, 11) {
         let (p1, p2, p3) = (
-            quasi_static(&c1, &mu).pose,
-            quasi_static(&c2, &mu).pose,
-            quasi_static(&c3, &mu).pose,
+            quasi_static(&c1, &mu).pose(),
+            quasi_static(&c2, &mu).pose(),
+            quasi_static(&c3, &mu).pose(),
         );
         let o = Vector3::zeros();
         let d12 = PointPose::between(&p1, &p2, &o);
         let d13 = PointPose::between(&p1, &p3, &o);
-        let r = PointPose::between(&base.touching_pose, &p1, &o);
+        let r = PointPose::between(&base.1.touching_pose, &p1, &o);
         let size = |d: &PointPose| d.x_m.abs().max(d.y_m.abs()).max(d.z_m.abs());
         assert!(size(&d12) < 1e-9 * r.z_m.abs(), "{d12:?}");
         assert!(size(&d13) > 1e-4 * r.z_m.abs(), "{d13:?}");

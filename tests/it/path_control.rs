@@ -11,9 +11,19 @@ use crate::common;
 use crate::common::{load, mc_frictions as frictions};
 
 use kinrepro::assembly::{BodyPose, Coupling};
-use kinrepro::solve::quasistatic::seat;
-use kinrepro::solve::{DEFAULT_PATH_TOLERANCE, SolverOptions};
+use kinrepro::scene::Scene;
+use kinrepro::solve::quasistatic;
+use kinrepro::solve::{DEFAULT_PATH_TOLERANCE, Load, Seating, SolveError, SolverOptions};
 use nalgebra::Vector6;
+
+/// A scene and its coupling.
+type Model = (Scene, Coupling);
+
+/// The coupling seated under the scene's preload with the static
+/// coefficients `mu`.
+fn seat((scene, c): &Model, mu: &[f64], opts: &SolverOptions) -> Result<Seating, SolveError> {
+    quasistatic::seat(c, &Load::nominal(scene).with_mu(mu), opts)
+}
 
 /// The twist from `a` to `b` with its rotation times the coupling radius
 /// L: the size measure of the controller (v the translation of the
@@ -29,9 +39,10 @@ fn twist(c: &Coupling, a: &BodyPose, b: &BodyPose) -> Vector6<f64> {
 /// first-order Richardson extrapolation of 2560 and 5120 uniform
 /// increments (the fixed path converges to first order,
 /// tests/it/seating_path.rs).
-fn limit(c: &Coupling, mu: &[f64]) -> BodyPose {
-    let a = seat(c, mu, &SolverOptions::fixed(2560)).unwrap().pose;
-    let b = seat(c, mu, &SolverOptions::fixed(5120)).unwrap().pose;
+fn limit(m: &Model, mu: &[f64]) -> BodyPose {
+    let c = &m.1;
+    let a = seat(m, mu, &SolverOptions::fixed(2560)).unwrap().pose();
+    let b = seat(m, mu, &SolverOptions::fixed(5120)).unwrap().pose();
     let d = twist(c, &a, &b);
     let l = c.length_scale();
     b.moved(&d.fixed_rows::<3>(0).into(), &(d.fixed_rows::<3>(3) / l))
@@ -39,13 +50,14 @@ fn limit(c: &Coupling, mu: &[f64]) -> BodyPose {
 
 /// (true error, estimate, increments) of the controlled seating at
 /// `tolerance`, the error relative to the motion of the limit.
-fn controlled(c: &Coupling, mu: &[f64], tolerance: f64) -> (f64, f64, usize) {
-    let reference = limit(c, mu);
+fn controlled(m: &Model, mu: &[f64], tolerance: f64) -> (f64, f64, usize) {
+    let c = &m.1;
+    let reference = limit(m, mu);
     let opts = SolverOptions {
         path_tolerance: Some(tolerance),
         ..Default::default()
     };
-    let s = seat(c, mu, &opts).unwrap();
+    let s = seat(m, mu, &opts).unwrap().seated;
     let motion = twist(c, &c.touching_pose, &reference).norm();
     let error = twist(c, &reference, &s.pose).norm() / motion;
     (
@@ -61,10 +73,11 @@ fn controlled(c: &Coupling, mu: &[f64], tolerance: f64) -> (f64, f64, usize) {
 #[test]
 fn the_controlled_seating_meets_its_tolerance() {
     for name in ["02_maxwell_pins_steel.toml", "06_kelvin_steel.toml"] {
-        let c = load(name);
-        for mu in frictions(&c, 5, 26) {
+        let m = load(name);
+        let c = &m.1;
+        for mu in frictions(&m.0, c, 5, 26) {
             for tolerance in [DEFAULT_PATH_TOLERANCE, 1e-6] {
-                let (error, estimate, n) = controlled(&c, &mu, tolerance);
+                let (error, estimate, n) = controlled(&m, &mu, tolerance);
                 println!("{name} {tolerance:e}: error {error:.2e} estimate {estimate:.2e} ({n})");
                 assert!(estimate <= tolerance, "{name} {mu:?}: {estimate:e}");
                 assert!(
@@ -72,10 +85,10 @@ fn the_controlled_seating_meets_its_tolerance() {
                     "{name} {mu:?}: {error:e} > {tolerance:e}"
                 );
             }
-            let fine = seat(&c, &mu, &SolverOptions::fixed(5120)).unwrap().pose;
-            let s = seat(&c, &mu, &SolverOptions::default()).unwrap();
-            let motion = twist(&c, &c.touching_pose, &fine).norm();
-            let d = twist(&c, &fine, &s.pose).norm() / motion;
+            let fine = seat(&m, &mu, &SolverOptions::fixed(5120)).unwrap().pose();
+            let s = seat(&m, &mu, &SolverOptions::default()).unwrap();
+            let motion = twist(c, &c.touching_pose, &fine).norm();
+            let d = twist(c, &fine, &s.pose()).norm() / motion;
             assert!(
                 d <= DEFAULT_PATH_TOLERANCE,
                 "{name} {mu:?}: {d:e} from 5120"
@@ -90,12 +103,12 @@ fn the_controlled_seating_meets_its_tolerance() {
 #[test]
 fn the_path_error_is_conservative() {
     for name in ["02_maxwell_pins_steel.toml", "06_kelvin_steel.toml"] {
-        let c = load(name);
+        let m = load(name);
         for tolerance in [DEFAULT_PATH_TOLERANCE, 1e-6] {
-            let mus = frictions(&c, 200, 7);
+            let mus = frictions(&m.0, &m.1, 200, 7);
             let (mut below, mut worst) = (0, (0.0f64, 0.0, 0.0));
             for mu in &mus {
-                let (error, estimate, _) = controlled(&c, mu, tolerance);
+                let (error, estimate, _) = controlled(&m, mu, tolerance);
                 below += usize::from(error <= estimate);
                 if error / estimate > worst.0 {
                     worst = (error / estimate, error, estimate);
@@ -116,17 +129,18 @@ fn the_path_error_is_conservative() {
 /// increments within the Newton floor.
 #[test]
 fn a_straight_slide_takes_few_increments() {
-    let c = load("01_maxwell_vgroove_steel.toml");
-    for mu in frictions(&c, 20, 3) {
-        let s = seat(&c, &mu, &SolverOptions::default()).unwrap();
+    let m = load("01_maxwell_vgroove_steel.toml");
+    let c = &m.1;
+    for mu in frictions(&m.0, c, 20, 3) {
+        let s = seat(&m, &mu, &SolverOptions::default()).unwrap().seated;
         assert!(s.increments < 20, "{mu:?}: {} increments", s.increments);
-        let fine = seat(&c, &mu, &SolverOptions::fixed(5120)).unwrap().pose;
-        let motion = twist(&c, &c.touching_pose, &fine).norm();
-        let d = twist(&c, &fine, &s.pose).norm() / motion;
+        let fine = seat(&m, &mu, &SolverOptions::fixed(5120)).unwrap().pose();
+        let motion = twist(c, &c.touching_pose, &fine).norm();
+        let d = twist(c, &fine, &s.pose).norm() / motion;
         assert!(d < 1e-8, "{mu:?}: {d:e}");
         // A fixed-step seating does not estimate its error.
-        let fixed = seat(&c, &mu, &SolverOptions::fixed(20)).unwrap();
-        assert_eq!(fixed.path_error, None);
+        let fixed = seat(&m, &mu, &SolverOptions::fixed(20)).unwrap();
+        assert_eq!(fixed.seated.path_error, None);
     }
 }
 

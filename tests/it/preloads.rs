@@ -10,7 +10,7 @@ use crate::common::{kinrepro, scene};
 use kinrepro::analysis::stiffness::CouplingStiffness;
 use kinrepro::assembly::Coupling;
 use kinrepro::scene::Scene;
-use kinrepro::solve::{SolverOptions, quasistatic};
+use kinrepro::solve::{Load, SolverOptions, quasistatic};
 use kinrepro::study::runner::Variation;
 use nalgebra::{Vector3, Vector6};
 
@@ -97,8 +97,8 @@ fn max_relative(a: &[f64], b: &[f64]) -> f64 {
         .fold(0.0, f64::max)
 }
 
-fn coupling(text: &str) -> Coupling {
-    Coupling::new(&Scene::parse(text, "preloads.toml").unwrap()).unwrap()
+fn coupling(text: &str) -> (Scene, Coupling) {
+    kinrepro::error::parse_scene(text, "preloads.toml").unwrap()
 }
 
 #[test]
@@ -166,18 +166,22 @@ fn a_force_moved_sideways_turns_the_half_as_the_linear_stiffness_predicts() {
         .map(|(i, c)| force_entry(f, &(c + Vector3::x() * if i == 0 { e } else { 0.0 }), ""))
         .collect();
     let base: String = centres.iter().map(|c| force_entry(f, c, "")).collect();
-    let (ca, cb) = (frictionless(&base), frictionless(&moved));
+    let ((scene_a, ca), (scene_b, cb)) = (frictionless(&base), frictionless(&moved));
     let opts = SolverOptions::default();
-    let sa = quasistatic::seat(&ca, &[0.0; 6], &opts).unwrap();
-    let sb = quasistatic::seat(&cb, &[0.0; 6], &opts).unwrap();
+    let (la, lb) = (
+        Load::nominal(&scene_a).with_mu(&[0.0; 6]),
+        Load::nominal(&scene_b).with_mu(&[0.0; 6]),
+    );
+    let sa = quasistatic::seat(&ca, &la, &opts).unwrap();
+    let sb = quasistatic::seat(&cb, &lb, &opts).unwrap();
     // The added load: a pure moment (e x) x (-f z) = e f y.
     let moment = (Vector3::x() * e).cross(&Vector3::new(0.0, 0.0, -f));
-    let q = sa.pose.apply(&Vector3::zeros());
-    let c = CouplingStiffness::new(&ca, &sa, &[0.0; 6]).unwrap();
+    let q = sa.pose().apply(&Vector3::zeros());
+    let c = CouplingStiffness::new(&ca, &sa, &la).unwrap();
     let predicted =
         c.compliance_at(&q).unwrap() * Vector6::new(0.0, 0.0, 0.0, moment.x, moment.y, moment.z);
-    let u = sb.pose.apply(&Vector3::zeros()) - q;
-    let phi = (sb.pose.rotation * sa.pose.rotation.inverse()).scaled_axis();
+    let u = sb.pose().apply(&Vector3::zeros()) - q;
+    let phi = (sb.pose().rotation * sa.pose().rotation.inverse()).scaled_axis();
     let (pu, pphi) = (
         predicted.fixed_rows::<3>(0).into_owned(),
         predicted.fixed_rows::<3>(3).into_owned(),
@@ -288,13 +292,13 @@ fn vary_preload_moves_and_tilts_each_force_but_not_the_weight() {
     let text = scene01_without_force(&three_forces(""))
         .replace("[preload]\n", "[preload]\ngravity = true\nmass = 1.0\n")
         + "\n[variation]\npreload_offset = [1.0e-3, 2.0e-3]\npreload_tilt = 0.01\n";
-    let c = coupling(&text);
+    let (scene, c) = coupling(&text);
     let var = Variation {
         friction: false,
         preload: true,
         ..Default::default()
     };
-    let names: Vec<String> = var.inputs(&c).iter().map(|i| i.name()).collect();
+    let names: Vec<String> = var.inputs(&scene).iter().map(|i| i.name()).collect();
     let per = ["x_m", "y_m", "tilt_x_rad", "tilt_y_rad"];
     let expect: Vec<String> = ["preload_", "preload_2_", "preload_3_"]
         .iter()
@@ -304,9 +308,9 @@ fn vary_preload_moves_and_tilts_each_force_but_not_the_weight() {
     // Force 2's x offset at its upper bound, everything else at the middle.
     let mut row = vec![0.5; 12];
     row[4] = 1.0;
-    let s = var.sample(&c, &row);
-    let nominal = &c.scene.preload.forces;
-    for (i, (f, n)) in s.preload.forces.iter().zip(nominal).enumerate() {
+    let s = var.sample(&scene, &c, &row);
+    let nominal = &scene.preload.forces;
+    for (i, (f, n)) in s.load.preload.forces.iter().zip(nominal).enumerate() {
         let shift = if i == 1 {
             Vector3::new(1.0e-3, 0.0, 0.0)
         } else {

@@ -10,9 +10,19 @@ use std::path::Path;
 use kinrepro::assembly::geometry::contact;
 use kinrepro::assembly::{BodyPose, Coupling};
 use kinrepro::contact::SlipState;
-use kinrepro::solve::quasistatic::seat;
-use kinrepro::solve::{PointPose, Seating, SolverOptions};
+use kinrepro::scene::Scene;
+use kinrepro::solve::quasistatic;
+use kinrepro::solve::{Load, PointPose, Seating, SolveError, SolverOptions};
 use nalgebra::{Matrix6, UnitQuaternion, Vector3, Vector6};
+
+/// A scene and its coupling.
+type Model = (Scene, Coupling);
+
+/// The coupling seated under the scene's preload with the static
+/// coefficients `mu`.
+fn seat((scene, c): &Model, mu: &[f64], opts: &SolverOptions) -> Result<Seating, SolveError> {
+    quasistatic::seat(c, &Load::nominal(scene).with_mu(mu), opts)
+}
 
 const MAXWELL: [&str; 5] = [
     "01_maxwell_vgroove_steel.toml",
@@ -22,8 +32,8 @@ const MAXWELL: [&str; 5] = [
     "05_maxwell_balls_sic.toml",
 ];
 
-fn centre_pose(c: &Coupling, s: &Seating) -> PointPose {
-    PointPose::between(&c.touching_pose, &s.pose, &Vector3::zeros())
+fn centre_pose((_, c): &Model, s: &Seating) -> PointPose {
+    PointPose::between(&c.touching_pose, &s.pose(), &Vector3::zeros())
 }
 
 #[test]
@@ -88,9 +98,9 @@ fn reported_forces_balance_the_preload() {
     ] {
         let c = load(name);
         let s = seat(&c, &mu, &SolverOptions::default()).unwrap();
-        let pre = &c.scene.preload.forces[0];
+        let pre = &c.0.preload.forces[0];
         let fp = pre.direction * pre.force;
-        let pp = s.pose.apply(&pre.point);
+        let pp = s.pose().apply(&pre.point);
         let mut f = fp;
         let mut m = pp.cross(&fp);
         for r in &s.contacts {
@@ -118,9 +128,9 @@ fn reported_forces_balance_the_preload() {
 /// each tangential force is mu_d F_n against the direction of the total slip
 /// of the ball's material point since the touching pose. Closed-form plane
 /// geometry, Hertz force, Newton with a finite-difference Jacobian.
-fn all_sliding_equilibrium(c: &Coupling, mu_d: &[f64], start: &BodyPose) -> BodyPose {
+fn all_sliding_equilibrium((scene, c): &Model, mu_d: &[f64], start: &BodyPose) -> BodyPose {
     let residual = |pose: &BodyPose| -> Vector6<f64> {
-        let pre = &c.scene.preload.forces[0];
+        let pre = &scene.preload.forces[0];
         let fp = pre.direction * pre.force;
         let pp = pose.apply(&pre.point);
         let mut r = Vector6::zeros();
@@ -179,11 +189,11 @@ fn sliding_seating_equals_the_history_free_all_sliding_equilibrium() {
     let direct = all_sliding_equilibrium(&c, &mu_d, &start);
     for p in [
         Vector3::zeros(),
-        c.balls[0].centre,
-        c.balls[1].centre,
-        c.balls[2].centre,
+        c.1.balls[0].centre,
+        c.1.balls[1].centre,
+        c.1.balls[2].centre,
     ] {
-        let a = s.pose.apply(&p);
+        let a = s.pose().apply(&p);
         let b = direct.apply(&p);
         assert!(
             (a - b).norm() < 1e-12,
@@ -203,16 +213,16 @@ fn halving_the_load_increment_changes_the_pose_by_less_than_one_percent() {
         ("06_kelvin_steel.toml", [0.45, 0.55, 0.5, 0.52, 0.48, 0.5]),
     ] {
         let c = load(name);
-        let nominal = [c.scene.friction.mu_static; 6];
+        let nominal = [c.0.friction.mu_static; 6];
         let run =
             |increments: usize, m: &[f64]| seat(&c, m, &SolverOptions::fixed(increments)).unwrap();
         let (a, b) = (run(20, &mu), run(40, &mu));
         let (na, nb) = (run(20, &nominal), run(40, &nominal));
-        for p in c.scene.evaluation_points.iter().map(|e| e.position) {
-            let ra = PointPose::between(&na.pose, &a.pose, &p).evaluated();
-            let rb = PointPose::between(&nb.pose, &b.pose, &p).evaluated();
-            let ta = PointPose::between(&c.touching_pose, &a.pose, &p).evaluated();
-            let tb = PointPose::between(&c.touching_pose, &b.pose, &p).evaluated();
+        for p in c.0.evaluation_points.iter().map(|e| e.position) {
+            let ra = PointPose::between(&na.pose(), &a.pose(), &p).evaluated();
+            let rb = PointPose::between(&nb.pose(), &b.pose(), &p).evaluated();
+            let ta = PointPose::between(&c.1.touching_pose, &a.pose(), &p).evaluated();
+            let tb = PointPose::between(&c.1.touching_pose, &b.pose(), &p).evaluated();
             let scale_t = (ra[0].hypot(ra[1])).max(1e-12);
             let scale_r = (ra[3].hypot(ra[4])).max(1e-12);
             for k in 0..5 {
@@ -322,7 +332,7 @@ fn failures_are_clear_errors_not_poses() {
 }
 
 /// Scene 01 with the circle of ball centres scaled to `diameter` [m].
-fn scene01_with_diameter(diameter: f64) -> Coupling {
+fn scene01_with_diameter(diameter: f64) -> Model {
     let text = std::fs::read_to_string(common::scene("01_maxwell_vgroove_steel.toml")).unwrap();
     let line = text
         .lines()
@@ -330,7 +340,8 @@ fn scene01_with_diameter(diameter: f64) -> Coupling {
         .expect("scene 01 gives coupling.diameter");
     let text = text.replace(line, &format!("diameter = {diameter}"));
     let scene = kinrepro::scene::Scene::parse(&text, "scene01_scaled.toml").unwrap();
-    Coupling::new(&scene).unwrap()
+    let c = Coupling::new(&scene).unwrap();
+    (scene, c)
 }
 
 /// A coupling of metres (contact approaches of a micrometre computed from
@@ -364,8 +375,8 @@ fn a_coupling_of_metres_seats_to_the_closed_form_and_the_sliding_equilibrium() {
         let direct = all_sliding_equilibrium(&c, &mu_d, &start);
         // Both solves resolve a pose of size D to about eps D.
         let resolution = 1e-12 * diameter / 0.08;
-        for b in &c.balls {
-            let gap = (s.pose.apply(&b.centre) - direct.apply(&b.centre)).norm();
+        for b in &c.1.balls {
+            let gap = (s.pose().apply(&b.centre) - direct.apply(&b.centre)).norm();
             assert!(gap < resolution, "D {diameter} m: {gap:e} m apart");
         }
     }

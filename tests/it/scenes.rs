@@ -62,7 +62,7 @@ fn every_scene_loads_expands_and_loads_back_identically() {
 #[test]
 fn balls_touch_every_surface_at_zero_gap() {
     for path in all_scenes() {
-        let c = kinrepro::error::read_coupling(&path).unwrap();
+        let (_, c) = kinrepro::error::read_scene(&path).unwrap();
         for i in 0..6 {
             let g = c.geometry(i, &c.touching_pose);
             assert!(
@@ -80,7 +80,7 @@ fn contact_normals_follow_the_conventions() {
     let alpha = 45f64.to_radians();
     let ez = Vector3::z();
     for name in PAPER_SCENES {
-        let c = kinrepro::error::read_coupling(&scene_path(name)).unwrap();
+        let (_, c) = kinrepro::error::read_scene(&scene_path(name)).unwrap();
         let centre = |k: usize| c.balls[k].centre;
         // Ball azimuths 90, 210, 330 degrees on the 80 mm circle.
         for (k, az) in [90.0f64, 210.0, 330.0].iter().enumerate() {
@@ -149,8 +149,8 @@ fn a_pin_is_the_same_wherever_its_axis_point_lies_on_its_axis() {
     // friction vectors to 1e-9 of its motion. (Before the shape was centred
     // at the ball's foot on the axis, such a scene was refused: "the ball
     // does not touch its surface".)
-    use kinrepro::solve::SolverOptions;
     use kinrepro::solve::quasistatic::seat;
+    use kinrepro::solve::{Load, SolverOptions};
     let opts = SolverOptions::default();
     for name in ["02_maxwell_pins_steel.toml", "03_maxwell_pins_sic.toml"] {
         let path = scene_path(name);
@@ -171,9 +171,13 @@ fn a_pin_is_the_same_wherever_its_axis_point_lies_on_its_axis() {
             }
             let c = Coupling::new(&moved).unwrap_or_else(|e| panic!("{name} {shift}: {e}"));
             for mu in [[0.46, 0.53, 0.51, 0.47, 0.545, 0.455], [0.5; 6]] {
+                let (la, lb) = (
+                    Load::nominal(&scene).with_mu(&mu),
+                    Load::nominal(&moved).with_mu(&mu),
+                );
                 let (a, b) = (
-                    seat(&base, &mu, &opts).unwrap().pose,
-                    seat(&c, &mu, &opts).unwrap().pose,
+                    seat(&base, &la, &opts).unwrap().pose(),
+                    seat(&c, &lb, &opts).unwrap().pose(),
                 );
                 let motion = a.translation.norm();
                 let dt = (a.translation - b.translation).norm();
@@ -192,7 +196,7 @@ fn friction_limit_is_scale_free_and_grows_with_groove_steepness() {
     let base = std::fs::read_to_string(scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
     let limit = |src: &str| {
         let s = Scene::parse(src, "t.toml").unwrap();
-        constraint::friction_limit(&Coupling::new(&s).unwrap()).mu_limit
+        constraint::friction_limit(&Coupling::new(&s).unwrap(), &s.preload).mu_limit
     };
     let l0 = limit(&base);
     // Scale-free: preload and size do not change a friction coefficient.
@@ -224,8 +228,9 @@ fn svd_rank(a: &nalgebra::DMatrix<f64>) -> usize {
 /// self-stress exactly when removing its row leaves the rank unchanged.
 #[test]
 fn redundant_contacts_match_brute_force_rank_tests() {
-    let c01 = kinrepro::error::read_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
-    let c06 = kinrepro::error::read_coupling(&scene_path("06_kelvin_steel.toml")).unwrap();
+    let (_, c01) =
+        kinrepro::error::read_scene(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
+    let (_, c06) = kinrepro::error::read_scene(&scene_path("06_kelvin_steel.toml")).unwrap();
     let with = |base: &Coupling, extra: &[(usize, usize)]| {
         // (copy of contact, assigned to ball: the ball's sphere is its
         // moving surface)
@@ -278,7 +283,8 @@ fn redundant_contacts_match_brute_force_rank_tests() {
 /// m^3; 3000 surfaces took 24 s). Timing is in benches/check.rs.
 #[test]
 fn a_thousand_surfaces_are_described_in_one_sentence() {
-    let c01 = kinrepro::error::read_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
+    let (_, c01) =
+        kinrepro::error::read_scene(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
     let mut c = c01.clone();
     for _ in 0..994 {
         c.contacts.push(c01.contacts[0].clone());
@@ -347,15 +353,16 @@ fn zerodur_scene(allowable: &str) -> String {
 #[test]
 fn a_safety_factor_names_the_material_it_leaves_out() {
     use kinrepro::contact::stress::LeftOut;
-    use kinrepro::solve::SolverOptions;
     use kinrepro::solve::quasistatic::seat;
+    use kinrepro::solve::{Load, SolverOptions};
     let e_star = 1.0 / ((1.0 - 0.09) / 210e9 + (1.0 - 0.243f64.powi(2)) / 90.3e9);
     let p0 = |f: f64| {
         (6.0 * f * e_star * e_star / (std::f64::consts::PI.powi(3) * 0.005f64.powi(2))).cbrt()
     };
     let scene = Scene::parse(&zerodur_scene(""), "z.toml").unwrap();
     let c = Coupling::new(&scene).unwrap();
-    let s = seat(&c, &[0.5; 6], &SolverOptions::default()).unwrap();
+    let load = Load::nominal(&scene).with_mu(&[0.5; 6]);
+    let s = seat(&c, &load, &SolverOptions::default()).unwrap();
     for r in &s.contacts {
         let sf = 4.2e9 / p0(r.normal_force_n);
         assert!((r.pressure_safety_factor.unwrap() / sf - 1.0).abs() < 1e-9);
@@ -370,7 +377,8 @@ fn a_safety_factor_names_the_material_it_leaves_out() {
     // With zerodur's own allowable (below steel's) the factor is zerodur's.
     let scene = Scene::parse(&zerodur_scene("allowable_pressure = 0.5e9\n"), "z.toml").unwrap();
     let c = Coupling::new(&scene).unwrap();
-    let s = seat(&c, &[0.5; 6], &SolverOptions::default()).unwrap();
+    let load = Load::nominal(&scene).with_mu(&[0.5; 6]);
+    let s = seat(&c, &load, &SolverOptions::default()).unwrap();
     for r in &s.contacts {
         let sf = 0.5e9 / p0(r.normal_force_n);
         assert!((r.safety_factor.unwrap() / sf - 1.0).abs() < 1e-9);
@@ -378,15 +386,18 @@ fn a_safety_factor_names_the_material_it_leaves_out() {
     }
     // Steel on steel: nothing is left out; ceramics grooves (scene 05,
     // silicon-carbide balls without an allowable) are.
-    let c = kinrepro::error::read_coupling(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
-    let s = seat(&c, &[0.5; 6], &SolverOptions::default()).unwrap();
+    let (scene, c) =
+        kinrepro::error::read_scene(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
+    let load = Load::nominal(&scene).with_mu(&[0.5; 6]);
+    let s = seat(&c, &load, &SolverOptions::default()).unwrap();
     assert!(
         s.contacts
             .iter()
             .all(|r| r.safety_factor_left_out.is_empty())
     );
-    let c = kinrepro::error::read_coupling(&scene_path("05_maxwell_balls_sic.toml")).unwrap();
-    let s = seat(&c, &[0.6; 6], &SolverOptions::default()).unwrap();
+    let (scene, c) = kinrepro::error::read_scene(&scene_path("05_maxwell_balls_sic.toml")).unwrap();
+    let load = Load::nominal(&scene).with_mu(&[0.6; 6]);
+    let s = seat(&c, &load, &SolverOptions::default()).unwrap();
     for r in &s.contacts {
         assert_eq!(r.safety_factor_left_out.len(), 1);
         assert_eq!(r.safety_factor_left_out[0].material, "silicon-carbide");
@@ -446,10 +457,10 @@ fn shear_and_pressure_factors_each_name_what_they_leave_out() {
             "ball_material = \"hard-steel\"",
         )
         + "\n[[materials]]\nname = \"hard-steel\"\nyoungs_modulus = 210e9\npoisson_ratio = 0.3\nallowable_shear_stress = 1.0e9\n";
-    let c = Coupling::new(&Scene::parse(&text, "h.toml").unwrap()).unwrap();
+    let (scene, c) = kinrepro::error::parse_scene(&text, "h.toml").unwrap();
     let s = kinrepro::solve::quasistatic::seat(
         &c,
-        &[0.5; 6],
+        &kinrepro::solve::Load::nominal(&scene).with_mu(&[0.5; 6]),
         &kinrepro::solve::SolverOptions::default(),
     )
     .unwrap();
@@ -498,7 +509,7 @@ fn expand_writes_rounding_noise_as_zero_and_reloads_the_same_scene() {
         // Written to a file and loaded back: the same scene within 1e-12.
         let file = tmp.path().join(name);
         std::fs::write(&file, &text).unwrap();
-        let back = kinrepro::error::read_coupling(&file).unwrap().scene;
+        let back = kinrepro::error::read_scene(&file).unwrap().0;
         let mut scene = Scene::parse(&std::fs::read_to_string(&path).unwrap(), "").unwrap();
         scene.file = back.file.clone();
         common::assert_close_debug(&strip_lines(scene), &strip_lines(back), name);

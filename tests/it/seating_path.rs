@@ -10,9 +10,27 @@ use crate::common::load;
 
 use kinrepro::assembly::Coupling;
 use kinrepro::contact::{FrictionLaw, TangentialLaw};
-use kinrepro::solve::quasistatic::seat;
-use kinrepro::solve::{PointPose, Seating, SeatingPath, SolverOptions};
+use kinrepro::scene::Scene;
+use kinrepro::solve::quasistatic;
+use kinrepro::solve::{Load, PointPose, Seating, SeatingPath, SolveError, SolverOptions};
 use nalgebra::Vector3;
+
+/// A scene and its coupling.
+type Model = (Scene, Coupling);
+
+/// The coupling seated under the scene's preload with the static
+/// coefficients `mu`.
+fn seat((scene, c): &Model, mu: &[f64], opts: &SolverOptions) -> Result<Seating, SolveError> {
+    quasistatic::seat(c, &Load::nominal(scene).with_mu(mu), opts)
+}
+
+/// The scene edited by `edit`, assembled again.
+fn edited((scene, _): &Model, edit: impl FnOnce(&mut Scene)) -> Model {
+    let mut scene = scene.clone();
+    edit(&mut scene);
+    let c = Coupling::new(&scene).unwrap();
+    (scene, c)
+}
 
 const SCENES: [&str; 7] = [
     "01_maxwell_vgroove_steel.toml",
@@ -25,26 +43,26 @@ const SCENES: [&str; 7] = [
 ];
 
 /// `samples` friction vectors of the scene's distribution (seed 16).
-fn frictions(c: &Coupling, samples: usize) -> Vec<Vec<f64>> {
-    common::mc_frictions(c, samples, 16)
+fn frictions((scene, c): &Model, samples: usize) -> Vec<Vec<f64>> {
+    common::mc_frictions(scene, c, samples, 16)
 }
 
 /// Seat `c` at every friction vector: the seatings on the nominal
 /// increments, checking each one's `path` against its increment count (the
 /// nominal count exactly without halving; a halved increment covers less
 /// of the path, so more increments).
-fn uniform_share(c: &Coupling, samples: usize) -> (usize, usize) {
+fn uniform_share(c: &Model, samples: usize) -> (usize, usize) {
     let opts = SolverOptions::fixed(20);
     let mut uniform = 0;
     for mu in frictions(c, samples) {
-        let s = seat(c, &mu, &opts).unwrap();
+        let s = seat(c, &mu, &opts).unwrap().seated;
         match s.path {
             SeatingPath::Uniform => {
-                assert_eq!(s.increments, opts.increments, "{}: {mu:?}", c.scene.file);
+                assert_eq!(s.increments, opts.increments, "{}: {mu:?}", c.0.file);
                 uniform += 1;
             }
             SeatingPath::Adaptive => {
-                assert!(s.increments > opts.increments, "{}: {mu:?}", c.scene.file)
+                assert!(s.increments > opts.increments, "{}: {mu:?}", c.0.file)
             }
             SeatingPath::Dynamic => panic!("a quasi-static seating"),
         }
@@ -69,10 +87,12 @@ fn seating_path_says_whether_an_increment_was_halved() {
         );
     }
     let base = load("01_maxwell_vgroove_steel.toml");
-    let mut md = base.clone();
-    md.scene.friction.tangential_law = TangentialLaw::MindlinDeresiewicz;
-    let mut decay = base;
-    decay.scene.friction.law = FrictionLaw::Decay { coefficient: 1e6 };
+    let md = edited(&base, |s| {
+        s.friction.tangential_law = TangentialLaw::MindlinDeresiewicz
+    });
+    let decay = edited(&base, |s| {
+        s.friction.law = FrictionLaw::Decay { coefficient: 1e6 }
+    });
     for (label, c) in [("mindlin-deresiewicz", md), ("decay", decay)] {
         let (uniform, n) = uniform_share(&c, 40);
         println!("01 {label}: nominal increments {uniform} / {n}");
@@ -81,8 +101,9 @@ fn seating_path_says_whether_an_increment_was_halved() {
             "01 {label}: nominal increments only {uniform} / {n}"
         );
     }
-    let mut decay = load("05_maxwell_balls_sic.toml");
-    decay.scene.friction.law = FrictionLaw::Decay { coefficient: 3e6 };
+    let decay = edited(&load("05_maxwell_balls_sic.toml"), |s| {
+        s.friction.law = FrictionLaw::Decay { coefficient: 3e6 }
+    });
     let (uniform, n) = uniform_share(&decay, 60);
     println!("05 decay: nominal increments {uniform} / {n}");
     assert!(uniform < n, "05 decay: no seating halved");
@@ -90,8 +111,8 @@ fn seating_path_says_whether_an_increment_was_halved() {
 
 /// The pose of the origin relative to the touching pose, rotations times
 /// the coupling radius (the displacement they cause at the balls).
-fn motion(c: &Coupling, s: &Seating) -> [f64; 6] {
-    let v = PointPose::between(&c.touching_pose, &s.pose, &Vector3::zeros()).components();
+fn motion((_, c): &Model, s: &Seating) -> [f64; 6] {
+    let v = PointPose::between(&c.touching_pose, &s.pose(), &Vector3::zeros()).components();
     let l = c.length_scale();
     [v[0], v[1], v[2], v[3] * l, v[4] * l, v[5] * l]
 }
@@ -113,7 +134,7 @@ fn the_nominal_path_converges_as_the_increments_are_refined() {
                 .map(|&increments| {
                     let opts = SolverOptions::fixed(increments);
                     let s = seat(&c, &mu, &opts).unwrap();
-                    assert_eq!(s.path, SeatingPath::Uniform, "{name} {increments}");
+                    assert_eq!(s.seated.path, SeatingPath::Uniform, "{name} {increments}");
                     motion(&c, &s)
                 })
                 .collect();

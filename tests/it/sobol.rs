@@ -6,14 +6,12 @@ use crate::common;
 
 use std::f64::consts::PI;
 
-use kinrepro::study::Sampler;
-use kinrepro::study::VariantReport;
-use kinrepro::study::runner::{StudyOptions, run_variant};
 use kinrepro::study::sensitivity::sobol::{
     DEFAULT_BASE_SAMPLES, saltelli_rows, sobol_bootstrap, sobol_indices,
 };
 use kinrepro::study::sensitivity::sobol_run::run_sobol;
 use kinrepro::study::summary::attach_sobol;
+use kinrepro::study::{Sampler, StudyOptions, Varied};
 
 const A: f64 = 7.0;
 const B: f64 = 0.1;
@@ -123,10 +121,12 @@ fn scene_01_indices_are_consistent_and_match_the_linear_shares() {
         samples: Some(2000),
         seed: Some(11),
         sensitivity: true,
+        sobol_samples: Some(2048),
         ..Default::default()
     };
-    let mut v = VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap(), &opts).unwrap();
-    let run = run_sobol(&c, &opts, 2048, &|| {}).unwrap();
+    let plan = common::plan(vec![c], &opts);
+    let mut v = common::report(&plan);
+    let run = run_sobol(&plan.settings, &plan.variants[0], 2048, &|| {}).unwrap();
     attach_sobol(&mut v, &run);
     let block = &v.sensitivity.as_ref().unwrap()[0];
     let sob = block.sobol.as_ref().unwrap();
@@ -178,21 +178,20 @@ fn scene_01_indices_are_consistent_and_match_the_linear_shares() {
 fn any_vary_set_gets_indices_per_input_deterministically() {
     // Friction and preload varied: the Sobol block covers all ten inputs; the preload offset
     // drives the tilts (as the SRC shares say), and the matrices are a pure function of the seed.
-    use kinrepro::study::runner::Variation;
     let c = common::load("tolerances_maxwell_vgroove.toml");
     let opts = StudyOptions {
         sampler: Some(Sampler::MonteCarlo),
         samples: Some(100),
         sensitivity: true,
-        variation: Variation {
-            preload: true,
-            ..Default::default()
-        },
+        sobol_samples: Some(256),
+        vary: vec![Varied::Friction, Varied::Preload],
         ..Default::default()
     };
-    let mut v = VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap(), &opts).unwrap();
-    let run = run_sobol(&c, &opts, 256, &|| {}).unwrap();
-    assert_eq!(run, run_sobol(&c, &opts, 256, &|| {}).unwrap());
+    let plan = common::plan(vec![c], &opts);
+    let (s, c) = (&plan.settings, &plan.variants[0]);
+    let mut v = common::report(&plan);
+    let run = run_sobol(s, c, 256, &|| {}).unwrap();
+    assert_eq!(run, run_sobol(s, c, 256, &|| {}).unwrap());
     attach_sobol(&mut v, &run);
     let block = &v.sensitivity.as_ref().unwrap()[0];
     let sob = block.sobol.as_ref().unwrap();

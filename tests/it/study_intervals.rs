@@ -5,24 +5,29 @@
 
 use crate::common;
 
-use kinrepro::assembly::Coupling;
-use kinrepro::study::runner::{StudyOptions, VariantRun, evaluate_rows, recorded_output_names};
-use kinrepro::study::{DesignSpec, Sampler, Shard};
+use kinrepro::study::runner::{VariantRun, evaluate_rows, recorded_output_names};
+use kinrepro::study::{DesignSpec, Sampler, Shard, StudyOptions, StudyPlan};
 use kinrepro::study::{PointStats, VariantReport};
 
 const DESIGNS: u64 = 300;
 const POPULATION: usize = 20_000;
 
+/// The default study of scene `name` (its settings and the scene, whose
+/// designs `studies` replaces).
+fn default_plan(name: &str) -> StudyPlan {
+    common::plan(vec![common::load(name)], &StudyOptions::default())
+}
+
 /// The printed statistics of the first point of every design, evaluated in one parallel batch.
-fn studies(c: &Coupling, specs: &[DesignSpec]) -> Vec<(PointStats, Vec<f64>)> {
-    let opts = StudyOptions::default();
+fn studies(plan: &StudyPlan, specs: &[DesignSpec]) -> Vec<(PointStats, Vec<f64>)> {
+    let (opts, c) = (&plan.settings, &plan.variants[0]);
     let mut rows = Vec::new();
     for (d, spec) in specs.iter().enumerate() {
         for (i, r) in spec.rows().unwrap().into_iter().enumerate() {
             rows.push((d * spec.n + i, r));
         }
     }
-    let mut records = evaluate_rows(c, &opts, rows, &|| {}).unwrap();
+    let mut records = evaluate_rows(opts, c, rows, &|| {}).unwrap();
     records.sort_by_key(|r| r.index);
     let n = specs[0].n;
     specs
@@ -41,11 +46,11 @@ fn studies(c: &Coupling, specs: &[DesignSpec]) -> Vec<(PointStats, Vec<f64>)> {
             let run = VariantRun {
                 design: *spec,
                 shard: Shard::whole(),
-                output_names: recorded_output_names(c, &opts.variation),
+                output_names: recorded_output_names(&c.scene, &opts.variation),
                 records: recs,
                 cannot_seat: None,
             };
-            let v = VariantReport::new(c, run, &opts).unwrap();
+            let v = VariantReport::new(opts, c, run).unwrap();
             (v.points[0].clone(), x)
         })
         .collect()
@@ -78,7 +83,7 @@ fn judge(sig: &[f64], iv: &[(f64, f64)], pop: f64) -> (f64, f64, f64, f64, f64) 
 
 #[test]
 fn printed_sigma_interval_covers_the_population_sigma() {
-    let c = common::load("01_maxwell_vgroove_steel.toml");
+    let c = default_plan("01_maxwell_vgroove_steel.toml");
     let pop_spec = DesignSpec::new(Sampler::MonteCarlo, 6, Some(POPULATION), 424_242).unwrap();
     let pop = &studies(&c, &[pop_spec])[0].0;
     let s = pop.sigma;
@@ -127,7 +132,7 @@ fn printed_sigma_interval_covers_the_population_sigma() {
 fn replicated_lhs_interval_is_on_average_narrower_than_monte_carlo() {
     const N: usize = 100;
     const RUNS: u64 = 60;
-    let c = common::load("01_maxwell_vgroove_steel.toml");
+    let c = default_plan("01_maxwell_vgroove_steel.toml");
     let width = |specs: Vec<DesignSpec>| -> [f64; 6] {
         let st = studies(&c, &specs);
         let mut w = [0.0; 6];

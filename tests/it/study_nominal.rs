@@ -4,9 +4,10 @@
 
 use crate::common;
 
-use kinrepro::solve::Method;
 use kinrepro::solve::dynamic::DynamicOptions;
-use kinrepro::study::runner::{RunError, StudyOptions, run_variant};
+use kinrepro::solve::{Method, Solver};
+use kinrepro::study::runner::run_variant;
+use kinrepro::study::{StudyError, StudyOptions};
 
 #[test]
 fn a_failed_nominal_seating_is_named_as_such() {
@@ -16,15 +17,20 @@ fn a_failed_nominal_seating_is_named_as_such() {
     let opts = StudyOptions {
         samples: Some(5),
         replicates: Some(1),
-        method: Method::Dynamic(DynamicOptions {
-            ramp_periods: 0.0,
-            max_settle_periods: 1e-3,
-            ..DynamicOptions::default()
-        }),
+        solver: Solver::Dynamic,
         ..StudyOptions::default()
     };
-    let err = run_variant(&coupling, &opts, &|| {}).unwrap_err();
-    assert!(matches!(err, RunError::Nominal { .. }), "{err:?}");
+    let mut plan = common::plan(vec![coupling], &opts);
+    plan.settings.method = Method::Dynamic(DynamicOptions {
+        ramp_periods: 0.0,
+        max_settle_periods: 1e-3,
+        ..DynamicOptions::default()
+    });
+    let err = run_variant(&plan.settings, &plan.variants[0], &|| {}).unwrap_err();
+    assert!(
+        matches!(&err, StudyError::In { source, .. } if matches!(**source, StudyError::Nominal { .. })),
+        "{err:?}"
+    );
     let text = err.to_string();
     assert!(text.contains("the nominal seating"), "{text}");
     assert!(!text.contains(&usize::MAX.to_string()), "{text}");

@@ -8,13 +8,11 @@ use crate::common;
 use kinrepro::dof::Dof;
 use kinrepro::report::study::charts::study_charts;
 use kinrepro::report::study::plot::{
-    ConvergenceSeries, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
+    ConvergenceSeries, PlotError, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
     xy_scatter_svg,
 };
-use kinrepro::study::VariantReport;
-use kinrepro::study::runner::{StudyOptions, Variation, run_variant};
 use kinrepro::study::stats::sigma_convergence;
-use kinrepro::study::{Sampler, StudyError};
+use kinrepro::study::{Sampler, StudyOptions, VariantReport, Varied};
 
 fn variants() -> Vec<VariantSigma> {
     vec![
@@ -162,19 +160,19 @@ fn sigma_bars_draw_intervals_and_references_at_their_values() {
 fn bad_plot_inputs_are_errors() {
     assert!(matches!(
         sigma_bars_svg(&[], "σ"),
-        Err(StudyError::NothingToPlot(_))
+        Err(PlotError::NothingToPlot(_))
     ));
     let mut v = variants();
     v[0].sigma[2] = f64::NAN;
     assert!(matches!(
         sigma_bars_svg(&v, "σ"),
-        Err(StudyError::NonFinite { .. })
+        Err(PlotError::NonFinite { .. })
     ));
     let mut v = variants();
     v[1].interval = Some(([1.0; 6], [f64::INFINITY; 6]));
     assert!(matches!(
         sigma_bars_svg(&v, "σ"),
-        Err(StudyError::NonFinite { .. })
+        Err(PlotError::NonFinite { .. })
     ));
     assert!(xy_scatter_svg(&[]).is_err());
     assert!(convergence_svg(&[]).is_err());
@@ -182,7 +180,7 @@ fn bad_plot_inputs_are_errors() {
     huge[1].sigma[0] = 1.7e308;
     assert!(matches!(
         sigma_bars_svg(&huge, "σ"),
-        Err(StudyError::NonFinite { .. })
+        Err(PlotError::NonFinite { .. })
     ));
     let scatter = VariantScatter {
         variant: "a".into(),
@@ -194,16 +192,15 @@ fn bad_plot_inputs_are_errors() {
 
 /// A study of `scene` with `samples` Monte Carlo samples (sigma: the plain
 /// sample standard deviation), as its report.
-fn study(scene: &str, samples: usize, variation: Variation) -> VariantReport {
+fn study(scene: &str, samples: usize, vary: Vec<Varied>) -> VariantReport {
     let c = common::load(scene);
     let opts = StudyOptions {
         samples: Some(samples),
         sampler: Some(Sampler::MonteCarlo),
-        variation,
+        vary,
         ..Default::default()
     };
-    let run = run_variant(&c, &opts, &|| {}).unwrap();
-    VariantReport::new(&c, run, &opts).unwrap()
+    common::report(&common::plan(vec![c], &opts))
 }
 
 /// The Kelvin clamp has two evaluation points: the scatter has a named
@@ -213,7 +210,7 @@ fn study(scene: &str, samples: usize, variation: Variation) -> VariantReport {
 #[test]
 fn scatter_names_every_point_and_convergence_has_six_dofs() {
     let n = 10;
-    let v = study("06_kelvin_steel.toml", n, Variation::default());
+    let v = study("06_kelvin_steel.toml", n, vec![Varied::Friction]);
     let charts = study_charts(&[&v], &[]).unwrap();
     let names: Vec<&str> = charts.iter().map(|c| c.file_name).collect();
     assert_eq!(
@@ -288,11 +285,7 @@ fn convergence_svg_has_a_panel_per_dof_given() {
 /// Interchangeability bars and scatter appear exactly when tolerances vary.
 #[test]
 fn interchangeability_is_plotted_when_tolerances_vary() {
-    let tol = Variation {
-        friction: true,
-        tolerances: true,
-        ..Default::default()
-    };
+    let tol = vec![Varied::Friction, Varied::Tolerances];
     let v = study("tolerances_maxwell_vgroove.toml", 8, tol);
     let charts = study_charts(&[&v], &[]).unwrap();
     let names: Vec<&str> = charts.iter().map(|c| c.file_name).collect();
@@ -304,7 +297,7 @@ fn interchangeability_is_plotted_when_tolerances_vary() {
         .unwrap()
         .svg;
     assert!(bars.contains("interchange σ, translations"));
-    let plain = study("tolerances_maxwell_vgroove.toml", 8, Variation::default());
+    let plain = study("tolerances_maxwell_vgroove.toml", 8, vec![Varied::Friction]);
     let charts = study_charts(&[&plain], &[]).unwrap();
     assert!(
         charts

@@ -5,8 +5,7 @@ use crate::common::kinrepro;
 use crate::common::scene;
 
 use kinrepro::study::VariantReport;
-use kinrepro::study::runner::{StudyOptions, run_variant};
-use kinrepro::study::{Sampler, Shard};
+use kinrepro::study::{Sampler, Shard, StudyOptions};
 
 #[test]
 fn same_seed_same_json_bytes_and_four_shards_merge_to_one_run() {
@@ -78,7 +77,7 @@ fn same_seed_same_json_bytes_and_four_shards_merge_to_one_run() {
 }
 
 fn maxwell_mc(name: &str, n: usize) -> VariantReport {
-    let c = kinrepro::error::read_coupling(&scene(name)).unwrap();
+    let c = kinrepro::error::read_scene(&scene(name)).unwrap();
     let opts = StudyOptions {
         sampler: Some(Sampler::MonteCarlo),
         samples: Some(n),
@@ -86,7 +85,7 @@ fn maxwell_mc(name: &str, n: usize) -> VariantReport {
         shard: Shard::whole(),
         ..Default::default()
     };
-    VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap(), &opts).unwrap()
+    crate::common::report(&crate::common::plan(vec![c], &opts))
 }
 
 #[test]
@@ -217,8 +216,9 @@ fn table_csv_and_plots_are_written() {
 
 #[test]
 fn dynamic_studies_with_random_start_poses() {
-    use kinrepro::solve::Method;
+    use kinrepro::solve::{Load, Solver};
     use kinrepro::study::runner::{StartBounds, Variation, lifted_clear};
+    use kinrepro::study::{StudyPlan, Varied};
     use nalgebra::Vector3;
     // Below the friction limit (0.31 for this groove) an offset start centres.
     let text = std::fs::read_to_string(scene("01_maxwell_vgroove_steel.toml"))
@@ -237,7 +237,10 @@ fn dynamic_studies_with_random_start_poses() {
     };
     // Every drawn start lies above the seat: clear of all surfaces, within the bounds.
     for row in kinrepro::study::design(Sampler::Lhs, 6, 12, 3).unwrap() {
-        let kinrepro::study::runner::Sample { mu, start, .. } = variation.sample(&c, &row);
+        let kinrepro::study::runner::Sample {
+            load: Load { mu, start, .. },
+            ..
+        } = variation.sample(&s, &c, &row);
         assert_eq!(mu, vec![0.2; 6]);
         assert!(start.offset.x.abs() <= 20e-6 && start.offset.y.abs() <= 20e-6);
         assert!(start.tilt.iter().all(|t| t.abs() <= 1e-4));
@@ -255,13 +258,21 @@ fn dynamic_studies_with_random_start_poses() {
             .fold(f64::INFINITY, f64::min);
         assert!((min_gap - 1e-9).abs() < 1e-12, "{min_gap:e}");
     }
-    let opts = StudyOptions {
-        samples: Some(6),
-        method: Method::Dynamic(Default::default()),
-        variation,
+    // The same variation as options: the start alone, within the bounds.
+    let start_only = StudyOptions {
+        vary: vec![Varied::Start],
+        offset_bounds: Some([20e-6, 20e-6, 30e-6]),
+        tilt_bounds: Some([1e-4, 1e-4, 1e-4]),
         ..Default::default()
     };
-    let v = VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap(), &opts).unwrap();
+    let opts = StudyOptions {
+        samples: Some(6),
+        solver: Solver::Dynamic,
+        ..start_only.clone()
+    };
+    let plan = crate::common::plan(vec![(s.clone(), c.clone())], &opts);
+    assert_eq!(plan.settings.variation, variation);
+    let v = crate::common::report(&plan);
     assert_eq!(v.solver, "dynamic");
     assert_eq!(v.inputs.len(), 6);
     // With equal friction the start alone leaves a scatter (friction holds
@@ -270,26 +281,19 @@ fn dynamic_studies_with_random_start_poses() {
     let p = &v.points[0];
     assert!(p.max.x_nm.abs().max(p.min.x_nm.abs()) < 100.0, "{p:?}");
     // A varied start needs the dynamic solver; a study must vary something.
-    let bad = StudyOptions {
-        variation,
-        ..Default::default()
-    };
+    let bad = start_only;
     assert!(
-        run_variant(&c, &bad, &|| {})
+        StudyPlan::new(vec![(s.clone(), c.clone())], &bad)
             .unwrap_err()
             .to_string()
-            .contains("--solver dynamic")
+            .contains("solver=dynamic")
     );
     let none = StudyOptions {
-        variation: Variation {
-            friction: false,
-            start: None,
-            ..Default::default()
-        },
+        vary: vec![],
         ..Default::default()
     };
     assert!(
-        run_variant(&c, &none, &|| {})
+        StudyPlan::new(vec![(s, c)], &none)
             .unwrap_err()
             .to_string()
             .contains("varies nothing")

@@ -7,20 +7,21 @@ use crate::common;
 use crate::common::{kinrepro, scene};
 
 use kinrepro::assembly::Coupling;
-use kinrepro::solve::{PointPose, SolverOptions, quasistatic};
-use kinrepro::study::VariantReport;
-use kinrepro::study::runner::{StudyOptions, Tolerances, Variation, run_variant};
+use kinrepro::scene::Scene;
+use kinrepro::solve::{Load, PointPose, SolverOptions, quasistatic};
+use kinrepro::study::runner::{Tolerances, Variation};
 use kinrepro::study::sensitivity::regression;
-use kinrepro::study::{Sampler, design};
+use kinrepro::study::{Sampler, StudyOptions, Varied, design};
 use nalgebra::{Matrix6, Vector3, Vector6};
 
 /// Scene 01 with a `[variation]` table appended.
-fn scene01_with(variation: &str) -> Coupling {
+fn scene01_with(variation: &str) -> (Scene, Coupling) {
     let text = std::fs::read_to_string(scene("01_maxwell_vgroove_steel.toml")).unwrap()
         + "\n[variation]\n"
         + variation;
     let s = kinrepro::scene::Scene::parse(&text, "varied.toml").unwrap();
-    Coupling::new(&s).unwrap()
+    let c = Coupling::new(&s).unwrap();
+    (s, c)
 }
 
 /// Ball centres and contact normals of scene 01 (`common::maxwell_contacts`).
@@ -30,14 +31,14 @@ fn maxwell_geometry() -> Vec<(Vector3<f64>, Vector3<f64>)> {
 
 #[test]
 fn preload_offset_changes_frictionless_forces_as_statics_says() {
-    let c = scene01_with("preload_offset = [5.0e-3, 3.0e-3]\npreload_tilt = 0.02\n");
+    let (scene, c) = scene01_with("preload_offset = [5.0e-3, 3.0e-3]\npreload_tilt = 0.02\n");
     let var = Variation {
         friction: false,
         preload: true,
         ..Default::default()
     };
     assert_eq!(
-        var.inputs(&c),
+        var.inputs(&scene),
         [
             "preload_x_m",
             "preload_y_m",
@@ -46,21 +47,26 @@ fn preload_offset_changes_frictionless_forces_as_statics_says() {
         ]
     );
     // Row (1, 0, 0.5, 0.5): offset (+5 mm, -3 mm), no tilt.
-    let sample = var.sample(&c, &[1.0, 0.0, 0.5, 0.5]);
+    let sample = var.sample(&scene, &c, &[1.0, 0.0, 0.5, 0.5]);
     let (ex, ey) = (5.0e-3, -3.0e-3);
-    assert!((sample.preload.forces[0].point - Vector3::new(ex, ey, 0.0)).norm() < 1e-15);
-    assert!((sample.preload.forces[0].direction + Vector3::z()).norm() < 1e-15);
+    let preload = &sample.load.preload;
+    assert!((preload.forces[0].point - Vector3::new(ex, ey, 0.0)).norm() < 1e-15);
+    assert!((preload.forces[0].direction + Vector3::z()).norm() < 1e-15);
     assert_eq!(sample.physical, vec![ex, ey, 0.0, 0.0]);
     // A tilt row turns the direction by the rotation vector (t_x, t_y, 0).
-    let tilted = var.sample(&c, &[0.5, 0.5, 1.0, 0.25]).preload.forces[0].direction;
+    let tilted = var
+        .sample(&scene, &c, &[0.5, 0.5, 1.0, 0.25])
+        .load
+        .preload
+        .forces[0]
+        .direction;
     let expect =
         nalgebra::UnitQuaternion::from_scaled_axis(Vector3::new(0.02, -0.01, 0.0)) * -Vector3::z();
     assert!((tilted - expect).norm() < 1e-15);
 
     // Frictionless seating with the offset preload.
-    let mut loaded = c.clone();
-    loaded.scene.preload = sample.preload;
-    let seat = quasistatic::seat(&loaded, &[0.0; 6], &SolverOptions::default()).unwrap();
+    let loaded = sample.load.with_mu(&[0.0; 6]);
+    let seat = quasistatic::seat(&c, &loaded, &SolverOptions::default()).unwrap();
     // Independent statics: sum N_i n_i = F e_z, sum N_i c_i x n_i = p x (F e_z).
     let f = 20.0;
     let geo = maxwell_geometry();
@@ -90,16 +96,16 @@ fn preload_offset_changes_frictionless_forces_as_statics_says() {
 
 #[test]
 fn larger_ball_in_a_45_degree_v_raises_the_half_by_the_closed_form() {
-    let c = scene01_with("ball_diameter = 4.0e-6\n");
+    let (scene, c) = scene01_with("ball_diameter = 4.0e-6\n");
     let dr = 1.0e-6;
-    let mut t = Tolerances::zero(&c);
+    let mut t = Tolerances::zero(&scene);
     t.ball_diameter[0] = 2.0 * dr;
-    let p = t.coupling(&c).unwrap();
+    let p = t.coupling(&scene, &c).unwrap();
     // The scene's pose misses by ~0.4 um only where ball 1 overlaps; the strict check
     // of scene files (1 um) is not what accepts it: a 3 um error must assemble too.
-    let mut big = Tolerances::zero(&c);
+    let mut big = Tolerances::zero(&scene);
     big.ball_diameter[0] = 6.0e-6;
-    assert!(big.coupling(&c).is_ok());
+    assert!(big.coupling(&scene, &c).is_ok());
     // Closed form: ball 1 (at +y, R = 40 mm) rises h = dr / cos(45) = sqrt(2) dr;
     // balls 2 and 3 stay; the half turns about the line through balls 2 and
     // 3 (y = -R/2), so the centre rises h / 3 and phi_x = h / (1.5 R).
@@ -120,11 +126,11 @@ fn larger_ball_in_a_45_degree_v_raises_the_half_by_the_closed_form() {
 
     // Seated at nominal friction, relative to the nominal seating: the same
     // to within the change of the Hertz settlement and of friction (< 1 %).
-    let mu = vec![0.5; 6];
+    let mu = Load::nominal(&scene).with_mu(&[0.5; 6]);
     let o = SolverOptions::default();
     let nominal = quasistatic::seat(&c, &mu, &o).unwrap();
     let seated = quasistatic::seat(&p, &mu, &o).unwrap();
-    let d = PointPose::between(&nominal.pose, &seated.pose, &Vector3::zeros());
+    let d = PointPose::between(&nominal.pose(), &seated.pose(), &Vector3::zeros());
     assert!((d.z_m / (h / 3.0) - 1.0).abs() < 0.01, "{}", d.z_m);
     assert!((d.phi_x_rad / (h / (1.5 * r)) - 1.0).abs() < 0.01);
     assert!(d.x_m.abs().max(d.y_m.abs()) < 0.01 * h);
@@ -137,32 +143,27 @@ fn larger_ball_in_a_45_degree_v_raises_the_half_by_the_closed_form() {
         ..Default::default()
     };
     assert_eq!(
-        var.inputs(&c),
+        var.inputs(&scene),
         [
             "ball_1_diameter_m",
             "ball_2_diameter_m",
             "ball_3_diameter_m"
         ]
     );
-    let s = var.sample(&c, &[0.75, 0.5, 0.5]);
+    let s = var.sample(&scene, &c, &[0.75, 0.5, 0.5]);
     assert_eq!(s.tolerances.unwrap().ball_diameter, vec![2.0e-6, 0.0, 0.0]);
 }
 
 #[test]
 fn study_reports_interchangeability_separately() {
-    let c = kinrepro::error::read_coupling(&scene("tolerances_maxwell_vgroove.toml")).unwrap();
+    let c = kinrepro::error::read_scene(&scene("tolerances_maxwell_vgroove.toml")).unwrap();
     let opts = StudyOptions {
         samples: Some(12),
-        variation: Variation {
-            friction: true,
-            preload: true,
-            tolerances: true,
-            start: None,
-        },
+        vary: vec![Varied::Friction, Varied::Preload, Varied::Tolerances],
         sensitivity: true,
         ..Default::default()
     };
-    let v = VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap(), &opts).unwrap();
+    let v = common::report(&common::plan(vec![c], &opts));
     assert_eq!(v.inputs.len(), 6 + 4 + 3 + 9 + 6 + 6 + 6);
     assert_eq!(v.points.len(), 1);
     assert_eq!(v.interchangeability.len(), 1);
@@ -208,7 +209,7 @@ fn src_of_a_synthetic_linear_response_equals_the_known_shares() {
 
 #[test]
 fn scene01_friction_shares_sum_to_one_and_are_symmetric_between_grooves() {
-    let c = kinrepro::error::read_coupling(&scene("01_maxwell_vgroove_steel.toml")).unwrap();
+    let c = kinrepro::error::read_scene(&scene("01_maxwell_vgroove_steel.toml")).unwrap();
     let opts = StudyOptions {
         sampler: Some(Sampler::Lhs),
         samples: Some(300),
@@ -216,7 +217,7 @@ fn scene01_friction_shares_sum_to_one_and_are_symmetric_between_grooves() {
         sensitivity: true,
         ..Default::default()
     };
-    let v = VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap(), &opts).unwrap();
+    let v = common::report(&common::plan(vec![c], &opts));
     let b = &v.sensitivity.as_ref().unwrap()[0];
     assert_eq!(b.inputs, ["mu_1", "mu_2", "mu_3", "mu_4", "mu_5", "mu_6"]);
     let sigma = v.points[0].sigma.values();

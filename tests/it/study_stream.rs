@@ -6,12 +6,12 @@
 //! computed here from all the records at once (mean first, then the sum of
 //! squared deviations), to rounding.
 
-use crate::common::load;
+use crate::common::{load, plan};
 
-use kinrepro::study::Sampler;
-use kinrepro::study::runner::{StudyOptions, output_names, run_chunked, run_variant};
+use kinrepro::study::runner::{output_names, run_chunked, run_variant};
 use kinrepro::study::stats::SampleRecord;
 use kinrepro::study::stream::StreamStats;
+use kinrepro::study::{Sampler, StudyOptions, StudyPlan};
 
 fn mc(samples: usize) -> StudyOptions {
     StudyOptions {
@@ -22,15 +22,21 @@ fn mc(samples: usize) -> StudyOptions {
     }
 }
 
+/// The plan of scene `name` under `opts`.
+fn plan_of(name: &str, opts: &StudyOptions) -> StudyPlan {
+    plan(vec![load(name)], opts)
+}
+
 /// The records of a run in chunks of `chunk`, in the order the sink saw them,
 /// and the streamed moments of them.
 fn streamed(name: &str, samples: usize, chunk: usize) -> (Vec<SampleRecord>, StreamStats) {
-    let c = load(name);
-    let names = output_names(&c);
+    let p = plan_of(name, &mc(samples));
+    let (s, c) = (&p.settings, &p.variants[0]);
+    let names = output_names(&c.scene);
     let mut stats = StreamStats::new(names.len());
     let mut seen = Vec::new();
     let mut largest_chunk = 0;
-    run_chunked(&c, &mc(samples), chunk, &|| {}, &mut |records| {
+    run_chunked(s, c, chunk, &|| {}, &mut |records| {
         largest_chunk = largest_chunk.max(records.len());
         stats.push(&records, &names).unwrap();
         seen.extend(records);
@@ -62,7 +68,8 @@ fn two_pass(records: &[SampleRecord], k: usize) -> (f64, f64, f64, f64, f64) {
 fn streamed_statistics_equal_the_two_pass_statistics() {
     for name in ["01_maxwell_vgroove_steel.toml", "06_kelvin_steel.toml"] {
         let samples = 300;
-        let whole = run_variant(&load(name), &mc(samples), &|| {})
+        let p = plan_of(name, &mc(samples));
+        let whole = run_variant(&p.settings, &p.variants[0], &|| {})
             .unwrap()
             .records;
         assert_eq!(whole.len(), samples);
@@ -107,23 +114,14 @@ fn streamed_statistics_equal_the_two_pass_statistics() {
 /// to rounding (the two summaries are computed independently).
 #[test]
 fn kept_and_streamed_statistics_give_the_same_points() {
-    use kinrepro::study::runner::Variation;
-    use kinrepro::study::{StudyRecord, VariantReport};
-    let tolerances = Variation {
-        friction: true,
-        tolerances: true,
-        ..Default::default()
-    };
-    for (name, variation) in [
-        ("01_maxwell_vgroove_steel.toml", Variation::default()),
+    use kinrepro::study::{StudyRecord, Varied};
+    let tolerances = vec![Varied::Friction, Varied::Tolerances];
+    for (name, vary) in [
+        ("01_maxwell_vgroove_steel.toml", vec![Varied::Friction]),
         ("tolerances_maxwell_vgroove.toml", tolerances),
     ] {
-        let c = load(name);
-        let opts = StudyOptions {
-            variation,
-            ..mc(200)
-        };
-        let kept = VariantReport::new(&c, run_variant(&c, &opts, &|| {}).unwrap(), &opts).unwrap();
+        let opts = StudyOptions { vary, ..mc(200) };
+        let kept = crate::common::report(&plan_of(name, &opts));
         let mut stats = StreamStats::new(kept.output_names.len());
         let samples: Vec<SampleRecord> = kept.records.iter().map(StudyRecord::sample).collect();
         stats.push(&samples, &kept.output_names).unwrap();

@@ -10,7 +10,7 @@ use kinrepro::assembly::Coupling;
 use kinrepro::contact::{HertzLaw, SeriesNormal};
 use kinrepro::scene::Scene;
 use kinrepro::solve::quasistatic::seat;
-use kinrepro::solve::{PointPose, SolverOptions, nominal_mu};
+use kinrepro::solve::{Load, PointPose, SolverOptions};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -120,14 +120,15 @@ fn bad_support_compliance_is_an_error_naming_line_and_field() {
 
 /// sigma (n-1) of [x, y, z, phi_x, phi_y] at the centre over MC samples,
 /// relative to the nominal seating.
-fn sigmas(c: &Coupling, samples: &[Vec<f64>]) -> [f64; 5] {
+fn sigmas((scene, c): &(Scene, Coupling), samples: &[Vec<f64>]) -> [f64; 5] {
     let opts = SolverOptions::default();
-    let nominal = seat(c, &nominal_mu(c), &opts).unwrap();
+    let load = Load::nominal(scene);
+    let nominal = seat(c, &load, &opts).unwrap();
     let poses: Vec<[f64; 5]> = samples
         .iter()
         .map(|mu| {
-            let s = seat(c, mu, &opts).unwrap();
-            PointPose::between(&nominal.pose, &s.pose, &nalgebra::Vector3::zeros()).evaluated()
+            let s = seat(c, &load.with_mu(mu), &opts).unwrap();
+            PointPose::between(&nominal.pose(), &s.pose(), &nalgebra::Vector3::zeros()).evaluated()
         })
         .collect();
     let n = poses.len() as f64;
@@ -161,7 +162,7 @@ fn scene_01_scatter_rises_by_the_linearised_compliance_factor() {
     // 120 degrees), takes the same friction imbalance, so sigma_x, sigma_y
     // rise by (k_s + k_r)|_(c=0) / (k_s + k_r)|_c.
     let base = load("01_maxwell_vgroove_steel.toml");
-    let nominal = seat(&base, &nominal_mu(&base), &SolverOptions::default()).unwrap();
+    let nominal = seat(&base.1, &Load::nominal(&base.0), &SolverOptions::default()).unwrap();
     let f = nominal.contacts[0].normal_force_n;
     for r in &nominal.contacts {
         assert!((r.normal_force_n / f - 1.0).abs() < 1e-9);
@@ -170,7 +171,7 @@ fn scene_01_scatter_rises_by_the_linearised_compliance_factor() {
     let k_hertz = 1.5 * k.powf(2.0 / 3.0) * f.cbrt();
     let delta_h = (f / k).powf(2.0 / 3.0);
     let c = 1.0 / k_hertz;
-    let mu_d = base.scene.friction.dynamic_ratio * base.scene.friction.mu_static;
+    let mu_d = base.0.friction.dynamic_ratio * base.0.friction.mu_static;
     let lateral = |c: f64| (1.0 - mu_d) / (1.0 / k_hertz + c) + 2.0 * mu_d * f / (delta_h + c * f);
     let normal_factor = 1.0 + c * k_hertz;
     let lateral_factor = lateral(0.0) / lateral(c);
@@ -188,9 +189,9 @@ fn scene_01_scatter_rises_by_the_linearised_compliance_factor() {
         &format!("groove_material = \"steel\"\nsupport_compliance = {c:e}"),
         1,
     );
-    let soft = Coupling::new(&Scene::parse(&text, "01-soft.toml").unwrap()).unwrap();
-    assert!(soft.contacts.iter().all(|k| k.normal.compliance == c));
-    let fr = &base.scene.friction;
+    let soft = kinrepro::error::parse_scene(&text, "01-soft.toml").unwrap();
+    assert!(soft.1.contacts.iter().all(|k| k.normal.compliance == c));
+    let fr = &base.0.friction;
     let mut rng = ChaCha8Rng::seed_from_u64(5);
     let samples: Vec<Vec<f64>> = (0..200)
         .map(|_| {

@@ -8,30 +8,26 @@
 
 use crate::common;
 
-use kinrepro::explore::run::run;
+use kinrepro::explore::run::{run, study_plan};
 use kinrepro::explore::{DesignKind, SweepSpec};
 use kinrepro::explore::{DesignReport, SweepReport};
-use kinrepro::study::runner::{StudyOptions, Variation};
+use kinrepro::study::{Shard, StudyOptions, Varied};
 
 fn scene01() -> String {
     std::fs::read_to_string(common::scene("01_maxwell_vgroove_steel.toml")).unwrap()
 }
 
 fn sweep(text: &str, sets: &[&str], samples: usize) -> SweepReport {
-    let base =
-        kinrepro::assembly::Coupling::new(&kinrepro::scene::Scene::parse(text, "scene01").unwrap())
-            .unwrap();
+    let (scene, base) = kinrepro::error::parse_scene(text, "scene01").unwrap();
     let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
     let spec = SweepSpec::new("scene01", text, &sets, DesignKind::Grid).unwrap();
     let opts = StudyOptions {
         samples: Some(samples),
-        variation: Variation {
-            friction: true,
-            ..Default::default()
-        },
+        vary: vec![Varied::Friction],
         ..Default::default()
     };
-    run(&spec, &base, &opts, None, &|| {}).unwrap()
+    let plan = study_plan(scene, base, &opts).unwrap();
+    run(&spec, &plan, Shard::whole(), None, &|| {}).unwrap()
 }
 
 fn number(d: &DesignReport, field: &str) -> f64 {

@@ -2,21 +2,33 @@
 
 mod field {
     use kinrepro::explore::field::*;
-    use toml::{Table, Value};
+    use kinrepro::scene::SceneFile;
 
-    fn scene() -> Table {
-        toml::from_str(
-            "[coupling]\nball_material = \"steel\"\ndiameter = 0.08\n[preload]\nforce = 20\n\
-             [[materials]]\nname = \"probe\"\nyoungs_modulus = 2e11\npoisson_ratio = 0.3\n",
-        )
-        .unwrap()
+    /// The scene text: a high-level scene (the typed scene needs the
+    /// coupling's arrangement, groove and materials, the preload and
+    /// friction) with a `[[materials]]` entry.
+    const TEXT: &str = "[coupling]\narrangement = \"maxwell\"\nball_material = \"steel\"\n\
+         diameter = 0.08\nball_diameter = 0.01\ngroove = \"planes\"\ngroove_material = \"steel\"\n\
+         [preload]\nforce = 20\n[friction]\nmu_static = 0.5\n\
+         [[materials]]\nname = \"probe\"\nyoungs_modulus = 2e11\npoisson_ratio = 0.3\n";
+
+    fn scene() -> SceneFile {
+        SceneFile::parse(TEXT, "scene.toml").unwrap()
     }
 
     #[test]
     fn known_fields_have_their_kind() {
         let s = scene();
         assert_eq!(kind_of("preload.force", &s).unwrap(), FieldKind::Number);
-        assert_eq!(kind_of("friction.mu_static", &s).ok(), None); // no [friction] here
+        // No [friction] here: the typed scene has no friction field to sweep
+        // (it is refused before any field is looked up).
+        let no_friction = TEXT.replace("[friction]\nmu_static = 0.5\n", "");
+        assert_eq!(
+            SceneFile::parse(&no_friction, "scene.toml")
+                .ok()
+                .map(|s| kind_of("friction.mu_static", &s).ok()),
+            None
+        );
         assert_eq!(
             kind_of("coupling.ball_material", &s).unwrap(),
             FieldKind::Material
@@ -41,9 +53,12 @@ mod field {
             let e = kind_of(bad, &s).unwrap_err().to_string();
             assert!(e.contains(bad), "{e}");
         }
-        let mut s = scene();
-        s["coupling"]["diameter"] = Value::String("big".into());
-        let e = kind_of("coupling.diameter", &s).unwrap_err().to_string();
+        // A value of the wrong type: the typed scene refuses it.
+        let big = TEXT.replace("diameter = 0.08", "diameter = \"big\"");
+        let e = SceneFile::parse(&big, "scene.toml")
+            .map(|s| kind_of("coupling.diameter", &s))
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("not as a number"), "{e}");
     }
 
@@ -76,16 +91,16 @@ mod field {
         )
         .unwrap();
         // One override entry holding the built-in's other constants.
-        let entries = t["materials"].as_array().unwrap();
+        let entries = &t.materials;
         assert_eq!(entries.len(), 2);
-        let steel = entries[1].as_table().unwrap();
-        assert_eq!(steel["name"].as_str(), Some("steel"));
-        assert_eq!(steel["override"].as_bool(), Some(true));
-        assert_eq!(steel["youngs_modulus"].as_float(), Some(2e11));
-        assert_eq!(steel["poisson_ratio"].as_float(), Some(0.25));
+        let steel = &entries[1];
+        assert_eq!(steel.name.get_ref().as_str(), "steel");
+        assert_eq!(steel.replaces.as_ref().map(|r| *r.get_ref()), Some(true));
+        assert_eq!(*steel.youngs_modulus.get_ref(), 2e11);
+        assert_eq!(*steel.poisson_ratio.get_ref(), 0.25);
         let builtin = kinrepro::Material::builtin("steel").unwrap();
         assert_eq!(
-            steel["allowable_pressure"].as_float(),
+            steel.allowable_pressure.as_ref().map(|p| *p.get_ref()),
             builtin.allowable_pressure
         );
     }
@@ -106,9 +121,10 @@ mod field {
             &SweptValue::Number(1e11),
         )
         .unwrap();
-        assert_eq!(s["preload"]["force"].as_float(), Some(5.0));
-        assert_eq!(s["coupling"]["opening_angle_deg"].as_float(), Some(60.0));
-        assert_eq!(s["materials"][0]["youngs_modulus"].as_float(), Some(1e11));
+        assert_eq!(s.preload.force.as_ref().map(|f| *f.get_ref()), Some(5.0));
+        let coupling = s.coupling.as_ref().unwrap();
+        assert_eq!(*coupling.opening_angle_deg.get_ref(), 60.0);
+        assert_eq!(*s.materials[0].youngs_modulus.get_ref(), 1e11);
     }
 }
 
@@ -116,10 +132,16 @@ mod values {
     use kinrepro::explore::ExploreError;
     use kinrepro::explore::SweptValue;
     use kinrepro::explore::values::*;
-    use toml::Table;
+    use kinrepro::scene::SceneFile;
 
-    fn scene() -> Table {
-        toml::from_str("[coupling]\nball_material = \"steel\"\n[preload]\nforce = 20.0\n").unwrap()
+    fn scene() -> SceneFile {
+        SceneFile::parse(
+            "[coupling]\narrangement = \"maxwell\"\nball_material = \"steel\"\n\
+             diameter = 0.08\nball_diameter = 0.01\ngroove = \"planes\"\n\
+             groove_material = \"steel\"\n[preload]\nforce = 20.0\n[friction]\nmu_static = 0.5\n",
+            "scene.toml",
+        )
+        .unwrap()
     }
 
     #[test]
@@ -206,7 +228,7 @@ mod values {
         );
         assert_eq!(
             e.to_string(),
-            "--set preload.force=40:5:3: the range needs a < b, got 40 and 5"
+            "sets=preload.force=40:5:3: the range needs a < b, got 40 and 5"
         );
     }
 }
@@ -217,8 +239,13 @@ mod design {
     use kinrepro::explore::values::Set;
 
     fn sets(args: &[&str]) -> Vec<Set> {
-        let scene: toml::Table =
-            toml::from_str("[coupling]\ndiameter = 0.08\n[preload]\nforce = 20.0\n").unwrap();
+        let scene = kinrepro::scene::SceneFile::parse(
+            "[coupling]\narrangement = \"maxwell\"\nball_material = \"steel\"\n\
+             diameter = 0.08\nball_diameter = 0.01\ngroove = \"planes\"\n\
+             groove_material = \"steel\"\n[preload]\nforce = 20.0\n[friction]\nmu_static = 0.5\n",
+            "scene.toml",
+        )
+        .unwrap();
         args.iter()
             .map(|a| Set::parse(a, &scene).unwrap())
             .collect()

@@ -43,7 +43,7 @@ mod scene_tables {
     use kinrepro::scene::error::{ErrorContext, SceneError};
     use kinrepro::scene::file::{FrictionFile, StudyFile};
     use kinrepro::scene::resolve::tables::*;
-    use kinrepro::scene::{FrictionSettings, SamplerChoice};
+    use kinrepro::scene::{FrictionSettings, Sampler};
 
     fn friction_of(text: &str) -> Result<FrictionSettings, SceneError> {
         let f: FrictionFile = toml::from_str(text).unwrap();
@@ -74,7 +74,7 @@ mod scene_tables {
             study(&st, &ErrorContext::new("s.toml", text))
         };
         let s = study_of("samples = 8\nsampler = \"MC\"\n").unwrap();
-        assert_eq!((s.samples, s.sampler), (8, SamplerChoice::MonteCarlo));
+        assert_eq!((s.samples, s.sampler), (8, Sampler::MonteCarlo));
         let e = study_of("samples = 8\nsampler = \"sobol\"\n").unwrap_err();
         assert_eq!((e.line, e.field.as_str()), (Some(2), "study.sampler"));
         assert!(e.reason.contains("lhs, mc or corners"), "{e}");
