@@ -9,10 +9,11 @@
 
 use std::path::Path;
 
-use kinrepro::calibrate::model::{model_options, with_spread};
-use kinrepro::solve::Method;
+use kinrepro::calibrate::params::{Param, with_values};
+use kinrepro::solve::Solver;
 use kinrepro::study::provenance::VERSION;
 use kinrepro::study::runner::evaluate_rows;
+use kinrepro::study::{StudyOptions, StudyPlan};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -25,24 +26,22 @@ fn main() -> Result<(), String> {
     }
     let num = |i: usize| a[i].parse::<f64>().map_err(|e| format!("{}: {e}", a[i]));
     let (spread, cycles, seed) = (num(1)?, num(2)? as usize, num(3)? as u64);
-    let c = kinrepro::error::read_coupling(Path::new(&a[0])).map_err(|e| e.to_string())?;
-    let c = with_spread(&c, spread);
+    let model = kinrepro::error::read_scene(Path::new(&a[0])).map_err(|e| e.to_string())?;
+    let options = StudyOptions::monte_carlo(cycles, seed, Solver::QuasiStatic);
+    let plan = StudyPlan::new(vec![model], &options).map_err(|e| e.to_string())?;
+    let c = with_values(&plan.variants[0], &[Param::Spread], &[spread]);
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let rows: Vec<(usize, Vec<f64>)> = (0..cycles)
         .map(|i| {
             (
                 i,
-                (0..c.contacts.len()).map(|_| rng.random::<f64>()).collect(),
+                (0..c.coupling.contacts.len())
+                    .map(|_| rng.random::<f64>())
+                    .collect(),
             )
         })
         .collect();
-    let recs = evaluate_rows(
-        &c,
-        &model_options(cycles, seed, Method::default()),
-        rows,
-        &|| {},
-    )
-    .map_err(|e| e.to_string())?;
+    let recs = evaluate_rows(&plan.settings, &c, rows, &|| {}).map_err(|e| e.to_string())?;
     println!(
         "# synthetic measurement (not measured on a rig): kinrepro {VERSION} example synthetic_measurement"
     );
