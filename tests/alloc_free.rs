@@ -2,9 +2,10 @@
 //! (per thread, so that other tests of this binary do not disturb the
 //! count) around seatings of scenes 01, 02 and 06 in a reused
 //! [`Workspace`]. After one warm-up seating has grown the workspace's
-//! buffers, the next seatings (other friction vectors, every increment and
-//! Newton iteration of them, at 20 and at 60 increments) must make zero
-//! allocations, and give the pose of a seating in a fresh workspace (to
+//! buffers, the next seatings (other friction vectors, every other one
+//! with the preload moved and tilted as a study varying the preload draws
+//! it, every increment and Newton iteration of them, at 20 and at 60
+//! increments) must make zero allocations, and give the pose of a seating in a fresh workspace (to
 //! 1e-12 of the motion: the reuse carries nothing over from one seating to
 //! the next). A
 //! seating in a fresh workspace, with its per-contact report, does
@@ -57,6 +58,17 @@ fn allocations() -> usize {
     ALLOCATIONS.with(Cell::get)
 }
 
+/// Each preload force moved by up to a millimetre and tilted by up to
+/// 10 mrad (fixed by `k`).
+fn moved_preload(load: &mut Load, k: usize) {
+    let t = k as f64 / 8.0;
+    for f in &mut load.preload.forces {
+        f.point += Vector3::new(1e-3 * t, -5e-4 * t, 0.0);
+        let tilt = nalgebra::UnitQuaternion::from_scaled_axis(Vector3::new(1e-2 * t, 5e-3, 0.0));
+        f.direction = tilt * f.direction;
+    }
+}
+
 /// Friction vectors in mu0 +- spread (fixed, so the count is reproducible).
 fn frictions(mu0: f64, spread: f64, n: usize) -> Vec<Vec<f64>> {
     (0..8)
@@ -81,11 +93,19 @@ fn a_seating_in_a_reused_workspace_allocates_nothing() {
     ] {
         let (scene, c) = load(name);
         let f = &scene.friction;
-        // The loads (the scene's preload with each friction vector) are
-        // made before any seating is counted.
+        // The loads (each friction vector with the scene's preload, or,
+        // every other one, with the preload moved and tilted as a study
+        // that varies it draws it) are made before any seating is counted.
         let mus: Vec<Load> = frictions(f.mu_static, f.spread, c.contacts.len())
             .iter()
-            .map(|mu| Load::nominal(&scene).with_mu(mu))
+            .enumerate()
+            .map(|(k, mu)| {
+                let mut load = Load::nominal(&scene).with_mu(mu);
+                if k % 2 == 1 {
+                    moved_preload(&mut load, k);
+                }
+                load
+            })
             .collect();
         let setup = SeatingSetup::new(&c, &scene.preload);
         let mut ws = Workspace::new();

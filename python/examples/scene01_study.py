@@ -35,12 +35,11 @@ print("contact states:", seating.states)
 # 3. The study: 400 re-seatings, mu_s of each contact uniform in mu0 +- spread.
 study = kinrepro.study(scene, samples=400, sampler="mc", seed=9)
 poses = study.poses("centre")  # (400, 6): x, y, z [m], phi_x, phi_y, phi_z [rad]
-sigma = study.sigma("centre")  # nm and nrad, as in the study document
-print(f"sigma_x = {sigma['x_nm']:.3f} nm, sigma_y = {sigma['y_nm']:.3f} nm, "
-      f"sigma_z = {sigma['z_nm']:.3f} nm, sigma_phi_z = {sigma['phi_z_nrad']:.3f} nrad")
-# The sigma of the document is the sample standard deviation (n - 1):
-assert np.allclose(poses.std(axis=0, ddof=1)[:3] * 1e9,
-                   [sigma["x_nm"], sigma["y_nm"], sigma["z_nm"]], rtol=1e-9)
+sigma = study.sigma("centre")  # (6,): x, y, z [m], phi_x, phi_y, phi_z [rad]
+print(f"sigma_x = {sigma[0] * 1e9:.3f} nm, sigma_y = {sigma[1] * 1e9:.3f} nm, "
+      f"sigma_z = {sigma[2] * 1e9:.3f} nm, sigma_phi_z = {sigma[5] * 1e9:.3f} nrad")
+# sigma is the sample standard deviation (n - 1) of the poses:
+assert np.allclose(poses.std(axis=0, ddof=1), sigma, rtol=1e-9)
 
 # Which friction coefficient drives x? Correlate inputs with outputs.
 mu = study.inputs()
@@ -62,7 +61,7 @@ if plt is not None:
     ax.scatter(poses[:, 0] * 1e9, poses[:, 1] * 1e9, s=6, alpha=0.6, label="re-seatings")
     t = np.linspace(0, 2 * np.pi, 200)
     for k in (1, 3):
-        ax.plot(k * sigma["x_nm"] * np.cos(t), k * sigma["y_nm"] * np.sin(t),
+        ax.plot(k * sigma[0] * 1e9 * np.cos(t), k * sigma[1] * 1e9 * np.sin(t),
                 label=f"{k} sigma")
     ax.set_xlabel("x [nm]")
     ax.set_ylabel("y [nm]")

@@ -3,8 +3,10 @@
 Python bindings of the kinrepro library (docs/python.md). Every number comes
 from the library; every document (``Study.to_json()``, ``Sweep.to_json()``)
 is the JSON the ``kinrepro`` command line writes. Units are SI (m, rad, N)
-for arrays and inputs; the statistics of the study document (``sigma``) are
-in nm and nrad, as their keys say (``x_nm``, ``phi_x_nrad``).
+for arrays and inputs: ``sigma`` of a ``Study``, ``Sweep`` or ``Prediction``
+is a numpy array in m and rad; the statistics of the study document as
+dicts (``Study.stats()``, ``to_dict()``) are in nm and nrad, as their keys
+say (``x_nm``, ``phi_x_nrad``).
 ``kinrepro.cluster`` runs studies and sweeps in shards on a Dask cluster.
 """
 

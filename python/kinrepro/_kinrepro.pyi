@@ -97,7 +97,7 @@ class Study:
     ) -> Array:
         """(n, 6) pose of ``point`` (None: the first evaluation point) per
         sample relative to the nominal seating: x, y, z [m], phi_x, phi_y,
-        phi_z [rad]. ``np.std(poses, axis=0, ddof=1) * 1e9`` is ``sigma``."""
+        phi_z [rad]. ``np.std(poses, axis=0, ddof=1)`` is ``sigma``."""
     def inputs(self, variant: int = 0) -> Array:
         """(n, k) physical value of each varied input per sample (SI;
         mu dimensionless); columns named by :meth:`input_names`."""
@@ -106,9 +106,11 @@ class Study:
         """Design row of each sample (rows of ``poses`` and ``inputs``)."""
     def sigma(
         self, point: str | None = None, variant: int = 0, interchange: bool = False
-    ) -> dict[str, float]:
-        """Sample standard deviation (n - 1) per DOF: keys ``x_nm``, ``y_nm``,
-        ``z_nm`` [nm], ``phi_x_nrad``, ``phi_y_nrad``, ``phi_z_nrad`` [nrad]."""
+    ) -> Array:
+        """(6,) sample standard deviation (n - 1) per DOF: x, y, z [m], phi_x,
+        phi_y, phi_z [rad], as ``Sweep.sigma`` and ``Prediction.sigma`` give
+        theirs (``stats()["sigma"]`` holds the document's nm and nrad). The
+        old dict keys (``x_nm`` ...) still read, deprecated."""
     def stats(
         self, point: str | None = None, variant: int = 0, interchange: bool = False
     ) -> dict[str, Any]:

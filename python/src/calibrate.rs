@@ -6,16 +6,19 @@ use kinrepro::calibrate::fit::{CalibrateOptions, Calibration as LibCalibration};
 use kinrepro::calibrate::model::{MODEL_SAMPLES, MODEL_SEED, check_model_samples};
 use kinrepro::calibrate::{Measurement, predict as predict_one};
 use kinrepro::dof::{Dof, Dofs};
+use kinrepro::error::parse_scene;
+use kinrepro::param::Param;
 use kinrepro::report::calibration::PredictionReport;
-use kinrepro::solve::Method;
+use kinrepro::solve::Solver;
 use kinrepro::study::PointStats;
 use numpy::ndarray::Array3;
 use numpy::{IntoPyArray, PyArray2, PyArray3, PyReadonlyArray2};
 use pyo3::prelude::*;
 
 use crate::err;
-use crate::scene::{Scene, coupling, pose_rows};
-use crate::study::json_loads;
+use crate::run::Failure;
+use crate::scene::{Scene, pose_rows};
+use crate::study::to_python;
 
 /// A calibration (`kinrepro calibrate`): the fitted friction parameters
 /// with their intervals; `to_json()` is the file `calibrate --out` writes.
@@ -51,7 +54,7 @@ impl Calibration {
 
     /// The whole document as Python objects.
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        json_loads(py, &self.to_json()?)
+        to_python(py, &self.cal)
     }
 
     /// The fitted value of each parameter (`spread`, ...), SI.
@@ -94,9 +97,10 @@ impl Measured {
             return Ok(Measured::File(path, delimiter));
         }
         if delimiter.is_some() {
-            return Err(err(
-                "--delimiter: applies to a measurement file, not to an array",
-            ));
+            return Err(err(format!(
+                "{}: applies to a measurement file, not to an array",
+                Param::Delimiter
+            )));
         }
         let np = measured.py().import("numpy")?;
         let array = np.call_method1("asarray", (measured, "float64"))?;
@@ -128,11 +132,9 @@ impl Measured {
             .map_err(err)
     }
 
-    fn load(self) -> Result<Measurement, String> {
+    fn load(self) -> Result<Measurement, Failure> {
         match self {
-            Measured::File(path, delimiter) => {
-                Measurement::load(&path, delimiter).map_err(|e| e.to_string())
-            }
+            Measured::File(path, delimiter) => Ok(Measurement::load(&path, delimiter)?),
             Measured::Array(m) => Ok(*m),
         }
     }
@@ -160,11 +162,11 @@ pub fn calibrate(
     jobs: Option<usize>,
     dofs: Option<Vec<String>>,
 ) -> PyResult<Calibration> {
-    let samples = check_model_samples("--model-samples", model_samples).map_err(err)?;
+    let samples = check_model_samples(Param::ModelSamples, model_samples).map_err(err)?;
     let mut noise_si = [None; 6];
     if let Some(n) = &noise {
         kinrepro::calibrate::units::parse_noise(n, &mut noise_si)
-            .map_err(|e| err(format!("--noise: {e}")))?;
+            .map_err(|e| err(format!("{}: {e}", Param::Noise)))?;
     }
     let measured = Measured::new(measured, dofs, delimiter, point.clone())?;
     let options = CalibrateOptions {
@@ -173,13 +175,13 @@ pub fn calibrate(
         point,
         samples,
         seed,
-        method: Method::default(),
+        solver: Solver::QuasiStatic,
     };
     let (text, file) = (scene.text.clone(), scene.file.clone());
     let cal = crate::run::interruptible(py, jobs, move || {
-        let c = coupling(&text, &file)?;
+        let (scene, c) = parse_scene(&text, &file)?;
         let m = measured.load()?;
-        kinrepro::calibrate::calibrate(&c, &m, &options).map_err(|e| e.to_string())
+        Ok(kinrepro::calibrate::calibrate(&scene, &c, &m, &options)?)
     })?;
     Ok(Calibration {
         cal,
@@ -215,13 +217,13 @@ impl Prediction {
 impl Prediction {
     /// The document of `kinrepro predict --format json`.
     fn to_json(&self) -> PyResult<String> {
-        let v = self.report.json().map_err(err)?;
-        serde_json::to_string_pretty(&v).map_err(err)
+        serde_json::to_string_pretty(&self.report.document()).map_err(err)
     }
 
-    /// The whole document as Python objects (`json.loads(to_json())`).
+    /// The whole document as Python objects (as `json.loads(to_json())`
+    /// reads it).
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        json_loads(py, &self.to_json()?)
+        to_python(py, &self.report.document())
     }
 
     /// The text table of `kinrepro predict`.
@@ -278,7 +280,7 @@ pub fn predict(
     seed: u64,
     jobs: Option<usize>,
 ) -> PyResult<Prediction> {
-    let samples = check_model_samples("--samples", samples).map_err(err)?;
+    let samples = check_model_samples(Param::Samples, samples).map_err(err)?;
     let scenes = crate::scene::scenes(scenes, "scenes")?;
     let cal = calibration.cal.clone();
     let file = calibration.file.clone();
@@ -286,11 +288,11 @@ pub fn predict(
         let predictions = scenes
             .iter()
             .map(|s| {
-                let c = coupling(&s.text, &s.file)?;
-                predict_one(&c, &cal, &file, samples, seed, Method::default())
-                    .map_err(|e| e.to_string())
+                let (scene, c) = parse_scene(&s.text, &s.file)?;
+                let studies = (samples, seed, Solver::QuasiStatic);
+                Ok(predict_one(&scene, &c, &cal, &file, studies)?)
             })
-            .collect::<Result<Vec<_>, String>>()?;
+            .collect::<Result<Vec<_>, Failure>>()?;
         Ok(PredictionReport {
             calibration_file: file,
             calibration: cal,

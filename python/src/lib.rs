@@ -1,9 +1,11 @@
 //! `kinrepro._kinrepro`: the Python bindings of the kinrepro library
 //! (docs/python.md). No physics and no statistics here: every function
 //! calls the library's public API the way the CLI does
-//! (`src/bin/kinrepro/commands`), and every document is the library's
-//! serde JSON; the options of a study are checked by the library's
-//! `StudyRequest`, as the CLI's flags are. Long runs (study, sweep,
+//! (`src/bin/kinrepro/commands`), every document is the library's serde
+//! form (JSON text, or Python objects built from it directly), and the
+//! options of a study are checked by the library's study plan, as the
+//! CLI's flags are; the library's messages name the keywords (its own
+//! spelling of a parameter, `samples=7`). Long runs (study, sweep,
 //! calibrate, predict) run on a worker thread with the GIL released
 //! ([`run::interruptible`]); Ctrl-C stops them through the library's stop
 //! request and raises `KeyboardInterrupt`.

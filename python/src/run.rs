@@ -27,7 +27,18 @@ const GRACE: Duration = Duration::from_secs(5);
 const POLL: Duration = Duration::from_millis(50);
 
 /// What a run returns: its value or the library's message.
-pub type Outcome<T> = Result<T, String>;
+pub type Outcome<T> = Result<T, Failure>;
+
+/// A failed run: the library's message (any library error converts into
+/// it with `?`).
+#[derive(Debug)]
+pub struct Failure(pub String);
+
+impl<E: std::error::Error> From<E> for Failure {
+    fn from(e: E) -> Self {
+        Failure(e.to_string())
+    }
+}
 
 /// Runs in flight in this process.
 static IN_FLIGHT: AtomicUsize = AtomicUsize::new(0);
@@ -65,7 +76,7 @@ where
     F: FnOnce() -> Outcome<T> + Send + 'static,
 {
     if jobs == Some(0) {
-        return Err(crate::err("--jobs 0: need at least 1 worker thread"));
+        return Err(crate::err("jobs=0: need at least 1 worker thread"));
     }
     let pool = match jobs {
         None => None,
@@ -120,7 +131,7 @@ fn finish<T>(ended: Ended<T>) -> PyResult<T> {
             "kinrepro: run stopped by Ctrl-C",
         )),
         Ok(Ok(v)) => Ok(v),
-        Ok(Err(message)) => Err(crate::err(message)),
+        Ok(Err(Failure(message))) => Err(crate::err(message)),
         Err(payload) => Err(PyRuntimeError::new_err(panic_text(&payload))),
     }
 }

@@ -1,18 +1,20 @@
 //! `Scene` (a validated scene file's text), `seat` and `stiffness`.
 
 use kinrepro::analysis::stiffness::CouplingStiffness;
-use kinrepro::assembly::Coupling;
+use kinrepro::error::parse_scene;
 use kinrepro::explore::field::{kind_of, set};
 use kinrepro::explore::{FieldKind, SweptValue};
 use kinrepro::report::coupling::analysis::StiffnessReport;
 use kinrepro::report::seating::run::RunReport;
-use kinrepro::solve::SolverOptions;
+use kinrepro::scene::SceneFile;
+use kinrepro::solve::{Load, SolverOptions};
 use nalgebra::Vector3;
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::prelude::*;
 
 use crate::err;
+use crate::run::Failure;
 
 /// A kinematic coupling scene: the text of a scene file (TOML), validated
 /// and assembled exactly like `kinrepro check` does. Immutable: `set`
@@ -30,32 +32,14 @@ pub struct Scene {
 
 impl Scene {
     pub fn new(text: String, file: String) -> PyResult<Scene> {
-        let c = coupling(&text, &file).map_err(err)?;
+        let (s, _) = parse_scene(&text, &file).map_err(err)?;
         Ok(Scene {
-            name: c.scene.name.clone(),
-            points: c
-                .scene
-                .evaluation_points
-                .iter()
-                .map(|p| p.name.clone())
-                .collect(),
+            name: s.name.clone(),
+            points: s.evaluation_points.iter().map(|p| p.name.clone()).collect(),
             text,
             file,
         })
     }
-}
-
-/// Parse, validate and assemble a scene text (`error::read_coupling` for
-/// a text instead of a path).
-pub fn coupling(text: &str, file: &str) -> Result<Coupling, String> {
-    let scene = kinrepro::scene::Scene::parse(text, file).map_err(|e| e.to_string())?;
-    Coupling::new(&scene).map_err(|source| {
-        kinrepro::error::Error::Assembly {
-            file: file.to_string(),
-            source,
-        }
-        .to_string()
-    })
 }
 
 /// One `Scene` or a list of them (`what`: the argument's name).
@@ -102,14 +86,8 @@ impl Scene {
     /// `kinrepro sweep --set`, e.g. `preload.force` [N],
     /// `friction.mu_static`, `coupling.ball_radius` [m], `materials.NAME.KEY`.
     fn set(&self, field: &str, value: &Bound<'_, PyAny>) -> PyResult<Scene> {
-        let mut table: toml::Table = toml::from_str(&self.text).map_err(|e| {
-            err(format!(
-                "{}: not a TOML document: {}",
-                self.file,
-                e.message()
-            ))
-        })?;
-        let kind = kind_of(field, &table).map_err(err)?;
+        let mut typed = SceneFile::parse(&self.text, &self.file).map_err(err)?;
+        let kind = kind_of(field, &typed).map_err(err)?;
         let v = match kind {
             FieldKind::Number => SweptValue::Number(
                 value
@@ -122,8 +100,8 @@ impl Scene {
                     .map_err(|_| err(format!("{field}: needs a name, got {value}")))?,
             ),
         };
-        set(&mut table, field, &v).map_err(err)?;
-        let text = toml::to_string(&table).map_err(err)?;
+        set(&mut typed, field, &v).map_err(|e| err(format!("{field}: {e}")))?;
+        let text = toml::to_string(&typed).map_err(err)?;
         Scene::new(text, self.file.clone())
     }
 
@@ -251,8 +229,13 @@ impl Seating {
     }
 }
 
-fn mu_of(c: &Coupling, mu: Option<Vec<f64>>) -> Vec<f64> {
-    mu.unwrap_or_else(|| kinrepro::solve::nominal_mu(c))
+/// The scene's nominal load, with the static coefficients `mu` if given.
+fn load_of(scene: &kinrepro::scene::Scene, mu: Option<Vec<f64>>) -> Load {
+    let nominal = Load::nominal(scene);
+    match mu {
+        Some(mu) => nominal.with_mu(&mu),
+        None => nominal,
+    }
 }
 
 /// Seat the coupling once (`kinrepro run`): `mu` the static friction
@@ -271,22 +254,27 @@ pub fn seat(
 ) -> PyResult<Seating> {
     let method = crate::options::method(solver, increments, path_tolerance)?;
     let (text, file) = (scene.text.clone(), scene.file.clone());
-    let report = py.detach(move || -> Result<RunReport, String> {
-        let c = coupling(&text, &file)?;
-        let nominal_mu = kinrepro::solve::nominal_mu(&c);
-        let mu = mu_of(&c, mu);
-        let start = kinrepro::solve::dynamic::StartPose::touching();
-        let s = |m: &[f64]| {
+    let report = py.detach(move || -> Result<RunReport, Failure> {
+        let (scene, c) = parse_scene(&text, &file)?;
+        let (nominal, load) = (Load::nominal(&scene), load_of(&scene, mu));
+        let seat = |l: &Load| {
             method
-                .seat(&c, m, &start)
-                .map_err(|e| format!("{file}: {e}"))
+                .seat(&c, l)
+                .map_err(|e| Failure(format!("{file}: {e}")))
         };
-        let seating = s(&mu)?;
-        let nominal = s(&nominal_mu)?;
-        Ok(RunReport::new(&c, &mu, &seating, &nominal, method.name()))
+        let seating = seat(&load)?;
+        let nominal = seat(&nominal)?;
+        let model = (&scene, &c);
+        Ok(RunReport::new(
+            model,
+            &load.mu,
+            &seating,
+            &nominal,
+            method.name(),
+        ))
     });
     Ok(Seating {
-        report: report.map_err(err)?,
+        report: report.map_err(|Failure(m)| err(m))?,
     })
 }
 
@@ -302,15 +290,15 @@ pub fn stiffness<'py>(
     at: Option<&Bound<'py, PyAny>>,
     mu: Option<Vec<f64>>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let c = coupling(&scene.text, &scene.file).map_err(err)?;
+    let (sc, c) = parse_scene(&scene.text, &scene.file).map_err(err)?;
     let point = match at {
         None => {
-            let p = &c.scene.evaluation_points[0];
+            let p = &sc.evaluation_points[0];
             (p.name.clone(), p.position)
         }
         Some(a) => match a.extract::<String>() {
             Ok(name) => {
-                let found = c.scene.evaluation_points.iter().find(|p| p.name == name);
+                let found = sc.evaluation_points.iter().find(|p| p.name == name);
                 let p = found.ok_or_else(|| {
                     err(format!(
                         "at={name:?}: no such evaluation point, have {:?}",
@@ -331,14 +319,14 @@ pub fn stiffness<'py>(
         },
     };
     let file = scene.file.clone();
-    let report = py.detach(move || -> Result<StiffnessReport, String> {
-        let mu = mu_of(&c, mu);
-        let fail = |e: &dyn std::fmt::Display| format!("{file}: {e}");
-        let seating = kinrepro::solve::quasistatic::seat(&c, &mu, &SolverOptions::default())
+    let report = py.detach(move || -> Result<StiffnessReport, Failure> {
+        let load = load_of(&sc, mu);
+        let fail = |e: &dyn std::fmt::Display| Failure(format!("{file}: {e}"));
+        let seating = kinrepro::solve::quasistatic::seat(&c, &load, &SolverOptions::default())
             .map_err(|e| fail(&e))?;
-        let k = CouplingStiffness::new(&c, &seating, &mu).map_err(|e| fail(&e))?;
-        StiffnessReport::new(&c, &mu, &seating, &k, &[point]).map_err(|e| fail(&e))
+        let k = CouplingStiffness::new(&c, &seating, &load).map_err(|e| fail(&e))?;
+        StiffnessReport::new(&sc, &load.mu, &seating, &k, &[point]).map_err(|e| fail(&e))
     });
-    let m = report.map_err(err)?.points[0].matrix;
+    let m = report.map_err(|Failure(m)| err(m))?.points[0].matrix;
     Ok(Array2::from_shape_fn((6, 6), |(i, j)| m[i][j]).into_pyarray(py))
 }

@@ -7,8 +7,9 @@ use numpy::{IntoPyArray, PyArray2};
 use pyo3::prelude::*;
 
 use crate::err;
-use crate::options::StudyArgs;
-use crate::scene::coupling;
+use crate::options::Keywords;
+use kinrepro::error::parse_scene;
+use kinrepro::study::StudyOptions;
 
 /// A reproducibility study: the document of `kinrepro study --format json`
 /// (`to_json`), with numpy views of its samples.
@@ -17,9 +18,14 @@ pub struct Study {
     pub report: StudyReport,
 }
 
-/// `json.loads(text)`.
-pub fn json_loads<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyAny>> {
-    py.import("json")?.call_method1("loads", (text,))
+/// A document as Python objects (dicts, lists, numbers, strings, None),
+/// built from its serde form without JSON text: through its JSON data
+/// model (`serde_json::Value`: a fixed-size array is a list, a non-finite
+/// number None, as in its JSON), so that it equals `json.loads` of its
+/// JSON.
+pub fn to_python<'py, T: serde::Serialize>(py: Python<'py>, v: &T) -> PyResult<Bound<'py, PyAny>> {
+    let value = serde_json::to_value(v).map_err(err)?;
+    pythonize::pythonize(py, &value).map_err(err)
 }
 
 /// No records are kept: the records a study needs to answer `what`.
@@ -36,10 +42,6 @@ impl Study {
             .variants
             .get(i)
             .ok_or_else(|| err(format!("variant={i}: the study has {n} scene(s)")))
-    }
-
-    fn json_value<'py, T: serde::Serialize>(py: Python<'py>, v: &T) -> PyResult<Bound<'py, PyAny>> {
-        json_loads(py, &serde_json::to_string(v).map_err(err)?)
     }
 }
 
@@ -152,8 +154,9 @@ impl Study {
     }
 
     /// Sample standard deviation (n - 1) of each DOF at `point` (None: the
-    /// first), the JSON's `sigma`: keys x_nm, y_nm, z_nm [nm], phi_x_nrad,
-    /// phi_y_nrad, phi_z_nrad [nrad]. A shard has none (merge first).
+    /// first): a (6,) array x, y, z [m], phi_x, phi_y, phi_z [rad], as
+    /// `Sweep.sigma` and `Prediction.sigma` give theirs (`stats()` has the
+    /// JSON's nm and nrad). A shard has none (merge first).
     #[pyo3(signature = (point = None, variant = 0, interchange = false))]
     fn sigma<'py>(
         &self,
@@ -163,7 +166,11 @@ impl Study {
         interchange: bool,
     ) -> PyResult<Bound<'py, PyAny>> {
         let p = self.point_stats_of(point, variant, interchange)?;
-        Study::json_value(py, &p.sigma)
+        let array = numpy::PyArray1::from_vec(py, p.sigma.si().to_vec());
+        // The array answers the old dict keys, deprecated (kinrepro._sigma).
+        py.import("kinrepro._sigma")?
+            .getattr("Sigma")?
+            .call1((array,))
     }
 
     /// All statistics of `point` as in the JSON's `points` entry (n, sigma,
@@ -177,12 +184,12 @@ impl Study {
         interchange: bool,
     ) -> PyResult<Bound<'py, PyAny>> {
         let p = self.point_stats_of(point, variant, interchange)?;
-        Study::json_value(py, p)
+        to_python(py, p)
     }
 
     /// The whole document as Python objects (`json.loads(to_json())`).
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        Study::json_value(py, &self.report)
+        to_python(py, &self.report)
     }
 
     /// Number of scenes (variants) in the document.
@@ -256,9 +263,8 @@ impl Study {
 }
 
 /// Run a reproducibility study of one scene or a list of scenes
-/// (`kinrepro study`): the options are checked by the library's
-/// `StudyRequest` and the study planned and run by its `StudyPlan`, as the
-/// CLI does; see the stub for the arguments.
+/// (`kinrepro study`): the library's `StudyPlan` checks the options and
+/// runs the study, as for the CLI; see the stub for the arguments.
 #[pyfunction]
 #[pyo3(signature = (
     scene, samples = None, sampler = None, seed = None, vary = vec!["friction".to_string()],
@@ -286,32 +292,32 @@ pub fn study(
     tilt_bounds: Option<[f64; 3]>,
 ) -> PyResult<Study> {
     let scenes = crate::scene::scenes(scene, "scene")?;
-    let settings = StudyArgs {
-        samples,
-        sampler,
-        seed,
-        vary: Some(vary),
-        shard: Some(crate::options::shard(shard)?),
-        solver: Some(solver),
-        increments,
-        path_tolerance,
-        replicates,
-        sensitivity,
-        sobol_samples,
+    let (solver, vary) = crate::options::solver_and_vary(&solver, &vary)?;
+    let options = StudyOptions {
+        solver,
+        vary,
         offset_bounds,
         tilt_bounds,
-    }
-    .settings()?;
+        sensitivity,
+        sobol_samples,
+        ..Keywords {
+            samples,
+            sampler,
+            seed,
+            shard,
+            increments,
+            path_tolerance,
+            replicates,
+        }
+        .options()?
+    };
     let report = crate::run::interruptible(py, jobs, move || {
-        let couplings = scenes
+        let models = scenes
             .iter()
-            .map(|s| coupling(&s.text, &s.file))
+            .map(|s| parse_scene(&s.text, &s.file))
             .collect::<Result<Vec<_>, _>>()?;
-        let plan = StudyPlan::new(&couplings, settings.options, settings.sobol_samples)
-            .map_err(|e| e.to_string())?;
-        let (report, _) = plan
-            .run::<NoSink>(&|| {}, |_, _| Ok(None))
-            .map_err(|e| e.to_string())?;
+        let plan = StudyPlan::new(models, &options)?;
+        let (report, _) = plan.run::<NoSink>(&|| {}, |_, _| Ok(None))?;
         Ok(report)
     })?;
     Ok(Study { report })

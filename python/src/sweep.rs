@@ -1,7 +1,8 @@
 //! `sweep`, `Sweep` (the sweep document, with numpy views over its design
 //! points) and the merge of sweep shards, as `kinrepro sweep` runs them.
 
-use kinrepro::explore::run::run;
+use kinrepro::error::parse_scene;
+use kinrepro::explore::run::{run, study_plan};
 use kinrepro::explore::{
     DesignKind, SweepReport, SweepSpec, SweptValue, merge_sweeps as lib_merge,
 };
@@ -10,8 +11,9 @@ use numpy::{IntoPyArray, PyArray2};
 use pyo3::prelude::*;
 
 use crate::err;
-use crate::options::StudyArgs;
-use crate::scene::{Scene, coupling, pose_rows};
+use crate::options::Keywords;
+use crate::scene::{Scene, pose_rows};
+use crate::study::to_python;
 
 /// A sweep over scene fields: the document of `kinrepro sweep --format json`.
 #[pyclass(module = "kinrepro", frozen)]
@@ -38,7 +40,7 @@ impl Sweep {
     /// `designs` holds one entry per design point with its values, sigma
     /// (nm, nrad), stiffness, safety and Pareto flag.
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        crate::study::json_loads(py, &self.to_json()?)
+        to_python(py, &self.report)
     }
 
     /// The text table of `kinrepro sweep`.
@@ -144,9 +146,9 @@ pub fn merge_sweeps(py: Python<'_>, parts: &[Bound<'_, PyAny>]) -> PyResult<Py<P
     Ok(Py::new(py, Sweep { report: merged })?.into_any())
 }
 
-/// A sweep (`kinrepro sweep`); `sets`: the `--set` arguments as
-/// `FIELD=VALUES` strings. Each design point's study is checked by the
-/// library's `StudyRequest` (friction varied, quasi-static), as the CLI's.
+/// A sweep (`kinrepro sweep`); `sets`: the swept fields as `FIELD=VALUES`
+/// strings. Each design point's study (friction varied, quasi-static) is
+/// planned and checked by the library, as the CLI's.
 #[pyfunction]
 #[pyo3(signature = (
     scene, sets, points = None, pareto_point = None, samples = None, sampler = None,
@@ -169,24 +171,30 @@ pub fn sweep(
     path_tolerance: Option<f64>,
     replicates: Option<usize>,
 ) -> PyResult<Sweep> {
-    let opts = StudyArgs {
+    let options = Keywords {
         samples,
         sampler,
         seed,
-        shard: Some(crate::options::shard(shard)?),
+        shard,
         increments,
         path_tolerance,
         replicates,
-        ..StudyArgs::default()
     }
-    .settings()?
-    .options;
+    .options()?;
     let (text, file) = (scene.text.clone(), scene.file.clone());
     let report = crate::run::interruptible(py, jobs, move || {
-        let base = coupling(&text, &file)?;
-        let design = DesignKind::new(points, opts.seed, &base);
-        let spec = SweepSpec::new(&file, &text, &sets, design).map_err(|e| e.to_string())?;
-        run(&spec, &base, &opts, pareto_point.as_deref(), &|| {}).map_err(|e| e.to_string())
+        let (base, coupling) = parse_scene(&text, &file)?;
+        let design = DesignKind::new(points, options.seed, &base);
+        let spec = SweepSpec::new(&file, &text, &sets, design)?;
+        let plan = study_plan(base, coupling, &options)?;
+        let tick = &|| {};
+        Ok(run(
+            &spec,
+            &plan,
+            options.shard,
+            pareto_point.as_deref(),
+            tick,
+        )?)
     })?;
     Ok(Sweep { report })
 }

@@ -20,7 +20,7 @@ except KeyboardInterrupt:
     print("interrupted", flush=True)
     # The next call runs to its end, with the numbers of a fresh process.
     again = kinrepro.study(scene, samples=20, sampler="mc", seed=5)
-    print(repr(again.sigma()["x_nm"]), flush=True)
+    print(repr(float(again.sigma()[0])), flush=True)
     sys.exit(0)
 print("finished", flush=True)
 sys.exit(1)
@@ -58,7 +58,7 @@ def test_sigint_raises_keyboard_interrupt(call):
     # The study after the interrupt is the one a fresh process computes.
     fresh = subprocess.run(
         [sys.executable, "-c", 'import kinrepro; s = kinrepro.Scene.load("scenes/01_maxwell_vgroove_steel.toml"); '
-         'print(repr(kinrepro.study(s, samples=20, sampler="mc", seed=5).sigma()["x_nm"]))'],
+         'print(repr(float(kinrepro.study(s, samples=20, sampler="mc", seed=5).sigma()[0])))'],
         cwd=ROOT, check=True, capture_output=True, text=True,
     ).stdout
     assert float(out.strip()) == pytest.approx(float(fresh.strip()), rel=1e-12)

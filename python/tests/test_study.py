@@ -2,6 +2,8 @@
 
 import json
 import math
+import re
+import warnings
 
 import numpy as np
 import pytest
@@ -9,6 +11,13 @@ import pytest
 import kinrepro
 
 DOFS = ["x_nm", "y_nm", "z_nm", "phi_x_nrad", "phi_y_nrad", "phi_z_nrad"]
+
+# The library's parameters as Python spells them (`samples=7`); the CLI
+# spells the same parameters as flags (`--samples 7`).
+KEYWORDS = [
+    "samples", "sampler", "seed", "shard", "solver", "increments", "path_tolerance", "vary",
+    "offset_bounds", "tilt_bounds", "sensitivity", "sobol_samples", "replicates", "mu", "jobs",
+]
 
 
 def test_version_and_error_type():
@@ -36,11 +45,32 @@ def test_poses_std_equals_sigma(study01):
     assert poses.shape == (400, 6)
     assert poses.dtype == np.float64
     sigma = study01.sigma("centre")
-    std = poses.std(axis=0, ddof=1) * 1e9
+    assert isinstance(sigma, np.ndarray) and sigma.shape == (6,)
+    std = poses.std(axis=0, ddof=1)
     for j, k in enumerate(DOFS):
-        assert std[j] == pytest.approx(sigma[k], rel=1e-9), k
+        assert std[j] == pytest.approx(sigma[j], rel=1e-9), k
+    # The JSON's sigma (nm, nrad) is the same number.
+    for j, k in enumerate(DOFS):
+        assert study01.stats("centre")["sigma"][k] == pytest.approx(sigma[j] * 1e9, rel=1e-12), k
     # The scatter is friction-induced: nm scale, not zero, not metres.
-    assert 1e-3 < sigma["x_nm"] < 1e4
+    assert 1e-12 < sigma[0] < 1e-5
+
+
+def test_sigma_is_one_convention_and_the_old_keys_are_deprecated(study01, scene01):
+    # Study, Sweep and Prediction give sigma as arrays in m and rad.
+    s = study01.sigma("centre")
+    sweep = kinrepro.sweep(scene01, sets={"preload.force": [20.0]}, samples=400, sampler="mc", seed=9)
+    np.testing.assert_array_equal(sweep.sigma("centre")[0], s)
+    # The old dict spelling of Study.sigma() still answers, in nm, with a warning.
+    with pytest.warns(DeprecationWarning, match="SI"):
+        assert s["x_nm"] == pytest.approx(s[0] * 1e9, rel=1e-15)
+    with pytest.warns(DeprecationWarning):
+        assert s.keys() == DOFS
+    with pytest.warns(DeprecationWarning):
+        assert dict(s.items())["phi_z_nrad"] == pytest.approx(s[5] * 1e9, rel=1e-15)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert float(s[1]) == s.tolist()[1]  # indexing by number warns of nothing
 
 
 def test_inputs_are_the_sampled_friction(study01, scene01):
@@ -72,10 +102,12 @@ def test_four_shards_merge_to_one_run(study01, scene01):
     with pytest.raises(kinrepro.KinreproError, match="shard"):
         parts[0].sigma()
     merged = kinrepro.merge(parts)
-    assert merged.sigma("centre") == study01.sigma("centre")
+    np.testing.assert_array_equal(merged.sigma("centre"), study01.sigma("centre"))
     np.testing.assert_array_equal(merged.poses(), study01.poses())
     # Through JSON text, as files would travel.
-    assert kinrepro.merge([p.to_json() for p in parts]).sigma() == study01.sigma()
+    np.testing.assert_array_equal(
+        kinrepro.merge([p.to_json() for p in parts]).sigma(), study01.sigma()
+    )
 
 
 def test_preload_scales_sigma_z_by_the_hertz_power(scene01):
@@ -83,7 +115,7 @@ def test_preload_scales_sigma_z_by_the_hertz_power(scene01):
     # friction-only pattern, so sigma_z scales by (F2/F1)^(2/3) exactly.
     base = kinrepro.study(scene01, samples=50, sampler="mc", seed=3)
     heavy = kinrepro.study(scene01.set("preload.force", 40.0), samples=50, sampler="mc", seed=3)
-    ratio = heavy.sigma()["z_nm"] / base.sigma()["z_nm"]
+    ratio = heavy.sigma()[2] / base.sigma()[2]
     assert ratio == pytest.approx((40.0 / 20.0) ** (2.0 / 3.0), rel=1e-6)
 
 
@@ -151,7 +183,7 @@ def test_several_scenes_are_the_cli_study_of_several(cli):
     assert len(s) == 2
     theirs = cli("study", *files, "--samples", 10, "--seed", 2, "--format", "json")
     assert json.loads(s.to_json()) == theirs
-    assert s.sigma(variant=1) == theirs["variants"][1]["points"][0]["sigma"]
+    assert s.stats(variant=1)["sigma"] == theirs["variants"][1]["points"][0]["sigma"]
     assert "samples=10" in repr(s) and '"lhs"' in repr(s)
 
 
@@ -174,21 +206,49 @@ OPTION_ERRORS = [
 ]
 
 
+def unspelled(message):
+    """A message without its parameters' spellings: the CLI's flags
+    (`--path-tolerance`), Python's `name=` and bare names, whitespace
+    collapsed; what the one library check said, whoever asked."""
+    for name in sorted(KEYWORDS, key=len, reverse=True):
+        message = message.replace("--" + name.replace("_", "-"), " ")
+        message = re.sub(rf"\b{name}=", " ", message)
+        message = re.sub(rf"\b{name}\b", " ", message)
+    return " ".join(message.split())
+
+
 @pytest.mark.parametrize("kwargs, flags", OPTION_ERRORS, ids=[str(k) for k, _ in OPTION_ERRORS])
 def test_option_errors_are_the_clis(scene01, kwargs, flags):
-    # One library function checks the options of both (study::request):
-    # the same options are refused with the same message.
+    # One library check refuses the options of both (the study plan): the
+    # same message, each naming the parameter its own way: Python its
+    # keyword, never a flag.
     from conftest import cli_path
     import subprocess
 
     with pytest.raises(kinrepro.KinreproError) as e:
         kinrepro.study(scene01, **kwargs)
+    ours = str(e.value)
+    assert "--" not in ours, ours
+    assert any(k in ours for k in kwargs), ours
     if not cli_path().is_file():
         pytest.skip("the kinrepro CLI is not built")
     r = subprocess.run([str(cli_path()), "study", "scenes/01_maxwell_vgroove_steel.toml",
                         *map(str, flags)], capture_output=True, text=True)
     assert r.returncode != 0
-    assert r.stderr.splitlines()[-1] == f"error: {e.value}"
+    theirs = r.stderr.splitlines()[-1].removeprefix("error: ")
+    assert "--" in theirs, theirs
+    assert unspelled(theirs) == unspelled(ours)
+
+
+@pytest.mark.parametrize("call, keyword", [
+    (lambda s: kinrepro.study(s, path_tolerance=-1), "path_tolerance=-1"),
+    (lambda s: kinrepro.study(s, samples=7), "samples=6"),
+    (lambda s: kinrepro.seat(s, mu=[0.1] * 5), "mu needs 6 values"),
+])
+def test_messages_name_the_python_parameter(scene01, call, keyword):
+    with pytest.raises(kinrepro.KinreproError) as e:
+        call(scene01)
+    assert keyword in str(e.value) and "--" not in str(e.value), str(e.value)
 
 
 def test_dynamic_start_study_is_the_clis(scene01, cli):

@@ -119,7 +119,9 @@ pub struct FrictionLaws {
 
 /// An assembled coupling: its geometry, materials and laws. What a seating
 /// varies (friction coefficients, preload, start) is not here: the solvers
-/// take it as an argument (`solve::Load`).
+/// take it as an argument (`solve::Load`). It is made from a scene and
+/// does not follow later edits of the scene: change both, or assemble
+/// again (as `calibrate::params::Param::set` does for a fitted parameter).
 #[derive(Debug, Clone)]
 pub struct Coupling {
     pub balls: Vec<MovingBall>,

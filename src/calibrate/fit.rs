@@ -63,7 +63,7 @@ pub fn calibrate(
     let noise_var: Vec<f64> = noise.iter().map(|v| v * v).collect();
     let obs = observed(m);
     let models = StudyOptions::monte_carlo(opts.samples, opts.seed, opts.solver);
-    let plan = StudyPlan::new(vec![(scene.clone(), coupling.clone())], &models)?;
+    let plan = StudyPlan::keeping_records(vec![(scene.clone(), coupling.clone())], &models)?;
     let spec = StudySpec {
         plan: &plan,
         point,
@@ -97,14 +97,7 @@ pub fn calibrate(
         check = check.max(region_check(&spec, &jm, &params, &fit.region, &noise_var)?);
     }
     let info = model_info(&spec, s_ref, grid, linearity, check);
-    let mut cal = skeleton(
-        scene,
-        m,
-        point,
-        gof,
-        info,
-        at_estimate.fingerprint.clone(),
-    );
+    let mut cal = skeleton(scene, m, point, gof, info, at_estimate.fingerprint.clone());
     cal.dofs = dof_fits(m, &noise, &fitted, &g_hat, s_hat);
     let names = || params.iter().map(|p| p.name().to_string());
     cal.region = fit

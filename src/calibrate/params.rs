@@ -92,10 +92,9 @@ impl Param {
             }
             Param::MuStatic => MU_STATIC_RANGE,
             Param::DynamicRatio => DYNAMIC_RATIO_RANGE,
-            Param::SupportCompliance => (
-                0.0,
-                SUPPORT_COMPLIANCE_HERTZ_MULTIPLE * hertz_compliance(v),
-            ),
+            Param::SupportCompliance => {
+                (0.0, SUPPORT_COMPLIANCE_HERTZ_MULTIPLE * hertz_compliance(v))
+            }
         }
     }
 

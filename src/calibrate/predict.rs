@@ -69,7 +69,7 @@ pub fn predict(
 ) -> Result<Prediction, CalibrateError> {
     let file = scene.file.clone();
     let options = StudyOptions::monte_carlo(samples, seed, solver);
-    let plan = StudyPlan::new(vec![(scene.clone(), coupling.clone())], &options)?;
+    let plan = StudyPlan::keeping_records(vec![(scene.clone(), coupling.clone())], &options)?;
     let estimate = with_parameters(&plan.variants[0], &cal.estimates());
     let region: Vec<Variant> = cal
         .region_points()

@@ -105,14 +105,13 @@ fn grid(sets: &[Set]) -> Result<Vec<DesignPoint>, ExploreError> {
 }
 
 fn lhs(sets: &[Set], points: usize, seed: u64) -> Result<Vec<DesignPoint>, ExploreError> {
-    let rows = sampling::design(Sampler::Lhs, sets.len(), points, seed)
-        .map_err(|e| {
-            ExploreError::Design(format!(
-                "{} {}: {e}",
-                Param::Design.with("lhs"),
-                Param::Points.with(points)
-            ))
-        })?;
+    let rows = sampling::design(Sampler::Lhs, sets.len(), points, seed).map_err(|e| {
+        ExploreError::Design(format!(
+            "{} {}: {e}",
+            Param::Design.with("lhs"),
+            Param::Points.with(points)
+        ))
+    })?;
     Ok(rows
         .into_iter()
         .enumerate()

@@ -172,15 +172,16 @@ fn seat_and_study(
     e: &mut Evaluation,
 ) -> Result<Outcome, EvalError> {
     let load = Load::nominal(&v.scene);
-    let seating = plan
-        .method()
-        .seat(&v.coupling, &load)
-        .map_err(|source| EvalError::NominalSeating {
-            mu: load.mu[0],
-            source,
-        })?;
+    let seating =
+        plan.method()
+            .seat(&v.coupling, &load)
+            .map_err(|source| EvalError::NominalSeating {
+                mu: load.mu[0],
+                source,
+            })?;
     e.nominal = Some(nominal(&v.scene, &v.coupling, &seating, &load)?);
-    if let Some(reason) = crate::study::verdict::cannot_seat(&v.scene, &v.coupling, plan.method())? {
+    if let Some(reason) = crate::study::verdict::cannot_seat(&v.scene, &v.coupling, plan.method())?
+    {
         return Ok(Outcome::CannotSeat(reason));
     }
     let report = plan.kept(v, tick)?;

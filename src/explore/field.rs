@@ -196,14 +196,15 @@ pub fn set(scene: &mut SceneFile, path: &str, value: &SweptValue) -> Result<(), 
                 .coupling
                 .as_mut()
                 .ok_or_else(|| FieldError::NoTable("coupling".into()))?;
-            set_coupling(c, key, x, name)
+            return set_coupling(c, key, x, name);
         }
-        ["preload", "force"] => Ok(scene.preload.force = Some(at(x))),
-        ["preload", "ramp_time"] => Ok(scene.preload.ramp_time = Some(at(x))),
-        ["friction", key] => set_friction(scene, key, x, name),
-        ["materials", m, key] => set_material(scene, m, key, x),
-        _ => Err(FieldError::NotSweepable),
+        ["preload", "force"] => scene.preload.force = Some(at(x)),
+        ["preload", "ramp_time"] => scene.preload.ramp_time = Some(at(x)),
+        ["friction", key] => return set_friction(scene, key, x, name),
+        ["materials", m, key] => return set_material(scene, m, key, x),
+        _ => return Err(FieldError::NotSweepable),
     }
+    Ok(())
 }
 
 fn set_coupling(c: &mut CouplingFile, key: &str, x: f64, name: String) -> Result<(), FieldError> {

@@ -147,7 +147,7 @@ pub fn study_plan(
         shard: Shard::whole(),
         ..options.clone()
     };
-    StudyPlan::new(vec![(scene, coupling)], &whole)
+    StudyPlan::keeping_records(vec![(scene, coupling)], &whole)
 }
 
 /// Run shard `shard` of the design points of `spec` (rayon across designs
@@ -164,9 +164,7 @@ pub fn run(
     let base = &plan.variants[0];
     let points = spec.points()?;
     let pareto_point = pareto_point_of(&spec.file, &base.scene, pareto_point)?;
-    let range = shard
-        .range(points.len())
-        .map_err(|e| StudyError::from(e).at(Param::Shard))?;
+    let range = shard.range(points.len()).map_err(|e| e.at(Param::Shard))?;
     let designs: Vec<DesignReport> = points[range]
         .par_iter()
         .map(|p| {
@@ -240,7 +238,11 @@ fn pareto_point_of(file: &str, base: &Scene, asked: Option<&str>) -> Result<Stri
 
 /// The report of one evaluated design point: the study statistics by the
 /// study's own machinery (its [`crate::study::VariantReport`]).
-fn design_report(index: usize, values: BTreeMap<String, SweptValue>, e: Evaluation) -> DesignReport {
+fn design_report(
+    index: usize,
+    values: BTreeMap<String, SweptValue>,
+    e: Evaluation,
+) -> DesignReport {
     let n = e.nominal;
     DesignReport {
         index,

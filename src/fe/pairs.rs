@@ -9,8 +9,8 @@ use super::{
 };
 use crate::assembly::Coupling;
 use crate::contact::{ContactPair, ContactShape};
-use crate::solve::quasistatic::seat;
 use crate::scene::Scene;
+use crate::solve::quasistatic::seat;
 use crate::solve::{Load, SolveError, SolverOptions};
 
 /// A distinct contact pair and the load to check it at.
@@ -53,9 +53,7 @@ pub struct PairValidation {
 /// The distinct pairs of the scenes' couplings (each scene with its
 /// coupling), with the largest load each reaches in the nominal
 /// quasi-static seating.
-pub fn distinct_pairs(
-    models: &[(Scene, Coupling)],
-) -> Result<Vec<PairCase>, (String, SolveError)> {
+pub fn distinct_pairs(models: &[(Scene, Coupling)]) -> Result<Vec<PairCase>, (String, SolveError)> {
     let mut out: Vec<PairCase> = Vec::new();
     for (scene, c) in models {
         let s = seat(c, &Load::nominal(scene), &SolverOptions::default())

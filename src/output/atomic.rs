@@ -22,7 +22,10 @@ use thiserror::Error;
 /// A file could not be written; names the file and the reason.
 #[derive(Debug, Error)]
 pub enum WriteError {
-    #[error("{path}: exists; not overwritten (pass {} to replace it)", Param::Force)]
+    #[error(
+        "{path}: exists; not overwritten (pass {} to replace it)",
+        Param::Force
+    )]
     Exists { path: String },
     #[error(
         "{path}: is a {kind}, not a regular file; not written (pass {} to write into it)",

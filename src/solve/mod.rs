@@ -375,28 +375,52 @@ impl Method {
         let (inc, tol) = (Param::Increments, Param::PathTolerance);
         let fail = |p: Param, m: String| Err(ParamError::new(p, m));
         match (solver, increments, path_tolerance) {
-            (Solver::Dynamic, Some(n), _) => fail(inc, format!(
-                "{}: has no effect with {} (load increments belong to the quasi-static solver; the dynamic one steps in time)",
-                inc.with(n), Param::Solver.with("dynamic")
-            )),
-            (Solver::Dynamic, None, Some(t)) => fail(tol, format!(
-                "{}: has no effect with {} (the load path belongs to the quasi-static solver; the dynamic one steps in time)",
-                tol.with(t), Param::Solver.with("dynamic")
-            )),
+            (Solver::Dynamic, Some(n), _) => fail(
+                inc,
+                format!(
+                    "{}: has no effect with {} (load increments belong to the quasi-static solver; the dynamic one steps in time)",
+                    inc.with(n),
+                    Param::Solver.with("dynamic")
+                ),
+            ),
+            (Solver::Dynamic, None, Some(t)) => fail(
+                tol,
+                format!(
+                    "{}: has no effect with {} (the load path belongs to the quasi-static solver; the dynamic one steps in time)",
+                    tol.with(t),
+                    Param::Solver.with("dynamic")
+                ),
+            ),
             (Solver::Dynamic, None, None) => Ok(Method::Dynamic(Default::default())),
-            (Solver::QuasiStatic, Some(n), Some(t)) => fail(inc, format!(
-                "{} and {} exclude each other: fixed load increments are not error-controlled (give one)",
-                inc.with(n), tol.with(t)
-            )),
-            (Solver::QuasiStatic, Some(n), None) if !INCREMENTS.contains(&n) => fail(inc, format!(
-                "{}: out of range, need {}..={} load increments",
-                inc.with(n), INCREMENTS.start(), INCREMENTS.end()
-            )),
-            (Solver::QuasiStatic, Some(n), None) => Ok(Method::QuasiStatic(SolverOptions::fixed(n))),
-            (Solver::QuasiStatic, None, Some(t)) if !PATH_TOLERANCES.contains(&t) => fail(tol, format!(
-                "{}: out of range, need {:e}..={:e} (the estimated error of the seated pose relative to the seating's motion)",
-                tol.with(t), PATH_TOLERANCES.start(), PATH_TOLERANCES.end()
-            )),
+            (Solver::QuasiStatic, Some(n), Some(t)) => fail(
+                inc,
+                format!(
+                    "{} and {} exclude each other: fixed load increments are not error-controlled (give one)",
+                    inc.with(n),
+                    tol.with(t)
+                ),
+            ),
+            (Solver::QuasiStatic, Some(n), None) if !INCREMENTS.contains(&n) => fail(
+                inc,
+                format!(
+                    "{}: out of range, need {}..={} load increments",
+                    inc.with(n),
+                    INCREMENTS.start(),
+                    INCREMENTS.end()
+                ),
+            ),
+            (Solver::QuasiStatic, Some(n), None) => {
+                Ok(Method::QuasiStatic(SolverOptions::fixed(n)))
+            }
+            (Solver::QuasiStatic, None, Some(t)) if !PATH_TOLERANCES.contains(&t) => fail(
+                tol,
+                format!(
+                    "{}: out of range, need {:e}..={:e} (the estimated error of the seated pose relative to the seating's motion)",
+                    tol.with(t),
+                    PATH_TOLERANCES.start(),
+                    PATH_TOLERANCES.end()
+                ),
+            ),
             (Solver::QuasiStatic, None, t) => Ok(Method::QuasiStatic(SolverOptions {
                 path_tolerance: t.or(SolverOptions::default().path_tolerance),
                 ..Default::default()

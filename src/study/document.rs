@@ -41,8 +41,7 @@ impl StudyPlan {
     pub fn kept(&self, v: &Variant, tick: &(dyn Fn() + Sync)) -> Result<VariantReport, StudyError> {
         let tally = PathTally::default();
         let run = run_variant(&self.settings, v, Progress::with_tally(tick, &tally))?;
-        let mut r =
-            VariantReport::new(&self.settings, v, run).map_err(|e| e.in_file(v.file()))?;
+        let mut r = VariantReport::new(&self.settings, v, run).map_err(|e| e.in_file(v.file()))?;
         r.seating_paths = Some(tally.counts());
         r.unconverged = tally.unconverged();
         r.load_path = tally.load_path();

@@ -156,6 +156,14 @@ impl StudyError {
         }
     }
 
+    /// The error itself, without the scene file or parameter it is about.
+    pub fn root(&self) -> &StudyError {
+        match self {
+            StudyError::In { source, .. } | StudyError::At { source, .. } => source.root(),
+            e => e,
+        }
+    }
+
     /// The error of a record sink.
     pub fn sink(e: impl std::error::Error + Send + Sync + 'static) -> Self {
         StudyError::Sink(Box::new(e))

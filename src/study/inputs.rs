@@ -5,9 +5,9 @@
 use nalgebra::{UnitQuaternion, Vector3};
 use serde::{Deserialize, Serialize};
 
-use crate::param::{Param, ParamError};
 use crate::assembly::{AssemblyError, Coupling};
 use crate::dof::Dof;
+use crate::param::{Param, ParamError};
 use crate::scene::{Scene, SurfaceGeometry};
 
 /// One varied quantity: a column of the design. In JSON and CSV its

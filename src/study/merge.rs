@@ -7,7 +7,7 @@
 
 use thiserror::Error;
 
-use super::provenance::{Fingerprint, SCHEMA_VERSION};
+use super::provenance::{Fingerprint, READABLE_SCHEMAS, SCHEMA_VERSION};
 use super::record::StudyRecord;
 use super::result::{StudyReport, VariantReport};
 use super::stats::{ShardFile, merge, verify_inputs};
@@ -19,7 +19,8 @@ pub enum MergeError {
     #[error("no parts to merge")]
     Empty,
     #[error(
-        "{file}: output schema {found}, this kinrepro reads schema {SCHEMA_VERSION} (re-run the shard with this version)"
+        "{file}: output schema {found}, this kinrepro reads schemas {} to {SCHEMA_VERSION} (re-run the shard with this version)",
+        READABLE_SCHEMAS.start()
     )]
     Schema { file: String, found: u32 },
     #[error("{file}: holds {found} scene(s), {first} holds {expected}: not parts of one study")]
@@ -84,7 +85,7 @@ pub enum MergeError {
 pub fn merge_parts(parts: Vec<(String, StudyReport)>) -> Result<StudyReport, MergeError> {
     let (first_file, first) = parts.first().ok_or(MergeError::Empty)?;
     for (file, p) in &parts {
-        if p.schema_version != SCHEMA_VERSION {
+        if !READABLE_SCHEMAS.contains(&p.schema_version) {
             return Err(MergeError::Schema {
                 file: file.clone(),
                 found: p.schema_version,

@@ -5,13 +5,12 @@
 //! design points, a calibration's model studies) takes a plan's variant
 //! and settings and never derives a design or checks an option again.
 
-
 use super::bounds::{self, MAX_KEPT_SEATINGS, MAX_STREAMED_SAMPLES};
 use super::options::{Settings, StudyOptions};
 use super::sampling::{DEFAULT_LHS_REPLICATES, default_replicates};
 use super::stream::{STREAM_ABOVE, streams};
-use super::variation::Variation;
 pub use super::variant::Variant;
+use super::variation::Variation;
 use super::{DesignSpec, Sampler, StudyError};
 use crate::assembly::Coupling;
 use crate::param::{Param, ParamError};
@@ -33,8 +32,28 @@ pub struct StudyPlan {
 
 impl StudyPlan {
     /// Check `options` against every scene (each `(scene, its coupling)`)
-    /// and draw up its design; the run's size is bounded here.
+    /// and draw up its design; the run's size is bounded here. A whole
+    /// Monte Carlo design above `stream::STREAM_ABOVE` samples is streamed
+    /// by [`StudyPlan::run`].
     pub fn new(models: Vec<(Scene, Coupling)>, options: &StudyOptions) -> Result<Self, StudyError> {
+        Self::planned(models, options, true)
+    }
+
+    /// [`StudyPlan::new`] for runs that keep every record (a sweep's design
+    /// points, a calibration's or prediction's model studies): nothing
+    /// streams, and the records are bounded as kept ones.
+    pub fn keeping_records(
+        models: Vec<(Scene, Coupling)>,
+        options: &StudyOptions,
+    ) -> Result<Self, StudyError> {
+        Self::planned(models, options, false)
+    }
+
+    fn planned(
+        models: Vec<(Scene, Coupling)>,
+        options: &StudyOptions,
+        may_stream: bool,
+    ) -> Result<Self, StudyError> {
         let settings = options.settings()?;
         let sobol = settings.sobol_samples.filter(|_| settings.shard.count == 1);
         let mut plan = StudyPlan {
@@ -45,7 +64,8 @@ impl StudyPlan {
         };
         let mut kept = 0usize;
         for (scene, coupling) in models {
-            let v = plan.variant(scene, coupling, options)?;
+            let mut v = plan.variant(scene, coupling, options)?;
+            v.streamed &= may_stream;
             let run = v.samples.len();
             let rows = sobol.map_or(Some(0), |n| n.checked_mul(v.design.dims + 2));
             let sobol_rows = bounds::check("Sobol seatings N (d + 2)", rows, MAX_KEPT_SEATINGS)
@@ -94,7 +114,8 @@ impl StudyPlan {
     ) -> Result<Variant, StudyError> {
         let s = &self.settings;
         check_scene(&scene, s).map_err(|e| StudyError::from(e).in_file(&scene.file))?;
-        let design = design_for(&scene, options, &s.variation).map_err(|e| e.in_file(&scene.file))?;
+        let design =
+            design_for(&scene, options, &s.variation).map_err(|e| e.in_file(&scene.file))?;
         let samples = s.shard.range(design.n).map_err(|e| e.at(Param::Shard))?;
         let streamed = streams(&design) && s.shard.count == 1;
         Ok(Variant {
@@ -146,8 +167,9 @@ fn replicated(spec: DesignSpec, replicates: Option<usize>) -> Result<DesignSpec,
 /// The sample counts nearest to `n` (one below, one above) that the default
 /// replicate rule splits, with their replicate counts, as advice.
 fn nearest_replicable(n: usize) -> String {
-    let fits =
-        |m: usize| default_replicates(m).map(|r| format!("{} ({r} replicates)", Param::Samples.with(m)));
+    let fits = |m: usize| {
+        default_replicates(m).map(|r| format!("{} ({r} replicates)", Param::Samples.with(m)))
+    };
     let below = (1..n).rev().find_map(fits);
     let above = (n + 1..).find_map(fits);
     below
@@ -181,22 +203,31 @@ fn check_scene(scene: &Scene, s: &Settings) -> Result<(), ParamError> {
     }
     let bounds = scene.variation;
     if var.preload && !bounds.preload_varies() {
-        return fail(vary, format!(
-            "{}: the scene's [variation] table gives no preload bound (preload_offset, preload_tilt)",
-            vary.with("preload")
-        ));
+        return fail(
+            vary,
+            format!(
+                "{}: the scene's [variation] table gives no preload bound (preload_offset, preload_tilt)",
+                vary.with("preload")
+            ),
+        );
     }
     if var.preload && !scene.preload.forces.iter().any(|f| f.varies()) {
-        return fail(vary, format!(
-            "{}: the preload is only the weight, which is not varied",
-            vary.with("preload")
-        ));
+        return fail(
+            vary,
+            format!(
+                "{}: the preload is only the weight, which is not varied",
+                vary.with("preload")
+            ),
+        );
     }
     if var.tolerances && !bounds.tolerances_vary() {
-        return fail(vary, format!(
-            "{}: the scene's [variation] table gives no tolerance (ball_diameter, ball_position, surface_normal, surface_tilt, groove_position)",
-            vary.with("tolerances")
-        ));
+        return fail(
+            vary,
+            format!(
+                "{}: the scene's [variation] table gives no tolerance (ball_diameter, ball_position, surface_normal, surface_tilt, groove_position)",
+                vary.with("tolerances")
+            ),
+        );
     }
     Ok(())
 }

@@ -18,8 +18,8 @@
 use serde::{Deserialize, Serialize};
 
 use super::DesignSpec;
-use super::options::Settings;
 use super::inputs::Input;
+use super::options::Settings;
 use crate::scene::{ForceLaw, PreloadForce, Scene};
 
 /// The fingerprint's scheme: 2, canonical serialisations hashed by
@@ -32,8 +32,13 @@ fn version_one() -> u32 {
 }
 
 /// Version of the output schema (docs/output.md). 2: the clocking about z evaluated, JSON
-/// records with `inputs_si` and `design_u`, provenance and fingerprint.
-pub const SCHEMA_VERSION: u32 = 2;
+/// records with `inputs_si` and `design_u`, provenance and fingerprint. 3: the fingerprint
+/// of canonical serialisations ([`FINGERPRINT_VERSION`] 2).
+pub const SCHEMA_VERSION: u32 = 3;
+
+/// The schemas `merge` and `report` read: 2 differs from 3 only in its
+/// fingerprints (version 1, `Debug` text), which merge with each other.
+pub const READABLE_SCHEMAS: std::ops::RangeInclusive<u32> = 2..=SCHEMA_VERSION;
 
 /// kinrepro's version (Cargo.toml).
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
@@ -251,9 +256,9 @@ impl std::io::Write for Fnv1a64 {
 /// prime 0x100000001b3): a stable content hash (std's hasher may change
 /// between Rust releases).
 pub fn fnv1a64(bytes: &[u8]) -> u64 {
-    bytes
-        .iter()
-        .fold(FNV_OFFSET, |h, &b| (h ^ u64::from(b)).wrapping_mul(FNV_PRIME))
+    bytes.iter().fold(FNV_OFFSET, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(FNV_PRIME)
+    })
 }
 
 /// One line naming what produced an output: version, schema, solver,

@@ -5,9 +5,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::variant::Variant;
 use super::runner::Variation;
 use super::stats::SampleRecord;
+use super::variant::Variant;
 
 pub use crate::dof::Dofs;
 

@@ -9,11 +9,11 @@ use serde::{Deserialize, Serialize};
 
 use super::inputs::Input;
 use super::options::{Settings, Varied};
-use super::variant::Variant;
 use super::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, produced_by};
 use super::record::{PointStats, StudyRecord};
 use super::runner::{StartBounds, VariantRun, Variation};
 use super::sensitivity::SensitivityBlock;
+use super::variant::Variant;
 use super::{DesignSpec, Sampler, Shard, StudyError};
 use crate::contact::FrictionLaw;
 use crate::scene::{DEFAULT_RAMP_TIME, VariationBounds};

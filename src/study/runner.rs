@@ -24,10 +24,10 @@
 use rayon::prelude::*;
 
 pub use super::inputs::{Input, Tolerances};
-pub use super::paths::{LoadPath, PathTally, SeatingPaths};
 use super::options::Settings;
-use super::variant::Variant;
+pub use super::paths::{LoadPath, PathTally, SeatingPaths};
 use super::stats::SampleRecord;
+use super::variant::Variant;
 pub use super::variation::{START_CLEARANCE, Sample, StartBounds, Variation, lifted_clear};
 use super::{DesignSpec, Shard, StudyError};
 use crate::assembly::BodyPose;
@@ -129,6 +129,16 @@ pub fn run_variant<'a>(
     progress: impl Into<Progress<'a>>,
 ) -> Result<VariantRun, StudyError> {
     let in_file = |e: StudyError| e.in_file(v.file());
+    // The records of this run are kept in memory (a kept study, a sweep
+    // point, a calibration's or prediction's model study): bounded before
+    // anything is drawn, whatever the plan would stream.
+    let kept = Some(v.samples.len());
+    super::bounds::check(
+        "seatings kept in memory",
+        kept,
+        super::bounds::MAX_KEPT_SEATINGS,
+    )
+    .map_err(in_file)?;
     let rows = v.design.range(v.samples.clone()).map_err(in_file)?;
     let cannot_seat = super::verdict::cannot_seat(&v.scene, &v.coupling, &s.method)?;
     let records = evaluate_rows(s, v, v.samples.clone().zip(rows).collect(), progress)?;
@@ -156,8 +166,16 @@ pub fn run_chunked<'a>(
     let mut start = v.samples.start;
     while start < v.samples.end {
         let end = (start + chunk.max(1)).min(v.samples.end);
-        let rows = v.design.range(start..end).map_err(|e| e.in_file(v.file()))?;
-        sink(evaluate_rows(s, v, (start..end).zip(rows).collect(), progress)?)?;
+        let rows = v
+            .design
+            .range(start..end)
+            .map_err(|e| e.in_file(v.file()))?;
+        sink(evaluate_rows(
+            s,
+            v,
+            (start..end).zip(rows).collect(),
+            progress,
+        )?)?;
         start = end;
     }
     Ok(())
@@ -225,9 +243,9 @@ pub fn evaluate_rows<'a>(
                 outputs.extend(relative(seated.pose));
             }
             if let Some(t) = &sample.tolerances {
-                let perturbed = t.coupling(scene, coupling).map_err(|source| {
-                    StudyError::Perturbed { index, source }.in_file(file)
-                })?;
+                let perturbed = t
+                    .coupling(scene, coupling)
+                    .map_err(|source| StudyError::Perturbed { index, source }.in_file(file))?;
                 let seated = s
                     .method
                     .seat(&perturbed, &nominal_load)

@@ -11,11 +11,11 @@
 //! (`study::stats::summarize_moments`), valid for independent samples.
 
 use super::options::Settings;
-use super::variant::Variant;
 use super::record::StudyRecord;
 use super::result::VariantReport;
 use super::runner::{PathTally, Progress, VariantRun, recorded_output_names, run_chunked};
 use super::stats::{Moments, SampleRecord};
+use super::variant::Variant;
 use super::{DesignSpec, Sampler, StudyError};
 
 /// Monte Carlo studies of more samples than this are summarised from
@@ -113,16 +113,22 @@ pub fn run_streamed<S: RecordSink>(
     let mut sink = open(&r).map_err(StudyError::sink)?;
     let mut st = StreamStats::new(names.len());
     let tally = PathTally::default();
-    run_chunked(s, v, CHUNK, Progress::with_tally(tick, &tally), &mut |records| {
-        st.push(&records, &names).map_err(in_file)?;
-        match sink.as_mut() {
-            Some(k) => records.into_iter().try_for_each(|rec| {
-                k.push(&StudyRecord::new(v, &s.variation, rec))
-                    .map_err(StudyError::sink)
-            }),
-            None => Ok(()),
-        }
-    })?;
+    run_chunked(
+        s,
+        v,
+        CHUNK,
+        Progress::with_tally(tick, &tally),
+        &mut |records| {
+            st.push(&records, &names).map_err(in_file)?;
+            match sink.as_mut() {
+                Some(k) => records.into_iter().try_for_each(|rec| {
+                    k.push(&StudyRecord::new(v, &s.variation, rec))
+                        .map_err(StudyError::sink)
+                }),
+                None => Ok(()),
+            }
+        },
+    )?;
     r.seating_paths = Some(tally.counts());
     r.unconverged = tally.unconverged();
     r.load_path = tally.load_path();

@@ -212,7 +212,7 @@ fn cli_calibrate_and_predict() {
     ]);
     assert!(ok, "{e}");
     let p: serde_json::Value = serde_json::from_str(&out).unwrap();
-    assert_eq!(p["schema_version"], 2);
+    assert_eq!(p["schema_version"], 3);
     assert_eq!(p["calibration"]["spread"]["estimate"], sp["estimate"]);
     let v = p["variants"].as_array().unwrap();
     assert!(v[0]["measured"]["sigma"]["x_nm"].as_f64().unwrap() > 0.0);

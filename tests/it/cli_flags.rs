@@ -3,7 +3,6 @@
 //! together, fail before anything runs, with one line `error: ...` that
 //! names the flag.
 
-
 use crate::common::{kinrepro, scene};
 
 #[test]

@@ -73,7 +73,7 @@ fn every_format_names_version_solver_sampler_seed_samples_and_vary() {
     let first = table.lines().next().unwrap();
     for needle in [
         &format!("kinrepro {version}"),
-        "output schema 2",
+        "output schema 3",
         "solver quasi-static",
         "sampler mc",
         "seed 7",
@@ -95,7 +95,7 @@ fn every_format_names_version_solver_sampler_seed_samples_and_vary() {
     assert_eq!(rows.len(), 6);
     for r in &rows {
         assert_eq!(r[col("kinrepro_version")], version);
-        assert_eq!(r[col("schema_version")], "2");
+        assert_eq!(r[col("schema_version")], "3");
         assert_eq!(r[col("solver")], "quasi-static");
         assert_eq!(r[col("sampler")], "mc");
         assert_eq!(r[col("seed")], "7");
@@ -110,7 +110,7 @@ fn every_format_names_version_solver_sampler_seed_samples_and_vary() {
     let (ok, text, err) = kinrepro(&args);
     assert!(ok, "{err}");
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-    assert_eq!(v["schema_version"], 2);
+    assert_eq!(v["schema_version"], 3);
     assert_eq!(v["kinrepro_version"], version);
     assert_eq!(v["solver"], "quasi-static");
     assert_eq!(v["sampler"], "mc");

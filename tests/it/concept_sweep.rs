@@ -5,7 +5,6 @@
 //! constant overridden per point exactly like a `[[materials]]` entry with
 //! `override = true`.
 
-
 use crate::common::{kinrepro, scene};
 use serde_json::Value;
 

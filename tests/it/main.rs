@@ -28,6 +28,7 @@ mod coupling_shapes;
 mod dynamic;
 mod fe_exact_gap;
 mod fe_validation;
+mod fingerprints;
 mod fresh_contact;
 mod friction_limit;
 mod friction_readings;

@@ -2,7 +2,6 @@
 //! to the library's (`Material::builtin`, what scenes use) and a source for
 //! each value, in the CSV, the JSON and the table.
 
-
 use crate::common::kinrepro;
 use kinrepro::material::{Material, builtin_names};
 

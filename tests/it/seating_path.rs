@@ -175,7 +175,7 @@ fn run_json_says_which_path_seated() {
         assert_eq!(v["seating_path"], expected, "{args:?}");
         // And what produced it.
         assert_eq!(v["kinrepro_version"], env!("CARGO_PKG_VERSION"), "{args:?}");
-        assert_eq!(v["schema_version"], 2, "{args:?}");
+        assert_eq!(v["schema_version"], 3, "{args:?}");
     }
 }
 

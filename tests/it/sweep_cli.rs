@@ -2,7 +2,6 @@
 //! `check`, designs that cannot seat, bad input, and shards + merge equal
 //! to the single run byte for byte.
 
-
 use crate::common::{kinrepro, scene};
 
 fn json(text: &str) -> serde_json::Value {
@@ -224,7 +223,7 @@ fn bad_fields_and_values_fail_with_one_line_and_bad_points_are_reported() {
     assert_eq!(status[2], "ok");
     assert!(status[3].contains("unobtainium"));
     assert_eq!(doc["designs"][2]["pareto"], serde_json::json!(true));
-    assert_eq!(doc["schema_version"], serde_json::json!(2));
+    assert_eq!(doc["schema_version"], serde_json::json!(3));
     assert_eq!(doc["document"], serde_json::json!("sweep"));
 }
 

@@ -53,13 +53,23 @@ mod field {
             let e = kind_of(bad, &s).unwrap_err().to_string();
             assert!(e.contains(bad), "{e}");
         }
-        // A value of the wrong type: the typed scene refuses it.
+        // A value of the wrong type: the typed scene refuses it when it is
+        // read (before any field is swept), naming the file, the line and
+        // the type the field takes.
         let big = TEXT.replace("diameter = 0.08", "diameter = \"big\"");
         let e = SceneFile::parse(&big, "scene.toml")
             .map(|s| kind_of("coupling.diameter", &s))
             .unwrap_err()
             .to_string();
-        assert!(e.contains("not as a number"), "{e}");
+        let line = 1 + TEXT
+            .lines()
+            .position(|l| l.contains("diameter = 0.08"))
+            .unwrap();
+        assert!(e.starts_with(&format!("scene.toml:{line}:")), "{e}");
+        assert!(
+            e.contains("invalid type: string \"big\", expected f64"),
+            "{e}"
+        );
     }
 
     #[test]

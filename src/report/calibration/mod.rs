@@ -12,8 +12,8 @@ use crate::calibrate::fit::{Calibration, Correlation, DofFit, Parameter};
 use crate::calibrate::predict::Prediction;
 use crate::dof::{Dof, nano};
 use crate::report::table::{Cell, Column, Table, cells};
-use crate::study::{Shard, StudyDocument, StudyReport, VariantReport};
 use crate::study::provenance::VERSION;
+use crate::study::{Shard, StudyDocument, StudyReport, VariantReport};
 
 /// The first line of a calibration's table.
 pub fn calibration_produced_by(c: &Calibration) -> String {

@@ -7,9 +7,9 @@ use std::path::Path;
 use plotters::prelude::*;
 use thiserror::Error;
 
-use crate::output::atomic::{WriteError, write_file};
 use super::PredictionReport;
 use crate::dof::{Dof, nano};
+use crate::output::atomic::{WriteError, write_file};
 
 /// The plot could not be drawn or written.
 #[derive(Debug, Error)]

@@ -3,11 +3,11 @@
 use std::fmt::Write;
 
 use crate::assembly::Coupling;
-use crate::scene::Scene;
 use crate::assembly::constraint::{analyse, friction_limit, frictionless_preload_forces};
 use crate::contact::stress::contact_stress;
 use crate::report::coupling::preload;
 use crate::report::table::{Table, cells};
+use crate::scene::Scene;
 
 /// What the friction limit means for this scene, given why it cannot seat
 /// (`cannot_seat`, the verdict of `study::verdict::cannot_seat`), if it

@@ -17,7 +17,9 @@ use super::prediction::PredictionInput;
 use crate::assembly::Coupling;
 use crate::scene::Scene;
 use crate::study::StudyReport;
-use crate::study::provenance::{FINGERPRINT_VERSION, Fingerprint, SCHEMA_VERSION};
+use crate::study::provenance::{
+    FINGERPRINT_VERSION, Fingerprint, READABLE_SCHEMAS, SCHEMA_VERSION,
+};
 
 /// One scene of a study: its file text, the scene and its coupling.
 #[derive(Debug, Clone)]
@@ -62,10 +64,11 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
         .map_err(|e| input(format!("cannot read the file: {e}")))?;
     let report: StudyReport = serde_json::from_str(&text)
         .map_err(|e| input(format!("not a kinrepro study JSON: {e}")))?;
-    if report.schema_version != SCHEMA_VERSION {
+    if !READABLE_SCHEMAS.contains(&report.schema_version) {
         return Err(input(format!(
-            "schema_version {} (this kinrepro reads schema {SCHEMA_VERSION}; rerun the study)",
-            report.schema_version
+            "schema_version {} (this kinrepro reads schemas {} to {SCHEMA_VERSION}; rerun the study)",
+            report.schema_version,
+            READABLE_SCHEMAS.start()
         )));
     }
     if report.variants.is_empty() {

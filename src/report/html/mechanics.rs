@@ -5,17 +5,13 @@
 
 use crate::analysis::stiffness::CouplingStiffness;
 use crate::assembly::Coupling;
-use crate::scene::Scene;
 use crate::report::table::{Cell, Table, cells};
+use crate::scene::Scene;
 use crate::solve::Seating;
 
 /// The contact table (N, MPa) and the stiffness table (N/µm, N m/µrad),
 /// one below the other: each gets the page's full width.
-pub fn mechanics(
-    (scene, c): (&Scene, &Coupling),
-    s: &Seating,
-    k: &CouplingStiffness,
-) -> String {
+pub fn mechanics((scene, c): (&Scene, &Coupling), s: &Seating, k: &CouplingStiffness) -> String {
     let mut t = Table::new(
         ">#; >ball; >N [N]:.3; >|T| [N]:.3; >state; >μ_s:.3; >p0 [MPa]:.0; >τ_max [MPa]:.0; >safety:.2",
     );

@@ -35,13 +35,13 @@ use thiserror::Error;
 
 use crate::analysis::stiffness::CouplingStiffness;
 use crate::assembly::{AssemblyError, Coupling};
+pub use crate::report::study::reference::{ReferenceRow, load_reference, parse_reference, unshown};
 use crate::report::table::escape;
 use crate::scene::{Scene, SceneError};
 use crate::solve::{Load, Seating, SolveError};
 use crate::study::VariantReport;
 use crate::study::provenance::VERSION;
 pub use inputs::{SceneInput, StudyInput, load_study, scene_input};
-pub use crate::report::study::reference::{ReferenceRow, load_reference, parse_reference, unshown};
 
 /// The report could not be made.
 #[derive(Debug, Error)]

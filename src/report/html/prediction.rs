@@ -15,12 +15,12 @@ use std::path::Path;
 
 use serde::Deserialize;
 
-use crate::report::study::reference::ReferenceRow;
 use crate::assembly::Coupling;
 use crate::calibrate::params::apply_named;
-use crate::scene::Scene;
 use crate::dof::Dof;
+use crate::report::study::reference::ReferenceRow;
 use crate::report::table::escape;
+use crate::scene::Scene;
 
 /// The `calibration` block of a prediction.
 #[derive(Debug, Clone, PartialEq, Deserialize)]

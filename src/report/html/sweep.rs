@@ -13,12 +13,12 @@ use std::fmt::Write;
 use super::tables::settings;
 use super::{HtmlError, drawing, page};
 use crate::assembly::Coupling;
-use crate::scene::Scene;
 use crate::explore::{DesignKind, DesignReport, SweepReport, SweptValue};
 use crate::report::study::text::{interval_methods, sigma_cells, sigma_columns};
 use crate::report::sweep::plot::charts;
 use crate::report::sweep::text::{field_label, short, sigma_estimates};
 use crate::report::table::{Cell, Column, Table, cells, escape};
+use crate::scene::Scene;
 use crate::study::provenance::VERSION;
 
 /// The whole document; `scene_text`: the base scene file as read, `base`:

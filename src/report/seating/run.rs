@@ -6,8 +6,8 @@ use serde::Serialize;
 
 use crate::assembly::Coupling;
 use crate::dof::{Dof, nano};
-use crate::scene::Scene;
 use crate::report::table::{Cell, Column, Table, cells};
+use crate::scene::Scene;
 use crate::solve::{ContactResult, PointPose, Seating, SeatingPath};
 
 /// Pose of one evaluation point, from the touching pose and from the nominal seating.

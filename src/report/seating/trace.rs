@@ -15,9 +15,9 @@
 use std::io::Write;
 
 use crate::assembly::Coupling;
-use crate::scene::Scene;
 use crate::dof::Dof;
 use crate::report::printable::printable;
+use crate::scene::Scene;
 use crate::solve::PointPose;
 use crate::solve::dynamic::TraceSample;
 use crate::study::provenance::{SCHEMA_VERSION, VERSION};

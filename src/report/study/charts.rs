@@ -7,13 +7,13 @@
 use std::path::Path;
 
 use crate::dof::{Dof, nano};
-use crate::report::study::reference::ReferenceRow;
+use crate::report::study::plot::PlotError;
 use crate::report::study::plot::{
     ConvergenceSeries, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
     xy_scatter_svg,
 };
+use crate::report::study::reference::ReferenceRow;
 use crate::report::study::text::truncate;
-use crate::report::study::plot::PlotError;
 use crate::study::runner::INTERCHANGE_PREFIX;
 use crate::study::stats::sigma_convergence;
 use crate::study::{PointStats, VariantReport};

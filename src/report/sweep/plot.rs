@@ -13,10 +13,10 @@ use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
+pub use super::SweepPlotError;
 use crate::dof::Dof;
 use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
-pub use super::SweepPlotError;
 use crate::output::atomic::{WriteError, check_overwrite, write_file};
 use crate::report::study::plot::color;
 use crate::report::sweep::text::field_label;

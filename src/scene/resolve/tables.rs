@@ -11,8 +11,7 @@ use crate::scene::file::{
     DynamicsFile, FrictionFile, FrictionLawName, Numbers, SceneFile, StudyFile, VariationFile,
 };
 use crate::scene::{
-    DynamicsSettings, EvaluationPoint, FrictionSettings, Sampler, StudyDefaults,
-    VariationBounds,
+    DynamicsSettings, EvaluationPoint, FrictionSettings, Sampler, StudyDefaults, VariationBounds,
 };
 
 /// Largest friction coefficient accepted in a scene.

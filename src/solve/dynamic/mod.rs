@@ -81,7 +81,11 @@ pub use simulation::Simulation;
 pub use trace::{Energy, TraceContact, TraceSample, TraceState};
 
 /// Seat the coupling dynamically under `load`, from its start pose.
-pub fn seat(coupling: &Coupling, load: &Load, opts: &DynamicOptions) -> Result<Seating, SolveError> {
+pub fn seat(
+    coupling: &Coupling,
+    load: &Load,
+    opts: &DynamicOptions,
+) -> Result<Seating, SolveError> {
     seat_traced(coupling, load, opts, &mut |_| {})
 }
 

@@ -64,13 +64,14 @@ impl<'a> Simulation<'a> {
         opts.check()?;
         let friction = load.frictions(coupling)?;
         let mass = MassModel::of(coupling);
-        let freq = frequency::seated_frequencies(coupling, &load.preload, &mass).ok_or_else(|| {
-            SolveError::BadOption(
-                "the seated coupling has no positive natural frequencies (a contact unloaded \
+        let freq =
+            frequency::seated_frequencies(coupling, &load.preload, &mass).ok_or_else(|| {
+                SolveError::BadOption(
+                    "the seated coupling has no positive natural frequencies (a contact unloaded \
                  by the preload, or singular mass properties)"
-                    .into(),
-            )
-        })?;
+                        .into(),
+                )
+            })?;
         let touching = coupling.touching_pose;
         let start = touching.moved(&load.start.offset, &load.start.tilt);
         let n = coupling.contacts.len();

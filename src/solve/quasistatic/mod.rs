@@ -77,7 +77,12 @@ use crate::scene::Preload;
 /// per-contact report: [`seat_in`] in a fresh workspace.
 pub fn seat(coupling: &Coupling, load: &Load, opts: &SolverOptions) -> Result<Seating, SolveError> {
     let mut ws = Workspace::new();
-    let seated = seat_in(&SeatingSetup::new(coupling, &load.preload), load, opts, &mut ws)?;
+    let seated = seat_in(
+        &SeatingSetup::new(coupling, &load.preload),
+        load,
+        opts,
+        &mut ws,
+    )?;
     Ok(ws.seating(coupling, seated))
 }
 

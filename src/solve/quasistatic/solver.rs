@@ -37,9 +37,9 @@ use super::lu6::solve6;
 use crate::assembly::constraint::frictionless_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
+use crate::scene::Preload;
 use crate::solve::contact_layer::{ContactEval, Motion, Moved, NormalPart, evaluate_into};
 use crate::solve::preload_forces::applied;
-use crate::scene::Preload;
 use crate::solve::{ContactResult, SolveError, SolverOptions};
 
 /// Contacts evaluated together by [`Solver::evaluate_all`] (a kinematic

@@ -3,8 +3,8 @@
 
 use super::super::StudyError;
 use super::super::options::Settings;
-use super::super::variant::Variant;
 use super::super::runner::{evaluate_rows, recorded_output_names};
+use super::super::variant::Variant;
 use super::sobol::{SobolRun, saltelli_rows};
 use crate::param::{Param, ParamError};
 
@@ -17,7 +17,8 @@ pub fn run_sobol(
     tick: &(dyn Fn() + Sync),
 ) -> Result<SobolRun, StudyError> {
     let spec = v.design;
-    let rows = saltelli_rows(spec.dims, base_samples, spec.seed).map_err(|e| e.in_file(v.file()))?;
+    let rows =
+        saltelli_rows(spec.dims, base_samples, spec.seed).map_err(|e| e.in_file(v.file()))?;
     let mut records = evaluate_rows(s, v, rows.into_iter().enumerate().collect(), tick)?;
     records.sort_by_key(|r| r.index);
     let failed = records.iter().filter(|r| !r.centred()).count();

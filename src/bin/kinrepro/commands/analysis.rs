@@ -45,7 +45,11 @@ impl TryFrom<StiffnessArgs> for Stiffness {
 
     fn try_from(a: StiffnessArgs) -> Result<Stiffness> {
         Ok(Stiffness {
-            at: a.at.as_deref().map(|at| finite3("at", Some(at))).transpose()?,
+            at: a
+                .at
+                .as_deref()
+                .map(|at| finite3("at", Some(at)))
+                .transpose()?,
             scene: a.scene,
             mu: a.mu,
             json: a.json,

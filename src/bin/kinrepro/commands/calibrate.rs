@@ -107,7 +107,11 @@ pub fn predict(Predict(o): Predict) -> Result {
     if let Some(p) = &o.plot {
         check_overwrite(p, o.force)?;
     }
-    let models = o.scenes.iter().map(|p| read_scene(p)).collect::<Result<Vec<_>>>()?;
+    let models = o
+        .scenes
+        .iter()
+        .map(|p| read_scene(p))
+        .collect::<Result<Vec<_>>>()?;
     set_jobs(o.jobs, o.samples)?;
     let studies = (o.samples, o.seed, Solver::QuasiStatic);
     let predictions = models

@@ -142,10 +142,8 @@ pub use kinrepro::scene::plausible::as_typed as number;
 
 /// The text of an input file.
 pub fn read_text(path: &Path) -> Result<String> {
-    kinrepro::input::read_to_string(path).context(format!(
-        "{}: cannot read the file",
-        path.display()
-    ))
+    kinrepro::input::read_to_string(path)
+        .context(format!("{}: cannot read the file", path.display()))
 }
 
 /// Three comma-separated values of `--{flag}` (None: zero).

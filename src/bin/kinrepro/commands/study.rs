@@ -55,7 +55,11 @@ impl TryFrom<StudyArgs> for Study {
 }
 
 pub fn study(s: Study) -> Result {
-    let models = s.scenes.iter().map(|p| read_scene(p)).collect::<Result<Vec<_>>>()?;
+    let models = s
+        .scenes
+        .iter()
+        .map(|p| read_scene(p))
+        .collect::<Result<Vec<_>>>()?;
     let plan = StudyPlan::new(models, &s.options)?;
     set_jobs(s.jobs, plan.seatings)?;
     let bar = progress(plan.seatings, plan.method())?;
@@ -130,8 +134,8 @@ pub fn merge(args: MergeArgs) -> Result {
         return super::sweep::merge(&parts, first, format);
     }
     let docs = read_json_parts::<StudyReport>(&parts, first, "study")?;
-    let merged = kinrepro::study::merge::merge_parts(docs)
-        .map_err(|e| Error::new(format!("merge: {e}")))?;
+    let merged =
+        kinrepro::study::merge::merge_parts(docs).map_err(|e| Error::new(format!("merge: {e}")))?;
     print_study(&merged, format)?;
     refuse_unseated(&merged, allow_unseated)
 }

@@ -7,7 +7,9 @@ use kinrepro::explore::run::{run, study_plan};
 use kinrepro::explore::{DesignKind, SweepReport, SweepSpec, merge_sweeps};
 use kinrepro::study::StudyOptions;
 
-use super::{check_jobs, force_needs_output, print_as, progress, read_json_parts, read_text, set_jobs};
+use super::{
+    check_jobs, force_needs_output, print_as, progress, read_json_parts, read_text, set_jobs,
+};
 use crate::error::{Context, Error, Result, usage};
 use crate::flags::groups::{DesignArg, OutputFlags};
 use crate::flags::{Format, SweepArgs};
@@ -61,7 +63,9 @@ pub fn sweep(s: Sweep) -> Result {
     let seatings = share.saturating_mul(plan.variants[0].design.n);
     set_jobs(s.jobs, seatings)?;
     let bar = progress(seatings, plan.method())?;
-    let report = run(&spec, &plan, shard, s.pareto_point.as_deref(), &|| bar.inc(1))?;
+    let report = run(&spec, &plan, shard, s.pareto_point.as_deref(), &|| {
+        bar.inc(1)
+    })?;
     bar.finish_and_clear();
     print_sweep(&report, s.output.format)?;
     if let Some(dir) = &s.output.out {

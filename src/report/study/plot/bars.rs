@@ -4,9 +4,9 @@
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
+use super::{PlotError, Result};
 use super::{VariantSigma, check_finite, color, headroom, legend_room, plot_err};
 use crate::dof::Dof;
-use super::{PlotError, Result};
 
 /// An SVG with two panels, translations \[nm\] and rotations \[nrad\]: one
 /// group of bars per DOF, one bar per variant, a vertical error bar from the

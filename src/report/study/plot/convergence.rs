@@ -3,8 +3,8 @@
 use plotters::prelude::*;
 
 use super::{ConvergenceSeries, check_finite, color, headroom, legend_room, plot_err};
-use crate::dof::Dof;
 use super::{PlotError, Result};
+use crate::dof::Dof;
 
 /// An SVG of sigma of the first k samples against k: one panel per DOF that
 /// has series (in the order of [`Dof::ALL`]; three per row),

@@ -3,8 +3,8 @@
 
 use plotters::prelude::*;
 
-use super::{VariantScatter, check_finite, color, headroom, plot_err};
 use super::{PlotError, Result};
+use super::{VariantScatter, check_finite, color, headroom, plot_err};
 
 /// An SVG with one square panel per variant and evaluation point (grid),
 /// captioned `variant · point (n samples)`, all with the same symmetric axes
