@@ -24,10 +24,7 @@ fn calibration(c: &mut Criterion) {
         seed: MODEL_SEED,
         solver: Solver::QuasiStatic,
     };
-    let two = CalibrateOptions {
-        fit: vec!["spread".into(), "mu_static".into()],
-        ..opts.clone()
-    };
+    let two = CalibrateOptions { fit: vec!["spread".into(), "mu_static".into()], ..opts.clone() };
     let mut g = c.benchmark_group("calibration");
     g.sample_size(10);
     g.bench_function("scene 02, 50 cycles, fit spread", |b| {

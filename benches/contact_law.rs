@@ -37,30 +37,17 @@ fn law_of(shape: ContactShape) -> ContactLaw {
     } else {
         2e-3
     };
-    ContactPair::from_shape(shape, 5e-3, Some(r2), steel.clone(), steel)
-        .unwrap()
-        .law()
-        .unwrap()
+    ContactPair::from_shape(shape, 5e-3, Some(r2), steel.clone(), steel).unwrap().law().unwrap()
 }
 
 /// The three laws benched: (tangential law, friction, label).
 fn laws() -> [(TangentialLaw, Friction, &'static str); 3] {
-    let decay = Friction {
-        law: FrictionLaw::Decay { coefficient: 1e6 },
-        ..Friction::switch(0.5, 0.4)
-    };
+    let decay =
+        Friction { law: FrictionLaw::Decay { coefficient: 1e6 }, ..Friction::switch(0.5, 0.4) };
     [
-        (
-            TangentialLaw::Coulomb,
-            Friction::switch(0.5, 0.4),
-            "coulomb",
-        ),
+        (TangentialLaw::Coulomb, Friction::switch(0.5, 0.4), "coulomb"),
         (TangentialLaw::Coulomb, decay, "coulomb (decay friction)"),
-        (
-            TangentialLaw::MindlinDeresiewicz,
-            Friction::switch(0.5, 0.4),
-            "mindlin-deresiewicz",
-        ),
+        (TangentialLaw::MindlinDeresiewicz, Friction::switch(0.5, 0.4), "mindlin-deresiewicz"),
     ]
 }
 
@@ -70,10 +57,7 @@ fn contact_update(c: &mut Criterion) {
         let normal = Vector3::new(0.0, 1.0, 1.0).normalize();
         for (tl, friction, label) in laws() {
             let fn0 = law.hertz.force(4.9e-7);
-            let state = TangentialState {
-                normal_force: fn0,
-                ..TangentialState::new(normal)
-            };
+            let state = TangentialState { normal_force: fn0, ..TangentialState::new(normal) };
             let name = format!("hertz+{label} update/{}", shape.name());
             c.bench_function(&name, |b| {
                 b.iter(|| {
@@ -87,9 +71,8 @@ fn contact_update(c: &mut Criterion) {
                         &Vector3::x(),
                     );
                     let kt = principal.tensor(&normal);
-                    let shape = law
-                        .mindlin
-                        .map(|c| c / (8.0 * law.g_star * law.hertz.axis_ratio.sqrt()));
+                    let shape =
+                        law.mindlin.map(|c| c / (8.0 * law.g_star * law.hertz.axis_ratio.sqrt()));
                     let input = TangentialInput {
                         normal: black_box(normal),
                         du: black_box(Vector3::new(1e-8, 2e-9, -3e-9)),
@@ -181,10 +164,8 @@ impl Setting {
     ) -> TangentialState {
         let old_normal = Vector3::new(0.0, 1.0, 1.0).normalize();
         let tangent = (self.du - old_normal * old_normal.dot(&self.du)).normalize();
-        let first = TangentialState {
-            normal_force: self.committed_fn,
-            ..TangentialState::new(old_normal)
-        };
+        let first =
+            TangentialState { normal_force: self.committed_fn, ..TangentialState::new(old_normal) };
         let mut state = if tl == TangentialLaw::MindlinDeresiewicz {
             // Load the row once (a step that ends at the committed force).
             let step = TangentialInput {
@@ -196,12 +177,7 @@ impl Setting {
             respond(&first, tl, &step).state
         } else {
             TangentialState {
-                force: tangent
-                    * if slide {
-                        0.99 * 0.5 * self.committed_fn
-                    } else {
-                        0.0
-                    },
+                force: tangent * if slide { 0.99 * 0.5 * self.committed_fn } else { 0.0 },
                 sliding: slide,
                 // The decay law's coefficient at 1 um/s: 0.4 + 0.1 / e.
                 slip_velocity: if slide { 1e-6 } else { 0.0 },
@@ -235,16 +211,7 @@ fn cases() -> Vec<Case> {
         let setting = Setting::new(shape, &law);
         for (tl, friction, label) in laws() {
             let input = setting.input(&law, &normal_law, tl, friction);
-            out.push(Case {
-                shape,
-                law,
-                normal_law,
-                setting,
-                tl,
-                friction,
-                label,
-                input,
-            });
+            out.push(Case { shape, law, normal_law, setting, tl, friction, label, input });
         }
     }
     out

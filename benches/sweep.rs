@@ -18,19 +18,13 @@ fn sweep(c: &mut Criterion) {
     for (label, grid, sampler, samples) in [
         (
             "4 x 4 grid x 25 LHS samples",
-            [
-                "preload.force=5:40:4",
-                "coupling.opening_angle_deg=60:120:4",
-            ],
+            ["preload.force=5:40:4", "coupling.opening_angle_deg=60:120:4"],
             Sampler::Lhs,
             25,
         ),
         (
             "8 x 8 grid x 500 MC samples",
-            [
-                "preload.force=5:40:8",
-                "coupling.opening_angle_deg=60:120:8",
-            ],
+            ["preload.force=5:40:8", "coupling.opening_angle_deg=60:120:8"],
             Sampler::MonteCarlo,
             500,
         ),

@@ -32,23 +32,13 @@ fn main() -> Result<(), String> {
     let c = with_values(&plan.variants[0], &[Param::Spread], &[spread]);
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let rows: Vec<(usize, Vec<f64>)> = (0..cycles)
-        .map(|i| {
-            (
-                i,
-                (0..c.coupling.contacts.len())
-                    .map(|_| rng.random::<f64>())
-                    .collect(),
-            )
-        })
+        .map(|i| (i, (0..c.coupling.contacts.len()).map(|_| rng.random::<f64>()).collect()))
         .collect();
     let recs = evaluate_rows(&plan.settings, &c, rows, &|| {}).map_err(|e| e.to_string())?;
     println!(
         "# synthetic measurement (not measured on a rig): kinrepro {VERSION} example synthetic_measurement"
     );
-    println!(
-        "# scene: {}, point: {}",
-        a[0], c.scene.evaluation_points[0].name
-    );
+    println!("# scene: {}, point: {}", a[0], c.scene.evaluation_points[0].name);
     println!("# model: spread {spread}, {cycles} cycles, seed {seed}, quasi-static solver");
     println!("# noise: x=1nm, y=1nm, z=1nm, phi_x=20nrad, phi_y=20nrad, phi_z=20nrad");
     println!("x_nm,y_nm,z_nm,phi_x_nrad,phi_y_nrad,phi_z_nrad");

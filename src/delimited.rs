@@ -62,27 +62,16 @@ pub fn read(text: &str, delimiter: Option<u8>) -> Delimited {
         delimiter.unwrap_or_else(|| lines.first().map_or(b',', |(_, l)| detect_delimiter(l)));
     let records = lines
         .into_iter()
-        .map(|(line, text)| Record {
-            line,
-            text: text.to_string(),
-            cells: split(text, delimiter),
-        })
+        .map(|(line, text)| Record { line, text: text.to_string(), cells: split(text, delimiter) })
         .collect();
-    Delimited {
-        delimiter,
-        comments,
-        records,
-    }
+    Delimited { delimiter, comments, records }
 }
 
 /// The delimiter a header line is separated by: the most frequent of comma,
 /// semicolon and tab (a comma on a tie or when there is none).
 pub fn detect_delimiter(header: &str) -> u8 {
     let count = |d: u8| header.bytes().filter(|b| *b == d).count();
-    [b';', b'\t'].into_iter().fold(
-        b',',
-        |best, d| if count(d) > count(best) { d } else { best },
-    )
+    [b';', b'\t'].into_iter().fold(b',', |best, d| if count(d) > count(best) { d } else { best })
 }
 
 /// The cells of one line as a CSV record, trimmed. Reading a line of text

@@ -129,14 +129,7 @@ impl PointPose {
 
     /// All six components in the order of [`Dof::ALL`] (m, rad).
     pub fn components(&self) -> [f64; 6] {
-        [
-            self.x_m,
-            self.y_m,
-            self.z_m,
-            self.phi_x_rad,
-            self.phi_y_rad,
-            self.phi_z_rad,
-        ]
+        [self.x_m, self.y_m, self.z_m, self.phi_x_rad, self.phi_y_rad, self.phi_z_rad]
     }
 }
 
@@ -167,14 +160,7 @@ impl Dofs {
 
     /// The six values in nm and nrad, in the order of [`Dof::ALL`].
     pub fn values(&self) -> [f64; 6] {
-        [
-            self.x_nm,
-            self.y_nm,
-            self.z_nm,
-            self.phi_x_nrad,
-            self.phi_y_nrad,
-            self.phi_z_nrad,
-        ]
+        [self.x_nm, self.y_nm, self.z_nm, self.phi_x_nrad, self.phi_y_nrad, self.phi_z_nrad]
     }
 
     /// The six values in m and rad.

@@ -35,9 +35,6 @@ pub fn parse_scene(text: &str, file: &str) -> Result<(Scene, Coupling), Error> {
 fn assembled(scene: Scene) -> Result<(Scene, Coupling), Error> {
     match Coupling::new(&scene) {
         Ok(c) => Ok((scene, c)),
-        Err(source) => Err(Error::Assembly {
-            file: scene.file,
-            source,
-        }),
+        Err(source) => Err(Error::Assembly { file: scene.file, source }),
     }
 }

@@ -35,12 +35,7 @@ pub enum MaterialError {
     #[error("unknown material `{name}` (built-in: {known})")]
     Unknown { name: String, known: String },
     #[error("material `{name}`: {field} = {value} is invalid: {reason}")]
-    Invalid {
-        name: String,
-        field: &'static str,
-        value: f64,
-        reason: &'static str,
-    },
+    Invalid { name: String, field: &'static str, value: f64, reason: &'static str },
 }
 
 /// Where the values of a built-in material come from: one citable handbook,
@@ -183,10 +178,7 @@ impl Material {
 
     /// This material with an allowable maximum shear stress [Pa], validated.
     pub fn with_allowable_shear_stress(self, tau: Option<f64>) -> Result<Self, MaterialError> {
-        let m = Material {
-            allowable_shear_stress: tau,
-            ..self
-        };
+        let m = Material { allowable_shear_stress: tau, ..self };
         m.validate()?;
         Ok(m)
     }
@@ -225,11 +217,7 @@ impl Material {
             ));
         }
         if !(self.poisson_ratio > -1.0 && self.poisson_ratio < 0.5) {
-            return Err(bad(
-                "poisson_ratio",
-                self.poisson_ratio,
-                "must lie in (-1, 0.5)",
-            ));
+            return Err(bad("poisson_ratio", self.poisson_ratio, "must lie in (-1, 0.5)"));
         }
         for (field, v) in [
             ("allowable_pressure", self.allowable_pressure),

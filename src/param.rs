@@ -88,20 +88,13 @@ impl Param {
     /// This parameter with a value, for a message: `samples=7` in the
     /// library's spelling.
     pub fn with(self, value: impl fmt::Display) -> Mention {
-        Mention {
-            param: self,
-            value: Some(value.to_string()),
-        }
+        Mention { param: self, value: Some(value.to_string()) }
     }
 }
 
 impl fmt::Display for Param {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        Mention {
-            param: *self,
-            value: None,
-        }
-        .fmt(f)
+        Mention { param: *self, value: None }.fmt(f)
     }
 }
 
@@ -150,9 +143,6 @@ pub struct ParamError {
 
 impl ParamError {
     pub fn new(param: Param, message: impl Into<String>) -> Self {
-        ParamError {
-            param,
-            message: message.into(),
-        }
+        ParamError { param, message: message.into() }
     }
 }

@@ -86,11 +86,9 @@ fn frictions(mu0: f64, spread: f64, n: usize) -> Vec<Vec<f64>> {
 #[test]
 fn a_seating_in_a_reused_workspace_allocates_nothing() {
     let opts = SolverOptions::default();
-    for name in [
-        "01_maxwell_vgroove_steel.toml",
-        "02_maxwell_pins_steel.toml",
-        "06_kelvin_steel.toml",
-    ] {
+    for name in
+        ["01_maxwell_vgroove_steel.toml", "02_maxwell_pins_steel.toml", "06_kelvin_steel.toml"]
+    {
         let (scene, c) = load(name);
         let f = &scene.friction;
         // The loads (each friction vector with the scene's preload, or,
@@ -112,29 +110,21 @@ fn a_seating_in_a_reused_workspace_allocates_nothing() {
         seat_in(&setup, &mus[0], &opts, &mut ws).unwrap();
         let before = allocations();
         seat(&c, &mus[0], &opts).unwrap();
-        assert!(
-            allocations() > before,
-            "{name}: a fresh workspace allocates"
-        );
+        assert!(allocations() > before, "{name}: a fresh workspace allocates");
         // The buffers depend on the contact count only: the count stays
         // zero on 20 and 60 fixed increments (three times the Newton
         // iterations) and under load-path error control (several levels
         // of increments in the one workspace: 3 and 6 at least).
-        for (increments, opts) in [
-            (20, SolverOptions::fixed(20)),
-            (60, SolverOptions::fixed(60)),
-            (9, opts),
-        ] {
+        for (increments, opts) in
+            [(20, SolverOptions::fixed(20)), (60, SolverOptions::fixed(60)), (9, opts)]
+        {
             let mut poses = Vec::with_capacity(mus.len());
             let before = allocations();
             for mu in &mus[1..] {
                 poses.push(seat_in(&setup, mu, &opts, &mut ws).unwrap());
             }
             let made = allocations() - before;
-            assert_eq!(
-                made, 0,
-                "{name}, {increments} increments: {made} allocations"
-            );
+            assert_eq!(made, 0, "{name}, {increments} increments: {made} allocations");
             for (load, seated) in mus[1..].iter().zip(&poses) {
                 let mu = &load.mu;
                 assert_eq!(seated.path, SeatingPath::Uniform, "{name}: {mu:?}");

@@ -111,11 +111,7 @@ fn run_chromium(
         .arg(format!("file://{}", file.display()))
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "chromium failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert!(out.status.success(), "chromium failed: {}", String::from_utf8_lossy(&out.stderr));
     (
         String::from_utf8_lossy(&out.stdout).into_owned(),
         String::from_utf8_lossy(&out.stderr).into_owned(),
@@ -168,17 +164,9 @@ fn make_report(dir: &Path) -> (String, serde_json::Value) {
     ]);
     assert!(ok, "{err}");
     // Written whole; a second run refuses to overwrite.
-    let (ok, _, err) = kinrepro(&[
-        "report",
-        a.to_str().unwrap(),
-        "--out",
-        html.to_str().unwrap(),
-    ]);
+    let (ok, _, err) = kinrepro(&["report", a.to_str().unwrap(), "--out", html.to_str().unwrap()]);
     assert!(!ok && err.contains("--force"), "{err}");
-    (
-        std::fs::read_to_string(&html).unwrap(),
-        serde_json::from_str(&json).unwrap(),
-    )
+    (std::fs::read_to_string(&html).unwrap(), serde_json::from_str(&json).unwrap())
 }
 
 #[test]
@@ -195,10 +183,7 @@ fn report_is_self_contained_complete_and_renders_in_chromium() {
 fn probe_dom(exe: &Path, tmp: &Path, html: &str, window: &str) -> String {
     let probe_csp = format!("{CSP}; script-src 'unsafe-inline'");
     let probed = html
-        .replace(
-            &format!("content=\"{CSP}\""),
-            &format!("content=\"{probe_csp}\""),
-        )
+        .replace(&format!("content=\"{CSP}\""), &format!("content=\"{probe_csp}\""))
         .replacen("<head>", &format!("<head>\n{PROBE}"), 1);
     let probe_file = tmp.join("probe.html");
     std::fs::write(&probe_file, probed).unwrap();
@@ -207,15 +192,11 @@ fn probe_dom(exe: &Path, tmp: &Path, html: &str, window: &str) -> String {
 
 /// The probe's JSON out of a dumped DOM.
 fn probe_result(dom: &str, window: &str) -> serde_json::Value {
-    let start = dom
-        .find("<pre id=\"probe\">")
-        .unwrap_or_else(|| panic!("{window}: the probe did not run"))
-        + 16;
+    let start =
+        dom.find("<pre id=\"probe\">").unwrap_or_else(|| panic!("{window}: the probe did not run"))
+            + 16;
     let text = &dom[start..start + dom[start..].find("</pre>").unwrap()];
-    let text = text
-        .replace("&lt;", "<")
-        .replace("&gt;", ">")
-        .replace("&amp;", "&");
+    let text = text.replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&");
     serde_json::from_str(&text).unwrap()
 }
 
@@ -249,20 +230,11 @@ fn self_contained(html: &str) {
         assert!(!lower.contains(bad), "the report contains {bad}");
     }
     for (i, _) in lower.match_indices("href=") {
-        assert!(
-            lower[i..].starts_with("href=\"#"),
-            "non-local link: {}",
-            &html[i..i + 40]
-        );
+        assert!(lower[i..].starts_with("href=\"#"), "non-local link: {}", &html[i..i + 40]);
     }
     // The only http(s) strings are the SVG namespace.
     let urls = lower.matches("http://").count() + lower.matches("https://").count();
-    assert_eq!(
-        urls,
-        lower
-            .matches("xmlns=\"http://www.w3.org/2000/svg\"")
-            .count()
-    );
+    assert_eq!(urls, lower.matches("xmlns=\"http://www.w3.org/2000/svg\"").count());
     assert!(html.contains(&format!("content=\"{CSP}\"")));
     assert!(html.contains("@media print") && html.contains("size: A4"));
 }
@@ -292,14 +264,8 @@ fn static_checks(html: &str, study: &serde_json::Value) {
         for p in v["points"].as_array().unwrap() {
             let sx = p["sigma"]["x_nm"].as_f64().unwrap();
             let lo = p["sigma_ci90_low"]["phi_z_nrad"].as_f64().unwrap();
-            assert!(
-                html.contains(&format!("<td>{sx:.3}<span")),
-                "sigma_x {sx:.3} not in a table"
-            );
-            assert!(
-                html.contains(&format!("[{lo:.2},")),
-                "interval {lo:.2} not in a table"
-            );
+            assert!(html.contains(&format!("<td>{sx:.3}<span")), "sigma_x {sx:.3} not in a table");
+            assert!(html.contains(&format!("[{lo:.2},")), "interval {lo:.2} not in a table");
         }
     }
     // 5 charts (bars, interchange bars, scatter, convergence, interchange scatter);
@@ -319,24 +285,14 @@ struct Expect {
 }
 
 /// The study report of `make_report`.
-const STUDY_REPORT: Expect = Expect {
-    charts: 5,
-    drawings: 21,
-    min_tables: 8,
-    scenes: 6,
-};
+const STUDY_REPORT: Expect = Expect { charts: 5, drawings: 21, min_tables: 8, scenes: 6 };
 
 fn browser_checks(exe: &Path, tmp: &Path, html: &str, expect: &Expect) {
     let file = tmp.join("report.html");
     // 1. The report itself: a screenshot, no console error, nothing blocked.
     let shot = tmp.join("shot.png");
-    let (_, log) = run_chromium(
-        exe,
-        tmp,
-        &file,
-        "1280,2000",
-        &[format!("--screenshot={}", shot.display())],
-    );
+    let (_, log) =
+        run_chromium(exe, tmp, &file, "1280,2000", &[format!("--screenshot={}", shot.display())]);
     let png = std::fs::read(&shot).unwrap();
     assert_eq!(&png[1..4], b"PNG");
     let (w, h) = (
@@ -363,12 +319,7 @@ fn browser_checks(exe: &Path, tmp: &Path, html: &str, expect: &Expect) {
 
 fn check_probe(dom: &str, window: &str, expect: &Expect) {
     let r = probe_result(dom, window);
-    assert_eq!(
-        r["errors"].as_array().unwrap().len(),
-        0,
-        "{window}: {}",
-        r["errors"]
-    );
+    assert_eq!(r["errors"].as_array().unwrap().len(), 0, "{window}: {}", r["errors"]);
     let width = r["width"].as_f64().unwrap();
     assert!(
         r["scroll_width"].as_f64().unwrap() <= width + 1.0,
@@ -386,10 +337,7 @@ fn check_probe(dom: &str, window: &str, expect: &Expect) {
     for i in items {
         let what = format!("{window}: {} {}", i["kind"], i["id"]);
         assert_eq!(i["visible"], true, "{what}");
-        assert!(
-            i["w"].as_f64().unwrap() > 10.0 && i["h"].as_f64().unwrap() > 10.0,
-            "{what}: {i}"
-        );
+        assert!(i["w"].as_f64().unwrap() > 10.0 && i["h"].as_f64().unwrap() > 10.0, "{what}: {i}");
         // Tables may be wider: they scroll inside their box (the page's
         // scroll width above covers that box).
         assert!(
@@ -430,24 +378,13 @@ fn study_html_and_bad_inputs() {
     assert!(text.contains("this run") && text.contains("01_copy.toml"));
 
     let json = dir.join("s.json");
-    let (ok, out, err) = kinrepro(&[
-        "study",
-        sc.to_str().unwrap(),
-        "--samples",
-        "10",
-        "--format",
-        "json",
-    ]);
+    let (ok, out, err) =
+        kinrepro(&["study", sc.to_str().unwrap(), "--samples", "10", "--format", "json"]);
     assert!(ok, "{err}");
     std::fs::write(&json, out).unwrap();
     let target = dir.join("r.html");
     let report = |args: &[&str]| {
-        let mut a = vec![
-            "report",
-            json.to_str().unwrap(),
-            "--out",
-            target.to_str().unwrap(),
-        ];
+        let mut a = vec!["report", json.to_str().unwrap(), "--out", target.to_str().unwrap()];
         a.extend_from_slice(args);
         kinrepro(&a)
     };
@@ -455,15 +392,10 @@ fn study_html_and_bad_inputs() {
     let reference = dir.join("ref.csv");
     std::fs::write(&reference, "label,scene,point,x_nm,y_nm,z_nm,phi_x_nrad,phi_y_nrad,phi_z_nrad\np,01_copy,centre,1,2,abc,,,\n").unwrap();
     let (ok, _, err) = report(&["--reference", reference.to_str().unwrap()]);
-    assert!(
-        !ok && err.contains("ref.csv:2: z_nm") && err.lines().count() == 1,
-        "{err}"
-    );
+    assert!(!ok && err.contains("ref.csv:2: z_nm") && err.lines().count() == 1, "{err}");
     assert!(!target.exists());
     // The scene changed since the study: refused.
-    let edited = std::fs::read_to_string(&sc)
-        .unwrap()
-        .replace("force = 20.0", "force = 25.0");
+    let edited = std::fs::read_to_string(&sc).unwrap().replace("force = 20.0", "force = 25.0");
     std::fs::write(&sc, edited).unwrap();
     let (ok, _, err) = report(&[]);
     assert!(!ok && err.contains("changed since the study"), "{err}");

@@ -183,10 +183,7 @@ pub fn calibrate(
         let m = measured.load()?;
         Ok(kinrepro::calibrate::calibrate(&scene, &c, &m, &options)?)
     })?;
-    Ok(Calibration {
-        cal,
-        file: "<calibrate>".into(),
-    })
+    Ok(Calibration { cal, file: "<calibrate>".into() })
 }
 
 /// Predictions of other designs from a calibration (`kinrepro predict`):
@@ -293,11 +290,7 @@ pub fn predict(
                 Ok(predict_one(&scene, &c, &cal, &file, studies)?)
             })
             .collect::<Result<Vec<_>, Failure>>()?;
-        Ok(PredictionReport {
-            calibration_file: file,
-            calibration: cal,
-            predictions,
-        })
+        Ok(PredictionReport { calibration_file: file, calibration: cal, predictions })
     })?;
     Ok(Prediction { report })
 }

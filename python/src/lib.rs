@@ -34,10 +34,7 @@ pub(crate) fn err(e: impl std::fmt::Display) -> PyErr {
 #[pymodule]
 fn _kinrepro(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", kinrepro::study::provenance::VERSION)?;
-    m.add(
-        "SCHEMA_VERSION",
-        kinrepro::study::provenance::SCHEMA_VERSION,
-    )?;
+    m.add("SCHEMA_VERSION", kinrepro::study::provenance::SCHEMA_VERSION)?;
     m.add("KinreproError", m.py().get_type::<KinreproError>())?;
     m.add_class::<scene::Scene>()?;
     m.add_class::<scene::Seating>()?;

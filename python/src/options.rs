@@ -50,12 +50,7 @@ pub struct Keywords<'a, 'py> {
 impl Keywords<'_, '_> {
     pub fn options(self) -> PyResult<StudyOptions> {
         Ok(StudyOptions {
-            sampler: self
-                .sampler
-                .as_deref()
-                .map(str::parse::<Sampler>)
-                .transpose()
-                .map_err(err)?,
+            sampler: self.sampler.as_deref().map(str::parse::<Sampler>).transpose().map_err(err)?,
             samples: self.samples,
             seed: self.seed,
             shard: shard(self.shard)?,
@@ -69,10 +64,6 @@ impl Keywords<'_, '_> {
 
 /// The solver and what varies of a study.
 pub fn solver_and_vary(solver: &str, vary: &[String]) -> PyResult<(Solver, Vec<Varied>)> {
-    let vary = vary
-        .iter()
-        .map(|s| s.parse::<Varied>())
-        .collect::<Result<_, _>>()
-        .map_err(err)?;
+    let vary = vary.iter().map(|s| s.parse::<Varied>()).collect::<Result<_, _>>().map_err(err)?;
     Ok((solver.parse().map_err(err)?, vary))
 }

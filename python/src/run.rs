@@ -80,12 +80,9 @@ where
     }
     let pool = match jobs {
         None => None,
-        Some(j) => Some(
-            rayon::ThreadPoolBuilder::new()
-                .num_threads(j)
-                .build()
-                .map_err(crate::err)?,
-        ),
+        Some(j) => {
+            Some(rayon::ThreadPoolBuilder::new().num_threads(j).build().map_err(crate::err)?)
+        }
     };
     let (tx, rx) = mpsc::channel();
     let in_flight = InFlight::start();
@@ -127,9 +124,9 @@ where
 /// this process), or a panic as `RuntimeError`.
 fn finish<T>(ended: Ended<T>) -> PyResult<T> {
     match ended.outcome {
-        Ok(_) if ended.stopped => Err(PyKeyboardInterrupt::new_err(
-            "kinrepro: run stopped by Ctrl-C",
-        )),
+        Ok(_) if ended.stopped => {
+            Err(PyKeyboardInterrupt::new_err("kinrepro: run stopped by Ctrl-C"))
+        }
         Ok(Ok(v)) => Ok(v),
         Ok(Err(Failure(message))) => Err(crate::err(message)),
         Err(payload) => Err(PyRuntimeError::new_err(panic_text(&payload))),

@@ -179,12 +179,7 @@ impl Seating {
     /// Normal force of each contact [N], (n_contacts,).
     #[getter]
     fn normal_forces<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        let v: Vec<f64> = self
-            .report
-            .contacts
-            .iter()
-            .map(|c| c.normal_force_n)
-            .collect();
+        let v: Vec<f64> = self.report.contacts.iter().map(|c| c.normal_force_n).collect();
         PyArray1::from_vec(py, v)
     }
 
@@ -257,25 +252,13 @@ pub fn seat(
     let report = py.detach(move || -> Result<RunReport, Failure> {
         let (scene, c) = parse_scene(&text, &file)?;
         let (nominal, load) = (Load::nominal(&scene), load_of(&scene, mu));
-        let seat = |l: &Load| {
-            method
-                .seat(&c, l)
-                .map_err(|e| Failure(format!("{file}: {e}")))
-        };
+        let seat = |l: &Load| method.seat(&c, l).map_err(|e| Failure(format!("{file}: {e}")));
         let seating = seat(&load)?;
         let nominal = seat(&nominal)?;
         let model = (&scene, &c);
-        Ok(RunReport::new(
-            model,
-            &load.mu,
-            &seating,
-            &nominal,
-            method.name(),
-        ))
+        Ok(RunReport::new(model, &load.mu, &seating, &nominal, method.name()))
     });
-    Ok(Seating {
-        report: report.map_err(|Failure(m)| err(m))?,
-    })
+    Ok(Seating { report: report.map_err(|Failure(m)| err(m))? })
 }
 
 /// The 6x6 stiffness of the seated coupling (`kinrepro stiffness`) at an
@@ -300,10 +283,7 @@ pub fn stiffness<'py>(
             Ok(name) => {
                 let found = sc.evaluation_points.iter().find(|p| p.name == name);
                 let p = found.ok_or_else(|| {
-                    err(format!(
-                        "at={name:?}: no such evaluation point, have {:?}",
-                        scene.points
-                    ))
+                    err(format!("at={name:?}: no such evaluation point, have {:?}", scene.points))
                 })?;
                 (p.name.clone(), p.position)
             }

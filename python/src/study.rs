@@ -97,11 +97,7 @@ impl Study {
                 None => return Err(err("the study has no outputs")),
             },
         };
-        let prefix = if interchange {
-            kinrepro::study::runner::INTERCHANGE_PREFIX
-        } else {
-            ""
-        };
+        let prefix = if interchange { kinrepro::study::runner::INTERCHANGE_PREFIX } else { "" };
         let cols = Dof::ALL
             .iter()
             .map(|d| {
@@ -134,23 +130,13 @@ impl Study {
     /// Names of the columns of `inputs()` (`mu_1`, `offset_x_m`, ...).
     #[pyo3(signature = (variant = 0))]
     fn input_names(&self, variant: usize) -> PyResult<Vec<String>> {
-        Ok(self
-            .variant(variant)?
-            .inputs
-            .iter()
-            .map(|i| i.name())
-            .collect())
+        Ok(self.variant(variant)?.inputs.iter().map(|i| i.name()).collect())
     }
 
     /// Sample index of every row of `poses()` and `inputs()`.
     #[pyo3(signature = (variant = 0))]
     fn indices(&self, variant: usize) -> PyResult<Vec<usize>> {
-        Ok(self
-            .variant(variant)?
-            .records
-            .iter()
-            .map(|r| r.index)
-            .collect())
+        Ok(self.variant(variant)?.records.iter().map(|r| r.index).collect())
     }
 
     /// Sample standard deviation (n - 1) of each DOF at `point` (None: the
@@ -168,9 +154,7 @@ impl Study {
         let p = self.point_stats_of(point, variant, interchange)?;
         let array = numpy::PyArray1::from_vec(py, p.sigma.si().to_vec());
         // The array answers the old dict keys, deprecated (kinrepro._sigma).
-        py.import("kinrepro._sigma")?
-            .getattr("Sigma")?
-            .call1((array,))
+        py.import("kinrepro._sigma")?.getattr("Sigma")?.call1((array,))
     }
 
     /// All statistics of `point` as in the JSON's `points` entry (n, sigma,
@@ -204,12 +188,7 @@ impl Study {
     }
 
     fn __repr__(&self) -> String {
-        let names: Vec<&str> = self
-            .report
-            .variants
-            .iter()
-            .map(|v| v.scene.as_str())
-            .collect();
+        let names: Vec<&str> = self.report.variants.iter().map(|v| v.scene.as_str()).collect();
         let r = &self.report;
         let or_none = |v: Option<String>| v.unwrap_or_else(|| "None".into());
         format!(
@@ -239,11 +218,7 @@ impl Study {
         interchange: bool,
     ) -> PyResult<&kinrepro::study::PointStats> {
         let v = self.variant(variant)?;
-        let list = if interchange {
-            &v.interchangeability
-        } else {
-            &v.points
-        };
+        let list = if interchange { &v.interchangeability } else { &v.points };
         if v.partial {
             return Err(err(
                 "this is one shard of a study: its statistics wait for kinrepro.merge of all shards",
@@ -255,9 +230,7 @@ impl Study {
         }
         .ok_or_else(|| {
             let have: Vec<&str> = list.iter().map(|s| s.name.as_str()).collect();
-            err(format!(
-                "point {point:?}: not in this study (have {have:?})"
-            ))
+            err(format!("point {point:?}: not in this study (have {have:?})"))
         })
     }
 }
@@ -300,22 +273,12 @@ pub fn study(
         tilt_bounds,
         sensitivity,
         sobol_samples,
-        ..Keywords {
-            samples,
-            sampler,
-            seed,
-            shard,
-            increments,
-            path_tolerance,
-            replicates,
-        }
-        .options()?
+        ..Keywords { samples, sampler, seed, shard, increments, path_tolerance, replicates }
+            .options()?
     };
     let report = crate::run::interruptible(py, jobs, move || {
-        let models = scenes
-            .iter()
-            .map(|s| parse_scene(&s.text, &s.file))
-            .collect::<Result<Vec<_>, _>>()?;
+        let models =
+            scenes.iter().map(|s| parse_scene(&s.text, &s.file)).collect::<Result<Vec<_>, _>>()?;
         let plan = StudyPlan::new(models, &options)?;
         let (report, _) = plan.run::<NoSink>(&|| {}, |_, _| Ok(None))?;
         Ok(report)
@@ -353,15 +316,11 @@ pub fn merge(py: Python<'_>, parts: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny>
             } else if let Ok(text) = p.extract::<String>() {
                 Study::from_json(&text)?.report
             } else {
-                return Err(err(format!(
-                    "merge: part {i} is neither a Study nor JSON text"
-                )));
+                return Err(err(format!("merge: part {i} is neither a Study nor JSON text")));
             };
             Ok((format!("part {}", i + 1), report))
         })
         .collect::<PyResult<Vec<_>>>()?;
-    let merged = py
-        .detach(move || kinrepro::study::merge::merge_parts(docs))
-        .map_err(err)?;
+    let merged = py.detach(move || kinrepro::study::merge::merge_parts(docs)).map_err(err)?;
     Ok(Py::new(py, Study { report: merged })?.into_any())
 }

@@ -64,11 +64,9 @@ impl Sweep {
     /// (materials, arrangements: see `to_dict()`).
     fn values<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
         let (d, names) = (&self.report.designs, self.names());
-        Array2::from_shape_fn((d.len(), names.len()), |(i, j)| {
-            match d[i].values.get(&names[j]) {
-                Some(SweptValue::Number(v)) => *v,
-                _ => f64::NAN,
-            }
+        Array2::from_shape_fn((d.len(), names.len()), |(i, j)| match d[i].values.get(&names[j]) {
+            Some(SweptValue::Number(v)) => *v,
+            _ => f64::NAN,
         })
         .into_pyarray(py)
     }
@@ -80,11 +78,7 @@ impl Sweep {
 
     /// `"ok"`, or why the design point was not evaluated, per design point.
     fn status(&self) -> Vec<String> {
-        self.report
-            .designs
-            .iter()
-            .map(|d| d.status.clone())
-            .collect()
+        self.report.designs.iter().map(|d| d.status.clone()).collect()
     }
 
     /// Sample standard deviation (n - 1) of each DOF at evaluation point
@@ -106,9 +100,7 @@ impl Sweep {
                 None if design.points.is_empty() => [f64::NAN; 6],
                 None => {
                     let have: Vec<&str> = design.points.iter().map(|p| p.name.as_str()).collect();
-                    return Err(err(format!(
-                        "point {name:?}: not in this sweep (have {have:?})"
-                    )));
+                    return Err(err(format!("point {name:?}: not in this sweep (have {have:?})")));
                 }
             };
             rows.push(row);
@@ -136,9 +128,8 @@ pub fn merge_sweeps(py: Python<'_>, parts: &[Bound<'_, PyAny>]) -> PyResult<Py<P
         .iter()
         .enumerate()
         .map(|(i, p)| {
-            let s = p
-                .cast::<Sweep>()
-                .map_err(|_| err(format!("merge: part {i} is not a Sweep")))?;
+            let s =
+                p.cast::<Sweep>().map_err(|_| err(format!("merge: part {i} is not a Sweep")))?;
             Ok((format!("part {}", i + 1), s.get().report.clone()))
         })
         .collect::<PyResult<Vec<_>>>()?;
@@ -171,16 +162,9 @@ pub fn sweep(
     path_tolerance: Option<f64>,
     replicates: Option<usize>,
 ) -> PyResult<Sweep> {
-    let options = Keywords {
-        samples,
-        sampler,
-        seed,
-        shard,
-        increments,
-        path_tolerance,
-        replicates,
-    }
-    .options()?;
+    let options =
+        Keywords { samples, sampler, seed, shard, increments, path_tolerance, replicates }
+            .options()?;
     let (text, file) = (scene.text.clone(), scene.file.clone());
     let report = crate::run::interruptible(py, jobs, move || {
         let (base, coupling) = parse_scene(&text, &file)?;
@@ -188,13 +172,7 @@ pub fn sweep(
         let spec = SweepSpec::new(&file, &text, &sets, design)?;
         let plan = study_plan(base, coupling, &options)?;
         let tick = &|| {};
-        Ok(run(
-            &spec,
-            &plan,
-            options.shard,
-            pareto_point.as_deref(),
-            tick,
-        )?)
+        Ok(run(&spec, &plan, options.shard, pareto_point.as_deref(), tick)?)
     })?;
     Ok(Sweep { report })
 }

@@ -38,9 +38,7 @@ pub const LEVER_RATIO_MAX: f64 = 1e3;
 /// cannot overflow) over the coupling's size (see [`LEVER_RATIO_MAX`]),
 /// and that size [m].
 pub fn lever_ratio(coupling: &Coupling, point: &nalgebra::Vector3<f64>) -> (f64, f64) {
-    let size = (coupling.balls.iter())
-        .map(|b| b.centre.norm())
-        .fold(0.0, f64::max);
+    let size = (coupling.balls.iter()).map(|b| b.centre.norm()).fold(0.0, f64::max);
     (point.amax() / size, size)
 }
 
@@ -72,15 +70,7 @@ pub fn load_path(
     opts: &SolverOptions,
 ) -> Result<LoadPath, SolveError> {
     let states = at_rest_states(seating);
-    apply_load(
-        coupling,
-        seated,
-        &seating.pose(),
-        &states,
-        external,
-        factor,
-        opts,
-    )
+    apply_load(coupling, seated, &seating.pose(), &states, external, factor, opts)
 }
 
 /// The safe load envelope (module doc).
@@ -96,10 +86,7 @@ pub fn envelope(
     let mut f = 1.0;
     let first = loop {
         match run(f) {
-            Ok(LoadPath {
-                first_event: Some(e),
-                ..
-            }) => break e,
+            Ok(LoadPath { first_event: Some(e), .. }) => break e,
             Ok(_) => lo = f,
             Err(e) if f <= 1.0 => return Err(e),
             // A path that fails without an event beyond the given load ends
@@ -107,10 +94,7 @@ pub fn envelope(
             Err(_) => f = MAX_FACTOR,
         }
         if f >= MAX_FACTOR {
-            return Ok(Envelope {
-                event: None,
-                searched_to: lo,
-            });
+            return Ok(Envelope { event: None, searched_to: lo });
         }
         f *= 4.0;
     };
@@ -129,12 +113,5 @@ pub fn envelope(
             None => lo = mid,
         }
     }
-    Ok(Envelope {
-        event: Some(LoadEvent {
-            previous: lo,
-            factor: hi,
-            ..best
-        }),
-        searched_to: lo,
-    })
+    Ok(Envelope { event: Some(LoadEvent { previous: lo, factor: hi, ..best }), searched_to: lo })
 }

@@ -109,11 +109,7 @@ impl CouplingStiffness {
         let preload_springs = applied(coupling, &load.preload, &pose, 1.0)
             .filter_map(|a| a.stiffness.map(|k| (a.point, k)))
             .collect();
-        Ok(CouplingStiffness {
-            pose,
-            springs,
-            preload_springs,
-        })
+        Ok(CouplingStiffness { pose, springs, preload_springs })
     }
 
     /// The 6x6 stiffness for a twist (v, w) about the world point `q`
@@ -125,10 +121,8 @@ impl CouplingStiffness {
         for (point, tangent) in contacts.chain(self.preload_springs.iter().copied()) {
             let ki = -(tangent + tangent.transpose()) * 0.5;
             let mut t = nalgebra::Matrix3x6::zeros();
-            t.fixed_view_mut::<3, 3>(0, 0)
-                .copy_from(&Matrix3::identity());
-            t.fixed_view_mut::<3, 3>(0, 3)
-                .copy_from(&(-(point - q).cross_matrix()));
+            t.fixed_view_mut::<3, 3>(0, 0).copy_from(&Matrix3::identity());
+            t.fixed_view_mut::<3, 3>(0, 3).copy_from(&(-(point - q).cross_matrix()));
             k += t.transpose() * ki * t;
         }
         (k + k.transpose()) * 0.5
@@ -157,9 +151,6 @@ impl CouplingStiffness {
             out.sort_by(|a, b| a.0.total_cmp(&b.0));
             out
         };
-        Some(Principal {
-            translational: block(0),
-            rotational: block(3),
-        })
+        Some(Principal { translational: block(0), rotational: block(3) })
     }
 }

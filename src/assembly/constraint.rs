@@ -53,10 +53,7 @@ impl ConstraintReport {
         }
         let mut parts = vec![format!("{} contacts, rank {}", self.contacts, self.rank)];
         if !self.free_motions.is_empty() {
-            parts.push(format!(
-                "under-constrained, free: {}",
-                self.free_motions.join("; ")
-            ));
+            parts.push(format!("under-constrained, free: {}", self.free_motions.join("; ")));
         }
         if self.redundant_constraints > 0 {
             let k = self.redundant_constraints;
@@ -79,11 +76,7 @@ fn ranges(v: &[usize]) -> String {
         while j + 1 < v.len() && v[j + 1] == v[j] + 1 {
             j += 1;
         }
-        out.push(if j > i {
-            format!("{}-{}", v[i], v[j])
-        } else {
-            v[i].to_string()
-        });
+        out.push(if j > i { format!("{}-{}", v[i], v[j]) } else { v[i].to_string() });
         i = j + 1;
     }
     out.join(", ")
@@ -91,12 +84,7 @@ fn ranges(v: &[usize]) -> String {
 
 fn reference(coupling: &Coupling) -> (Vector3<f64>, f64) {
     let n = coupling.balls.len() as f64;
-    let o = coupling
-        .balls
-        .iter()
-        .map(|b| b.centre)
-        .sum::<Vector3<f64>>()
-        / n;
+    let o = coupling.balls.iter().map(|b| b.centre).sum::<Vector3<f64>>() / n;
     let l = coupling
         .balls
         .iter()
@@ -182,11 +170,7 @@ pub fn analyse(coupling: &Coupling) -> ConstraintReport {
         contacts: m,
         rank,
         exactly_constrained: exactly,
-        condition_number: if rank == 6 {
-            (lmax / lmin).sqrt()
-        } else {
-            f64::INFINITY
-        },
+        condition_number: if rank == 6 { (lmax / lmin).sqrt() } else { f64::INFINITY },
         free_motions,
         redundant_constraints: m - rank,
         redundant_contacts,
@@ -203,11 +187,7 @@ fn describe_twist(v: &Vector3<f64>, wl: &Vector3<f64>, o: &Vector3<f64>, l: f64)
     let axis = w.normalize();
     // The screw axis passes through o + w x v / |w|^2.
     let q = o + w.cross(v) / w.norm_squared();
-    format!(
-        "rotation about the axis {} through {} m",
-        fmt(&axis),
-        fmt(&q)
-    )
+    format!("rotation about the axis {} through {} m", fmt(&axis), fmt(&q))
 }
 
 /// Contact forces that balance `preload` with no friction: solve
@@ -292,13 +272,8 @@ pub fn friction_limit(coupling: &Coupling, preload: &Preload) -> FrictionLimit {
                 continue;
             }
             let n = g.normal;
-            let e1 = n
-                .cross(&if n.x.abs() < 0.9 {
-                    Vector3::x()
-                } else {
-                    Vector3::y()
-                })
-                .normalize();
+            let e1 =
+                n.cross(&if n.x.abs() < 0.9 { Vector3::x() } else { Vector3::y() }).normalize();
             let e2 = n.cross(&e1);
             let arm = (g.point - o) / l;
             for k in 0..CONE_FACETS {
@@ -312,9 +287,7 @@ pub fn friction_limit(coupling: &Coupling, preload: &Preload) -> FrictionLimit {
                 }
             }
         }
-        let rhs = [
-            target_f.x, target_f.y, target_f.z, target_m.x, target_m.y, target_m.z,
-        ];
+        let rhs = [target_f.x, target_f.y, target_f.z, target_m.x, target_m.y, target_m.z];
         for (r, row) in rows.iter().enumerate() {
             lp.add_constraint(row.as_slice(), ComparisonOp::Eq, rhs[r]);
         }
@@ -328,11 +301,7 @@ pub fn friction_limit(coupling: &Coupling, preload: &Preload) -> FrictionLimit {
         let (mut lo, mut hi) = (0.0, MU_SEARCH_MAX.min(best.0));
         while hi - lo > MU_RESOLUTION {
             let mid = 0.5 * (lo + hi);
-            if feasible(open, mid) {
-                hi = mid
-            } else {
-                lo = mid
-            }
+            if feasible(open, mid) { hi = mid } else { lo = mid }
         }
         if hi < best.0 {
             best = (hi, open + 1);

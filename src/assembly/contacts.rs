@@ -12,10 +12,7 @@ use crate::scene::{Surface, SurfaceGeometry};
 
 /// Contact `i` (0-based) of surface `s`, served by `ball`.
 pub(super) fn build(i: usize, s: &Surface, ball: &MovingBall) -> Result<Contact, AssemblyError> {
-    let err = |source| AssemblyError::Contact {
-        contact: i + 1,
-        source,
-    };
+    let err = |source| AssemblyError::Contact { contact: i + 1, source };
     let (centre, radius, axis) = match s.moving {
         Some(p) => (p.centre, p.radius, p.axis),
         None => (ball.centre, ball.radius, None),
@@ -56,16 +53,10 @@ fn sphere_pair(
         SurfaceGeometry::Sphere { radius: r2, .. } => {
             (ContactShape::SphereSphere, Some(r2), Vector3::zeros())
         }
-        SurfaceGeometry::Cylinder {
-            radius: r2,
-            direction,
-            ..
-        } => (ContactShape::SphereCylinder, Some(r2), direction),
-        SurfaceGeometry::ConcaveCylinder {
-            radius: r2,
-            direction,
-            ..
-        } => {
+        SurfaceGeometry::Cylinder { radius: r2, direction, .. } => {
+            (ContactShape::SphereCylinder, Some(r2), direction)
+        }
+        SurfaceGeometry::ConcaveCylinder { radius: r2, direction, .. } => {
             let n = geometry::contact(surface, centre, radius).normal;
             (ContactShape::SphereGroove, Some(r2), direction.cross(&n))
         }
@@ -85,12 +76,7 @@ fn pin_pair(
     m1: Material,
     m2: Material,
 ) -> Result<(ContactPair, Vector3<f64>), ContactError> {
-    let SurfaceGeometry::Cylinder {
-        direction,
-        radius: r2,
-        ..
-    } = *surface
-    else {
+    let SurfaceGeometry::Cylinder { direction, radius: r2, .. } = *surface else {
         return Err(ContactError::MovingPinNeedsPin);
     };
     let cos = axis.dot(&direction).clamp(-1.0, 1.0);

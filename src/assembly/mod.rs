@@ -27,10 +27,7 @@ pub struct BodyPose {
 
 impl BodyPose {
     pub fn identity() -> Self {
-        BodyPose {
-            rotation: UnitQuaternion::identity(),
-            translation: Vector3::zeros(),
-        }
+        BodyPose { rotation: UnitQuaternion::identity(), translation: Vector3::zeros() }
     }
 
     /// World position of a body point.
@@ -42,10 +39,7 @@ impl BodyPose {
     /// about the world origin, then translation v (exact finite rotation).
     pub fn moved(&self, v: &Vector3<f64>, w: &Vector3<f64>) -> Self {
         let dq = rotation_exp(w);
-        BodyPose {
-            rotation: dq * self.rotation,
-            translation: dq * self.translation + v,
-        }
+        BodyPose { rotation: dq * self.rotation, translation: dq * self.translation + v }
     }
 }
 
@@ -147,12 +141,7 @@ pub enum AssemblyError {
         "contact {contact} (ball {ball}): the ball does not touch its surface: gap {gap_m:.3e} m \
          (a ball must touch every surface it is assigned at zero force; |gap| must be below {tol_m:.1e} m)"
     )]
-    NotTouching {
-        contact: usize,
-        ball: usize,
-        gap_m: f64,
-        tol_m: f64,
-    },
+    NotTouching { contact: usize, ball: usize, gap_m: f64, tol_m: f64 },
     #[error("the coupling is not exactly constrained: {0}")]
     NotExactlyConstrained(String),
     #[error(
@@ -239,10 +228,7 @@ impl Coupling {
         coupling.touching_pose = coupling.solve_touching_pose();
         let forces = constraint::frictionless_preload_forces(&coupling, &scene.preload);
         if let Some((i, f)) = forces.iter().enumerate().find(|(_, f)| **f <= 0.0) {
-            return Err(AssemblyError::PreloadLifts {
-                contact: i + 1,
-                force_n: *f,
-            });
+            return Err(AssemblyError::PreloadLifts { contact: i + 1, force_n: *f });
         }
         Ok(coupling)
     }
@@ -251,19 +237,12 @@ impl Coupling {
     /// origin of the touching pose, the length scale of moments [m].
     pub fn length_scale(&self) -> f64 {
         let t = &self.touching_pose;
-        self.balls
-            .iter()
-            .map(|b| (t.apply(&b.centre) - t.translation).norm())
-            .fold(0.0, f64::max)
+        self.balls.iter().map(|b| (t.apply(&b.centre) - t.translation).norm()).fold(0.0, f64::max)
     }
 
     /// The slide-away bound of the solvers: 5 % of the smallest ball radius [m].
     pub fn slide_away_travel(&self) -> f64 {
-        0.05 * self
-            .balls
-            .iter()
-            .map(|b| b.radius)
-            .fold(f64::INFINITY, f64::min)
+        0.05 * self.balls.iter().map(|b| b.radius).fold(f64::INFINITY, f64::min)
     }
 
     /// Geometry of contact `i` with the moving half at `pose`
@@ -308,10 +287,7 @@ impl Coupling {
             let Some(step) = j.lu().solve(&(-gaps)) else {
                 break;
             };
-            pose = pose.moved(
-                &step.fixed_rows::<3>(0).into(),
-                &step.fixed_rows::<3>(3).into(),
-            );
+            pose = pose.moved(&step.fixed_rows::<3>(0).into(), &step.fixed_rows::<3>(3).into());
         }
         pose
     }

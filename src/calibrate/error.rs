@@ -21,11 +21,7 @@ pub enum CalibrateError {
     },
     /// A measurement file that is wrong as a whole (too few cycles, no DOF).
     #[error("{file}: line {line}: {reason}")]
-    File {
-        file: String,
-        line: usize,
-        reason: String,
-    },
+    File { file: String, line: usize, reason: String },
     /// Bad measured numbers given as an array (`Measurement::from_cycles`).
     #[error("{origin}: {reason}")]
     Array { origin: String, reason: String },
@@ -55,11 +51,7 @@ pub enum CalibrateError {
     Param(#[from] ParamError),
     /// The measured evaluation point is not in the scene.
     #[error("{file}: evaluation point `{point}` is not in the scene (it has: {have})")]
-    Point {
-        file: String,
-        point: String,
-        have: String,
-    },
+    Point { file: String, point: String, have: String },
     /// The model cannot be compared with the data (singular covariance, ...).
     #[error("{file}: {reason}")]
     Model { file: String, reason: String },
@@ -69,12 +61,7 @@ pub enum CalibrateError {
     /// A calibrated point (estimates or a region point) that does not apply
     /// to the predicted scene: names the calibration file and the point.
     #[error("{calibration}: {at} applied to {scene}: {reason}")]
-    Applied {
-        calibration: String,
-        at: String,
-        scene: String,
-        reason: String,
-    },
+    Applied { calibration: String, at: String, scene: String, reason: String },
     /// A coupling that cannot seat ([`crate::study::verdict::cannot_seat`]):
     /// its scatter is not a prediction.
     #[error("{file}: cannot seat: {reason}")]

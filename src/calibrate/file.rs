@@ -143,11 +143,7 @@ pub fn design_hash(scene: &Scene) -> String {
     s.file = String::new();
     s.name = String::new();
     s.friction.spread = 0.0;
-    s.study = StudyDefaults {
-        samples: 0,
-        sampler: Sampler::MonteCarlo,
-        seed: 0,
-    };
+    s.study = StudyDefaults { samples: 0, sampler: Sampler::MonteCarlo, seed: 0 };
     content_hash(&s)
 }
 
@@ -156,18 +152,11 @@ pub fn point_index(scene: &Scene, name: Option<&str>, file: &str) -> Result<usiz
     let pts = &scene.evaluation_points;
     match name {
         None => Ok(0),
-        Some(n) => pts
-            .iter()
-            .position(|p| p.name == n)
-            .ok_or_else(|| CalibrateError::Point {
-                file: file.to_string(),
-                point: n.to_string(),
-                have: pts
-                    .iter()
-                    .map(|p| format!("`{}`", p.name))
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            }),
+        Some(n) => pts.iter().position(|p| p.name == n).ok_or_else(|| CalibrateError::Point {
+            file: file.to_string(),
+            point: n.to_string(),
+            have: pts.iter().map(|p| format!("`{}`", p.name)).collect::<Vec<_>>().join(", "),
+        }),
     }
 }
 
@@ -178,19 +167,15 @@ pub fn observed(m: &Measurement) -> Observed {
             s: m.covariance().unwrap_or_else(|| DMatrix::zeros(0, 0)),
             n: rows.len(),
         },
-        MeasuredData::Summary { sigma, cycles } => Observed::Sigmas {
-            sigma: sigma.clone(),
-            cycles: cycles.clone(),
-        },
+        MeasuredData::Summary { sigma, cycles } => {
+            Observed::Sigmas { sigma: sigma.clone(), cycles: cycles.clone() }
+        }
     }
 }
 
 /// The sensor noise sigma per measured DOF: `--noise`, else the file's.
 pub fn noise_of(m: &Measurement, opts: &CalibrateOptions) -> Vec<f64> {
-    m.dofs
-        .iter()
-        .map(|&d| opts.noise[d].or(m.noise[d]).unwrap_or(0.0))
-        .collect()
+    m.dofs.iter().map(|&d| opts.noise[d].or(m.noise[d]).unwrap_or(0.0)).collect()
 }
 
 /// A calibration file of measurement `m` with its goodness of fit and
@@ -285,10 +270,7 @@ fn check_parameter(name: &str, p: &Parameter) -> Option<String> {
         return Some(format!("{at}: estimate {e}: a calibrated spread is > 0"));
     }
     if !(p.level > 0.0 && p.level < 1.0) {
-        return Some(format!(
-            "{at}: level {}: need a probability in (0, 1)",
-            p.level
-        ));
+        return Some(format!("{at}: level {}: need a probability in (0, 1)", p.level));
     }
     None
 }
@@ -296,10 +278,7 @@ fn check_parameter(name: &str, p: &Parameter) -> Option<String> {
 impl Calibration {
     /// Parse a calibration file's text.
     pub fn parse(text: &str, file: &str) -> Result<Self, CalibrateError> {
-        let bad = |reason: String| CalibrateError::Calibration {
-            file: file.into(),
-            reason,
-        };
+        let bad = |reason: String| CalibrateError::Calibration { file: file.into(), reason };
         let c: Calibration = serde_json::from_str(text).map_err(|e| bad(e.to_string()))?;
         if c.kind != "calibration" || !READABLE_SCHEMA_VERSIONS.contains(&c.schema_version) {
             return Err(bad(format!(
@@ -310,11 +289,7 @@ impl Calibration {
         if c.parameters.is_empty() {
             return Err(bad("no fitted parameter in `parameters`".into()));
         }
-        if let Some(p) = c
-            .parameters
-            .keys()
-            .find(|k| !PARAMETERS.contains(&k.as_str()))
-        {
+        if let Some(p) = c.parameters.keys().find(|k| !PARAMETERS.contains(&k.as_str())) {
             return Err(bad(format!("unknown parameter `{p}` in `parameters`")));
         }
         if let Some(reason) = c.parameters.iter().find_map(|(k, p)| check_parameter(k, p)) {
@@ -366,9 +341,6 @@ impl Calibration {
     }
 
     pub fn estimates(&self) -> BTreeMap<String, f64> {
-        self.parameters
-            .iter()
-            .map(|(k, p)| (k.clone(), p.estimate))
-            .collect()
+        self.parameters.iter().map(|(k, p)| (k.clone(), p.estimate)).collect()
     }
 }

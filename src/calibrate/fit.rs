@@ -64,17 +64,9 @@ pub fn calibrate(
     let obs = observed(m);
     let models = StudyOptions::monte_carlo(opts.samples, opts.seed, opts.solver);
     let plan = StudyPlan::keeping_records(vec![(scene.clone(), coupling.clone())], &models)?;
-    let spec = StudySpec {
-        plan: &plan,
-        point,
-        dofs: &m.dofs,
-    };
+    let spec = StudySpec { plan: &plan, point, dofs: &m.dofs };
     let base: &Variant = spec.base();
-    let s_ref = if f.spread > 0.0 {
-        f.spread
-    } else {
-        0.1 * f.mu_static
-    };
+    let s_ref = if f.spread > 0.0 { f.spread } else { 0.1 * f.mu_static };
     let (reference, grid) = two_pass_grid(&spec, &obs, &params, &noise_var, s_ref)?;
     let grid = grid.as_ref().unwrap_or(&reference);
     let jm = JointModel::new(&obs, grid, &params, base, &noise_var);
@@ -100,11 +92,7 @@ pub fn calibrate(
     let mut cal = skeleton(scene, m, point, gof, info, at_estimate.fingerprint.clone());
     cal.dofs = dof_fits(m, &noise, &fitted, &g_hat, s_hat);
     let names = || params.iter().map(|p| p.name().to_string());
-    cal.region = fit
-        .region
-        .iter()
-        .map(|t| names().zip(t.clone()).collect())
-        .collect();
+    cal.region = fit.region.iter().map(|t| names().zip(t.clone()).collect()).collect();
     cal.parameters = names().zip(fit.parameters).collect();
     cal.correlation = fit.correlation;
     cal.fixed = fixed(base, &params);
@@ -121,16 +109,10 @@ fn two_pass_grid(
     noise_var: &[f64],
     s_ref: f64,
 ) -> Result<(ModelGrid, Option<ModelGrid>), CalibrateError> {
-    let grid_params: Vec<Param> = params
-        .iter()
-        .copied()
-        .filter(|p| *p != Param::Spread)
-        .collect();
+    let grid_params: Vec<Param> = params.iter().copied().filter(|p| *p != Param::Spread).collect();
     let fit_mu = params.contains(&Param::MuStatic);
-    let ranges: Vec<(f64, f64)> = grid_params
-        .iter()
-        .map(|p| p.range(spec.base(), fit_mu))
-        .collect();
+    let ranges: Vec<(f64, f64)> =
+        grid_params.iter().map(|p| p.range(spec.base(), fit_mu)).collect();
     let reference = ModelGrid::build(spec, &grid_params, &ranges, s_ref)?;
     if !params.contains(&Param::Spread) {
         return Ok((reference, None));
@@ -186,10 +168,7 @@ pub fn fit_at(jm: &JointModel, u_hat: &[f64], l_max: f64, x: &[Vec<f64>]) -> Joi
     JointFit {
         region: region(jm, u_hat, l_max, &derived, &ends, &parameters),
         parameters,
-        correlation: derived
-            .covariance
-            .as_ref()
-            .map(|v| correlation(&jm.params, v)),
+        correlation: derived.covariance.as_ref().map(|v| correlation(&jm.params, v)),
     }
 }
 
@@ -264,11 +243,7 @@ fn intervals(
         let (r0, r1) = jm.ranges[a];
         let spread = *p == Param::Spread;
         let value = |e: &End| {
-            if spread && e.at_bound && e.u == 0.0 {
-                0.0
-            } else {
-                jm.theta(&e.point)[a]
-            }
+            if spread && e.at_bound && e.u == 0.0 { 0.0 } else { jm.theta(&e.point)[a] }
         };
         let est = theta[a];
         // The model error widens the interval in quadrature: on ln s for
@@ -279,11 +254,7 @@ fn intervals(
         let widen = |end: &End, dir: f64| {
             let v = value(end);
             let h = (f(v) - f(est)).abs().hypot(z * model_error);
-            if end.at_bound {
-                v
-            } else {
-                f_inv(f(est) + dir * h)
-            }
+            if end.at_bound { v } else { f_inv(f(est) + dir * h) }
         };
         let (low, high) = (widen(&lo, -1.0).max(r0), widen(&hi, 1.0).min(r1));
         // Widening by the model error may also reach a range end.
@@ -318,11 +289,7 @@ fn method_text(p: Param, jm: &JointModel) -> String {
     } else {
         format!("k 2 (l_max - l) <= chi^2_1(0.90) = {chi2:.4}, k the sandwich factor")
     };
-    let scale = if p == Param::Spread {
-        "on ln s"
-    } else {
-        "linearly"
-    };
+    let scale = if p == Param::Spread { "on ln s" } else { "linearly" };
     let grid = if jm.grid.params.is_empty() {
         ""
     } else {
@@ -387,11 +354,7 @@ fn correlation(params: &[Param], v: &DMatrix<f64>) -> Correlation {
     Correlation {
         parameters: params.iter().map(|p| p.name().to_string()).collect(),
         matrix: (0..q)
-            .map(|a| {
-                (0..q)
-                    .map(|b| v[(a, b)] / (v[(a, a)] * v[(b, b)]).sqrt())
-                    .collect()
-            })
+            .map(|a| (0..q).map(|b| v[(a, b)] / (v[(a, a)] * v[(b, b)]).sqrt()).collect())
             .collect(),
     }
 }

@@ -65,11 +65,7 @@ impl ModelGrid {
         let cap = params.contains(&Param::MuStatic);
         let nodes: Vec<Vec<f64>> = ranges
             .iter()
-            .map(|&(a, b)| {
-                (0..k)
-                    .map(|i| a + (b - a) * i as f64 / (k - 1) as f64)
-                    .collect()
-            })
+            .map(|&(a, b)| (0..k).map(|i| a + (b - a) * i as f64 / (k - 1) as f64).collect())
             .collect();
         let mut g = Vec::new();
         for flat in 0..k.pow(params.len() as u32) {
@@ -82,12 +78,7 @@ impl ModelGrid {
             Param::Spread.set(&mut c.scene, &mut c.coupling, s);
             g.push(spec.run(&c)?.per_unit(spec.dofs));
         }
-        Ok(ModelGrid {
-            params: params.to_vec(),
-            nodes,
-            g,
-            spread,
-        })
+        Ok(ModelGrid { params: params.to_vec(), nodes, g, spread })
     }
 
     /// A grid of given node matrices (a closed-form G, or G from another model).
@@ -97,20 +88,13 @@ impl ModelGrid {
         g: Vec<DMatrix<f64>>,
         spread: f64,
     ) -> Self {
-        ModelGrid {
-            params,
-            nodes,
-            g,
-            spread,
-        }
+        ModelGrid { params, nodes, g, spread }
     }
 
     /// G at the grid-parameter values `phi` (interpolated): the sum over
     /// the nodes of G times the product of the per-parameter weights.
     pub fn at(&self, phi: &[f64]) -> DMatrix<f64> {
-        let w: Vec<Vec<f64>> = (self.nodes.iter().zip(phi))
-            .map(|(n, &v)| weights(n, v))
-            .collect();
+        let w: Vec<Vec<f64>> = (self.nodes.iter().zip(phi)).map(|(n, &v)| weights(n, v)).collect();
         let p = self.g[0].nrows();
         let mut out = DMatrix::zeros(p, p);
         for (flat, g) in self.g.iter().enumerate() {

@@ -64,10 +64,9 @@ pub fn information(m: &JointModel, theta: &[f64], x: &[Vec<f64>]) -> Option<Info
     let p = sigma.nrows();
     let inv = sigma.clone().cholesky()?.inverse();
     let w: Vec<DMatrix<f64>> = match m.obs {
-        Observed::Covariance { n, .. } => ds
-            .iter()
-            .map(|d| &inv * d * &inv * (0.5 * (*n as f64 - 1.0)))
-            .collect(),
+        Observed::Covariance { n, .. } => {
+            ds.iter().map(|d| &inv * d * &inv * (0.5 * (*n as f64 - 1.0))).collect()
+        }
         Observed::Sigmas { cycles, .. } => ds
             .iter()
             .map(|d| {
@@ -93,9 +92,7 @@ pub fn information(m: &JointModel, theta: &[f64], x: &[Vec<f64>]) -> Option<Info
                 .iter()
                 .map(|r| {
                     let v = DVector::from_column_slice(r);
-                    w.iter()
-                        .map(|wa| (v.transpose() * wa * &v)[(0, 0)])
-                        .collect()
+                    w.iter().map(|wa| (v.transpose() * wa * &v)[(0, 0)]).collect()
                 })
                 .collect();
             let sx = covariance(&xs);
@@ -107,10 +104,7 @@ pub fn information(m: &JointModel, theta: &[f64], x: &[Vec<f64>]) -> Option<Info
             ((&c + noise) / (*n as f64 - 1.0), c / nx)
         }
         Observed::Sigmas { cycles, .. } => {
-            let sq: Vec<Vec<f64>> = xs
-                .iter()
-                .map(|r| r.iter().map(|v| v * v).collect())
-                .collect();
+            let sq: Vec<Vec<f64>> = xs.iter().map(|r| r.iter().map(|v| v * v).collect()).collect();
             let c = covariance(&sq);
             let mean = |u: usize| sq.iter().map(|r| r[u]).sum::<f64>() / nx;
             let cy = DMatrix::from_fn(p, p, |u, v| {
@@ -140,12 +134,8 @@ pub fn information(m: &JointModel, theta: &[f64], x: &[Vec<f64>]) -> Option<Info
 fn centred(x: &[Vec<f64>]) -> Vec<Vec<f64>> {
     let n = x.len() as f64;
     let p = x.first().map_or(0, Vec::len);
-    let mean: Vec<f64> = (0..p)
-        .map(|j| x.iter().map(|r| r[j]).sum::<f64>() / n)
-        .collect();
-    x.iter()
-        .map(|r| (0..p).map(|j| r[j] - mean[j]).collect())
-        .collect()
+    let mean: Vec<f64> = (0..p).map(|j| x.iter().map(|r| r[j]).sum::<f64>() / n).collect();
+    x.iter().map(|r| (0..p).map(|j| r[j] - mean[j]).collect()).collect()
 }
 
 /// What the information gives per parameter: the sandwich factor k_a, the
@@ -162,11 +152,7 @@ impl Derived {
     /// Without the information: k = 1 (the unadjusted, wider interval), no
     /// model error, no correlation.
     pub fn unadjusted(q: usize) -> Self {
-        Derived {
-            k: vec![1.0; q],
-            model_sd: vec![0.0; q],
-            covariance: None,
-        }
+        Derived { k: vec![1.0; q], model_sd: vec![0.0; q], covariance: None }
     }
 }
 
@@ -192,10 +178,6 @@ impl Information {
                 if s.is_finite() { s } else { 0.0 }
             })
             .collect();
-        Derived {
-            k,
-            model_sd,
-            covariance: Some(v),
-        }
+        Derived { k, model_sd, covariance: Some(v) }
     }
 }

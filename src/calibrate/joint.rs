@@ -74,17 +74,11 @@ impl<'a> JointModel<'a> {
     /// Sigma(theta); None where theta is not admissible.
     pub fn sigma(&self, theta: &[f64]) -> Option<DMatrix<f64>> {
         let s = self.spread(theta);
-        let mu = self
-            .index(Param::MuStatic)
-            .map_or(self.mu_fixed, |i| theta[i]);
+        let mu = self.index(Param::MuStatic).map_or(self.mu_fixed, |i| theta[i]);
         if !admissible(s, mu) {
             return None;
         }
-        Some(model_covariance(
-            &self.grid.at(&self.phi(theta)),
-            &self.noise_var,
-            s,
-        ))
+        Some(model_covariance(&self.grid.at(&self.phi(theta)), &self.noise_var, s))
     }
 
     /// The spread at theta (fitted or fixed).
@@ -103,9 +97,7 @@ impl<'a> JointModel<'a> {
 
     /// l(theta), -inf where not admissible or singular.
     pub fn log_likelihood(&self, theta: &[f64]) -> f64 {
-        let l = self
-            .sigma(theta)
-            .and_then(|sg| log_likelihood(self.obs, &sg));
+        let l = self.sigma(theta).and_then(|sg| log_likelihood(self.obs, &sg));
         l.unwrap_or(f64::NEG_INFINITY)
     }
 
@@ -181,18 +173,13 @@ pub fn maximise(f: &dyn Fn(&[f64]) -> f64, start: &[f64], free: &[bool]) -> (Vec
         simplex.sort_by(|a, b| b.1.total_cmp(&a.1));
         let (best, worst) = (simplex[0].1, simplex[n].1);
         let size = (1..=n)
-            .map(|j| {
-                (0..n)
-                    .map(|k| (simplex[j].0[k] - simplex[0].0[k]).abs())
-                    .fold(0.0, f64::max)
-            })
+            .map(|j| (0..n).map(|k| (simplex[j].0[k] - simplex[0].0[k]).abs()).fold(0.0, f64::max))
             .fold(0.0, f64::max);
         if size < 1e-10 || (best.is_finite() && (best - worst).abs() < 1e-12 && size < 1e-6) {
             break;
         }
-        let centroid: Vec<f64> = (0..n)
-            .map(|k| simplex[..n].iter().map(|s| s.0[k]).sum::<f64>() / n as f64)
-            .collect();
+        let centroid: Vec<f64> =
+            (0..n).map(|k| simplex[..n].iter().map(|s| s.0[k]).sum::<f64>() / n as f64).collect();
         let along = |t: f64| -> Vec<f64> {
             (0..n)
                 .map(|k| (centroid[k] + t * (simplex[n].0[k] - centroid[k])).clamp(0.0, 1.0))
@@ -344,11 +331,7 @@ pub fn ray_end(m: &JointModel, u_hat: &[f64], e: &[f64], k: f64, l_max: f64) -> 
         })
         .fold(f64::INFINITY, f64::min);
     let at = |t: f64| -> Vec<f64> {
-        u_hat
-            .iter()
-            .zip(e)
-            .map(|(u, d)| (u + t * d).clamp(0.0, 1.0))
-            .collect()
+        u_hat.iter().zip(e).map(|(u, d)| (u + t * d).clamp(0.0, 1.0)).collect()
     };
     let threshold = wilks_threshold();
     let (t, _, _) = boundary((0.0, ()), t_max, |t, _| {

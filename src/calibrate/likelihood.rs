@@ -28,9 +28,7 @@ pub const LEVEL: f64 = 0.90;
 /// chi^2_1(LEVEL) = 2.7055: the threshold of Wilks' profile-likelihood
 /// interval, {theta_a : k_a 2 (l_max - l_p) <= this}.
 pub fn wilks_threshold() -> f64 {
-    ChiSquared::new(1.0)
-        .expect("one degree of freedom")
-        .inverse_cdf(LEVEL)
+    ChiSquared::new(1.0).expect("one degree of freedom").inverse_cdf(LEVEL)
 }
 
 /// What was measured, in the model's DOF order (SI).

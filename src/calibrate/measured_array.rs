@@ -18,28 +18,16 @@ impl Measurement {
         rows: Vec<Vec<f64>>,
         noise: [Option<f64>; 6],
     ) -> Result<Measurement, CalibrateError> {
-        let whole = |reason: String| CalibrateError::Array {
-            origin: origin.to_string(),
-            reason,
-        };
+        let whole = |reason: String| CalibrateError::Array { origin: origin.to_string(), reason };
         if dofs.is_empty() {
             return Err(whole("no measured DOF column".into()));
         }
         if let Some((j, d)) = (dofs.iter().enumerate()).find(|(j, d)| dofs[..*j].contains(d)) {
-            return Err(whole(format!(
-                "column {}: {} measured twice",
-                j + 1,
-                d.name()
-            )));
+            return Err(whole(format!("column {}: {} measured twice", j + 1, d.name())));
         }
         for (i, row) in rows.iter().enumerate() {
             if row.len() != dofs.len() {
-                let r = format!(
-                    "row {}: {} values for {} DOFs",
-                    i + 1,
-                    row.len(),
-                    dofs.len()
-                );
+                let r = format!("row {}: {} values for {} DOFs", i + 1, row.len(), dofs.len());
                 return Err(whole(r));
             }
             for (v, d) in row.iter().zip(dofs) {
@@ -54,10 +42,8 @@ impl Measurement {
             }
         }
         if rows.len() < MIN_CYCLES {
-            let r = format!(
-                "{} cycle(s), need at least {MIN_CYCLES} re-seating cycles",
-                rows.len()
-            );
+            let r =
+                format!("{} cycle(s), need at least {MIN_CYCLES} re-seating cycles", rows.len());
             return Err(whole(r));
         }
         Ok(Measurement {

@@ -57,10 +57,8 @@ impl Measurement {
     /// detected from the header line).
     pub fn load(path: &Path, delimiter: Option<u8>) -> Result<Self, CalibrateError> {
         let file = path.display().to_string();
-        let text = crate::input::read_to_string(path).map_err(|e| CalibrateError::Read {
-            file: file.clone(),
-            reason: e.to_string(),
-        })?;
+        let text = crate::input::read_to_string(path)
+            .map_err(|e| CalibrateError::Read { file: file.clone(), reason: e.to_string() })?;
         Self::parse(&text, &file, delimiter)
     }
 
@@ -89,9 +87,8 @@ impl Measurement {
             });
         };
         let header_line = header.line;
-        let records: Vec<(usize, Vec<String>)> = (read.records.iter())
-            .map(|r| (r.line, r.cells.clone()))
-            .collect();
+        let records: Vec<(usize, Vec<String>)> =
+            (read.records.iter()).map(|r| (r.line, r.cells.clone())).collect();
         let names = records[0].1.clone();
         let base = Measurement {
             file: file.into(),
@@ -155,10 +152,8 @@ impl Measurement {
         if data.len() < MIN_CYCLES {
             // Every DOF column is short by the same count: name the first.
             let c = columns[0].0;
-            let r = format!(
-                "{} cycle(s), need at least {MIN_CYCLES} re-seating cycles",
-                data.len()
-            );
+            let r =
+                format!("{} cycle(s), need at least {MIN_CYCLES} re-seating cycles", data.len());
             return Err(self.err(last, c, &names[c], r));
         }
         self.data = MeasuredData::Cycles(data);
@@ -220,10 +215,7 @@ impl Measurement {
                     format!("{n} cycle(s), need at least {MIN_CYCLES} and at most {MAX_CYCLES}");
                 return Err(self.err(line, cn, "cycles", r));
             }
-            let (max, si) = (
-                MAX_SIGMA[usize::from(d >= 3)],
-                ["m", "rad"][usize::from(d >= 3)],
-            );
+            let (max, si) = (MAX_SIGMA[usize::from(d >= 3)], ["m", "rad"][usize::from(d >= 3)]);
             if !(s * f > 0.0 && s * f <= max) {
                 let r = format!(
                     "{s} {unit} = {:e} {si}: a measured sigma lies in (0, {max:e}] {si} (zero is below any sensor's noise)",
@@ -262,11 +254,8 @@ impl Measurement {
             return Err(self.err(line, c, name, "empty value".into()));
         }
         let v: f64 = cell.parse().map_err(|_| {
-            let comma = if cell.contains(',') {
-                " (a decimal comma? write a decimal point)"
-            } else {
-                ""
-            };
+            let comma =
+                if cell.contains(',') { " (a decimal comma? write a decimal point)" } else { "" };
             self.err(line, c, name, format!("`{cell}` is not a number{comma}"))
         })?;
         if !v.is_finite() {
@@ -305,11 +294,7 @@ impl Measurement {
     }
 
     fn whole(&self, line: usize, reason: String) -> CalibrateError {
-        CalibrateError::File {
-            file: self.file.clone(),
-            line,
-            reason,
-        }
+        CalibrateError::File { file: self.file.clone(), line, reason }
     }
 
     /// Number of cycles per measured DOF.

@@ -29,10 +29,7 @@ pub fn check_model_samples(param: Param, n: usize) -> Result<usize, ParamError> 
     if n < MIN_MODEL_SAMPLES {
         return Err(ParamError::new(
             param,
-            format!(
-                "{}: need at least {MIN_MODEL_SAMPLES} samples",
-                param.with(n)
-            ),
+            format!("{}: need at least {MIN_MODEL_SAMPLES} samples", param.with(n)),
         ));
     }
     Ok(n)
@@ -90,10 +87,7 @@ impl StudySpec<'_> {
 
 impl ModelStudy {
     pub fn samples_of(&self, dofs: &[usize]) -> Vec<Vec<f64>> {
-        self.rows
-            .iter()
-            .map(|r| dofs.iter().map(|&d| r[d]).collect())
-            .collect()
+        self.rows.iter().map(|r| dofs.iter().map(|&d| r[d]).collect()).collect()
     }
 
     /// Covariance per unit spread^2 of the DOFs `dofs`: G = C / s^2.
@@ -107,9 +101,8 @@ impl ModelStudy {
 pub fn covariance<R: AsRef<[f64]>>(rows: &[R]) -> DMatrix<f64> {
     let n = rows.len() as f64;
     let p = rows.first().map_or(0, |r| r.as_ref().len());
-    let mean: Vec<f64> = (0..p)
-        .map(|j| rows.iter().map(|r| r.as_ref()[j]).sum::<f64>() / n)
-        .collect();
+    let mean: Vec<f64> =
+        (0..p).map(|j| rows.iter().map(|r| r.as_ref()[j]).sum::<f64>() / n).collect();
     let mut c = DMatrix::zeros(p, p);
     for r in rows {
         let r = r.as_ref();

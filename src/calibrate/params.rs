@@ -47,12 +47,8 @@ pub enum Param {
 
 impl Param {
     /// All four, in the order of [`PARAMETERS`].
-    pub const ALL: [Param; 4] = [
-        Param::Spread,
-        Param::MuStatic,
-        Param::DynamicRatio,
-        Param::SupportCompliance,
-    ];
+    pub const ALL: [Param; 4] =
+        [Param::Spread, Param::MuStatic, Param::DynamicRatio, Param::SupportCompliance];
 
     pub fn name(self) -> &'static str {
         PARAMETERS[self as usize]
@@ -70,11 +66,9 @@ impl Param {
             Param::Spread => f.spread,
             Param::MuStatic => f.mu_static,
             Param::DynamicRatio => f.dynamic_ratio,
-            Param::SupportCompliance => v
-                .coupling
-                .contacts
-                .first()
-                .map_or(0.0, |c| c.normal.compliance),
+            Param::SupportCompliance => {
+                v.coupling.contacts.first().map_or(0.0, |c| c.normal.compliance)
+            }
         }
     }
 
@@ -83,11 +77,7 @@ impl Param {
     pub fn range(self, v: &Variant, fit_mu: bool) -> (f64, f64) {
         match self {
             Param::Spread => {
-                let mu = if fit_mu {
-                    MU_STATIC_RANGE.1
-                } else {
-                    v.scene.friction.mu_static
-                };
+                let mu = if fit_mu { MU_STATIC_RANGE.1 } else { v.scene.friction.mu_static };
                 (0.0, mu.min(MU_MAX - mu))
             }
             Param::MuStatic => MU_STATIC_RANGE,
@@ -129,19 +119,14 @@ impl Param {
 /// exceeds mu_s), a finite support compliance >= 0. `Err` says the range.
 pub fn physical(name: &str, v: f64) -> Result<(), OutOfRange> {
     let (ok, range) = match Param::from_name(name) {
-        Some(Param::Spread) => (
-            (0.0..=MU_MAX / 2.0).contains(&v),
-            format!("[0, {}]", MU_MAX / 2.0),
-        ),
+        Some(Param::Spread) => {
+            ((0.0..=MU_MAX / 2.0).contains(&v), format!("[0, {}]", MU_MAX / 2.0))
+        }
         Some(Param::MuStatic) => ((0.0..=MU_MAX).contains(&v), format!("[0, {MU_MAX}]")),
         Some(Param::DynamicRatio) => (v > 0.0 && v <= 1.0, "(0, 1]".into()),
         Some(Param::SupportCompliance) | None => (v.is_finite() && v >= 0.0, "[0, inf) m/N".into()),
     };
-    if ok {
-        Ok(())
-    } else {
-        Err(OutOfRange { value: v, range })
-    }
+    if ok { Ok(()) } else { Err(OutOfRange { value: v, range }) }
 }
 
 /// A parameter value outside the range any scene allows.

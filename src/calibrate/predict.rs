@@ -71,11 +71,8 @@ pub fn predict(
     let options = StudyOptions::monte_carlo(samples, seed, solver);
     let plan = StudyPlan::keeping_records(vec![(scene.clone(), coupling.clone())], &options)?;
     let estimate = with_parameters(&plan.variants[0], &cal.estimates());
-    let region: Vec<Variant> = cal
-        .region_points()
-        .iter()
-        .map(|v| with_parameters(&estimate, v))
-        .collect();
+    let region: Vec<Variant> =
+        cal.region_points().iter().map(|v| with_parameters(&estimate, v)).collect();
     let at = |k: Option<usize>| match k {
         None => "the `parameters` estimates".to_string(),
         Some(i) if cal.region.is_empty() => format!("the `parameters.spread` interval end {i}"),
@@ -119,10 +116,8 @@ pub fn predict(
                 reason: "the Monte Carlo study at the estimate gave no interval of sigma".into(),
             });
         };
-        let at: Vec<[f64; 6]> = others
-            .iter()
-            .map(|o| o.as_ref().map_or([0.0; 6], |v| v[k].sigma.values()))
-            .collect();
+        let at: Vec<[f64; 6]> =
+            others.iter().map(|o| o.as_ref().map_or([0.0; 6], |v| v[k].sigma.values())).collect();
         let (low, high) = combine(mid, bl.values(), bh.values(), &at);
         p.sigma_ci90_low = Some(nm_dofs(low));
         p.sigma_ci90_high = Some(nm_dofs(high));
@@ -167,11 +162,7 @@ fn combine(mid: [f64; 6], bl: [f64; 6], bh: [f64; 6], at: &[[f64; 6]]) -> ([f64;
         let hs_lo = (mid[j] / bl[j]).ln();
         let hs_hi = (bh[j] / mid[j]).ln();
         high[j] = mid[j] * (max / mid[j]).ln().hypot(hs_hi).exp();
-        low[j] = if min > 0.0 {
-            mid[j] * (-(mid[j] / min).ln().hypot(hs_lo)).exp()
-        } else {
-            0.0
-        };
+        low[j] = if min > 0.0 { mid[j] * (-(mid[j] / min).ln().hypot(hs_lo)).exp() } else { 0.0 };
     }
     (low, high)
 }

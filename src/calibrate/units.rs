@@ -38,19 +38,12 @@ pub fn unit_names(dof: usize) -> String {
 }
 
 fn units(dof: usize) -> [(&'static str, f64); 4] {
-    if Dof::ALL[dof].is_rotation() {
-        ANGLE_UNITS
-    } else {
-        LENGTH_UNITS
-    }
+    if Dof::ALL[dof].is_rotation() { ANGLE_UNITS } else { LENGTH_UNITS }
 }
 
 /// Factor from `unit` to SI for this DOF, or None if the unit does not fit it.
 pub fn unit_factor(dof: usize, unit: &str) -> Option<f64> {
-    units(dof)
-        .into_iter()
-        .find(|(u, _)| *u == unit)
-        .map(|(_, f)| f)
+    units(dof).into_iter().find(|(u, _)| *u == unit).map(|(_, f)| f)
 }
 
 /// Why a column header, a value or a `--noise` entry was not understood.
@@ -61,11 +54,7 @@ pub enum UnitError {
     NoUnit { header: String, dof: usize },
     /// A column header whose unit does not fit its DOF (`z_nrad`).
     #[error("`{header}`: unit `{unit}` does not fit {} (use {})", dof_name(*dof), unit_names(*dof))]
-    ColumnUnit {
-        header: String,
-        unit: String,
-        dof: usize,
-    },
+    ColumnUnit { header: String, unit: String, dof: usize },
     /// A column header that names no DOF.
     #[error(
         "`{header}`: unknown DOF (columns are <dof>_<unit> with dof one of {} and a unit such as nm or nrad, or `point`)",
@@ -74,11 +63,7 @@ pub enum UnitError {
     UnknownColumn { header: String },
     /// A value whose unit does not fit its DOF (`1 nrad` for x).
     #[error("`{text}`: unit `{unit}` does not fit {} (use {})", dof_name(*dof), unit_names(*dof))]
-    ValueUnit {
-        text: String,
-        unit: String,
-        dof: usize,
-    },
+    ValueUnit { text: String, unit: String, dof: usize },
     #[error("`{text}` is not a number (with an optional unit)")]
     NotANumber { text: String },
     /// A value that is negative, infinite or NaN.
@@ -119,27 +104,20 @@ fn with_units(header: &str, dof: usize) -> String {
 /// the reason it is not one.
 pub fn parse_column(header: &str) -> Result<(usize, f64), UnitError> {
     if let Some(dof) = dof_index(header) {
-        return Err(UnitError::NoUnit {
-            header: header.to_string(),
-            dof,
-        });
+        return Err(UnitError::NoUnit { header: header.to_string(), dof });
     }
     // The DOF is the longest known prefix followed by `_`.
     for d in [3, 4, 5, 0, 1, 2] {
         let name = dof_name(d);
         if let Some(unit) = header.strip_prefix(name).and_then(|r| r.strip_prefix('_')) {
-            return unit_factor(d, unit)
-                .map(|f| (d, f))
-                .ok_or_else(|| UnitError::ColumnUnit {
-                    header: header.to_string(),
-                    unit: unit.to_string(),
-                    dof: d,
-                });
+            return unit_factor(d, unit).map(|f| (d, f)).ok_or_else(|| UnitError::ColumnUnit {
+                header: header.to_string(),
+                unit: unit.to_string(),
+                dof: d,
+            });
         }
     }
-    Err(UnitError::UnknownColumn {
-        header: header.to_string(),
-    })
+    Err(UnitError::UnknownColumn { header: header.to_string() })
 }
 
 /// One value with an optional unit suffix (`1nm`, `20 nrad`, `1e-9`): SI
@@ -148,9 +126,7 @@ pub fn parse_value(dof: usize, text: &str) -> Result<f64, UnitError> {
     let t = text.trim();
     // `nan`, `inf` parse as numbers: out of range, not an unknown unit.
     if t.parse::<f64>().is_ok_and(|v| !v.is_finite()) {
-        return Err(UnitError::OutOfRange {
-            text: t.to_string(),
-        });
+        return Err(UnitError::OutOfRange { text: t.to_string() });
     }
     let split = t
         .char_indices()
@@ -158,9 +134,7 @@ pub fn parse_value(dof: usize, text: &str) -> Result<f64, UnitError> {
         .map_or(t.len(), |(i, _)| i);
     let (num, unit) = (t[..split].trim(), t[split..].trim());
     if num.is_empty() {
-        return Err(UnitError::NotANumber {
-            text: t.to_string(),
-        });
+        return Err(UnitError::NotANumber { text: t.to_string() });
     }
     let factor = if unit.is_empty() {
         1.0
@@ -171,13 +145,9 @@ pub fn parse_value(dof: usize, text: &str) -> Result<f64, UnitError> {
             dof,
         })?
     };
-    let v: f64 = num.parse().map_err(|_| UnitError::NotANumber {
-        text: t.to_string(),
-    })?;
+    let v: f64 = num.parse().map_err(|_| UnitError::NotANumber { text: t.to_string() })?;
     if !v.is_finite() || v < 0.0 {
-        return Err(UnitError::OutOfRange {
-            text: t.to_string(),
-        });
+        return Err(UnitError::OutOfRange { text: t.to_string() });
     }
     Ok(v * factor)
 }
@@ -188,8 +158,7 @@ fn is_exponent(t: &str, i: usize) -> bool {
     (b[i] == b'e' || b[i] == b'E')
         && i > 0
         && b[i - 1].is_ascii_digit()
-        && b.get(i + 1)
-            .is_some_and(|c| c.is_ascii_digit() || *c == b'-' || *c == b'+')
+        && b.get(i + 1).is_some_and(|c| c.is_ascii_digit() || *c == b'-' || *c == b'+')
 }
 
 /// Sensor noise per DOF from `DOF=VALUE,...` (SI numbers or with a unit
@@ -200,9 +169,7 @@ pub fn parse_noise(text: &str, into: &mut [Option<f64>; 6]) -> Result<(), UnitEr
     for entry in text.split(',').map(str::trim).filter(|e| !e.is_empty()) {
         let (name, value) = entry
             .split_once('=')
-            .ok_or_else(|| UnitError::NoiseSyntax {
-                entry: entry.to_string(),
-            })?;
+            .ok_or_else(|| UnitError::NoiseSyntax { entry: entry.to_string() })?;
         let d = dof_index(name.trim()).ok_or_else(|| UnitError::NoiseDof {
             entry: entry.to_string(),
             name: name.trim().to_string(),

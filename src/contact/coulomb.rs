@@ -113,8 +113,7 @@ pub fn update(
         }
     };
     out.force = force;
-    out.state
-        .assign_from(old, force, true, s.slip / input.friction.duration);
+    out.state.assign_from(old, force, true, s.slip / input.friction.duration);
     out.slip = SlipState::Slip;
 }
 

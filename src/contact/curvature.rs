@@ -56,14 +56,8 @@ fn curvature(field: &'static str, r: f64) -> Result<f64, ContactError> {
 impl PairCurvature {
     /// Johnson's A and B (module docs); A <= 0 is not a point contact.
     pub fn relative(&self) -> Result<RelativeCurvature, ContactError> {
-        let k1 = [
-            curvature("radii1", self.radii1[0])?,
-            curvature("radii1", self.radii1[1])?,
-        ];
-        let k2 = [
-            curvature("radii2", self.radii2[0])?,
-            curvature("radii2", self.radii2[1])?,
-        ];
+        let k1 = [curvature("radii1", self.radii1[0])?, curvature("radii1", self.radii1[1])?];
+        let k2 = [curvature("radii2", self.radii2[0])?, curvature("radii2", self.radii2[1])?];
         if !self.angle.is_finite() {
             return Err(ContactError::BadAngle(self.angle));
         }

@@ -63,13 +63,7 @@ impl EllipticIntegrals {
         }
         let k = PI / (2.0 * a);
         let s = s_over_m * m;
-        EllipticIntegrals {
-            kp,
-            m,
-            k,
-            e: k * (1.0 - s),
-            s_over_m,
-        }
+        EllipticIntegrals { kp, m, k, e: k * (1.0 - s), s_over_m }
     }
 
     /// Ratio of the principal relative curvatures B/A (>= 1) that produces a

@@ -112,22 +112,17 @@ pub fn transition_warning(cv: f64) -> String {
 /// decay-law contact that slid. Both solvers report it
 /// (`crate::solve::Seating::decay_cv`).
 pub fn seating_cv(friction: &[super::Friction], slip_path: &[f64], time: f64) -> Option<f64> {
-    let cv = friction
-        .iter()
-        .zip(slip_path)
-        .filter_map(|(f, path)| match f.law {
-            FrictionLaw::Decay { coefficient } => Some(coefficient * path / time),
-            FrictionLaw::Switch => None,
-        });
+    let cv = friction.iter().zip(slip_path).filter_map(|(f, path)| match f.law {
+        FrictionLaw::Decay { coefficient } => Some(coefficient * path / time),
+        FrictionLaw::Switch => None,
+    });
     deepest(cv)
 }
 
 /// Of several c v_slip values (one per contact that slid), the one deepest
 /// inside [`TRANSITION`], nearest 1 on a log scale; `None` if none is positive.
 pub fn deepest(cv: impl IntoIterator<Item = f64>) -> Option<f64> {
-    cv.into_iter()
-        .filter(|&x| x > 0.0)
-        .min_by(|a, b| a.ln().abs().total_cmp(&b.ln().abs()))
+    cv.into_iter().filter(|&x| x > 0.0).min_by(|a, b| a.ln().abs().total_cmp(&b.ln().abs()))
 }
 
 /// The sliding coefficient of one return-mapping increment and its partial
@@ -146,13 +141,7 @@ pub struct Sliding {
 impl Sliding {
     /// A constant sliding coefficient (the switch law's mu_d).
     pub fn constant(mu: f64) -> Self {
-        Sliding {
-            mu,
-            slip: 0.0,
-            d_mu_d_trial: 0.0,
-            d_mu_d_fn: 0.0,
-            d_mu_d_k: 0.0,
-        }
+        Sliding { mu, slip: 0.0, d_mu_d_trial: 0.0, d_mu_d_fn: 0.0, d_mu_d_k: 0.0 }
     }
 }
 
@@ -191,10 +180,8 @@ fn decay_slide(x: &SlideInput, c: f64) -> Option<Sliding> {
     let (k, f_n, t) = (x.stiffness, x.normal_force, x.trial);
     if x.was_sliding {
         let (mu, _) = decay_coefficient(x.mu_s, x.mu_d, c, x.previous_velocity);
-        return (t > mu * f_n && k > 0.0).then(|| Sliding {
-            slip: (t - mu * f_n) / k,
-            ..Sliding::constant(mu)
-        });
+        return (t > mu * f_n && k > 0.0)
+            .then(|| Sliding { slip: (t - mu * f_n) / k, ..Sliding::constant(mu) });
     }
     if t <= x.mu_s * f_n {
         return None;
@@ -204,11 +191,7 @@ fn decay_slide(x: &SlideInput, c: f64) -> Option<Sliding> {
     if b <= 0.0 || k <= 0.0 {
         return None;
     }
-    let beta = if x.duration > 0.0 {
-        c / x.duration
-    } else {
-        f64::INFINITY
-    };
+    let beta = if x.duration > 0.0 { c / x.duration } else { f64::INFINITY };
     // g(gamma) and g'(gamma); beta gamma is never inf * 0 since gamma > 0 here.
     let g = |gamma: f64| {
         let s = if a == 0.0 { 0.0 } else { (-beta * gamma).exp() };
@@ -234,11 +217,5 @@ fn decay_slide(x: &SlideInput, c: f64) -> Option<Sliding> {
     let mu = x.mu_d + (x.mu_s - x.mu_d) * s;
     let w = beta * (x.mu_s - x.mu_d) * s / gd;
     let w = if w.is_finite() { w } else { 0.0 };
-    Some(Sliding {
-        mu,
-        slip: gamma,
-        d_mu_d_trial: -w,
-        d_mu_d_fn: w * mu,
-        d_mu_d_k: w * gamma,
-    })
+    Some(Sliding { mu, slip: gamma, d_mu_d_trial: -w, d_mu_d_fn: w * mu, d_mu_d_k: w * gamma })
 }

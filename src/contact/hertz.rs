@@ -82,20 +82,12 @@ impl HertzLaw {
 
     /// Normal force F = K_h delta^(3/2) for delta > 0, else 0 (no tension).
     pub fn force(&self, approach: f64) -> f64 {
-        if approach > 0.0 {
-            self.hertz_constant * approach * approach.sqrt()
-        } else {
-            0.0
-        }
+        if approach > 0.0 { self.hertz_constant * approach * approach.sqrt() } else { 0.0 }
     }
 
     /// Normal stiffness dF/ddelta = 3/2 K_h delta^(1/2) (0 when open).
     pub fn stiffness(&self, approach: f64) -> f64 {
-        if approach > 0.0 {
-            1.5 * self.hertz_constant * approach.sqrt()
-        } else {
-            0.0
-        }
+        if approach > 0.0 { 1.5 * self.hertz_constant * approach.sqrt() } else { 0.0 }
     }
 
     /// Approach delta = (F / K_h)^(2/3) for a load F >= 0.

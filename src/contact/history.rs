@@ -48,12 +48,7 @@ pub enum HistoryError {
     #[error(
         "step {step}: |Q| = {q} N reaches the friction limit {mu} P = {limit} N; under force control the contact would slide without bound"
     )]
-    Slides {
-        step: usize,
-        q: f64,
-        mu: f64,
-        limit: f64,
-    },
+    Slides { step: usize, q: f64, mu: f64, limit: f64 },
     #[error("step {step}: the tangential displacement did not converge (residual {residual} N)")]
     NoConvergence { step: usize, residual: f64 },
 }
@@ -81,18 +76,9 @@ pub fn drive(
             return Err(HistoryError::BadTangential { step, value });
         }
         let q = Vector3::new(load.tangential_force[0], load.tangential_force[1], 0.0);
-        let mu = if state.sliding {
-            friction.mu_d
-        } else {
-            friction.mu_s
-        };
+        let mu = if state.sliding { friction.mu_d } else { friction.mu_s };
         if q.norm() >= mu * p {
-            return Err(HistoryError::Slides {
-                step,
-                q: q.norm(),
-                mu,
-                limit: mu * p,
-            });
+            return Err(HistoryError::Slides { step, q: q.norm(), mu, limit: mu * p });
         }
         let input = step_input(law, tangential, &state, p, friction);
         let (du, response) = solve_step(&state, tangential, &input, &q, mu * p)
@@ -100,11 +86,7 @@ pub fn drive(
         state = response.state;
         state.normal_force = p;
         s += du;
-        out.push(HistoryStep {
-            load: *load,
-            displacement: [s.x, s.y],
-            slip: response.slip,
-        });
+        out.push(HistoryStep { load: *load, displacement: [s.x, s.y], slip: response.slip });
     }
     Ok(out)
 }
@@ -184,30 +166,13 @@ pub enum HistoryCsvError {
     #[error("{file}: empty history (expected the header `{}`)", HISTORY_HEADER.join(","))]
     Empty { file: String },
     #[error("{file}:{line}: header `{header}` must be `{}`", HISTORY_HEADER.join(","))]
-    Header {
-        file: String,
-        line: usize,
-        header: String,
-    },
+    Header { file: String, line: usize, header: String },
     #[error("{file}:{line}: {count} fields, expected 3 ({})", HISTORY_HEADER.join(","))]
-    FieldCount {
-        file: String,
-        line: usize,
-        count: usize,
-    },
+    FieldCount { file: String, line: usize, count: usize },
     #[error("{file}:{line}: column {column}: `{text}` is not a finite number")]
-    NotANumber {
-        file: String,
-        line: usize,
-        column: &'static str,
-        text: String,
-    },
+    NotANumber { file: String, line: usize, column: &'static str, text: String },
     #[error("{file}:{line}: column P_N: {value} N: the normal load must be positive")]
-    NormalLoad {
-        file: String,
-        line: usize,
-        value: f64,
-    },
+    NormalLoad { file: String, line: usize, value: f64 },
     #[error("{file}: no rows after the header")]
     NoRows { file: String },
 }
@@ -235,38 +200,25 @@ pub fn parse_history_csv(text: &str, file: &str) -> Result<Vec<HistoryRow>, Hist
     for r in rows {
         let line = r.line;
         if r.cells.len() != 3 {
-            return Err(HistoryCsvError::FieldCount {
-                file: file(),
-                line,
-                count: r.cells.len(),
-            });
+            return Err(HistoryCsvError::FieldCount { file: file(), line, count: r.cells.len() });
         }
         let mut v = [0.0; 3];
         for (k, f) in r.cells.iter().enumerate() {
-            v[k] = f
-                .parse::<f64>()
-                .ok()
-                .filter(|x| x.is_finite())
-                .ok_or_else(|| HistoryCsvError::NotANumber {
+            v[k] = f.parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| {
+                HistoryCsvError::NotANumber {
                     file: file(),
                     line,
                     column: HISTORY_HEADER[k],
                     text: f.to_string(),
-                })?;
+                }
+            })?;
         }
         if v[0] <= 0.0 {
-            return Err(HistoryCsvError::NormalLoad {
-                file: file(),
-                line,
-                value: v[0],
-            });
+            return Err(HistoryCsvError::NormalLoad { file: file(), line, value: v[0] });
         }
         out.push(HistoryRow {
             line,
-            load: LoadStep {
-                normal_force: v[0],
-                tangential_force: [v[1], v[2]],
-            },
+            load: LoadStep { normal_force: v[0], tangential_force: [v[1], v[2]] },
         });
     }
     if out.is_empty() {

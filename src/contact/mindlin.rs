@@ -69,10 +69,7 @@ impl PrincipalStiffness {
         // may be computed by different formulas), or no major axis to orient
         // an ellipse by. Both values are then the mean, K_t = k (I - n n^T)
         // (0.5 (k + k) is k exactly).
-        let circle = PrincipalStiffness {
-            k: [0.5 * (k[0] + k[1]); 2],
-            axes: None,
-        };
+        let circle = PrincipalStiffness { k: [0.5 * (k[0] + k[1]); 2], axes: None };
         let round = (k[0] - k[1]).abs() <= 1e-12 * k[0].abs().max(k[1].abs());
         if round || *major_axis == Vector3::zeros() {
             // (The zero axis would fail the length test below as well.)
@@ -84,10 +81,7 @@ impl PrincipalStiffness {
             return circle;
         }
         let e1 = in_plane / length;
-        PrincipalStiffness {
-            k,
-            axes: Some([e1, n.cross(&e1)]),
-        }
+        PrincipalStiffness { k, axes: Some([e1, n.cross(&e1)]) }
     }
 
     /// The 3x3 tensor K_t in the tangent plane of `n`.
@@ -161,11 +155,7 @@ impl RadialReturn {
         let in_plane = trial - n * n.dot(trial);
         let norm = in_plane.norm();
         let limit = limit.max(0.0);
-        RadialReturn {
-            t: in_plane / norm,
-            limit,
-            ratio: limit / norm,
-        }
+        RadialReturn { t: in_plane / norm, limit, ratio: limit / norm }
     }
 
     /// F = L t.

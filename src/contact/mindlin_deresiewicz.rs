@@ -217,11 +217,7 @@ fn tangent_frame(n: &Vector3<f64>, hint: &Vector3<f64>) -> Vector3<f64> {
     if p.norm() > 1e-9 * hint.norm() && hint.norm() > 0.0 {
         return p.normalize();
     }
-    let e = if n.x.abs() < 0.9 {
-        Vector3::x()
-    } else {
-        Vector3::y()
-    };
+    let e = if n.x.abs() < 0.9 { Vector3::x() } else { Vector3::y() };
     (e - n * n.dot(&e)).normalize()
 }
 
@@ -252,11 +248,7 @@ pub(super) fn update(
         d: [Matrix2::zeros(); SPRINGS],
         h: st.h,
         a: radius_at(old.normal_force),
-        mu: if old.sliding {
-            friction.mu_d
-        } else {
-            friction.mu_s
-        },
+        mu: if old.sliding { friction.mu_d } else { friction.mu_s },
         g_star: input.g_star,
         c: c_principal,
         axes: c_axes,
@@ -284,19 +276,11 @@ pub(super) fn update(
         state: TangentialState {
             force,
             sliding: gross,
-            row: Some(Box::new(SpringRow {
-                frame: t1,
-                h: row.h,
-                q,
-            })),
+            row: Some(Box::new(SpringRow { frame: t1, h: row.h, q })),
             normal_force: p,
             ..TangentialState::new(n)
         },
-        slip: if gross {
-            SlipState::Slip
-        } else {
-            SlipState::Stick
-        },
+        slip: if gross { SlipState::Slip } else { SlipState::Stick },
         d_force_d_du,
         d_force_d_fn: d_fn,
     };
@@ -310,11 +294,7 @@ fn committed_row(old: &TangentialState, du: &Vector3<f64>, a_now: f64) -> (Sprin
     let mut st = old.row.as_deref().copied().unwrap_or_default();
     let fresh = st.h == 0.0;
     if fresh {
-        let hint = if old.force.norm() > 0.0 {
-            old.force
-        } else {
-            *du
-        };
+        let hint = if old.force.norm() > 0.0 { old.force } else { *du };
         st.frame = tangent_frame(&old.normal, &hint);
         st.h = a_now / (FIRST_FILL * SPRINGS as f64);
     }
@@ -336,10 +316,7 @@ fn tangent_of(
     if !tangent {
         return (Matrix3::zeros(), Vector3::zeros());
     }
-    (
-        basis * d2 * basis.transpose() * proj,
-        d_force_d_load(row, p, basis),
-    )
+    (basis * d2 * basis.transpose() * proj, d_force_d_load(row, p, basis))
 }
 
 /// dQ/dP at fixed displacement from the springs at their limit at the end
@@ -347,16 +324,10 @@ fn tangent_of(
 /// first order). Central difference of the closed-form cell limit.
 fn d_force_d_load(row: &Row, p: f64, basis: &Matrix3x2<f64>) -> Vector3<f64> {
     let eps = 1e-6 * p;
-    let (a_p, a_m) = (
-        row.a * ((p + eps) / p).cbrt(),
-        row.a * ((p - eps) / p).cbrt(),
-    );
+    let (a_p, a_m) = (row.a * ((p + eps) / p).cbrt(), row.a * ((p - eps) / p).cbrt());
     let mut sum = Vector2::zeros();
-    let delta_star = [
-        row.delta_star(p, row.a),
-        row.delta_star(p + eps, a_p),
-        row.delta_star(p - eps, a_m),
-    ];
+    let delta_star =
+        [row.delta_star(p, row.a), row.delta_star(p + eps, a_p), row.delta_star(p - eps, a_m)];
     for j in 0..SPRINGS {
         let l = row.limit_at(j, row.a, delta_star[0]);
         let norm = row.q[j].norm();

@@ -102,19 +102,11 @@ impl ContactShape {
             (true, Some(r)) => check_radius("radius2", r)?,
         };
         let inf = f64::INFINITY;
-        let pair = |radii1, radii2, angle| PairCurvature {
-            radii1,
-            radii2,
-            angle,
-        };
+        let pair = |radii1, radii2, angle| PairCurvature { radii1, radii2, angle };
         Ok(match self {
             ContactShape::SpherePlane | ContactShape::SphereSphere => pair([r1; 2], [r2; 2], 0.0),
             ContactShape::SphereSeat | ContactShape::SphereGroove if r2 <= r1 => {
-                return Err(ContactError::SeatTooSmall {
-                    shape: self.name(),
-                    r1,
-                    r2,
-                });
+                return Err(ContactError::SeatTooSmall { shape: self.name(), r1, r2 });
             }
             ContactShape::SphereSeat => pair([r1; 2], [-r2; 2], 0.0),
             ContactShape::SphereCylinder => pair([r1; 2], [r2, inf], 0.0),
@@ -160,11 +152,7 @@ pub enum ContactError {
     #[error(
         "{shape} needs a concave radius radius2 = {r2} m larger than the ball radius radius1 = {r1} m"
     )]
-    SeatTooSmall {
-        shape: &'static str,
-        r1: f64,
-        r2: f64,
-    },
+    SeatTooSmall { shape: &'static str, r1: f64, r2: f64 },
     #[error(
         "the general contact needs the principal radii of both bodies ({}, {})",
         crate::param::Param::Radii1,
@@ -407,9 +395,7 @@ impl ContactLaw {
             TangentialLaw::MindlinDeresiewicz => {
                 let hertz = &self.hertz;
                 let [a, b] = hertz.semi_axes(fn_);
-                let shape = self
-                    .mindlin
-                    .map(|c| c / (8.0 * self.g_star * hertz.axis_ratio.sqrt()));
+                let shape = self.mindlin.map(|c| c / (8.0 * self.g_star * hertz.axis_ratio.sqrt()));
                 ((a * b).sqrt(), tangential_tensor(shape, normal, major_axis))
             }
         }

@@ -31,11 +31,7 @@ pub struct SeriesNormal {
 
 impl SeriesNormal {
     pub fn new(hertz: HertzLaw, compliance: f64) -> Self {
-        SeriesNormal {
-            hertz,
-            compliance,
-            q: hertz.hertz_constant.powf(-2.0 / 3.0),
-        }
+        SeriesNormal { hertz, compliance, q: hertz.hertz_constant.powf(-2.0 / 3.0) }
     }
 
     /// Total approach delta(F) = (F/K)^(2/3) + c F for a load F >= 0.
@@ -57,10 +53,7 @@ impl SeriesNormal {
             // Hertz alone (HertzLaw::force and ::stiffness, one square root).
             if approach > 0.0 {
                 let root = approach.sqrt();
-                return (
-                    h.hertz_constant * approach * root,
-                    1.5 * h.hertz_constant * root,
-                );
+                return (h.hertz_constant * approach * root, 1.5 * h.hertz_constant * root);
             }
             return (0.0, 0.0);
         }

@@ -232,10 +232,7 @@ impl ShearRatios {
     pub fn new(pair: &ContactPair, hertz: &HertzLaw) -> Self {
         let nu = [pair.material1.poisson_ratio, pair.material2.poisson_ratio];
         let r = nu.map(|n| max_shear_ratio(n, hertz.axis_ratio));
-        ShearRatios {
-            ratio: [r[0].0, r[1].0],
-            depth_rel: [r[0].1, r[1].1],
-        }
+        ShearRatios { ratio: [r[0].0, r[1].0], depth_rel: [r[0].1, r[1].1] }
     }
 }
 
@@ -258,11 +255,7 @@ pub fn contact_stress(
         None
     };
     let safety = |allow: f64, actual: f64| {
-        if actual > 0.0 {
-            allow / actual
-        } else {
-            f64::INFINITY
-        }
+        if actual > 0.0 { allow / actual } else { f64::INFINITY }
     };
     let pressure_sf = materials
         .iter()
@@ -296,20 +289,11 @@ fn left_out(materials: [&Material; 2], pressure: bool, shear: bool) -> Vec<LeftO
     let mut out = Vec::new();
     for m in materials {
         let lacks = [
-            (
-                pressure && m.allowable_pressure.is_none(),
-                "allowable_pressure",
-            ),
-            (
-                shear && m.allowable_shear_stress.is_none(),
-                "allowable_shear_stress",
-            ),
+            (pressure && m.allowable_pressure.is_none(), "allowable_pressure"),
+            (shear && m.allowable_shear_stress.is_none(), "allowable_shear_stress"),
         ];
         for (_, missing) in lacks.into_iter().filter(|(lacks, _)| *lacks) {
-            let entry = LeftOut {
-                material: m.name.clone(),
-                missing,
-            };
+            let entry = LeftOut { material: m.name.clone(), missing };
             if !out.contains(&entry) {
                 out.push(entry);
             }

@@ -83,12 +83,7 @@ pub struct Friction {
 impl Friction {
     /// The paper's sudden switch from `mu_s` to `mu_d`.
     pub const fn switch(mu_s: f64, mu_d: f64) -> Self {
-        Friction {
-            mu_s,
-            mu_d,
-            law: FrictionLaw::Switch,
-            duration: 1.0,
-        }
+        Friction { mu_s, mu_d, law: FrictionLaw::Switch, duration: 1.0 }
     }
 
     /// The same friction over an increment lasting `duration` [s].
@@ -237,12 +232,10 @@ impl TangentialState {
         TangentialState {
             normal: *normal,
             force: rot.apply(&self.force),
-            row: self.row.as_ref().map(|row| {
-                Box::new(SpringRow {
-                    frame: rot.apply(&row.frame),
-                    ..**row
-                })
-            }),
+            row: self
+                .row
+                .as_ref()
+                .map(|row| Box::new(SpringRow { frame: rot.apply(&row.frame), ..**row })),
             ..*self
         }
     }
@@ -268,11 +261,7 @@ pub struct SpringRow {
 
 impl Default for SpringRow {
     fn default() -> Self {
-        SpringRow {
-            frame: Vector3::zeros(),
-            h: 0.0,
-            q: [[0.0; 2]; SPRINGS],
-        }
+        SpringRow { frame: Vector3::zeros(), h: 0.0, q: [[0.0; 2]; SPRINGS] }
     }
 }
 
@@ -288,10 +277,7 @@ pub struct Rotation {
 impl Rotation {
     #[inline]
     pub fn between(from: &Vector3<f64>, to: &Vector3<f64>) -> Self {
-        Rotation {
-            w: from.cross(to),
-            c: from.dot(to),
-        }
+        Rotation { w: from.cross(to), c: from.dot(to) }
     }
 
     #[inline]

@@ -29,10 +29,7 @@ impl DesignKind {
     pub fn new(points: Option<usize>, seed: Option<u64>, base: &Scene) -> DesignKind {
         match points {
             None => DesignKind::Grid,
-            Some(points) => DesignKind::Lhs {
-                points,
-                seed: seed.unwrap_or(base.study.seed),
-            },
+            Some(points) => DesignKind::Lhs { points, seed: seed.unwrap_or(base.study.seed) },
         }
     }
 

@@ -103,10 +103,7 @@ pub fn point_file(
 ) -> Result<SceneFile, SetError> {
     let mut file = base.clone();
     for (s, v) in sets.iter().zip(values) {
-        set(&mut file, &s.path, v).map_err(|reason| SetError {
-            path: s.path.clone(),
-            reason,
-        })?;
+        set(&mut file, &s.path, v).map_err(|reason| SetError { path: s.path.clone(), reason })?;
     }
     Ok(file)
 }
@@ -123,11 +120,7 @@ pub fn evaluate(
     base: &Variant,
     tick: &(dyn Fn() + Sync),
 ) -> Evaluation {
-    let mut e = Evaluation {
-        outcome: Outcome::Ok,
-        nominal: None,
-        report: None,
-    };
+    let mut e = Evaluation { outcome: Outcome::Ok, nominal: None, report: None };
     // A stopped run (`cancel::request`) skips the points not yet begun.
     if crate::cancel::requested() {
         e.outcome = Outcome::Failed("stopped: a stop was requested".into());
@@ -172,13 +165,10 @@ fn seat_and_study(
     e: &mut Evaluation,
 ) -> Result<Outcome, EvalError> {
     let load = Load::nominal(&v.scene);
-    let seating =
-        plan.method()
-            .seat(&v.coupling, &load)
-            .map_err(|source| EvalError::NominalSeating {
-                mu: load.mu[0],
-                source,
-            })?;
+    let seating = plan
+        .method()
+        .seat(&v.coupling, &load)
+        .map_err(|source| EvalError::NominalSeating { mu: load.mu[0], source })?;
     e.nominal = Some(nominal(&v.scene, &v.coupling, &seating, &load)?);
     if let Some(reason) = crate::study::verdict::cannot_seat(&v.scene, &v.coupling, plan.method())?
     {

@@ -90,17 +90,10 @@ const NUMBERS: [(&str, &[&str]); 3] = [
         ],
     ),
     ("preload", &["force", "ramp_time"]),
-    (
-        "friction",
-        &["mu_static", "spread", "dynamic_ratio", "decay_coefficient"],
-    ),
+    ("friction", &["mu_static", "spread", "dynamic_ratio", "decay_coefficient"]),
 ];
-const MATERIAL_NUMBERS: [&str; 4] = [
-    "youngs_modulus",
-    "poisson_ratio",
-    "allowable_pressure",
-    "allowable_shear_stress",
-];
+const MATERIAL_NUMBERS: [&str; 4] =
+    ["youngs_modulus", "poisson_ratio", "allowable_pressure", "allowable_shear_stress"];
 const MATERIALS: [&str; 2] = ["coupling.ball_material", "coupling.groove_material"];
 const TEXTS: [&str; 6] = [
     "coupling.arrangement",
@@ -113,15 +106,9 @@ const TEXTS: [&str; 6] = [
 
 /// Every sweepable path, for messages (NAME stands for a material entry).
 pub fn sweepable() -> String {
-    let mut all: Vec<String> = NUMBERS
-        .iter()
-        .flat_map(|(t, ks)| ks.iter().map(move |k| format!("{t}.{k}")))
-        .collect();
-    all.extend(
-        MATERIAL_NUMBERS
-            .iter()
-            .map(|k| format!("materials.NAME.{k}")),
-    );
+    let mut all: Vec<String> =
+        NUMBERS.iter().flat_map(|(t, ks)| ks.iter().map(move |k| format!("{t}.{k}"))).collect();
+    all.extend(MATERIAL_NUMBERS.iter().map(|k| format!("materials.NAME.{k}")));
     all.extend(MATERIALS.iter().chain(&TEXTS).map(|s| s.to_string()));
     all.join(", ")
 }
@@ -139,10 +126,7 @@ pub struct SetError {
 /// and against `scene` (a `coupling` field needs the high-level form, a
 /// material constant a material of that name).
 pub fn kind_of(path: &str, scene: &SceneFile) -> Result<FieldKind, ExploreError> {
-    let err = |reason: FieldError| ExploreError::Field {
-        path: path.to_string(),
-        reason,
-    };
+    let err = |reason: FieldError| ExploreError::Field { path: path.to_string(), reason };
     let seg: Vec<&str> = path.split('.').collect();
     let kind = match seg.as_slice() {
         ["materials", _, key] if MATERIAL_NUMBERS.contains(key) => FieldKind::Number,
@@ -192,10 +176,8 @@ pub fn set(scene: &mut SceneFile, path: &str, value: &SweptValue) -> Result<(), 
     let seg: Vec<&str> = path.split('.').collect();
     match seg.as_slice() {
         ["coupling", key] => {
-            let c = scene
-                .coupling
-                .as_mut()
-                .ok_or_else(|| FieldError::NoTable("coupling".into()))?;
+            let c =
+                scene.coupling.as_mut().ok_or_else(|| FieldError::NoTable("coupling".into()))?;
             return set_coupling(c, key, x, name);
         }
         ["preload", "force"] => scene.preload.force = Some(at(x)),

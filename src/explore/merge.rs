@@ -12,19 +12,11 @@ use crate::study::merge::{MergeError, check_shards};
 #[derive(Debug, Error)]
 pub enum SweepMergeError {
     #[error("{part}: not a part of the sweep of {first}: {field} differs")]
-    Different {
-        part: String,
-        first: String,
-        field: String,
-    },
+    Different { part: String, first: String, field: String },
     #[error(transparent)]
     Shards(#[from] MergeError),
     #[error("{part}: shard {shard} should hold design points {expected:?}")]
-    Rows {
-        part: String,
-        shard: Shard,
-        expected: std::ops::Range<usize>,
-    },
+    Rows { part: String, shard: Shard, expected: std::ops::Range<usize> },
 }
 
 /// Merge the parts of a sharded sweep into exactly the single run's document.
@@ -45,11 +37,7 @@ pub fn merge_sweeps(parts: Vec<(String, SweepReport)>) -> Result<SweepReport, Sw
         }
         let expected = p.shard.range(p.design_points).unwrap_or(0..0);
         if !p.designs.iter().map(|d| d.index).eq(expected.clone()) {
-            return Err(SweepMergeError::Rows {
-                part: name.clone(),
-                shard: p.shard,
-                expected,
-            });
+            return Err(SweepMergeError::Rows { part: name.clone(), shard: p.shard, expected });
         }
     }
     let mut parts: Vec<SweepReport> = parts.into_iter().map(|(_, p)| p).collect();
@@ -71,11 +59,7 @@ fn first_difference(a: &serde_json::Value, b: &serde_json::Value, at: &str) -> O
                 Some(w) => first_difference(v, w, &format!("{at}.{k}")),
                 None => Some(format!("{at}.{k}")),
             })
-            .or_else(|| {
-                y.keys()
-                    .find(|k| !x.contains_key(*k))
-                    .map(|k| format!("{at}.{k}"))
-            }),
+            .or_else(|| y.keys().find(|k| !x.contains_key(*k)).map(|k| format!("{at}.{k}"))),
         _ if a == b => None,
         _ => Some(format!("{at} ({a} vs {b})")),
     }

@@ -41,11 +41,7 @@ pub enum ExploreError {
     #[error("{}: {reason}", Param::Sets.with(path))]
     Field { path: String, reason: FieldError },
     #[error("{}: {reason}", Param::Sets.with(format!("{path}={spec}")))]
-    Values {
-        path: String,
-        spec: String,
-        reason: ValuesError,
-    },
+    Values { path: String, spec: String, reason: ValuesError },
     #[error("{}: expected FIELD=VALUES, e.g. preload.force=5,10,20", Param::Sets.with(arg))]
     SetSyntax { arg: String },
     #[error(transparent)]
@@ -81,21 +77,10 @@ impl SweepSpec {
     ) -> Result<Self, ExploreError> {
         let base = SceneFile::parse(text, file)?;
         if base.coupling.is_none() {
-            return Err(ExploreError::NotHighLevel {
-                file: file.to_string(),
-            });
+            return Err(ExploreError::NotHighLevel { file: file.to_string() });
         }
-        let sets = set_args
-            .iter()
-            .map(|a| Set::parse(a, &base))
-            .collect::<Result<Vec<_>, _>>()?;
-        Ok(SweepSpec {
-            file: file.to_string(),
-            text: text.to_string(),
-            base,
-            sets,
-            design,
-        })
+        let sets = set_args.iter().map(|a| Set::parse(a, &base)).collect::<Result<Vec<_>, _>>()?;
+        Ok(SweepSpec { file: file.to_string(), text: text.to_string(), base, sets, design })
     }
 
     /// The design points.
@@ -105,12 +90,8 @@ impl SweepSpec {
 
     /// The label of design point `p` in messages: `FILE [a = 1, b = 2]`.
     pub fn label(&self, p: &DesignPoint) -> String {
-        let v: Vec<String> = self
-            .sets
-            .iter()
-            .zip(&p.values)
-            .map(|(s, v)| format!("{} = {v}", s.path))
-            .collect();
+        let v: Vec<String> =
+            self.sets.iter().zip(&p.values).map(|(s, v)| format!("{} = {v}", s.path)).collect();
         format!("{} [{}]", self.file, v.join(", "))
     }
 }

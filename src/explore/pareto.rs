@@ -38,10 +38,8 @@ pub fn dominates(b: &[f64], a: &[f64]) -> bool {
 /// takes part only if some evaluated design has one.
 pub fn front(designs: &[Option<Objectives>]) -> Vec<bool> {
     let with_safety = designs.iter().flatten().any(|o| o.safety_factor.is_some());
-    let vals: Vec<Option<Vec<f64>>> = designs
-        .iter()
-        .map(|o| o.map(|o| o.values(with_safety)))
-        .collect();
+    let vals: Vec<Option<Vec<f64>>> =
+        designs.iter().map(|o| o.map(|o| o.values(with_safety))).collect();
     vals.iter()
         .map(|a| match a {
             None => false,

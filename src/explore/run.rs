@@ -128,11 +128,7 @@ pub enum SweepError {
     NoValidDesign { file: String, points: usize },
     /// `pareto_point` names no evaluation point of the base scene.
     #[error("{file}: {}: no such evaluation point (the scene has {have})", Param::ParetoPoint.with(point))]
-    ParetoPoint {
-        file: String,
-        point: String,
-        have: String,
-    },
+    ParetoPoint { file: String, point: String, have: String },
 }
 
 /// The plan of every design point's study: `options` for the base scene
@@ -143,10 +139,7 @@ pub fn study_plan(
     coupling: Coupling,
     options: &StudyOptions,
 ) -> Result<StudyPlan, StudyError> {
-    let whole = StudyOptions {
-        shard: Shard::whole(),
-        ..options.clone()
-    };
+    let whole = StudyOptions { shard: Shard::whole(), ..options.clone() };
     StudyPlan::keeping_records(vec![(scene, coupling)], &whole)
 }
 
@@ -170,23 +163,15 @@ pub fn run(
         .map(|p| {
             let file = point_file(&spec.base, &spec.sets, &p.values);
             let e = evaluate(file, &spec.text, &spec.label(p), plan, base, tick);
-            let values = spec
-                .sets
-                .iter()
-                .map(|s| s.path.clone())
-                .zip(p.values.iter().cloned())
-                .collect();
+            let values =
+                spec.sets.iter().map(|s| s.path.clone()).zip(p.values.iter().cloned()).collect();
             design_report(p.index, values, e)
         })
         .collect();
     let sets: Vec<SetRecord> = spec
         .sets
         .iter()
-        .map(|s| SetRecord {
-            field: s.path.clone(),
-            values: s.spec.clone(),
-            kind: s.kind,
-        })
+        .map(|s| SetRecord { field: s.path.clone(), values: s.spec.clone(), kind: s.kind })
         .collect();
     let mut report = SweepReport {
         schema_version: SCHEMA_VERSION,
@@ -220,11 +205,7 @@ pub fn run(
 
 /// The evaluation point of the Pareto objective: `asked`, or the first.
 fn pareto_point_of(file: &str, base: &Scene, asked: Option<&str>) -> Result<String, SweepError> {
-    let names: Vec<&str> = base
-        .evaluation_points
-        .iter()
-        .map(|p| p.name.as_str())
-        .collect();
+    let names: Vec<&str> = base.evaluation_points.iter().map(|p| p.name.as_str()).collect();
     match asked {
         None => Ok(names[0].to_string()),
         Some(p) if names.contains(&p) => Ok(p.to_string()),

@@ -114,9 +114,7 @@ impl Set {
         let (path, spec) = arg
             .split_once('=')
             .filter(|(p, s)| !p.trim().is_empty() && !s.trim().is_empty())
-            .ok_or_else(|| ExploreError::SetSyntax {
-                arg: arg.to_string(),
-            })?;
+            .ok_or_else(|| ExploreError::SetSyntax { arg: arg.to_string() })?;
         let (path, spec) = (path.trim().to_string(), spec.trim().to_string());
         let kind = kind_of(&path, scene)?;
         let err = |reason: ValuesError| ExploreError::Values {
@@ -132,26 +130,14 @@ impl Set {
         } else {
             (list(&spec, kind).map_err(err)?, None)
         };
-        Ok(Set {
-            path,
-            spec,
-            kind,
-            levels,
-            interval,
-        })
+        Ok(Set { path, spec, kind, levels, interval })
     }
 }
 
 fn number(s: &str) -> Result<f64, ValuesError> {
     let s = s.trim();
-    let x: f64 = s
-        .parse()
-        .map_err(|_| ValuesError::NotANumber(s.to_string()))?;
-    if x.is_finite() {
-        Ok(x)
-    } else {
-        Err(ValuesError::NotFinite(s.to_string()))
-    }
+    let x: f64 = s.parse().map_err(|_| ValuesError::NotANumber(s.to_string()))?;
+    if x.is_finite() { Ok(x) } else { Err(ValuesError::NotFinite(s.to_string())) }
 }
 
 /// `a:b:n`, `log:a:b:n`, `a:b`, `log:a:b`.
@@ -175,10 +161,8 @@ fn range(spec: &str) -> Result<(Levels, Option<Interval>), ValuesError> {
     let Some(count) = parts.get(2) else {
         return Ok((Levels::Numbers(Vec::new()), Some(interval)));
     };
-    let n: usize = count
-        .trim()
-        .parse()
-        .map_err(|_| ValuesError::CountNotWhole(count.trim().to_string()))?;
+    let n: usize =
+        count.trim().parse().map_err(|_| ValuesError::CountNotWhole(count.trim().to_string()))?;
     if !(2..=MAX_LEVELS).contains(&n) {
         return Err(ValuesError::CountRange(n));
     }
@@ -206,9 +190,9 @@ fn list(spec: &str, kind: FieldKind) -> Result<Levels, ValuesError> {
         }
     }
     match kind {
-        FieldKind::Number => Ok(Levels::Numbers(
-            items.iter().map(|s| number(s)).collect::<Result<_, _>>()?,
-        )),
+        FieldKind::Number => {
+            Ok(Levels::Numbers(items.iter().map(|s| number(s)).collect::<Result<_, _>>()?))
+        }
         FieldKind::Material | FieldKind::Text => values
             .into_iter()
             .zip(&items)
@@ -225,9 +209,8 @@ fn list(spec: &str, kind: FieldKind) -> Result<Levels, ValuesError> {
 /// between the quotes; otherwise a number if it parses as one, else the
 /// string as written.
 pub fn item(s: &str) -> SweptValue {
-    let quoted = ['"', '\'']
-        .iter()
-        .find_map(|q| s.strip_prefix(*q).and_then(|r| r.strip_suffix(*q)));
+    let quoted =
+        ['"', '\''].iter().find_map(|q| s.strip_prefix(*q).and_then(|r| r.strip_suffix(*q)));
     match (quoted, s.parse::<f64>()) {
         (Some(inner), _) => SweptValue::Name(inner.to_string()),
         (_, Ok(x)) => SweptValue::Number(x),

@@ -151,18 +151,13 @@ pub fn conformity_study(
     let (mut rows, at_limit) = find_crossing(ratios, |q| study_row(case, q, mesh))?;
     rows.sort_by(|a, b| b.groove_over_ball.total_cmp(&a.groove_over_ball));
     let law_at = |ratio: f64| -> Result<f64, FeError> {
-        let law = pair_at(case, ratio)?
-            .law()
-            .map_err(|e| FeError::InvalidInput(e.to_string()))?;
+        let law = pair_at(case, ratio)?.law().map_err(|e| FeError::InvalidInput(e.to_string()))?;
         Ok(law.hertz.conformity(case.load))
     };
     Ok(ConformityStudy {
         ball_radius_m: case.pair.curvature.radii1[0],
         groove_radius_m: -case.pair.curvature.radii2[0],
-        materials: [
-            case.pair.material1.name.clone(),
-            case.pair.material2.name.clone(),
-        ],
+        materials: [case.pair.material1.name.clone(), case.pair.material2.name.clone()],
         scenes: case.scenes.clone(),
         load_n: case.load,
         rows,
@@ -211,10 +206,7 @@ pub fn find_crossing(
 /// over it).
 fn interpolate(above: &ConformityRow, below: &ConformityRow) -> f64 {
     let (ca, cb) = (criterion(above), criterion(below));
-    let (la, lb) = (
-        log_excess(above.groove_over_ball),
-        log_excess(below.groove_over_ball),
-    );
+    let (la, lb) = (log_excess(above.groove_over_ball), log_excess(below.groove_over_ball));
     let t = ((LIMIT - ca) / (cb - ca)).clamp(0.0, 1.0);
     1.0 + (la + t * (lb - la)).exp()
 }

@@ -59,9 +59,7 @@ impl ContactModel {
         init: Option<&[bool]>,
     ) -> Result<ContactState, FeError> {
         if !(load.is_finite() && load > 0.0) {
-            return Err(FeError::InvalidInput(format!(
-                "load must be positive, got {load}"
-            )));
+            return Err(FeError::InvalidInput(format!("load must be positive, got {load}")));
         }
         let n = self.h.len();
         let mut active: Vec<bool> = match init {
@@ -77,13 +75,7 @@ impl ContactModel {
             let tol_g = 1e-9 * delta.abs();
             let tol_f = 1e-12 * load;
             let new: Vec<bool> = (0..n)
-                .map(|i| {
-                    if active[i] {
-                        forces[i] > -tol_f
-                    } else {
-                        gaps[i] < -tol_g
-                    }
-                })
+                .map(|i| if active[i] { forces[i] > -tol_f } else { gaps[i] < -tol_g })
                 .collect();
             if new == active {
                 if delta.is_nan() || delta <= 0.0 {
@@ -95,11 +87,7 @@ impl ContactModel {
                     }
                 }
                 self.check_zone(load, delta, &forces, &active, tol_g)?;
-                return Ok(ContactState {
-                    approach: delta,
-                    forces,
-                    gaps,
-                });
+                return Ok(ContactState { approach: delta, forces, gaps });
             }
             active = new;
             if !active.iter().any(|&b| b) {
@@ -170,9 +158,7 @@ impl ContactModel {
         }
         // remaining top nodes must not penetrate
         for (r, &ho) in self.h_other.iter().enumerate() {
-            let w: f64 = (0..n)
-                .map(|j| self.c_other[(r, j)] * forces[j])
-                .sum::<f64>()
+            let w: f64 = (0..n).map(|j| self.c_other[(r, j)] * forces[j]).sum::<f64>()
                 + load * self.w_unit_other[r];
             if ho - delta + w < -tol_g {
                 return Err(FeError::CandidateZoneTooSmall);
@@ -198,11 +184,7 @@ pub fn contact_extent(coords: &[f64], forces: &[f64], gaps: &[f64]) -> Option<f6
     let est = if last + 2 < coords.len() {
         let g2 = gaps[last + 2].max(0.0).powf(2.0 / 3.0);
         let x2 = coords[last + 2];
-        if g2 > g1 {
-            xf - g1 * (x2 - xf) / (g2 - g1)
-        } else {
-            0.5 * (xc + xf)
-        }
+        if g2 > g1 { xf - g1 * (x2 - xf) / (g2 - g1) } else { 0.5 * (xc + xf) }
     } else {
         0.5 * (xc + xf)
     };

@@ -79,11 +79,7 @@ fn shape_gradients(
     for c in 0..p1 {
         for b in 0..p1 {
             for a in 0..p1 {
-                dnd.push([
-                    d0[a] * n1[b] * n2[c],
-                    n0[a] * d1[b] * n2[c],
-                    n0[a] * n1[b] * d2[c],
-                ]);
+                dnd.push([d0[a] * n1[b] * n2[c], n0[a] * d1[b] * n2[c], n0[a] * n1[b] * d2[c]]);
             }
         }
     }
@@ -100,9 +96,7 @@ fn shape_gradients(
         - j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0])
         + j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
     if !det.is_finite() || det <= 0.0 {
-        return Err(FeError::InvalidInput(format!(
-            "element with non-positive Jacobian {det}"
-        )));
+        return Err(FeError::InvalidInput(format!("element with non-positive Jacobian {det}")));
     }
     let inv = [
         [
@@ -217,7 +211,5 @@ pub fn element_stress(
         }
     }
     let d = mat.d_matrix();
-    Ok(std::array::from_fn(|r| {
-        (0..6).map(|s| d[r][s] * eps[s]).sum()
-    }))
+    Ok(std::array::from_fn(|r| (0..6).map(|s| d[r][s] * eps[s]).sum()))
 }

@@ -88,9 +88,7 @@ impl Surface {
             (true, true) if r1 == r2 => Ok(vec![Surface::Sphere(r1)]),
             (true, false) | (false, true) => {
                 let radius = if r1.is_finite() { r1 } else { r2 };
-                Ok([true, false]
-                    .map(|along_x| Surface::Cylinder { radius, along_x })
-                    .to_vec())
+                Ok([true, false].map(|along_x| Surface::Cylinder { radius, along_x }).to_vec())
             }
             (true, true) => Err(FeError::InvalidInput(format!(
                 "no exact gap for a body of principal radii {r1} m and {r2} m \

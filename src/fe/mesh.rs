@@ -36,9 +36,7 @@ pub fn graded_edges(h: f64, n_fine: usize, growth: f64, total: f64) -> Result<Ve
     let fine = h * n_fine as f64;
     let mut edges: Vec<f64> = (0..=n_fine).map(|i| h * i as f64).collect();
     if fine >= total {
-        return Err(FeError::InvalidInput(format!(
-            "fine zone {fine} exceeds block size {total}"
-        )));
+        return Err(FeError::InvalidInput(format!("fine zone {fine} exceeds block size {total}")));
     }
     let mut sizes = Vec::new();
     let mut s = h;
@@ -243,8 +241,6 @@ impl HexMesh {
             w
         };
         let (wx, wy) = (w1(&self.edges[0]), w1(&self.edges[1]));
-        wy.iter()
-            .flat_map(|y| wx.iter().map(move |x| x * y))
-            .collect()
+        wy.iter().flat_map(|y| wx.iter().map(move |x| x * y)).collect()
     }
 }

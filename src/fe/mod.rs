@@ -56,13 +56,7 @@ pub enum FeError {
          {nodes:.3e} nodes (about {gb:.3e} GB to solve); the bound is {max} nodes (about \
          {max_gb:.0} GB)"
     )]
-    MeshTooLarge {
-        element_size_rel: f64,
-        nodes: f64,
-        gb: f64,
-        max: usize,
-        max_gb: f64,
-    },
+    MeshTooLarge { element_size_rel: f64, nodes: f64, gb: f64, max: usize, max_gb: f64 },
     /// A non-finite or non-physical value appeared.
     #[error("non-finite or non-physical value in {0}")]
     NonFinite(&'static str),
@@ -137,10 +131,7 @@ impl Default for MeshOptions {
 impl MeshOptions {
     /// A coarse mesh for fast tests (seconds in release), within 5 % of Hertz.
     pub fn coarse() -> Self {
-        Self {
-            element_size_rel: 0.3,
-            ..Self::default()
-        }
+        Self { element_size_rel: 0.3, ..Self::default() }
     }
 
     fn check(&self) -> Result<(), FeError> {

@@ -81,22 +81,10 @@ pub fn distinct_pairs(models: &[(Scene, Coupling)]) -> Result<Vec<PairCase>, (St
 /// kinrepro's contact law, with Hertz's quadratic gap or, if `exact`, the
 /// exact separation of its two surfaces ([`Gap::exact`]).
 pub fn fe_case(pair: &ContactPair, load: f64, exact: bool) -> Result<FeCase, FeError> {
-    let law = pair
-        .law()
-        .map_err(|e| FeError::InvalidInput(e.to_string()))?;
+    let law = pair.law().map_err(|e| FeError::InvalidInput(e.to_string()))?;
     let [rx, ry] = law.hertz.radii;
-    let gap = if exact {
-        Gap::exact(&pair.curvature, rx, ry)?
-    } else {
-        Gap::Quadratic
-    };
-    Ok(FeCase {
-        rx,
-        ry,
-        e_star: law.hertz.e_star,
-        load,
-        gap,
-    })
+    let gap = if exact { Gap::exact(&pair.curvature, rx, ry)? } else { Gap::Quadratic };
+    Ok(FeCase { rx, ry, e_star: law.hertz.e_star, load, gap })
 }
 
 /// Run the FE check of one pair; `levels` (element size / semi-axis) adds a
@@ -116,10 +104,7 @@ pub fn validate_pair(
             let (r1, r2) = case.pair.nominal_radii();
             [Some(r1), r2]
         },
-        materials: [
-            case.pair.material1.name.clone(),
-            case.pair.material2.name.clone(),
-        ],
+        materials: [case.pair.material1.name.clone(), case.pair.material2.name.clone()],
         scenes: case.scenes.clone(),
         load_n: case.load,
         fe_approach_m: fe.approach,

@@ -52,28 +52,13 @@ pub fn assemble(
     for e in 0..mesh.n_elements() {
         mesh.element_nodes(e, &mut en);
         let ke = cache.stiffness(mesh, &en, mat)?;
-        let dofs: Vec<usize> = en
-            .iter()
-            .flat_map(|&a| (0..3).map(move |c| 3 * a + c))
-            .collect();
-        pattern.scatter(
-            &eq_of_dof,
-            ke,
-            &dofs,
-            fixed_values,
-            &mut val,
-            &mut rhs_fixed,
-        )?;
+        let dofs: Vec<usize> = en.iter().flat_map(|&a| (0..3).map(move |c| 3 * a + c)).collect();
+        pattern.scatter(&eq_of_dof, ke, &dofs, fixed_values, &mut val, &mut rhs_fixed)?;
     }
     let symbolic =
         SymbolicSparseColMat::new_checked(n_eq, n_eq, pattern.col_ptr, None, pattern.row_idx);
     let matrix = SparseColMat::new(symbolic, val);
-    Ok(FreeSystem {
-        eq_of_dof,
-        n_eq,
-        matrix,
-        rhs_fixed,
-    })
+    Ok(FreeSystem { eq_of_dof, n_eq, matrix, rhs_fixed })
 }
 
 /// Equation number of each free DOF, in DOF order (`usize::MAX` for the
@@ -196,12 +181,7 @@ impl ElementCache {
             .flat_map(|e| e.windows(2).map(|w| w[1] - w[0]))
             .fold(f64::INFINITY, f64::min)
             * 1e-9;
-        ElementCache {
-            quantum,
-            matrices: HashMap::new(),
-            coords: Vec::new(),
-            key: Vec::new(),
-        }
+        ElementCache { quantum, matrices: HashMap::new(), coords: Vec::new(), key: Vec::new() }
     }
 
     /// The stiffness of the element with nodes `en`.
@@ -217,8 +197,7 @@ impl ElementCache {
         self.key.clear();
         for x in &self.coords {
             for d in 0..3 {
-                self.key
-                    .push(((x[d] - x0[d]) / self.quantum).round() as i64);
+                self.key.push(((x[d] - x0[d]) / self.quantum).round() as i64);
             }
         }
         if !self.matrices.contains_key(&self.key) {
@@ -259,9 +238,7 @@ impl Factor {
             inv[old] = new;
         }
         if fwd.len() != sys.n_eq || inv.contains(&usize::MAX) {
-            return Err(FeError::InvalidInput(
-                "ordering is not a permutation".into(),
-            ));
+            return Err(FeError::InvalidInput("ordering is not a permutation".into()));
         }
         let perm = PermRef::new_checked(&fwd, &inv, sys.n_eq);
         Self::with_ordering(sys, SymmetricOrdering::Custom(perm))
@@ -296,10 +273,8 @@ impl Factor {
 
     /// Solves `K X = B` in place for a block of right-hand sides.
     pub fn solve_in_place(&self, rhs: MatMut<'_, f64>) {
-        let mut mem = MemBuffer::new(
-            self.symbolic
-                .solve_in_place_scratch::<f64>(rhs.ncols(), Par::Seq),
-        );
+        let mut mem =
+            MemBuffer::new(self.symbolic.solve_in_place_scratch::<f64>(rhs.ncols(), Par::Seq));
         LltRef::new(&self.symbolic, &self.values).solve_in_place_with_conj(
             Conj::No,
             rhs,

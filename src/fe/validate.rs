@@ -25,21 +25,14 @@ pub fn solve_case(case: &FeCase, opt: &MeshOptions) -> Result<FeResult, FeError>
     let [ax, ay] = hz.semi_axes;
     let nu = opt.poisson;
     // Rigid indenter, frictionless: only E/(1-ν²) = E* enters the normal problem.
-    let mat = Material {
-        e: case.e_star * (1.0 - nu * nu),
-        nu,
-    };
+    let mat = Material { e: case.e_star * (1.0 - nu * nu), nu };
     let mesh = build_mesh(ax, ay, opt)?;
     let (fixed, vals) = boundary_conditions(&mesh, &mat)?;
     let sys = assemble(&mesh, &mat, &fixed, &vals)?;
     let top = TopNodes::new(&mesh, &sys, [ax, ay], opt.fine_zone_rel);
     // The gap at the candidates first: an exact gap undefined there is an
     // error before the costly factorisation.
-    let h = top
-        .cand
-        .iter()
-        .map(|&(i, j)| top.profile(i, j, case))
-        .collect::<Result<_, _>>()?;
+    let h = top.cand.iter().map(|&(i, j)| top.profile(i, j, case)).collect::<Result<_, _>>()?;
     let fac = Factor::nested_dissection(&sys, &mesh)?;
     let model = contact_model(case, h, &top, &fac, &vals);
     let (curve, st) = load_curve(case, &model, opt.curve_levels)?;
@@ -122,14 +115,8 @@ impl<'a> TopNodes<'a> {
         semi_axes: [f64; 2],
         fine_zone_rel: f64,
     ) -> Self {
-        let mut t = TopNodes {
-            mesh,
-            sys,
-            semi_axes,
-            fine_zone_rel,
-            cand: Vec::new(),
-            other: Vec::new(),
-        };
+        let mut t =
+            TopNodes { mesh, sys, semi_axes, fine_zone_rel, cand: Vec::new(), other: Vec::new() };
         let [nx, ny, _] = mesh.dims;
         let nodes = (0..ny).flat_map(|j| (0..nx).map(move |i| (i, j)));
         (t.cand, t.other) = nodes.partition(|&(i, j)| t.is_cand(i, j));
@@ -169,9 +156,7 @@ impl<'a> TopNodes<'a> {
     /// exact gap's curved body (no indenter there to touch).
     fn profile_other(&self, i: usize, j: usize, case: &FeCase) -> f64 {
         let x = self.mesh.nodes[self.node(i, j)];
-        case.gap
-            .height(case.rx, case.ry, x[0], x[1])
-            .unwrap_or(f64::INFINITY)
+        case.gap.height(case.rx, case.ry, x[0], x[1]).unwrap_or(f64::INFINITY)
     }
 }
 
@@ -195,11 +180,7 @@ fn contact_model(
     fac.solve_in_place(ub.as_mut());
     let w_b = |i: usize, j: usize| {
         let e = top.zeq(i, j);
-        if e == usize::MAX {
-            -vals[3 * top.node(i, j) + 2]
-        } else {
-            -ub[(e, 0)]
-        }
+        if e == usize::MAX { -vals[3 * top.node(i, j) + 2] } else { -ub[(e, 0)] }
     };
     let (cand, other) = (&top.cand, &top.other);
     let nc = cand.len();
@@ -227,10 +208,7 @@ fn contact_model(
         h,
         c,
         w_unit: cand.iter().map(|&(i, j)| w_b(i, j)).collect(),
-        h_other: other
-            .iter()
-            .map(|&(i, j)| top.profile_other(i, j, case))
-            .collect(),
+        h_other: other.iter().map(|&(i, j)| top.profile_other(i, j, case)).collect(),
         c_other,
         w_unit_other: other.iter().map(|&(i, j)| w_b(i, j)).collect(),
         on_zone_edge: cand
@@ -309,10 +287,7 @@ pub fn convergence_study(case: &FeCase, levels: &[f64]) -> Result<Vec<Convergenc
     levels
         .iter()
         .map(|&rel| {
-            let opt = MeshOptions {
-                element_size_rel: rel,
-                ..Default::default()
-            };
+            let opt = MeshOptions { element_size_rel: rel, ..Default::default() };
             let r = solve_case(case, &opt)?;
             Ok(ConvergenceRow {
                 element_size: r.element_size,

@@ -22,10 +22,7 @@ use thiserror::Error;
 /// A file could not be written; names the file and the reason.
 #[derive(Debug, Error)]
 pub enum WriteError {
-    #[error(
-        "{path}: exists; not overwritten (pass {} to replace it)",
-        Param::Force
-    )]
+    #[error("{path}: exists; not overwritten (pass {} to replace it)", Param::Force)]
     Exists { path: String },
     #[error(
         "{path}: is a {kind}, not a regular file; not written (pass {} to write into it)",
@@ -38,19 +35,14 @@ pub enum WriteError {
 
 impl WriteError {
     pub(crate) fn io(path: &Path, e: impl std::fmt::Display) -> Self {
-        WriteError::Io {
-            path: path.display().to_string(),
-            reason: e.to_string(),
-        }
+        WriteError::Io { path: path.display().to_string(), reason: e.to_string() }
     }
 }
 
 /// Refuse an existing `path` unless `force`.
 pub fn check_overwrite(path: &Path, force: bool) -> Result<(), WriteError> {
     if !force && path.exists() {
-        return Err(WriteError::Exists {
-            path: path.display().to_string(),
-        });
+        return Err(WriteError::Exists { path: path.display().to_string() });
     }
     Ok(())
 }
@@ -102,10 +94,7 @@ fn destination(target: &Path, force: bool) -> Result<Destination, WriteError> {
             Ok(Destination::Replace(real))
         }
         Ok(_) if force => Ok(Destination::Through),
-        Ok(m) => Err(WriteError::NotRegular {
-            path: path(),
-            kind: special_kind(m.file_type()),
-        }),
+        Ok(m) => Err(WriteError::NotRegular { path: path(), kind: special_kind(m.file_type()) }),
     }
 }
 
@@ -159,10 +148,7 @@ impl AtomicFile {
                 Sink::Through(BufWriter::new(f))
             }
         };
-        Ok(AtomicFile {
-            target: target.to_path_buf(),
-            sink,
-        })
+        Ok(AtomicFile { target: target.to_path_buf(), sink })
     }
 
     /// The path given for the file.
@@ -183,14 +169,9 @@ impl AtomicFile {
             Sink::Through(mut w) => return w.flush().map_err(|e| WriteError::io(&target, e)),
             Sink::Temp(w, real, reg) => (w, real, reg),
         };
-        let tmp = w
-            .into_inner()
-            .map_err(|e| WriteError::io(&target, e.error()))?;
-        tmp.as_file()
-            .sync_all()
-            .map_err(|e| WriteError::io(&target, e))?;
-        tmp.persist(&real)
-            .map_err(|e| WriteError::io(&target, e.error))?;
+        let tmp = w.into_inner().map_err(|e| WriteError::io(&target, e.error()))?;
+        tmp.as_file().sync_all().map_err(|e| WriteError::io(&target, e))?;
+        tmp.persist(&real).map_err(|e| WriteError::io(&target, e.error))?;
         Ok(())
     }
 }
@@ -229,9 +210,7 @@ pub fn temp_next_to(target: &Path, suffix: &str) -> Result<NamedTempFile, WriteE
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
-    let name = target
-        .file_name()
-        .map_or("kinrepro".into(), |n| n.to_string_lossy().into_owned());
+    let name = target.file_name().map_or("kinrepro".into(), |n| n.to_string_lossy().into_owned());
     let prefix = format!(".{name}.");
     let mut builder = tempfile::Builder::new();
     builder.prefix(&prefix).suffix(suffix);
@@ -242,16 +221,12 @@ pub fn temp_next_to(target: &Path, suffix: &str) -> Result<NamedTempFile, WriteE
         use std::os::unix::fs::PermissionsExt;
         builder.permissions(std::fs::Permissions::from_mode(0o666));
     }
-    builder
-        .tempfile_in(dir)
-        .map_err(|e| WriteError::io(target, e))
+    builder.tempfile_in(dir).map_err(|e| WriteError::io(target, e))
 }
 
 /// Write `text` to `target` whole or not at all.
 pub fn write_file(target: &Path, text: &str, force: bool) -> Result<(), WriteError> {
     let mut f = AtomicFile::create(target, force)?;
-    f.writer()
-        .write_all(text.as_bytes())
-        .map_err(|e| WriteError::io(target, e))?;
+    f.writer().write_all(text.as_bytes()).map_err(|e| WriteError::io(target, e))?;
     f.commit()
 }

@@ -25,11 +25,7 @@ pub struct MaterialsDoc {
 
 /// The JSON document.
 pub fn materials_doc() -> MaterialsDoc {
-    MaterialsDoc {
-        kinrepro_version: VERSION,
-        schema_version: SCHEMA_VERSION,
-        materials: BUILTIN,
-    }
+    MaterialsDoc { kinrepro_version: VERSION, schema_version: SCHEMA_VERSION, materials: BUILTIN }
 }
 
 /// CSV, one row per material, SI units; an empty allowable pressure where
@@ -39,9 +35,7 @@ pub fn materials_csv() -> String {
     let mut t = Table::of(MATERIALS_HEADER.split(',').map(Column::left));
     for m in BUILTIN {
         let e = format!("{:e}", m.youngs_modulus);
-        let p = m
-            .allowable_pressure
-            .map_or(String::new(), |p| format!("{p:e}"));
+        let p = m.allowable_pressure.map_or(String::new(), |p| format!("{p:e}"));
         t.row(cells![
             VERSION,
             m.name,

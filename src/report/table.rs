@@ -65,19 +65,12 @@ pub struct Column {
 impl Column {
     /// A left-aligned column (names, words).
     pub fn left(header: impl Into<String>) -> Self {
-        Column {
-            header: header.into(),
-            left: true,
-            format: Format::Plain,
-        }
+        Column { header: header.into(), left: true, format: Format::Plain }
     }
 
     /// A right-aligned column (numbers).
     pub fn right(header: impl Into<String>) -> Self {
-        Column {
-            left: false,
-            ..Column::left(header)
-        }
+        Column { left: false, ..Column::left(header) }
     }
 
     /// Numbers with `p` decimals.
@@ -105,12 +98,7 @@ impl Column {
             Some((h, f)) if f == "e" || f.starts_with('.') => (h, f),
             _ => (spec, ""),
         };
-        let digits = |f: &str| {
-            f.trim_start_matches('.')
-                .trim_end_matches(['e', 'g'])
-                .parse()
-                .ok()
-        };
+        let digits = |f: &str| f.trim_start_matches('.').trim_end_matches(['e', 'g']).parse().ok();
         let format = match (format, digits(format)) {
             ("e", _) => Format::Exp,
             (f, Some(p)) if f.ends_with('e') => Format::Sci(p),
@@ -210,11 +198,7 @@ impl Table {
     }
 
     pub fn of(columns: impl IntoIterator<Item = Column>) -> Self {
-        Table {
-            columns: columns.into_iter().collect(),
-            lines: Vec::new(),
-            indent: 0,
-        }
+        Table { columns: columns.into_iter().collect(), lines: Vec::new(), indent: 0 }
     }
 
     /// More columns after these.
@@ -232,11 +216,7 @@ impl Table {
     /// Add a row (one cell per column).
     pub fn row(&mut self, cells: Vec<Cell>) -> &mut Row {
         debug_assert_eq!(cells.len(), self.columns.len(), "one cell per column");
-        self.lines.push(Line::Row(Row {
-            cells,
-            under: Vec::new(),
-            class: None,
-        }));
+        self.lines.push(Line::Row(Row { cells, under: Vec::new(), class: None }));
         match self.lines.last_mut() {
             Some(Line::Row(r)) => r,
             _ => unreachable!("a row was just pushed"),
@@ -270,12 +250,7 @@ impl Table {
             match line {
                 Line::Row(r) => {
                     let texts = self.texts(r, "-");
-                    t.add_row(
-                        texts
-                            .iter()
-                            .map(|c| printable(c).into_owned())
-                            .collect::<Vec<_>>(),
-                    );
+                    t.add_row(texts.iter().map(|c| printable(c).into_owned()).collect::<Vec<_>>());
                     after.push(Vec::new());
                     if !r.under.is_empty() {
                         t.add_row(r.under.clone());
@@ -287,11 +262,7 @@ impl Table {
         }
         for (col, c) in t.column_iter_mut().zip(&self.columns) {
             col.set_padding((0, 1));
-            col.set_cell_alignment(if c.left {
-                CellAlignment::Left
-            } else {
-                CellAlignment::Right
-            });
+            col.set_cell_alignment(if c.left { CellAlignment::Left } else { CellAlignment::Right });
         }
         let pad = " ".repeat(self.indent);
         let mut s = String::new();
@@ -327,11 +298,7 @@ impl Table {
     /// each value, notes as rows across every column.
     pub fn html(&self, class: &str) -> String {
         let l = |c: &Column| if c.left { " class=\"l\"" } else { "" };
-        let class = if class.is_empty() {
-            String::new()
-        } else {
-            format!(" class=\"{class}\"")
-        };
+        let class = if class.is_empty() { String::new() } else { format!(" class=\"{class}\"") };
         let mut s = format!("<div class=\"scroll\"><table{class} data-check=\"table\"><thead><tr>");
         for c in &self.columns {
             let _ = write!(s, "<th{}>{}</th>", l(c), escape(&c.header));

@@ -47,11 +47,7 @@ pub struct ErrorContext<'a> {
 
 impl<'a> ErrorContext<'a> {
     pub fn new(file: &'a str, source: &'a str) -> Self {
-        ErrorContext {
-            file,
-            source,
-            line_starts: std::sync::OnceLock::new(),
-        }
+        ErrorContext { file, source, line_starts: std::sync::OnceLock::new() }
     }
 
     /// 1-based line of a byte offset; None for the empty span of a default value.
@@ -81,11 +77,7 @@ impl<'a> ErrorContext<'a> {
         if x.is_finite() && x > 0.0 {
             Ok(x)
         } else {
-            Err(self.error(
-                Some(&v.span()),
-                field,
-                format!("{x} must be positive ({unit})"),
-            ))
+            Err(self.error(Some(&v.span()), field, format!("{x} must be positive ({unit})")))
         }
     }
 

@@ -363,11 +363,7 @@ fn default_sampler() -> Spanned<String> {
 
 impl Default for StudyFile {
     fn default() -> Self {
-        StudyFile {
-            samples: default_samples(),
-            sampler: default_sampler(),
-            seed: 0,
-        }
+        StudyFile { samples: default_samples(), sampler: default_sampler(), seed: 0 }
     }
 }
 

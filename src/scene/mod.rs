@@ -43,27 +43,16 @@ pub struct Ball {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub enum SurfaceGeometry {
     /// Half-space below `point` with unit outward `normal` (towards the ball).
-    Plane {
-        point: Vector3<f64>,
-        normal: Vector3<f64>,
-    },
+    Plane { point: Vector3<f64>, normal: Vector3<f64> },
     /// Cylinder (pin) of `radius` around the line through `axis_point`
     /// along the unit `direction`.
-    Cylinder {
-        axis_point: Vector3<f64>,
-        direction: Vector3<f64>,
-        radius: f64,
-    },
+    Cylinder { axis_point: Vector3<f64>, direction: Vector3<f64>, radius: f64 },
     /// Fixed ball.
     Sphere { centre: Vector3<f64>, radius: f64 },
     /// The inside of a cylinder of `radius` around the line through
     /// `axis_point` along the unit `direction`: a concave groove flank
     /// (one flank of a gothic arch); the ball lies inside it.
-    ConcaveCylinder {
-        axis_point: Vector3<f64>,
-        direction: Vector3<f64>,
-        radius: f64,
-    },
+    ConcaveCylinder { axis_point: Vector3<f64>, direction: Vector3<f64>, radius: f64 },
 }
 
 /// The moving element's own surface at one contact, when it is not the

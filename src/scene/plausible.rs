@@ -52,11 +52,7 @@ pub const ALLOWABLE_STRESS_MIN: f64 = 1.0e6;
 /// `x` as typed in a message: plain, or with an exponent when very large
 /// or small.
 pub fn as_typed(x: f64) -> String {
-    if x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
-        format!("{x}")
-    } else {
-        format!("{x:e}")
-    }
+    if x == 0.0 || (1e-4..1e7).contains(&x.abs()) { format!("{x}") } else { format!("{x:e}") }
 }
 
 /// The key that accepts values beyond these bounds.
@@ -151,12 +147,7 @@ fn check_materials(f: &SceneFile, ctx: &ErrorContext) -> Result<(), SceneError> 
             let Some(v) = v else { continue };
             let x = *v.get_ref();
             let hint = format!("did you give MPa? {x} MPa is {} Pa;", as_typed(x * 1e6));
-            let what = (
-                ALLOWABLE_STRESS_MIN,
-                "Pa",
-                "an allowable stress",
-                hint.as_str(),
-            );
+            let what = (ALLOWABLE_STRESS_MIN, "Pa", "an allowable stress", hint.as_str());
             at_least(ctx, v, &field(key), what)?;
         }
     }
@@ -198,18 +189,8 @@ pub fn check_coupling(c: &CouplingFile, allow: bool, ctx: &ErrorContext) -> Resu
             Ok(())
         }
     };
-    limit(
-        &c.diameter,
-        CIRCLE_DIAMETER_MAX,
-        "coupling.diameter",
-        "the circle of ball centres",
-    )?;
-    limit(
-        &c.ball_diameter,
-        BALL_DIAMETER_MAX,
-        "coupling.ball_diameter",
-        "a ball diameter",
-    )?;
+    limit(&c.diameter, CIRCLE_DIAMETER_MAX, "coupling.diameter", "the circle of ball centres")?;
+    limit(&c.ball_diameter, BALL_DIAMETER_MAX, "coupling.ball_diameter", "a ball diameter")?;
     if let Some(d) = &c.groove_element_diameter {
         limit(
             d,
@@ -227,12 +208,7 @@ pub fn check_coupling(c: &CouplingFile, allow: bool, ctx: &ErrorContext) -> Resu
         )?;
     }
     if let Some(r) = &c.canoe_radius {
-        limit(
-            r,
-            CANOE_RADIUS_MAX,
-            "coupling.canoe_radius",
-            "a canoe radius",
-        )?;
+        limit(r, CANOE_RADIUS_MAX, "coupling.canoe_radius", "a canoe radius")?;
     }
     check_coupling_small(c, ctx)
 }
@@ -241,18 +217,8 @@ pub fn check_coupling(c: &CouplingFile, allow: bool, ctx: &ErrorContext) -> Resu
 /// its support compliance.
 fn check_coupling_small(c: &CouplingFile, ctx: &ErrorContext) -> Result<(), SceneError> {
     let min = |v, field: &str, min, what| at_least(ctx, v, field, (min, "m", what, LENGTH_HINT));
-    min(
-        &c.diameter,
-        "coupling.diameter",
-        CIRCLE_DIAMETER_MIN,
-        "the circle of ball centres",
-    )?;
-    min(
-        &c.ball_diameter,
-        "coupling.ball_diameter",
-        BALL_DIAMETER_MIN,
-        "a ball diameter",
-    )?;
+    min(&c.diameter, "coupling.diameter", CIRCLE_DIAMETER_MIN, "the circle of ball centres")?;
+    min(&c.ball_diameter, "coupling.ball_diameter", BALL_DIAMETER_MIN, "a ball diameter")?;
     if let Some(d) = &c.groove_element_diameter {
         min(
             d,
@@ -283,12 +249,7 @@ pub fn check_explicit(
         let d = 2.0 * b.radius.get_ref();
         let field = format!("balls[{}].radius", i + 1);
         let what = "a ball radius";
-        at_least(
-            ctx,
-            &b.radius,
-            &field,
-            (BALL_DIAMETER_MIN / 2.0, "m", what, LENGTH_HINT),
-        )?;
+        at_least(ctx, &b.radius, &field, (BALL_DIAMETER_MIN / 2.0, "m", what, LENGTH_HINT))?;
         if d > BALL_DIAMETER_MAX {
             return Err(too_large(
                 ctx,
@@ -321,12 +282,7 @@ pub fn check_explicit(
     for (v, field) in single.chain(forces) {
         let force = *v.get_ref();
         let what = "a preload force";
-        at_least(
-            ctx,
-            v,
-            &field,
-            (PRELOAD_MIN, "N", what, "is it in newtons?"),
-        )?;
+        at_least(ctx, v, &field, (PRELOAD_MIN, "N", what, "is it in newtons?"))?;
         if force > PRELOAD_MAX {
             return Err(too_large(
                 ctx,
@@ -371,12 +327,7 @@ fn check_surfaces(f: &SceneFile, ctx: &ErrorContext) -> Result<(), SceneError> {
         else {
             continue;
         };
-        let what = (
-            ELEMENT_DIAMETER_MIN / 2.0,
-            "m",
-            "a pin or fixed-ball radius",
-            LENGTH_HINT,
-        );
+        let what = (ELEMENT_DIAMETER_MIN / 2.0, "m", "a pin or fixed-ball radius", LENGTH_HINT);
         at_least(ctx, r, &field("radius"), what)?;
     }
     for (i, s) in f.surfaces.iter().enumerate() {

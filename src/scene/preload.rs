@@ -43,12 +43,7 @@ pub struct PreloadForce {
 impl PreloadForce {
     /// A constant force.
     pub fn constant(force: f64, point: Vector3<f64>, direction: Vector3<f64>) -> Self {
-        PreloadForce {
-            force,
-            point,
-            direction,
-            law: ForceLaw::Constant,
-        }
+        PreloadForce { force, point, direction, law: ForceLaw::Constant }
     }
 
     /// The weight m g of a half of mass `mass` [kg] at `centre_of_mass` [m].
@@ -94,10 +89,7 @@ impl Preload {
         direction: Vector3<f64>,
         ramp_time: f64,
     ) -> Self {
-        Preload {
-            forces: vec![PreloadForce::constant(force, point, direction)],
-            ramp_time,
-        }
+        Preload { forces: vec![PreloadForce::constant(force, point, direction)], ramp_time }
     }
 
     /// The force scale of residuals and of normalised loads: the sum of the

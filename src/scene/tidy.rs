@@ -18,10 +18,8 @@ pub fn tidy(v: &mut toml::Value) {
         toml::Value::Float(x) => *x = significant(*x),
         toml::Value::Table(t) => t.iter_mut().for_each(|(_, v)| tidy(v)),
         toml::Value::Array(a) => {
-            let largest = a
-                .iter()
-                .filter_map(toml::Value::as_float)
-                .fold(0.0, |m: f64, x| m.max(x.abs()));
+            let largest =
+                a.iter().filter_map(toml::Value::as_float).fold(0.0, |m: f64, x| m.max(x.abs()));
             for e in a.iter_mut() {
                 match e {
                     toml::Value::Float(x) if x.abs() < NOISE * largest => *x = 0.0,

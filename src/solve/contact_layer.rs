@@ -182,13 +182,7 @@ impl NormalPart {
         // Hertz in series with the support compliance (`contact::series`).
         let (fn_, kn) = contact.normal.force_and_stiffness(approach);
         let (a_eff, dlog) = contact.law.increment_semi_axis(committed.normal_force, fn_);
-        NormalPart {
-            approach,
-            normal_force: fn_,
-            normal_stiffness: kn,
-            dlog,
-            a_eff,
-        }
+        NormalPart { approach, normal_force: fn_, normal_stiffness: kn, dlog, a_eff }
     }
 }
 
@@ -210,19 +204,9 @@ pub fn evaluate_into(
     tangent: bool,
 ) {
     let g = out.geometry;
-    let Moved {
-        du,
-        committed,
-        friction,
-    } = *moved;
+    let Moved { du, committed, friction } = *moved;
     let contact = &coupling.contacts[i];
-    let NormalPart {
-        approach,
-        normal_force: fn_,
-        normal_stiffness: kn,
-        dlog,
-        a_eff,
-    } = *normal;
+    let NormalPart { approach, normal_force: fn_, normal_stiffness: kn, dlog, a_eff } = *normal;
     let major_axis = contact.major_axis;
     let law = &contact.law;
     let (principal, kt, dkt) =

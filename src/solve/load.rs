@@ -25,19 +25,12 @@ impl Load {
     /// The scene's nominal load: mu0 at every contact, its preload, the
     /// touching start.
     pub fn nominal(scene: &Scene) -> Self {
-        Load {
-            mu: nominal_mu(scene),
-            preload: scene.preload.clone(),
-            start: StartPose::touching(),
-        }
+        Load { mu: nominal_mu(scene), preload: scene.preload.clone(), start: StartPose::touching() }
     }
 
     /// This load with the static coefficients `mu`.
     pub fn with_mu(&self, mu: &[f64]) -> Self {
-        Load {
-            mu: mu.to_vec(),
-            ..self.clone()
-        }
+        Load { mu: mu.to_vec(), ..self.clone() }
     }
 
     /// Each contact's friction (mu_d = ratio mu_s, the coupling's sliding
@@ -64,25 +57,15 @@ pub fn frictions_into(
     out: &mut Vec<Friction>,
 ) -> Result<(), SolveError> {
     if mu_s.len() != coupling.contacts.len() {
-        return Err(SolveError::MuCount {
-            expected: coupling.contacts.len(),
-            got: mu_s.len(),
-        });
+        return Err(SolveError::MuCount { expected: coupling.contacts.len(), got: mu_s.len() });
     }
     let laws = coupling.friction;
     out.clear();
     for (i, &m) in mu_s.iter().enumerate() {
         if !(0.0..=MU_MAX).contains(&m) {
-            return Err(SolveError::MuRange {
-                index: i + 1,
-                value: m,
-                max: MU_MAX,
-            });
+            return Err(SolveError::MuRange { index: i + 1, value: m, max: MU_MAX });
         }
-        out.push(Friction {
-            law: laws.law,
-            ..Friction::switch(m, laws.dynamic_ratio * m)
-        });
+        out.push(Friction { law: laws.law, ..Friction::switch(m, laws.dynamic_ratio * m) });
     }
     Ok(())
 }

@@ -57,11 +57,7 @@ impl SolverOptions {
     /// A seating on `increments` fixed nominal increments, without
     /// load-path error control (`--increments`).
     pub fn fixed(increments: usize) -> Self {
-        SolverOptions {
-            increments,
-            path_tolerance: None,
-            ..Default::default()
-        }
+        SolverOptions { increments, path_tolerance: None, ..Default::default() }
     }
 }
 
@@ -80,10 +76,7 @@ impl Default for SolverOptions {
 /// A seating that did not end in a valid seated pose.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SolveError {
-    #[error(
-        "{} needs {expected} values (one per contact, in contact order), got {got}",
-        Param::Mu
-    )]
+    #[error("{} needs {expected} values (one per contact, in contact order), got {got}", Param::Mu)]
     MuCount { expected: usize, got: usize },
     #[error(
         "the static friction coefficient of contact {index} = {value} is outside [0, {max}] \
@@ -95,20 +88,12 @@ pub enum SolveError {
         "the seating solve did not converge at {percent:.3} % of the preload (relative residual \
          {residual:.3e} after halving the increment {splits} times)"
     )]
-    NotConverged {
-        percent: f64,
-        residual: f64,
-        splits: u32,
-    },
+    NotConverged { percent: f64, residual: f64, splits: u32 },
     #[error(
         "the load path did not converge at {percent:.3} % of the applied load (relative \
          residual {residual:.3e} after halving the increment {splits} times)"
     )]
-    LoadNotConverged {
-        percent: f64,
-        residual: f64,
-        splits: u32,
-    },
+    LoadNotConverged { percent: f64, residual: f64, splits: u32 },
     #[error(
         "the coupling slides away under the load: at {percent:.3} % of the applied load the \
          moving half has moved {displacement_m:.3e} m"
@@ -142,12 +127,7 @@ pub enum SolveError {
         "the dynamic seating did not settle within {time_s:.4e} s ({steps} steps): kinetic \
          energy {kinetic_j:.3e} J, relative force residual {residual:.3e}"
     )]
-    NotSettled {
-        time_s: f64,
-        steps: usize,
-        kinetic_j: f64,
-        residual: f64,
-    },
+    NotSettled { time_s: f64, steps: usize, kinetic_j: f64, residual: f64 },
     #[error(
         "the start pose overlaps contact {contact} by {overlap_m:.3e} m: an offset start must \
          leave every ball clear of its surfaces (raise the z offset or reduce the tilt)"
@@ -208,12 +188,8 @@ impl ContactResult {
     pub fn from_eval(coupling: &Coupling, i: usize, e: &ContactEval, friction: Friction) -> Self {
         let contact = &coupling.contacts[i];
         let ft = -e.tangential.force;
-        let stress = contact_stress(
-            &contact.pair,
-            &contact.law.hertz,
-            &contact.shear,
-            e.normal_force,
-        );
+        let stress =
+            contact_stress(&contact.pair, &contact.law.hertz, &contact.shear, e.normal_force);
         ContactResult {
             normal_force_n: e.normal_force,
             tangential_force: ft.into(),
@@ -334,10 +310,7 @@ impl std::str::FromStr for Solver {
         <Solver as clap::ValueEnum>::from_str(s, false).map_err(|_| {
             ParamError::new(
                 Param::Solver,
-                format!(
-                    "{}: unknown, need quasi-static or dynamic",
-                    Param::Solver.with(s)
-                ),
+                format!("{}: unknown, need quasi-static or dynamic", Param::Solver.with(s)),
             )
         })
     }

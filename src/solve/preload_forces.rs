@@ -49,11 +49,7 @@ pub fn applied<'a>(
                 stiffness: Some(f.direction * f.direction.transpose() * -k),
             }
         } else {
-            Applied {
-                force: f.direction * (f.force * lambda),
-                point,
-                stiffness: None,
-            }
+            Applied { force: f.direction * (f.force * lambda), point, stiffness: None }
         }
     })
 }

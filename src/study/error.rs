@@ -70,11 +70,7 @@ pub enum StudyError {
     Sink(Box<dyn std::error::Error + Send + Sync>),
     /// A run size above its bound (`study::bounds`).
     #[error("{what} = {count} is above the bound of {max} (docs/output.md, Bounds)")]
-    AboveBound {
-        what: &'static str,
-        count: String,
-        max: usize,
-    },
+    AboveBound { what: &'static str, count: String, max: usize },
     /// A design needs at least one input dimension.
     #[error("a design needs at least one dimension (dims = 0)")]
     ZeroDims,
@@ -90,11 +86,7 @@ pub enum StudyError {
     #[error(
         "corner design with {dims} dimensions has {expected} rows, but n = {got} was requested"
     )]
-    CornerCount {
-        dims: usize,
-        expected: usize,
-        got: usize,
-    },
+    CornerCount { dims: usize, expected: usize, got: usize },
     /// The optimised Latin hypercube keeps an n x n distance matrix.
     #[error("optimised Latin hypercube supports at most {max} samples (n = {n}); use Monte Carlo")]
     LhsTooLarge { n: usize, max: usize },
@@ -142,18 +134,12 @@ pub enum StudyError {
 impl StudyError {
     /// This error about the scene read from `file`.
     pub fn in_file(self, file: &str) -> Self {
-        StudyError::In {
-            file: file.to_string(),
-            source: Box::new(self),
-        }
+        StudyError::In { file: file.to_string(), source: Box::new(self) }
     }
 
     /// This error about a bound of parameter `param`.
     pub fn at(self, param: Param) -> Self {
-        StudyError::At {
-            param,
-            source: Box::new(self),
-        }
+        StudyError::At { param, source: Box::new(self) }
     }
 
     /// The error itself, without the scene file or parameter it is about.

@@ -215,41 +215,31 @@ impl Tolerances {
             let g = coupling.geometry(i, &coupling.touching_pose);
             let n = g.normal;
             let axis = n.cross(&Vector3::z());
-            let axis = if axis.norm() < 1e-9 {
-                Vector3::x()
-            } else {
-                axis.normalize()
-            };
+            let axis = if axis.norm() < 1e-9 { Vector3::x() } else { axis.normalize() };
             let r = UnitQuaternion::from_scaled_axis(axis * self.surface_tilt[i]);
             let shift = n * self.surface_normal[i] + self.groove_position[s.ball];
             let moved = |x: Vector3<f64>| r * (x - g.point) + g.point + shift;
             s.geometry = match s.geometry {
-                SurfaceGeometry::Plane { point, normal } => SurfaceGeometry::Plane {
-                    point: moved(point),
-                    normal: r * normal,
-                },
-                SurfaceGeometry::Cylinder {
-                    axis_point,
-                    direction,
-                    radius,
-                } => SurfaceGeometry::Cylinder {
-                    axis_point: moved(axis_point),
-                    direction: r * direction,
-                    radius,
-                },
-                SurfaceGeometry::Sphere { centre, radius } => SurfaceGeometry::Sphere {
-                    centre: moved(centre),
-                    radius,
-                },
-                SurfaceGeometry::ConcaveCylinder {
-                    axis_point,
-                    direction,
-                    radius,
-                } => SurfaceGeometry::ConcaveCylinder {
-                    axis_point: moved(axis_point),
-                    direction: r * direction,
-                    radius,
-                },
+                SurfaceGeometry::Plane { point, normal } => {
+                    SurfaceGeometry::Plane { point: moved(point), normal: r * normal }
+                }
+                SurfaceGeometry::Cylinder { axis_point, direction, radius } => {
+                    SurfaceGeometry::Cylinder {
+                        axis_point: moved(axis_point),
+                        direction: r * direction,
+                        radius,
+                    }
+                }
+                SurfaceGeometry::Sphere { centre, radius } => {
+                    SurfaceGeometry::Sphere { centre: moved(centre), radius }
+                }
+                SurfaceGeometry::ConcaveCylinder { axis_point, direction, radius } => {
+                    SurfaceGeometry::ConcaveCylinder {
+                        axis_point: moved(axis_point),
+                        direction: r * direction,
+                        radius,
+                    }
+                }
             };
             // A moving patch moves with its ball; a diameter error moves its
             // surface along the normal as it moves the ball's.

@@ -24,44 +24,19 @@ pub enum MergeError {
     )]
     Schema { file: String, found: u32 },
     #[error("{file}: holds {found} scene(s), {first} holds {expected}: not parts of one study")]
-    VariantCount {
-        file: String,
-        first: String,
-        found: usize,
-        expected: usize,
-    },
+    VariantCount { file: String, first: String, found: usize, expected: usize },
     #[error(
         "{file}: its study fingerprint is of version {found} ({first} has version {expected}): \
          parts written by kinrepro releases with different fingerprints do not merge (re-run \
          the shards with one version)"
     )]
-    FingerprintVersion {
-        file: String,
-        first: String,
-        found: u32,
-        expected: u32,
-    },
+    FingerprintVersion { file: String, first: String, found: u32, expected: u32 },
     #[error("{file}: not a part of the study of {first}: {scene}: {field} differs")]
-    Fingerprint {
-        file: String,
-        first: String,
-        scene: String,
-        field: String,
-    },
+    Fingerprint { file: String, first: String, scene: String, field: String },
     #[error("{file}: shard {shard} of {count} shards, {first} has {expected} shards")]
-    ShardCount {
-        file: String,
-        first: String,
-        shard: Shard,
-        count: usize,
-        expected: usize,
-    },
+    ShardCount { file: String, first: String, shard: Shard, count: usize, expected: usize },
     #[error("{file}: shard {shard} is also in {other}")]
-    DuplicateShard {
-        file: String,
-        other: String,
-        shard: Shard,
-    },
+    DuplicateShard { file: String, other: String, shard: Shard },
     #[error("{file}: invalid shard {shard}")]
     BadShard { file: String, shard: Shard },
     #[error("{0} missing")]
@@ -86,15 +61,10 @@ pub fn merge_parts(parts: Vec<(String, StudyReport)>) -> Result<StudyReport, Mer
     let (first_file, first) = parts.first().ok_or(MergeError::Empty)?;
     for (file, p) in &parts {
         if !READABLE_SCHEMAS.contains(&p.schema_version) {
-            return Err(MergeError::Schema {
-                file: file.clone(),
-                found: p.schema_version,
-            });
+            return Err(MergeError::Schema { file: file.clone(), found: p.schema_version });
         }
-        super::validate::check_document(p).map_err(|source| MergeError::Invalid {
-            file: file.clone(),
-            source,
-        })?;
+        super::validate::check_document(p)
+            .map_err(|source| MergeError::Invalid { file: file.clone(), source })?;
         check_same_study(first_file, first, file, p)?;
     }
     let shards: Vec<(&str, Shard)> = parts.iter().map(|(f, p)| (f.as_str(), p.shard)).collect();
@@ -104,10 +74,8 @@ pub fn merge_parts(parts: Vec<(String, StudyReport)>) -> Result<StudyReport, Mer
     for (j, proto) in first.variants.iter().enumerate() {
         let mine: Vec<&VariantReport> = parts.iter().map(|(_, p)| &p.variants[j]).collect();
         variants.push(
-            merge_variant(proto, &mine).map_err(|source| MergeError::Records {
-                scene: proto.scene.clone(),
-                source,
-            })?,
+            merge_variant(proto, &mine)
+                .map_err(|source| MergeError::Records { scene: proto.scene.clone(), source })?,
         );
     }
     Ok(StudyReport::new(variants, Shard::whole()))
@@ -171,10 +139,7 @@ pub fn check_shards(parts: &[(&str, Shard)], n: usize, unit: &str) -> Result<(),
             });
         }
         if shard.index == 0 || shard.index > count {
-            return Err(MergeError::BadShard {
-                file: file.to_string(),
-                shard,
-            });
+            return Err(MergeError::BadShard { file: file.to_string(), shard });
         }
         let slot = &mut seen[shard.index - 1];
         if let Some(other) = slot {
@@ -198,11 +163,7 @@ pub fn check_shards(parts: &[(&str, Shard)], n: usize, unit: &str) -> Result<(),
             }
         })
         .collect();
-    if missing.is_empty() {
-        Ok(())
-    } else {
-        Err(MergeError::MissingShards(missing.join(", ")))
-    }
+    if missing.is_empty() { Ok(()) } else { Err(MergeError::MissingShards(missing.join(", "))) }
 }
 
 /// The records of one variant from every part, checked against the

@@ -136,10 +136,7 @@ impl StudyOptions {
             if self.offset_bounds.is_some() || self.tilt_bounds.is_some() {
                 return fail(
                     offset,
-                    format!(
-                        "{offset} and {tilt} need {}",
-                        Param::Vary.with(Varied::Start.name())
-                    ),
+                    format!("{offset} and {tilt} need {}", Param::Vary.with(Varied::Start.name())),
                 );
             }
             return Ok(None);
@@ -174,10 +171,9 @@ impl StudyOptions {
         let p = Param::SobolSamples;
         match (self.sensitivity, self.sobol_samples) {
             (false, None) => Ok(None),
-            (false, Some(_)) => fail(
-                p,
-                format!("{p}: has no effect without {}", Param::Sensitivity),
-            ),
+            (false, Some(_)) => {
+                fail(p, format!("{p}: has no effect without {}", Param::Sensitivity))
+            }
             (true, Some(n)) if n < 2 => {
                 fail(p, format!("{p}: the base sample size must be at least 2"))
             }

@@ -68,11 +68,7 @@ impl LoadPath {
             max_path_error,
             increments_total: total,
             increments_max: max,
-            increments_mean: if seatings == 0 {
-                0.0
-            } else {
-                total as f64 / seatings as f64
-            },
+            increments_mean: if seatings == 0 { 0.0 } else { total as f64 / seatings as f64 },
         }
     }
 
@@ -150,11 +146,7 @@ impl PathTally {
 
     pub fn counts(&self) -> SeatingPaths {
         let n = |k: usize| self.paths[k].load(Ordering::Relaxed);
-        SeatingPaths {
-            uniform: n(0),
-            adaptive: n(1),
-            dynamic: n(2),
-        }
+        SeatingPaths { uniform: n(0), adaptive: n(1), dynamic: n(2) }
     }
 
     /// The seatings counted in the transition, if any.

@@ -56,12 +56,8 @@ impl StudyPlan {
     ) -> Result<Self, StudyError> {
         let settings = options.settings()?;
         let sobol = settings.sobol_samples.filter(|_| settings.shard.count == 1);
-        let mut plan = StudyPlan {
-            settings,
-            variants: Vec::with_capacity(models.len()),
-            sobol,
-            seatings: 0,
-        };
+        let mut plan =
+            StudyPlan { settings, variants: Vec::with_capacity(models.len()), sobol, seatings: 0 };
         let mut kept = 0usize;
         for (scene, coupling) in models {
             let mut v = plan.variant(scene, coupling, options)?;
@@ -118,13 +114,7 @@ impl StudyPlan {
             design_for(&scene, options, &s.variation).map_err(|e| e.in_file(&scene.file))?;
         let samples = s.shard.range(design.n).map_err(|e| e.at(Param::Shard))?;
         let streamed = streams(&design) && s.shard.count == 1;
-        Ok(Variant {
-            scene,
-            coupling,
-            design,
-            samples,
-            streamed,
-        })
+        Ok(Variant { scene, coupling, design, samples, streamed })
     }
 }
 
@@ -172,11 +162,7 @@ fn nearest_replicable(n: usize) -> String {
     };
     let below = (1..n).rev().find_map(fits);
     let above = (n + 1..).find_map(fits);
-    below
-        .into_iter()
-        .chain(above)
-        .collect::<Vec<_>>()
-        .join(" or ")
+    below.into_iter().chain(above).collect::<Vec<_>>().join(" or ")
 }
 
 /// Check that the settings can run on this scene: something varies, a

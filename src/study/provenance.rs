@@ -194,10 +194,9 @@ impl PreloadForceRecord {
     fn new(f: &PreloadForce) -> Self {
         let (law, spring) = match f.law {
             ForceLaw::Constant => ("constant", None),
-            ForceLaw::Spring {
-                stiffness,
-                free_length,
-            } => ("spring", Some((stiffness, free_length))),
+            ForceLaw::Spring { stiffness, free_length } => {
+                ("spring", Some((stiffness, free_length)))
+            }
             ForceLaw::Weight => ("weight", None),
         };
         PreloadForceRecord {
@@ -241,9 +240,7 @@ struct Fnv1a64(u64);
 
 impl std::io::Write for Fnv1a64 {
     fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
-        self.0 = buf
-            .iter()
-            .fold(self.0, |h, &b| (h ^ u64::from(b)).wrapping_mul(FNV_PRIME));
+        self.0 = buf.iter().fold(self.0, |h, &b| (h ^ u64::from(b)).wrapping_mul(FNV_PRIME));
         Ok(buf.len())
     }
 
@@ -256,9 +253,7 @@ impl std::io::Write for Fnv1a64 {
 /// prime 0x100000001b3): a stable content hash (std's hasher may change
 /// between Rust releases).
 pub fn fnv1a64(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(FNV_OFFSET, |h, &b| {
-        (h ^ u64::from(b)).wrapping_mul(FNV_PRIME)
-    })
+    bytes.iter().fold(FNV_OFFSET, |h, &b| (h ^ u64::from(b)).wrapping_mul(FNV_PRIME))
 }
 
 /// One line naming what produced an output: version, schema, solver,

@@ -173,11 +173,7 @@ impl VariantReport {
         let scene = &v.scene;
         let f = &scene.friction;
         let var = &s.variation;
-        let records = run
-            .records
-            .into_iter()
-            .map(|r| StudyRecord::new(v, var, r))
-            .collect();
+        let records = run.records.into_iter().map(|r| StudyRecord::new(v, var, r)).collect();
         VariantReport {
             fingerprint: Fingerprint::new(scene, s, &run.design),
             streamed: false,
@@ -222,10 +218,7 @@ impl VariantReport {
             friction: self.varies(Varied::Friction),
             preload: self.varies(Varied::Preload),
             tolerances: self.varies(Varied::Tolerances),
-            start: self.start_bounds.map(|[o, t]| StartBounds {
-                offset: o.into(),
-                tilt: t.into(),
-            }),
+            start: self.start_bounds.map(|[o, t]| StartBounds { offset: o.into(), tilt: t.into() }),
         }
     }
 }

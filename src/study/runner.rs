@@ -48,10 +48,7 @@ pub struct Progress<'a> {
 impl<'a> Progress<'a> {
     /// `tick` per sample, the seating paths counted into `tally`.
     pub fn with_tally(tick: &'a (dyn Fn() + Sync), tally: &'a PathTally) -> Self {
-        Progress {
-            tick,
-            tally: Some(tally),
-        }
+        Progress { tick, tally: Some(tally) }
     }
 
     fn record(&self, seated: &SeatedPose) {
@@ -106,11 +103,7 @@ pub fn recorded_output_names(scene: &Scene, variation: &Variation) -> Vec<String
         v.extend(output_names(scene));
     }
     if variation.tolerances {
-        v.extend(
-            output_names(scene)
-                .into_iter()
-                .map(|n| format!("{INTERCHANGE_PREFIX}{n}")),
-        );
+        v.extend(output_names(scene).into_iter().map(|n| format!("{INTERCHANGE_PREFIX}{n}")));
     }
     v
 }
@@ -133,12 +126,8 @@ pub fn run_variant<'a>(
     // point, a calibration's or prediction's model study): bounded before
     // anything is drawn, whatever the plan would stream.
     let kept = Some(v.samples.len());
-    super::bounds::check(
-        "seatings kept in memory",
-        kept,
-        super::bounds::MAX_KEPT_SEATINGS,
-    )
-    .map_err(in_file)?;
+    super::bounds::check("seatings kept in memory", kept, super::bounds::MAX_KEPT_SEATINGS)
+        .map_err(in_file)?;
     let rows = v.design.range(v.samples.clone()).map_err(in_file)?;
     let cannot_seat = super::verdict::cannot_seat(&v.scene, &v.coupling, &s.method)?;
     let records = evaluate_rows(s, v, v.samples.clone().zip(rows).collect(), progress)?;
@@ -166,16 +155,8 @@ pub fn run_chunked<'a>(
     let mut start = v.samples.start;
     while start < v.samples.end {
         let end = (start + chunk.max(1)).min(v.samples.end);
-        let rows = v
-            .design
-            .range(start..end)
-            .map_err(|e| e.in_file(v.file()))?;
-        sink(evaluate_rows(
-            s,
-            v,
-            (start..end).zip(rows).collect(),
-            progress,
-        )?)?;
+        let rows = v.design.range(start..end).map_err(|e| e.in_file(v.file()))?;
+        sink(evaluate_rows(s, v, (start..end).zip(rows).collect(), progress)?)?;
         start = end;
     }
     Ok(())
@@ -198,21 +179,12 @@ pub fn evaluate_rows<'a>(
     let var = s.variation;
     let file = v.file();
     let seat_err = |index: usize, mu: &[f64], source| {
-        StudyError::Seating {
-            index,
-            mu: mu.to_vec(),
-            source,
-        }
-        .in_file(file)
+        StudyError::Seating { index, mu: mu.to_vec(), source }.in_file(file)
     };
     // The reference: nominal friction and preload, from the touching pose, same solver.
     let nominal_load = Load::nominal(scene);
     let nominal = s.method.seat(coupling, &nominal_load).map_err(|source| {
-        StudyError::Nominal {
-            mu: nominal_load.mu.clone(),
-            source,
-        }
-        .in_file(file)
+        StudyError::Nominal { mu: nominal_load.mu.clone(), source }.in_file(file)
     })?;
     let points: Vec<_> = scene.evaluation_points.iter().map(|p| p.position).collect();
     // Every evaluation point's six components from the nominal seating to `pose`.
@@ -255,11 +227,7 @@ pub fn evaluate_rows<'a>(
                 outputs.extend(relative(seated.pose));
             }
             (progress.tick)();
-            Ok(SampleRecord {
-                index,
-                inputs: row,
-                outputs,
-            })
+            Ok(SampleRecord { index, inputs: row, outputs })
         })
         .collect::<Result<Vec<_>, StudyError>>()
 }

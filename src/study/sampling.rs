@@ -59,9 +59,7 @@ pub const DEFAULT_LHS_REPLICATES: usize = 5;
 /// The default replicate count of an LHS of `n` points, if n has a divisor in 2..=5 that leaves
 /// at least 2 points per replicate.
 pub fn default_replicates(n: usize) -> Option<usize> {
-    (2..=DEFAULT_LHS_REPLICATES)
-        .rev()
-        .find(|&r| n.is_multiple_of(r) && n / r >= 2)
+    (2..=DEFAULT_LHS_REPLICATES).rev().find(|&r| n.is_multiple_of(r) && n / r >= 2)
 }
 
 /// Seed of LHS replicate `j` of a design with seed `seed` (SplitMix64 of both; replicate 0 of
@@ -80,13 +78,7 @@ impl DesignSpec {
             (_, None) => return Err(StudyError::ZeroSamples),
         };
         validate(sampler, dims, n)?;
-        Ok(DesignSpec {
-            sampler,
-            dims,
-            n,
-            seed,
-            replicates: 1,
-        })
+        Ok(DesignSpec { sampler, dims, n, seed, replicates: 1 })
     }
 
     /// The same design split into `replicates` independent LHS (LHS only; `replicates` must
@@ -111,10 +103,7 @@ impl DesignSpec {
                 "{}: an LHS of {n} samples needs a replicate count that divides {n} and leaves at least 2 points per replicate (1 = a single LHS, no interval)",
                 Param::Replicates.with(r)
             ),
-            s => format!(
-                "{}: only an LHS is replicated, not {s}",
-                Param::Replicates.with(r)
-            ),
+            s => format!("{}: only an LHS is replicated, not {s}", Param::Replicates.with(r)),
         }))
     }
 
@@ -128,11 +117,7 @@ impl DesignSpec {
         let (dims, n, seed) = (self.dims, self.n, self.seed);
         validate(self.sampler, dims, n)?;
         if range.start > range.end || range.end > n {
-            return Err(StudyError::RangeOutOfBounds {
-                start: range.start,
-                end: range.end,
-                n,
-            });
+            return Err(StudyError::RangeOutOfBounds { start: range.start, end: range.end, n });
         }
         let ese = ese::EseParams::default();
         let mut rows = match self.sampler {
@@ -167,19 +152,12 @@ pub fn validate(sampler: Sampler, dims: usize, n: usize) -> Result<()> {
         Sampler::Corners => {
             let expected = corners::corner_count(dims)?;
             if n != expected {
-                return Err(StudyError::CornerCount {
-                    dims,
-                    expected,
-                    got: n,
-                });
+                return Err(StudyError::CornerCount { dims, expected, got: n });
             }
         }
         _ if n == 0 => return Err(StudyError::ZeroSamples),
         Sampler::Lhs if n > lhs::MAX_LHS_SAMPLES => {
-            return Err(StudyError::LhsTooLarge {
-                n,
-                max: lhs::MAX_LHS_SAMPLES,
-            });
+            return Err(StudyError::LhsTooLarge { n, max: lhs::MAX_LHS_SAMPLES });
         }
         _ => {}
     }
@@ -205,12 +183,5 @@ pub fn sample_range(
     range: Range<usize>,
 ) -> Result<Vec<Vec<f64>>> {
     let replicates = 1;
-    DesignSpec {
-        sampler,
-        dims,
-        n,
-        seed,
-        replicates,
-    }
-    .range(range)
+    DesignSpec { sampler, dims, n, seed, replicates }.range(range)
 }

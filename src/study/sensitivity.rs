@@ -68,9 +68,7 @@ pub fn regression(x: &[Vec<f64>], y: &[f64]) -> Result<Regression> {
         )));
     }
     if y.iter().chain(x.iter().flatten()).any(|v| !v.is_finite()) {
-        return Err(StudyError::NonFinite {
-            what: "sensitivity data".into(),
-        });
+        return Err(StudyError::NonFinite { what: "sensitivity data".into() });
     }
     let standardize = |v: &[f64]| -> Option<Vec<f64>> {
         let m = v.iter().sum::<f64>() / n as f64;
@@ -146,10 +144,8 @@ pub fn block(
     outputs: &[(usize, String)],
     samples: &[(&[f64], &[f64])],
 ) -> SensitivityBlock {
-    let x: Vec<Vec<f64>> = samples
-        .iter()
-        .map(|(row, _)| inputs.iter().map(|(j, _)| row[*j]).collect())
-        .collect();
+    let x: Vec<Vec<f64>> =
+        samples.iter().map(|(row, _)| inputs.iter().map(|(j, _)| row[*j]).collect()).collect();
     let dofs = outputs
         .iter()
         .map(|(k, name)| {

@@ -136,9 +136,7 @@ pub(crate) fn check_values(values: &[f64]) -> Result<()> {
         return Err(StudyError::TooFewSamples { n: values.len() });
     }
     if values.iter().any(|v| !v.is_finite()) {
-        return Err(StudyError::NonFinite {
-            what: "sample values".into(),
-        });
+        return Err(StudyError::NonFinite { what: "sample values".into() });
     }
     Ok(())
 }
@@ -186,10 +184,7 @@ pub fn summarize(values: &[f64], method: SigmaMethod) -> Result<Summary> {
 pub fn summarize_moments(m: &Moments) -> Result<Summary> {
     let (n, sigma, how) = (m.n as usize, m.sigma(), SigmaMethod::Iid.describe());
     let s = summary(n, m.mean, sigma, [m.min, m.max], None, how)?;
-    Ok(Summary {
-        sigma_interval: Some(sigma_interval_from_moments(m, interval::LEVEL)?),
-        ..s
-    })
+    Ok(Summary { sigma_interval: Some(sigma_interval_from_moments(m, interval::LEVEL)?), ..s })
 }
 
 fn summary(
@@ -201,9 +196,7 @@ fn summary(
     sigma_interval_method: String,
 ) -> Result<Summary> {
     if !(mean.is_finite() && sigma.is_finite()) {
-        return Err(StudyError::NonFinite {
-            what: "mean or sigma (overflow)".into(),
-        });
+        return Err(StudyError::NonFinite { what: "mean or sigma (overflow)".into() });
     }
     Ok(Summary {
         n,

@@ -43,11 +43,7 @@ pub struct StreamStats {
 
 impl StreamStats {
     pub fn new(outputs: usize) -> Self {
-        StreamStats {
-            moments: vec![Moments::new(); outputs],
-            not_centred: 0,
-            samples: 0,
-        }
+        StreamStats { moments: vec![Moments::new(); outputs], not_centred: 0, samples: 0 }
     }
 
     /// Push records (sorted by index); a non-finite output is an error
@@ -113,22 +109,15 @@ pub fn run_streamed<S: RecordSink>(
     let mut sink = open(&r).map_err(StudyError::sink)?;
     let mut st = StreamStats::new(names.len());
     let tally = PathTally::default();
-    run_chunked(
-        s,
-        v,
-        CHUNK,
-        Progress::with_tally(tick, &tally),
-        &mut |records| {
-            st.push(&records, &names).map_err(in_file)?;
-            match sink.as_mut() {
-                Some(k) => records.into_iter().try_for_each(|rec| {
-                    k.push(&StudyRecord::new(v, &s.variation, rec))
-                        .map_err(StudyError::sink)
-                }),
-                None => Ok(()),
-            }
-        },
-    )?;
+    run_chunked(s, v, CHUNK, Progress::with_tally(tick, &tally), &mut |records| {
+        st.push(&records, &names).map_err(in_file)?;
+        match sink.as_mut() {
+            Some(k) => records.into_iter().try_for_each(|rec| {
+                k.push(&StudyRecord::new(v, &s.variation, rec)).map_err(StudyError::sink)
+            }),
+            None => Ok(()),
+        }
+    })?;
     r.seating_paths = Some(tally.counts());
     r.unconverged = tally.unconverged();
     r.load_path = tally.load_path();

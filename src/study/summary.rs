@@ -19,14 +19,8 @@ use crate::dof::Dof;
 /// (in `names` order), and interchangeability statistics from the
 /// `interchange/...` outputs after them.
 fn split_points(names: &[String], summaries: &[Summary]) -> (Vec<PointStats>, Vec<PointStats>) {
-    let k = names
-        .iter()
-        .position(|n| n.starts_with(INTERCHANGE_PREFIX))
-        .unwrap_or(names.len());
-    (
-        point_stats(&names[..k], &summaries[..k]),
-        point_stats(&names[k..], &summaries[k..]),
-    )
+    let k = names.iter().position(|n| n.starts_with(INTERCHANGE_PREFIX)).unwrap_or(names.len());
+    (point_stats(&names[..k], &summaries[..k]), point_stats(&names[k..], &summaries[k..]))
 }
 
 /// One [`PointStats`] per six outputs (`point/<dof>_<SI unit>` over [`Dof::ALL`]),
@@ -94,9 +88,9 @@ impl VariantReport {
             .zip(&st.moments)
             .map(|(name, m)| {
                 summarize_moments(m).map_err(|e| match e {
-                    StudyError::NonFinite { what } => StudyError::NonFinite {
-                        what: format!("{name}: {what}"),
-                    },
+                    StudyError::NonFinite { what } => {
+                        StudyError::NonFinite { what: format!("{name}: {what}") }
+                    }
                     e => e,
                 })
             })
@@ -148,9 +142,7 @@ fn check_finite_records(records: &[&StudyRecord], names: &[String]) -> Result<()
     }
     let n = records.len() as f64;
     for (k, name) in names.iter().enumerate() {
-        let worst = records
-            .iter()
-            .max_by(|a, b| a.outputs[k].abs().total_cmp(&b.outputs[k].abs()));
+        let worst = records.iter().max_by(|a, b| a.outputs[k].abs().total_cmp(&b.outputs[k].abs()));
         if let Some(r) = worst
             && !(r.outputs[k] * r.outputs[k] * n).is_finite()
         {
@@ -180,16 +172,13 @@ fn sensitivity_blocks(v: &VariantReport) -> Vec<SensitivityBlock> {
         let inputs: Vec<(usize, Input)> = (v.inputs.iter().copied().enumerate())
             .filter(|(_, i)| i.is_tolerance() == tolerance)
             .collect();
-        let first = v
-            .output_names
-            .iter()
-            .position(|n| n.starts_with(INTERCHANGE_PREFIX) == tolerance);
+        let first =
+            v.output_names.iter().position(|n| n.starts_with(INTERCHANGE_PREFIX) == tolerance);
         let (Some(first), false) = (first, inputs.is_empty()) else {
             continue;
         };
-        let outputs: Vec<(usize, String)> = (first..first + Dof::ALL.len())
-            .map(|k| (k, v.output_names[k].clone()))
-            .collect();
+        let outputs: Vec<(usize, String)> =
+            (first..first + Dof::ALL.len()).map(|k| (k, v.output_names[k].clone())).collect();
         blocks.push(sensitivity::block(kind, &inputs, &outputs, &samples));
     }
     blocks
@@ -204,19 +193,13 @@ pub fn attach_sobol(v: &mut VariantReport, run: &SobolRun) {
         return;
     };
     for b in blocks.iter_mut() {
-        let cols: Vec<usize> = b
-            .inputs
-            .iter()
-            .filter_map(|input| inputs.iter().position(|i| i == input))
-            .collect();
+        let cols: Vec<usize> =
+            b.inputs.iter().filter_map(|input| inputs.iter().position(|i| i == input)).collect();
         let outputs: Vec<(usize, String)> = b
             .dofs
             .iter()
             .filter_map(|d| {
-                run.output_names
-                    .iter()
-                    .position(|n| *n == d.output)
-                    .map(|k| (k, d.output.clone()))
+                run.output_names.iter().position(|n| *n == d.output).map(|k| (k, d.output.clone()))
             })
             .collect();
         b.sobol = Some(run.block(&cols, &outputs));

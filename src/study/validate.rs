@@ -47,10 +47,7 @@ pub fn check_document(report: &StudyReport) -> Result<(), DocumentError> {
 fn check_friction(v: &VariantReport, at: &str) -> Result<(), DocumentError> {
     let (mu, spread) = (v.mu_static, v.spread);
     if !(0.0..=MU_MAX).contains(&mu) {
-        return Err(bad(
-            format!("{at}.mu_static"),
-            format!("{mu} is outside [0, {MU_MAX}]"),
-        ));
+        return Err(bad(format!("{at}.mu_static"), format!("{mu} is outside [0, {MU_MAX}]")));
     }
     if !(spread >= 0.0 && spread <= mu && mu + spread <= MU_MAX) {
         return Err(bad(
@@ -65,10 +62,7 @@ fn check_friction(v: &VariantReport, at: &str) -> Result<(), DocumentError> {
         return Err(bad(format!("{at}.dynamic_ratio"), reason));
     }
     let fp = &v.fingerprint;
-    for (name, a, b) in [
-        ("mu_static", fp.mu_static, mu),
-        ("spread", fp.spread, spread),
-    ] {
+    for (name, a, b) in [("mu_static", fp.mu_static, mu), ("spread", fp.spread, spread)] {
         if a.to_bits() != b.to_bits() {
             let reason = format!("{a} differs from the variant's {name} {b}");
             return Err(bad(format!("{at}.fingerprint.{name}"), reason));
@@ -89,10 +83,7 @@ fn check_samples(v: &VariantReport, at: &str) -> Result<(), DocumentError> {
         );
         return Err(bad(field, reason));
     }
-    let range = v
-        .shard
-        .range(n)
-        .map_err(|e| bad(format!("{at}.shard"), e.to_string()))?;
+    let range = v.shard.range(n).map_err(|e| bad(format!("{at}.shard"), e.to_string()))?;
     if !v.records.is_empty() && v.records.len() != range.len() {
         let reason = format!(
             "{n} samples (shard {}: {} of them), but the file holds {} records",
@@ -129,17 +120,10 @@ fn check_load_path(v: &VariantReport, at: &str) -> Result<(), DocumentError> {
         return Ok(());
     };
     let field = format!("{at}.load_path");
-    let shard = v
-        .shard
-        .range(v.samples)
-        .map(|r| r.len())
-        .unwrap_or(v.samples);
+    let shard = v.shard.range(v.samples).map(|r| r.len()).unwrap_or(v.samples);
     let reason = if p.seatings > 2 * shard {
         format!("{} seatings for {shard} samples", p.seatings)
-    } else if p
-        .max_path_error
-        .is_some_and(|e| !(e >= 0.0 && e.is_finite()))
-    {
+    } else if p.max_path_error.is_some_and(|e| !(e >= 0.0 && e.is_finite())) {
         "max_path_error must be a finite number >= 0".to_string()
     } else if (p.increments_max as u64) > p.increments_total
         || (p.seatings > 0 && p.increments_max == 0)
@@ -151,10 +135,7 @@ fn check_load_path(v: &VariantReport, at: &str) -> Result<(), DocumentError> {
     } else if p.seatings > 0
         && p.increments_mean.to_bits() != (p.increments_total as f64 / p.seatings as f64).to_bits()
     {
-        format!(
-            "increments_mean {} is not increments_total / seatings",
-            p.increments_mean
-        )
+        format!("increments_mean {} is not increments_total / seatings", p.increments_mean)
     } else {
         return Ok(());
     };
@@ -170,21 +151,15 @@ fn check_record(v: &VariantReport, r: &StudyRecord, at: &str) -> Result<(), Docu
         return Err(bad(format!("{at}.index"), reason));
     }
     let k = v.inputs.len();
-    for (name, len) in [
-        ("inputs_si", r.physical.len()),
-        ("design_u", r.inputs.len()),
-    ] {
+    for (name, len) in [("inputs_si", r.physical.len()), ("design_u", r.inputs.len())] {
         if len != k {
             let reason = format!("{len} values, the variant varies {k} inputs");
             return Err(bad(format!("{at}.{name}"), reason));
         }
     }
     if !(r.outputs.is_empty() || r.outputs.len() == v.output_names.len()) {
-        let reason = format!(
-            "{} values, output_names has {}",
-            r.outputs.len(),
-            v.output_names.len()
-        );
+        let reason =
+            format!("{} values, output_names has {}", r.outputs.len(), v.output_names.len());
         return Err(bad(format!("{at}.outputs_si"), reason));
     }
     if let Some(j) = r.inputs.iter().position(|u| !(0.0..=1.0).contains(u)) {
@@ -201,10 +176,8 @@ fn check_record(v: &VariantReport, r: &StudyRecord, at: &str) -> Result<(), Docu
     let slack = 1e-9 * hi.max(1.0);
     for (j, (input, mu)) in v.inputs.iter().zip(&r.physical).enumerate() {
         if matches!(input, Input::Mu(_)) && !(*mu >= lo - slack && *mu <= hi + slack) {
-            let reason = format!(
-                "{} = {mu} is outside mu_static +- spread = [{lo}, {hi}]",
-                input.name()
-            );
+            let reason =
+                format!("{} = {mu} is outside mu_static +- spread = [{lo}, {hi}]", input.name());
             return Err(bad(format!("{at}.inputs_si[{j}]"), reason));
         }
     }
@@ -226,10 +199,7 @@ fn check_point(v: &VariantReport, p: &PointStats, at: &str) -> Result<(), Docume
     let low = p.sigma_ci90_low.map(|d| d.values());
     let high = p.sigma_ci90_high.map(|d| d.values());
     for (d, s) in p.sigma.values().iter().enumerate() {
-        let (l, h) = (
-            low.map_or(0.0, |x| x[d]),
-            high.map_or(f64::INFINITY, |x| x[d]),
-        );
+        let (l, h) = (low.map_or(0.0, |x| x[d]), high.map_or(f64::INFINITY, |x| x[d]));
         if !(*s >= 0.0 && l >= 0.0 && l <= h) {
             let reason = format!(
                 "sigma {s} with 90 % interval [{l}, {h}]: a sigma is >= 0 and its interval ordered"

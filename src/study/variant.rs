@@ -31,10 +31,6 @@ impl Variant {
     /// the same inputs (a sweep's design point, a calibration's parameter
     /// values); `scene` is assembled as `coupling`.
     pub fn with_model(&self, scene: Scene, coupling: Coupling) -> Variant {
-        Variant {
-            scene,
-            coupling,
-            ..self.clone()
-        }
+        Variant { scene, coupling, ..self.clone() }
     }
 }

@@ -37,12 +37,7 @@ pub struct Variation {
 
 impl Default for Variation {
     fn default() -> Self {
-        Variation {
-            friction: true,
-            preload: false,
-            tolerances: false,
-            start: None,
-        }
+        Variation { friction: true, preload: false, tolerances: false, start: None }
     }
 }
 
@@ -94,9 +89,7 @@ impl Variation {
                 pairs.filter(|&(_, a)| bound[a] > 0.0).collect()
             };
             v.extend(
-                per_ball(&b.ball_position_m)
-                    .into_iter()
-                    .map(|(k, a)| Input::BallPosition(k, a)),
+                per_ball(&b.ball_position_m).into_iter().map(|(k, a)| Input::BallPosition(k, a)),
             );
             if b.surface_normal_m > 0.0 {
                 v.extend((0..surfaces).map(Input::SurfaceNormal));
@@ -170,11 +163,7 @@ impl Variation {
             f.point += offset;
             f.direction = UnitQuaternion::from_scaled_axis(tilt) * f.direction;
         }
-        Sample {
-            load: Load { mu, preload, start },
-            tolerances: tol,
-            physical,
-        }
+        Sample { load: Load { mu, preload, start }, tolerances: tol, physical }
     }
 }
 

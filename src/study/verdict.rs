@@ -34,11 +34,7 @@ pub fn cannot_seat(
     if f.mu_static == 0.0 && f.spread == 0.0 {
         return Ok(None);
     }
-    let d = if f.spread > 0.0 {
-        f.spread
-    } else {
-        0.1 * f.mu_static
-    };
+    let d = if f.spread > 0.0 { f.spread } else { 0.1 * f.mu_static };
     let n = coupling.contacts.len();
     let method = match method {
         Method::QuasiStatic(_) => *method,
@@ -49,19 +45,12 @@ pub fn cannot_seat(
     for mu in [(f.mu_static - d).max(0.0), f.mu_static + d] {
         let load = nominal.with_mu(&vec![mu; n]);
         let s = method.seat(coupling, &load).map_err(|source| {
-            StudyError::FrictionProbe {
-                mu: load.mu.clone(),
-                source,
-            }
-            .in_file(&scene.file)
+            StudyError::FrictionProbe { mu: load.mu.clone(), source }.in_file(&scene.file)
         })?;
         poses.push(s.pose());
     }
     let p = &scene.evaluation_points[0].position;
-    let moves = PointPose::between(&poses[0], &poses[1], p)
-        .components()
-        .iter()
-        .any(|c| *c != 0.0);
+    let moves = PointPose::between(&poses[0], &poses[1], p).components().iter().any(|c| *c != 0.0);
     Ok((!moves).then(|| reason(f.mu_static, f.spread)))
 }
 

@@ -44,10 +44,7 @@ fn drain(path: &Path) -> std::thread::JoinHandle<String> {
     let path = path.to_path_buf();
     std::thread::spawn(move || {
         let mut s = String::new();
-        fs::File::open(path)
-            .unwrap()
-            .read_to_string(&mut s)
-            .unwrap();
+        fs::File::open(path).unwrap().read_to_string(&mut s).unwrap();
         s
     })
 }
@@ -78,21 +75,10 @@ fn trace_to_dev_stdout_writes_to_stdout() {
         "--force",
     ]);
     assert!(ok, "{err}");
-    assert!(
-        out.contains("\ntime_s,load_fraction,x_m"),
-        "the trace header on stdout"
-    );
-    let rows = out
-        .lines()
-        .filter(|l| l.starts_with(|c: char| c.is_ascii_digit()))
-        .count();
+    assert!(out.contains("\ntime_s,load_fraction,x_m"), "the trace header on stdout");
+    let rows = out.lines().filter(|l| l.starts_with(|c: char| c.is_ascii_digit())).count();
     assert!(rows > 100, "the trace rows on stdout: {rows}");
-    assert!(
-        fs::symlink_metadata("/dev/stdout")
-            .unwrap()
-            .file_type()
-            .is_symlink()
-    );
+    assert!(fs::symlink_metadata("/dev/stdout").unwrap().file_type().is_symlink());
 }
 
 #[test]
@@ -104,19 +90,10 @@ fn symlink_to_a_regular_file_is_replaced_at_its_target() {
     std::os::unix::fs::symlink("real.html", &link).unwrap();
     let l = link.display().to_string();
     let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", &l]);
-    assert!(
-        !ok && err.contains("exists"),
-        "an existing target needs --force: {err}"
-    );
+    assert!(!ok && err.contains("exists"), "an existing target needs --force: {err}");
     let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", &l, "--force"]);
     assert!(ok, "{err}");
-    assert!(
-        fs::symlink_metadata(&link)
-            .unwrap()
-            .file_type()
-            .is_symlink(),
-        "the link stays"
-    );
+    assert!(fs::symlink_metadata(&link).unwrap().file_type().is_symlink(), "the link stays");
     let text = fs::read_to_string(&real).unwrap();
     assert!(text.contains("<html"), "the target holds the report");
     assert!(hidden(dir.path()).is_empty(), "no temporary left");
@@ -130,17 +107,8 @@ fn dangling_symlink_creates_its_target() {
     let l = link.display().to_string();
     let (ok, _, err) = common::kinrepro(&["study", &scene(), "--html", &l]);
     assert!(ok, "{err}");
-    assert!(
-        fs::symlink_metadata(&link)
-            .unwrap()
-            .file_type()
-            .is_symlink()
-    );
-    assert!(
-        fs::read_to_string(dir.path().join("new.html"))
-            .unwrap()
-            .contains("<html")
-    );
+    assert!(fs::symlink_metadata(&link).unwrap().file_type().is_symlink());
+    assert!(fs::read_to_string(dir.path().join("new.html")).unwrap().contains("<html"));
 }
 
 #[test]
@@ -152,37 +120,18 @@ fn fifo_and_link_to_fifo_are_written_through() {
     std::os::unix::fs::symlink("trace.fifo", &link).unwrap();
     let f = fifo.display().to_string();
     let (ok, _, err) = common::kinrepro(&["run", &scene(), "--solver", "dynamic", "--trace", &f]);
-    assert!(
-        !ok && err.contains("FIFO") && err.contains("--force"),
-        "{err}"
-    );
+    assert!(!ok && err.contains("FIFO") && err.contains("--force"), "{err}");
     for path in [&fifo, &link] {
         let reader = drain(&fifo);
         let p = path.display().to_string();
-        let args = [
-            "run",
-            &scene(),
-            "--solver",
-            "dynamic",
-            "--trace",
-            &p,
-            "--force",
-        ];
+        let args = ["run", &scene(), "--solver", "dynamic", "--trace", &p, "--force"];
         let (ok, _, err) = common::kinrepro(&args);
         assert!(ok, "{err}");
         let text = reader.join().unwrap();
-        assert!(
-            text.contains("\ntime_s,load_fraction"),
-            "the trace went through {p}"
-        );
+        assert!(text.contains("\ntime_s,load_fraction"), "the trace went through {p}");
         assert!(fs::symlink_metadata(&fifo).unwrap().file_type().is_fifo());
     }
-    assert!(
-        fs::symlink_metadata(&link)
-            .unwrap()
-            .file_type()
-            .is_symlink()
-    );
+    assert!(fs::symlink_metadata(&link).unwrap().file_type().is_symlink());
     assert!(hidden(dir.path()).is_empty(), "no temporary left");
 }
 
@@ -200,12 +149,7 @@ fn contents(dir: &Path) -> Vec<(String, Vec<u8>)> {
     let mut v: Vec<_> = fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap())
-        .map(|e| {
-            (
-                e.file_name().to_string_lossy().into_owned(),
-                fs::read(e.path()).unwrap(),
-            )
-        })
+        .map(|e| (e.file_name().to_string_lossy().into_owned(), fs::read(e.path()).unwrap()))
         .collect();
     v.sort();
     v
@@ -219,16 +163,7 @@ fn signal_during_study_leaves_out_folder_as_it_was() {
     for (signal, code) in [("TERM", 143), ("INT", 130)] {
         let dir = tempfile::tempdir().unwrap();
         let d = dir.path().display().to_string();
-        let small = [
-            "study",
-            &scene(),
-            "--sampler",
-            "mc",
-            "--samples",
-            "40",
-            "--out",
-            &d,
-        ];
+        let small = ["study", &scene(), "--sampler", "mc", "--samples", "40", "--out", &d];
         let (ok, _, err) = common::kinrepro(&small);
         assert!(ok, "{err}");
         let before = contents(dir.path());
@@ -243,23 +178,14 @@ fn signal_during_study_leaves_out_folder_as_it_was() {
         // Wait until the run streams its samples into its temporary.
         wait_for_temporary(dir.path());
         let pid = child.id().to_string();
-        let sent = Command::new("kill")
-            .args([&format!("-{signal}"), &pid])
-            .status();
+        let sent = Command::new("kill").args([&format!("-{signal}"), &pid]).status();
         assert!(sent.unwrap().success());
         let out = child.wait_with_output().unwrap();
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(code), "SIG{signal}: {err}");
         assert!(err.contains("interrupted"), "{err}");
-        assert!(
-            hidden(dir.path()).is_empty(),
-            "SIG{signal} left {:?}",
-            hidden(dir.path())
-        );
-        assert!(
-            contents(dir.path()) == before,
-            "SIG{signal}: the earlier files are intact"
-        );
+        assert!(hidden(dir.path()).is_empty(), "SIG{signal} left {:?}", hidden(dir.path()));
+        assert!(contents(dir.path()) == before, "SIG{signal}: the earlier files are intact");
     }
 }
 
@@ -289,14 +215,8 @@ fn huge_history_file_is_refused_at_its_size_bound() {
     ]);
     let seconds = start.elapsed().as_secs_f64();
     assert!(!ok, "refused");
-    assert!(
-        err.contains(&p) && err.contains("1073741824 bytes"),
-        "{err}"
-    );
-    assert!(
-        err.contains(&kinrepro::input::MAX_INPUT_BYTES.to_string()),
-        "{err}"
-    );
+    assert!(err.contains(&p) && err.contains("1073741824 bytes"), "{err}");
+    assert!(err.contains(&kinrepro::input::MAX_INPUT_BYTES.to_string()), "{err}");
     assert!(seconds < 0.5, "refused in {seconds} s");
 }
 
@@ -309,10 +229,7 @@ fn sobol_samples_beyond_memory_is_a_clear_error() {
         let (ok, _, err) = common::kinrepro(&args);
         assert!(!ok && !err.contains("panicked"), "{err}");
         let bound = kinrepro::study::bounds::MAX_KEPT_SEATINGS.to_string();
-        assert!(
-            err.starts_with("error: --sobol-samples:") && err.contains(&bound),
-            "{err}"
-        );
+        assert!(err.starts_with("error: --sobol-samples:") && err.contains(&bound), "{err}");
     }
 }
 
@@ -325,30 +242,13 @@ fn studies_that_keep_their_records_are_bounded() {
     let s02 = root.join("scenes/02_maxwell_pins_steel.toml");
     let cal = root.join("docs/calibration/calibration_02.json");
     let measured = root.join("docs/calibration/measured_02.csv");
-    let (s02, cal, measured) = (
-        s02.to_str().unwrap(),
-        cal.to_str().unwrap(),
-        measured.to_str().unwrap(),
-    );
+    let (s02, cal, measured) =
+        (s02.to_str().unwrap(), cal.to_str().unwrap(), measured.to_str().unwrap());
     let bound = kinrepro::study::bounds::MAX_KEPT_SEATINGS.to_string();
     let s01 = scene();
     let cases: [&[&str]; 3] = [
-        &[
-            "predict",
-            s02,
-            "--calibration",
-            cal,
-            "--samples",
-            "1000000000",
-        ],
-        &[
-            "calibrate",
-            s02,
-            "--measured",
-            measured,
-            "--model-samples",
-            "1000000000",
-        ],
+        &["predict", s02, "--calibration", cal, "--samples", "1000000000"],
+        &["calibrate", s02, "--measured", measured, "--model-samples", "1000000000"],
         &[
             "sweep",
             &s01,
@@ -375,14 +275,8 @@ fn convergence_mesh_beyond_memory_is_a_clear_error() {
         let start = std::time::Instant::now();
         let (ok, _, err) = common::kinrepro(&["validate-hertz", "--convergence", level]);
         assert!(!ok && !err.contains("panicked"), "{err}");
-        assert!(
-            err.starts_with("error: --convergence:") && err.contains("nodes"),
-            "{err}"
-        );
-        assert!(
-            start.elapsed().as_secs_f64() < 5.0,
-            "refused before any solve"
-        );
+        assert!(err.starts_with("error: --convergence:") && err.contains("nodes"), "{err}");
+        assert!(start.elapsed().as_secs_f64() < 5.0, "refused before any solve");
     }
 }
 
@@ -392,17 +286,11 @@ fn convergence_mesh_beyond_memory_is_a_clear_error() {
 fn mesh_node_estimate_counts_the_built_mesh() {
     use kinrepro::fe::MeshOptions;
     for rel in [0.3, 0.18, 0.12, 0.07] {
-        let opt = MeshOptions {
-            element_size_rel: rel,
-            ..MeshOptions::default()
-        };
+        let opt = MeshOptions { element_size_rel: rel, ..MeshOptions::default() };
         let mesh = kinrepro::fe::validate::build_mesh(1.0, 1.0, &opt).unwrap();
         let built = mesh.nodes.len() as f64;
         let est = opt.estimated_nodes();
-        assert!(
-            (est / built - 1.0).abs() < 0.25,
-            "h = {rel}: estimate {est}, built {built}"
-        );
+        assert!((est / built - 1.0).abs() < 0.25, "h = {rel}: estimate {est}, built {built}");
     }
 }
 
@@ -418,16 +306,10 @@ fn tiny_inertia_is_refused_at_the_dynamic_step_bound() {
     let p = path.display().to_string();
     let start = std::time::Instant::now();
     let (ok, _, err) = common::kinrepro(&["run", &p, "--solver", "dynamic"]);
-    assert!(
-        !ok && err.contains("[dynamics]") && err.contains("inertia"),
-        "{err}"
-    );
+    assert!(!ok && err.contains("[dynamics]") && err.contains("inertia"), "{err}");
     let bound = kinrepro::solve::dynamic::MAX_STEPS.to_string();
     assert!(err.contains(&p) && err.contains(&bound), "{err}");
-    assert!(
-        start.elapsed().as_secs_f64() < 5.0,
-        "refused before stepping"
-    );
+    assert!(start.elapsed().as_secs_f64() < 5.0, "refused before stepping");
 }
 
 /// A run estimated above a minute says so before it starts: 2e6
@@ -439,15 +321,9 @@ fn long_runs_announce_their_estimate() {
     use kinrepro::study::bounds::estimate_note;
     let qs = Method::default();
     let note = estimate_note(2_000_000, &qs, 1).expect("100 s is announced");
-    assert!(
-        note.contains("2000000 seatings") && note.contains("2 min"),
-        "{note}"
-    );
+    assert!(note.contains("2000000 seatings") && note.contains("2 min"), "{note}");
     assert!(estimate_note(1_000_000, &qs, 1).is_none());
-    assert!(
-        estimate_note(2_000_000, &qs, 2).is_none(),
-        "50 s on two threads"
-    );
+    assert!(estimate_note(2_000_000, &qs, 2).is_none(), "50 s on two threads");
 }
 
 /// 101 evaluation points are refused at the 101st, naming the field and the
@@ -472,10 +348,7 @@ fn evaluation_points_are_bounded() {
         } else {
             assert!(!ok, "{err}");
             let field = format!("evaluation_points[{}]", bound + 1);
-            assert!(
-                err.contains(&field) && err.contains(&format!("at most {bound}")),
-                "{err}"
-            );
+            assert!(err.contains(&field) && err.contains(&format!("at most {bound}")), "{err}");
         }
     }
 }

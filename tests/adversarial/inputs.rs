@@ -22,9 +22,7 @@ fn a_measurement_summary_is_checked_like_a_scene() {
         ("dof,unit,sigma,cycles\nx,nm,12,100000000000\n", 2, "cycles"),
         ("dof,unit,sigma,cycles,extra\nx,nm,12,50,7\n", 1, "extra"),
     ] {
-        let e = Measurement::parse(text, "m.csv", None)
-            .unwrap_err()
-            .to_string();
+        let e = Measurement::parse(text, "m.csv", None).unwrap_err().to_string();
         assert!(
             e.starts_with(&format!("m.csv: line {line}, column ")) && e.contains(field),
             "{text}: {e}"
@@ -44,10 +42,7 @@ fn a_calibration_file_is_checked_like_a_scene() {
     let low = spread["low"].as_f64().unwrap();
     type Edit = Box<dyn Fn(&mut serde_json::Value)>;
     let cases: Vec<(&str, Edit)> = vec![
-        (
-            "outside",
-            Box::new(move |v| v["parameters"]["spread"]["estimate"] = (2.0 * high).into()),
-        ),
+        ("outside", Box::new(move |v| v["parameters"]["spread"]["estimate"] = (2.0 * high).into())),
         (
             "low > high",
             Box::new(move |v| {
@@ -73,15 +68,9 @@ fn a_calibration_file_is_checked_like_a_scene() {
     for (what, edit) in cases {
         let mut w = v.clone();
         edit(&mut w);
-        let e = Calibration::parse(&w.to_string(), "cal.json")
-            .unwrap_err()
-            .to_string();
+        let e = Calibration::parse(&w.to_string(), "cal.json").unwrap_err().to_string();
         assert!(e.starts_with("cal.json: "), "{what}: {e}");
-        let field = if what == "huge region" {
-            "region"
-        } else {
-            "parameters.spread"
-        };
+        let field = if what == "huge region" { "region" } else { "parameters.spread" };
         assert!(e.contains(field), "{what}: {e}");
     }
 }
@@ -91,23 +80,11 @@ fn a_reference_csv_refuses_duplicates_and_absurd_values_with_its_line() {
     use kinrepro::report::study::reference::parse_reference;
     let head = "label,scene,point,x_nm,y_nm,z_nm,phi_x_nrad,phi_y_nrad,phi_z_nrad\n";
     let row = "paper,01_maxwell_vgroove_steel,centre,1,2,3,4,5,\n";
-    assert_eq!(
-        parse_reference(&format!("{head}{row}"), "r.csv")
-            .unwrap()
-            .len(),
-        1
-    );
-    let e = parse_reference(&format!("{head}{row}{row}"), "r.csv")
-        .unwrap_err()
-        .to_string();
-    assert!(
-        e.starts_with("r.csv:3: row: ") && e.contains("twice"),
-        "{e}"
-    );
+    assert_eq!(parse_reference(&format!("{head}{row}"), "r.csv").unwrap().len(), 1);
+    let e = parse_reference(&format!("{head}{row}{row}"), "r.csv").unwrap_err().to_string();
+    assert!(e.starts_with("r.csv:3: row: ") && e.contains("twice"), "{e}");
     let big = "paper,01_maxwell_vgroove_steel,centre,1e308,2,3,4,5,\n";
-    let e = parse_reference(&format!("{head}{big}"), "r.csv")
-        .unwrap_err()
-        .to_string();
+    let e = parse_reference(&format!("{head}{big}"), "r.csv").unwrap_err().to_string();
     assert!(e.starts_with("r.csv:2: x_nm: "), "{e}");
 }
 
@@ -118,9 +95,7 @@ fn a_byte_order_mark_is_accepted_in_every_csv_kinrepro_reads() {
     let bom = '\u{feff}';
     let m = "x_nm,y_nm\n1,2\n3,5\n4,1\n";
     assert_eq!(
-        Measurement::parse(&format!("{bom}{m}"), "m.csv", None)
-            .unwrap()
-            .data,
+        Measurement::parse(&format!("{bom}{m}"), "m.csv", None).unwrap().data,
         Measurement::parse(m, "m.csv", None).unwrap().data
     );
     let r = "label,scene,point,x_nm,y_nm,z_nm,phi_x_nrad,phi_y_nrad,phi_z_nrad\na,s,centre,1,2,3,4,5,6\n";
@@ -131,10 +106,7 @@ fn a_byte_order_mark_is_accepted_in_every_csv_kinrepro_reads() {
     let dir = tempfile::tempdir().unwrap();
     let h = "P_N,Qx_N,Qy_N\n10,0,0\n10,1,0\n10,2,0\n";
     let mut outs = Vec::new();
-    for (name, text) in [
-        ("plain.csv", h.to_string()),
-        ("bom.csv", format!("{bom}{h}")),
-    ] {
+    for (name, text) in [("plain.csv", h.to_string()), ("bom.csv", format!("{bom}{h}"))] {
         std::fs::write(dir.path().join(name), text).unwrap();
         let (rc, out, err) = run_in(
             dir.path(),
@@ -180,27 +152,12 @@ fn names_reach_the_terminal_escaped_and_a_spreadsheet_as_text() {
             !out.chars().any(|c| c.is_control() && c != '\n'),
             "{format}: a raw control character reached stdout"
         );
-        assert!(
-            out.contains("a\\u{0}b\\u{7}c\\u{1b}[31md\\re"),
-            "{format}: {out}"
-        );
+        assert!(out.contains("a\\u{0}b\\u{7}c\\u{1b}[31md\\re"), "{format}: {out}");
     }
     let (_, out, _) = run_in(d, &["check", s]);
     assert!(!out.chars().any(|c| c.is_control() && c != '\n'), "{out}");
     // Every CSV cell a spreadsheet would run as a formula starts with `'`.
-    let (_, csv, _) = run_in(
-        d,
-        &[
-            "study",
-            s,
-            "--samples",
-            "4",
-            "--format",
-            "csv",
-            "--out",
-            "o",
-        ],
-    );
+    let (_, csv, _) = run_in(d, &["study", s, "--samples", "4", "--format", "csv", "--out", "o"]);
     let files: Vec<String> = std::fs::read_dir(d.join("o"))
         .unwrap()
         .filter_map(|e| {
@@ -235,12 +192,7 @@ fn evaluation_point_names_are_unique_and_not_empty() {
         format!("\n[[evaluation_points]]\nname = \"{name}\"\nposition = [0.0, 0.0, {z}]\n")
     };
     for (file, points, line, reason) in [
-        (
-            "dup.toml",
-            point("a", 0.0) + &point("a", 0.01),
-            7,
-            "also the name of evaluation point 1",
-        ),
+        ("dup.toml", point("a", 0.0) + &point("a", 0.01), 7, "also the name of evaluation point 1"),
         ("empty.toml", point(" ", 0.0), 3, "empty"),
     ] {
         let base = std::fs::read_to_string(common::scene("01_maxwell_vgroove_steel.toml")).unwrap();
@@ -265,45 +217,20 @@ fn reference_rows_not_shown_are_named() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     let s = variant(d, "s01.toml", &[]);
-    let (rc, json, err) = run_in(
-        d,
-        &[
-            "study",
-            s.to_str().unwrap(),
-            "--samples",
-            "6",
-            "--format",
-            "json",
-        ],
-    );
+    let (rc, json, err) =
+        run_in(d, &["study", s.to_str().unwrap(), "--samples", "6", "--format", "json"]);
     assert_eq!(rc, 0, "{err}");
     std::fs::write(d.join("s.json"), json).unwrap();
     let head = "label,scene,point,x_nm,y_nm,z_nm,phi_x_nrad,phi_y_nrad,phi_z_nrad\n";
     let rows = "a,s01,centre,1,2,3,4,5,\nb,s01,centre,1,2,3,4,5,\na,s99,centre,1,2,3,4,5,\n";
     std::fs::write(d.join("r.csv"), format!("{head}{rows}")).unwrap();
-    let args = [
-        "report",
-        "s.json",
-        "--reference",
-        "r.csv",
-        "--out",
-        "r.html",
-    ];
+    let args = ["report", "s.json", "--reference", "r.csv", "--out", "r.html"];
     let (rc, _, err) = run_in(d, &args);
     assert_eq!(rc, 0, "{err}");
-    let warning = err
-        .lines()
-        .find(|l| l.starts_with("warning: r.csv:"))
-        .expect(&err);
+    let warning = err.lines().find(|l| l.starts_with("warning: r.csv:")).expect(&err);
     assert!(warning.contains("2 reference row(s)"), "{warning}");
-    assert!(
-        warning.contains("`b` s01/centre") && warning.contains("`a` s99/centre"),
-        "{warning}"
-    );
-    assert!(
-        !warning.contains("`a` s01/centre"),
-        "the shown row is not listed: {warning}"
-    );
+    assert!(warning.contains("`b` s01/centre") && warning.contains("`a` s99/centre"), "{warning}");
+    assert!(!warning.contains("`a` s01/centre"), "the shown row is not listed: {warning}");
 }
 
 /// A measured covariance with a DOF that did not move (singular, 50 cycles
@@ -315,19 +242,8 @@ fn goodness_of_fit_names_why_it_cannot_test() {
     use nalgebra::DMatrix;
     let fitted = DMatrix::from_diagonal_element(2, 2, 1.0);
     let singular = DMatrix::from_row_slice(2, 2, &[1.0, 0.0, 0.0, 0.0]);
-    let g = goodness_of_fit(
-        &Observed::Covariance {
-            s: singular.clone(),
-            n: 50,
-        },
-        &fitted,
-        1,
-    );
-    assert!(
-        g.statistic.is_none() && g.test.contains("singular"),
-        "{}",
-        g.test
-    );
+    let g = goodness_of_fit(&Observed::Covariance { s: singular.clone(), n: 50 }, &fitted, 1);
+    assert!(g.statistic.is_none() && g.test.contains("singular"), "{}", g.test);
     assert!(!g.test.contains("fewer cycles"), "{}", g.test);
     let g = goodness_of_fit(&Observed::Covariance { s: singular, n: 2 }, &fitted, 1);
     assert!(g.test.contains("fewer cycles"), "{}", g.test);
@@ -349,11 +265,6 @@ fn a_cycles_file_refuses_absurd_readings() {
     Measurement::parse(&ok, "m.csv", None).unwrap();
     let bad = ok.replacen("-3,2\n", "1e19,2\n", 1);
     assert_ne!(bad, ok);
-    let e = Measurement::parse(&bad, "m.csv", None)
-        .unwrap_err()
-        .to_string();
-    assert!(
-        e.starts_with("m.csv: line 2, column 1 (x_nm)") && e.contains("within 1 m"),
-        "{e}"
-    );
+    let e = Measurement::parse(&bad, "m.csv", None).unwrap_err().to_string();
+    assert!(e.starts_with("m.csv: line 2, column 1 (x_nm)") && e.contains("within 1 m"), "{e}");
 }

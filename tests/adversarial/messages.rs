@@ -16,10 +16,7 @@ fn refused(args: &[&str], names: &[&str]) -> String {
     assert!(!ok, "{args:?} should be refused, stderr: {err}");
     assert!(!err.contains("panicked"), "{args:?}: {err}");
     for n in names {
-        assert!(
-            err.contains(n),
-            "{args:?}: the message should name `{n}`: {err}"
-        );
+        assert!(err.contains(n), "{args:?}: the message should name `{n}`: {err}");
     }
     err
 }
@@ -47,34 +44,15 @@ fn contact(extra: &[&str]) -> (bool, String, String) {
 #[test]
 fn contact_load_far_outside_hertz_is_refused() {
     let (a, _) = hertz_circle(1e300, 0.005, E_STAR_STEEL);
-    assert!(
-        a > 0.005,
-        "the case must have a contact wider than the ball"
-    );
-    let (ok, out, err) = contact(&[
-        "--shape",
-        "sphere-plane",
-        "--radius1",
-        "0.005",
-        "--load",
-        "1e300",
-    ]);
+    assert!(a > 0.005, "the case must have a contact wider than the ball");
+    let (ok, out, err) =
+        contact(&["--shape", "sphere-plane", "--radius1", "0.005", "--load", "1e300"]);
     assert!(!ok && out.is_empty(), "{out}");
-    assert!(
-        err.contains("--load 1e300") && err.contains("body radius"),
-        "{err}"
-    );
+    assert!(err.contains("--load 1e300") && err.contains("body radius"), "{err}");
     // The same ball at 10 N (a/R about 2 %) is valid: no warning.
     let (a, _) = hertz_circle(10.0, 0.005, E_STAR_STEEL);
     assert!(a < 0.1 * 0.005);
-    let (ok, _, err) = contact(&[
-        "--shape",
-        "sphere-plane",
-        "--radius1",
-        "0.005",
-        "--load",
-        "10",
-    ]);
+    let (ok, _, err) = contact(&["--shape", "sphere-plane", "--radius1", "0.005", "--load", "10"]);
     assert!(ok && !err.contains("warning"), "{err}");
 }
 
@@ -92,10 +70,7 @@ fn contact_nanometre_pin_is_refused() {
         "--load",
         "10",
     ]);
-    assert!(
-        !ok && err.contains("--load 10") && err.contains("1.0000e-9 m"),
-        "{err}"
-    );
+    assert!(!ok && err.contains("--load 10") && err.contains("1.0000e-9 m"), "{err}");
 }
 
 /// A conformal seat (ball 5 mm in a 5.01 mm socket): the relative radius
@@ -128,10 +103,7 @@ fn contact_conformal_seat_warns() {
 fn contact_radius_in_millimetres_gets_a_hint() {
     let (ok, _, err) = contact(&["--shape", "sphere-plane", "--radius1", "5", "--load", "10"]);
     assert!(ok, "{err}");
-    assert!(
-        err.contains("--radius1 5") && err.contains("millimetres"),
-        "{err}"
-    );
+    assert!(err.contains("--radius1 5") && err.contains("millimetres"), "{err}");
 }
 
 #[test]
@@ -168,10 +140,7 @@ fn load_lift_off_prints_no_friction_ratio() {
         let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
         let flags = doc["lifted_off"].as_array().unwrap();
         assert_eq!(flags.len(), 6, "{out}");
-        assert!(
-            flags.iter().all(|f| f.as_bool() == Some(off)),
-            "{force}: {flags:?}"
-        );
+        assert!(flags.iter().all(|f| f.as_bool() == Some(off)), "{force}: {flags:?}");
     }
 }
 
@@ -182,15 +151,9 @@ fn flags_without_effect_are_refused() {
     let s = s01();
     let m = common::worked_measurement().display().to_string();
     let cases: Vec<(Vec<&str>, Vec<&str>)> = vec![
-        (
-            vec!["study", &s, "--sobol-samples", "10"],
-            vec!["--sensitivity"],
-        ),
+        (vec!["study", &s, "--sobol-samples", "10"], vec!["--sensitivity"]),
         (vec!["study", &s, "--force"], vec!["--force", "--out"]),
-        (
-            vec!["sweep", &s, "--set", "preload.force=10,20", "--force"],
-            vec!["--force", "--out"],
-        ),
+        (vec!["sweep", &s, "--set", "preload.force=10,20", "--force"], vec!["--force", "--out"]),
         (
             vec!["run", &s, "--solver", "dynamic", "--increments", "5"],
             vec!["--increments 5", "dynamic"],
@@ -200,14 +163,8 @@ fn flags_without_effect_are_refused() {
             vec!["--increments 5", "dynamic"],
         ),
         (vec!["run", &s, "--force"], vec!["--trace"]),
-        (
-            vec!["calibrate", &s, "--measured", &m, "--force"],
-            vec!["--out"],
-        ),
-        (
-            vec!["predict", &s, "--calibration", "c.json", "--force"],
-            vec!["--plot"],
-        ),
+        (vec!["calibrate", &s, "--measured", &m, "--force"], vec!["--out"]),
+        (vec!["predict", &s, "--calibration", "c.json", "--force"], vec!["--plot"]),
         (
             vec!["calibrate", &s, "--measured", &m, "--noise", "x=1nm,x=2nm"],
             vec!["--noise", "x=2nm", "twice"],
@@ -254,10 +211,7 @@ fn scene_values_in_the_wrong_unit_name_the_field() {
     let gpa = dir.path().join("gpa.toml");
     std::fs::write(&gpa, text).unwrap();
     let gpa = gpa.display().to_string();
-    refused(
-        &["check", &gpa],
-        &["gpa.toml:", "materials[1].youngs_modulus", "GPa"],
-    );
+    refused(&["check", &gpa], &["gpa.toml:", "materials[1].youngs_modulus", "GPa"]);
     refused(&["run", &gpa], &["materials[1].youngs_modulus", "GPa"]);
     let cases = [
         ("force = 20.0 ", "force = 1e-300 ", "preload.force"),
@@ -266,11 +220,7 @@ fn scene_values_in_the_wrong_unit_name_the_field() {
             "groove_material = \"steel\"\nsupport_compliance = 1e10",
             "coupling.support_compliance",
         ),
-        (
-            "ball_diameter = 0.010 ",
-            "ball_diameter = 10e-9 ",
-            "coupling.ball_diameter",
-        ),
+        ("ball_diameter = 0.010 ", "ball_diameter = 10e-9 ", "coupling.ball_diameter"),
         (
             "groove_element_diameter = 0.004 ",
             "groove_element_diameter = 4e-9 ",
@@ -291,9 +241,7 @@ fn load_path_failures_name_the_load_options() {
         &[SCENE01, "--force 1e12,0,0", "of the applied load"],
     );
     let e = refused(
-        &[
-            "load", &s, "--force", "0,0,0", "--at", "0,0,0", "--moment", "1e9,0,0",
-        ],
+        &["load", &s, "--force", "0,0,0", "--at", "0,0,0", "--moment", "1e9,0,0"],
         &["--moment 1e9,0,0"],
     );
     assert!(!e.contains("of the preload"), "{e}");
@@ -302,10 +250,8 @@ fn load_path_failures_name_the_load_options() {
 #[test]
 fn option_errors_name_the_option() {
     let s = s01();
-    let e = refused(
-        &["validate-hertz", "--convergence", "100", &s],
-        &["--convergence 100", "(0, 1]"],
-    );
+    let e =
+        refused(&["validate-hertz", "--convergence", "100", &s], &["--convergence 100", "(0, 1]"]);
     assert!(!e.contains("MeshOptions"), "{e}");
     let m = common::worked_measurement().display().to_string();
     let e = refused(
@@ -323,18 +269,7 @@ fn history_header_bom_is_accepted_or_named() {
     let path = dir.path().join("h.csv");
     std::fs::write(&path, "\u{feff}P_N,Qx_N,Qy_N\n1,0,0\n2,0,0\n").unwrap();
     let p = path.display().to_string();
-    let (ok, _, err) = contact(&[
-        "--shape",
-        "sphere-plane",
-        "--radius1",
-        "0.005",
-        "--history",
-        &p,
-        "--mu",
-        "0.3",
-    ]);
-    assert!(
-        ok || (err.contains("h.csv:1") && err.contains("\\u{feff}")),
-        "{err}"
-    );
+    let (ok, _, err) =
+        contact(&["--shape", "sphere-plane", "--radius1", "0.005", "--history", &p, "--mu", "0.3"]);
+    assert!(ok || (err.contains("h.csv:1") && err.contains("\\u{feff}")), "{err}");
 }

@@ -122,10 +122,7 @@ fn decay_law_in_its_transition_warns() {
         }
     }
     // The default scene (switch law) never warns.
-    assert_eq!(
-        warns(dir.path(), &common::scene("01_maxwell_vgroove_steel.toml")),
-        [false; 4]
-    );
+    assert_eq!(warns(dir.path(), &common::scene("01_maxwell_vgroove_steel.toml")), [false; 4]);
 }
 
 /// The bundled calibration of scene 02 with `edit` applied, written as `dir/name`.
@@ -151,11 +148,7 @@ fn add_parameter(v: &mut serde_json::Value, name: &str, [estimate, low, high]: [
 fn calibration_errors_name_the_calibration_file_the_field_and_the_reason() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    std::fs::copy(
-        common::scene("02_maxwell_pins_steel.toml"),
-        d.join("s02.toml"),
-    )
-    .unwrap();
+    std::fs::copy(common::scene("02_maxwell_pins_steel.toml"), d.join("s02.toml")).unwrap();
     type Edit = Box<dyn Fn(&mut serde_json::Value)>;
     // (case, edit, what the one error line must name besides the file)
     let cases: Vec<(&str, Edit, &[&str])> = vec![
@@ -191,17 +184,8 @@ fn calibration_errors_name_the_calibration_file_the_field_and_the_reason() {
     ];
     for (what, edit, names) in cases {
         let cal = calibration(d, &format!("{}.json", what.replace(' ', "_")), &edit);
-        let (rc, out, err) = run_in(
-            d,
-            &[
-                "predict",
-                "s02.toml",
-                "--calibration",
-                &cal,
-                "--samples",
-                "100",
-            ],
-        );
+        let (rc, out, err) =
+            run_in(d, &["predict", "s02.toml", "--calibration", &cal, "--samples", "100"]);
         assert_eq!(rc, 1, "{what}: {out}");
         assert_eq!(err.lines().count(), 1, "{what}: {err}");
         assert!(err.starts_with(&format!("error: {cal}: ")), "{what}: {err}");
@@ -235,15 +219,8 @@ fn interrupted_trace(signals: &[&str], together: bool) -> (i32, String) {
         .unwrap();
     wait_for_temporary(dir.path());
     let pid = child.id().to_string();
-    let kill = |sig: &str| {
-        assert!(
-            Command::new("kill")
-                .args([sig, &pid])
-                .status()
-                .unwrap()
-                .success()
-        )
-    };
+    let kill =
+        |sig: &str| assert!(Command::new("kill").args([sig, &pid]).status().unwrap().success());
     if together {
         kill("-STOP");
     }
@@ -255,17 +232,9 @@ fn interrupted_trace(signals: &[&str], together: bool) -> (i32, String) {
     }
     let out = child.wait_with_output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert!(
-        hidden(dir.path()).is_empty(),
-        "{signals:?} left {:?}: {err}",
-        hidden(dir.path())
-    );
+    assert!(hidden(dir.path()).is_empty(), "{signals:?} left {:?}: {err}", hidden(dir.path()));
     let now = std::fs::read(&trace).unwrap();
-    assert!(
-        now == b"the earlier trace\n",
-        "{signals:?}: FILE now {} bytes: {err}",
-        now.len()
-    );
+    assert!(now == b"the earlier trace\n", "{signals:?}: FILE now {} bytes: {err}", now.len());
     (out.status.code().unwrap_or(-1), err)
 }
 
@@ -300,11 +269,7 @@ fn overlapping_balls_are_refused() {
     // 69.2 mm ones do not.
     let dir = tempfile::tempdir().unwrap();
     let limit = 0.080 * 3f64.sqrt() / 2.0;
-    for (d, overlap) in [
-        (0.079, true),
-        (limit * 1.0005, true),
-        (limit * 0.9995, false),
-    ] {
+    for (d, overlap) in [(0.079, true), (limit * 1.0005, true), (limit * 0.9995, false)] {
         let text = std::fs::read_to_string(common::scene("04_maxwell_balls_steel.toml")).unwrap();
         let from = "ball_diameter = 0.008 ";
         assert!(text.contains(from));
@@ -313,10 +278,7 @@ fn overlapping_balls_are_refused() {
         let (rc, _, err) = run_in(dir.path(), &["check", "balls.toml"]);
         if overlap {
             assert_eq!(rc, 1, "{d}: {err}");
-            assert!(
-                err.contains("balls.toml") && err.contains("coupling.ball_diameter"),
-                "{err}"
-            );
+            assert!(err.contains("balls.toml") && err.contains("coupling.ball_diameter"), "{err}");
             assert!(err.contains("the balls overlap"), "{err}");
         } else {
             assert!(!err.contains("overlap"), "{d}: {err}");
@@ -332,11 +294,7 @@ fn report_and_calibrate_outputs_never_replace_a_device() {
     use std::os::unix::fs::FileTypeExt;
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    std::fs::copy(
-        common::scene("02_maxwell_pins_steel.toml"),
-        d.join("s.toml"),
-    )
-    .unwrap();
+    std::fs::copy(common::scene("02_maxwell_pins_steel.toml"), d.join("s.toml")).unwrap();
     let (rc, json, err) = run_in(d, &["study", "s.toml", "--format", "json"]);
     assert_eq!(rc, 0, "{err}");
     std::fs::write(d.join("s.json"), json).unwrap();
@@ -349,25 +307,13 @@ fn report_and_calibrate_outputs_never_replace_a_device() {
         vec!["report", "s.json", "--out", out]
     }
     let calibrate = |out: &'static str| {
-        vec![
-            "calibrate",
-            "s.toml",
-            "--measured",
-            m,
-            "--model-samples",
-            "100",
-            "--out",
-            out,
-        ]
+        vec!["calibrate", "s.toml", "--measured", m, "--model-samples", "100", "--out", out]
     };
     for out in ["/dev/null", "null_link"] {
         for mut args in [report(out), calibrate(out)] {
             let (rc, _, err) = run_in(d, &args);
             assert_eq!(rc, 1, "{args:?}: {err}");
-            assert!(
-                err.contains(out) && err.contains("--force"),
-                "{args:?}: {err}"
-            );
+            assert!(err.contains(out) && err.contains("--force"), "{args:?}: {err}");
             args.push("--force");
             let (rc, _, err) = run_in(d, &args);
             assert_eq!(rc, 0, "{args:?}: {err}");
@@ -375,24 +321,10 @@ fn report_and_calibrate_outputs_never_replace_a_device() {
             assert!(t.is_char_device(), "{args:?} replaced /dev/null");
         }
     }
-    assert!(
-        std::fs::symlink_metadata(d.join("null_link"))
-            .unwrap()
-            .file_type()
-            .is_symlink()
-    );
+    assert!(std::fs::symlink_metadata(d.join("null_link")).unwrap().file_type().is_symlink());
     let (rc, _, err) = run_in(d, &["report", "s.json", "--out", "html_link", "--force"]);
     assert_eq!(rc, 0, "{err}");
-    assert!(
-        std::fs::symlink_metadata(d.join("html_link"))
-            .unwrap()
-            .file_type()
-            .is_symlink()
-    );
-    assert!(
-        std::fs::read_to_string(d.join("real.html"))
-            .unwrap()
-            .contains("<html")
-    );
+    assert!(std::fs::symlink_metadata(d.join("html_link")).unwrap().file_type().is_symlink());
+    assert!(std::fs::read_to_string(d.join("real.html")).unwrap().contains("<html"));
     assert!(hidden(d).is_empty(), "{:?}", hidden(d));
 }

@@ -7,11 +7,8 @@ use crate::common;
 
 /// Run kinrepro in `dir`: (exit code, stdout, stderr).
 pub(crate) fn run_in(dir: &Path, args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
-        .current_dir(dir)
-        .args(args)
-        .output()
-        .unwrap();
+    let out =
+        Command::new(env!("CARGO_BIN_EXE_kinrepro")).current_dir(dir).args(args).output().unwrap();
     (
         out.status.code().unwrap_or(-1),
         String::from_utf8_lossy(&out.stdout).into_owned(),
@@ -34,16 +31,8 @@ pub(crate) fn variant(dir: &Path, name: &str, edits: &[(&str, &str)]) -> PathBuf
 /// The two couplings that cannot seat: a 170 degree groove and mu 1.5.
 fn unseatable(dir: &Path) -> Vec<PathBuf> {
     vec![
-        variant(
-            dir,
-            "g170.toml",
-            &[("opening_angle_deg = 90.0", "opening_angle_deg = 170.0")],
-        ),
-        variant(
-            dir,
-            "mu15.toml",
-            &[("mu_static = 0.5 ", "mu_static = 1.5 ")],
-        ),
+        variant(dir, "g170.toml", &[("opening_angle_deg = 90.0", "opening_angle_deg = 170.0")]),
+        variant(dir, "mu15.toml", &[("mu_static = 0.5 ", "mu_static = 1.5 ")]),
     ]
 }
 
@@ -82,17 +71,8 @@ fn a_coupling_that_cannot_seat_gets_one_verdict_and_exit_code_from_every_command
             // is printed as a scatter.
             assert!(!has_scatter_number(&out), "{s} {extra:?}: {out}");
         }
-        let (rc, out, err) = run_in(
-            d,
-            &[
-                "predict",
-                s,
-                "--calibration",
-                cal.to_str().unwrap(),
-                "--samples",
-                "100",
-            ],
-        );
+        let (rc, out, err) =
+            run_in(d, &["predict", s, "--calibration", cal.to_str().unwrap(), "--samples", "100"]);
         assert_eq!(rc, check_rc, "{s}: predict: {out}");
         assert!(err.contains("cannot seat") && err.contains(s), "{err}");
         assert!(!has_scatter_number(&out), "{out}");
@@ -100,19 +80,8 @@ fn a_coupling_that_cannot_seat_gets_one_verdict_and_exit_code_from_every_command
         let mut parts = Vec::new();
         for i in 1..=2 {
             let shard = format!("{i}/2");
-            let (_, json, err) = run_in(
-                d,
-                &[
-                    "study",
-                    s,
-                    "--samples",
-                    "4",
-                    "--shard",
-                    &shard,
-                    "--format",
-                    "json",
-                ],
-            );
+            let (_, json, err) =
+                run_in(d, &["study", s, "--samples", "4", "--shard", &shard, "--format", "json"]);
             let part = d.join(format!("{s}.{i}.json"));
             std::fs::write(&part, json).unwrap_or_else(|e| panic!("{e}: {err}"));
             parts.push(part.to_str().unwrap().to_string());
@@ -134,10 +103,7 @@ fn a_frictionless_coupling_seats_and_its_zero_scatter_is_the_result() {
     let p = variant(
         d,
         "mu0.toml",
-        &[
-            ("mu_static = 0.5 ", "mu_static = 0.0 "),
-            ("spread = 0.05 ", "spread = 0.0 "),
-        ],
+        &[("mu_static = 0.5 ", "mu_static = 0.0 "), ("spread = 0.05 ", "spread = 0.0 ")],
     );
     let s = p.to_str().unwrap();
     let (rc, out, err) = run_in(d, &["check", s]);
@@ -146,28 +112,13 @@ fn a_frictionless_coupling_seats_and_its_zero_scatter_is_the_result() {
     // Without friction every contact slides into the one equilibrium of
     // the preload: every sample seats at the nominal pose, sigma = 0 exactly.
     for solver in ["quasi-static", "dynamic"] {
-        let (rc, json, err) = run_in(
-            d,
-            &[
-                "study",
-                s,
-                "--samples",
-                "4",
-                "--solver",
-                solver,
-                "--format",
-                "json",
-            ],
-        );
+        let (rc, json, err) =
+            run_in(d, &["study", s, "--samples", "4", "--solver", solver, "--format", "json"]);
         assert_eq!(rc, 0, "{solver}: {err}");
         let doc: kinrepro::study::StudyReport = serde_json::from_str(&json).unwrap();
         assert!(doc.variants[0].cannot_seat.is_none());
         for p in &doc.variants[0].points {
-            assert!(
-                p.sigma.values().iter().all(|s| *s == 0.0),
-                "{solver}: {:?}",
-                p.sigma
-            );
+            assert!(p.sigma.values().iter().all(|s| *s == 0.0), "{solver}: {:?}", p.sigma);
         }
     }
 }
@@ -182,35 +133,18 @@ fn a_sweep_point_that_cannot_seat_has_the_verdict_of_check() {
     let s01 = common::scene("01_maxwell_vgroove_steel.toml");
     let (rc, out, err) = run_in(
         d,
-        &[
-            "sweep",
-            s01.to_str().unwrap(),
-            "--set",
-            "friction.mu_static=0.5,1.5",
-            "--samples",
-            "4",
-        ],
+        &["sweep", s01.to_str().unwrap(), "--set", "friction.mu_static=0.5,1.5", "--samples", "4"],
     );
     assert_eq!(rc, 0, "{err}");
     assert!(out.contains(&format!("cannot seat: {reason}")), "{out}");
     // A sweep in which no point seats gives no result: exit 1, as study.
     let (rc, out, err) = run_in(
         d,
-        &[
-            "sweep",
-            s01.to_str().unwrap(),
-            "--set",
-            "friction.mu_static=1.5",
-            "--samples",
-            "4",
-        ],
+        &["sweep", s01.to_str().unwrap(), "--set", "friction.mu_static=1.5", "--samples", "4"],
     );
     assert_eq!(rc, 1, "{out}");
     assert!(out.contains(&format!("cannot seat: {reason}")), "{out}");
-    assert!(
-        err.contains("none of the 1 design points was evaluated"),
-        "{err}"
-    );
+    assert!(err.contains("none of the 1 design points was evaluated"), "{err}");
 }
 
 /// A whole study JSON of scene 01 (6 samples) in `d`, and its two shards.
@@ -227,10 +161,7 @@ fn study_files(d: &Path) -> (PathBuf, [PathBuf; 2]) {
         p
     };
     let whole = write("whole.json", &[]);
-    let parts = [
-        write("p1.json", &["--shard", "1/2"]),
-        write("p2.json", &["--shard", "2/2"]),
-    ];
+    let parts = [write("p1.json", &["--shard", "1/2"]), write("p2.json", &["--shard", "2/2"])];
     (whole, parts)
 }
 
@@ -254,9 +185,8 @@ fn merge_and_report_check_a_study_json_like_a_scene() {
     assert_eq!(rc, 0, "{err}");
     // mu = 5 in one record: outside the scene's range and outside
     // mu0 +- spread = [0.45, 0.55], which the design maps every row into.
-    let mu5 = edited(&p1, d, "mu5.json", |v| {
-        v["variants"][0]["records"][0]["inputs_si"][0] = 5.0.into()
-    });
+    let mu5 =
+        edited(&p1, d, "mu5.json", |v| v["variants"][0]["records"][0]["inputs_si"][0] = 5.0.into());
     let (rc, _, err) = run_in(d, &["merge", &mu5, p2]);
     assert_eq!(rc, 1);
     assert!(
@@ -264,24 +194,16 @@ fn merge_and_report_check_a_study_json_like_a_scene() {
         "{err}"
     );
     assert_eq!(err.lines().count(), 1, "{err}");
-    let mu_static = edited(&p1, d, "mus5.json", |v| {
-        v["variants"][0]["mu_static"] = 5.0.into()
-    });
+    let mu_static = edited(&p1, d, "mus5.json", |v| v["variants"][0]["mu_static"] = 5.0.into());
     let (rc, _, err) = run_in(d, &["merge", &mu_static, p2]);
     assert!(rc == 1 && err.contains("mu_static"), "{err}");
     // samples = 1e18 against 6 records, for report and merge.
     let big = edited(&whole, d, "big.json", |v| {
         v["variants"][0]["samples"] = 1_000_000_000_000_000_000u64.into()
     });
-    for args in [
-        vec!["report", big.as_str(), "--out", "r.html"],
-        vec!["merge", big.as_str()],
-    ] {
+    for args in [vec!["report", big.as_str(), "--out", "r.html"], vec!["merge", big.as_str()]] {
         let (rc, _, err) = run_in(d, &args);
-        assert!(
-            rc == 1 && err.contains("big.json") && err.contains("samples"),
-            "{err}"
-        );
+        assert!(rc == 1 && err.contains("big.json") && err.contains("samples"), "{err}");
     }
     assert!(!d.join("r.html").exists());
     // A negative sigma names the file and the field.
@@ -289,10 +211,7 @@ fn merge_and_report_check_a_study_json_like_a_scene() {
         v["variants"][0]["points"][0]["sigma"]["x_nm"] = (-1.0).into()
     });
     let (rc, _, err) = run_in(d, &["report", &neg, "--out", "r.html"]);
-    assert!(
-        rc == 1 && err.contains("neg.json") && err.contains("sigma"),
-        "{err}"
-    );
+    assert!(rc == 1 && err.contains("neg.json") && err.contains("sigma"), "{err}");
 }
 
 #[test]
@@ -309,15 +228,10 @@ fn report_opens_no_scene_outside_the_current_and_the_json_folder() {
         ("passwd.json", "/etc/passwd"),
         ("up.json", "../../../../../../../../etc/passwd"),
     ] {
-        let j = edited(&whole, &sub, name, |v| {
-            v["variants"][0]["scene"] = scene.into()
-        });
+        let j = edited(&whole, &sub, name, |v| v["variants"][0]["scene"] = scene.into());
         let (rc, _, err) = run_in(&sub, &["report", &j, "--out", "x.html"]);
         assert_eq!(rc, 1, "{name}: {err}");
-        assert!(
-            err.contains(name) && err.contains(scene) && err.contains("outside"),
-            "{err}"
-        );
+        assert!(err.contains(name) && err.contains(scene) && err.contains("outside"), "{err}");
         // Nothing of the file's content (passwd begins with `root:`).
         assert!(!err.contains("root"), "{err}");
         assert_eq!(err.lines().count(), 1, "{err}");

@@ -9,10 +9,7 @@ use std::process::Command;
 
 /// Run the kinrepro binary: (success, stdout, stderr).
 pub fn kinrepro(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
-        .args(args)
-        .output()
-        .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_kinrepro")).args(args).output().unwrap();
     (
         out.status.success(),
         String::from_utf8_lossy(&out.stdout).into_owned(),
@@ -22,9 +19,7 @@ pub fn kinrepro(args: &[&str]) -> (bool, String, String) {
 
 /// Path of a bundled scene.
 pub fn scene(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenes")
-        .join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name)
 }
 
 /// The worked 50-cycle measurement of scene 02 (docs/calibration/).
@@ -89,10 +84,7 @@ pub fn maxwell_contacts(alpha: f64) -> Vec<(nalgebra::Vector3<f64>, nalgebra::Ve
         let er = Vector3::new(az.to_radians().cos(), az.to_radians().sin(), 0.0);
         let s = Vector3::z().cross(&er);
         for sign in [1.0, -1.0] {
-            out.push((
-                er * 0.040,
-                s * (sign * alpha.sin()) + Vector3::z() * alpha.cos(),
-            ));
+            out.push((er * 0.040, s * (sign * alpha.sin()) + Vector3::z() * alpha.cos()));
         }
     }
     out

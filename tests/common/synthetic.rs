@@ -17,16 +17,11 @@ pub const NOISE: [f64; 6] = [1e-9, 1e-9, 1e-9, 20e-9, 20e-9, 20e-9];
 /// `cycles` re-seatings of point 0 of `v` (its own friction), with noise [SI].
 pub fn synthetic(v: &Variant, cycles: usize, rng: &mut ChaCha8Rng) -> Vec<[f64; 6]> {
     let dims = v.coupling.contacts.len();
-    let rows: Vec<(usize, Vec<f64>)> = (0..cycles)
-        .map(|i| (i, (0..dims).map(|_| rng.random::<f64>()).collect()))
-        .collect();
-    let settings = StudyOptions::monte_carlo(cycles, 1, Solver::QuasiStatic)
-        .settings()
-        .unwrap();
+    let rows: Vec<(usize, Vec<f64>)> =
+        (0..cycles).map(|i| (i, (0..dims).map(|_| rng.random::<f64>()).collect())).collect();
+    let settings = StudyOptions::monte_carlo(cycles, 1, Solver::QuasiStatic).settings().unwrap();
     let recs = evaluate_rows(&settings, v, rows, &|| {}).unwrap();
-    recs.iter()
-        .map(|r| std::array::from_fn(|j| r.outputs[j] + NOISE[j] * gaussian(rng)))
-        .collect()
+    recs.iter().map(|r| std::array::from_fn(|j| r.outputs[j] + NOISE[j] * gaussian(rng))).collect()
 }
 
 pub fn gaussian(rng: &mut ChaCha8Rng) -> f64 {

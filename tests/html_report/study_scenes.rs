@@ -100,10 +100,8 @@ pub(super) fn drawing_labels(r: &serde_json::Value, name: &str, want: &Dimension
     let (mut circles, mut balls, mut angles) = (0, 0, 0);
     for (id, labels) in texts {
         let labels = labels.as_array().unwrap();
-        let boxes: Vec<[f64; 4]> = labels
-            .iter()
-            .map(|l| [0, 1, 2, 3].map(|k| l["box"][k].as_f64().unwrap()))
-            .collect();
+        let boxes: Vec<[f64; 4]> =
+            labels.iter().map(|l| [0, 1, 2, 3].map(|k| l["box"][k].as_f64().unwrap())).collect();
         for (i, l) in labels.iter().enumerate() {
             let px = l["px"].as_f64().unwrap();
             assert!(px >= 11.0, "{name} {id}: {l} at {px} px");

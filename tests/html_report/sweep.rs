@@ -43,12 +43,7 @@ fn sweep_html_is_a_design_review_report_in_chromium() {
     // sigma against each of 3 fields, the Pareto front, the points not
     // evaluated; the base coupling: a layout and a top and a side view of
     // each of 3 balls.
-    let expect = Expect {
-        charts: 5,
-        drawings: 7,
-        min_tables: 2,
-        scenes: 1,
-    };
+    let expect = Expect { charts: 5, drawings: 7, min_tables: 2, scenes: 1 };
     browser_checks(&exe, tmp.path(), &html, &expect);
     let dom = probe_dom(&exe, tmp.path(), &html, "1400,2000");
     let r = probe_result(&dom, "1400");
@@ -58,10 +53,7 @@ fn sweep_html_is_a_design_review_report_in_chromium() {
     labels_apart(&r, "sweep-pareto", front);
     // The print rules on screen at A4's width less its margins (703 px).
     let print = html.replace("@media print", "@media all");
-    tables_fit(
-        &probe_result(&probe_dom(&exe, tmp.path(), &print, "703,2000"), "A4"),
-        "A4 print",
-    );
+    tables_fit(&probe_result(&probe_dom(&exe, tmp.path(), &print, "703,2000"), "A4"), "A4 print");
     let want = study_scenes::dimensions(&std::fs::read_to_string(&s1).unwrap());
     study_scenes::drawing_labels(&r, "sweep", &want);
 }
@@ -92,10 +84,7 @@ fn sweep_static_checks(html: &str, sweep: &serde_json::Value, scene_text: &str) 
         // Chart axes with units.
         ">\npreload.force [N]\n</text>".to_string(),
         ">\nlowest principal translational stiffness k_min [N/µm]\n</text>".to_string(),
-        format!(
-            "<pre data-check=\"scene\">{}</pre>",
-            html_escape(scene_text)
-        ),
+        format!("<pre data-check=\"scene\">{}</pre>", html_escape(scene_text)),
     ] {
         assert!(html.contains(&s), "missing {s}");
     }
@@ -123,10 +112,7 @@ fn sweep_static_checks(html: &str, sweep: &serde_json::Value, scene_text: &str) 
             assert_eq!(groove, "tubes");
             let reason = html_escape(d["status"].as_str().unwrap());
             assert!(reason.starts_with("invalid: coupling.groove"), "{reason}");
-            assert!(
-                row.contains(&format!("<td class=\"l\">{reason}</td>")),
-                "{row}"
-            );
+            assert!(row.contains(&format!("<td class=\"l\">{reason}</td>")), "{row}");
         }
     }
 }

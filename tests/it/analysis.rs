@@ -31,10 +31,7 @@ const ALL_SCENES: [&str; 8] = [
 /// (normal, ball centre) of the 90-degree Maxwell V-groove of scene 01
 /// (`common::maxwell_contacts`, from docs/model.md's axes and contact numbering, by hand).
 fn maxwell_by_hand(alpha: f64) -> Vec<(Vector3<f64>, Vector3<f64>)> {
-    common::maxwell_contacts(alpha)
-        .into_iter()
-        .map(|(c, n)| (n, c))
-        .collect()
+    common::maxwell_contacts(alpha).into_iter().map(|(c, n)| (n, c)).collect()
 }
 
 /// Frictionless contact forces that balance the wrench (F at point p, M):
@@ -50,9 +47,7 @@ fn statics(
         if r < 3 { n[r] } else { centre.cross(&n)[r - 3] }
     });
     let mom = p.cross(&f) + m;
-    a.lu()
-        .solve(&-Vector6::new(f.x, f.y, f.z, mom.x, mom.y, mom.z))
-        .unwrap()
+    a.lu().solve(&-Vector6::new(f.x, f.y, f.z, mom.x, mom.y, mom.z)).unwrap()
 }
 
 #[test]
@@ -83,21 +78,11 @@ fn frictionless_vgroove_stiffness_equals_the_hand_closed_form() {
     let t = p.translational;
     assert!((t[0].0 / kx - 1.0).abs() < 1e-6 && (t[1].0 / kx - 1.0).abs() < 1e-6);
     assert!((t[2].0 / kz - 1.0).abs() < 1e-6);
-    assert!(
-        t[2].1.z.abs() > 1.0 - 1e-9,
-        "the stiffest direction is z: {:?}",
-        t[2].1
-    );
+    assert!(t[2].1.z.abs() > 1.0 - 1e-9, "the stiffest direction is z: {:?}", t[2].1);
     // Rotational stiffness about x by hand: sum k_n (c x n)_x^2 over the contacts.
-    let krx: f64 = maxwell_by_hand(alpha)
-        .iter()
-        .map(|(n, centre)| kn * centre.cross(n).x.powi(2))
-        .sum();
-    assert!(
-        (m[(3, 3)] / krx - 1.0).abs() < 1e-6,
-        "{} vs {krx}",
-        m[(3, 3)]
-    );
+    let krx: f64 =
+        maxwell_by_hand(alpha).iter().map(|(n, centre)| kn * centre.cross(n).x.powi(2)).sum();
+    assert!((m[(3, 3)] / krx - 1.0).abs() < 1e-6, "{} vs {krx}", m[(3, 3)]);
     for sp in &k.springs {
         assert!((sp.normal_stiffness / kn - 1.0).abs() < 1e-6);
         assert_eq!(sp.tangential_stiffness, 0.0);
@@ -119,10 +104,7 @@ fn stiffness_is_symmetric_positive_definite_for_every_bundled_scene() {
             assert!(m.cholesky().is_some(), "{name}");
         }
         // With friction every contact sticks: k_t > 0 at each.
-        assert!(
-            k.springs.iter().all(|sp| sp.tangential_stiffness > 0.0),
-            "{name}"
-        );
+        assert!(k.springs.iter().all(|sp| sp.tangential_stiffness > 0.0), "{name}");
     }
 }
 
@@ -141,10 +123,7 @@ fn a_small_load_through_the_nonlinear_solver_deflects_by_the_compliance() {
     for (name, mu) in [
         ("01_maxwell_vgroove_steel.toml", vec![0.5; 6]),
         ("01_maxwell_vgroove_steel.toml", vec![0.0; 6]),
-        (
-            "02_maxwell_pins_steel.toml",
-            vec![0.45, 0.55, 0.5, 0.52, 0.48, 0.5],
-        ),
+        ("02_maxwell_pins_steel.toml", vec![0.45, 0.55, 0.5, 0.52, 0.48, 0.5]),
         ("06_kelvin_steel.toml", vec![0.5; 6]),
         ("custom_kelvin_explicit.toml", vec![0.15; 6]),
     ] {
@@ -165,25 +144,13 @@ fn a_small_load_through_the_nonlinear_solver_deflects_by_the_compliance() {
                 moment: w.fixed_rows::<3>(3).into(),
             };
             let path = load_path(&c, &mu, &s, &load, 1.0, &SolverOptions::default()).unwrap();
-            assert!(
-                path.first_event.is_none(),
-                "{name} {:?}: {:?}",
-                mu.mu,
-                path.first_event
-            );
+            assert!(path.first_event.is_none(), "{name} {:?}: {:?}", mu.mu, path.first_event);
             let nonlinear = deflection(&s.pose(), &path.pose, &q_body);
             let linear = comp * w;
-            let (lt, lr) = (
-                linear.fixed_rows::<3>(0).norm(),
-                linear.fixed_rows::<3>(3).norm(),
-            );
+            let (lt, lr) = (linear.fixed_rows::<3>(0).norm(), linear.fixed_rows::<3>(3).norm());
             for r in 0..6 {
                 // Rotations converted at 40 mm, so that no scale is zero.
-                let scale = if r < 3 {
-                    lt + 0.04 * lr
-                } else {
-                    lr + lt / 0.04
-                };
+                let scale = if r < 3 { lt + 0.04 * lr } else { lr + lt / 0.04 };
                 assert!(
                     (nonlinear[r] - linear[r]).abs() < 0.01 * scale,
                     "{name} {:?} load axis {axis} dof {r}: nonlinear {:e} vs K^-1 W {:e}",
@@ -203,20 +170,11 @@ fn frictionless_separation_load_equals_six_constraint_statics() {
     let s = seat(&c, &mu, &SolverOptions::default()).unwrap();
     // 1 N along x, 50 mm above the centre: it tips the coupling about y.
     let (f, p) = (Vector3::new(1.0, 0.0, 0.0), Vector3::new(0.0, 0.0, 0.05));
-    let load = ExternalLoad {
-        force: f,
-        point: p,
-        moment: Vector3::zeros(),
-    };
+    let load = ExternalLoad { force: f, point: p, moment: Vector3::zeros() };
     // Statics by hand: f(lambda) = f_pre + lambda g, linear in the load; the
     // first contact to reach 0 separates at lambda* = min f_pre,i / (-g_i).
     let rows = maxwell_by_hand(45f64.to_radians());
-    let f_pre = statics(
-        &rows,
-        Vector3::new(0.0, 0.0, -20.0),
-        Vector3::zeros(),
-        Vector3::zeros(),
-    );
+    let f_pre = statics(&rows, Vector3::new(0.0, 0.0, -20.0), Vector3::zeros(), Vector3::zeros());
     let g = statics(&rows, f, p, Vector3::zeros());
     let (first, lambda) = (0..6)
         .filter(|&i| g[i] < 0.0)
@@ -229,13 +187,9 @@ fn frictionless_separation_load_equals_six_constraint_statics() {
     // Contacts 1/2 and 3..6 pair up by symmetry only where g ties; compare
     // the factor, and the contact where the hand solution is unique.
     let factor = env.factor().unwrap();
-    assert!(
-        (factor / lambda - 1.0).abs() < 0.01,
-        "{factor} vs statics {lambda} (contact {first})"
-    );
-    let ties = (0..6)
-        .filter(|&i| g[i] < 0.0 && (f_pre[i] / -g[i] / lambda - 1.0).abs() < 1e-9)
-        .count();
+    assert!((factor / lambda - 1.0).abs() < 0.01, "{factor} vs statics {lambda} (contact {first})");
+    let ties =
+        (0..6).filter(|&i| g[i] < 0.0 && (f_pre[i] / -g[i] / lambda - 1.0).abs() < 1e-9).count();
     if ties == 1 {
         assert_eq!(e.contact, first);
     }
@@ -251,36 +205,20 @@ fn frictionless_separation_load_equals_six_constraint_statics() {
 #[test]
 fn slip_envelope_is_bracketed_by_full_load_paths() {
     for (name, force, point) in [
-        (
-            "01_maxwell_vgroove_steel.toml",
-            Vector3::new(1.0, 0.0, 0.0),
-            Vector3::zeros(),
-        ),
-        (
-            "06_kelvin_steel.toml",
-            Vector3::new(0.3, 0.4, -1.0),
-            Vector3::new(0.0, 0.0, 0.02),
-        ),
+        ("01_maxwell_vgroove_steel.toml", Vector3::new(1.0, 0.0, 0.0), Vector3::zeros()),
+        ("06_kelvin_steel.toml", Vector3::new(0.3, 0.4, -1.0), Vector3::new(0.0, 0.0, 0.02)),
     ] {
         let (scene, c) = load(name);
         let mu = Load::nominal(&scene);
         let s = seat(&c, &mu, &SolverOptions::default()).unwrap();
-        let load = ExternalLoad {
-            force,
-            point,
-            moment: Vector3::zeros(),
-        };
+        let load = ExternalLoad { force, point, moment: Vector3::zeros() };
         let env = envelope(&c, &mu, &s, &load, &SolverOptions::default()).unwrap();
         let e = env.event.expect("an event");
         let factor = env.factor().unwrap();
         assert!((e.factor - e.previous) <= 1e-4 * e.factor, "{name}: {e:?}");
         let below =
             load_path(&c, &mu, &s, &load, 0.99 * factor, &SolverOptions::default()).unwrap();
-        assert!(
-            below.first_event.is_none(),
-            "{name}: {:?}",
-            below.first_event
-        );
+        assert!(below.first_event.is_none(), "{name}: {:?}", below.first_event);
         // Below the envelope every contact is closed and inside its cone.
         for r in &below.contacts {
             assert!(r.normal_force_n > 0.0);
@@ -292,21 +230,11 @@ fn slip_envelope_is_bracketed_by_full_load_paths() {
         assert_eq!((ev.contact, ev.kind), (e.contact, e.kind), "{name}");
         if e.kind == LoadEventKind::Slip {
             // Just below the bracket the named contact is at its static limit.
-            let at = load_path(
-                &c,
-                &mu,
-                &s,
-                &load,
-                0.999 * e.previous,
-                &SolverOptions::default(),
-            )
-            .unwrap();
+            let at = load_path(&c, &mu, &s, &load, 0.999 * e.previous, &SolverOptions::default())
+                .unwrap();
             let r = &at.contacts[e.contact - 1];
             let ratio = r.tangential_force_n / (r.mu_static * r.normal_force_n);
-            assert!(
-                ratio > 0.99 && ratio <= 1.0,
-                "{name}: |F_t|/(mu_s F_n) = {ratio}"
-            );
+            assert!(ratio > 0.99 && ratio <= 1.0, "{name}: |F_t|/(mu_s F_n) = {ratio}");
         }
     }
 }
@@ -317,12 +245,7 @@ fn off_centre_preload_shifts_the_frictionless_forces_as_statics_says() {
     let offset = Vector3::new(0.006, -0.004, 0.0);
     scene.preload.forces[0].point = offset;
     let c = Coupling::new(&scene).unwrap();
-    let s = seat(
-        &c,
-        &Load::nominal(&scene).with_mu(&[0.0; 6]),
-        &SolverOptions::default(),
-    )
-    .unwrap();
+    let s = seat(&c, &Load::nominal(&scene).with_mu(&[0.0; 6]), &SolverOptions::default()).unwrap();
     let hand = statics(
         &maxwell_by_hand(45f64.to_radians()),
         Vector3::new(0.0, 0.0, -20.0),
@@ -337,12 +260,7 @@ fn off_centre_preload_shifts_the_frictionless_forces_as_statics_says() {
     );
     for i in 0..6 {
         let f = s.contacts[i].normal_force_n;
-        assert!(
-            (f / hand[i] - 1.0).abs() < 1e-5,
-            "contact {}: {f} vs statics {}",
-            i + 1,
-            hand[i]
-        );
+        assert!((f / hand[i] - 1.0).abs() < 1e-5, "contact {}: {f} vs statics {}", i + 1, hand[i]);
         // The offset really changes the forces (by more than 10 %).
         assert!((hand[i] / centred[i] - 1.0).abs() > 0.1);
     }
@@ -378,12 +296,7 @@ fn hertz_subsurface_shear_matches_johnson_and_a_brute_force_scan() {
     }
     // In a seating: tau_max = ratio p0 and the steel pressure safety factor.
     let (scene, c) = load("01_maxwell_vgroove_steel.toml");
-    let s = seat(
-        &c,
-        &Load::nominal(&scene).with_mu(&[0.5; 6]),
-        &SolverOptions::default(),
-    )
-    .unwrap();
+    let s = seat(&c, &Load::nominal(&scene).with_mu(&[0.5; 6]), &SolverOptions::default()).unwrap();
     for r in &s.contacts {
         assert!((r.max_shear_stress_pa / (ratio * r.max_pressure_pa) - 1.0).abs() < 1e-12);
         assert!(
@@ -401,37 +314,24 @@ fn scene_allowable_shear_stress_sets_the_shear_safety_factor_and_is_validated() 
     )
     .unwrap();
     let with = |tau: &str| {
-        let text = base.replace(
-            "ball_material = \"steel\"",
-            "ball_material = \"hard-steel\"",
-        ) + &format!(
-            "\n[[materials]]\nname = \"hard-steel\"\nyoungs_modulus = 210e9\npoisson_ratio = 0.3\nallowable_shear_stress = {tau}\n"
-        );
+        let text = base.replace("ball_material = \"steel\"", "ball_material = \"hard-steel\"")
+            + &format!(
+                "\n[[materials]]\nname = \"hard-steel\"\nyoungs_modulus = 210e9\npoisson_ratio = 0.3\nallowable_shear_stress = {tau}\n"
+            );
         kinrepro::scene::Scene::parse(&text, "test.toml")
     };
     let scene = with("1.0e9").unwrap();
     let c = Coupling::new(&scene).unwrap();
-    let s = seat(
-        &c,
-        &Load::nominal(&scene).with_mu(&[0.5; 6]),
-        &SolverOptions::default(),
-    )
-    .unwrap();
+    let s = seat(&c, &Load::nominal(&scene).with_mu(&[0.5; 6]), &SolverOptions::default()).unwrap();
     let (ratio, _) = circular_max_shear(0.3);
     for r in &s.contacts {
         let sf = 1.0e9 / (ratio * r.max_pressure_pa);
         assert!((r.shear_safety_factor.unwrap() / sf - 1.0).abs() < 1e-12);
         // Groove steel keeps its 4.2 GPa pressure allowable; the smaller factor wins.
-        assert_eq!(
-            r.safety_factor.unwrap(),
-            sf.min(r.pressure_safety_factor.unwrap())
-        );
+        assert_eq!(r.safety_factor.unwrap(), sf.min(r.pressure_safety_factor.unwrap()));
     }
     for bad in ["-1.0", "0.0", "nan"] {
         let e = with(bad).unwrap_err().to_string();
-        assert!(
-            e.contains("allowable_shear_stress") && e.contains("test.toml"),
-            "{e}"
-        );
+        assert!(e.contains("allowable_shear_stress") && e.contains("test.toml"), "{e}");
     }
 }

@@ -44,16 +44,11 @@ fn model_plan(name: &str) -> StudyPlan {
 fn synthetic(v: &Variant, spread: f64, cycles: usize, rng: &mut ChaCha8Rng) -> Vec<[f64; 6]> {
     let v = with_spread(v, spread);
     let dims = v.coupling.contacts.len();
-    let rows: Vec<(usize, Vec<f64>)> = (0..cycles)
-        .map(|i| (i, (0..dims).map(|_| rng.random::<f64>()).collect()))
-        .collect();
-    let settings = StudyOptions::monte_carlo(cycles, 1, Solver::QuasiStatic)
-        .settings()
-        .unwrap();
+    let rows: Vec<(usize, Vec<f64>)> =
+        (0..cycles).map(|i| (i, (0..dims).map(|_| rng.random::<f64>()).collect())).collect();
+    let settings = StudyOptions::monte_carlo(cycles, 1, Solver::QuasiStatic).settings().unwrap();
     let recs = evaluate_rows(&settings, &v, rows, &|| {}).unwrap();
-    recs.iter()
-        .map(|r| std::array::from_fn(|j| r.outputs[j] + NOISE[j] * gaussian(rng)))
-        .collect()
+    recs.iter().map(|r| std::array::from_fn(|j| r.outputs[j] + NOISE[j] * gaussian(rng))).collect()
 }
 
 /// Standard normal by Box-Muller.
@@ -82,13 +77,7 @@ fn summary(m: &Measurement) -> String {
     let mut s = String::from("dof,unit,sigma,cycles\n");
     for (j, (&d, sg)) in m.dofs.iter().zip(m.sigma()).enumerate() {
         let dof = kinrepro::dof::Dof::ALL[d];
-        s += &format!(
-            "{},{},{},{}\n",
-            dof.name(),
-            dof.unit(),
-            sg * 1e9,
-            m.cycles()[j]
-        );
+        s += &format!("{},{},{},{}\n", dof.name(), dof.unit(), sg * 1e9, m.cycles()[j]);
     }
     s
 }
@@ -113,16 +102,9 @@ struct FixedModel {
 impl FixedModel {
     fn new(plan: &StudyPlan) -> Self {
         let dofs = [0, 1, 2, 3, 4, 5];
-        let spec = StudySpec {
-            plan,
-            point: 0,
-            dofs: &dofs,
-        };
+        let spec = StudySpec { plan, point: 0, dofs: &dofs };
         let grid = ModelGrid::build(&spec, &[], &[], S_REF).unwrap();
-        let samples = spec
-            .run(&with_spread(spec.base(), S_REF))
-            .unwrap()
-            .samples_of(&dofs);
+        let samples = spec.run(&with_spread(spec.base(), S_REF)).unwrap().samples_of(&dofs);
         FixedModel { grid, samples }
     }
 
@@ -131,9 +113,8 @@ impl FixedModel {
         let jm = JointModel::new(&obs, &self.grid, &[Param::Spread], v, &noise_var());
         let (u_hat, l_max) = estimate(&jm);
         let s = jm.theta(&u_hat)[0];
-        let x: Vec<Vec<f64>> = (self.samples.iter())
-            .map(|r| r.iter().map(|v| v * s / S_REF).collect())
-            .collect();
+        let x: Vec<Vec<f64>> =
+            (self.samples.iter()).map(|r| r.iter().map(|v| v * s / S_REF).collect()).collect();
         let fit = fit_at(&jm, &u_hat, l_max, &x);
         let gof = goodness_of_fit(&obs, &jm.sigma(&[s]).unwrap(), 1);
         (fit.parameters[0].clone(), gof)
@@ -169,10 +150,7 @@ fn recovery_coverage_of_the_spread_interval() {
     eprintln!(
         "coverage {coverage:.3} (summary file {cov_summary:.3}), mean |error| {abs_err:.4}, mean error {bias:.4}, misfit flags on model data {false_alarms:.3}"
     );
-    assert!(
-        (0.80..=0.97).contains(&cov_summary),
-        "summary coverage {cov_summary}"
-    );
+    assert!((0.80..=0.97).contains(&cov_summary), "summary coverage {cov_summary}");
     // The goodness-of-fit test at p < 0.01 flags data drawn from the model rarely.
     assert!(false_alarms <= 0.05, "false misfit flags {false_alarms}");
     assert!((0.80..=0.97).contains(&coverage), "coverage {coverage}");
@@ -184,12 +162,8 @@ fn transfer_to_scenes_01_and_04_contains_direct_studies() {
     let plan = model_plan("02_maxwell_pins_steel.toml");
     let c02 = &plan.variants[0];
     let mut rng = ChaCha8Rng::seed_from_u64(31);
-    let m = Measurement::parse(
-        &csv(&synthetic(c02, TRUE_SPREAD, 50, &mut rng)),
-        "syn02.csv",
-        None,
-    )
-    .unwrap();
+    let m = Measurement::parse(&csv(&synthetic(c02, TRUE_SPREAD, 50, &mut rng)), "syn02.csv", None)
+        .unwrap();
     let opts = common::synthetic::calibrate_options(&["spread"]);
     let cal = calibrate(&c02.scene, &c02.coupling, &m, &opts).unwrap();
     let sp = cal.spread().expect("the spread is fitted");
@@ -222,12 +196,7 @@ fn joint_transfer_to_scenes_01_and_04_contains_direct_studies() {
     let plan = model_plan("02_maxwell_pins_steel.toml");
     let c02 = &plan.variants[0];
     let mut rng = ChaCha8Rng::seed_from_u64(33);
-    let rows = synthetic(
-        &with_values(c02, &[Param::MuStatic], &[0.40]),
-        TRUE_SPREAD,
-        50,
-        &mut rng,
-    );
+    let rows = synthetic(&with_values(c02, &[Param::MuStatic], &[0.40]), TRUE_SPREAD, 50, &mut rng);
     let m = Measurement::parse(&csv(&rows), "syn02.csv", None).unwrap();
     let opts = common::synthetic::calibrate_options(&["spread", "mu_static"]);
     let cal = calibrate(&c02.scene, &c02.coupling, &m, &opts).unwrap();
@@ -240,10 +209,7 @@ fn joint_transfer_to_scenes_01_and_04_contains_direct_studies() {
 /// calibrated design, contains sigma of the direct study of `truth` applied
 /// to each ([`assert_direct_inside`]).
 fn assert_transfer(cal: &kinrepro::calibrate::Calibration, truth: impl Fn(&Variant) -> Variant) {
-    for name in [
-        "01_maxwell_vgroove_steel.toml",
-        "04_maxwell_balls_steel.toml",
-    ] {
+    for name in ["01_maxwell_vgroove_steel.toml", "04_maxwell_balls_steel.toml"] {
         let (scene, c) = common::load(name);
         let p = predict(
             &scene,
@@ -273,20 +239,14 @@ fn assert_direct_inside(
 ) {
     let run = run_variant(settings, direct, &|| {}).unwrap();
     let pt = &p.variant.points[0];
-    let (lo, hi) = (
-        pt.sigma_ci90_low.unwrap().values(),
-        pt.sigma_ci90_high.unwrap().values(),
-    );
+    let (lo, hi) = (pt.sigma_ci90_low.unwrap().values(), pt.sigma_ci90_high.unwrap().values());
     for j in 0..6 {
         let v: Vec<f64> = run.records.iter().map(|r| r.outputs[j]).collect();
         let mean = v.iter().sum::<f64>() / v.len() as f64;
         let sd = (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (v.len() as f64 - 1.0))
             .sqrt()
             * 1e9;
-        eprintln!(
-            "{name} dof {j}: direct {sd:.4} in [{:.4}, {:.4}]",
-            lo[j], hi[j]
-        );
+        eprintln!("{name} dof {j}: direct {sd:.4} in [{:.4}, {:.4}]", lo[j], hi[j]);
         assert!(
             lo[j] <= sd && sd <= hi[j],
             "{name} dof {j}: direct sigma {sd} outside [{}, {}]",
@@ -320,8 +280,5 @@ fn misfit_sigma_z_three_times_sigma_x_is_flagged() {
     let (g_good, g_bad) = (model.fit(c, &good).1, model.fit(c, &bad).1);
     eprintln!("p good {:?}, p bad {:?}", g_good.p_value, g_bad.p_value);
     assert!(g_good.ok, "data drawn from the model flagged: {g_good:?}");
-    assert!(
-        !g_bad.ok && g_bad.p_value.unwrap() < 1e-6,
-        "misfit not flagged: {g_bad:?}"
-    );
+    assert!(!g_bad.ok && g_bad.p_value.unwrap() < 1e-6, "misfit not flagged: {g_bad:?}");
 }

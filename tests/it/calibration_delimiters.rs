@@ -16,13 +16,7 @@ use kinrepro::calibrate::Measurement;
 fn copy(original: &str, line: impl Fn(&str) -> String) -> String {
     original
         .lines()
-        .map(|l| {
-            if l.starts_with('#') {
-                l.to_string()
-            } else {
-                line(l)
-            }
-        })
+        .map(|l| if l.starts_with('#') { l.to_string() } else { line(l) })
         .collect::<Vec<_>>()
         .join("\n")
         + "\n"
@@ -55,10 +49,7 @@ fn semicolon_and_quoted_header_copies_calibrate_to_the_original_estimate() {
     let dir = tempfile::tempdir().unwrap();
     let quote_header = |l: &str| {
         if l.starts_with("x_nm") {
-            l.split(',')
-                .map(|c| format!("\"{c}\""))
-                .collect::<Vec<_>>()
-                .join(",")
+            l.split(',').map(|c| format!("\"{c}\"")).collect::<Vec<_>>().join(",")
         } else {
             l.to_string()
         }
@@ -74,10 +65,7 @@ fn semicolon_and_quoted_header_copies_calibrate_to_the_original_estimate() {
                 false => l.replace(',', " ; "),
             }),
         ),
-        (
-            "bom_crlf.csv",
-            format!("\u{feff}{}", original.replace('\n', "\r\n")),
-        ),
+        ("bom_crlf.csv", format!("\u{feff}{}", original.replace('\n', "\r\n"))),
     ];
     let base = Measurement::load(&original_path, None).unwrap();
     let s0 = base.covariance().unwrap();
@@ -128,9 +116,8 @@ fn semicolon_and_quoted_header_copies_calibrate_to_the_original_estimate() {
 /// as the likely cause.
 #[test]
 fn decimal_comma_is_named() {
-    let e = Measurement::parse("x_nm;y_nm\n1,5;2\n3;4\n5;6\n", "m.csv", None)
-        .unwrap_err()
-        .to_string();
+    let e =
+        Measurement::parse("x_nm;y_nm\n1,5;2\n3;4\n5;6\n", "m.csv", None).unwrap_err().to_string();
     assert!(
         e.starts_with("m.csv: line 2, column 1 (x_nm): `1,5` is not a number")
             && e.contains("decimal comma"),

@@ -9,28 +9,17 @@ use kinrepro::calibrate::predict::PREDICTION_METHOD;
 use kinrepro::calibrate::units::{UnitError, parse_column, parse_noise, parse_value};
 
 fn err(text: &str) -> String {
-    Measurement::parse(text, "m.csv", None)
-        .unwrap_err()
-        .to_string()
+    Measurement::parse(text, "m.csv", None).unwrap_err().to_string()
 }
 
 #[test]
 fn bad_measurement_files_name_file_line_and_column() {
     let e = err("# rig: test\nx,y_nm\n1,2\n3,4\n5,6\n");
-    assert!(
-        e.starts_with("m.csv: line 2, column 1 (x):") && e.contains("no unit"),
-        "{e}"
-    );
+    assert!(e.starts_with("m.csv: line 2, column 1 (x):") && e.contains("no unit"), "{e}");
     let e = err("x_nm,w_nm\n1,2\n3,4\n5,6\n");
-    assert!(
-        e.starts_with("m.csv: line 1, column 2 (w_nm):") && e.contains("unknown DOF"),
-        "{e}"
-    );
+    assert!(e.starts_with("m.csv: line 1, column 2 (w_nm):") && e.contains("unknown DOF"), "{e}");
     let e = err("x_nm,phi_x_nm\n1,2\n3,4\n5,6\n");
-    assert!(
-        e.contains("column 2 (phi_x_nm)") && e.contains("does not fit"),
-        "{e}"
-    );
+    assert!(e.contains("column 2 (phi_x_nm)") && e.contains("does not fit"), "{e}");
     let e = err("x_nm,y_nm\n1,2\n3,4\n");
     assert!(
         e.starts_with("m.csv: line 3, column 1 (x_nm):") && e.contains("need at least 3"),
@@ -38,40 +27,25 @@ fn bad_measurement_files_name_file_line_and_column() {
     );
     // With a `point` column first, the first DOF column is named.
     let e = err("point,x_nm\na,1\na,2\n");
-    assert!(
-        e.starts_with("m.csv: line 3, column 2 (x_nm):") && e.contains("2 cycle(s)"),
-        "{e}"
-    );
+    assert!(e.starts_with("m.csv: line 3, column 2 (x_nm):") && e.contains("2 cycle(s)"), "{e}");
     let e = err("x_nm,y_nm\n1,2\n3,abc\n5,6\n");
     assert!(
         e.starts_with("m.csv: line 3, column 2 (y_nm):") && e.contains("`abc` is not a number"),
         "{e}"
     );
     let e = err("x_nm,y_nm\n1,2\n3,4\nNaN,6\n");
-    assert!(
-        e.starts_with("m.csv: line 4, column 1 (x_nm):") && e.contains("not a finite"),
-        "{e}"
-    );
+    assert!(e.starts_with("m.csv: line 4, column 1 (x_nm):") && e.contains("not a finite"), "{e}");
     let e = err("x_nm,y_nm\n1,2\n3,4\n5\n");
-    assert!(
-        e.starts_with("m.csv: line 4:") && e.contains("1 values, the header has 2"),
-        "{e}"
-    );
+    assert!(e.starts_with("m.csv: line 4:") && e.contains("1 values, the header has 2"), "{e}");
     let e = err("x_nm,x_um\n1,2\n3,4\n5,6\n");
-    assert!(
-        e.contains("column 2 (x_um)") && e.contains("measured twice"),
-        "{e}"
-    );
+    assert!(e.contains("column 2 (x_um)") && e.contains("measured twice"), "{e}");
     let e = err("point,x_nm\na,1\na,2\nb,3\n");
     assert!(
         e.starts_with("m.csv: line 4, column 1 (point):") && e.contains("one evaluation point"),
         "{e}"
     );
     let e = err("# noise: x=1 nrad\nx_nm\n1\n2\n3\n");
-    assert!(
-        e.starts_with("m.csv: line 1: # noise:") && e.contains("does not fit"),
-        "{e}"
-    );
+    assert!(e.starts_with("m.csv: line 1: # noise:") && e.contains("does not fit"), "{e}");
     // Summary files.
     let e = err("dof,unit,sigma,cycles\nx,nm,5,2\n");
     assert!(
@@ -79,20 +53,11 @@ fn bad_measurement_files_name_file_line_and_column() {
         "{e}"
     );
     let e = err("dof,unit,sigma,cycles\nx,,5,20\n");
-    assert!(
-        e.contains("column 2 (unit)") && e.contains("missing unit"),
-        "{e}"
-    );
+    assert!(e.contains("column 2 (unit)") && e.contains("missing unit"), "{e}");
     let e = err("dof,unit,sigma,cycles\nq,nm,5,20\n");
-    assert!(
-        e.contains("column 1 (dof)") && e.contains("unknown DOF"),
-        "{e}"
-    );
+    assert!(e.contains("column 1 (dof)") && e.contains("unknown DOF"), "{e}");
     let e = err("dof,unit,sigma,cycles\nx,nm,inf,20\n");
-    assert!(
-        e.contains("column 3 (sigma)") && e.contains("not a finite"),
-        "{e}"
-    );
+    assert!(e.contains("column 3 (sigma)") && e.contains("not a finite"), "{e}");
 }
 
 #[test]
@@ -107,10 +72,7 @@ fn units_convert_to_si() {
     assert_eq!(m.dofs, vec![0, 4]);
     let s = m.sigma();
     // sigma of (1, 3, 2) nm is 1 nm; of (0.1, 0.3, 0.2) urad is 0.1 urad.
-    assert!(
-        (s[0] - 1e-9).abs() < 1e-18 && (s[1] - 1e-7).abs() < 1e-16,
-        "{s:?}"
-    );
+    assert!((s[0] - 1e-9).abs() < 1e-18 && (s[1] - 1e-7).abs() < 1e-16, "{s:?}");
     assert_eq!(m.noise[0], Some(2e-9));
     assert!((m.noise[4].unwrap() - 5e-8).abs() < 1e-20);
     let sm = Measurement::parse(
@@ -128,12 +90,8 @@ fn units_convert_to_si() {
 fn cli_calibrate_and_predict() {
     let dir = tempfile::tempdir().unwrap();
     let path = |n: &str| dir.path().join(n).display().to_string();
-    let s02 = common::scene("02_maxwell_pins_steel.toml")
-        .display()
-        .to_string();
-    let s01 = common::scene("01_maxwell_vgroove_steel.toml")
-        .display()
-        .to_string();
+    let s02 = common::scene("02_maxwell_pins_steel.toml").display().to_string();
+    let s01 = common::scene("01_maxwell_vgroove_steel.toml").display().to_string();
     let measured = common::worked_measurement().display().to_string();
     let measured = measured.as_str();
     // A bad file: one error line, non-zero exit.
@@ -141,23 +99,11 @@ fn cli_calibrate_and_predict() {
     let (ok, _, e) = common::kinrepro(&["calibrate", &s02, "--measured", &path("bad.csv")]);
     assert!(!ok && e.trim().lines().count() == 1, "{e}");
     assert!(e.contains("bad.csv: line 3, column 2 (y_nm)"), "{e}");
-    let (ok, _, e) = common::kinrepro(&[
-        "calibrate",
-        &s02,
-        "--measured",
-        measured,
-        "--point",
-        "nowhere",
-    ]);
+    let (ok, _, e) =
+        common::kinrepro(&["calibrate", &s02, "--measured", measured, "--point", "nowhere"]);
     assert!(!ok && e.contains("`nowhere` is not in the scene"), "{e}");
-    let (ok, _, e) = common::kinrepro(&[
-        "calibrate",
-        &s02,
-        "--measured",
-        measured,
-        "--noise",
-        "x=abc",
-    ]);
+    let (ok, _, e) =
+        common::kinrepro(&["calibrate", &s02, "--measured", measured, "--noise", "x=abc"]);
     assert!(!ok && e.contains("--noise"), "{e}");
     // Calibrate (small model studies to keep the test quick), JSON to stdout and file.
     let cal = path("cal.json");
@@ -317,33 +263,16 @@ fn unit_columns_and_values() {
     assert_eq!(parse_column("x_um").unwrap(), (0, 1e-6));
     let e = parse_column("x").unwrap_err();
     assert!(matches!(e, UnitError::NoUnit { dof: 0, .. }), "{e:?}");
-    assert_eq!(
-        e.to_string(),
-        "`x` has no unit: write x_m, x_mm, x_um, x_nm"
-    );
-    assert!(
-        parse_column("w_nm")
-            .unwrap_err()
-            .to_string()
-            .contains("unknown DOF")
-    );
+    assert_eq!(e.to_string(), "`x` has no unit: write x_m, x_mm, x_um, x_nm");
+    assert!(parse_column("w_nm").unwrap_err().to_string().contains("unknown DOF"));
     let e = parse_column("z_nrad").unwrap_err();
-    assert_eq!(
-        e.to_string(),
-        "`z_nrad`: unit `nrad` does not fit z (use m, mm, um, nm)"
-    );
+    assert_eq!(e.to_string(), "`z_nrad`: unit `nrad` does not fit z (use m, mm, um, nm)");
     assert_eq!(parse_value(0, "1nm").unwrap(), 1e-9);
     assert_eq!(parse_value(4, "20 nrad").unwrap(), 20e-9);
     assert_eq!(parse_value(0, "1e-9").unwrap(), 1e-9);
-    assert!(matches!(
-        parse_value(0, "1 nrad"),
-        Err(UnitError::ValueUnit { dof: 0, .. })
-    ));
+    assert!(matches!(parse_value(0, "1 nrad"), Err(UnitError::ValueUnit { dof: 0, .. })));
     assert!(parse_value(0, "NaN").is_err());
-    assert!(matches!(
-        parse_value(0, "-1nm"),
-        Err(UnitError::OutOfRange { .. })
-    ));
+    assert!(matches!(parse_value(0, "-1nm"), Err(UnitError::OutOfRange { .. })));
     let mut n = [None; 6];
     parse_noise("x=1nm, phi_z=2e-8", &mut n).unwrap();
     assert_eq!(n[0], Some(1e-9));
@@ -363,12 +292,8 @@ fn cycles_given_as_numbers_are_the_files() {
     use kinrepro::dof::Dof;
     let text = "x_nm,phi_y_nrad\n1.5,-20\n-3.25,40\n2,10\n0.5,-5\n";
     let file = Measurement::parse(text, "m.csv", None).unwrap();
-    let rows = vec![
-        vec![1.5e-9, -20e-9],
-        vec![-3.25e-9, 40e-9],
-        vec![2e-9, 10e-9],
-        vec![0.5e-9, -5e-9],
-    ];
+    let rows =
+        vec![vec![1.5e-9, -20e-9], vec![-3.25e-9, 40e-9], vec![2e-9, 10e-9], vec![0.5e-9, -5e-9]];
     let dofs = [Dof::X, Dof::PhiY];
     let array = Measurement::from_cycles("array", None, &dofs, rows.clone(), [None; 6]).unwrap();
     assert_eq!(array.dofs, file.dofs);
@@ -382,9 +307,7 @@ fn cycles_given_as_numbers_are_the_files() {
     }
     assert_eq!(array.sigma().len(), 2);
     let e = |rows: Vec<Vec<f64>>| {
-        Measurement::from_cycles("array", None, &dofs, rows, [None; 6])
-            .unwrap_err()
-            .to_string()
+        Measurement::from_cycles("array", None, &dofs, rows, [None; 6]).unwrap_err().to_string()
     };
     let mut slip = rows.clone();
     slip[2][0] = 2.0;

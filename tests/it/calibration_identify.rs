@@ -27,16 +27,8 @@ fn grid_interpolation_matches_direct_studies_between_nodes() {
     let plan = common::model_plan("02_maxwell_pins_steel.toml", 1000, MODEL_SEED);
     let c = &plan.variants[0];
     let dofs = [0, 1, 2, 3, 4, 5];
-    let spec = StudySpec {
-        plan: &plan,
-        point: 0,
-        dofs: &dofs,
-    };
-    for p in [
-        Param::MuStatic,
-        Param::DynamicRatio,
-        Param::SupportCompliance,
-    ] {
+    let spec = StudySpec { plan: &plan, point: 0, dofs: &dofs };
+    for p in [Param::MuStatic, Param::DynamicRatio, Param::SupportCompliance] {
         let range = p.range(c, false);
         let grid = ModelGrid::build(&spec, &[p], &[range], 0.05).unwrap();
         let nodes = &grid.nodes[0];
@@ -45,18 +37,13 @@ fn grid_interpolation_matches_direct_studies_between_nodes() {
         for i in [0, nodes.len() / 2, nodes.len() - last] {
             let v = 0.5 * (nodes[i] + nodes[i + 1]);
             let g = grid.at(&[v]);
-            let direct = spec
-                .run(&with_values(c, &[p, Param::Spread], &[v, 0.05]))
-                .unwrap();
+            let direct = spec.run(&with_values(c, &[p, Param::Spread], &[v, 0.05])).unwrap();
             let gd = direct.per_unit(&dofs);
             for j in 0..6 {
                 worst = worst.max(((g[(j, j)] / gd[(j, j)]).sqrt() - 1.0).abs());
             }
         }
-        eprintln!(
-            "{}: largest sigma difference between nodes {worst:.2e}",
-            p.name()
-        );
+        eprintln!("{}: largest sigma difference between nodes {worst:.2e}", p.name());
         assert!(worst < 0.01, "{}: {worst}", p.name());
     }
 }
@@ -74,19 +61,12 @@ fn support_compliance_beside_the_spread_is_flagged_not_determined() {
     let mut rng = ChaCha8Rng::seed_from_u64(152);
     let m = Measurement::parse(&csv(&synthetic(&truth, 50, &mut rng)), "syn.csv", None).unwrap();
     let alone = calibrate(&c.scene, &c.coupling, &m, &calibrate_options(&["spread"])).unwrap();
-    let joint = calibrate(
-        &c.scene,
-        &c.coupling,
-        &m,
-        &calibrate_options(&["spread", "support_compliance"]),
-    )
-    .unwrap();
+    let joint =
+        calibrate(&c.scene, &c.coupling, &m, &calibrate_options(&["spread", "support_compliance"]))
+            .unwrap();
     let sc = &joint.parameters["support_compliance"];
     let [r0, r1] = sc.range.unwrap();
-    eprintln!(
-        "support_compliance {sc:?}; correlation {:?}",
-        joint.correlation
-    );
+    eprintln!("support_compliance {sc:?}; correlation {:?}", joint.correlation);
     assert!(sc.low_at_bound || sc.high_at_bound, "{sc:?}");
     assert!(!sc.determined);
     assert!(
@@ -151,10 +131,7 @@ fn joint_misfit_is_flagged() {
     eprintln!("p good {:?}, p bad {:?}", g.p_value, b.p_value);
     assert_eq!((g.df, b.df), (19, 19));
     assert!(g.ok, "data drawn from the model flagged: {g:?}");
-    assert!(
-        !b.ok && b.p_value.unwrap() < 1e-6,
-        "misfit not flagged: {b:?}"
-    );
+    assert!(!b.ok && b.p_value.unwrap() < 1e-6, "misfit not flagged: {b:?}");
     let table = kinrepro::report::calibration::calibration_table(&bad);
     assert!(table.contains("POOR FIT"), "{table}");
 }

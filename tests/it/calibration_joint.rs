@@ -29,23 +29,15 @@ fn joint_spread_and_mu_static_intervals_cover_the_truth() {
     let truth = [0.08, 0.40];
     let truth_scene = with_values(c, &params, &truth);
     let dofs = [0, 1, 2, 3, 4, 5];
-    let spec = StudySpec {
-        plan: &plan,
-        point: 0,
-        dofs: &dofs,
-    };
+    let spec = StudySpec { plan: &plan, point: 0, dofs: &dofs };
     let range = Param::MuStatic.range(c, true);
     let grid = ModelGrid::build(&spec, &[Param::MuStatic], &[range], 0.05).unwrap();
     let mut rng = ChaCha8Rng::seed_from_u64(72_026);
     let reps = 100;
     let (mut covered, mut err, mut flagged) = ([0usize; 2], [0.0f64; 2], 0usize);
     for _ in 0..reps {
-        let m = Measurement::parse(
-            &csv(&synthetic(&truth_scene, 50, &mut rng)),
-            "syn.csv",
-            None,
-        )
-        .unwrap();
+        let m = Measurement::parse(&csv(&synthetic(&truth_scene, 50, &mut rng)), "syn.csv", None)
+            .unwrap();
         let obs = observed(&m);
         let jm = JointModel::new(&obs, &grid, &params, c, &noise_var());
         let (u_hat, l_max) = estimate(&jm);
@@ -66,11 +58,7 @@ fn joint_spread_and_mu_static_intervals_cover_the_truth() {
         cov[0], cov[1], err[0], err[1]
     );
     for (a, name) in ["spread", "mu_static"].iter().enumerate() {
-        assert!(
-            (0.80..=0.97).contains(&cov[a]),
-            "{name} coverage {}",
-            cov[a]
-        );
+        assert!((0.80..=0.97).contains(&cov[a]), "{name} coverage {}", cov[a]);
     }
     assert!(err[0] < 0.05, "spread mean |error| {}", err[0]);
 }

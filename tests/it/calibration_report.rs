@@ -26,9 +26,7 @@ fn sample_sd(text: &str, col: usize) -> f64 {
 fn report_of_a_prediction_names_its_calibration_and_shows_the_measurement() {
     let dir = tempfile::tempdir().unwrap();
     let path = |n: &str| dir.path().join(n).display().to_string();
-    let s02 = common::scene("02_maxwell_pins_steel.toml")
-        .display()
-        .to_string();
+    let s02 = common::scene("02_maxwell_pins_steel.toml").display().to_string();
     let measured = common::worked_measurement().display().to_string();
     let measured = measured.as_str();
     let cal = path("cal.json");
@@ -72,10 +70,7 @@ fn report_of_a_prediction_names_its_calibration_and_shows_the_measurement() {
         serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
     let sp = &c["parameters"]["spread"];
     let f = |k: &str| format!("{:.5}", sp[k].as_f64().unwrap());
-    assert!(
-        page.contains("Prediction with the parameters calibrated"),
-        "no calibration note"
-    );
+    assert!(page.contains("Prediction with the parameters calibrated"), "no calibration note");
     assert!(page.contains(&cal), "calibration file not named");
     assert!(
         page.contains(&format!(
@@ -88,10 +83,7 @@ fn report_of_a_prediction_names_its_calibration_and_shows_the_measurement() {
     );
     // Nowhere its 16 digits (the run table's spread column too: 4 digits).
     let full = sp["estimate"].as_f64().unwrap().to_string();
-    assert!(
-        full.len() > 10 && !page.contains(&full),
-        "{full} in the page"
-    );
+    assert!(full.len() > 10 && !page.contains(&full), "{full} in the page");
     assert!(page.contains(&format!("<td>{}</td>", f("estimate"))));
 
     // The measured row: the sample sigma of the CSV's columns (x_nm first,
@@ -101,18 +93,12 @@ fn report_of_a_prediction_names_its_calibration_and_shows_the_measurement() {
     let row = &page[row_start..row_start + page[row_start..].find("</tr>").unwrap()];
     for (col, digits) in [(0, 3), (2, 3), (5, 2)] {
         let want = format!("{:.*}", digits, sample_sd(&csv, col));
-        assert!(
-            row.contains(&want),
-            "measured sigma {want} (column {col}) not in {row}"
-        );
+        assert!(row.contains(&want), "measured sigma {want} (column {col}) not in {row}");
     }
 
     // The scene of a prediction is checked with the calibrated parameters
     // applied: changing the file is still caught.
     std::fs::write(&s04, text04.replace("force = 20.0", "force = 21.0")).unwrap();
     let (ok, _, e) = common::kinrepro(&["report", &pred, "--out", &path("again.html")]);
-    assert!(
-        !ok && e.contains("scene_content") && e.trim().lines().count() == 1,
-        "{e}"
-    );
+    assert!(!ok && e.contains("scene_content") && e.trim().lines().count() == 1, "{e}");
 }

@@ -4,10 +4,7 @@
 use crate::common;
 use crate::common::kinrepro;
 
-const SCENE: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/scenes/01_maxwell_vgroove_steel.toml"
-);
+const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/01_maxwell_vgroove_steel.toml");
 
 #[test]
 fn stiffness_json_has_the_frictionless_closed_form() {
@@ -26,33 +23,20 @@ fn stiffness_json_has_the_frictionless_closed_form() {
 
 #[test]
 fn load_reports_the_envelope_and_a_table() {
-    let (ok, out, err) = kinrepro(&[
-        "load", SCENE, "--force", "1,0,0", "--at", "0,0,0.05", "--json",
-    ]);
+    let (ok, out, err) =
+        kinrepro(&["load", SCENE, "--force", "1,0,0", "--at", "0,0,0.05", "--json"]);
     assert!(ok, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     let f = v["envelope"]["factor"].as_f64().unwrap();
-    assert!(
-        f > 0.0 && v["envelope"]["event"]["kind"] == "slip",
-        "{}",
-        v["envelope"]
-    );
+    assert!(f > 0.0 && v["envelope"]["event"]["kind"] == "slip", "{}", v["envelope"]);
     // Statics of the reported forces: the contacts carry preload plus load.
     let mut fx = 1.0;
     let mut fz = -20.0;
     for c in v["contacts"].as_array().unwrap() {
-        let n: Vec<f64> = c["normal"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|x| x.as_f64().unwrap())
-            .collect();
-        let t: Vec<f64> = c["tangential_force"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|x| x.as_f64().unwrap())
-            .collect();
+        let n: Vec<f64> =
+            c["normal"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+        let t: Vec<f64> =
+            c["tangential_force"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
         let fnn = c["normal_force_n"].as_f64().unwrap();
         fx += fnn * n[0] + t[0];
         fz += fnn * n[2] + t[2];
@@ -65,37 +49,14 @@ fn load_reports_the_envelope_and_a_table() {
 #[test]
 fn bad_load_input_is_a_clear_error_with_nonzero_exit() {
     let cases: &[(&[&str], &str)] = &[
-        (
-            &["load", SCENE, "--force", "1,0,0", "--at", "a,b,c"],
-            "invalid",
-        ),
-        (
-            &["load", SCENE, "--force", "1,0", "--at", "0,0,0"],
-            "--force needs three",
-        ),
-        (
-            &["load", SCENE, "--force", "1,0,0", "--at", "0,0,0,0"],
-            "--at needs three",
-        ),
-        (
-            &["load", SCENE, "--force", "NaN,0,0", "--at", "0,0,0"],
-            "finite",
-        ),
-        (
-            &["load", SCENE, "--force", "1,0,0", "--at", "0,inf,0"],
-            "finite",
-        ),
-        (
-            &["load", SCENE, "--force", "0,0,0", "--at", "0,0,0"],
-            "no load",
-        ),
+        (&["load", SCENE, "--force", "1,0,0", "--at", "a,b,c"], "invalid"),
+        (&["load", SCENE, "--force", "1,0", "--at", "0,0,0"], "--force needs three"),
+        (&["load", SCENE, "--force", "1,0,0", "--at", "0,0,0,0"], "--at needs three"),
+        (&["load", SCENE, "--force", "NaN,0,0", "--at", "0,0,0"], "finite"),
+        (&["load", SCENE, "--force", "1,0,0", "--at", "0,inf,0"], "finite"),
+        (&["load", SCENE, "--force", "0,0,0", "--at", "0,0,0"], "no load"),
         (&["load", SCENE, "--force", "1,0,0"], "--at"),
-        (
-            &[
-                "load", SCENE, "--force", "1,0,0", "--at", "0,0,0", "--mu", "0.5",
-            ],
-            "needs 6 values",
-        ),
+        (&["load", SCENE, "--force", "1,0,0", "--at", "0,0,0", "--mu", "0.5"], "needs 6 values"),
         (&["stiffness", SCENE, "--at", "x,y,z"], "invalid"),
         (&["stiffness", SCENE, "--at", "0,nan,0"], "finite"),
         (&["stiffness", SCENE, "--at", "0,0"], "--at needs three"),

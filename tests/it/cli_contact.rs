@@ -46,90 +46,26 @@ fn json_output_has_the_documented_keys_and_hertz_values() {
 fn bad_input_is_a_clear_error_with_nonzero_exit() {
     let base = ["contact", "--material1", "steel", "--material2", "steel"];
     let cases: &[(&[&str], &str)] = &[
+        (&["--shape", "sphere-plane", "--radius1", "-5e-3", "--load", "1"], "radius1"),
         (
-            &[
-                "--shape",
-                "sphere-plane",
-                "--radius1",
-                "-5e-3",
-                "--load",
-                "1",
-            ],
-            "radius1",
-        ),
-        (
-            &[
-                "--shape",
-                "sphere-sphere",
-                "--radius1",
-                "5e-3",
-                "--radius2",
-                "0",
-                "--load",
-                "1",
-            ],
+            &["--shape", "sphere-sphere", "--radius1", "5e-3", "--radius2", "0", "--load", "1"],
             "radius2",
         ),
+        (&["--shape", "sphere-cylinder", "--radius1", "5e-3", "--load", "1"], "needs radius2"),
+        (&["--shape", "sphere-plane", "--radius1", "5e-3", "--load", "0"], "load"),
+        (&["--shape", "sphere-plane", "--radius1", "5e-3", "--load", "-3"], "load"),
         (
-            &[
-                "--shape",
-                "sphere-cylinder",
-                "--radius1",
-                "5e-3",
-                "--load",
-                "1",
-            ],
-            "needs radius2",
-        ),
-        (
-            &[
-                "--shape",
-                "sphere-plane",
-                "--radius1",
-                "5e-3",
-                "--load",
-                "0",
-            ],
-            "load",
-        ),
-        (
-            &[
-                "--shape",
-                "sphere-plane",
-                "--radius1",
-                "5e-3",
-                "--load",
-                "-3",
-            ],
-            "load",
-        ),
-        (
-            &[
-                "--shape",
-                "sphere-seat",
-                "--radius1",
-                "5e-3",
-                "--radius2",
-                "4e-3",
-                "--load",
-                "1",
-            ],
+            &["--shape", "sphere-seat", "--radius1", "5e-3", "--radius2", "4e-3", "--load", "1"],
             "seat",
         ),
-        (
-            &["--shape", "sphere-cone", "--radius1", "5e-3", "--load", "1"],
-            "sphere-cone",
-        ),
+        (&["--shape", "sphere-cone", "--radius1", "5e-3", "--load", "1"], "sphere-cone"),
     ];
     for (args, needle) in cases {
         let mut all: Vec<&str> = base.to_vec();
         all.extend_from_slice(args);
         let (ok, _, err) = kinrepro(&all);
         assert!(!ok, "{args:?} should fail");
-        assert!(
-            err.contains(needle),
-            "{args:?}: stderr lacks `{needle}`: {err}"
-        );
+        assert!(err.contains(needle), "{args:?}: stderr lacks `{needle}`: {err}");
         assert!(!err.contains("panicked"), "{err}");
     }
     let (ok, _, err) = kinrepro(&[
@@ -229,21 +165,14 @@ fn history_follows_cattaneo_and_prints_the_documented_csv() {
     let (e, nu) = (210e9_f64, 0.3_f64);
     let g_star = e / (2.0 * (1.0 + nu)) / (2.0 * (2.0 - nu));
     let a = (3.0 * p * 5e-3 / (4.0 * e / (2.0 * (1.0 - nu * nu)))).cbrt();
-    let rows: Vec<Vec<String>> = lines
-        .map(|l| l.split(',').map(String::from).collect())
-        .collect();
+    let rows: Vec<Vec<String>> = lines.map(|l| l.split(',').map(String::from).collect()).collect();
     assert_eq!(rows.len(), n + 1);
     for r in &rows[1..] {
         let f = |k: usize| r[k].parse::<f64>().unwrap();
         // Q along y (the minor axis): Cattaneo, Johnson eq. 7.49.
         let q = f(3) / (mu * p);
         let s = 3.0 * mu * p / (16.0 * g_star * a) * (1.0 - (1.0 - q).powf(2.0 / 3.0));
-        assert!(
-            (f(5) / s - 1.0).abs() < 5e-3,
-            "step {}: {} vs {s}",
-            r[0],
-            f(5)
-        );
+        assert!((f(5) / s - 1.0).abs() < 5e-3, "step {}: {} vs {s}", r[0], f(5));
         assert_eq!(f(4), 0.0);
         assert_eq!(r[6], "stick");
     }
@@ -262,18 +191,12 @@ fn bad_history_is_one_clear_error_naming_file_line_and_column() {
     let dir = tmp.path();
     let cases: &[(&str, &[&str])] = &[
         ("P_N,Qx_N,Qy_N\n10,0,0\n10,abc,0\n", &[":3:", "Qx_N", "abc"]),
-        (
-            "P_N,Qx_N,Qy_N\n10,0,0\n-1,0,0\n",
-            &[":3:", "P_N", "positive"],
-        ),
+        ("P_N,Qx_N,Qy_N\n10,0,0\n-1,0,0\n", &[":3:", "P_N", "positive"]),
         ("P_N,Qx_N,Qy_N\n10,0,0\n10,0,nan\n", &[":3:", "Qy_N"]),
         ("P_N,Qx_N,Qy_N\n10,0\n", &[":2:", "2 fields"]),
         ("P,Qx,Qy\n10,0,0\n", &[":1:", "header", "P_N,Qx_N,Qy_N"]),
         ("P_N,Qx_N,Qy_N\n", &["no rows"]),
-        (
-            "P_N,Qx_N,Qy_N\n10,0,0\n10,4,0\n10,5.5,0\n",
-            &[":4:", "friction limit", "slide"],
-        ),
+        ("P_N,Qx_N,Qy_N\n10,0,0\n10,4,0\n10,5.5,0\n", &[":4:", "friction limit", "slide"]),
     ];
     for (i, (text, needles)) in cases.iter().enumerate() {
         let file = write(dir, &format!("h{i}.csv"), text);
@@ -329,10 +252,7 @@ fn history_needs_no_load() {
     let a = (3.0 * 10.0 * 5e-3 / (4.0 * e / (2.0 * (1.0 - nu * nu)))).cbrt();
     let last: Vec<&str> = out.lines().last().unwrap().split(',').collect();
     let sx: f64 = last[4].parse().unwrap();
-    assert!(
-        (sx / (1.0 / (8.0 * g_star * a)) - 1.0).abs() < 1e-12,
-        "{sx}"
-    );
+    assert!((sx / (1.0 / (8.0 * g_star * a)) - 1.0).abs() < 1e-12, "{sx}");
     // --load 5 beside --history: the same history, and a warning.
     let (ok, out2, err) = run(&["--history", &file, "--load", "5"]);
     assert!(ok && out2 == out, "{err}");

@@ -35,114 +35,35 @@ fn a_bad_value_of_each_checked_flag_is_one_line_naming_it() {
     // (arguments, the flag the error names)
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (with_history(&["--mu", "-0.2"]), "--mu"),
-        (
-            with_history(&["--mu", "0.2", "--dynamic-ratio", "1.5"]),
-            "--dynamic-ratio",
-        ),
-        (
-            [&contact[..8], &["unobtainium", "--load", "10"]].concat(),
-            "--material2",
-        ),
+        (with_history(&["--mu", "0.2", "--dynamic-ratio", "1.5"]), "--dynamic-ratio"),
+        ([&contact[..8], &["unobtainium", "--load", "10"]].concat(), "--material2"),
         (vec!["run", s01, "--increments", "0"], "--increments"),
         (vec!["run", s01, "--trace", "t.csv"], "--trace"),
-        (
-            vec!["run", s01, "--solver", "dynamic", "--offset", "0,1e-6"],
-            "--offset",
-        ),
-        (
-            vec!["run", s01, "--solver", "dynamic", "--tilt", "0"],
-            "--tilt",
-        ),
+        (vec!["run", s01, "--solver", "dynamic", "--offset", "0,1e-6"], "--offset"),
+        (vec!["run", s01, "--solver", "dynamic", "--tilt", "0"], "--tilt"),
         (vec!["stiffness", s01, "--at", "0,0"], "--at"),
         (vec!["stiffness", s01, "--at", "0,nan,0"], "--at"),
-        (
-            vec!["load", s01, "--force", "1,0", "--at", "0,0,0"],
-            "--force",
-        ),
-        (
-            vec!["load", s01, "--force", "1,0,0", "--at", "inf,0,0"],
-            "--at",
-        ),
-        (
-            vec![
-                "load", s01, "--force", "1,0,0", "--at", "0,0,0", "--moment", "1",
-            ],
-            "--moment",
-        ),
-        (
-            vec!["load", s01, "--force", "0,0,0", "--at", "0,0,0"],
-            "--force",
-        ),
+        (vec!["load", s01, "--force", "1,0", "--at", "0,0,0"], "--force"),
+        (vec!["load", s01, "--force", "1,0,0", "--at", "inf,0,0"], "--at"),
+        (vec!["load", s01, "--force", "1,0,0", "--at", "0,0,0", "--moment", "1"], "--moment"),
+        (vec!["load", s01, "--force", "0,0,0", "--at", "0,0,0"], "--force"),
         (vec!["study", s01, "--increments", "100001"], "--increments"),
         (vec!["study", s01, "--jobs", "0"], "--jobs"),
+        (vec!["study", s01, "--sampler", "corners", "--samples", "8"], "--samples"),
+        (vec!["study", s01, "--offset-bounds", "0,0,1e-6"], "--offset-bounds"),
         (
-            vec!["study", s01, "--sampler", "corners", "--samples", "8"],
-            "--samples",
-        ),
-        (
-            vec!["study", s01, "--offset-bounds", "0,0,1e-6"],
-            "--offset-bounds",
-        ),
-        (
-            vec![
-                "study",
-                s01,
-                "--solver",
-                "dynamic",
-                "--vary",
-                "start",
-                "--tilt-bounds",
-                "0,-1,0",
-            ],
+            vec!["study", s01, "--solver", "dynamic", "--vary", "start", "--tilt-bounds", "0,-1,0"],
             "--tilt-bounds",
         ),
         (
-            vec![
-                "study",
-                s01,
-                "--solver",
-                "dynamic",
-                "--vary",
-                "start",
-                "--offset-bounds",
-                "1,1",
-            ],
+            vec!["study", s01, "--solver", "dynamic", "--vary", "start", "--offset-bounds", "1,1"],
             "--offset-bounds",
         ),
-        (
-            vec!["study", s01, "--sensitivity", "--sobol-samples", "1"],
-            "--sobol-samples",
-        ),
-        (
-            vec![
-                "sweep",
-                s01,
-                "--set",
-                "preload.force=5,10",
-                "--increments",
-                "0",
-            ],
-            "--increments",
-        ),
-        (
-            vec!["sweep", s01, "--set", "preload.force=5,10", "--points", "4"],
-            "--points",
-        ),
-        (
-            vec![
-                "sweep",
-                s01,
-                "--set",
-                "preload.force=5:10",
-                "--design",
-                "lhs",
-            ],
-            "--design",
-        ),
-        (
-            vec!["sweep", s01, "--set", "preload.force=5,10", "--jobs", "0"],
-            "--jobs",
-        ),
+        (vec!["study", s01, "--sensitivity", "--sobol-samples", "1"], "--sobol-samples"),
+        (vec!["sweep", s01, "--set", "preload.force=5,10", "--increments", "0"], "--increments"),
+        (vec!["sweep", s01, "--set", "preload.force=5,10", "--points", "4"], "--points"),
+        (vec!["sweep", s01, "--set", "preload.force=5:10", "--design", "lhs"], "--design"),
+        (vec!["sweep", s01, "--set", "preload.force=5,10", "--jobs", "0"], "--jobs"),
         (
             vec![
                 "sweep",
@@ -156,48 +77,13 @@ fn a_bad_value_of_each_checked_flag_is_one_line_naming_it() {
             ],
             "--samples",
         ),
-        (
-            vec!["validate-hertz", s01, "--convergence", "0.3,-0.2"],
-            "--convergence",
-        ),
-        (
-            vec![
-                "calibrate",
-                s02,
-                "--measured",
-                "m.csv",
-                "--model-samples",
-                "99",
-            ],
-            "--model-samples",
-        ),
-        (
-            vec![
-                "calibrate",
-                s02,
-                "--measured",
-                "m.csv",
-                "--noise",
-                "x=1parsec",
-            ],
-            "--noise",
-        ),
-        (
-            vec!["calibrate", s02, "--measured", "m.csv", "--delimiter", ";;"],
-            "--delimiter",
-        ),
-        (
-            vec!["calibrate", s02, "--measured", "m.csv", "--jobs", "0"],
-            "--jobs",
-        ),
-        (
-            vec!["predict", s02, "--calibration", "c.json", "--samples", "10"],
-            "--samples",
-        ),
-        (
-            vec!["predict", s02, "--calibration", "c.json", "--jobs", "0"],
-            "--jobs",
-        ),
+        (vec!["validate-hertz", s01, "--convergence", "0.3,-0.2"], "--convergence"),
+        (vec!["calibrate", s02, "--measured", "m.csv", "--model-samples", "99"], "--model-samples"),
+        (vec!["calibrate", s02, "--measured", "m.csv", "--noise", "x=1parsec"], "--noise"),
+        (vec!["calibrate", s02, "--measured", "m.csv", "--delimiter", ";;"], "--delimiter"),
+        (vec!["calibrate", s02, "--measured", "m.csv", "--jobs", "0"], "--jobs"),
+        (vec!["predict", s02, "--calibration", "c.json", "--samples", "10"], "--samples"),
+        (vec!["predict", s02, "--calibration", "c.json", "--jobs", "0"], "--jobs"),
     ];
     for (args, flag) in &cases {
         let (ok, out, err) = kinrepro(args);

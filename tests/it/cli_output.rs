@@ -13,10 +13,7 @@ use crate::common::{kinrepro, scene};
 use kinrepro::study::StudyReport;
 
 fn s01() -> String {
-    scene("01_maxwell_vgroove_steel.toml")
-        .to_str()
-        .unwrap()
-        .to_string()
+    scene("01_maxwell_vgroove_steel.toml").to_str().unwrap().to_string()
 }
 
 /// Scene 01 with `from` replaced by `to`, written into `dir`.
@@ -56,16 +53,7 @@ fn json(args: &[&str]) -> StudyReport {
 #[test]
 fn every_format_names_version_solver_sampler_seed_samples_and_vary() {
     let s = s01();
-    let base = [
-        "study",
-        &s,
-        "--sampler",
-        "mc",
-        "--samples",
-        "12",
-        "--seed",
-        "7",
-    ];
+    let base = ["study", &s, "--sampler", "mc", "--samples", "12", "--seed", "7"];
     let version = env!("CARGO_PKG_VERSION");
     // Table: the first line.
     let (ok, table, err) = kinrepro(&base);
@@ -120,12 +108,7 @@ fn every_format_names_version_solver_sampler_seed_samples_and_vary() {
     let f = &v["variants"][0]["fingerprint"];
     assert_eq!(f["mu_static"], 0.5);
     assert_eq!(f["samples"], 12);
-    assert!(
-        v["variants"][0]["points"][0]["sigma"]["phi_z_nrad"]
-            .as_f64()
-            .unwrap()
-            > 0.0
-    );
+    assert!(v["variants"][0]["points"][0]["sigma"]["phi_z_nrad"].as_f64().unwrap() > 0.0);
 }
 
 #[test]
@@ -133,14 +116,7 @@ fn json_records_carry_physical_mu_equal_to_the_per_sample_csv() {
     let dir = tempfile::tempdir().unwrap();
     let s = s01();
     let out = dir.path().join("out");
-    let r = json(&[
-        "study",
-        &s,
-        "--format",
-        "json",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let r = json(&["study", &s, "--format", "json", "--out", out.to_str().unwrap()]);
     let v = &r.variants[0];
     let (mu0, spread) = (0.5, 0.05);
     assert_eq!(v.records.len(), 25);
@@ -149,10 +125,7 @@ fn json_records_carry_physical_mu_equal_to_the_per_sample_csv() {
     let mut lines = csv.lines();
     assert!(lines.next().unwrap().starts_with("# kinrepro "));
     let head: Vec<&str> = lines.next().unwrap().split(',').collect();
-    assert_eq!(
-        &head[1..7],
-        ["mu_1", "mu_2", "mu_3", "mu_4", "mu_5", "mu_6"]
-    );
+    assert_eq!(&head[1..7], ["mu_1", "mu_2", "mu_3", "mu_4", "mu_5", "mu_6"]);
     for (rec, line) in v.records.iter().zip(lines) {
         let cells: Vec<f64> = line.split(',').map(|c| c.parse().unwrap()).collect();
         assert_eq!(cells[0] as usize, rec.index);
@@ -223,19 +196,13 @@ fn merge_refuses_parts_of_another_study_naming_the_field() {
         (shards(d, &preload, &[], "preload"), "preload force"),
         (shards(d, &s, &["--solver", "dynamic"], "dyn"), "solver"),
         (shards(d, &s, &["--seed", "2"], "seed"), "seed"),
-        (
-            shards(d, &s, &["--increments", "30"], "inc"),
-            "solver_settings",
-        ),
+        (shards(d, &s, &["--increments", "30"], "inc"), "solver_settings"),
     ];
     for (other, field) in &cases {
         let (ok, out, err) = merge(&[&good[0], &good[1], &other[2], &good[3]]);
         assert!(!ok && out.is_empty(), "{field}: merged");
         assert_eq!(err.lines().count(), 1, "{err}");
-        assert!(
-            err.contains(&format!("{field} (")) && err.contains("_3.json"),
-            "{field}: {err}"
-        );
+        assert!(err.contains(&format!("{field} (")) && err.contains("_3.json"), "{field}: {err}");
     }
     // A different sample count: the part's fingerprint names it.
     let dir2 = tempfile::tempdir().unwrap();
@@ -258,10 +225,7 @@ fn merge_refuses_parts_of_another_study_naming_the_field() {
     assert!(!ok && err.contains("samples (24 vs 28)"), "{err}");
     // A missing shard is named with its samples.
     let (ok, _, err) = merge(&[&good[0], &good[1], &good[3]]);
-    assert!(
-        !ok && err.contains("shard 3/4 (samples 12..17) missing"),
-        "{err}"
-    );
+    assert!(!ok && err.contains("shard 3/4 (samples 12..17) missing"), "{err}");
 }
 
 #[test]
@@ -276,10 +240,7 @@ fn a_part_holding_1e308_is_an_error_naming_the_sample_not_sigma_zero() {
     std::fs::write(&good[1], doc.to_string()).unwrap();
     let (ok, out, err) = merge(&good.iter().collect::<Vec<_>>());
     assert!(!ok && out.is_empty(), "{out}");
-    assert!(
-        err.contains(&format!("sample {index}")) && err.contains("centre/x_m"),
-        "{err}"
-    );
+    assert!(err.contains(&format!("sample {index}")) && err.contains("centre/x_m"), "{err}");
     // The statistics layer itself: a variance that overflows is not zero.
     let r = kinrepro::study::stats::mean_sigma(&[1e308, -1e308, 1e308]);
     assert!(!matches!(r, Ok((_, sigma)) if sigma == 0.0), "{r:?}");
@@ -302,18 +263,12 @@ fn files_are_not_overwritten_without_force_and_never_left_half_written() {
     let before = std::fs::read_to_string(&csv).unwrap();
     // A second run refuses, the results still on stdout, the file intact.
     let (ok, table, err) = kinrepro(&["study", &s, "--samples", "8", "--out", o]);
-    assert!(
-        !ok && err.contains("exists") && err.contains("--force"),
-        "{err}"
-    );
+    assert!(!ok && err.contains("exists") && err.contains("--force"), "{err}");
     assert!(table.contains("sigma_x [nm]"));
     assert_eq!(std::fs::read_to_string(&csv).unwrap(), before);
     let (ok, _, err) = kinrepro(&["study", &s, "--samples", "8", "--out", o, "--force"]);
     assert!(ok, "{err}");
-    assert_eq!(
-        std::fs::read_to_string(&csv).unwrap().lines().count(),
-        2 + 8
-    );
+    assert_eq!(std::fs::read_to_string(&csv).unwrap().lines().count(), 2 + 8);
     // No temporary file is left behind.
     for e in std::fs::read_dir(&out).unwrap() {
         let name = e.unwrap().file_name().to_string_lossy().into_owned();
@@ -354,10 +309,7 @@ fn a_closed_pipe_exits_quietly_and_a_full_disk_is_one_error_line() {
         assert!(out.status.success(), "{format}: {err}");
         assert!(!err.contains("panicked"), "{err}");
     }
-    let full = std::fs::OpenOptions::new()
-        .write(true)
-        .open("/dev/full")
-        .unwrap();
+    let full = std::fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
         .args(["study", &s, "--samples", "6"])
         .stdout(full)
@@ -366,10 +318,7 @@ fn a_closed_pipe_exits_quietly_and_a_full_disk_is_one_error_line() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
-    assert!(
-        err.contains("stdout") && err.contains("No space left"),
-        "{err}"
-    );
+    assert!(err.contains("stdout") && err.contains("No space left"), "{err}");
 }
 
 #[test]
@@ -377,30 +326,16 @@ fn a_coupling_that_cannot_seat_fails_unless_allowed() {
     let dir = tempfile::tempdir().unwrap();
     for (name, from, to) in [
         ("mu15.toml", "mu_static = 0.5 ", "mu_static = 1.5 "),
-        (
-            "open170.toml",
-            "opening_angle_deg = 90.0",
-            "opening_angle_deg = 170.0",
-        ),
+        ("open170.toml", "opening_angle_deg = 90.0", "opening_angle_deg = 170.0"),
     ] {
         let p = scene_variant(dir.path(), name, from, to);
         let (ok, table, err) = kinrepro(&["study", &p, "--samples", "6"]);
         assert!(!ok, "{name}: rc 0");
-        assert!(
-            err.contains("cannot seat") && err.contains("--allow-unseated"),
-            "{err}"
-        );
+        assert!(err.contains("cannot seat") && err.contains("--allow-unseated"), "{err}");
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(table.contains("CANNOT SEAT"), "{table}");
-        let (ok, text, err) = kinrepro(&[
-            "study",
-            &p,
-            "--samples",
-            "6",
-            "--format",
-            "json",
-            "--allow-unseated",
-        ]);
+        let (ok, text, err) =
+            kinrepro(&["study", &p, "--samples", "6", "--format", "json", "--allow-unseated"]);
         assert!(ok, "{err}");
         let r: StudyReport = serde_json::from_str(&text).unwrap();
         assert!(r.variants[0].cannot_seat.is_some());
@@ -413,10 +348,7 @@ fn a_coupling_that_cannot_seat_fails_unless_allowed() {
     // touching pose; check says what the limit means and no CANNOT SEAT.
     let (ok, out, _) = kinrepro(&["check", &s01()]);
     assert!(ok);
-    assert!(
-        out.contains("off-centre") && !out.contains("CANNOT SEAT"),
-        "{out}"
-    );
+    assert!(out.contains("off-centre") && !out.contains("CANNOT SEAT"), "{out}");
     let (ok, _, err) = kinrepro(&["study", &s01(), "--samples", "6"]);
     assert!(ok, "{err}");
 }
@@ -431,10 +363,7 @@ fn jobs_and_increments_are_bounded() {
         for verb in ["run", "study"] {
             let (ok, _, err) = kinrepro(&[verb, &s, "--increments", n]);
             assert!(!ok, "{verb} --increments {n}");
-            assert!(
-                err.contains("1..=100000") && err.lines().count() == 1,
-                "{err}"
-            );
+            assert!(err.contains("1..=100000") && err.lines().count() == 1, "{err}");
         }
     }
     let (ok, _, err) = kinrepro(&["study", &s, "--jobs", "0"]);
@@ -451,9 +380,7 @@ fn phi_z_is_the_rotation_seen_by_two_points() {
     let m = Method::default();
     let load = Load::nominal(&scene);
     let nominal = m.seat(&c, &load.with_mu(&[0.5; 6])).unwrap();
-    let s = m
-        .seat(&c, &load.with_mu(&[0.45, 0.55, 0.5, 0.46, 0.54, 0.5]))
-        .unwrap();
+    let s = m.seat(&c, &load.with_mu(&[0.45, 0.55, 0.5, 0.46, 0.54, 0.5])).unwrap();
     let p = scene.evaluation_points[0].position;
     let q = p + nalgebra::Vector3::new(0.01, 0.0, 0.0);
     let a = PointPose::between(&nominal.pose(), &s.pose(), &p);
@@ -461,10 +388,7 @@ fn phi_z_is_the_rotation_seen_by_two_points() {
     let phi_z = a.components()[5];
     assert!(phi_z.abs() > 1e-9, "{phi_z}");
     let seen = (b.y_m - a.y_m) / 0.01;
-    assert!(
-        (phi_z - seen).abs() < 1e-6 * phi_z.abs(),
-        "{phi_z} vs {seen}"
-    );
+    assert!((phi_z - seen).abs() < 1e-6 * phi_z.abs(), "{phi_z} vs {seen}");
 }
 
 #[test]
@@ -517,16 +441,8 @@ fn output_files_have_the_mode_of_an_ordinary_file() {
     let out = dir.path().join("out");
     let out_s = out.to_str().unwrap();
     let s = s01();
-    let (ok, _, err) = kinrepro(&[
-        "study",
-        &s,
-        "--sampler",
-        "mc",
-        "--samples",
-        "8",
-        "--out",
-        out_s,
-    ]);
+    let (ok, _, err) =
+        kinrepro(&["study", &s, "--sampler", "mc", "--samples", "8", "--out", out_s]);
     assert!(ok, "{err}");
     let file = out.join("samples_01_01_maxwell_vgroove_steel.csv");
     let got = std::fs::metadata(&file).unwrap().permissions().mode() & 0o777;
@@ -553,16 +469,11 @@ fn run_reports_phi_z_as_evaluated() {
     // The touching start.
     let load = kinrepro::solve::Load::nominal(&scene);
     let nominal = m.seat(&c, &load.with_mu(&[0.5; 6])).unwrap();
-    let seated = m
-        .seat(&c, &load.with_mu(&[0.45, 0.55, 0.5, 0.46, 0.54, 0.5]))
-        .unwrap();
+    let seated = m.seat(&c, &load.with_mu(&[0.45, 0.55, 0.5, 0.46, 0.54, 0.5])).unwrap();
     let q = scene.evaluation_points[0].position + nalgebra::Vector3::new(0.01, 0.0, 0.0);
     let b = kinrepro::solve::PointPose::between(&nominal.pose(), &seated.pose(), &q);
     let seen = (b.y_m - p["y_m"].as_f64().unwrap()) / 0.01;
-    assert!(
-        (phi_z - seen).abs() < 1e-6 * phi_z.abs(),
-        "{phi_z} vs {seen}"
-    );
+    assert!((phi_z - seen).abs() < 1e-6 * phi_z.abs(), "{phi_z} vs {seen}");
     let (ok, table, _) = kinrepro(&["run", &s, "--mu", mu]);
     assert!(ok && !table.contains("not evaluated"), "{table}");
     assert!(table.contains("phi_z[nrad]") && !table.contains("phi_z[nrad]*"));

@@ -4,9 +4,7 @@ use crate::common;
 use crate::common::kinrepro;
 
 fn scene01() -> String {
-    common::scene("01_maxwell_vgroove_steel.toml")
-        .display()
-        .to_string()
+    common::scene("01_maxwell_vgroove_steel.toml").display().to_string()
 }
 
 /// The pose's z of a `run --json` output.
@@ -39,20 +37,14 @@ fn dynamic_run_writes_a_trace() {
     let (ok, qs, err) = kinrepro(&["run", &s1, "--json"]);
     assert!(ok, "{err}");
     let (z, z_qs) = (z_of(&out), z_of(&qs));
-    assert!(
-        (z / z_qs - 1.0).abs() < 1e-3,
-        "dynamic {z:e} vs quasi-static {z_qs:e}"
-    );
+    assert!((z / z_qs - 1.0).abs() < 1e-3, "dynamic {z:e} vs quasi-static {z_qs:e}");
     // Friction holds the balls up the flanks: above the frictionless closed form
     // z = -delta / cos 45, delta = (F_n / K)^(2/3), F_n = 20 N / (6 cos 45),
     // K = 4/3 E* sqrt(R), E* = 210 GPa / (2 (1 - 0.3^2)), R = 5 mm (-809.8 nm).
     let c45 = 45f64.to_radians().cos();
     let k = 4.0 / 3.0 * common::E_STAR_STEEL * 5e-3f64.sqrt();
     let z_free = -(20.0 / (6.0 * c45) / k).powf(2.0 / 3.0) / c45;
-    assert!(
-        z < 0.0 && z > 0.95 * z_free,
-        "{z:e} vs frictionless {z_free:e}"
-    );
+    assert!(z < 0.0 && z > 0.95 * z_free, "{z:e} vs frictionless {z_free:e}");
     let csv = std::fs::read_to_string(&trace).unwrap();
     let mut lines = csv.lines();
     // What produced it, as the study's CSV says.

@@ -43,10 +43,8 @@ fn seatings_that_do_not_centre_are_counted_and_left_out() {
     let d = study(&[]);
     let v = &d["variants"][0];
     let records = v["records"].as_array().unwrap();
-    let failed: Vec<&serde_json::Value> = records
-        .iter()
-        .filter(|r| r["outputs_si"].as_array().unwrap().is_empty())
-        .collect();
+    let failed: Vec<&serde_json::Value> =
+        records.iter().filter(|r| r["outputs_si"].as_array().unwrap().is_empty()).collect();
     let k = v["seating_failures"].as_u64().unwrap() as usize;
     assert_eq!(k, failed.len());
     assert!(k > 0 && k < 10, "the acceptance study has failures: {k}");
@@ -124,31 +122,17 @@ fn shards_add_their_failures_exactly() {
     args.extend(&ARGS[..12]);
     let (ok, table, _) = kinrepro(&args);
     let k = a["seating_failures"].as_u64().unwrap();
-    assert!(
-        ok && table.contains(&format!(
-            "seating failures: {k} of 10 seatings did not centre"
-        ))
-    );
+    assert!(ok && table.contains(&format!("seating failures: {k} of 10 seatings did not centre")));
 }
 
 #[test]
 fn a_varied_start_without_bounds_is_an_error_naming_them() {
     let s = common::scene("01_maxwell_vgroove_steel.toml");
     for extra in [&[][..], &["--offset-bounds", "0,0,0"][..]] {
-        let mut args = vec![
-            "study",
-            s.to_str().unwrap(),
-            "--solver",
-            "dynamic",
-            "--vary",
-            "start",
-        ];
+        let mut args = vec!["study", s.to_str().unwrap(), "--solver", "dynamic", "--vary", "start"];
         args.extend(extra);
         let (ok, out, err) = kinrepro(&args);
         assert!(!ok && out.is_empty(), "{out}");
-        assert!(
-            err.contains("--offset-bounds") && err.contains("--tilt-bounds"),
-            "{err}"
-        );
+        assert!(err.contains("--offset-bounds") && err.contains("--tilt-bounds"), "{err}");
     }
 }

@@ -20,10 +20,7 @@ fn default_lhs_is_replicated_and_says_so() {
     assert_eq!(v["design"]["replicates"], 5);
     let p = &v["points"][0];
     let method = p["sigma_interval_method"].as_str().unwrap();
-    assert!(
-        method.contains("replicated-lhs") && method.contains("5 replicates"),
-        "{method}"
-    );
+    assert!(method.contains("replicated-lhs") && method.contains("5 replicates"), "{method}");
     let (lo, s, hi) = (
         p["sigma_ci90_low"]["x_nm"].as_f64().unwrap(),
         p["sigma"]["x_nm"].as_f64().unwrap(),
@@ -50,22 +47,10 @@ fn replicates_that_do_not_fit_are_one_clear_error() {
         let (ok, out, err) = kinrepro(&a);
         assert!(!ok && out.is_empty(), "{args:?}");
         assert_eq!(err.trim().lines().count(), 1, "{err}");
-        assert!(
-            err.contains("--replicates") && err.contains("01_maxwell"),
-            "{err}"
-        );
+        assert!(err.contains("--replicates") && err.contains("01_maxwell"), "{err}");
     }
     // --replicates 1: a single LHS, printed without an interval.
-    let d = json(&[
-        "study",
-        &s1(),
-        "--samples",
-        "23",
-        "--replicates",
-        "1",
-        "--format",
-        "json",
-    ]);
+    let d = json(&["study", &s1(), "--samples", "23", "--replicates", "1", "--format", "json"]);
     assert!(d["variants"][0]["points"][0]["sigma_ci90_low"].is_null());
 }
 
@@ -74,12 +59,7 @@ fn corners_have_no_interval() {
     let d = json(&["study", &s1(), "--sampler", "corners", "--format", "json"]);
     let p = &d["variants"][0]["points"][0];
     assert!(p["sigma_ci90_low"].is_null() && p["sigma_ci90_high"].is_null());
-    assert!(
-        p["sigma_interval_method"]
-            .as_str()
-            .unwrap()
-            .contains("deterministic")
-    );
+    assert!(p["sigma_interval_method"].as_str().unwrap().contains("deterministic"));
     let (ok, table, _) = kinrepro(&["study", &s1(), "--sampler", "corners"]);
     assert!(ok && table.contains("(no interval: none (corner design"));
     let (ok, csv, _) = kinrepro(&["study", &s1(), "--sampler", "corners", "--format", "csv"]);
@@ -93,10 +73,7 @@ fn corners_have_no_interval() {
             .ends_with("sigma_ci90_low,sigma_ci90_high,sigma_interval_method")
     );
     let row = csv.lines().nth(1).unwrap();
-    assert!(
-        row.ends_with(",,,\"none (corner design: deterministic, not a sample)\""),
-        "{row}"
-    );
+    assert!(row.ends_with(",,,\"none (corner design: deterministic, not a sample)\""), "{row}");
 }
 
 #[test]
@@ -113,14 +90,8 @@ fn sensitivity_prints_sobol_indices_with_their_base_size() {
         "256",
     ]);
     assert!(ok, "{err}");
-    assert!(
-        table.contains("Sobol indices of the reseating scatter"),
-        "{table}"
-    );
-    assert!(
-        table.contains("base sample size N = 256, 2048 seatings"),
-        "{table}"
-    );
+    assert!(table.contains("Sobol indices of the reseating scatter"), "{table}");
+    assert!(table.contains("base sample size N = 256, 2048 seatings"), "{table}");
     let (ok, _, err) = kinrepro(&["study", &s1(), "--sensitivity", "--sobol-samples", "1"]);
     assert!(!ok && err.contains("--sobol-samples"), "{err}");
 }
@@ -131,19 +102,9 @@ fn sensitivity_prints_sobol_indices_with_their_base_size() {
 fn an_lhs_count_that_does_not_split_names_the_counts_that_do() {
     let (ok, out, err) = kinrepro(&["study", &s1(), "--samples", "7"]);
     assert!(!ok && out.is_empty(), "{out}");
-    assert!(
-        err.contains("--samples 6 (3 replicates) or --samples 8 (4 replicates)"),
-        "{err}"
-    );
+    assert!(err.contains("--samples 6 (3 replicates) or --samples 8 (4 replicates)"), "{err}");
     for (n, r) in [(6, 3), (8, 4)] {
-        let d = json(&[
-            "study",
-            &s1(),
-            "--samples",
-            &n.to_string(),
-            "--format",
-            "json",
-        ]);
+        let d = json(&["study", &s1(), "--samples", &n.to_string(), "--format", "json"]);
         assert_eq!(d["variants"][0]["design"]["replicates"], r);
     }
 }

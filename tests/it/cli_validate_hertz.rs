@@ -58,17 +58,11 @@ fn coarse_validation_of_a_scene_reports_every_pair_within_five_percent() {
     // ball centres), while the V and the trihedral seat share theirs over two
     // and three inclined contacts with friction: the flat carries the larger share.
     let load = |shape: &str| {
-        rows.iter()
-            .find(|r| r["shape"] == shape)
-            .map(|r| r["load_n"].as_f64().unwrap())
-            .unwrap()
+        rows.iter().find(|r| r["shape"] == shape).map(|r| r["load_n"].as_f64().unwrap()).unwrap()
     };
     let (flat, balls) = (load("sphere-plane"), load("sphere-sphere"));
     assert!((flat / (20.0 / 3.0) - 1.0).abs() < 1e-3, "flat {flat}");
-    assert!(
-        balls > 0.0 && balls < flat,
-        "flat {flat}, fixed balls {balls}"
-    );
+    assert!(balls > 0.0 && balls < flat, "flat {flat}, fixed balls {balls}");
 }
 
 /// `--conformity` on the gothic-arch scene at one mild ratio (coarse mesh):
@@ -116,27 +110,10 @@ fn conformity_flags_are_checked() {
     let gothic = common::scene("maxwell_gothic_arch_steel.toml");
     let planes = common::scene("01_maxwell_vgroove_steel.toml");
     for (args, needle) in [
-        (
-            vec!["--ratios", "1.5", gothic.to_str().unwrap()],
-            "--ratios goes with --conformity",
-        ),
-        (
-            vec!["--conformity", "--ratios", "0.9", gothic.to_str().unwrap()],
-            "above 1",
-        ),
-        (
-            vec![
-                "--conformity",
-                "--ratios",
-                "1.1,1.5",
-                gothic.to_str().unwrap(),
-            ],
-            "descending",
-        ),
-        (
-            vec!["--conformity", planes.to_str().unwrap()],
-            "no sphere-groove",
-        ),
+        (vec!["--ratios", "1.5", gothic.to_str().unwrap()], "--ratios goes with --conformity"),
+        (vec!["--conformity", "--ratios", "0.9", gothic.to_str().unwrap()], "above 1"),
+        (vec!["--conformity", "--ratios", "1.1,1.5", gothic.to_str().unwrap()], "descending"),
+        (vec!["--conformity", planes.to_str().unwrap()], "no sphere-groove"),
     ] {
         let mut all = vec!["validate-hertz"];
         all.extend(args);

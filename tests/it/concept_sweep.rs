@@ -17,9 +17,7 @@ fn json(text: &str) -> Value {
 /// Scene 01 written out by hand with the given arrangement and groove, a
 /// pin / fixed-ball diameter, and `extra` appended (e.g. `[[materials]]`).
 fn scene_text(arrangement: &str, groove: &str, element: Option<f64>, extra: &str) -> String {
-    let element = element.map_or(String::new(), |d| {
-        format!("groove_element_diameter = {d}\n")
-    });
+    let element = element.map_or(String::new(), |d| format!("groove_element_diameter = {d}\n"));
     format!(
         "name = \"Maxwell clamp, V-groove of planes, steel/steel\"\n\
          [coupling]\narrangement = \"{arrangement}\"\ndiameter = 0.080\n\
@@ -38,14 +36,8 @@ fn study_points(text: &str) -> Value {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("scene.toml");
     std::fs::write(&path, text).unwrap();
-    let (ok, out, err) = kinrepro(&[
-        "study",
-        path.to_str().unwrap(),
-        "--samples",
-        SAMPLES,
-        "--format",
-        "json",
-    ]);
+    let (ok, out, err) =
+        kinrepro(&["study", path.to_str().unwrap(), "--samples", SAMPLES, "--format", "json"]);
     assert!(ok, "{err}");
     json(&out)["variants"][0]["points"].clone()
 }
@@ -57,10 +49,7 @@ fn assert_same_sigma(sweep: &Value, study: &Value, what: &str) {
     assert_eq!(a.len(), b.len(), "{what}");
     for (p, q) in a.iter().zip(b) {
         assert_eq!(p["name"], q["name"], "{what}");
-        let (s, t) = (
-            p["sigma"].as_object().unwrap(),
-            q["sigma"].as_object().unwrap(),
-        );
+        let (s, t) = (p["sigma"].as_object().unwrap(), q["sigma"].as_object().unwrap());
         assert_eq!(s.len(), 6, "{what}");
         for (k, x) in s {
             let (x, y) = (x.as_f64().unwrap(), t[k].as_f64().unwrap());
@@ -98,10 +87,8 @@ fn pins_and_balls_without_their_diameter_are_invalid_with_the_reason() {
     let designs = doc["designs"].as_array().unwrap();
     assert_eq!(designs.len(), 6, "one design per point of the 2 x 3 grid");
     for (i, d) in designs.iter().enumerate() {
-        let (arrangement, groove) = (
-            ["maxwell", "kelvin"][i / 3],
-            ["planes", "cylinders", "balls"][i % 3],
-        );
+        let (arrangement, groove) =
+            (["maxwell", "kelvin"][i / 3], ["planes", "cylinders", "balls"][i % 3]);
         assert_eq!(d["index"], i);
         assert_eq!(d["values"]["coupling.arrangement"], arrangement);
         assert_eq!(d["values"]["coupling.groove"], groove);
@@ -130,16 +117,9 @@ fn pins_and_balls_without_their_diameter_are_invalid_with_the_reason() {
         "{table}"
     );
     let (_, csv, _) = sweep(&CONCEPT, "csv");
-    let bad: Vec<&str> = csv
-        .lines()
-        .filter(|l| l.contains(",kelvin,cylinders,"))
-        .collect();
+    let bad: Vec<&str> = csv.lines().filter(|l| l.contains(",kelvin,cylinders,")).collect();
     assert_eq!(bad.len(), 1, "one row for a design not evaluated: {csv}");
-    assert!(
-        bad[0].contains("\"invalid: coupling.groove_element_diameter: missing"),
-        "{}",
-        bad[0]
-    );
+    assert!(bad[0].contains("\"invalid: coupling.groove_element_diameter: missing"), "{}", bad[0]);
 }
 
 #[test]
@@ -156,11 +136,7 @@ fn valid_concepts_equal_a_study_of_the_scene_written_by_hand() {
         let arrangement = d["values"]["coupling.arrangement"].as_str().unwrap();
         let groove = d["values"]["coupling.groove"].as_str().unwrap();
         let text = scene_text(arrangement, groove, Some(0.006), "");
-        assert_same_sigma(
-            &d["points"],
-            &study_points(&text),
-            &format!("{arrangement}/{groove}"),
-        );
+        assert_same_sigma(&d["points"], &study_points(&text), &format!("{arrangement}/{groove}"));
     }
     // The concepts differ: the Kelvin clamp reports its trihedral ball too.
     assert_eq!(designs[0]["points"].as_array().unwrap().len(), 1);
@@ -173,25 +149,15 @@ fn a_built_in_material_constant_is_overridden_for_its_point() {
     let (ok, out, err) = kinrepro(&["materials", "--format", "json"]);
     assert!(ok, "{err}");
     let materials = json(&out)["materials"].clone();
-    let steel = materials
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|m| m["name"] == "steel")
-        .unwrap()
-        .clone();
+    let steel =
+        materials.as_array().unwrap().iter().find(|m| m["name"] == "steel").unwrap().clone();
     let (e, nu, p) = (
         steel["youngs_modulus"].as_f64().unwrap(),
         steel["poisson_ratio"].as_f64().unwrap(),
         steel["allowable_pressure"].as_f64().unwrap(),
     );
-    let (ok, out, err) = sweep(
-        &[
-            "--set",
-            &format!("materials.steel.youngs_modulus=1.9e11,{e}"),
-        ],
-        "json",
-    );
+    let (ok, out, err) =
+        sweep(&["--set", &format!("materials.steel.youngs_modulus=1.9e11,{e}")], "json");
     assert!(ok, "{err}");
     let doc = json(&out);
     for (d, modulus) in doc["designs"].as_array().unwrap().iter().zip([1.9e11, e]) {
@@ -200,19 +166,13 @@ fn a_built_in_material_constant_is_overridden_for_its_point() {
              poisson_ratio = {nu}\nallowable_pressure = {p:e}\n"
         );
         let text = scene_text("maxwell", "planes", None, &entry);
-        assert_same_sigma(
-            &d["points"],
-            &study_points(&text),
-            &format!("E = {modulus}"),
-        );
+        assert_same_sigma(&d["points"], &study_points(&text), &format!("E = {modulus}"));
     }
     // The built-in's own modulus leaves scene 01 as it is.
     let plain = study_points(&scene_text("maxwell", "planes", None, ""));
     assert_same_sigma(&doc["designs"][1]["points"], &plain, "E of the built-in");
     // A softer steel scatters more (sigma ~ E*^(-2/3)).
-    let soft = doc["designs"][0]["points"][0]["sigma"]["x_nm"]
-        .as_f64()
-        .unwrap();
+    let soft = doc["designs"][0]["points"][0]["sigma"]["x_nm"].as_f64().unwrap();
     assert!(soft > plain[0]["sigma"]["x_nm"].as_f64().unwrap());
 }
 
@@ -221,29 +181,18 @@ fn a_sweep_without_a_valid_point_lists_them_all_and_fails() {
     let dir = tempfile::tempdir().unwrap();
     let html = dir.path().join("sweep.html");
     let (ok, out, err) = sweep(
-        &[
-            "--set",
-            "coupling.groove=cylinders,balls",
-            "--html",
-            html.to_str().unwrap(),
-        ],
+        &["--set", "coupling.groove=cylinders,balls", "--html", html.to_str().unwrap()],
         "json",
     );
     assert!(!ok, "no valid point: non-zero exit");
-    assert!(
-        err.contains("none of the 2 design points was evaluated"),
-        "{err}"
-    );
+    assert!(err.contains("none of the 2 design points was evaluated"), "{err}");
     let doc = json(&out);
     let designs = doc["designs"].as_array().unwrap();
     assert_eq!(designs.len(), 2, "the document is still written");
     assert!(designs.iter().all(|d| d["invalid_reason"].is_string()));
     // The HTML report lists the points not evaluated with their reason.
     let page = std::fs::read_to_string(&html).unwrap();
-    assert!(
-        page.contains("sweep_not_evaluated"),
-        "no list of invalid points"
-    );
+    assert!(page.contains("sweep_not_evaluated"), "no list of invalid points");
     assert!(page.contains("needs the pin or ball diameter"));
 }
 
@@ -256,10 +205,7 @@ fn values_are_numbers_unless_they_do_not_parse_or_are_quoted() {
     let doc = json(&out);
     assert_eq!(doc["designs"][1]["values"]["coupling.ball_material"], "1");
     let reason = doc["designs"][1]["invalid_reason"].as_str().unwrap();
-    assert!(
-        reason.starts_with("coupling.ball_material: unknown material `1`"),
-        "{reason}"
-    );
+    assert!(reason.starts_with("coupling.ball_material: unknown material `1`"), "{reason}");
     // Unquoted, it is a number: refused for a name field, naming the fix.
     let (ok, _, err) = sweep(&["--set", "coupling.groove=planes,1"], "json");
     assert!(!ok && err.contains("\"1\" is a number (quote it"), "{err}");

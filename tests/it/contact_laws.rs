@@ -78,16 +78,11 @@ fn elliptical_law_tends_to_circular_as_cylinder_radius_grows() {
         .unwrap();
     let mut last = f64::INFINITY;
     for r2 in [1e-1, 1e1, 1e3, 1e5] {
-        let cyl = ContactPair::from_shape(
-            ContactShape::SphereCylinder,
-            5e-3,
-            Some(r2),
-            steel(),
-            steel(),
-        )
-        .unwrap()
-        .evaluate(5.0)
-        .unwrap();
+        let cyl =
+            ContactPair::from_shape(ContactShape::SphereCylinder, 5e-3, Some(r2), steel(), steel())
+                .unwrap()
+                .evaluate(5.0)
+                .unwrap();
         let err = rel(cyl.approach_m, plane.approach_m)
             .max(rel(cyl.semi_axes_m[0], plane.semi_axes_m[0]))
             .max(rel(cyl.semi_axes_m[1], plane.semi_axes_m[1]))
@@ -135,17 +130,10 @@ fn hamrock_brewe_agrees_within_its_stated_accuracy() {
         let f = 10.0;
         let [hb_a, hb_b, hb_approach] = hamrock_brewe(rx, ry, e_star, f);
         let [a, b] = law.semi_axes(f);
-        let tol = if (2.0..=20.0).contains(&ratio) {
-            0.015
-        } else {
-            0.06
-        };
+        let tol = if (2.0..=20.0).contains(&ratio) { 0.015 } else { 0.06 };
         assert!(rel(hb_a, a) < tol, "ratio {ratio}: a {hb_a} vs {a}");
         assert!(rel(hb_b, b) < tol, "ratio {ratio}: b {hb_b} vs {b}");
-        assert!(
-            rel(hb_approach, law.approach(f)) < tol,
-            "ratio {ratio}: delta"
-        );
+        assert!(rel(hb_approach, law.approach(f)) < tol, "ratio {ratio}: delta");
     }
 }
 
@@ -172,11 +160,7 @@ fn no_force_in_tension() {
     assert_eq!(law.force(0.0), 0.0);
     let st = TangentialState::new(Vector3::z());
     for tl in TangentialLaw::ALL {
-        let r = respond(
-            &st,
-            tl,
-            &input(-1.0, Vector3::new(1e-6, 0.0, 0.0), 0.5, 0.4),
-        );
+        let r = respond(&st, tl, &input(-1.0, Vector3::new(1e-6, 0.0, 0.0), 0.5, 0.4));
         assert_eq!(r.force, Vector3::zeros());
     }
 }
@@ -212,11 +196,7 @@ fn drive(law: TangentialLaw, path: &[f64], fn_: f64, mu_s: f64, mu_d: f64) -> Ve
     let mut u = 0.0;
     let mut out = vec![(0.0, 0.0)];
     for &target in path {
-        let r = respond(
-            &st,
-            law,
-            &input(fn_, Vector3::new(target - u, 0.0, 0.0), mu_s, mu_d),
-        );
+        let r = respond(&st, law, &input(fn_, Vector3::new(target - u, 0.0, 0.0), mu_s, mu_d));
         st = r.state;
         u = target;
         out.push((u, r.force.x));
@@ -226,9 +206,7 @@ fn drive(law: TangentialLaw, path: &[f64], fn_: f64, mu_s: f64, mu_d: f64) -> Ve
 
 fn cycle_path(amplitude: f64, steps: usize, cycles: usize) -> Vec<f64> {
     // 0 -> +A, then full cycles +A -> -A -> +A.
-    let mut p: Vec<f64> = (1..=steps)
-        .map(|i| amplitude * i as f64 / steps as f64)
-        .collect();
+    let mut p: Vec<f64> = (1..=steps).map(|i| amplitude * i as f64 / steps as f64).collect();
     for _ in 0..cycles {
         p.extend((1..=2 * steps).map(|i| amplitude * (1.0 - i as f64 / steps as f64)));
         p.extend((1..=2 * steps).map(|i| amplitude * (-1.0 + i as f64 / steps as f64)));
@@ -240,10 +218,7 @@ fn cycle_path(amplitude: f64, steps: usize, cycles: usize) -> Vec<f64> {
 fn last_cycle_work(hist: &[(f64, f64)], steps: usize) -> f64 {
     let n = 4 * steps;
     let tail = &hist[hist.len() - n - 1..];
-    tail.windows(2)
-        .map(|w| 0.5 * (w[0].1 + w[1].1) * (w[1].0 - w[0].0))
-        .sum::<f64>()
-        .abs()
+    tail.windows(2).map(|w| 0.5 * (w[0].1 + w[1].1) * (w[1].0 - w[0].0)).sum::<f64>().abs()
 }
 
 #[test]
@@ -252,13 +227,7 @@ fn coulomb_cycle_dissipates_the_closed_form_energy() {
     let k = 8.0 * 25e9 * 50e-6;
     let u0 = 3.0 * mu_s * fn_ / k;
     let steps = 20000;
-    let hist = drive(
-        TangentialLaw::Coulomb,
-        &cycle_path(u0, steps, 2),
-        fn_,
-        mu_s,
-        mu_d,
-    );
+    let hist = drive(TangentialLaw::Coulomb, &cycle_path(u0, steps, 2), fn_, mu_s, mu_d);
     // Elastic to mu_s Fn, sudden drop to mu_d Fn, slide; per cycle
     // W = 4 mu_d Fn u0 - (mu_s + mu_d)(3 mu_d - mu_s) Fn^2 / k (derived in the test notes).
     let expect = 4.0 * mu_d * fn_ * u0 - (mu_s + mu_d) * (3.0 * mu_d - mu_s) * fn_ * fn_ / k;
@@ -312,10 +281,7 @@ fn consistent_tangents_match_finite_differences() {
             let mut inp = input(10.0, du, 0.5, 0.4);
             inp.d_stiffness_d_fn = inp.stiffness / 30.0;
             // Mindlin-Deresiewicz starts a fresh row at this load.
-            let old = &TangentialState {
-                normal_force: 10.0,
-                ..old
-            };
+            let old = &TangentialState { normal_force: 10.0, ..old };
             let r = respond(old, law, &inp);
             assert_du_tangent(old, law, &inp);
             if law == TangentialLaw::Coulomb {
@@ -341,12 +307,8 @@ fn consistent_tangents_match_finite_differences() {
 #[test]
 fn old_force_is_rotated_into_the_new_tangent_plane() {
     let mut st = TangentialState::new(Vector3::z());
-    st = respond(
-        &st,
-        TangentialLaw::Coulomb,
-        &input(10.0, Vector3::new(1e-7, 0.0, 0.0), 0.5, 0.4),
-    )
-    .state;
+    st = respond(&st, TangentialLaw::Coulomb, &input(10.0, Vector3::new(1e-7, 0.0, 0.0), 0.5, 0.4))
+        .state;
     let n2 = Vector3::new(0.01, 0.0, 1.0).normalize();
     let rot = st.rotated_to(&n2);
     assert!(rot.force.dot(&n2).abs() < 1e-15 * rot.force.norm());
@@ -472,10 +434,7 @@ fn elliptical_tau_max_matches_published_values() {
     assert!(rel(t, 0.31) < 5e-3 && rel(z, 0.48) < 5e-3, "{t} at {z}");
     for nu in [0.27, 0.3, 0.45] {
         let (t, z) = max_shear_ratio(nu, 0.002);
-        assert!(
-            rel(t, 0.300) < 5e-3 && rel(z, 0.786) < 5e-3,
-            "nu {nu}: {t} at {z}"
-        );
+        assert!(rel(t, 0.300) < 5e-3 && rel(z, 0.786) < 5e-3, "nu {nu}: {t} at {z}");
     }
     let (t, _) = max_shear_ratio(0.1, 0.002);
     assert!(t > 0.4, "nu 0.1: the out-of-plane pair governs: {t}");
@@ -508,12 +467,7 @@ fn circle_constants(p: f64) -> (f64, f64) {
 }
 
 fn steps(rows: &[(f64, f64)]) -> Vec<LoadStep> {
-    rows.iter()
-        .map(|&(p, q)| LoadStep {
-            normal_force: p,
-            tangential_force: [q, 0.0],
-        })
-        .collect()
+    rows.iter().map(|&(p, q)| LoadStep { normal_force: p, tangential_force: [q, 0.0] }).collect()
 }
 
 const MU: Friction = Friction::switch(0.5, 0.4);
@@ -525,9 +479,8 @@ fn cattaneo_ramp_matches_the_closed_form_at_every_step() {
     let (a, g) = circle_constants(p);
     let n = 200;
     // Row 0 applies P; then Q ramps at constant P.
-    let rows: Vec<(f64, f64)> = (0..=n)
-        .map(|i| (p, 0.9 * MU.mu_s * p * i as f64 / n as f64))
-        .collect();
+    let rows: Vec<(f64, f64)> =
+        (0..=n).map(|i| (p, 0.9 * MU.mu_s * p * i as f64 / n as f64)).collect();
     let out = drive_history(&law, TangentialLaw::MindlinDeresiewicz, MU, &steps(&rows)).unwrap();
     // Cattaneo (1938), Mindlin (1949); Johnson eq. 7.49:
     // s = 3 mu P / (16 G* a) [1 - (1 - Q/(mu P))^(2/3)].
@@ -582,10 +535,7 @@ fn masing_loop_dissipates_the_mindlin_deresiewicz_energy() {
             * (1.0 - (1.0 - q).powf(5.0 / 3.0) - 5.0 * q / 6.0 * (1.0 + (1.0 - q).powf(2.0 / 3.0)));
         let w = loop_work(last);
         assert!(rel(w, expect) < 1e-2, "Q*/muP {q}: W {w:e} vs {expect:e}");
-        println!(
-            "Masing loop Q*/muP = {q}: W/W_MD - 1 = {:.2e}",
-            w / expect - 1.0
-        );
+        println!("Masing loop Q*/muP = {q}: W/W_MD - 1 = {:.2e}", w / expect - 1.0);
         // The loop closes (Masing): the second cycle ends where the first did.
         let s1 = out[out.len() - 4 * n - 1].displacement[0];
         let s2 = out.last().unwrap().displacement[0];
@@ -620,11 +570,7 @@ fn proportional_loading_has_the_mindlin_deresiewicz_compliance() {
             // s = 3 mu P/(16 G* a) [1 - (1 - lambda/mu)^(2/3)], 1/1.5 of it at small lambda.
             let old = 3.0 * MU.mu_s * p / (16.0 * g * a)
                 * (1.0 - (1.0 - lambda / MU.mu_s).powf(2.0 / 3.0));
-            assert!(
-                st.displacement[0] / old > 1.2,
-                "{} vs old {old}",
-                st.displacement[0]
-            );
+            assert!(st.displacement[0] / old > 1.2, "{} vs old {old}", st.displacement[0]);
             assert_eq!(st.slip, SlipState::Stick);
         }
         assert!(worst < 1e-2, "lambda {lambda}: worst {worst:e}");
@@ -670,10 +616,7 @@ fn elliptical_tangential_stiffness_matches_cerruti_quadrature() {
                     k[axis],
                     1.0 / c
                 );
-                assert!(
-                    rel(k[axis], 1.0 / c) < 1e-9,
-                    "b/a {kp}: closed form vs quadrature"
-                );
+                assert!(rel(k[axis], 1.0 / c) < 1e-9, "b/a {kp}: closed form vs quadrature");
             }
             if kp == 1.0 {
                 // Circle: 8 G* a, 1/G* = sum (2 - nu)/G (Mindlin 1949).
@@ -687,22 +630,15 @@ fn elliptical_tangential_stiffness_matches_cerruti_quadrature() {
     }
     // The steel pin contact (5 mm ball, 2 mm pin): across the pin (minor
     // axis) about 8 % and along it about 0.8 % stiffer than 8 G* sqrt(a b).
-    let e = ContactPair::from_shape(
-        ContactShape::SphereCylinder,
-        5e-3,
-        Some(2e-3),
-        steel(),
-        steel(),
-    )
-    .unwrap()
-    .evaluate(6.5)
-    .unwrap();
+    let e =
+        ContactPair::from_shape(ContactShape::SphereCylinder, 5e-3, Some(2e-3), steel(), steel())
+            .unwrap()
+            .evaluate(6.5)
+            .unwrap();
     let [a, b] = e.semi_axes_m;
     let k_eq = 8.0 * e.effective_shear_modulus_pa * (a * b).sqrt();
-    let (major, minor) = (
-        e.tangential_stiffness_major_n_per_m / k_eq,
-        e.tangential_stiffness_minor_n_per_m / k_eq,
-    );
+    let (major, minor) =
+        (e.tangential_stiffness_major_n_per_m / k_eq, e.tangential_stiffness_minor_n_per_m / k_eq);
     assert!((1.075..1.09).contains(&minor), "{minor}");
     assert!((1.004..1.012).contains(&major), "{major}");
     println!("steel pin: k_minor/k_eq = {minor:.4}, k_major/k_eq = {major:.4}");
@@ -732,19 +668,11 @@ fn reference_mdr(rows: &[(f64, f64)], mu: f64) -> Vec<f64> {
             let lim: Vec<f64> = (0..m)
                 .map(|i| {
                     let x = (i as f64 + 0.5) * dx;
-                    if x < a {
-                        delta_star * (1.0 - x * x / (a * a))
-                    } else {
-                        -1.0
-                    }
+                    if x < a { delta_star * (1.0 - x * x / (a * a)) } else { -1.0 }
                 })
                 .collect();
             for i in 0..m {
-                u[i] = if lim[i] < 0.0 {
-                    0.0
-                } else {
-                    u[i].clamp(-lim[i], lim[i])
-                };
+                u[i] = if lim[i] < 0.0 { 0.0 } else { u[i].clamp(-lim[i], lim[i]) };
             }
             let force = |ds: f64| -> f64 {
                 8.0 * g
@@ -787,14 +715,7 @@ fn growing_and_shrinking_contact_agrees_with_a_fine_mdr_reference() {
     // P first, then: Q grows with P (a grows), Q to 0.8 mu P at constant P,
     // P falls with Q (a shrinks, the edge slips), Q reverses, P and Q grow again.
     let mut rows = vec![(0.5, 0.0)];
-    let pts = [
-        (0.5, 0.0),
-        (10.0, 2.0),
-        (10.0, 4.0),
-        (6.0, 2.0),
-        (6.0, -2.2),
-        (12.0, 3.0),
-    ];
+    let pts = [(0.5, 0.0), (10.0, 2.0), (10.0, 4.0), (6.0, 2.0), (6.0, -2.2), (12.0, 3.0)];
     for w in pts.windows(2) {
         rows.extend(seg(w[0], w[1], 100));
     }
@@ -817,17 +738,9 @@ fn the_removed_cattaneo_mindlin_law_is_a_clear_scene_error() {
             .join("scenes/01_maxwell_vgroove_steel.toml"),
     )
     .unwrap()
-    .replace(
-        "tangential_law = \"coulomb\"",
-        "tangential_law = \"cattaneo-mindlin\"",
-    );
-    let e = kinrepro::scene::Scene::parse(&text, "test.toml")
-        .unwrap_err()
-        .to_string();
-    assert!(
-        e.contains("test.toml") && e.contains("mindlin-deresiewicz"),
-        "{e}"
-    );
+    .replace("tangential_law = \"coulomb\"", "tangential_law = \"cattaneo-mindlin\"");
+    let e = kinrepro::scene::Scene::parse(&text, "test.toml").unwrap_err().to_string();
+    assert!(e.contains("test.toml") && e.contains("mindlin-deresiewicz"), "{e}");
     let ok = text.replace("\"cattaneo-mindlin\"", "\"mindlin-deresiewicz\"");
     assert!(kinrepro::scene::Scene::parse(&ok, "test.toml").is_ok());
 }
@@ -837,10 +750,7 @@ fn a_sliding_contact_under_growing_load_carries_mu_d_p_in_both_laws() {
     // As in a V groove during seating: P grows while the ball slides. Coulomb
     // (and Mindlin-Deresiewicz in gross slip): |F_t| = mu_d P at the end load.
     for law in TangentialLaw::ALL {
-        let mut st = TangentialState {
-            normal_force: 9.0,
-            ..TangentialState::new(Vector3::z())
-        };
+        let mut st = TangentialState { normal_force: 9.0, ..TangentialState::new(Vector3::z()) };
         for k in 0..5 {
             let p = 10.0 + k as f64;
             let r = respond(&st, law, &input(p, Vector3::new(2e-6, 0.0, 0.0), 0.5, 0.4));
@@ -848,11 +758,7 @@ fn a_sliding_contact_under_growing_load_carries_mu_d_p_in_both_laws() {
             st.normal_force = p;
             if k > 0 {
                 assert_eq!(r.slip, SlipState::Slip, "{law:?}");
-                assert!(
-                    rel(r.force.norm(), 0.4 * p) < 1e-12,
-                    "{law:?}: {}",
-                    r.force.norm()
-                );
+                assert!(rel(r.force.norm(), 0.4 * p) < 1e-12, "{law:?}: {}", r.force.norm());
             }
         }
     }
@@ -864,10 +770,7 @@ fn anisotropic_slip_return_is_associated_and_its_tangent_is_consistent() {
     use nalgebra::{Matrix2, Vector2};
     let k = [1.0e7, 1.08e7];
     let limit = 2.0;
-    for (i, trial) in [(3.0, 0.5), (-1.0, 2.5), (0.3, -4.0), (2.0, 2.0)]
-        .iter()
-        .enumerate()
-    {
+    for (i, trial) in [(3.0, 0.5), (-1.0, 2.5), (0.3, -4.0), (2.0, 2.0)].iter().enumerate() {
         let tr = Vector2::new(trial.0, trial.1);
         let (f, d_trial, d_limit) = project_on_circle(k, &tr, limit);
         // On the circle, and the slip K^-1 (F_trial - F) is along F, positive
@@ -912,10 +815,7 @@ fn anisotropic_slip_return_is_associated_and_its_tangent_is_consistent() {
                 mindlin_shape: kt / 1e7,
                 ..input(10.0, du, 0.5, 0.4)
             };
-            let old = TangentialState {
-                normal_force: 10.0,
-                ..TangentialState::new(n)
-            };
+            let old = TangentialState { normal_force: 10.0, ..TangentialState::new(n) };
             assert_du_tangent(&old, law, &inp);
         }
     }
@@ -941,10 +841,7 @@ fn the_tangent_free_update_gives_the_full_updates_force_and_state() {
         &input(10.0, Vector3::new(1e-5, 2e-6, 0.0), 0.5, 0.4),
     )
     .state;
-    let stuck = TangentialState {
-        normal_force: 9.0,
-        ..TangentialState::new(Vector3::z())
-    };
+    let stuck = TangentialState { normal_force: 9.0, ..TangentialState::new(Vector3::z()) };
     let (mut cases, mut slips) = (0, 0);
     for law in TangentialLaw::ALL {
         for friction in [FrictionLaw::Switch, FrictionLaw::Decay { coefficient: 1e6 }] {
@@ -969,11 +866,7 @@ fn the_tangent_free_update_gives_the_full_updates_force_and_state() {
                     let mut slot = TangentialResponse {
                         d_force_d_du: Matrix3::from_element(7.0),
                         d_force_d_fn: Vector3::repeat(-3.0),
-                        ..respond(
-                            &slid,
-                            law,
-                            &input(10.0, Vector3::new(-3e-6, 0.0, 0.0), 0.5, 0.4),
-                        )
+                        ..respond(&slid, law, &input(10.0, Vector3::new(-3e-6, 0.0, 0.0), 0.5, 0.4))
                     };
                     old.update(law, &inp, false, &mut slot);
                     let (got, want) = (&slot.state, &full.state);

@@ -17,11 +17,7 @@ use kinrepro::solve::{Load, SolverOptions};
 fn scene01_with(edits: &[(&str, &str)]) -> (Scene, Coupling) {
     let mut text = std::fs::read_to_string(scene("01_maxwell_vgroove_steel.toml")).unwrap();
     for (old, new) in edits {
-        let line = text
-            .lines()
-            .find(|l| l.starts_with(old))
-            .unwrap()
-            .to_string();
+        let line = text.lines().find(|l| l.starts_with(old)).unwrap().to_string();
         text = text.replace(&line, new);
     }
     let scene = Scene::parse(&text, "edited 01").unwrap();
@@ -48,20 +44,12 @@ fn a_ball_in_a_gothic_arch_has_the_closed_form_radii() {
     // curvature -1/R_g across and 0 along).
     let steel = Material::builtin("steel").unwrap();
     let (r, rg) = (0.005, 0.0055);
-    let pair = ContactPair::from_shape(
-        ContactShape::SphereGroove,
-        r,
-        Some(rg),
-        steel.clone(),
-        steel,
-    )
-    .unwrap();
+    let pair =
+        ContactPair::from_shape(ContactShape::SphereGroove, r, Some(rg), steel.clone(), steel)
+            .unwrap();
     let radii = pair.relative_radii().unwrap();
     assert!((radii[0] / r - 1.0).abs() < 1e-12, "{radii:?}");
-    assert!(
-        (radii[1] / (r * rg / (rg - r)) - 1.0).abs() < 1e-12,
-        "{radii:?}"
-    );
+    assert!((radii[1] / (r * rg / (rg - r)) - 1.0).abs() < 1e-12, "{radii:?}");
     // In scene 08 every contact is that pair, the long axis across the groove.
     let (_, c) = load("maxwell_gothic_arch_steel.toml");
     for k in &c.contacts {
@@ -109,27 +97,13 @@ fn crossed_equal_pins_at_right_angles_seat_like_a_ball_on_planes() {
     for k in &pins.contacts {
         assert_eq!(k.shape, ContactShape::CrossedCylinders);
         let radii = k.law.hertz.radii;
-        assert!(
-            radii.iter().all(|r| (r / 0.005 - 1.0).abs() < 1e-12),
-            "{radii:?}"
-        );
+        assert!(radii.iter().all(|r| (r / 0.005 - 1.0).abs() < 1e-12), "{radii:?}");
     }
-    for mu in [
-        [0.45, 0.55, 0.5, 0.47, 0.53, 0.5],
-        [0.55, 0.45, 0.52, 0.5, 0.46, 0.54],
-    ] {
-        let a = seat(
-            &pins,
-            &Load::nominal(&pins_scene).with_mu(&mu),
-            &SolverOptions::default(),
-        )
-        .unwrap();
-        let b = seat(
-            &balls,
-            &Load::nominal(&balls_scene).with_mu(&mu),
-            &SolverOptions::default(),
-        )
-        .unwrap();
+    for mu in [[0.45, 0.55, 0.5, 0.47, 0.53, 0.5], [0.55, 0.45, 0.52, 0.5, 0.46, 0.54]] {
+        let a = seat(&pins, &Load::nominal(&pins_scene).with_mu(&mu), &SolverOptions::default())
+            .unwrap();
+        let b = seat(&balls, &Load::nominal(&balls_scene).with_mu(&mu), &SolverOptions::default())
+            .unwrap();
         let (da, db) = (a.pose().translation, b.pose().translation);
         assert!(
             (da - db).norm() <= 1e-4 * db.norm(),
@@ -196,10 +170,7 @@ fn couplings_that_cannot_be_built_say_why() {
             text.replace("groove_radius = 0.0055", "groove_radius = 0.0045"),
             "must exceed the ball radius",
         ),
-        (
-            text.replace("groove_radius = 0.0055", ""),
-            "needs the flank radius `groove_radius`",
-        ),
+        (text.replace("groove_radius = 0.0055", ""), "needs the flank radius `groove_radius`"),
         (
             text.replace(
                 "groove = \"gothic-arch\"",
@@ -208,10 +179,7 @@ fn couplings_that_cannot_be_built_say_why() {
             "must be smaller than groove_radius",
         ),
         (
-            text.replace(
-                "groove = \"gothic-arch\"",
-                "groove = \"planes\"\nball_shape = \"pins\"",
-            ),
+            text.replace("groove = \"gothic-arch\"", "groove = \"planes\"\nball_shape = \"pins\""),
             "crossed pins need a fixed pin at every contact",
         ),
         (
@@ -232,17 +200,9 @@ fn couplings_that_cannot_be_built_say_why() {
 #[test]
 fn the_new_bundled_scenes_check_study_and_validate() {
     for (name, shape, radii) in [
-        (
-            "maxwell_gothic_arch_steel.toml",
-            "sphere-groove",
-            [0.005, -0.0055],
-        ),
+        ("maxwell_gothic_arch_steel.toml", "sphere-groove", [0.005, -0.0055]),
         ("maxwell_canoe_steel.toml", "sphere-plane", [0.25, f64::NAN]),
-        (
-            "maxwell_crossed_pins_steel.toml",
-            "crossed-cylinders",
-            [0.005, 0.002],
-        ),
+        ("maxwell_crossed_pins_steel.toml", "crossed-cylinders", [0.005, 0.002]),
     ] {
         let path = scene(name);
         let path = path.to_str().unwrap();
@@ -252,14 +212,7 @@ fn the_new_bundled_scenes_check_study_and_validate() {
         assert!(ok, "{name}: {err}");
         let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
         let sigma = &doc["variants"][0]["points"][0]["sigma"];
-        for key in [
-            "x_nm",
-            "y_nm",
-            "z_nm",
-            "phi_x_nrad",
-            "phi_y_nrad",
-            "phi_z_nrad",
-        ] {
+        for key in ["x_nm", "y_nm", "z_nm", "phi_x_nrad", "phi_y_nrad", "phi_z_nrad"] {
             let s = sigma[key].as_f64().unwrap();
             assert!(s.is_finite() && s > 0.0, "{name} {key}: {s}");
         }
@@ -277,15 +230,9 @@ fn the_new_bundled_scenes_check_study_and_validate() {
         if radii[1].is_finite() {
             assert_eq!(r["radii_m"][1].as_f64().unwrap(), radii[1]);
         }
-        assert!(
-            r["approach_error_rel"].as_f64().unwrap().abs() < 0.05,
-            "{r}"
-        );
+        assert!(r["approach_error_rel"].as_f64().unwrap().abs() < 0.05, "{r}");
         for k in 0..2 {
-            assert!(
-                r["semi_axes_error_rel"][k].as_f64().unwrap().abs() < 0.05,
-                "{r}"
-            );
+            assert!(r["semi_axes_error_rel"][k].as_f64().unwrap().abs() < 0.05, "{r}");
         }
     }
 }

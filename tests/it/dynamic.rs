@@ -22,10 +22,7 @@ fn at(scene: &Scene, mu: &[f64]) -> Load {
 
 /// The scene's load with the static coefficients `mu`, from `start`.
 fn from(scene: &Scene, mu: &[f64], start: StartPose) -> Load {
-    Load {
-        start,
-        ..at(scene, mu)
-    }
+    Load { start, ..at(scene, mu) }
 }
 
 /// Ten mu_s vectors drawn uniformly in 0.5 +- 0.05 (Python `random`, seed
@@ -57,10 +54,7 @@ fn cross_check(name: &str) -> [(f64, f64); 5] {
     let (mut qs, mut ds) = (Vec::new(), Vec::new());
     for mu in &MU {
         let mu = at(&m.0, mu);
-        qs.push(point_pose(
-            &m,
-            &quasistatic::seat(c, &mu, &SolverOptions::default()).unwrap(),
-        ));
+        qs.push(point_pose(&m, &quasistatic::seat(c, &mu, &SolverOptions::default()).unwrap()));
         ds.push(point_pose(&m, &dynamic::seat(c, &mu, &opts).unwrap()));
     }
     let mut out = [(0.0, 0.0); 5];
@@ -68,11 +62,7 @@ fn cross_check(name: &str) -> [(f64, f64); 5] {
         let mean = qs.iter().map(|q| q[k]).sum::<f64>() / qs.len() as f64;
         let sigma =
             (qs.iter().map(|q| (q[k] - mean).powi(2)).sum::<f64>() / (qs.len() - 1) as f64).sqrt();
-        let dev = qs
-            .iter()
-            .zip(&ds)
-            .map(|(q, d)| (q[k] - d[k]).abs())
-            .fold(0.0, f64::max);
+        let dev = qs.iter().zip(&ds).map(|(q, d)| (q[k] - d[k]).abs()).fold(0.0, f64::max);
         *o = (sigma, dev);
     }
     out
@@ -131,10 +121,7 @@ fn difference_shrinks_as_the_ramp_slows() {
         .map(|mu| point_pose(&m, &quasistatic::seat(c, &at(&m.0, mu), &fine).unwrap()))
         .collect();
     let dev = |ramp: f64| {
-        let opts = DynamicOptions {
-            ramp_periods: ramp,
-            ..Default::default()
-        };
+        let opts = DynamicOptions { ramp_periods: ramp, ..Default::default() };
         MU[..4]
             .iter()
             .zip(&qs)
@@ -157,10 +144,7 @@ fn frictionless_drop_ends_at_the_frictionless_seating() {
     let mu = [0.0; 6];
     let q = quasistatic::seat(c, &at(&m.0, &mu), &SolverOptions::default()).unwrap();
     let opts = DynamicOptions::default();
-    let start = StartPose {
-        offset: Vector3::new(0.0, 0.0, 50e-6),
-        tilt: Vector3::zeros(),
-    };
+    let start = StartPose { offset: Vector3::new(0.0, 0.0, 50e-6), tilt: Vector3::zeros() };
     let d = dynamic::seat(c, &from(&m.0, &mu, start), &opts).unwrap();
     let (pq, pd) = (point_pose(&m, &q), point_pose(&m, &d));
     eprintln!(
@@ -180,10 +164,7 @@ fn frictionless_drop_ends_at_the_frictionless_seating() {
 
 /// 50 um across ball 1's groove, 80 um above the seat.
 fn offset_start() -> StartPose {
-    StartPose {
-        offset: Vector3::new(50e-6, 0.0, 80e-6),
-        tilt: Vector3::zeros(),
-    }
+    StartPose { offset: Vector3::new(50e-6, 0.0, 80e-6), tilt: Vector3::zeros() }
 }
 
 /// Above the friction limit an offset start sticks off the seat: reported
@@ -230,10 +211,7 @@ fn energy_is_conserved_without_damping() {
     let mu = at(&scene, &[0.0; 6]);
     let opts = DynamicOptions {
         ramp_periods: 0.0,
-        damping: Damping {
-            normal: 0.0,
-            tangential: 0.0,
-        },
+        damping: Damping { normal: 0.0, tangential: 0.0 },
         ..Default::default()
     };
     let mut sim = Simulation::new(&c, &mu, &opts).unwrap();
@@ -264,15 +242,11 @@ fn energy_is_conserved_without_damping() {
     let max_raw = e_raw.iter().map(|x| (x - e0).abs()).fold(0.0, f64::max) / scale;
     let tenth = n / 10;
     let mean = |s: &[f64]| s.iter().sum::<f64>() / s.len() as f64;
-    let tenths: Vec<f64> = (0..10)
-        .map(|k| (mean(&e[k * tenth..(k + 1) * tenth]) - e0) / scale)
-        .collect();
+    let tenths: Vec<f64> =
+        (0..10).map(|k| (mean(&e[k * tenth..(k + 1) * tenth]) - e0) / scale).collect();
     eprintln!(
         "mean E - E0 per tenth of the run: {tenths:?}",
-        tenths = tenths
-            .iter()
-            .map(|t| format!("{t:.3e}"))
-            .collect::<Vec<_>>()
+        tenths = tenths.iter().map(|t| format!("{t:.3e}")).collect::<Vec<_>>()
     );
     // Secular drift: the least-squares slope of E(step), times the run length.
     let (nf, sx) = (n as f64, (n as f64 - 1.0) / 2.0);
@@ -313,33 +287,21 @@ fn bad_starts_and_options_are_errors() {
     let (scene, c) = coupling("01_maxwell_vgroove_steel.toml");
     let mu = at(&scene, &[0.5; 6]);
     let below = Load {
-        start: StartPose {
-            offset: Vector3::new(0.0, 0.0, -1e-6),
-            tilt: Vector3::zeros(),
-        },
+        start: StartPose { offset: Vector3::new(0.0, 0.0, -1e-6), tilt: Vector3::zeros() },
         ..mu.clone()
     };
     let e = dynamic::seat(&c, &below, &DynamicOptions::default()).unwrap_err();
     assert!(matches!(e, SolveError::StartOverlaps { .. }), "{e}");
     let nan = Load {
-        start: StartPose {
-            offset: Vector3::new(f64::NAN, 0.0, 1e-6),
-            tilt: Vector3::zeros(),
-        },
+        start: StartPose { offset: Vector3::new(f64::NAN, 0.0, 1e-6), tilt: Vector3::zeros() },
         ..mu.clone()
     };
     assert!(matches!(
         dynamic::seat(&c, &nan, &DynamicOptions::default()),
         Err(SolveError::BadOption(_))
     ));
-    let coarse = DynamicOptions {
-        steps_per_period: 5.0,
-        ..Default::default()
-    };
-    assert!(matches!(
-        dynamic::seat(&c, &mu, &coarse),
-        Err(SolveError::BadOption(_))
-    ));
+    let coarse = DynamicOptions { steps_per_period: 5.0, ..Default::default() };
+    assert!(matches!(dynamic::seat(&c, &mu, &coarse), Err(SolveError::BadOption(_))));
     assert!(matches!(
         dynamic::seat(&c, &mu.with_mu(&[0.5; 5]), &DynamicOptions::default()),
         Err(SolveError::MuCount { .. })
@@ -351,13 +313,11 @@ fn bad_starts_and_options_are_errors() {
 fn trace_records_the_seating() {
     let (scene, c) = coupling("01_maxwell_vgroove_steel.toml");
     let mut samples = Vec::new();
-    let s = dynamic::seat_traced(
-        &c,
-        &at(&scene, &[0.5; 6]),
-        &DynamicOptions::default(),
-        &mut |t| samples.push(t.clone()),
-    )
-    .unwrap();
+    let s =
+        dynamic::seat_traced(&c, &at(&scene, &[0.5; 6]), &DynamicOptions::default(), &mut |t| {
+            samples.push(t.clone())
+        })
+        .unwrap();
     assert_eq!(samples.len(), s.seated.increments);
     assert_eq!(samples[0].time, 0.0);
     assert_eq!(samples[0].load_fraction, 0.0);
@@ -406,22 +366,10 @@ fn dynamics_table_is_read_and_checked() {
     assert!((seated.pose().translation - reference.pose().translation).norm() < 1e-13);
 
     for (bad, field) in [
-        (
-            "[dynamics]\nmass = -1.0\ninertia = [1e-3, 1e-3, 1e-3]\n",
-            "dynamics.mass",
-        ),
-        (
-            "[dynamics]\nmass = 1.0\ninertia = [1e-3, 0.0, 1e-3]\n",
-            "dynamics.inertia",
-        ),
-        (
-            "[dynamics]\nmass = 1.0\ninertia = [1e-3, 1e-3, 3e-3]\n",
-            "dynamics.inertia",
-        ),
-        (
-            "[dynamics]\nmass = 1.0\ninertia = [1e-3, 1e-3, 1e-3]\ncolour = 1\n",
-            "",
-        ),
+        ("[dynamics]\nmass = -1.0\ninertia = [1e-3, 1e-3, 1e-3]\n", "dynamics.mass"),
+        ("[dynamics]\nmass = 1.0\ninertia = [1e-3, 0.0, 1e-3]\n", "dynamics.inertia"),
+        ("[dynamics]\nmass = 1.0\ninertia = [1e-3, 1e-3, 3e-3]\n", "dynamics.inertia"),
+        ("[dynamics]\nmass = 1.0\ninertia = [1e-3, 1e-3, 1e-3]\ncolour = 1\n", ""),
     ] {
         let e = scene_with(bad).unwrap_err();
         let msg = e.to_string();

@@ -32,13 +32,7 @@ fn exact(p: &ContactPair) -> (Gap, f64, f64) {
 
 /// (shape, r1, r2, closed-form [R_x, R_y] in the FE's axes, closed-form
 /// quartic term of the gap's Taylor series at (x, y)).
-type Case = (
-    ContactShape,
-    f64,
-    Option<f64>,
-    [f64; 2],
-    fn(f64, f64) -> f64,
-);
+type Case = (ContactShape, f64, Option<f64>, [f64; 2], fn(f64, f64) -> f64);
 
 fn cases() -> Vec<Case> {
     vec![
@@ -58,47 +52,24 @@ fn cases() -> Vec<Case> {
             },
         ),
         // ball in a spherical seat: 1/R = 1/r - 1/R_s.
-        (
-            ContactShape::SphereSeat,
-            4e-3,
-            Some(5e-3),
-            [1.0 / (250.0 - 200.0); 2],
-            |x, y| {
-                let u = x * x + y * y;
-                u * u / 8.0 * (1.0 / 4e-3f64.powi(3) - 1.0 / 5e-3f64.powi(3))
-            },
-        ),
+        (ContactShape::SphereSeat, 4e-3, Some(5e-3), [1.0 / (250.0 - 200.0); 2], |x, y| {
+            let u = x * x + y * y;
+            u * u / 8.0 * (1.0 / 4e-3f64.powi(3) - 1.0 / 5e-3f64.powi(3))
+        }),
         // ball on a pin of radius 2 mm: x across the pin (1/R_x = 1/r + 1/R_p), y along it.
-        (
-            ContactShape::SphereCylinder,
-            5e-3,
-            Some(2e-3),
-            [1.0 / (200.0 + 500.0), 5e-3],
-            |x, y| {
-                (x * x + y * y).powi(2) / (8.0 * 5e-3f64.powi(3))
-                    + x.powi(4) / (8.0 * 2e-3f64.powi(3))
-            },
-        ),
+        (ContactShape::SphereCylinder, 5e-3, Some(2e-3), [1.0 / (200.0 + 500.0), 5e-3], |x, y| {
+            (x * x + y * y).powi(2) / (8.0 * 5e-3f64.powi(3)) + x.powi(4) / (8.0 * 2e-3f64.powi(3))
+        }),
         // ball in a gothic-arch flank: x along the groove (R_x = r), y across
         // it (R_y = r R_g / (R_g - r)).
-        (
-            ContactShape::SphereGroove,
-            5e-3,
-            Some(5.5e-3),
-            [5e-3, 5e-3 * 5.5e-3 / 0.5e-3],
-            |x, y| {
-                (x * x + y * y).powi(2) / (8.0 * 5e-3f64.powi(3))
-                    - y.powi(4) / (8.0 * 5.5e-3f64.powi(3))
-            },
-        ),
+        (ContactShape::SphereGroove, 5e-3, Some(5.5e-3), [5e-3, 5e-3 * 5.5e-3 / 0.5e-3], |x, y| {
+            (x * x + y * y).powi(2) / (8.0 * 5e-3f64.powi(3))
+                - y.powi(4) / (8.0 * 5.5e-3f64.powi(3))
+        }),
         // crossed pins at 90 degrees: the 2 mm pin curved along x, the 3 mm one along y.
-        (
-            ContactShape::CrossedCylinders,
-            3e-3,
-            Some(2e-3),
-            [2e-3, 3e-3],
-            |x, y| x.powi(4) / (8.0 * 2e-3f64.powi(3)) + y.powi(4) / (8.0 * 3e-3f64.powi(3)),
-        ),
+        (ContactShape::CrossedCylinders, 3e-3, Some(2e-3), [2e-3, 3e-3], |x, y| {
+            x.powi(4) / (8.0 * 2e-3f64.powi(3)) + y.powi(4) / (8.0 * 3e-3f64.powi(3))
+        }),
     ]
 }
 
@@ -109,20 +80,14 @@ fn exact_gap_tends_to_its_quadratic_and_quartic_limits() {
     for (shape, r1, r2, [rx, ry], quartic) in cases() {
         let p = pair(shape, r1, r2);
         let (gap, fx, fy) = exact(&p);
-        assert!(
-            (fx / rx - 1.0).abs() < 1e-12 && (fy / ry - 1.0).abs() < 1e-12,
-            "{shape:?}"
-        );
+        assert!((fx / rx - 1.0).abs() < 1e-12 && (fy / ry - 1.0).abs() < 1e-12, "{shape:?}");
         let scale = r1.min(r2.unwrap_or(r1));
         for t in [1e-2, 1e-3] {
             for phi in [0.0, 0.7, std::f64::consts::FRAC_PI_2, 2.0f64] {
                 let (x, y) = (t * scale * phi.cos(), t * scale * phi.sin());
                 let h = gap.height(rx, ry, x, y).unwrap();
                 let quad = x * x / (2.0 * rx) + y * y / (2.0 * ry);
-                assert!(
-                    (h / quad - 1.0).abs() < t * t,
-                    "{shape:?} t {t}: {h} vs {quad}"
-                );
+                assert!((h / quad - 1.0).abs() < t * t, "{shape:?} t {t}: {h} vs {quad}");
                 let rest = (h - quad) / quartic(x, y);
                 assert!(
                     (rest - 1.0).abs() < (10.0 * t * t).max(1e-6),
@@ -135,13 +100,8 @@ fn exact_gap_tends_to_its_quadratic_and_quartic_limits() {
 
 /// The first hit of a ray from `origin` along `dir` on `shape` at `pose`.
 fn hit(shape: &dyn RayCast, pose: &Pose, origin: [f64; 3], dir: f64, solid: bool) -> f64 {
-    let ray = Ray::new(
-        Vector::new(origin[0], origin[1], origin[2]),
-        Vector::new(0.0, 0.0, dir),
-    );
-    let t = shape
-        .cast_ray(pose, &ray, 1.0, solid)
-        .expect("the ray hits");
+    let ray = Ray::new(Vector::new(origin[0], origin[1], origin[2]), Vector::new(0.0, 0.0, dir));
+    let t = shape.cast_ray(pose, &ray, 1.0, solid).expect("the ray hits");
     origin[2] + dir * t
 }
 
@@ -189,19 +149,13 @@ fn exact_gap_is_the_vertical_distance_of_the_surfaces() {
         ),
         (
             pair(ContactShape::SphereSphere, r, Some(3e-3)),
-            SurfaceGeometry::Sphere {
-                centre: v(0.0, 0.0, -3e-3),
-                radius: 3e-3,
-            },
+            SurfaceGeometry::Sphere { centre: v(0.0, 0.0, -3e-3), radius: 3e-3 },
             true,
             0.0,
         ),
         (
             pair(ContactShape::SphereSeat, r, Some(6e-3)),
-            SurfaceGeometry::Sphere {
-                centre: v(0.0, 0.0, 6e-3),
-                radius: 6e-3,
-            },
+            SurfaceGeometry::Sphere { centre: v(0.0, 0.0, 6e-3), radius: 6e-3 },
             false,
             6e-3,
         ),
@@ -209,19 +163,9 @@ fn exact_gap_is_the_vertical_distance_of_the_surfaces() {
     for (p, surface, convex, centre_z) in bodies {
         let (gap, rx, ry) = exact(&p);
         let (shape, pose) = parry_shape(&surface, &v(0.0, 0.0, r), 1.0);
-        for (fx, fy) in [
-            (0.05, 0.0),
-            (0.0, 0.3),
-            (0.4, 0.4),
-            (-0.2, 0.7),
-            (0.85, -0.3),
-        ] {
+        for (fx, fy) in [(0.05, 0.0), (0.0, 0.3), (0.4, 0.4), (-0.2, 0.7), (0.85, -0.3)] {
             // inside the footprints of both bodies (the pin's is |x| < 2 mm)
-            let scale = if convex {
-                r.min(p.curvature.radii2[0])
-            } else {
-                r
-            };
+            let scale = if convex { r.min(p.curvature.radii2[0]) } else { r };
             let (x, y) = (fx * scale, fy * scale);
             let z1 = hit(&ball, &ball_pose, [x, y, -0.1], 1.0, true);
             let z2 = if convex {
@@ -272,10 +216,7 @@ fn exact_gap_outside_its_footprint_is_an_error() {
     let mut crossed = pair(ContactShape::CrossedCylinders, 3e-3, Some(2e-3));
     crossed.curvature.angle = 60f64.to_radians();
     let [cx, cy] = crossed.law().unwrap().hertz.radii;
-    assert!(matches!(
-        Gap::exact(&crossed.curvature, cx, cy),
-        Err(FeError::InvalidInput(_))
-    ));
+    assert!(matches!(Gap::exact(&crossed.curvature, cx, cy), Err(FeError::InvalidInput(_))));
 }
 
 /// A gothic arch far from conformity (R_g/r = 1.5, a/r = 0.016 at the
@@ -289,17 +230,9 @@ fn far_from_conformity_exact_and_quadratic_gaps_agree() {
     let mesh = MeshOptions::coarse();
     let fe = solve_case(&fe_case(&p, load, true).unwrap(), &mesh).unwrap();
     let fq = solve_case(&fe_case(&p, load, false).unwrap(), &mesh).unwrap();
-    assert!(
-        (fe.approach / fq.approach - 1.0).abs() < 2e-3,
-        "{} vs {}",
-        fe.approach,
-        fq.approach
-    );
+    assert!((fe.approach / fq.approach - 1.0).abs() < 2e-3, "{} vs {}", fe.approach, fq.approach);
     for k in 0..2 {
-        assert!(
-            (fe.semi_axes[k] / fq.semi_axes[k] - 1.0).abs() < 1e-2,
-            "axis {k}"
-        );
+        assert!((fe.semi_axes[k] / fq.semi_axes[k] - 1.0).abs() < 1e-2, "axis {k}");
     }
 }
 
@@ -318,10 +251,7 @@ fn near_conformity_the_exact_gap_needs_a_larger_approach() {
     let (r, rg, load) = (5e-3, 5.05e-3, 70.0);
     let p = pair(ContactShape::SphereGroove, r, Some(rg));
     let mesh = MeshOptions::coarse();
-    let (ce, cq) = (
-        fe_case(&p, load, true).unwrap(),
-        fe_case(&p, load, false).unwrap(),
-    );
+    let (ce, cq) = (fe_case(&p, load, true).unwrap(), fe_case(&p, load, false).unwrap());
     let hz = hertz(cq.rx, cq.ry, cq.e_star, load).unwrap();
     let a = hz.semi_axes[1]; // across the groove
     assert!(a / r > 0.15 && a / r < 0.3, "a/r = {}", a / r);
@@ -330,10 +260,7 @@ fn near_conformity_the_exact_gap_needs_a_larger_approach() {
     let fe = solve_case(&ce, &mesh).unwrap();
     let fq = solve_case(&cq, &mesh).unwrap();
     let effect = fe.approach / fq.approach - 1.0;
-    assert!(
-        effect > 0.0 && effect < (1.0 + e).cbrt() - 1.0,
-        "effect {effect}, edge excess {e}"
-    );
+    assert!(effect > 0.0 && effect < (1.0 + e).cbrt() - 1.0, "effect {effect}, edge excess {e}");
     assert!(fe.semi_axes[1] <= fq.semi_axes[1] * (1.0 + 1e-12));
 }
 

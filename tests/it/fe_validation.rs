@@ -8,10 +8,7 @@ use kinrepro::fe::{FeCase, FeError, Gap, MeshOptions, convergence_study, hertz, 
 use kinrepro::material::{Material, effective_modulus};
 
 fn e_star(m1: &str, m2: &str) -> f64 {
-    effective_modulus(
-        &Material::builtin(m1).unwrap(),
-        &Material::builtin(m2).unwrap(),
-    )
+    effective_modulus(&Material::builtin(m1).unwrap(), &Material::builtin(m2).unwrap())
 }
 
 /// Normal load per contact of a 90° V coupling with six contacts under 20 N preload.
@@ -32,13 +29,7 @@ fn cases() -> Vec<(&'static str, FeCase)> {
     let f = load();
     let cyl_rx = 1.0 / (1.0 / 5e-3 + 1.0 / 2e-3); // across the 2 mm-radius pin
     let sph = 1.0 / (1.0 / 4e-3 + 1.0 / 3e-3);
-    let mk = |rx, ry, e_star| FeCase {
-        rx,
-        ry,
-        e_star,
-        load: f,
-        gap: Gap::Quadratic,
-    };
+    let mk = |rx, ry, e_star| FeCase { rx, ry, e_star, load: f, gap: Gap::Quadratic };
     vec![
         ("sphere-plane steel", mk(5e-3, 5e-3, steel())),
         ("sphere-cylinder steel", mk(cyl_rx, 5e-3, steel())),
@@ -88,13 +79,7 @@ fn default_mesh_acceptance() {
 #[test]
 fn sphere_plane_curve_follows_closed_form() {
     let (r, es) = (5e-3, steel());
-    let c = FeCase {
-        rx: r,
-        ry: r,
-        e_star: es,
-        load: load(),
-        gap: Gap::Quadratic,
-    };
+    let c = FeCase { rx: r, ry: r, e_star: es, load: load(), gap: Gap::Quadratic };
     let res = solve_case(&c, &MeshOptions::coarse()).unwrap();
     assert_eq!(res.curve.len(), MeshOptions::coarse().curve_levels);
     for &(delta, f) in &res.curve {
@@ -124,32 +109,17 @@ fn convergence_error_falls() {
 
 #[test]
 fn bad_input_is_an_error() {
-    let ok = FeCase {
-        rx: 5e-3,
-        ry: 5e-3,
-        e_star: steel(),
-        load: 1.0,
-        gap: Gap::Quadratic,
-    };
+    let ok = FeCase { rx: 5e-3, ry: 5e-3, e_star: steel(), load: 1.0, gap: Gap::Quadratic };
     let m = MeshOptions::coarse();
     for bad in [
         FeCase { rx: -1.0, ..ok },
         FeCase { ry: 0.0, ..ok },
         FeCase { load: 0.0, ..ok },
-        FeCase {
-            e_star: f64::NAN,
-            ..ok
-        },
+        FeCase { e_star: f64::NAN, ..ok },
     ] {
-        assert!(matches!(
-            solve_case(&bad, &m),
-            Err(FeError::InvalidInput(_))
-        ));
+        assert!(matches!(solve_case(&bad, &m), Err(FeError::InvalidInput(_))));
     }
-    let bad_mesh = MeshOptions {
-        element_size_rel: -0.1,
-        ..m
-    };
+    let bad_mesh = MeshOptions { element_size_rel: -0.1, ..m };
     assert!(solve_case(&ok, &bad_mesh).is_err());
     assert!(convergence_study(&ok, &[0.0]).is_err());
 }
@@ -163,9 +133,8 @@ fn bad_input_is_an_error() {
 /// the uniformly loaded square, w = p / (pi E*) int 1/r dA
 /// = 4 ln(1 + sqrt 2) F / (pi E* s). Gap profile h = (x^2 + y^2) / (2 r).
 fn boussinesq_grid(r: f64, e_star: f64, s: f64, n: usize) -> (ContactModel, Vec<(f64, f64)>) {
-    let pos: Vec<(f64, f64)> = (0..n * n)
-        .map(|k| (((k % n) as f64 + 0.5) * s, ((k / n) as f64 + 0.5) * s))
-        .collect();
+    let pos: Vec<(f64, f64)> =
+        (0..n * n).map(|k| (((k % n) as f64 + 0.5) * s, ((k / n) as f64 + 0.5) * s)).collect();
     let own = 4.0 * (1.0 + 2f64.sqrt()).ln() / (std::f64::consts::PI * e_star * s);
     let c = faer::Mat::<f64>::from_fn(n * n, n * n, |i, j| {
         let (xi, yi) = pos[i];
@@ -174,27 +143,18 @@ fn boussinesq_grid(r: f64, e_star: f64, s: f64, n: usize) -> (ContactModel, Vec<
             .iter()
             .map(|&(sx, sy)| {
                 let d = (xi - sx * xj).hypot(yi - sy * yj);
-                if d < 1e-3 * s {
-                    own
-                } else {
-                    1.0 / (std::f64::consts::PI * e_star * d)
-                }
+                if d < 1e-3 * s { own } else { 1.0 / (std::f64::consts::PI * e_star * d) }
             })
             .sum()
     });
     let model = ContactModel {
-        h: pos
-            .iter()
-            .map(|&(x, y)| (x * x + y * y) / (2.0 * r))
-            .collect(),
+        h: pos.iter().map(|&(x, y)| (x * x + y * y) / (2.0 * r)).collect(),
         c,
         w_unit: vec![0.0; n * n],
         h_other: Vec::new(),
         c_other: faer::Mat::zeros(0, n * n),
         w_unit_other: Vec::new(),
-        on_zone_edge: (0..n * n)
-            .map(|k| k % n == n - 1 || k / n == n - 1)
-            .collect(),
+        on_zone_edge: (0..n * n).map(|k| k % n == n - 1 || k / n == n - 1).collect(),
     };
     (model, pos)
 }
@@ -220,28 +180,13 @@ fn active_set_meets_signorini_and_hertz_on_a_boussinesq_grid() {
         let st = model.solve(load, delta, init).unwrap();
         let fmax = st.forces.iter().cloned().fold(0.0, f64::max);
         for (k, (&f, &g)) in st.forces.iter().zip(&st.gaps).enumerate() {
-            assert!(
-                f >= -1e-9 * fmax,
-                "init {:?}: node {k} pulls: {f} N",
-                init.is_some()
-            );
-            assert!(
-                g >= -1e-9 * delta,
-                "init {:?}: node {k} penetrates: {g} m",
-                init.is_some()
-            );
-            assert!(
-                f.max(0.0) * g.max(0.0) <= 1e-9 * fmax * delta,
-                "node {k}: f {f}, g {g}"
-            );
+            assert!(f >= -1e-9 * fmax, "init {:?}: node {k} pulls: {f} N", init.is_some());
+            assert!(g >= -1e-9 * delta, "init {:?}: node {k} penetrates: {g} m", init.is_some());
+            assert!(f.max(0.0) * g.max(0.0) <= 1e-9 * fmax * delta, "node {k}: f {f}, g {g}");
         }
         let total = 4.0 * st.forces.iter().sum::<f64>();
         assert!((total / load - 1.0).abs() < 1e-9, "{total} N vs {load} N");
-        assert!(
-            (st.approach / delta - 1.0).abs() < 0.02,
-            "{} vs {delta}",
-            st.approach
-        );
+        assert!((st.approach / delta - 1.0).abs() < 0.02, "{} vs {delta}", st.approach);
         // Contact area: the loaded patches cover pi a^2 / 4 of the quarter.
         let loaded = st.forces.iter().filter(|&&f| f > 0.0).count() as f64 * s * s;
         let area = std::f64::consts::PI * a * a / 4.0;
@@ -252,10 +197,7 @@ fn active_set_meets_signorini_and_hertz_on_a_boussinesq_grid() {
             if rr < 0.8 {
                 let hertz = p0 * (1.0 - rr * rr).sqrt();
                 let p = st.forces[k] / (s * s);
-                assert!(
-                    (p / hertz - 1.0).abs() < 0.03,
-                    "r/a {rr}: {p} Pa vs Hertz {hertz} Pa"
-                );
+                assert!((p / hertz - 1.0).abs() < 0.03, "r/a {rr}: {p} Pa vs Hertz {hertz} Pa");
             }
         }
     }

@@ -58,10 +58,7 @@ fn every_bundled_scene_has_its_pinned_fingerprint() {
             .collect();
     bundled.sort();
     let pinned: Vec<&str> = PINNED.iter().map(|(n, _)| *n).collect();
-    assert_eq!(
-        bundled, pinned,
-        "a bundled scene without a pin, or a pin without a scene"
-    );
+    assert_eq!(bundled, pinned, "a bundled scene without a pin, or a pin without a scene");
     for (name, hash) in PINNED {
         let f = fingerprint(name);
         assert_eq!(f.fingerprint_version, FINGERPRINT_VERSION);
@@ -84,10 +81,7 @@ fn the_hash_is_fnv1a_of_the_canonical_text() {
     let (scene, _) = common::load("06_kelvin_steel.toml");
     let text = canonical_text(&scene);
     assert!(text.starts_with('{') && !text.contains("Vector") && !text.contains("Some("));
-    assert_eq!(
-        content_hash(&scene),
-        format!("{:016x}", fnv1a64(text.as_bytes()))
-    );
+    assert_eq!(content_hash(&scene), format!("{:016x}", fnv1a64(text.as_bytes())));
 }
 
 #[test]
@@ -98,10 +92,7 @@ fn the_scene_content_is_the_coupling_not_the_file() {
     // Another path, comments and blank lines (every line number moves):
     // the same coupling, the same hash.
     let moved = format!("# a comment\n\n\n{text}\n# another\n");
-    assert_eq!(
-        fingerprint_of_text(&moved, "elsewhere/b.toml").scene_content,
-        base
-    );
+    assert_eq!(fingerprint_of_text(&moved, "elsewhere/b.toml").scene_content, base);
     // A value changed: another coupling, another hash.
     let stiffer = text.replace("mu_static = 0.5", "mu_static = 0.51");
     assert_ne!(stiffer, text);
@@ -126,11 +117,7 @@ fn sigmas(doc: &serde_json::Value) -> Vec<serde_json::Value> {
 fn shards_written_before_the_canonical_fingerprint_merge_with_each_other_only() {
     // The two parts and the whole of `study scenes/01... --samples 12
     // --sampler mc --seed 5 --shard i/2 --format json`, written by b51b948.
-    let (p1, p2, whole) = (
-        shard("part1.json"),
-        shard("part2.json"),
-        shard("whole.json"),
-    );
+    let (p1, p2, whole) = (shard("part1.json"), shard("part2.json"), shard("whole.json"));
     let (ok, out, err) = kinrepro(&["merge", &p1, &p2, "--format", "json"]);
     assert!(ok, "{err}");
     let merged: serde_json::Value = serde_json::from_str(&out).unwrap();
@@ -139,16 +126,8 @@ fn shards_written_before_the_canonical_fingerprint_merge_with_each_other_only() 
     assert_eq!(sigmas(&merged), sigmas(&old));
     // The same study now: the same numbers.
     let s01 = common::scene("01_maxwell_vgroove_steel.toml");
-    let args = [
-        "study",
-        s01.to_str().unwrap(),
-        "--samples",
-        "12",
-        "--sampler",
-        "mc",
-        "--seed",
-        "5",
-    ];
+    let args =
+        ["study", s01.to_str().unwrap(), "--samples", "12", "--sampler", "mc", "--seed", "5"];
     let (ok, now, err) = kinrepro(&[&args[..], &["--format", "json"]].concat());
     assert!(ok, "{err}");
     let now: serde_json::Value = serde_json::from_str(&now).unwrap();
@@ -163,8 +142,5 @@ fn shards_written_before_the_canonical_fingerprint_merge_with_each_other_only() 
     std::fs::write(&new2, part).unwrap();
     let (ok, _, err) = kinrepro(&["merge", &p1, new2.to_str().unwrap()]);
     assert!(!ok);
-    assert!(
-        err.contains("fingerprint is of version 2") && err.contains("has version 1"),
-        "{err}"
-    );
+    assert!(err.contains("fingerprint is of version 2") && err.contains("has version 1"), "{err}");
 }

@@ -37,9 +37,7 @@ fn seatings(factor: f64) -> Vec<(String, Seating)> {
         .map(|n| (format!("{n} fixed increments"), SolverOptions::fixed(n)))
         .collect();
     opts.push(("the controlled path".into(), SolverOptions::default()));
-    opts.into_iter()
-        .map(|(label, o)| (label, seat(&c, &mu, &o).unwrap()))
-        .collect()
+    opts.into_iter().map(|(label, o)| (label, seat(&c, &mu, &o).unwrap())).collect()
 }
 
 #[test]
@@ -109,10 +107,7 @@ fn the_increments_semi_axis_is_mindlins_stiffness_integrated_over_the_increment(
             den += w * da2;
         }
         let expect = if f0 == f1 { a(f1) } else { num / den };
-        assert!(
-            (a_eff / expect - 1.0).abs() < 1e-9,
-            "{f0} -> {f1}: {a_eff} against {expect}"
-        );
+        assert!((a_eff / expect - 1.0).abs() < 1e-9, "{f0} -> {f1}: {a_eff} against {expect}");
         let h = 1e-6 * f1;
         let (up, _) = law.increment_semi_axis(f0, f1 + h);
         let (down, _) = law.increment_semi_axis(f0, f1 - h);

@@ -19,10 +19,7 @@ use nalgebra::Vector3;
 /// (contact point, normal into the ball) of the six Maxwell contacts: the
 /// contact point lies one ball radius from the centre against the normal.
 fn maxwell(ball_radius: f64, alpha: f64) -> Vec<(Vector3<f64>, Vector3<f64>)> {
-    common::maxwell_contacts(alpha)
-        .into_iter()
-        .map(|(c, n)| (c - n * ball_radius, n))
-        .collect()
+    common::maxwell_contacts(alpha).into_iter().map(|(c, n)| (c - n * ball_radius, n)).collect()
 }
 
 /// Can the contacts other than `open` carry a unit upward force through the
@@ -81,15 +78,9 @@ fn maxwell_friction_limit_matches_an_independent_statics_solution() {
     // has the same limit; contact 1 stands for all (checked for contact 4).
     let upper = least_mu(&contacts, 0, k, 1.0);
     let lower = least_mu(&contacts, 0, k, widen);
-    assert!(
-        lower <= upper && upper / lower - 1.0 < 1e-4,
-        "{lower} {upper}"
-    );
+    assert!(lower <= upper && upper / lower - 1.0 < 1e-4, "{lower} {upper}");
     let other = least_mu(&contacts, 3, k, 1.0);
-    assert!(
-        other >= lower - 1e-6 && other * (2.0 - widen) <= upper + 1e-6,
-        "{other}"
-    );
+    assert!(other >= lower - 1e-6 && other * (2.0 - widen) <= upper + 1e-6, "{other}");
 
     let (scene, c) = common::load("01_maxwell_vgroove_steel.toml");
     let limit = kinrepro::assembly::constraint::friction_limit(&c, &scene.preload);
@@ -111,8 +102,5 @@ fn maxwell_friction_limit_matches_an_independent_statics_solution() {
         .nth(1)
         .and_then(|s| s.split_whitespace().next())
         .unwrap();
-    assert!(
-        (shown.parse::<f64>().unwrap() - code).abs() <= 5e-5,
-        "{shown} vs {code}"
-    );
+    assert!((shown.parse::<f64>().unwrap() - code).abs() <= 5e-5, "{shown} vs {code}");
 }

@@ -103,11 +103,8 @@ fn dynamic((scene, c): &Model, mu: &[f64]) -> Seating {
     dynamic::seat(c, &load, &DynamicOptions::default()).unwrap()
 }
 
-const SCENES: [&str; 3] = [
-    "01_maxwell_vgroove_steel.toml",
-    "02_maxwell_pins_steel.toml",
-    "06_kelvin_steel.toml",
-];
+const SCENES: [&str; 3] =
+    ["01_maxwell_vgroove_steel.toml", "02_maxwell_pins_steel.toml", "06_kelvin_steel.toml"];
 
 #[test]
 fn quasi_static_decay_with_zero_coefficient_is_switch_with_ratio_one() {
@@ -223,10 +220,7 @@ fn friction_law_keys_are_read() {
     assert_eq!(s.friction.law, FrictionLaw::Switch);
     assert_eq!(s.preload.ramp_time, 1.0);
     let s = Scene::parse(
-        &scene_text(
-            "law = \"decay\"\ndecay_coefficient = 20.0",
-            "ramp_time = 0.25",
-        ),
+        &scene_text("law = \"decay\"\ndecay_coefficient = 20.0", "ramp_time = 0.25"),
         "t.toml",
     )
     .unwrap();
@@ -238,24 +232,9 @@ fn friction_law_keys_are_read() {
 fn friction_law_keys_are_checked() {
     for (friction, preload, line, field) in [
         ("law = \"decay\"", "", 13, "friction.decay_coefficient"),
-        (
-            "law = \"decay\"\ndecay_coefficient = -1.0",
-            "",
-            14,
-            "friction.decay_coefficient",
-        ),
-        (
-            "decay_coefficient = 3.0",
-            "",
-            13,
-            "friction.decay_coefficient",
-        ),
-        (
-            "law = \"switch\"\ndecay_coefficient = 3.0",
-            "",
-            14,
-            "friction.decay_coefficient",
-        ),
+        ("law = \"decay\"\ndecay_coefficient = -1.0", "", 14, "friction.decay_coefficient"),
+        ("decay_coefficient = 3.0", "", 13, "friction.decay_coefficient"),
+        ("law = \"switch\"\ndecay_coefficient = 3.0", "", 14, "friction.decay_coefficient"),
         (
             "tangential_law = \"mindlin-deresiewicz\"\nlaw = \"decay\"\ndecay_coefficient = 1.0",
             "",
@@ -268,11 +247,7 @@ fn friction_law_keys_are_checked() {
         let e = Scene::parse(&scene_text(friction, preload), "t.toml").unwrap_err();
         assert_eq!(e.line, Some(line), "{e}");
         assert_eq!(e.field, field, "{e}");
-        assert!(
-            e.to_string()
-                .starts_with(&format!("t.toml:{line}: {field}: ")),
-            "{e}"
-        );
+        assert!(e.to_string().starts_with(&format!("t.toml:{line}: {field}: ")), "{e}");
     }
     let e = Scene::parse(&scene_text("law = \"sudden\"", ""), "t.toml").unwrap_err();
     assert_eq!(e.line, Some(13), "{e}");

@@ -76,15 +76,7 @@ fn independent(r1: [f64; 2], r2: [f64; 2], theta: f64, e_star: f64, f: f64) -> (
     let k = 1.0 / (1.0 - m).sqrt(); // a/b
     let a = (3.0 * k * k * ee * f / (2.0 * PI * e_star * (a_c + b_c))).cbrt();
     let b = a / k;
-    (
-        [
-            a,
-            b,
-            3.0 * f / (2.0 * PI * a * b),
-            3.0 * f * kk / (2.0 * PI * a * e_star),
-        ],
-        b / a,
-    )
+    ([a, b, 3.0 * f / (2.0 * PI * a * b), 3.0 * f * kk / (2.0 * PI * a * e_star)], b / a)
 }
 
 /// `kinrepro contact --json` for steel on steel at load f.
@@ -116,12 +108,7 @@ const CASES: [(&str, [f64; 2], [f64; 2], f64); 8] = [
     ("ball on a flat", [0.005, 0.005], [INF, INF], 0.0),
     ("crossed pins at 90 deg", [0.004, INF], [0.004, INF], 90.0),
     ("crossed pins at 30 deg", [0.003, INF], [0.002, INF], 30.0),
-    (
-        "ball in a concave groove",
-        [0.005, 0.005],
-        [-0.0055, INF],
-        0.0,
-    ),
+    ("ball in a concave groove", [0.005, 0.005], [-0.0055, INF], 0.0),
     ("canoe patch on a flat", [0.25, 0.25], [INF, INF], 0.0),
     ("canoe patch on a pin", [0.25, 0.25], [0.002, INF], 0.0),
     ("torus on a flat", [0.005, 0.02], [INF, INF], 17.0),
@@ -140,11 +127,8 @@ fn general_contact_agrees_with_an_independent_hertz_evaluation() {
             v["approach_m"].as_f64().unwrap(),
         ];
         let (want, kp) = independent(r1, r2, deg.to_radians(), E_STAR_STEEL, f);
-        for (name, g, w) in ["a", "b", "p0", "approach"]
-            .into_iter()
-            .zip(got)
-            .zip(want)
-            .map(|((n, g), w)| (n, g, w))
+        for (name, g, w) in
+            ["a", "b", "p0", "approach"].into_iter().zip(got).zip(want).map(|((n, g), w)| (n, g, w))
         {
             assert!((g / w - 1.0).abs() < 1e-6, "{label}: {name} {g:e} vs {w:e}");
         }
@@ -157,15 +141,8 @@ fn general_contact_agrees_with_an_independent_hertz_evaluation() {
             let e_fit = 1.0003 + 0.5968 * a_c / b_c;
             let a_fit =
                 (3.0 * k_fit * k_fit * e_fit * f / (2.0 * PI * E_STAR_STEEL * (a_c + b_c))).cbrt();
-            assert!(
-                (got[0] / a_fit - 1.0).abs() < 0.03,
-                "{label}: a {:e} vs {a_fit:e}",
-                got[0]
-            );
-            assert!(
-                (got[0] / got[1] / k_fit - 1.0).abs() < 0.04,
-                "{label}: a/b vs {k_fit}"
-            );
+            assert!((got[0] / a_fit - 1.0).abs() < 0.03, "{label}: a {:e} vs {a_fit:e}", got[0]);
+            assert!((got[0] / got[1] / k_fit - 1.0).abs() < 0.04, "{label}: a/b vs {k_fit}");
         }
         println!(
             "{label}: b/a = {kp:.6}, a = {:.4} um, approach {:.4} nm",
@@ -189,15 +166,7 @@ fn general_contact_agrees_with_an_independent_hertz_evaluation() {
 
 #[test]
 fn a_negative_or_zero_a_is_a_clear_error() {
-    let base = [
-        "contact",
-        "--material1",
-        "steel",
-        "--material2",
-        "steel",
-        "--load",
-        "1",
-    ];
+    let base = ["contact", "--material1", "steel", "--material2", "steel", "--load", "1"];
     for (r1, r2) in [
         ("0.005,0.005", "-0.004,-0.004"), // a ball larger than its seat: A < 0
         ("0.005,0.005", "-0.0045,inf"),   // ... than its groove
@@ -239,10 +208,7 @@ fn a_too_conformal_contact_is_warned_about() {
     };
     let (ok, out, err) = kinrepro(&args("-0.00502,inf"));
     assert!(ok && out.contains("general"), "{err}");
-    assert!(
-        err.contains("too conformal for Hertz") && err.contains("half-spaces"),
-        "{err}"
-    );
+    assert!(err.contains("too conformal for Hertz") && err.contains("half-spaces"), "{err}");
     // A 10 % wider groove at the same load is not.
     let (ok, _, err) = kinrepro(&args("-0.0055,inf"));
     assert!(ok && !err.contains("conformal"), "{err}");
@@ -258,10 +224,7 @@ fn a_conformal_ball_in_a_concave_seat() {
     let v = contact_json([r, r], [-rs, -rs], 0.0, f);
     let rel = r * rs / (rs - r);
     let (a, delta) = common::hertz_circle(f, rel, E_STAR_STEEL);
-    for (key, want) in [
-        ("approach_m", delta),
-        ("max_pressure_pa", 3.0 * f / (2.0 * PI * a * a)),
-    ] {
+    for (key, want) in [("approach_m", delta), ("max_pressure_pa", 3.0 * f / (2.0 * PI * a * a))] {
         let got = v[key].as_f64().unwrap();
         assert!((got / want - 1.0).abs() < 1e-12, "{key}: {got} vs {want}");
     }
@@ -304,10 +267,8 @@ fn the_general_contact_is_symmetric_in_angle_and_bodies() {
             assert!((p / q - 1.0).abs() < 1e-12, "{what} {key}: {p} vs {q}");
         }
         for k in 0..2 {
-            let (p, q) = (
-                x["semi_axes_m"][k].as_f64().unwrap(),
-                y["semi_axes_m"][k].as_f64().unwrap(),
-            );
+            let (p, q) =
+                (x["semi_axes_m"][k].as_f64().unwrap(), y["semi_axes_m"][k].as_f64().unwrap());
             assert!((p / q - 1.0).abs() < 1e-12, "{what} semi-axis {k}");
         }
     };
@@ -328,14 +289,10 @@ fn the_general_contact_is_symmetric_in_angle_and_bodies() {
 fn a_ball_on_a_large_ball_tends_to_a_ball_on_a_plane() {
     // R2 -> inf: the relative radius 1/(1/r + 1/R2) -> r, the approach
     // converges to the flat's at the rate r/R2 (delta ~ R^(-1/3)).
-    let plane = contact_json([0.005, 0.005], [INF, INF], 0.0, 5.0)["approach_m"]
-        .as_f64()
-        .unwrap();
+    let plane = contact_json([0.005, 0.005], [INF, INF], 0.0, 5.0)["approach_m"].as_f64().unwrap();
     let mut last = f64::INFINITY;
     for r2 in [0.05, 5.0, 500.0, 5e4] {
-        let got = contact_json([0.005, 0.005], [r2, r2], 0.0, 5.0)["approach_m"]
-            .as_f64()
-            .unwrap();
+        let got = contact_json([0.005, 0.005], [r2, r2], 0.0, 5.0)["approach_m"].as_f64().unwrap();
         let err = (got / plane - 1.0).abs();
         assert!(err < last && err < 0.5 * 0.005 / r2, "R2 = {r2}: {err}");
         last = err;
@@ -348,15 +305,8 @@ fn shape_and_radii(
     radius2: Option<&str>,
     r2: &str,
 ) -> (serde_json::Value, serde_json::Value) {
-    let base = [
-        "--material1",
-        "steel",
-        "--material2",
-        "silicon-carbide",
-        "--load",
-        "3.3",
-        "--json",
-    ];
+    let base =
+        ["--material1", "steel", "--material2", "silicon-carbide", "--load", "3.3", "--json"];
     let mut a = vec!["contact", "--shape", shape, "--radius1", "0.005"];
     if let Some(r) = radius2 {
         a.extend(["--radius2", r]);
@@ -366,10 +316,7 @@ fn shape_and_radii(
     b.extend(base);
     let ((ok1, o1, e1), (ok2, o2, e2)) = (kinrepro(&a), kinrepro(&b));
     assert!(ok1 && ok2, "{shape}: {e1} {e2}");
-    (
-        serde_json::from_str(&o1).unwrap(),
-        serde_json::from_str(&o2).unwrap(),
-    )
+    (serde_json::from_str(&o1).unwrap(), serde_json::from_str(&o2).unwrap())
 }
 
 #[test]
@@ -382,25 +329,17 @@ fn each_shape_is_its_radii_form() {
     ] {
         let (by_shape, by_radii) = shape_and_radii(shape, radius2, radii2);
         assert_eq!(by_shape["shape"], shape);
-        let serde_json::Value::Object(fields) = &by_shape else {
-            panic!()
-        };
+        let serde_json::Value::Object(fields) = &by_shape else { panic!() };
         for (key, x) in fields {
             let (x, y) = (x.to_string(), by_radii[key].to_string());
             if key == "shape" {
                 continue;
             }
             let nums = |s: &str| -> Vec<f64> {
-                s.trim_matches(['[', ']'])
-                    .split(',')
-                    .map(|t| t.parse().unwrap())
-                    .collect()
+                s.trim_matches(['[', ']']).split(',').map(|t| t.parse().unwrap()).collect()
             };
             for (p, q) in nums(&x).into_iter().zip(nums(&y)) {
-                assert!(
-                    (p / q - 1.0).abs() < 1e-12 || p == q,
-                    "{shape} {key}: {p} vs {q}"
-                );
+                assert!((p / q - 1.0).abs() < 1e-12 || p == q, "{shape} {key}: {p} vs {q}");
             }
         }
     }
@@ -444,19 +383,13 @@ fn check_warns_about_a_contact_too_large_for_its_radii() {
     // several times the relative radius across it (~10 um), so `check`
     // warns per contact; on the 4 mm pins it does not.
     let text = std::fs::read_to_string(common::scene("02_maxwell_pins_steel.toml")).unwrap();
-    let thin = text.replace(
-        "groove_element_diameter = 0.004",
-        "groove_element_diameter = 0.00002",
-    );
+    let thin = text.replace("groove_element_diameter = 0.004", "groove_element_diameter = 0.00002");
     assert_ne!(text, thin);
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("thin_pins.toml");
     std::fs::write(&path, thin).unwrap();
     let (_, out, err) = kinrepro(&["check", path.to_str().unwrap()]);
-    assert!(
-        out.contains("WARNING: contact 6: too conformal for Hertz"),
-        "{out}{err}"
-    );
+    assert!(out.contains("WARNING: contact 6: too conformal for Hertz"), "{out}{err}");
     let scene = common::scene("02_maxwell_pins_steel.toml");
     let (ok, out, _) = kinrepro(&["check", scene.to_str().unwrap()]);
     assert!(ok && !out.contains("conformal"), "{out}");

@@ -44,11 +44,7 @@ fn across(rng: &mut ChaCha8Rng, n: &Vector3<f64>) -> Vector3<f64> {
 /// log-uniform.
 fn separation(rng: &mut ChaCha8Rng) -> f64 {
     let magnitude = 10f64.powf(rng.random_range(-9.0..-6.0));
-    if rng.random_bool(0.5) {
-        magnitude
-    } else {
-        -magnitude
-    }
+    if rng.random_bool(0.5) { magnitude } else { -magnitude }
 }
 
 /// A point about 0.04 m from the origin.
@@ -72,28 +68,17 @@ fn parry(surface: &SurfaceGeometry, centre: &Vector3<f64>, radius: f64) -> Conta
     let v = |p: Vector| Vector3::new(p.x, p.y, p.z);
     if let SurfaceGeometry::ConcaveCylinder { .. } = surface {
         let projection = shape.project_point(&pose, c, false);
-        assert!(
-            projection.is_inside,
-            "the ball centre lies inside the groove"
-        );
+        assert!(projection.is_inside, "the ball centre lies inside the groove");
         let to_centre = v(c - projection.point);
         let (d, normal) = (to_centre.norm(), to_centre.normalize());
         let gap = d - radius;
-        return ContactGeometry {
-            gap,
-            normal,
-            point: centre - normal * (radius + 0.5 * gap),
-        };
+        return ContactGeometry { gap, normal, point: centre - normal * (radius + 0.5 * gap) };
     }
     let at = Pose::from_translation(c);
     let c = query::contact(&pose, &*shape, &at, &Ball::new(radius), 1.0)
         .expect("parry supports these pairs")
         .expect("within the prediction distance");
-    ContactGeometry {
-        gap: c.dist,
-        normal: v(c.normal1),
-        point: v((c.point1 + c.point2) * 0.5),
-    }
+    ContactGeometry { gap: c.dist, normal: v(c.normal1), point: v((c.point1 + c.point2) * 0.5) }
 }
 
 /// The closed form against parry and against the placed separation `gap`;
@@ -111,11 +96,7 @@ fn check(surface: &SurfaceGeometry, centre: &Vector3<f64>, radius: f64, gap: f64
     // from 0.04 m coordinates in both computations (parry's in its
     // cylinder's frame): each carries about eps 0.04 / (R - r) of rounding.
     let normal_tol = match surface {
-        SurfaceGeometry::ConcaveCylinder {
-            axis_point,
-            radius: groove,
-            ..
-        } => {
+        SurfaceGeometry::ConcaveCylinder { axis_point, radius: groove, .. } => {
             let offset = groove - radius - gap;
             16.0 * f64::EPSILON * (centre.norm() + axis_point.norm()) / offset
         }
@@ -125,11 +106,7 @@ fn check(surface: &SurfaceGeometry, centre: &Vector3<f64>, radius: f64, gap: f64
         d[0] <= 1e-15 && d[1] <= 1e-15 && d[2] <= normal_tol,
         "{surface:?} ball {centre} r {radius}: {ours:?} vs parry {reference:?}"
     );
-    assert!(
-        (ours.gap - gap).abs() <= 1e-15,
-        "{surface:?}: {} vs {gap}",
-        ours.gap
-    );
+    assert!((ours.gap - gap).abs() <= 1e-15, "{surface:?}: {} vs {gap}", ours.gap);
     d
 }
 
@@ -158,12 +135,7 @@ fn ball_plane_is_parrys_half_space() {
         let gap = separation(rng);
         let lateral = across(rng, &normal) * rng.random_range(0.0..0.003);
         let centre = point + lateral + normal * (radius + gap);
-        check(
-            &SurfaceGeometry::Plane { point, normal },
-            &centre,
-            radius,
-            gap,
-        )
+        check(&SurfaceGeometry::Plane { point, normal }, &centre, radius, gap)
     });
 }
 
@@ -177,11 +149,7 @@ fn ball_pin_is_parrys_capsule_side() {
         let along = direction * rng.random_range(-0.01..0.01);
         let out = across(rng, &direction);
         let centre = axis_point + along + out * (pin + radius + gap);
-        let surface = SurfaceGeometry::Cylinder {
-            axis_point,
-            direction,
-            radius: pin,
-        };
+        let surface = SurfaceGeometry::Cylinder { axis_point, direction, radius: pin };
         check(&surface, &centre, radius, gap)
     });
 }
@@ -194,10 +162,7 @@ fn ball_ball_is_parrys_ball() {
         let radius = rng.random_range(0.003..0.005);
         let gap = separation(rng);
         let centre = fixed + unit(rng) * (fixed_radius + radius + gap);
-        let surface = SurfaceGeometry::Sphere {
-            centre: fixed,
-            radius: fixed_radius,
-        };
+        let surface = SurfaceGeometry::Sphere { centre: fixed, radius: fixed_radius };
         check(&surface, &centre, radius, gap)
     });
 }
@@ -214,11 +179,7 @@ fn ball_in_groove_is_inside_parrys_cylinder() {
         let out = across(rng, &direction);
         // The wall is at distance R from the axis; the ball centre r + gap inside it.
         let centre = axis_point + along + out * (groove - radius - gap);
-        let surface = SurfaceGeometry::ConcaveCylinder {
-            axis_point,
-            direction,
-            radius: groove,
-        };
+        let surface = SurfaceGeometry::ConcaveCylinder { axis_point, direction, radius: groove };
         check(&surface, &centre, radius, gap)
     });
 }
@@ -235,21 +196,12 @@ fn parry_pins(
         let v = |p: Vector3<f64>| Vector::new(p.x, p.y, p.z);
         Capsule::new(v(a - d * reach), v(a + d * reach), r)
     };
-    let c = query::contact(
-        &Pose::IDENTITY,
-        &capsule(fixed),
-        &Pose::IDENTITY,
-        &capsule(moving),
-        1.0,
-    )
-    .expect("parry supports capsules")
-    .expect("within the prediction distance");
+    let c =
+        query::contact(&Pose::IDENTITY, &capsule(fixed), &Pose::IDENTITY, &capsule(moving), 1.0)
+            .expect("parry supports capsules")
+            .expect("within the prediction distance");
     let v = |p: Vector| Vector3::new(p.x, p.y, p.z);
-    ContactGeometry {
-        gap: c.dist,
-        normal: v(c.normal1),
-        point: v((c.point1 + c.point2) * 0.5),
-    }
+    ContactGeometry { gap: c.dist, normal: v(c.normal1), point: v((c.point1 + c.point2) * 0.5) }
 }
 
 #[test]

@@ -65,12 +65,7 @@ fn csv_lists_every_builtin_with_library_values_and_sources() {
         let rho: f64 = r[5].parse().unwrap();
         assert!(rho > 1000.0 && rho < 22_600.0, "{}: density {rho}", r[1]);
         for (k, what) in [(7, "elastic"), (8, "density"), (9, "allowable pressure")] {
-            assert!(
-                is_source(&r[k]),
-                "{}: no source for the {what} value: {:?}",
-                r[1],
-                r[k]
-            );
+            assert!(is_source(&r[k]), "{}: no source for the {what} value: {:?}", r[1], r[k]);
         }
     }
 }
@@ -105,13 +100,7 @@ fn json_and_table_agree_with_the_library() {
             .unwrap_or_else(|| panic!("{name} not in the table"));
         let cols: Vec<&str> = row.split_whitespace().collect();
         // E in GPa (the table rounds to whole GPa).
-        assert_eq!(
-            cols[1].parse::<f64>().unwrap(),
-            (lib.youngs_modulus / 1e9).round()
-        );
-        assert!(
-            table.contains(&format!("{name}:\n  E, nu:")),
-            "sources of {name}"
-        );
+        assert_eq!(cols[1].parse::<f64>().unwrap(), (lib.youngs_modulus / 1e9).round());
+        assert!(table.contains(&format!("{name}:\n  E, nu:")), "sources of {name}");
     }
 }

@@ -53,18 +53,11 @@ fn limit(m: &Model, mu: &[f64]) -> BodyPose {
 fn controlled(m: &Model, mu: &[f64], tolerance: f64) -> (f64, f64, usize) {
     let c = &m.1;
     let reference = limit(m, mu);
-    let opts = SolverOptions {
-        path_tolerance: Some(tolerance),
-        ..Default::default()
-    };
+    let opts = SolverOptions { path_tolerance: Some(tolerance), ..Default::default() };
     let s = seat(m, mu, &opts).unwrap().seated;
     let motion = twist(c, &c.touching_pose, &reference).norm();
     let error = twist(c, &reference, &s.pose).norm() / motion;
-    (
-        error,
-        s.path_error.expect("a controlled seating"),
-        s.increments,
-    )
+    (error, s.path_error.expect("a controlled seating"), s.increments)
 }
 
 /// The default tolerance holds on the pin and Kelvin scenes, a tighter one
@@ -80,19 +73,13 @@ fn the_controlled_seating_meets_its_tolerance() {
                 let (error, estimate, n) = controlled(&m, &mu, tolerance);
                 println!("{name} {tolerance:e}: error {error:.2e} estimate {estimate:.2e} ({n})");
                 assert!(estimate <= tolerance, "{name} {mu:?}: {estimate:e}");
-                assert!(
-                    error <= tolerance,
-                    "{name} {mu:?}: {error:e} > {tolerance:e}"
-                );
+                assert!(error <= tolerance, "{name} {mu:?}: {error:e} > {tolerance:e}");
             }
             let fine = seat(&m, &mu, &SolverOptions::fixed(5120)).unwrap().pose();
             let s = seat(&m, &mu, &SolverOptions::default()).unwrap();
             let motion = twist(c, &c.touching_pose, &fine).norm();
             let d = twist(c, &fine, &s.pose()).norm() / motion;
-            assert!(
-                d <= DEFAULT_PATH_TOLERANCE,
-                "{name} {mu:?}: {d:e} from 5120"
-            );
+            assert!(d <= DEFAULT_PATH_TOLERANCE, "{name} {mu:?}: {d:e} from 5120");
         }
     }
 }
@@ -155,14 +142,8 @@ fn cli_path_tolerance_and_load_path() {
         let (ok, _, err) = common::kinrepro(&["run", scene, "--path-tolerance", bad]);
         assert!(!ok && err.contains("--path-tolerance"), "{bad}: {err}");
     }
-    let (ok, _, err) = common::kinrepro(&[
-        "study",
-        scene,
-        "--increments",
-        "40",
-        "--path-tolerance",
-        "1e-6",
-    ]);
+    let (ok, _, err) =
+        common::kinrepro(&["study", scene, "--increments", "40", "--path-tolerance", "1e-6"]);
     assert!(!ok && err.contains("exclude each other"), "{err}");
     let json = |args: &[&str]| -> serde_json::Value {
         let (ok, out, err) = common::kinrepro(args);
@@ -181,16 +162,7 @@ fn cli_path_tolerance_and_load_path() {
     assert_eq!(fixed["increments"], 20);
 
     let dir = tempfile::tempdir().unwrap();
-    let study = [
-        "study",
-        scene,
-        "--sampler",
-        "mc",
-        "--samples",
-        "30",
-        "--format",
-        "json",
-    ];
+    let study = ["study", scene, "--sampler", "mc", "--samples", "30", "--format", "json"];
     let whole = json(&study);
     let mut parts = Vec::new();
     for i in 1..=3 {
@@ -204,10 +176,7 @@ fn cli_path_tolerance_and_load_path() {
     let mut args = vec!["merge", "--format", "json"];
     args.extend(parts.iter().map(String::as_str));
     let merged = json(&args);
-    let (w, m) = (
-        &whole["variants"][0]["load_path"],
-        &merged["variants"][0]["load_path"],
-    );
+    let (w, m) = (&whole["variants"][0]["load_path"], &merged["variants"][0]["load_path"]);
     assert_eq!(w, m, "merge of shards");
     assert_eq!(w["seatings"], 30);
     let max_error = w["max_path_error"].as_f64().unwrap();

@@ -18,10 +18,7 @@ use nalgebra::{Vector3, Vector6};
 /// gives the preload.
 fn scene01_without_force(extra: &str) -> String {
     let text = std::fs::read_to_string(scene("01_maxwell_vgroove_steel.toml")).unwrap();
-    let kept: Vec<&str> = text
-        .lines()
-        .filter(|l| !l.starts_with("force = 20.0"))
-        .collect();
+    let kept: Vec<&str> = text.lines().filter(|l| !l.starts_with("force = 20.0")).collect();
     kept.join("\n") + "\n" + extra
 }
 
@@ -29,13 +26,7 @@ fn scene01_without_force(extra: &str) -> String {
 fn ball_centres() -> Vec<Vector3<f64>> {
     [90.0f64, 210.0, 330.0]
         .iter()
-        .map(|a| {
-            Vector3::new(
-                0.04 * a.to_radians().cos(),
-                0.04 * a.to_radians().sin(),
-                0.0,
-            )
-        })
+        .map(|a| Vector3::new(0.04 * a.to_radians().cos(), 0.04 * a.to_radians().sin(), 0.0))
         .collect()
 }
 
@@ -51,10 +42,7 @@ fn force_entry(force: f64, p: &Vector3<f64>, more: &str) -> String {
 /// centres, z = 0, like the central force at the origin: a force at
 /// another height has another moment once the half turns).
 fn three_forces(more: &str) -> String {
-    ball_centres()
-        .iter()
-        .map(|c| force_entry(20.0 / 3.0, c, more))
-        .collect()
+    ball_centres().iter().map(|c| force_entry(20.0 / 3.0, c, more)).collect()
 }
 
 /// Write `text` as a scene file in the temporary directory.
@@ -66,16 +54,7 @@ fn write(name: &str, text: &str) -> String {
 
 /// Every sigma of `kinrepro study FILE --sampler mc --samples 50 --format json`.
 fn study_sigmas(file: &str) -> Vec<f64> {
-    let args = [
-        "study",
-        file,
-        "--sampler",
-        "mc",
-        "--samples",
-        "50",
-        "--format",
-        "json",
-    ];
+    let args = ["study", file, "--sampler", "mc", "--samples", "50", "--format", "json"];
     let (ok, out, err) = kinrepro(&args);
     assert!(ok, "{err}");
     let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
@@ -91,10 +70,7 @@ fn study_sigmas(file: &str) -> Vec<f64> {
 
 fn max_relative(a: &[f64], b: &[f64]) -> f64 {
     assert_eq!(a.len(), b.len());
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x / y - 1.0).abs())
-        .fold(0.0, f64::max)
+    a.iter().zip(b).map(|(x, y)| (x / y - 1.0).abs()).fold(0.0, f64::max)
 }
 
 fn coupling(text: &str) -> (Scene, Coupling) {
@@ -140,10 +116,7 @@ fn spring_preloads_change_sigma_by_less_than_their_stiffness_share() {
          largest relative sigma change {d:.3e}"
     );
     assert!(d > 1e-6, "the springs must change sigma: {d:e}");
-    assert!(
-        d < 3.0 * (lost + stiffer),
-        "{d:e} vs {lost:e} + {stiffer:e}"
-    );
+    assert!(d < 3.0 * (lost + stiffer), "{d:e} vs {lost:e} + {stiffer:e}");
 }
 
 #[test]
@@ -168,10 +141,8 @@ fn a_force_moved_sideways_turns_the_half_as_the_linear_stiffness_predicts() {
     let base: String = centres.iter().map(|c| force_entry(f, c, "")).collect();
     let ((scene_a, ca), (scene_b, cb)) = (frictionless(&base), frictionless(&moved));
     let opts = SolverOptions::default();
-    let (la, lb) = (
-        Load::nominal(&scene_a).with_mu(&[0.0; 6]),
-        Load::nominal(&scene_b).with_mu(&[0.0; 6]),
-    );
+    let (la, lb) =
+        (Load::nominal(&scene_a).with_mu(&[0.0; 6]), Load::nominal(&scene_b).with_mu(&[0.0; 6]));
     let sa = quasistatic::seat(&ca, &la, &opts).unwrap();
     let sb = quasistatic::seat(&cb, &lb, &opts).unwrap();
     // The added load: a pure moment (e x) x (-f z) = e f y.
@@ -182,25 +153,14 @@ fn a_force_moved_sideways_turns_the_half_as_the_linear_stiffness_predicts() {
         c.compliance_at(&q).unwrap() * Vector6::new(0.0, 0.0, 0.0, moment.x, moment.y, moment.z);
     let u = sb.pose().apply(&Vector3::zeros()) - q;
     let phi = (sb.pose().rotation * sa.pose().rotation.inverse()).scaled_axis();
-    let (pu, pphi) = (
-        predicted.fixed_rows::<3>(0).into_owned(),
-        predicted.fixed_rows::<3>(3).into_owned(),
-    );
+    let (pu, pphi) =
+        (predicted.fixed_rows::<3>(0).into_owned(), predicted.fixed_rows::<3>(3).into_owned());
     println!("rotation {phi:?} predicted {pphi:?}; translation {u:?} predicted {pu:?}");
-    assert!(
-        pphi.norm() > 1e-9,
-        "the moment must turn the half: {pphi:?}"
-    );
+    assert!(pphi.norm() > 1e-9, "the moment must turn the half: {pphi:?}");
     // Linear theory: errors of the order of the contact force change
     // (e f / (R F) ~ 2e-3) and the left-out geometric stiffness (~1e-4).
-    assert!(
-        (phi - pphi).norm() < 1e-2 * pphi.norm(),
-        "{phi:?} vs {pphi:?}"
-    );
-    assert!(
-        (u - pu).norm() < 1e-2 * (pu.norm() + 0.04 * pphi.norm()),
-        "{u:?} vs {pu:?}"
-    );
+    assert!((phi - pphi).norm() < 1e-2 * pphi.norm(), "{phi:?} vs {pphi:?}");
+    assert!((u - pu).norm() < 1e-2 * (pu.norm() + 0.04 * pphi.norm()), "{u:?} vs {pu:?}");
 }
 
 #[test]
@@ -236,10 +196,7 @@ fn gravity_alone_equals_a_single_force_m_g_at_the_centre_of_mass() {
 fn assert_error_at(text: &str, marker: &str, field: &str) {
     let line = text.lines().position(|l| l.contains(marker)).unwrap() + 1;
     let err = Scene::parse(text, "bad.toml").unwrap_err().to_string();
-    assert!(
-        err.starts_with(&format!("bad.toml:{line}: {field}: ")),
-        "{err}"
-    );
+    assert!(err.starts_with(&format!("bad.toml:{line}: {field}: ")), "{err}");
 }
 
 #[test]
@@ -247,11 +204,7 @@ fn bad_preloads_are_refused_naming_the_field_and_line() {
     let zero = force_entry(5.0, &Vector3::new(0.0, 0.0, 0.01), "")
         .replace("[0.0, 0.0, -1.0]", "[0.0, 0.0, 0.0]");
     let text = scene01_without_force(&(three_forces("") + &zero));
-    assert_error_at(
-        &text,
-        "direction = [0.0, 0.0, 0.0]",
-        "preload.forces[4].direction",
-    );
+    assert_error_at(&text, "direction = [0.0, 0.0, 0.0]", "preload.forces[4].direction");
     let text = scene01_without_force(&three_forces("stiffness = -1.0e3\nfree_length = 0.02\n"));
     assert_error_at(&text, "stiffness = -1", "preload.forces[1].stiffness");
     let text = scene01_without_force(&three_forces("stiffness = 1.0e3\n"));
@@ -264,9 +217,7 @@ fn bad_preloads_are_refused_naming_the_field_and_line() {
     let text = std::fs::read_to_string(scene("01_maxwell_vgroove_steel.toml")).unwrap()
         + &three_forces("");
     assert_error_at(&text, "force = 20.0", "preload.force");
-    let err = Scene::parse(&scene01_without_force(""), "bad.toml")
-        .unwrap_err()
-        .to_string();
+    let err = Scene::parse(&scene01_without_force(""), "bad.toml").unwrap_err().to_string();
     assert!(err.contains("preload.force: missing"), "{err}");
 }
 
@@ -275,11 +226,7 @@ fn expand_prints_the_forces_and_loads_back_to_the_same_preload() {
     let text = scene01_without_force(&three_forces("stiffness = 1.0e4\nfree_length = 0.02\n"))
         .replace("[preload]\n", "[preload]\ngravity = true\nmass = 1.5\n");
     let expanded = Scene::expand_text(&text, "s.toml").unwrap();
-    assert_eq!(
-        expanded.matches("[[preload.forces]]").count(),
-        3,
-        "{expanded}"
-    );
+    assert_eq!(expanded.matches("[[preload.forces]]").count(), 3, "{expanded}");
     let a = Scene::parse(&text, "s.toml").unwrap().preload;
     let b = Scene::parse(&expanded, "s.toml").unwrap().preload;
     // `expand` writes 15 significant digits: equal within 1e-12 relative.
@@ -293,11 +240,7 @@ fn vary_preload_moves_and_tilts_each_force_but_not_the_weight() {
         .replace("[preload]\n", "[preload]\ngravity = true\nmass = 1.0\n")
         + "\n[variation]\npreload_offset = [1.0e-3, 2.0e-3]\npreload_tilt = 0.01\n";
     let (scene, c) = coupling(&text);
-    let var = Variation {
-        friction: false,
-        preload: true,
-        ..Default::default()
-    };
+    let var = Variation { friction: false, preload: true, ..Default::default() };
     let names: Vec<String> = var.inputs(&scene).iter().map(|i| i.name()).collect();
     let per = ["x_m", "y_m", "tilt_x_rad", "tilt_y_rad"];
     let expect: Vec<String> = ["preload_", "preload_2_", "preload_3_"]
@@ -311,16 +254,8 @@ fn vary_preload_moves_and_tilts_each_force_but_not_the_weight() {
     let s = var.sample(&scene, &c, &row);
     let nominal = &scene.preload.forces;
     for (i, (f, n)) in s.load.preload.forces.iter().zip(nominal).enumerate() {
-        let shift = if i == 1 {
-            Vector3::new(1.0e-3, 0.0, 0.0)
-        } else {
-            Vector3::zeros()
-        };
-        assert!(
-            (f.point - n.point - shift).norm() < 1e-15,
-            "force {}",
-            i + 1
-        );
+        let shift = if i == 1 { Vector3::new(1.0e-3, 0.0, 0.0) } else { Vector3::zeros() };
+        assert!((f.point - n.point - shift).norm() < 1e-15, "force {}", i + 1);
         assert!((f.direction - n.direction).norm() < 1e-15);
     }
 }

@@ -70,10 +70,7 @@ fn equal_friction_keeps_every_maxwell_scene_centred() {
         for mu in [0.0, 0.3, 0.6] {
             let s = seat(&c, &[mu; 6], &SolverOptions::default()).unwrap();
             let p = centre_pose(&c, &s);
-            assert!(
-                p.x_m.abs() < 1e-14 && p.y_m.abs() < 1e-14,
-                "{name} mu {mu}: {p:?}"
-            );
+            assert!(p.x_m.abs() < 1e-14 && p.y_m.abs() < 1e-14, "{name} mu {mu}: {p:?}");
             assert!(
                 p.phi_x_rad.abs() < 1e-12 && p.phi_y_rad.abs() < 1e-12,
                 "{name} mu {mu}: {p:?}"
@@ -86,14 +83,8 @@ fn equal_friction_keeps_every_maxwell_scene_centred() {
 #[test]
 fn reported_forces_balance_the_preload() {
     for (name, mu) in [
-        (
-            "01_maxwell_vgroove_steel.toml",
-            [0.45, 0.55, 0.5, 0.52, 0.48, 0.5],
-        ),
-        (
-            "04_maxwell_balls_steel.toml",
-            [0.53, 0.47, 0.46, 0.54, 0.5, 0.51],
-        ),
+        ("01_maxwell_vgroove_steel.toml", [0.45, 0.55, 0.5, 0.52, 0.48, 0.5]),
+        ("04_maxwell_balls_steel.toml", [0.53, 0.47, 0.46, 0.54, 0.5, 0.51]),
         ("06_kelvin_steel.toml", [0.45, 0.55, 0.5, 0.52, 0.48, 0.5]),
     ] {
         let c = load(name);
@@ -117,10 +108,7 @@ fn reported_forces_balance_the_preload() {
             assert!(ft.dot(&n).abs() < 1e-12 * r.normal_force_n);
         }
         assert!(f.norm() < 1e-9 * pre.force, "{name}: force residual {f:?}");
-        assert!(
-            m.norm() < 1e-9 * pre.force * 0.04,
-            "{name}: moment residual {m:?}"
-        );
+        assert!(m.norm() < 1e-9 * pre.force * 0.04, "{name}: moment residual {m:?}");
     }
 }
 
@@ -187,29 +175,17 @@ fn sliding_seating_equals_the_history_free_all_sliding_equilibrium() {
         translation: Vector3::new(0.0, 0.0, -6e-7),
     };
     let direct = all_sliding_equilibrium(&c, &mu_d, &start);
-    for p in [
-        Vector3::zeros(),
-        c.1.balls[0].centre,
-        c.1.balls[1].centre,
-        c.1.balls[2].centre,
-    ] {
+    for p in [Vector3::zeros(), c.1.balls[0].centre, c.1.balls[1].centre, c.1.balls[2].centre] {
         let a = s.pose().apply(&p);
         let b = direct.apply(&p);
-        assert!(
-            (a - b).norm() < 1e-12,
-            "point {p:?}: {:e} m apart",
-            (a - b).norm()
-        );
+        assert!((a - b).norm() < 1e-12, "point {p:?}: {:e} m apart", (a - b).norm());
     }
 }
 
 #[test]
 fn halving_the_load_increment_changes_the_pose_by_less_than_one_percent() {
     for (name, mu) in [
-        (
-            "01_maxwell_vgroove_steel.toml",
-            [0.45, 0.55, 0.5, 0.52, 0.48, 0.5],
-        ),
+        ("01_maxwell_vgroove_steel.toml", [0.45, 0.55, 0.5, 0.52, 0.48, 0.5]),
         ("06_kelvin_steel.toml", [0.45, 0.55, 0.5, 0.52, 0.48, 0.5]),
     ] {
         let c = load(name);
@@ -233,10 +209,7 @@ fn halving_the_load_increment_changes_the_pose_by_less_than_one_percent() {
                     ra[k],
                     rb[k]
                 );
-                assert!(
-                    (ta[k] - tb[k]).abs() < 0.01 * ta[k].abs().max(scale),
-                    "{name} dof {k}"
-                );
+                assert!((ta[k] - tb[k]).abs() < 0.01 * ta[k].abs().max(scale), "{name} dof {k}");
             }
         }
     }
@@ -259,10 +232,7 @@ fn mirrored_friction_mirrors_the_pose() {
         let b = centre_pose(&c, &seat(&c, &mirrored, &SolverOptions::default()).unwrap());
         let tol_t = 1e-14;
         let tol_r = 1e-12;
-        assert!(
-            a.x_m.abs() > 1e-10,
-            "{name}: the test needs a lateral displacement"
-        );
+        assert!(a.x_m.abs() > 1e-10, "{name}: the test needs a lateral displacement");
         assert!((a.x_m + b.x_m).abs() < tol_t, "{name}: {} {}", a.x_m, b.x_m);
         assert!((a.y_m - b.y_m).abs() < tol_t, "{name}");
         assert!((a.z_m - b.z_m).abs() < tol_t, "{name}");
@@ -277,19 +247,9 @@ fn bad_mu_vectors_are_errors() {
     let c = load("01_maxwell_vgroove_steel.toml");
     let e = seat(&c, &[0.5; 5], &SolverOptions::default()).unwrap_err();
     assert!(e.to_string().contains("needs 6 values"));
-    let e = seat(
-        &c,
-        &[0.5, 0.5, -0.1, 0.5, 0.5, 0.5],
-        &SolverOptions::default(),
-    )
-    .unwrap_err();
+    let e = seat(&c, &[0.5, 0.5, -0.1, 0.5, 0.5, 0.5], &SolverOptions::default()).unwrap_err();
     assert!(e.to_string().contains("contact 3 = -0.1"));
-    let e = seat(
-        &c,
-        &[0.5, 0.5, f64::NAN, 0.5, 0.5, 0.5],
-        &SolverOptions::default(),
-    )
-    .unwrap_err();
+    let e = seat(&c, &[0.5, 0.5, f64::NAN, 0.5, 0.5, 0.5], &SolverOptions::default()).unwrap_err();
     assert!(e.to_string().contains("outside"));
 }
 
@@ -297,11 +257,7 @@ fn bad_mu_vectors_are_errors() {
 fn failures_are_clear_errors_not_poses() {
     // Newton limited to one iteration cannot meet 1e-10 of the preload.
     let c = load("01_maxwell_vgroove_steel.toml");
-    let opts = SolverOptions {
-        max_newton: 1,
-        max_splits: 2,
-        ..Default::default()
-    };
+    let opts = SolverOptions { max_newton: 1, max_splits: 2, ..Default::default() };
     let e = seat(&c, &[0.5; 6], &opts).unwrap_err();
     assert!(e.to_string().contains("did not converge"), "{e}");
     // A preload pulling sideways-up cannot seat the coupling: refused at assembly.
@@ -312,10 +268,7 @@ fn failures_are_clear_errors_not_poses() {
     .replace("force = 20.0", "force = 20.0\ndirection = [1.0, 0.0, 0.2]");
     let s = kinrepro::scene::Scene::parse(&text, "lift.toml").unwrap();
     let err = Coupling::new(&s).unwrap_err().to_string();
-    assert!(
-        err.contains("preload cannot seat") && err.contains("pulling force"),
-        "{err}"
-    );
+    assert!(err.contains("preload cannot seat") && err.contains("pulling force"), "{err}");
     // A preload far outside the ball circle tips the half off a groove.
     let text = std::fs::read_to_string(
         Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/01_maxwell_vgroove_steel.toml"),
@@ -323,21 +276,14 @@ fn failures_are_clear_errors_not_poses() {
     .unwrap()
     .replace("force = 20.0", "force = 20.0\npoint = [0.0, 0.5, 0.0]");
     let s = kinrepro::scene::Scene::parse(&text, "tip.toml").unwrap();
-    assert!(
-        Coupling::new(&s)
-            .unwrap_err()
-            .to_string()
-            .contains("preload cannot seat")
-    );
+    assert!(Coupling::new(&s).unwrap_err().to_string().contains("preload cannot seat"));
 }
 
 /// Scene 01 with the circle of ball centres scaled to `diameter` [m].
 fn scene01_with_diameter(diameter: f64) -> Model {
     let text = std::fs::read_to_string(common::scene("01_maxwell_vgroove_steel.toml")).unwrap();
-    let line = text
-        .lines()
-        .find(|l| l.starts_with("diameter"))
-        .expect("scene 01 gives coupling.diameter");
+    let line =
+        text.lines().find(|l| l.starts_with("diameter")).expect("scene 01 gives coupling.diameter");
     let text = text.replace(line, &format!("diameter = {diameter}"));
     let scene = kinrepro::scene::Scene::parse(&text, "scene01_scaled.toml").unwrap();
     let c = Coupling::new(&scene).unwrap();
@@ -359,11 +305,7 @@ fn a_coupling_of_metres_seats_to_the_closed_form_and_the_sliding_equilibrium() {
         let f = 20.0 / (6.0 * cos_a);
         let k = 4.0 / 3.0 * common::E_STAR_STEEL * 5e-3f64.sqrt();
         let z = -(f / k).powf(2.0 / 3.0) / cos_a;
-        assert!(
-            (p.z_m / z - 1.0).abs() < 1e-6,
-            "D {diameter}: z {} vs {z}",
-            p.z_m
-        );
+        assert!((p.z_m / z - 1.0).abs() < 1e-6, "D {diameter}: z {} vs {z}", p.z_m);
         let mu = [0.45, 0.55, 0.5, 0.52, 0.48, 0.5];
         let s = seat(&c, &mu, &SolverOptions::default())
             .unwrap_or_else(|e| panic!("D {diameter} m: {e}"));

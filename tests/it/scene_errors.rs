@@ -8,19 +8,12 @@ use kinrepro::scene::Scene;
 use proptest::prelude::*;
 
 fn scene_text(name: &str) -> String {
-    std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("scenes")
-            .join(name),
-    )
-    .unwrap()
+    std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name))
+        .unwrap()
 }
 
 fn line_of(text: &str, needle: &str) -> usize {
-    text.lines()
-        .position(|l| l.contains(needle))
-        .unwrap_or_else(|| panic!("{needle}"))
-        + 1
+    text.lines().position(|l| l.contains(needle)).unwrap_or_else(|| panic!("{needle}")) + 1
 }
 
 /// Load text as file `bad.toml`, through assembly; the error as a string.
@@ -39,12 +32,7 @@ fn each_kind_of_bad_scene_is_named_with_file_line_field_and_reason() {
     let base = scene_text("01_maxwell_vgroove_steel.toml");
     let cases: Vec<(String, String, &str, &str)> = vec![
         // (text, line needle, field, reason fragment)
-        (
-            base.replace("force = 20.0", "force = = 20.0"),
-            "force = = 20.0".into(),
-            "",
-            "expected",
-        ),
+        (base.replace("force = 20.0", "force = = 20.0"), "force = = 20.0".into(), "", "expected"),
         (
             base.replace("[preload]", "[preload]\ncolour = 3"),
             "colour = 3".into(),
@@ -58,10 +46,7 @@ fn each_kind_of_bad_scene_is_named_with_file_line_field_and_reason() {
             "missing field `ball_material`",
         ),
         (
-            base.replace(
-                "groove_material = \"steel\"",
-                "groove_material = \"unobtainium\"",
-            ),
+            base.replace("groove_material = \"steel\"", "groove_material = \"unobtainium\""),
             "unobtainium".into(),
             "coupling.groove_material",
             "unknown material `unobtainium`",
@@ -112,10 +97,7 @@ fn each_kind_of_bad_scene_is_named_with_file_line_field_and_reason() {
     for (text, needle, field, reason) in cases {
         let err = load_err(&text);
         let line = line_of(&text, &needle);
-        assert!(
-            err.starts_with(&format!("bad.toml:{line}:")),
-            "line {line} expected: {err}"
-        );
+        assert!(err.starts_with(&format!("bad.toml:{line}:")), "line {line} expected: {err}");
         assert!(err.contains(field), "field {field}: {err}");
         assert!(err.contains(reason), "reason {reason}: {err}");
     }
@@ -127,14 +109,8 @@ fn explicit_scene_errors() {
     // Non-positive radius of a moving ball.
     let t = base.replacen("radius = 0.003175", "radius = 0.0", 1);
     let err = load_err(&t);
-    assert!(
-        err.contains("balls[1].radius") && err.contains("must be positive"),
-        "{err}"
-    );
-    assert!(
-        err.starts_with(&format!("bad.toml:{}:", line_of(&t, "radius = 0.0"))),
-        "{err}"
-    );
+    assert!(err.contains("balls[1].radius") && err.contains("must be positive"), "{err}");
+    assert!(err.starts_with(&format!("bad.toml:{}:", line_of(&t, "radius = 0.0"))), "{err}");
     // A cylinder without its radius.
     let t = base.replacen("radius = 0.0015", "", 1);
     let err = load_err(&t);
@@ -146,10 +122,7 @@ fn explicit_scene_errors() {
     let i = base.rfind("ball = 3").unwrap();
     let t = format!("{}ball = 2{}", &base[..i], &base[i + 8..]);
     let err = load_err(&t);
-    assert!(
-        err.contains("balls[3]") && err.contains("touches no fixed surface"),
-        "{err}"
-    );
+    assert!(err.contains("balls[3]") && err.contains("touches no fixed surface"), "{err}");
     // A surface that names a ball that does not exist.
     let t = format!("{}ball = 4{}", &base[..i], &base[i + 8..]);
     assert!(load_err(&t).contains("names no moving ball"));
@@ -160,29 +133,17 @@ fn explicit_scene_errors() {
     );
     assert_ne!(t, base);
     let err = load_err(&t);
-    assert!(
-        err.contains("contact 6") && err.contains("does not touch"),
-        "{err}"
-    );
+    assert!(err.contains("contact 6") && err.contains("does not touch"), "{err}");
     // Under-constrained: drop the third plane of the trihedral seat (5 contacts).
     let starts: Vec<usize> = base.match_indices("[[surfaces]]").map(|(i, _)| i).collect();
     let t = format!("{}{}", &base[..starts[2]], &base[starts[3]..]);
     let err = load_err(&t);
-    assert!(
-        err.contains("not exactly constrained") && err.contains("5 contacts"),
-        "{err}"
-    );
-    assert!(
-        err.contains("under-constrained") && err.contains("free"),
-        "{err}"
-    );
+    assert!(err.contains("not exactly constrained") && err.contains("5 contacts"), "{err}");
+    assert!(err.contains("under-constrained") && err.contains("free"), "{err}");
     // Over-constrained: the flat twice (7 contacts).
     let t = format!("{base}\n{}", &base[starts[5]..]);
     let err = load_err(&t);
-    assert!(
-        err.contains("7 contacts") && err.contains("over-constrained"),
-        "{err}"
-    );
+    assert!(err.contains("7 contacts") && err.contains("over-constrained"), "{err}");
 }
 
 /// Three parallel V-grooves along x: six contacts, but x is free and the
@@ -191,11 +152,7 @@ fn explicit_scene_errors() {
 fn parallel_grooves_are_reported_as_a_free_translation() {
     let r = 0.005;
     let mut text = String::from("[preload]\nforce = 20.0\n[friction]\nmu_static = 0.5\n");
-    let centres = [
-        [0.0, 0.04, 0.0],
-        [-0.0346, -0.02, 0.0],
-        [0.0346, -0.02, 0.0],
-    ];
+    let centres = [[0.0, 0.04, 0.0], [-0.0346, -0.02, 0.0], [0.0346, -0.02, 0.0]];
     for c in centres {
         text += &format!(
             "[[balls]]\ncentre = [{}, {}, {}]\nradius = {r}\nmaterial = \"steel\"\n",
@@ -246,10 +203,7 @@ fn check_exits_nonzero_and_names_the_file() {
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(!out.status.success());
-    assert!(
-        err.contains("bad_scene.toml:") && err.contains("friction.mu_static"),
-        "{err}"
-    );
+    assert!(err.contains("bad_scene.toml:") && err.contains("friction.mu_static"), "{err}");
     assert!(!err.contains("panicked"));
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_kinrepro"))
         .arg("check")
@@ -308,14 +262,8 @@ fn toml_value() -> impl Strategy<Value = toml::Value> {
     let leaf = prop_oneof![
         any::<bool>().prop_map(toml::Value::Boolean),
         any::<i64>().prop_map(toml::Value::Integer),
-        prop_oneof![
-            any::<f64>(),
-            -1.0f64..1.0,
-            Just(f64::NAN),
-            Just(f64::INFINITY),
-            Just(0.0)
-        ]
-        .prop_map(toml::Value::Float),
+        prop_oneof![any::<f64>(), -1.0f64..1.0, Just(f64::NAN), Just(f64::INFINITY), Just(0.0)]
+            .prop_map(toml::Value::Float),
         prop::sample::select(vec![
             "steel",
             "maxwell",
@@ -398,21 +346,13 @@ fn arrays_of_the_wrong_length_or_type_are_errors() {
             "expected an array of 3 numbers [x, y, z], found 4 elements",
         ),
         (
-            explicit.replacen(
-                "direction = [0.0, 0.0, -1.0]",
-                "direction = [0, 0, 1, \"junk\"]",
-                1,
-            ),
+            explicit.replacen("direction = [0.0, 0.0, -1.0]", "direction = [0, 0, 1, \"junk\"]", 1),
             "\"junk\"",
             "preload.direction",
             "found 4 elements",
         ),
         (
-            explicit.replacen(
-                "direction = [0.0, 0.0, -1.0]",
-                "direction = [0, 0, \"down\"]",
-                1,
-            ),
+            explicit.replacen("direction = [0.0, 0.0, -1.0]", "direction = [0, 0, \"down\"]", 1),
             "\"down\"",
             "preload.direction",
             "element 3 (\"down\") is not a number",
@@ -491,19 +431,13 @@ fn material_redefinitions_need_override() {
         )
     };
     let groove = |name: &str| {
-        base.replace(
-            "groove_material = \"steel\"",
-            &format!("groove_material = \"{name}\""),
-        )
+        base.replace("groove_material = \"steel\"", &format!("groove_material = \"{name}\""))
     };
     // A built-in name, silently replacing steel today.
     let t = base.clone() + &entry("steel", "100e9", "");
     let err = load_err(&t);
     let line = line_of(&t, "name = \"steel\"");
-    assert!(
-        err.starts_with(&format!("bad.toml:{line}: materials[1].name: ")),
-        "{err}"
-    );
+    assert!(err.starts_with(&format!("bad.toml:{line}: materials[1].name: ")), "{err}");
     assert!(
         err.contains("`steel` is a built-in material") && err.contains("override = true"),
         "{err}"
@@ -513,19 +447,13 @@ fn material_redefinitions_need_override() {
     let err = load_err(&t);
     let second = t.rfind("name = \"my-steel\"").unwrap();
     let line = t[..second].lines().count() + 1;
-    assert!(
-        err.starts_with(&format!("bad.toml:{line}: materials[2].name: ")),
-        "{err}"
-    );
+    assert!(err.starts_with(&format!("bad.toml:{line}: materials[2].name: ")), "{err}");
     assert!(err.contains("already defined in materials[1]"), "{err}");
     // `override = true` on a name that replaces nothing.
     let t = groove("my-steel") + &entry("my-steel", "100e9", "override = true\n");
     let err = load_err(&t);
     let line = line_of(&t, "override = true");
-    assert!(
-        err.starts_with(&format!("bad.toml:{line}: materials[1].override: ")),
-        "{err}"
-    );
+    assert!(err.starts_with(&format!("bad.toml:{line}: materials[1].override: ")), "{err}");
     assert!(err.contains("nothing to override"), "{err}");
 
     // Intended overrides load, and the last definition is used: compare E*
@@ -556,29 +484,18 @@ fn millimetre_looking_values_are_errors_unless_allowed() {
     let explicit = scene_text("custom_kelvin_explicit.toml");
     let cases: Vec<(String, &str, &str)> = vec![
         // (text, new line = field value, field)
-        (
-            s01.replace("diameter = 0.080 ", "diameter = 80 "),
-            "diameter = 80 ",
-            "coupling.diameter",
-        ),
+        (s01.replace("diameter = 0.080 ", "diameter = 80 "), "diameter = 80 ", "coupling.diameter"),
         (
             s01.replace("ball_diameter = 0.010", "ball_diameter = 10"),
             "ball_diameter = 10",
             "coupling.ball_diameter",
         ),
         (
-            s02.replace(
-                "groove_element_diameter = 0.004",
-                "groove_element_diameter = 4",
-            ),
+            s02.replace("groove_element_diameter = 0.004", "groove_element_diameter = 4"),
             "groove_element_diameter = 4",
             "coupling.groove_element_diameter",
         ),
-        (
-            s01.replace("force = 20.0", "force = 2.0e6"),
-            "force = 2.0e6",
-            "preload.force",
-        ),
+        (s01.replace("force = 20.0", "force = 2.0e6"), "force = 2.0e6", "preload.force"),
         (
             explicit.replacen("radius = 0.003175", "radius = 3.175", 1),
             "radius = 3.175",

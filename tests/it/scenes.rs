@@ -21,9 +21,7 @@ const PAPER_SCENES: [&str; 7] = [
 ];
 
 fn scene_path(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenes")
-        .join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name)
 }
 
 fn all_scenes() -> Vec<PathBuf> {
@@ -65,12 +63,7 @@ fn balls_touch_every_surface_at_zero_gap() {
         let (_, c) = kinrepro::error::read_scene(&path).unwrap();
         for i in 0..6 {
             let g = c.geometry(i, &c.touching_pose);
-            assert!(
-                g.gap.abs() < 1e-15,
-                "{path:?} contact {}: gap {:e}",
-                i + 1,
-                g.gap
-            );
+            assert!(g.gap.abs() < 1e-15, "{path:?} contact {}: gap {:e}", i + 1, g.gap);
         }
     }
 }
@@ -100,16 +93,8 @@ fn contact_normals_follow_the_conventions() {
             let s = ez.cross(&er);
             let n1 = s * alpha.sin() + ez * alpha.cos();
             let n2 = -s * alpha.sin() + ez * alpha.cos();
-            assert!(
-                (n(first) - n1).norm() < 1e-15,
-                "{name}: contact {}",
-                first + 1
-            );
-            assert!(
-                (n(first + 1) - n2).norm() < 1e-15,
-                "{name}: contact {}",
-                first + 2
-            );
+            assert!((n(first) - n1).norm() < 1e-15, "{name}: contact {}", first + 1);
+            assert!((n(first + 1) - n2).norm() < 1e-15, "{name}: contact {}", first + 2);
         }
         if kelvin {
             // Trihedral seat: first element radially inward, then +120, +240 deg
@@ -124,11 +109,7 @@ fn contact_normals_follow_the_conventions() {
                     0.0,
                 );
                 let expect = -d * alpha.sin() + ez * alpha.cos();
-                assert!(
-                    (n(j) - expect).norm() < 1e-15,
-                    "{name}: trihedral contact {}",
-                    j + 1
-                );
+                assert!((n(j) - expect).norm() < 1e-15, "{name}: trihedral contact {}", j + 1);
             }
             assert!((n(5) - ez).norm() < 1e-15);
         }
@@ -160,32 +141,20 @@ fn a_pin_is_the_same_wherever_its_axis_point_lies_on_its_axis() {
         for shift in [0.03, -0.03] {
             let mut moved = scene.clone();
             for s in &mut moved.surfaces {
-                if let SurfaceGeometry::Cylinder {
-                    axis_point,
-                    direction,
-                    ..
-                } = &mut s.geometry
-                {
+                if let SurfaceGeometry::Cylinder { axis_point, direction, .. } = &mut s.geometry {
                     *axis_point += *direction * shift;
                 }
             }
             let c = Coupling::new(&moved).unwrap_or_else(|e| panic!("{name} {shift}: {e}"));
             for mu in [[0.46, 0.53, 0.51, 0.47, 0.545, 0.455], [0.5; 6]] {
-                let (la, lb) = (
-                    Load::nominal(&scene).with_mu(&mu),
-                    Load::nominal(&moved).with_mu(&mu),
-                );
-                let (a, b) = (
-                    seat(&base, &la, &opts).unwrap().pose(),
-                    seat(&c, &lb, &opts).unwrap().pose(),
-                );
+                let (la, lb) =
+                    (Load::nominal(&scene).with_mu(&mu), Load::nominal(&moved).with_mu(&mu));
+                let (a, b) =
+                    (seat(&base, &la, &opts).unwrap().pose(), seat(&c, &lb, &opts).unwrap().pose());
                 let motion = a.translation.norm();
                 let dt = (a.translation - b.translation).norm();
                 let dr = a.rotation.angle_to(&b.rotation) * base.length_scale();
-                assert!(
-                    dt.max(dr) < 1e-9 * motion,
-                    "{name} {shift}: {dt:e} {dr:e} of {motion:e}"
-                );
+                assert!(dt.max(dr) < 1e-9 * motion, "{name} {shift}: {dt:e} {dr:e} of {motion:e}");
             }
         }
     }
@@ -204,11 +173,7 @@ fn friction_limit_is_scale_free_and_grows_with_groove_steepness() {
         .replace("force = 20.0", "force = 500.0")
         .replace("diameter = 0.080", "diameter = 0.300")
         .replace("ball_diameter = 0.010", "ball_diameter = 0.0375");
-    assert!(
-        (limit(&scaled) - l0).abs() < 2e-4,
-        "{} vs {l0}",
-        limit(&scaled)
-    );
+    assert!((limit(&scaled) - l0).abs() < 2e-4, "{} vs {l0}", limit(&scaled));
     // Steeper flanks (smaller opening angle) centre better.
     let steep = base.replace("opening_angle_deg = 90.0", "opening_angle_deg = 70.0");
     let flat = base.replace("opening_angle_deg = 90.0", "opening_angle_deg = 120.0");
@@ -250,30 +215,21 @@ fn redundant_contacts_match_brute_force_rank_tests() {
         // A fourth surface on the trihedral ball: its normal passes through
         // the ball centre like the other three, so all four fight.
         (with(&c06, &[(3, 0)]), vec![1, 2, 3, 7]),
-        (
-            with(&c06, &[(5, 2), (0, 0), (1, 0)]),
-            vec![1, 2, 6, 7, 8, 9],
-        ),
+        (with(&c06, &[(5, 2), (0, 0), (1, 0)]), vec![1, 2, 6, 7, 8, 9]),
     ];
     for (c, expect) in cases {
         let a = constraint::constraint_matrix(&c);
         let m = a.nrows();
         let rank = svd_rank(&a);
-        let brute: Vec<usize> = (0..m)
-            .filter(|&i| svd_rank(&a.clone().remove_row(i)) == rank)
-            .map(|i| i + 1)
-            .collect();
+        let brute: Vec<usize> =
+            (0..m).filter(|&i| svd_rank(&a.clone().remove_row(i)) == rank).map(|i| i + 1).collect();
         assert_eq!(brute, expect, "brute force");
         let r = constraint::analyse(&c);
         assert_eq!(r.rank, rank);
         assert_eq!(r.redundant_constraints, m - rank);
         assert_eq!(r.redundant_contacts, brute);
         assert!(!r.exactly_constrained);
-        assert!(
-            r.describe().contains("over-constrained"),
-            "{}",
-            r.describe()
-        );
+        assert!(r.describe().contains("over-constrained"), "{}", r.describe());
     }
 }
 
@@ -290,10 +246,7 @@ fn a_thousand_surfaces_are_described_in_one_sentence() {
         c.contacts.push(c01.contacts[0].clone());
     }
     let r = constraint::analyse(&c);
-    assert_eq!(
-        (r.contacts, r.rank, r.redundant_constraints),
-        (1000, 6, 994)
-    );
+    assert_eq!((r.contacts, r.rank, r.redundant_constraints), (1000, 6, 994));
     let mut expect = vec![1];
     expect.extend(7..=1000);
     assert_eq!(r.redundant_contacts, expect);
@@ -324,9 +277,7 @@ fn errors_deep_in_a_large_scene_name_the_right_line() {
     let err = Scene::parse(&big, "big.toml").unwrap_err().to_string();
     let line = big.lines().position(|l| l == "ball = 9").unwrap() + 1;
     assert!(
-        err.starts_with(&format!(
-            "big.toml:{line}: surfaces[2007].ball: 9 names no moving ball"
-        )),
+        err.starts_with(&format!("big.toml:{line}: surfaces[2007].ball: 9 names no moving ball")),
         "{err}"
     );
 }
@@ -336,10 +287,7 @@ fn errors_deep_in_a_large_scene_name_the_right_line() {
 fn zerodur_scene(allowable: &str) -> String {
     std::fs::read_to_string(scene_path("01_maxwell_vgroove_steel.toml"))
         .unwrap()
-        .replace(
-            "groove_material = \"steel\"",
-            "groove_material = \"zerodur\"",
-        )
+        .replace("groove_material = \"steel\"", "groove_material = \"zerodur\"")
         + &format!(
             "\n[[materials]]\nname = \"zerodur\"\nyoungs_modulus = 90.3e9\npoisson_ratio = 0.243\n{allowable}"
         )
@@ -368,10 +316,7 @@ fn a_safety_factor_names_the_material_it_leaves_out() {
         assert!((r.pressure_safety_factor.unwrap() / sf - 1.0).abs() < 1e-9);
         assert_eq!(
             r.safety_factor_left_out,
-            vec![LeftOut {
-                material: "zerodur".into(),
-                missing: "allowable_pressure"
-            }]
+            vec![LeftOut { material: "zerodur".into(), missing: "allowable_pressure" }]
         );
     }
     // With zerodur's own allowable (below steel's) the factor is zerodur's.
@@ -390,11 +335,7 @@ fn a_safety_factor_names_the_material_it_leaves_out() {
         kinrepro::error::read_scene(&scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
     let load = Load::nominal(&scene).with_mu(&[0.5; 6]);
     let s = seat(&c, &load, &SolverOptions::default()).unwrap();
-    assert!(
-        s.contacts
-            .iter()
-            .all(|r| r.safety_factor_left_out.is_empty())
-    );
+    assert!(s.contacts.iter().all(|r| r.safety_factor_left_out.is_empty()));
     let (scene, c) = kinrepro::error::read_scene(&scene_path("05_maxwell_balls_sic.toml")).unwrap();
     let load = Load::nominal(&scene).with_mu(&[0.6; 6]);
     let s = seat(&c, &load, &SolverOptions::default()).unwrap();
@@ -418,11 +359,7 @@ fn run_and_check_print_the_left_out_material() {
             .arg(&path)
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
         String::from_utf8(out.stdout).unwrap()
     };
     for cmd in ["run", "check"] {
@@ -452,10 +389,7 @@ fn shear_and_pressure_factors_each_name_what_they_leave_out() {
     use kinrepro::contact::stress::LeftOut;
     let text = std::fs::read_to_string(scene_path("01_maxwell_vgroove_steel.toml"))
         .unwrap()
-        .replace(
-            "ball_material = \"steel\"",
-            "ball_material = \"hard-steel\"",
-        )
+        .replace("ball_material = \"steel\"", "ball_material = \"hard-steel\"")
         + "\n[[materials]]\nname = \"hard-steel\"\nyoungs_modulus = 210e9\npoisson_ratio = 0.3\nallowable_shear_stress = 1.0e9\n";
     let (scene, c) = kinrepro::error::parse_scene(&text, "h.toml").unwrap();
     let s = kinrepro::solve::quasistatic::seat(
@@ -465,14 +399,8 @@ fn shear_and_pressure_factors_each_name_what_they_leave_out() {
     )
     .unwrap();
     let expect = vec![
-        LeftOut {
-            material: "hard-steel".into(),
-            missing: "allowable_pressure",
-        },
-        LeftOut {
-            material: "steel".into(),
-            missing: "allowable_shear_stress",
-        },
+        LeftOut { material: "hard-steel".into(), missing: "allowable_pressure" },
+        LeftOut { material: "steel".into(), missing: "allowable_shear_stress" },
     ];
     for r in &s.contacts {
         assert!(r.pressure_safety_factor.is_some() && r.shear_safety_factor.is_some());
@@ -501,11 +429,7 @@ fn expand_writes_rounding_noise_as_zero_and_reloads_the_same_scene() {
             }
         }
         let first = text.find("centre = [\n").unwrap() + "centre = [\n".len();
-        assert_eq!(
-            text[first..].lines().next().unwrap().trim(),
-            "0.0,",
-            "{name}"
-        );
+        assert_eq!(text[first..].lines().next().unwrap().trim(), "0.0,", "{name}");
         // Written to a file and loaded back: the same scene within 1e-12.
         let file = tmp.path().join(name);
         std::fs::write(&file, &text).unwrap();

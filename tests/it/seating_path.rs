@@ -81,25 +81,15 @@ fn seating_path_says_whether_an_increment_was_halved() {
     for name in SCENES {
         let (uniform, n) = uniform_share(&load(name), 300);
         println!("{name}: nominal increments {uniform} / {n}");
-        assert!(
-            uniform >= 285,
-            "{name}: nominal increments only {uniform} / {n}"
-        );
+        assert!(uniform >= 285, "{name}: nominal increments only {uniform} / {n}");
     }
     let base = load("01_maxwell_vgroove_steel.toml");
-    let md = edited(&base, |s| {
-        s.friction.tangential_law = TangentialLaw::MindlinDeresiewicz
-    });
-    let decay = edited(&base, |s| {
-        s.friction.law = FrictionLaw::Decay { coefficient: 1e6 }
-    });
+    let md = edited(&base, |s| s.friction.tangential_law = TangentialLaw::MindlinDeresiewicz);
+    let decay = edited(&base, |s| s.friction.law = FrictionLaw::Decay { coefficient: 1e6 });
     for (label, c) in [("mindlin-deresiewicz", md), ("decay", decay)] {
         let (uniform, n) = uniform_share(&c, 40);
         println!("01 {label}: nominal increments {uniform} / {n}");
-        assert!(
-            uniform >= 38,
-            "01 {label}: nominal increments only {uniform} / {n}"
-        );
+        assert!(uniform >= 38, "01 {label}: nominal increments only {uniform} / {n}");
     }
     let decay = edited(&load("05_maxwell_balls_sic.toml"), |s| {
         s.friction.law = FrictionLaw::Decay { coefficient: 3e6 }
@@ -141,12 +131,7 @@ fn the_nominal_path_converges_as_the_increments_are_refined() {
             let size = poses[3].iter().fold(0.0f64, |m, v| m.max(v.abs()));
             let d: Vec<f64> = poses
                 .windows(2)
-                .map(|w| {
-                    (0..6)
-                        .map(|k| (w[0][k] - w[1][k]).abs())
-                        .fold(0.0, f64::max)
-                        / size
-                })
+                .map(|w| (0..6).map(|k| (w[0][k] - w[1][k]).abs()).fold(0.0, f64::max) / size)
                 .collect();
             println!("{name}: differences at each doubling {d:?}");
             assert!(d[0] > 1e-9, "{name}: {d:?} at the Newton tolerance");
@@ -190,16 +175,7 @@ fn study_json_counts_the_seating_paths() {
     let tol = common::scene("tolerances_maxwell_vgroove.toml");
     let cases = [
         (vec![s01.to_str().unwrap(), "--samples", "30"], 30),
-        (
-            vec![
-                tol.to_str().unwrap(),
-                "--samples",
-                "12",
-                "--vary",
-                "friction,tolerances",
-            ],
-            24,
-        ),
+        (vec![tol.to_str().unwrap(), "--samples", "12", "--vary", "friction,tolerances"], 24),
     ];
     for (args, seatings) in cases {
         let mut a = vec!["study"];

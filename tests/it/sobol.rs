@@ -136,11 +136,7 @@ fn scene_01_indices_are_consistent_and_match_the_linear_shares() {
     for (k, d) in sob.dofs.iter().enumerate() {
         let x = d.indices.as_ref().unwrap();
         let lows: f64 = x.first_ci90_low.iter().sum();
-        assert!(
-            lows <= 1.0,
-            "{}: sum of first-order lower bounds {lows}",
-            d.output
-        );
+        assert!(lows <= 1.0, "{}: sum of first-order lower bounds {lows}", d.output);
         for i in 0..6 {
             assert!(
                 x.total_ci90_high[i] >= x.first_ci90_low[i],
@@ -198,11 +194,7 @@ fn any_vary_set_gets_indices_per_input_deterministically() {
     assert_eq!(block.inputs.len(), 10);
     assert_eq!(sob.evaluations, 256 * 12);
     let phi_y = sob.dofs[4].indices.as_ref().unwrap();
-    let px = block
-        .inputs
-        .iter()
-        .position(|n| n == "preload_x_m")
-        .unwrap();
+    let px = block.inputs.iter().position(|n| n == "preload_x_m").unwrap();
     assert_eq!(phi_y.first.len(), 10);
     assert!(phi_y.total[px] > 0.7, "{:?}", phi_y.total);
 }

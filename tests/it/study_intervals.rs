@@ -72,13 +72,7 @@ fn judge(sig: &[f64], iv: &[(f64, f64)], pop: f64) -> (f64, f64, f64, f64, f64) 
     let covered = iv.iter().filter(|(l, h)| *l <= pop && pop <= *h).count();
     let width = iv.iter().map(|(l, h)| h - l).sum::<f64>() / iv.len() as f64;
     let (q05, q95) = (quantile(sig, 0.05), quantile(sig, 0.95));
-    (
-        covered as f64 / iv.len() as f64,
-        width / (q95 - q05),
-        q05,
-        q95,
-        width,
-    )
+    (covered as f64 / iv.len() as f64, width / (q95 - q05), q05, q95, width)
 }
 
 #[test]
@@ -93,16 +87,11 @@ fn printed_sigma_interval_covers_the_population_sigma() {
     );
     let pop_x = s.x_nm;
     let lhs = |seed| {
-        DesignSpec::new(Sampler::Lhs, 6, Some(25), seed)
-            .unwrap()
-            .with_replicates(5)
-            .unwrap()
+        DesignSpec::new(Sampler::Lhs, 6, Some(25), seed).unwrap().with_replicates(5).unwrap()
     };
     let mc = |seed| DesignSpec::new(Sampler::MonteCarlo, 6, Some(25), seed).unwrap();
-    for (name, make) in [
-        ("replicated LHS-25", &lhs as &dyn Fn(u64) -> DesignSpec),
-        ("MC-25", &mc),
-    ] {
+    for (name, make) in [("replicated LHS-25", &lhs as &dyn Fn(u64) -> DesignSpec), ("MC-25", &mc)]
+    {
         let specs: Vec<DesignSpec> = (1..=DESIGNS).map(make).collect();
         let st = studies(&c, &specs);
         let sig: Vec<f64> = st.iter().map(|(p, _)| p.sigma.x_nm).collect();
@@ -147,10 +136,7 @@ fn replicated_lhs_interval_is_on_average_narrower_than_monte_carlo() {
     let lhs = width(
         (1..=RUNS)
             .map(|seed| {
-                DesignSpec::new(Sampler::Lhs, 6, Some(N), seed)
-                    .unwrap()
-                    .with_replicates(5)
-                    .unwrap()
+                DesignSpec::new(Sampler::Lhs, 6, Some(N), seed).unwrap().with_replicates(5).unwrap()
             })
             .collect(),
     );

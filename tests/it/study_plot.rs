@@ -17,10 +17,7 @@ use kinrepro::study::{Sampler, StudyOptions, VariantReport, Varied};
 fn variants() -> Vec<VariantSigma> {
     vec![
         VariantSigma::new("three-groove", [12.0, 9.5, 3.1, 40.0, 35.0, 20.0]),
-        VariantSigma::new(
-            "tetrahedron-groove-flat",
-            [20.0, 14.0, 5.0, 55.0, 61.0, 30.0],
-        ),
+        VariantSigma::new("tetrahedron-groove-flat", [20.0, 14.0, 5.0, 55.0, 61.0, 30.0]),
         VariantSigma::new("coated", [4.0, 3.0, 1.0, 12.0, 10.0, 5.0]),
     ]
 }
@@ -35,10 +32,7 @@ fn attr(el: &str, name: &str) -> Option<f64> {
 
 /// The elements `<tag ...>` of an SVG.
 fn elements<'a>(svg: &'a str, tag: &str) -> Vec<&'a str> {
-    svg.split(&format!("<{tag} "))
-        .skip(1)
-        .map(|s| s.split('>').next().unwrap_or(""))
-        .collect()
+    svg.split(&format!("<{tag} ")).skip(1).map(|s| s.split('>').next().unwrap_or("")).collect()
 }
 
 /// The point list of a polyline element.
@@ -84,10 +78,7 @@ fn sigma_bars_draw_intervals_and_references_at_their_values() {
     let lo = sigma.map(|s| 0.7 * s);
     let hi = sigma.map(|s| 1.4 * s);
     data[0].interval = Some((lo, hi));
-    data[1].interval = Some((
-        data[1].sigma.map(|s| 0.9 * s),
-        data[1].sigma.map(|s| 1.1 * s),
-    ));
+    data[1].interval = Some((data[1].sigma.map(|s| 0.9 * s), data[1].sigma.map(|s| 1.1 * s)));
     data[0].reference = Some([Some(15.0), None, Some(2.0), Some(50.0), None, None]);
     let svg = sigma_bars_svg(&data, "re-seating σ").unwrap();
     assert!(svg.contains("reference value (tick); 90 % interval (bar)"));
@@ -117,11 +108,7 @@ fn sigma_bars_draw_intervals_and_references_at_their_values() {
         .map(|l| points(l))
         .filter(|p| p.len() == 2 && p[0].0 == p[1].0)
         .collect();
-    assert_eq!(
-        error_bars.len(),
-        12,
-        "one error bar per DOF of both variants with intervals"
-    );
+    assert_eq!(error_bars.len(), 12, "one error bar per DOF of both variants with intervals");
     let ticks: Vec<Vec<(f64, f64)>> = lines
         .iter()
         .filter(|l| l.contains("stroke=\"#000000\" stroke-width=\"4\""))
@@ -136,18 +123,10 @@ fn sigma_bars_draw_intervals_and_references_at_their_values() {
             .find(|p| p[0].0 >= bar.0 && p[0].0 <= bar.0 + bar.1)
             .unwrap_or_else(|| panic!("no error bar over bar {k}"));
         let (top, bottom) = (e[0].1.min(e[1].1), e[0].1.max(e[1].1));
-        assert!(
-            (bottom - at(bar, lo[k], sigma[k])).abs() < 1.6,
-            "dof {k}: low end {bottom}"
-        );
-        assert!(
-            (top - at(bar, hi[k], sigma[k])).abs() < 1.6,
-            "dof {k}: high end {top}"
-        );
+        assert!((bottom - at(bar, lo[k], sigma[k])).abs() < 1.6, "dof {k}: low end {bottom}");
+        assert!((top - at(bar, hi[k], sigma[k])).abs() < 1.6, "dof {k}: high end {top}");
         let reference = data[0].reference.unwrap()[k];
-        let tick = ticks
-            .iter()
-            .find(|p| p[0].0 >= bar.0 - 0.5 && p[1].0 <= bar.0 + bar.1 + 0.5);
+        let tick = ticks.iter().find(|p| p[0].0 >= bar.0 - 0.5 && p[1].0 <= bar.0 + bar.1 + 0.5);
         match (reference, tick) {
             (Some(v), Some(t)) => assert!((t[0].1 - at(bar, v, sigma[k])).abs() < 1.6),
             (None, None) => {}
@@ -158,35 +137,20 @@ fn sigma_bars_draw_intervals_and_references_at_their_values() {
 
 #[test]
 fn bad_plot_inputs_are_errors() {
-    assert!(matches!(
-        sigma_bars_svg(&[], "σ"),
-        Err(PlotError::NothingToPlot(_))
-    ));
+    assert!(matches!(sigma_bars_svg(&[], "σ"), Err(PlotError::NothingToPlot(_))));
     let mut v = variants();
     v[0].sigma[2] = f64::NAN;
-    assert!(matches!(
-        sigma_bars_svg(&v, "σ"),
-        Err(PlotError::NonFinite { .. })
-    ));
+    assert!(matches!(sigma_bars_svg(&v, "σ"), Err(PlotError::NonFinite { .. })));
     let mut v = variants();
     v[1].interval = Some(([1.0; 6], [f64::INFINITY; 6]));
-    assert!(matches!(
-        sigma_bars_svg(&v, "σ"),
-        Err(PlotError::NonFinite { .. })
-    ));
+    assert!(matches!(sigma_bars_svg(&v, "σ"), Err(PlotError::NonFinite { .. })));
     assert!(xy_scatter_svg(&[]).is_err());
     assert!(convergence_svg(&[]).is_err());
     let mut huge = variants();
     huge[1].sigma[0] = 1.7e308;
-    assert!(matches!(
-        sigma_bars_svg(&huge, "σ"),
-        Err(PlotError::NonFinite { .. })
-    ));
-    let scatter = VariantScatter {
-        variant: "a".into(),
-        point: "centre".into(),
-        xy: vec![(f64::NAN, 0.0)],
-    };
+    assert!(matches!(sigma_bars_svg(&huge, "σ"), Err(PlotError::NonFinite { .. })));
+    let scatter =
+        VariantScatter { variant: "a".into(), point: "centre".into(), xy: vec![(f64::NAN, 0.0)] };
     assert!(xy_scatter_svg(&[scatter]).is_err());
 }
 
@@ -213,10 +177,7 @@ fn scatter_names_every_point_and_convergence_has_six_dofs() {
     let v = study("06_kelvin_steel.toml", n, vec![Varied::Friction]);
     let charts = study_charts(&[&v], &[]).unwrap();
     let names: Vec<&str> = charts.iter().map(|c| c.file_name).collect();
-    assert_eq!(
-        names,
-        ["sigma_bars.svg", "scatter_xy.svg", "sigma_convergence.svg"]
-    );
+    assert_eq!(names, ["sigma_bars.svg", "scatter_xy.svg", "sigma_convergence.svg"]);
     let scatter = &charts[1].svg;
     for point in ["centre", "trihedral ball"] {
         let caption = format!("06_kelvin_steel · {point} ({n} samples)");
@@ -224,25 +185,16 @@ fn scatter_names_every_point_and_convergence_has_six_dofs() {
     }
     assert_eq!(elements(scatter, "circle").len(), 2 * n);
     let conv = &charts[2].svg;
-    for (dof, unit) in [
-        ("x", "nm"),
-        ("y", "nm"),
-        ("z", "nm"),
-        ("φx", "nrad"),
-        ("φy", "nrad"),
-        ("φz", "nrad"),
-    ] {
+    for (dof, unit) in
+        [("x", "nm"), ("y", "nm"), ("z", "nm"), ("φx", "nrad"), ("φy", "nrad"), ("φz", "nrad")]
+    {
         let caption = format!("convergence of σ {dof} [{unit}]");
         assert!(conv.contains(&caption), "missing {caption}");
     }
     assert!(conv.contains("06_kelvin_steel · trihedral ball"));
     // Series: 2 points x 6 DOFs; the last value of each is the sigma of all samples.
     let k_of = |dof: usize, point: usize| -> f64 {
-        let values: Vec<f64> = v
-            .records
-            .iter()
-            .map(|r| r.outputs[6 * point + dof] * 1e9)
-            .collect();
+        let values: Vec<f64> = v.records.iter().map(|r| r.outputs[6 * point + dof] * 1e9).collect();
         let last = sigma_convergence(&values).unwrap().last().unwrap().sigma;
         let mean = values.iter().sum::<f64>() / n as f64;
         let s = (values.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64).sqrt();
@@ -253,10 +205,7 @@ fn scatter_names_every_point_and_convergence_has_six_dofs() {
         for dof in 0..6 {
             let s = k_of(dof, point);
             let table = &v.points[point].sigma.values()[dof];
-            assert!(
-                (s / table - 1.0).abs() < 1e-9,
-                "plotted series ends at the table's sigma"
-            );
+            assert!((s / table - 1.0).abs() < 1e-9, "plotted series ends at the table's sigma");
         }
     }
 }
@@ -266,9 +215,7 @@ fn convergence_svg_has_a_panel_per_dof_given() {
     let series: Vec<ConvergenceSeries> = [(Dof::X, 1.0), (Dof::PhiZ, 10.0)]
         .iter()
         .map(|&(dof, scale)| {
-            let x: Vec<f64> = (0..25)
-                .map(|i| scale * (f64::from(i) * 2.1).sin())
-                .collect();
+            let x: Vec<f64> = (0..25).map(|i| scale * (f64::from(i) * 2.1).sin()).collect();
             ConvergenceSeries {
                 variant: "three-groove".into(),
                 dof,
@@ -291,17 +238,9 @@ fn interchangeability_is_plotted_when_tolerances_vary() {
     let names: Vec<&str> = charts.iter().map(|c| c.file_name).collect();
     assert!(names.contains(&"interchange_sigma_bars.svg"), "{names:?}");
     assert!(names.contains(&"interchange_scatter_xy.svg"), "{names:?}");
-    let bars = &charts
-        .iter()
-        .find(|c| c.file_name == "interchange_sigma_bars.svg")
-        .unwrap()
-        .svg;
+    let bars = &charts.iter().find(|c| c.file_name == "interchange_sigma_bars.svg").unwrap().svg;
     assert!(bars.contains("interchange σ, translations"));
     let plain = study("tolerances_maxwell_vgroove.toml", 8, vec![Varied::Friction]);
     let charts = study_charts(&[&plain], &[]).unwrap();
-    assert!(
-        charts
-            .iter()
-            .all(|c| !c.file_name.starts_with("interchange"))
-    );
+    assert!(charts.iter().all(|c| !c.file_name.starts_with("interchange")));
 }

@@ -61,18 +61,12 @@ fn same_seed_same_json_bytes_and_four_shards_merge_to_one_run() {
         args.extend(parts.iter().map(|s| s.as_str()));
         let (ok, merged, err) = kinrepro(&args);
         assert!(ok, "{err}");
-        assert_eq!(
-            merged, one,
-            "{sampler}: 4 merged shards differ from one run"
-        );
+        assert_eq!(merged, one, "{sampler}: 4 merged shards differ from one run");
         // A missing shard is an error, not a smaller study: parts hold shards
         // 3, 1, 4, 2; without the last, shard 2 of 22 samples in 4 (6, 6, 5, 5:
         // the first 22 mod 4 shards one larger) is samples 6..11.
         let (ok, _, err) = kinrepro(&["merge", &parts[0], &parts[1], &parts[2]]);
-        assert!(
-            !ok && err.contains("shard 2/4 (samples 6..11) missing"),
-            "{err}"
-        );
+        assert!(!ok && err.contains("shard 2/4 (samples 6..11) missing"), "{err}");
     }
 }
 
@@ -118,12 +112,7 @@ fn maxwell_scatter_is_symmetric_in_x_y_and_centred() {
         let m = p.mean.values();
         let sg = s.values();
         for k in 0..5 {
-            assert!(
-                m[k].abs() < 0.5 * sg[k],
-                "{name} dof {k}: mean {} sigma {}",
-                m[k],
-                sg[k]
-            );
+            assert!(m[k].abs() < 0.5 * sg[k], "{name} dof {k}: mean {} sigma {}", m[k], sg[k]);
         }
     }
 }
@@ -133,12 +122,8 @@ fn table_csv_and_plots_are_written() {
     let tmp = tempfile::tempdir().unwrap();
     let dir = tmp.path();
     let s1 = scene("01_maxwell_vgroove_steel.toml");
-    let (ok, table, err) = kinrepro(&[
-        "study",
-        s1.to_str().unwrap(),
-        "--out",
-        dir.to_str().unwrap(),
-    ]);
+    let (ok, table, err) =
+        kinrepro(&["study", s1.to_str().unwrap(), "--out", dir.to_str().unwrap()]);
     assert!(ok, "{err}");
     assert!(
         table.contains("sigma_x [nm]")
@@ -166,14 +151,8 @@ fn table_csv_and_plots_are_written() {
             .unwrap()
             .starts_with("index,mu_1,mu_2,mu_3,mu_4,mu_5,mu_6,centre/x_m")
     );
-    let (ok, csv, _) = kinrepro(&[
-        "study",
-        s1.to_str().unwrap(),
-        "--format",
-        "csv",
-        "--samples",
-        "8",
-    ]);
+    let (ok, csv, _) =
+        kinrepro(&["study", s1.to_str().unwrap(), "--format", "csv", "--samples", "8"]);
     assert!(ok);
     assert_eq!(csv.lines().count(), 1 + 6);
     // The corners design has 2^6 samples, each mu at mu0 +- spread (scene 01:
@@ -192,12 +171,7 @@ fn table_csv_and_plots_are_written() {
         std::fs::read_to_string(corners.join("samples_01_01_maxwell_vgroove_steel.csv")).unwrap();
     let mut patterns = std::collections::BTreeSet::new();
     for row in samples.lines().skip(2) {
-        let mu: Vec<f64> = row
-            .split(',')
-            .skip(1)
-            .take(6)
-            .map(|v| v.parse().unwrap())
-            .collect();
+        let mu: Vec<f64> = row.split(',').skip(1).take(6).map(|v| v.parse().unwrap()).collect();
         let mut bits = 0u32;
         for (k, m) in mu.iter().enumerate() {
             let high = (m - 0.55).abs() < 1e-12;
@@ -230,17 +204,11 @@ fn dynamic_studies_with_random_start_poses() {
         offset: Vector3::new(20e-6, 20e-6, 30e-6),
         tilt: Vector3::new(1e-4, 1e-4, 1e-4),
     };
-    let variation = Variation {
-        friction: false,
-        start: Some(bounds),
-        ..Default::default()
-    };
+    let variation = Variation { friction: false, start: Some(bounds), ..Default::default() };
     // Every drawn start lies above the seat: clear of all surfaces, within the bounds.
     for row in kinrepro::study::design(Sampler::Lhs, 6, 12, 3).unwrap() {
-        let kinrepro::study::runner::Sample {
-            load: Load { mu, start, .. },
-            ..
-        } = variation.sample(&s, &c, &row);
+        let kinrepro::study::runner::Sample { load: Load { mu, start, .. }, .. } =
+            variation.sample(&s, &c, &row);
         assert_eq!(mu, vec![0.2; 6]);
         assert!(start.offset.x.abs() <= 20e-6 && start.offset.y.abs() <= 20e-6);
         assert!(start.tilt.iter().all(|t| t.abs() <= 1e-4));
@@ -253,9 +221,7 @@ fn dynamic_studies_with_random_start_poses() {
         );
         assert!(start.offset.z >= base.offset.z && start.offset.z <= base.offset.z + 30e-6 + 1e-12);
         let pose = c.touching_pose.moved(&base.offset, &base.tilt);
-        let min_gap = (0..6)
-            .map(|i| c.geometry(i, &pose).gap)
-            .fold(f64::INFINITY, f64::min);
+        let min_gap = (0..6).map(|i| c.geometry(i, &pose).gap).fold(f64::INFINITY, f64::min);
         assert!((min_gap - 1e-9).abs() < 1e-12, "{min_gap:e}");
     }
     // The same variation as options: the start alone, within the bounds.
@@ -265,11 +231,7 @@ fn dynamic_studies_with_random_start_poses() {
         tilt_bounds: Some([1e-4, 1e-4, 1e-4]),
         ..Default::default()
     };
-    let opts = StudyOptions {
-        samples: Some(6),
-        solver: Solver::Dynamic,
-        ..start_only.clone()
-    };
+    let opts = StudyOptions { samples: Some(6), solver: Solver::Dynamic, ..start_only.clone() };
     let plan = crate::common::plan(vec![(s.clone(), c.clone())], &opts);
     assert_eq!(plan.settings.variation, variation);
     let v = crate::common::report(&plan);
@@ -288,14 +250,8 @@ fn dynamic_studies_with_random_start_poses() {
             .to_string()
             .contains("solver=dynamic")
     );
-    let none = StudyOptions {
-        vary: vec![],
-        ..Default::default()
-    };
+    let none = StudyOptions { vary: vec![], ..Default::default() };
     assert!(
-        StudyPlan::new(vec![(s, c)], &none)
-            .unwrap_err()
-            .to_string()
-            .contains("varies nothing")
+        StudyPlan::new(vec![(s, c)], &none).unwrap_err().to_string().contains("varies nothing")
     );
 }

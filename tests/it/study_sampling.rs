@@ -19,11 +19,7 @@ fn min_distance(rows: &[Vec<f64>]) -> f64 {
     let mut m = f64::INFINITY;
     for i in 0..rows.len() {
         for j in i + 1..rows.len() {
-            let d2: f64 = rows[i]
-                .iter()
-                .zip(&rows[j])
-                .map(|(a, b)| (a - b) * (a - b))
-                .sum();
+            let d2: f64 = rows[i].iter().zip(&rows[j]).map(|(a, b)| (a - b) * (a - b)).sum();
             m = m.min(d2.sqrt());
         }
     }
@@ -42,18 +38,12 @@ fn assert_latin(rows: &[Vec<f64>], dims: usize, n: usize) {
             })
             .collect();
         strata.sort_unstable();
-        assert_eq!(
-            strata,
-            (0..n).collect::<Vec<_>>(),
-            "column {k} is not Latin"
-        );
+        assert_eq!(strata, (0..n).collect::<Vec<_>>(), "column {k} is not Latin");
     }
 }
 
 fn bits(rows: &[Vec<f64>]) -> Vec<Vec<u64>> {
-    rows.iter()
-        .map(|r| r.iter().map(|v| v.to_bits()).collect())
-        .collect()
+    rows.iter().map(|r| r.iter().map(|v| v.to_bits()).collect()).collect()
 }
 
 proptest! {
@@ -88,10 +78,7 @@ fn lhs_optimisation_improves_maximin_for_d6_n25() {
 
 #[test]
 fn lhs_without_outer_iterations_is_the_start() {
-    let params = EseParams {
-        outer_iterations: 0,
-        ..EseParams::default()
-    };
+    let params = EseParams { outer_iterations: 0, ..EseParams::default() };
     let a = optimised_lhs(4, 10, 3, &params).unwrap();
     assert_eq!(bits(&a), bits(&random_lhs(4, 10, 3).unwrap()));
 }
@@ -154,12 +141,7 @@ fn corners_are_all_distinct_extremes_in_bit_order() {
     }
     assert_eq!(
         design(Sampler::Corners, 2, 4, 0).unwrap(),
-        vec![
-            vec![0.0, 0.0],
-            vec![1.0, 0.0],
-            vec![0.0, 1.0],
-            vec![1.0, 1.0]
-        ]
+        vec![vec![0.0, 0.0], vec![1.0, 0.0], vec![0.0, 1.0], vec![1.0, 1.0]]
     );
 }
 
@@ -167,11 +149,7 @@ fn corners_are_all_distinct_extremes_in_bit_order() {
 fn corners_reject_other_n_and_too_many_dims() {
     assert!(matches!(
         design(Sampler::Corners, 3, 25, 0),
-        Err(StudyError::CornerCount {
-            expected: 8,
-            got: 25,
-            ..
-        })
+        Err(StudyError::CornerCount { expected: 8, got: 25, .. })
     ));
     assert!(corner_count(17).is_err());
     assert_eq!(DesignSpec::new(Sampler::Corners, 6, None, 1).unwrap().n, 64);
@@ -198,23 +176,10 @@ fn bad_inputs_are_errors() {
         let backwards = 3..2;
         assert!(sample_range(s, 2, 4, 1, backwards).is_err());
     }
-    assert!(matches!(
-        design(Sampler::Lhs, 2, 0, 1),
-        Err(StudyError::ZeroSamples)
-    ));
-    assert!(matches!(
-        design(Sampler::MonteCarlo, 2, 0, 1),
-        Err(StudyError::ZeroSamples)
-    ));
-    assert!(matches!(
-        design(Sampler::Lhs, 2, 5000, 1),
-        Err(StudyError::LhsTooLarge { .. })
-    ));
-    assert!(
-        sample_range(Sampler::MonteCarlo, 2, 4, 1, 4..4)
-            .unwrap()
-            .is_empty()
-    );
+    assert!(matches!(design(Sampler::Lhs, 2, 0, 1), Err(StudyError::ZeroSamples)));
+    assert!(matches!(design(Sampler::MonteCarlo, 2, 0, 1), Err(StudyError::ZeroSamples)));
+    assert!(matches!(design(Sampler::Lhs, 2, 5000, 1), Err(StudyError::LhsTooLarge { .. })));
+    assert!(sample_range(Sampler::MonteCarlo, 2, 4, 1, 4..4).unwrap().is_empty());
 }
 
 #[test]

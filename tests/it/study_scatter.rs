@@ -32,19 +32,10 @@ fn maxwell_geometry() -> Vec<(Vector3<f64>, Vector3<f64>)> {
 #[test]
 fn preload_offset_changes_frictionless_forces_as_statics_says() {
     let (scene, c) = scene01_with("preload_offset = [5.0e-3, 3.0e-3]\npreload_tilt = 0.02\n");
-    let var = Variation {
-        friction: false,
-        preload: true,
-        ..Default::default()
-    };
+    let var = Variation { friction: false, preload: true, ..Default::default() };
     assert_eq!(
         var.inputs(&scene),
-        [
-            "preload_x_m",
-            "preload_y_m",
-            "preload_tilt_x_rad",
-            "preload_tilt_y_rad"
-        ]
+        ["preload_x_m", "preload_y_m", "preload_tilt_x_rad", "preload_tilt_y_rad"]
     );
     // Row (1, 0, 0.5, 0.5): offset (+5 mm, -3 mm), no tilt.
     let sample = var.sample(&scene, &c, &[1.0, 0.0, 0.5, 0.5]);
@@ -54,12 +45,7 @@ fn preload_offset_changes_frictionless_forces_as_statics_says() {
     assert!((preload.forces[0].direction + Vector3::z()).norm() < 1e-15);
     assert_eq!(sample.physical, vec![ex, ey, 0.0, 0.0]);
     // A tilt row turns the direction by the rotation vector (t_x, t_y, 0).
-    let tilted = var
-        .sample(&scene, &c, &[0.5, 0.5, 1.0, 0.25])
-        .load
-        .preload
-        .forces[0]
-        .direction;
+    let tilted = var.sample(&scene, &c, &[0.5, 0.5, 1.0, 0.25]).load.preload.forces[0].direction;
     let expect =
         nalgebra::UnitQuaternion::from_scaled_axis(Vector3::new(0.02, -0.01, 0.0)) * -Vector3::z();
     assert!((tilted - expect).norm() < 1e-15);
@@ -115,11 +101,7 @@ fn larger_ball_in_a_45_degree_v_raises_the_half_by_the_closed_form() {
     let ball1 =
         p.touching_pose.apply(&p.balls[0].centre) - c.touching_pose.apply(&c.balls[0].centre);
     assert!((ball1.z / h - 1.0).abs() < 1e-4, "{}", ball1.z);
-    assert!(
-        (touching.z_m / (h / 3.0) - 1.0).abs() < 1e-4,
-        "{}",
-        touching.z_m
-    );
+    assert!((touching.z_m / (h / 3.0) - 1.0).abs() < 1e-4, "{}", touching.z_m);
     assert!((touching.phi_x_rad / (h / (1.5 * r)) - 1.0).abs() < 1e-4);
     assert!(touching.x_m.abs() < 1e-4 * h && touching.y_m.abs() < 1e-4 * h);
     assert!(touching.phi_y_rad.abs() < 1e-4 * h / r);
@@ -137,19 +119,8 @@ fn larger_ball_in_a_45_degree_v_raises_the_half_by_the_closed_form() {
 
     // The same through a study: the interchangeability outputs of a row that
     // sets ball 1 to +4 um and balls 2, 3 to nominal.
-    let var = Variation {
-        friction: false,
-        tolerances: true,
-        ..Default::default()
-    };
-    assert_eq!(
-        var.inputs(&scene),
-        [
-            "ball_1_diameter_m",
-            "ball_2_diameter_m",
-            "ball_3_diameter_m"
-        ]
-    );
+    let var = Variation { friction: false, tolerances: true, ..Default::default() };
+    assert_eq!(var.inputs(&scene), ["ball_1_diameter_m", "ball_2_diameter_m", "ball_3_diameter_m"]);
     let s = var.sample(&scene, &c, &[0.75, 0.5, 0.5]);
     assert_eq!(s.tolerances.unwrap().ball_diameter, vec![2.0e-6, 0.0, 0.0]);
 }
@@ -172,13 +143,7 @@ fn study_reports_interchangeability_separately() {
     // 12 samples cannot fit 36 tolerance inputs: the table says so.
     let blocks = v.sensitivity.as_ref().unwrap();
     assert_eq!(blocks.len(), 2);
-    assert!(
-        blocks[1].dofs[0]
-            .note
-            .as_ref()
-            .unwrap()
-            .contains("at least")
-    );
+    assert!(blocks[1].dofs[0].note.as_ref().unwrap().contains("at least"));
 }
 
 #[test]
@@ -187,18 +152,13 @@ fn src_of_a_synthetic_linear_response_equals_the_known_shares() {
     let a = [3.0, 2.0, 1.0, 0.0];
     let total: f64 = a.iter().map(|x| x * x).sum();
     let x = design(Sampler::Lhs, 4, 300, 5).unwrap();
-    let y: Vec<f64> = x
-        .iter()
-        .map(|r| r.iter().zip(a).map(|(u, a)| u * a).sum::<f64>() + 7.0)
-        .collect();
+    let y: Vec<f64> =
+        x.iter().map(|r| r.iter().zip(a).map(|(u, a)| u * a).sum::<f64>() + 7.0).collect();
     let s = regression(&x, &y).unwrap();
     assert!((s.r_squared - 1.0).abs() < 1e-12);
     for (j, (share, a)) in s.share.iter().zip(a).enumerate() {
         let exact = a * a / total;
-        assert!(
-            (share - exact).abs() < 0.02,
-            "input {j}: {share} vs {exact}"
-        );
+        assert!((share - exact).abs() < 0.02, "input {j}: {share} vs {exact}");
     }
     // A non-linear response is flagged by a low R^2.
     let y2: Vec<f64> = x.iter().map(|r| ((r[0] - 0.5) * 6.0).cos()).collect();
@@ -240,18 +200,10 @@ fn scene01_friction_shares_sum_to_one_and_are_symmetric_between_grooves() {
         (b.dofs[3].share[j] * sigma[3].powi(2) + b.dofs[4].share[j] * sigma[4].powi(2))
             / (sigma[3].powi(2) + sigma[4].powi(2))
     };
-    for (name, f) in [
-        ("z", &z as &dyn Fn(usize) -> f64),
-        ("x,y", &xy),
-        ("phi", &phi),
-    ] {
+    for (name, f) in [("z", &z as &dyn Fn(usize) -> f64), ("x,y", &xy), ("phi", &phi)] {
         for k in 0..3 {
             let g = groove(k, f);
-            assert!(
-                (g - 1.0 / 3.0).abs() < 0.05,
-                "{name}: groove {} share {g}",
-                k + 1
-            );
+            assert!((g - 1.0 / 3.0).abs() < 0.05, "{name}: groove {} share {g}", k + 1);
         }
     }
 }
@@ -261,10 +213,7 @@ fn bad_input_is_a_clear_error() {
     let s1 = scene("01_maxwell_vgroove_steel.toml");
     let s1 = s1.to_str().unwrap();
     let (ok, _, err) = kinrepro(&["study", s1, "--vary", "friction,humidity"]);
-    assert!(
-        !ok && err.contains("humidity") && err.contains("tolerances"),
-        "{err}"
-    );
+    assert!(!ok && err.contains("humidity") && err.contains("tolerances"), "{err}");
     // Scene 01 has no [variation] table.
     let (ok, _, err) = kinrepro(&["study", s1, "--vary", "friction,preload"]);
     assert!(!ok && err.contains("preload_offset"), "{err}");
@@ -274,11 +223,7 @@ fn bad_input_is_a_clear_error() {
     let text = std::fs::read_to_string(scene("tolerances_maxwell_vgroove.toml"))
         .unwrap()
         .replace("surface_normal = 5e-6", "surface_normal = -5e-6");
-    let line = text
-        .lines()
-        .position(|l| l.starts_with("surface_normal"))
-        .unwrap()
-        + 1;
+    let line = text.lines().position(|l| l.starts_with("surface_normal")).unwrap() + 1;
     let tmp = tempfile::tempdir().unwrap();
     let dir = tmp.path();
     let bad = dir.join("negative.toml");
@@ -286,9 +231,8 @@ fn bad_input_is_a_clear_error() {
     let (ok, _, err) = kinrepro(&["study", bad.to_str().unwrap(), "--vary", "tolerances"]);
     assert!(!ok, "{err}");
     assert!(
-        err.contains(&format!(
-            "negative.toml:{line}: variation.surface_normal: -0.000005"
-        )) && err.contains(">= 0"),
+        err.contains(&format!("negative.toml:{line}: variation.surface_normal: -0.000005"))
+            && err.contains(">= 0"),
         "{err}"
     );
     let (ok, _, err) = kinrepro(&["check", bad.to_str().unwrap()]);

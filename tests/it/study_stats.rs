@@ -15,16 +15,8 @@ fn summary_of_one_to_five() {
     assert_eq!((s.min, s.max), (1.0, 5.0));
     assert_relative_eq!(s.sigma, 2.5f64.sqrt(), max_relative = 1e-15);
     assert_relative_eq!(s.three_sigma, 3.0 * 2.5f64.sqrt(), max_relative = 1e-15);
-    assert_relative_eq!(
-        s.lower_3sigma,
-        3.0 - 3.0 * 2.5f64.sqrt(),
-        max_relative = 1e-15
-    );
-    assert_relative_eq!(
-        s.upper_3sigma,
-        3.0 + 3.0 * 2.5f64.sqrt(),
-        max_relative = 1e-15
-    );
+    assert_relative_eq!(s.lower_3sigma, 3.0 - 3.0 * 2.5f64.sqrt(), max_relative = 1e-15);
+    assert_relative_eq!(s.upper_3sigma, 3.0 + 3.0 * 2.5f64.sqrt(), max_relative = 1e-15);
 }
 
 #[test]
@@ -44,14 +36,8 @@ fn sigma_hand_values_and_large_offset() {
 
 #[test]
 fn too_few_or_non_finite_samples_are_errors() {
-    assert!(matches!(
-        summarize(&[], SigmaMethod::Iid),
-        Err(StudyError::TooFewSamples { n: 0 })
-    ));
-    assert!(matches!(
-        summarize(&[1.0], SigmaMethod::Iid),
-        Err(StudyError::TooFewSamples { n: 1 })
-    ));
+    assert!(matches!(summarize(&[], SigmaMethod::Iid), Err(StudyError::TooFewSamples { n: 0 })));
+    assert!(matches!(summarize(&[1.0], SigmaMethod::Iid), Err(StudyError::TooFewSamples { n: 1 })));
     assert!(matches!(
         summarize(&[1.0, f64::NAN], SigmaMethod::Iid),
         Err(StudyError::NonFinite { .. })
@@ -69,11 +55,7 @@ fn convergence_matches_prefix_sigma() {
         let (_, s) = mean_sigma(&x[..k]).unwrap();
         assert_relative_eq!(p.sigma, s, max_relative = 1e-9);
     }
-    assert_relative_eq!(
-        c[0].sigma,
-        (x[1] - x[0]).abs() / 2f64.sqrt(),
-        max_relative = 1e-9
-    );
+    assert_relative_eq!(c[0].sigma, (x[1] - x[0]).abs() / 2f64.sqrt(), max_relative = 1e-9);
 }
 
 /// Stand-in for the coupling model: 5 outputs depending on the 6 inputs.
@@ -101,29 +83,20 @@ fn run_shard(spec: DesignSpec, shard: Shard) -> ShardFile {
         output_names: names(),
         records: range
             .zip(rows)
-            .map(|(index, inputs)| SampleRecord {
-                index,
-                outputs: model(&inputs),
-                inputs,
-            })
+            .map(|(index, inputs)| SampleRecord { index, outputs: model(&inputs), inputs })
             .collect(),
     }
 }
 
 fn shards(spec: DesignSpec, count: usize) -> Vec<ShardFile> {
-    (1..=count)
-        .map(|i| run_shard(spec, Shard::new(i, count).unwrap()))
-        .collect()
+    (1..=count).map(|i| run_shard(spec, Shard::new(i, count).unwrap())).collect()
 }
 
 #[test]
 fn merge_of_four_shards_equals_one_run_bit_for_bit() {
     for sampler in [Sampler::Lhs, Sampler::MonteCarlo] {
         let r = if sampler == Sampler::Lhs { 5 } else { 1 };
-        let spec = DesignSpec::new(sampler, 6, Some(25), 77)
-            .unwrap()
-            .with_replicates(r)
-            .unwrap();
+        let spec = DesignSpec::new(sampler, 6, Some(25), 77).unwrap().with_replicates(r).unwrap();
         let single = merge([run_shard(spec, Shard::whole())]).unwrap();
         let mut parts = shards(spec, 4);
         parts.reverse();
@@ -155,25 +128,12 @@ fn merge_rejects_duplicates_gaps_and_mismatches() {
     dup.push(parts[2].clone());
     assert!(matches!(merge(dup), Err(StudyError::DuplicateSample(_))));
 
-    let gap: Vec<ShardFile> = parts
-        .iter()
-        .filter(|p| p.shard.index != 2)
-        .cloned()
-        .collect();
-    assert!(matches!(
-        merge(gap),
-        Err(StudyError::MissingSamples { first: 7, count: 6 })
-    ));
+    let gap: Vec<ShardFile> = parts.iter().filter(|p| p.shard.index != 2).cloned().collect();
+    assert!(matches!(merge(gap), Err(StudyError::MissingSamples { first: 7, count: 6 })));
 
     let mut truncated = parts.clone();
     truncated[3].records.pop();
-    assert!(matches!(
-        merge(truncated),
-        Err(StudyError::MissingSamples {
-            first: 24,
-            count: 1
-        })
-    ));
+    assert!(matches!(merge(truncated), Err(StudyError::MissingSamples { first: 24, count: 1 })));
 
     let other = DesignSpec::new(Sampler::MonteCarlo, 6, Some(25), 6).unwrap();
     let mut mixed = parts.clone();
@@ -186,10 +146,7 @@ fn merge_rejects_duplicates_gaps_and_mismatches() {
 
     let mut stray = parts.clone();
     stray[0].records[0].index = 20; // belongs to shard 4
-    assert!(matches!(
-        merge(stray),
-        Err(StudyError::IndexOutOfRange { .. })
-    ));
+    assert!(matches!(merge(stray), Err(StudyError::IndexOutOfRange { .. })));
 
     let mut short = parts.clone();
     short[1].records[0].outputs.pop();
@@ -204,10 +161,7 @@ fn verify_inputs_detects_foreign_rows() {
     let mut study: MergedStudy = merge(shards(spec, 2)).unwrap();
     verify_inputs(&study).unwrap();
     study.records[4].inputs[1] += 1e-12;
-    assert!(matches!(
-        verify_inputs(&study),
-        Err(StudyError::InputsMismatch(4))
-    ));
+    assert!(matches!(verify_inputs(&study), Err(StudyError::InputsMismatch(4))));
 }
 
 /// Coverage of a 90 % interval method over `trials` synthetic data sets of `n` values drawn
@@ -247,26 +201,14 @@ fn iid_and_streamed_intervals_cover_the_population_sigma() {
     let s_u = 1.0 / 12f64.sqrt();
     for (what, c) in [
         ("uniform, n = 25", coverage(2000, 25, s_u, &uniform, &iid)),
-        (
-            "uniform, n = 25, streamed",
-            coverage(2000, 25, s_u, &uniform, &streamed),
-        ),
-        (
-            "uniform, n = 5000, streamed",
-            coverage(400, 5000, s_u, &uniform, &streamed),
-        ),
-        (
-            "exponential, n = 5000, streamed",
-            coverage(400, 5000, 1.0, &expo, &streamed),
-        ),
+        ("uniform, n = 25, streamed", coverage(2000, 25, s_u, &uniform, &streamed)),
+        ("uniform, n = 5000, streamed", coverage(400, 5000, s_u, &uniform, &streamed)),
+        ("exponential, n = 5000, streamed", coverage(400, 5000, 1.0, &expo, &streamed)),
     ] {
         assert!((0.85..=0.95).contains(&c), "{what}: coverage {c}");
     }
     // The heavy-tailed case at n = 25 is harder: Bonett's interval stays usable, the
     // normal-theory chi-square interval would cover far less.
     let c = coverage(2000, 25, 1.0, &expo, &iid);
-    assert!(
-        (0.78..=0.95).contains(&c),
-        "exponential, n = 25: coverage {c}"
-    );
+    assert!((0.78..=0.95).contains(&c), "exponential, n = 25: coverage {c}");
 }

@@ -43,10 +43,7 @@ fn streamed(name: &str, samples: usize, chunk: usize) -> (Vec<SampleRecord>, Str
         Ok(())
     })
     .unwrap();
-    assert!(
-        largest_chunk <= chunk,
-        "a chunk of {largest_chunk} > {chunk}"
-    );
+    assert!(largest_chunk <= chunk, "a chunk of {largest_chunk} > {chunk}");
     (seen, stats)
 }
 
@@ -69,9 +66,7 @@ fn streamed_statistics_equal_the_two_pass_statistics() {
     for name in ["01_maxwell_vgroove_steel.toml", "06_kelvin_steel.toml"] {
         let samples = 300;
         let p = plan_of(name, &mc(samples));
-        let whole = run_variant(&p.settings, &p.variants[0], &|| {})
-            .unwrap()
-            .records;
+        let whole = run_variant(&p.settings, &p.variants[0], &|| {}).unwrap().records;
         assert_eq!(whole.len(), samples);
         for chunk in [1, 64, 1000] {
             let (records, stats) = streamed(name, samples, chunk);
@@ -128,21 +123,14 @@ fn kept_and_streamed_statistics_give_the_same_points() {
         let mut streamed = kept.clone();
         streamed.set_moment_stats(&stats).unwrap();
         assert!(streamed.streamed && !kept.streamed);
-        assert_eq!(
-            kept.interchangeability.is_empty(),
-            name.starts_with("01"),
-            "{name}"
-        );
-        let pairs = kept.points.iter().zip(&streamed.points).chain(
-            kept.interchangeability
-                .iter()
-                .zip(&streamed.interchangeability),
-        );
+        assert_eq!(kept.interchangeability.is_empty(), name.starts_with("01"), "{name}");
+        let pairs = kept
+            .points
+            .iter()
+            .zip(&streamed.points)
+            .chain(kept.interchangeability.iter().zip(&streamed.interchangeability));
         assert_eq!(streamed.points.len(), kept.points.len());
-        assert_eq!(
-            streamed.interchangeability.len(),
-            kept.interchangeability.len()
-        );
+        assert_eq!(streamed.interchangeability.len(), kept.interchangeability.len());
         for (a, b) in pairs {
             assert_eq!((&a.name, a.n), (&b.name, b.n), "{name}");
             assert_eq!(a.sigma_interval_method, b.sigma_interval_method);
@@ -150,11 +138,7 @@ fn kept_and_streamed_statistics_give_the_same_points() {
             for k in 0..6 {
                 let scale = sa[k].max(f64::MIN_POSITIVE);
                 let close = |x: f64, y: f64, tol: f64| (x - y).abs() <= tol * scale;
-                assert!(
-                    close(sa[k], sb[k], 1e-10),
-                    "{name} {} dof {k}: sigma",
-                    a.name
-                );
+                assert!(close(sa[k], sb[k], 1e-10), "{name} {} dof {k}: sigma", a.name);
                 let mean = a.mean.values()[k].abs();
                 assert!(
                     (a.mean.values()[k] - b.mean.values()[k]).abs() <= 1e-12 * (scale + mean),

@@ -34,10 +34,7 @@ fn series_law_inverts_the_closed_form_both_ways() {
             // Springs in series: 1/k = 1/k_H + c, k_H = 3/2 K^(2/3) F^(1/3).
             let k_hertz = 1.5 * k.powf(2.0 / 3.0) * f.cbrt();
             let expect = 1.0 / (1.0 / k_hertz + c);
-            assert!(
-                (kn / expect - 1.0).abs() < 1e-10,
-                "c {c} F {f}: {kn} {expect}"
-            );
+            assert!((kn / expect - 1.0).abs() < 1e-10, "c {c} F {f}: {kn} {expect}");
             // The law's own split adds up to the closed form.
             assert!((law.approach(f) / delta - 1.0).abs() < 1e-12);
             assert!((law.support_approach(f) / (c * f) - 1.0).abs() < 1e-15);
@@ -49,10 +46,7 @@ fn series_law_inverts_the_closed_form_both_ways() {
     }
     let zero = SeriesNormal::new(hertz, 0.0);
     for d in [-1e-9, 0.0, 1e-9, 3e-7] {
-        assert_eq!(
-            zero.force_and_stiffness(d),
-            (hertz.force(d), hertz.stiffness(d))
-        );
+        assert_eq!(zero.force_and_stiffness(d), (hertz.force(d), hertz.stiffness(d)));
     }
 }
 
@@ -68,20 +62,12 @@ fn high_level(extra: &str) -> String {
 fn support_compliance_goes_to_every_contact_and_survives_expand() {
     let src = high_level("support_compliance = 2.5e-8");
     let scene = Scene::parse(&src, "h.toml").unwrap();
-    assert!(
-        scene
-            .surfaces
-            .iter()
-            .all(|s| s.support_compliance == 2.5e-8)
-    );
+    assert!(scene.surfaces.iter().all(|s| s.support_compliance == 2.5e-8));
     let explicit = Scene::expand_text(&src, "h.toml").unwrap();
     assert_eq!(explicit.matches("support_compliance = ").count(), 6);
     let back = Scene::parse(&explicit, "e.toml").unwrap();
     let key = |s: &Scene| -> Vec<_> {
-        s.surfaces
-            .iter()
-            .map(|x| (x.geometry, x.ball, x.support_compliance))
-            .collect()
+        s.surfaces.iter().map(|x| (x.geometry, x.ball, x.support_compliance)).collect()
     };
     common::assert_close_debug(&key(&back), &key(&scene), "expanded surfaces");
     // Per contact in the explicit form: change one surface only.
@@ -95,11 +81,7 @@ fn support_compliance_goes_to_every_contact_and_survives_expand() {
     // Without the key: none.
     let none = Scene::parse(&high_level(""), "h.toml").unwrap();
     assert!(none.surfaces.iter().all(|s| s.support_compliance == 0.0));
-    assert!(
-        !Scene::expand_text(&high_level(""), "h.toml")
-            .unwrap()
-            .contains("support")
-    );
+    assert!(!Scene::expand_text(&high_level(""), "h.toml").unwrap().contains("support"));
 }
 
 #[test]
@@ -175,13 +157,7 @@ fn scene_01_scatter_rises_by_the_linearised_compliance_factor() {
     let lateral = |c: f64| (1.0 - mu_d) / (1.0 / k_hertz + c) + 2.0 * mu_d * f / (delta_h + c * f);
     let normal_factor = 1.0 + c * k_hertz;
     let lateral_factor = lateral(0.0) / lateral(c);
-    let predicted = [
-        lateral_factor,
-        lateral_factor,
-        normal_factor,
-        normal_factor,
-        normal_factor,
-    ];
+    let predicted = [lateral_factor, lateral_factor, normal_factor, normal_factor, normal_factor];
     // The same scene file with `[coupling] support_compliance = c`.
     let text = std::fs::read_to_string(common::scene("01_maxwell_vgroove_steel.toml")).unwrap();
     let text = text.replacen(
@@ -195,22 +171,14 @@ fn scene_01_scatter_rises_by_the_linearised_compliance_factor() {
     let mut rng = ChaCha8Rng::seed_from_u64(5);
     let samples: Vec<Vec<f64>> = (0..200)
         .map(|_| {
-            (0..6)
-                .map(|_| fr.mu_static + fr.spread * (2.0 * rng.random::<f64>() - 1.0))
-                .collect()
+            (0..6).map(|_| fr.mu_static + fr.spread * (2.0 * rng.random::<f64>() - 1.0)).collect()
         })
         .collect();
     let (s0, s1) = (sigmas(&base, &samples), sigmas(&soft, &samples));
     for k in 0..5 {
         let ratio = s1[k] / s0[k];
-        eprintln!(
-            "DOF {k}: sigma ratio {ratio:.5}, predicted {:.5}",
-            predicted[k]
-        );
-        assert!(
-            (ratio / predicted[k] - 1.0).abs() < 0.03,
-            "DOF {k}: {ratio}"
-        );
+        eprintln!("DOF {k}: sigma ratio {ratio:.5}, predicted {:.5}", predicted[k]);
+        assert!((ratio / predicted[k] - 1.0).abs() < 0.03, "DOF {k}: {ratio}");
     }
 }
 

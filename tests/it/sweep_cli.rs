@@ -31,10 +31,8 @@ fn opening_angle_sweep_agrees_with_check_and_reports_unseated_designs() {
         let angle = d["values"]["coupling.opening_angle_deg"].as_f64().unwrap();
         // `check` on the same scene written by hand with this angle.
         let path = dir.path().join(format!("a{angle}.toml"));
-        let edited = text.replace(
-            "opening_angle_deg = 90.0",
-            &format!("opening_angle_deg = {angle:.1}"),
-        );
+        let edited =
+            text.replace("opening_angle_deg = 90.0", &format!("opening_angle_deg = {angle:.1}"));
         assert_ne!(edited, text);
         std::fs::write(&path, edited).unwrap();
         let (ok, check, err) = kinrepro(&["check", path.to_str().unwrap()]);
@@ -48,10 +46,7 @@ fn opening_angle_sweep_agrees_with_check_and_reports_unseated_designs() {
             .parse()
             .unwrap();
         let column = d["friction_limit"].as_f64().unwrap();
-        assert!(
-            (column - limit).abs() <= 0.5e-4,
-            "{angle}: {column} vs check {limit}"
-        );
+        assert!((column - limit).abs() <= 0.5e-4, "{angle}: {column} vs check {limit}");
         let margin = d["friction_limit_margin"].as_f64().unwrap();
         assert!((margin - (column - 0.55)).abs() < 1e-12);
         let status = d["status"].as_str().unwrap();
@@ -67,14 +62,7 @@ fn opening_angle_sweep_agrees_with_check_and_reports_unseated_designs() {
         } else {
             assert_eq!(status, "ok", "{angle}");
             assert!(!check.contains("CANNOT SEAT"), "check disagrees at {angle}");
-            for k in [
-                "x_nm",
-                "y_nm",
-                "z_nm",
-                "phi_x_nrad",
-                "phi_y_nrad",
-                "phi_z_nrad",
-            ] {
+            for k in ["x_nm", "y_nm", "z_nm", "phi_x_nrad", "phi_y_nrad", "phi_z_nrad"] {
                 assert!(points[0]["sigma"][k].as_f64().unwrap() > 0.0, "{angle} {k}");
             }
         }
@@ -88,10 +76,7 @@ fn opening_angle_sweep_agrees_with_check_and_reports_unseated_designs() {
         "--samples",
         "10",
     ]);
-    assert!(
-        table.contains("cannot seat: with mu_s = 0.5 +- 0.05"),
-        "{table}"
-    );
+    assert!(table.contains("cannot seat: with mu_s = 0.5 +- 0.05"), "{table}");
     assert!(table.contains("σx [nm]") && table.contains("σφz [nrad]"));
 }
 
@@ -166,15 +151,9 @@ fn bad_fields_and_values_fail_with_one_line_and_bad_points_are_reported() {
     let s = s01.to_str().unwrap();
     for (set, expect) in [
         ("preload.forse=1,2", "preload.forse: not a sweepable field"),
-        (
-            "coupling.groove_material=1,2",
-            "coupling.groove_material=1,2",
-        ),
+        ("coupling.groove_material=1,2", "coupling.groove_material=1,2"),
         ("preload.force=steel", "\"steel\" is not a number"),
-        (
-            "materials.probe.youngs_modulus=1e9,2e9",
-            "no [[materials]] entry named \"probe\"",
-        ),
+        ("materials.probe.youngs_modulus=1e9,2e9", "no [[materials]] entry named \"probe\""),
         ("coupling.name=1", "coupling.name: not a sweepable field"),
     ] {
         let (ok, out, err) = kinrepro(&["sweep", s, "--set", set]);
@@ -184,12 +163,8 @@ fn bad_fields_and_values_fail_with_one_line_and_bad_points_are_reported() {
     }
     // An explicit scene has no [coupling] table to sweep.
     let explicit = scene("custom_kelvin_explicit.toml");
-    let (ok, _, err) = kinrepro(&[
-        "sweep",
-        explicit.to_str().unwrap(),
-        "--set",
-        "preload.force=1,2",
-    ]);
+    let (ok, _, err) =
+        kinrepro(&["sweep", explicit.to_str().unwrap(), "--set", "preload.force=1,2"]);
     assert!(!ok && err.contains("high-level form"), "{err}");
     // An invalid design point is reported with its reason; the sweep goes on.
     let (ok, out, err) = kinrepro(&[
@@ -206,20 +181,10 @@ fn bad_fields_and_values_fail_with_one_line_and_bad_points_are_reported() {
     ]);
     assert!(ok, "{err}");
     let doc = json(&out);
-    let status: Vec<&str> = doc["designs"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|d| d["status"].as_str().unwrap())
-        .collect();
-    assert!(
-        status[0].starts_with("invalid: friction.mu_static"),
-        "{status:?}"
-    );
-    assert!(
-        status[1].starts_with("invalid: ") && status[1].contains("unobtainium"),
-        "{status:?}"
-    );
+    let status: Vec<&str> =
+        doc["designs"].as_array().unwrap().iter().map(|d| d["status"].as_str().unwrap()).collect();
+    assert!(status[0].starts_with("invalid: friction.mu_static"), "{status:?}");
+    assert!(status[1].starts_with("invalid: ") && status[1].contains("unobtainium"), "{status:?}");
     assert_eq!(status[2], "ok");
     assert!(status[3].contains("unobtainium"));
     assert_eq!(doc["designs"][2]["pareto"], serde_json::json!(true));
@@ -262,10 +227,7 @@ fn lhs_sweep_with_charts() {
         "sweep_pareto.svg",
     ] {
         let svg = std::fs::read_to_string(out.join(name)).unwrap();
-        assert!(
-            svg.contains("<svg") && svg.contains("kinrepro 0.1.0"),
-            "{name}"
-        );
+        assert!(svg.contains("<svg") && svg.contains("kinrepro 0.1.0"), "{name}");
     }
     // Existing charts are refused without --force.
     let (ok, _, err) = kinrepro(&args);
@@ -293,14 +255,8 @@ fn a_design_point_equal_to_the_scene_gives_the_study_statistics() {
     let (ok, study, err) = kinrepro(&["study", s, "--samples", "10", "--format", "json"]);
     assert!(ok, "{err}");
     let (sweep, study) = (json(&sweep), json(&study));
-    assert_eq!(
-        sweep["designs"][1]["points"],
-        study["variants"][0]["points"]
-    );
-    assert_ne!(
-        sweep["designs"][0]["points"],
-        study["variants"][0]["points"]
-    );
+    assert_eq!(sweep["designs"][1]["points"], study["variants"][0]["points"]);
+    assert_ne!(sweep["designs"][0]["points"], study["variants"][0]["points"]);
 }
 
 /// The table's header names the estimate of sigma of the sampler that ran:
@@ -330,8 +286,5 @@ fn sweep_header_names_the_estimate_of_the_sampler_that_ran() {
         "{lhs}"
     );
     let mc = head("mc");
-    assert!(
-        mc.contains("(Monte Carlo: divisor n-1)") && !mc.contains("replicated LHS"),
-        "{mc}"
-    );
+    assert!(mc.contains("(Monte Carlo: divisor n-1)") && !mc.contains("replicated LHS"), "{mc}");
 }

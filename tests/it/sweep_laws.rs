@@ -21,11 +21,8 @@ fn sweep(text: &str, sets: &[&str], samples: usize) -> SweepReport {
     let (scene, base) = kinrepro::error::parse_scene(text, "scene01").unwrap();
     let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
     let spec = SweepSpec::new("scene01", text, &sets, DesignKind::Grid).unwrap();
-    let opts = StudyOptions {
-        samples: Some(samples),
-        vary: vec![Varied::Friction],
-        ..Default::default()
-    };
+    let opts =
+        StudyOptions { samples: Some(samples), vary: vec![Varied::Friction], ..Default::default() };
     let plan = study_plan(scene, base, &opts).unwrap();
     run(&spec, &plan, Shard::whole(), None, &|| {}).unwrap()
 }
@@ -63,11 +60,7 @@ fn sigma_follows_preload_to_the_two_thirds() {
         let ratio = number(d, "preload.force") / 20.0;
         let law = ratio.powf(2.0 / 3.0);
         let w = worst(d, reference, law);
-        assert!(
-            w < 0.01,
-            "F = {}: off F^(2/3) by {w}",
-            number(d, "preload.force")
-        );
+        assert!(w < 0.01, "F = {}: off F^(2/3) by {w}", number(d, "preload.force"));
         // The nominal approach follows the same Hertz law.
         let a = d.nominal_approach_m.unwrap() / reference.nominal_approach_m.unwrap();
         assert!((a / law - 1.0).abs() < 0.01, "approach ratio {a} vs {law}");
@@ -84,11 +77,7 @@ fn sigma_follows_the_contact_modulus_to_minus_two_thirds() {
         .replace("ball_material = \"steel\"", "ball_material = \"probe\"")
         .replace("groove_material = \"steel\"", "groove_material = \"probe\"")
         + "\n[[materials]]\nname = \"probe\"\nyoungs_modulus = 210e9\npoisson_ratio = 0.3\nallowable_pressure = 4.2e9\n";
-    let r = sweep(
-        &text,
-        &["materials.probe.youngs_modulus=105e9,210e9,420e9"],
-        10,
-    );
+    let r = sweep(&text, &["materials.probe.youngs_modulus=105e9,210e9,420e9"], 10);
     let e_star = |e: f64| 1.0 / (2.0 * (1.0 - 0.3f64.powi(2)) / e);
     let reference = &r.designs[1];
     for d in &r.designs {
@@ -113,14 +102,8 @@ fn sigma_follows_the_ball_radius_to_minus_one_third_within_the_geometric_bound()
     // at most dR / r_b. The relative deviation from R^(-1/3) is first order
     // in dR / r_b; the test takes dR / r_b itself as the tolerance (unit
     // coefficient), and checks that the deviation shrinks with r_b.
-    let r = sweep(
-        &scene01(),
-        &[
-            "coupling.diameter=0.08,0.4",
-            "coupling.ball_diameter=0.005,0.01",
-        ],
-        10,
-    );
+    let r =
+        sweep(&scene01(), &["coupling.diameter=0.08,0.4", "coupling.ball_diameter=0.005,0.01"], 10);
     let mut devs = Vec::new();
     for pair in r.designs.chunks(2) {
         let (small, big) = (&pair[0], &pair[1]);
@@ -166,11 +149,7 @@ fn the_preload_law_holds_where_contacts_stick_and_contacts_are_elliptical() {
         for d in &r.designs {
             let law = (number(d, "preload.force") / 20.0).powf(2.0 / 3.0);
             let w = worst(d, reference, law);
-            assert!(
-                w < 0.01,
-                "{name}: F = {}: off by {w}",
-                number(d, "preload.force")
-            );
+            assert!(w < 0.01, "{name}: F = {}: off by {w}", number(d, "preload.force"));
         }
     }
 }

@@ -13,11 +13,7 @@ use kinrepro::study::inputs::Input;
 /// column and a missing value.
 fn sample() -> Table {
     let mut t = Table::new("<name; >x [nm]:.3; >c [m/N]:.2e");
-    t.row(vec![
-        Cell::from("a"),
-        Cell::from(1.23456),
-        Cell::from(2.5e-9),
-    ]);
+    t.row(vec![Cell::from("a"), Cell::from(1.23456), Cell::from(2.5e-9)]);
     t.row(vec![Cell::from("bb"), Cell::from(-10.0), Cell::from(None)]);
     t
 }
@@ -28,28 +24,23 @@ const CELLS: [[&str; 3]; 2] = [["a", "1.235", "2.50e-9"], ["bb", "-10.000", "-"]
 fn text_csv_and_html_hold_the_same_cells() {
     let t = sample();
     let text = t.text();
-    let lines: Vec<Vec<&str>> = text
-        .lines()
-        .map(|l| l.split_whitespace().collect())
-        .collect();
+    let lines: Vec<Vec<&str>> = text.lines().map(|l| l.split_whitespace().collect()).collect();
     assert_eq!(lines[0], ["name", "x", "[nm]", "c", "[m/N]"]);
     for (row, want) in lines[1..].iter().zip(CELLS) {
         assert_eq!(row, &want);
     }
     // Right-aligned numbers end in one column, under the header's end.
     let end = |l: &str, v: &str| l.find(v).unwrap() + v.len();
-    let e: Vec<usize> = (text.lines().zip(["[nm]", "1.235", "-10.000"]))
-        .map(|(l, v)| end(l, v))
-        .collect();
+    let e: Vec<usize> =
+        (text.lines().zip(["[nm]", "1.235", "-10.000"])).map(|(l, v)| end(l, v)).collect();
     assert!(e[0] == e[1] && e[1] == e[2], "{text}");
 
     let csv = t.csv();
     let mut r = csv::Reader::from_reader(csv.as_bytes());
     let head: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
     assert_eq!(head, ["name", "x [nm]", "c [m/N]"]);
-    let rows: Vec<Vec<String>> = (r.records())
-        .map(|x| x.unwrap().iter().map(String::from).collect())
-        .collect();
+    let rows: Vec<Vec<String>> =
+        (r.records()).map(|x| x.unwrap().iter().map(String::from).collect()).collect();
     assert_eq!(rows[0], CELLS[0]);
     // A missing value is an empty CSV field.
     assert_eq!(rows[1], ["bb", "-10.000", ""]);
@@ -92,26 +83,13 @@ fn csv_cells_with_commas_quotes_and_newlines_round_trip() {
 #[test]
 fn notes_and_rows_under_keep_their_place() {
     let mut t = Table::new("<k; >v:.1");
-    t.row(vec![Cell::from("a"), Cell::from(1.0)])
-        .under(vec![String::new(), "[0.5, 2]".into()]);
+    t.row(vec![Cell::from("a"), Cell::from(1.0)]).under(vec![String::new(), "[0.5, 2]".into()]);
     t.note("a note");
     t.row(vec![Cell::from("b"), Cell::from(2.0)]);
     let lines: Vec<String> = t.text().lines().map(|l| l.trim().to_string()).collect();
-    assert_eq!(
-        lines,
-        [
-            "k        v",
-            "a      1.0",
-            "[0.5, 2]",
-            "a note",
-            "b      2.0"
-        ]
-    );
+    assert_eq!(lines, ["k        v", "a      1.0", "[0.5, 2]", "a note", "b      2.0"]);
     let html = t.html("x");
-    assert!(
-        html.contains("<td>1.0<span class=\"ci\">[0.5, 2]</span></td>"),
-        "{html}"
-    );
+    assert!(html.contains("<td>1.0<span class=\"ci\">[0.5, 2]</span></td>"), "{html}");
     assert!(html.contains("colspan=\"2\">a note</td>"), "{html}");
 }
 
@@ -125,24 +103,16 @@ fn history_reads_semicolons_quoted_headers_and_a_bom() {
     for text in [
         plain.replace(',', ";"),
         plain.replace("P_N,Qx_N,Qy_N", "\"P_N\",\"Qx_N\",\"Qy_N\""),
-        plain
-            .replace(',', ";")
-            .replace("P_N;Qx_N;Qy_N", "\"P_N\";\"Qx_N\";\"Qy_N\""),
+        plain.replace(',', ";").replace("P_N;Qx_N;Qy_N", "\"P_N\";\"Qx_N\";\"Qy_N\""),
         format!("\u{feff}{plain}"),
         plain.replace(',', "\t"),
     ] {
         assert_eq!(parse_history_csv(&text, "h.csv").unwrap(), want, "{text:?}");
     }
     let e = parse_history_csv("P_N;Qx_N\n1;0\n", "h.csv").unwrap_err();
-    assert_eq!(
-        e.to_string(),
-        "h.csv:1: header `P_N;Qx_N` must be `P_N,Qx_N,Qy_N`"
-    );
+    assert_eq!(e.to_string(), "h.csv:1: header `P_N;Qx_N` must be `P_N,Qx_N,Qy_N`");
     let e = parse_history_csv("P_N;Qx_N;Qy_N\n1;abc;0\n", "h.csv").unwrap_err();
-    assert!(
-        e.to_string().starts_with("h.csv:2: column Qx_N: `abc`"),
-        "{e}"
-    );
+    assert!(e.to_string().starts_with("h.csv:2: column Qx_N: `abc`"), "{e}");
 }
 
 #[test]
@@ -159,9 +129,7 @@ fn reference_reads_quotes_empty_cells_semicolons_and_rejects_bad_numbers() {
     assert_eq!(rows[0].label, "paper, FE");
     assert_eq!(rows[0].sigma[0], Some(6.2));
     assert_eq!(rows[0].sigma[5], None);
-    let semi = text
-        .replace(',', ";")
-        .replace("\"paper; FE\"", "\"paper, FE\"");
+    let semi = text.replace(',', ";").replace("\"paper; FE\"", "\"paper, FE\"");
     assert_eq!(parse_reference(&semi, "r.csv").unwrap(), rows);
     let bad = text.replace("3.8", "abc");
     let e = parse_reference(&bad, "r.csv").unwrap_err().to_string();
@@ -182,22 +150,14 @@ fn dof_names_units_and_keys_agree() {
     }
     // The JSON keys of `Dofs` and `PointPose` are the DOFs' keys, in order.
     let order = |json: String, keys: [String; 6]| {
-        let at: Vec<usize> = keys
-            .iter()
-            .map(|k| json.find(&format!("\"{k}\":")).unwrap())
-            .collect();
+        let at: Vec<usize> =
+            keys.iter().map(|k| json.find(&format!("\"{k}\":")).unwrap()).collect();
         assert!(at.windows(2).all(|w| w[0] < w[1]), "{json}");
         assert_eq!(json.matches(':').count(), 6, "{json}");
     };
-    order(
-        serde_json::to_string(&Dofs::from_si([1e-9; 6])).unwrap(),
-        Dof::ALL.map(Dof::key),
-    );
+    order(serde_json::to_string(&Dofs::from_si([1e-9; 6])).unwrap(), Dof::ALL.map(Dof::key));
     let p = PointPose::from_components([2.0; 6]);
-    order(
-        serde_json::to_string(&p).unwrap(),
-        Dof::ALL.map(Dof::si_key),
-    );
+    order(serde_json::to_string(&p).unwrap(), Dof::ALL.map(Dof::si_key));
     assert!(Dofs::from_si([1e-9; 6]).values().iter().all(|x| *x == 1.0));
 }
 
@@ -243,10 +203,7 @@ fn significant_digits_keep_four_whatever_the_magnitude() {
         assert_eq!(s, want, "{v}");
         let back: f64 = s.parse().unwrap();
         let mantissa = s.split('e').next().unwrap();
-        let digits = mantissa
-            .chars()
-            .filter(char::is_ascii_digit)
-            .collect::<String>();
+        let digits = mantissa.chars().filter(char::is_ascii_digit).collect::<String>();
         let sig = digits.trim_start_matches('0').len();
         assert!(v == 0.0 || sig == 4, "{s}");
         // Half a unit of the 4th digit: at most 5e-4 relative.

@@ -31,10 +31,7 @@ mod likelihood {
         // Summary of two DOFs against F = I with one fitted parameter: the
         // statistic is sum_j (1 - 1/(3 m)) m (r_j - ln r_j - 1), r_j = sigma_j^2,
         // on p - q = 1 degree of freedom, where P(X > x) = 2 (1 - Phi(sqrt x)).
-        let obs = Observed::Sigmas {
-            sigma: vec![1.2, 1.0],
-            cycles: vec![31, 31],
-        };
+        let obs = Observed::Sigmas { sigma: vec![1.2, 1.0], cycles: vec![31, 31] };
         let g = goodness_of_fit(&obs, &DMatrix::identity(2, 2), 1);
         let (m, r) = (30.0, 1.44f64);
         let want = (1.0 - 1.0 / (3.0 * m)) * m * (r - r.ln() - 1.0);
@@ -99,9 +96,7 @@ mod information {
                 (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
             }
         };
-        (0..n)
-            .map(|_| sd.iter().map(|s| s * unit()).collect())
-            .collect()
+        (0..n).map(|_| sd.iter().map(|s| s * unit()).collect()).collect()
     }
 
     /// The spread alone on one DOF, G = 1, no noise, S = 0.09 from 40
@@ -114,14 +109,8 @@ mod information {
     fn one_parameter_closed_forms() {
         let grid = ModelGrid::from_parts(vec![], vec![], vec![DMatrix::identity(1, 1)], 0.3);
         for obs in [
-            Observed::Covariance {
-                s: DMatrix::from_element(1, 1, 0.09),
-                n: 40,
-            },
-            Observed::Sigmas {
-                sigma: vec![0.3],
-                cycles: vec![40],
-            },
+            Observed::Covariance { s: DMatrix::from_element(1, 1, 0.09), n: 40 },
+            Observed::Sigmas { sigma: vec![0.3], cycles: vec![40] },
         ] {
             let jm = JointModel {
                 obs: &obs,
@@ -158,43 +147,31 @@ mod information {
     #[test]
     fn separable_model_closed_forms() {
         let (a, b, n) = (0.04, 0.024, 40);
-        let obs = Observed::Covariance {
-            s: DMatrix::from_diagonal(&DVector::from_vec(vec![a, b])),
-            n,
-        };
+        let obs =
+            Observed::Covariance { s: DMatrix::from_diagonal(&DVector::from_vec(vec![a, b])), n };
         let grid = grid();
         let jm = separable(&obs, &grid);
         let (u_hat, l_max) = estimate(&jm);
         let theta = jm.theta(&u_hat);
-        assert!(
-            (theta[0] - 0.2).abs() < 1e-6 && (theta[1] - 0.6).abs() < 1e-5,
-            "{theta:?}"
-        );
+        assert!((theta[0] - 0.2).abs() < 1e-6 && (theta[1] - 0.6).abs() < 1e-5, "{theta:?}");
         // Profile ends of the spread: 39 (r - ln r - 1) = chi^2_1(0.90).
         for dir in [-1.0, 1.0] {
             let e = profile_end(&jm, 0, 1.0, &u_hat, l_max, dir);
             let s = jm.theta(&e.point)[0];
             let r = a / (s * s);
             let d = (n as f64 - 1.0) * (r - r.ln() - 1.0);
-            assert!(
-                !e.at_bound && (d - wilks_threshold()).abs() < 1e-4,
-                "{dir}: s {s}, {d}"
-            );
+            assert!(!e.at_bound && (d - wilks_threshold()).abs() < 1e-4, "{dir}: s {s}, {d}");
         }
         // Sandwich factors: normal scatter 1, uniform 2 / Var(u^2) = 2.5 (unit-variance u).
         for (uniform, want) in [(false, 1.0), (true, 2.5)] {
-            let d = information(&jm, &theta, &samples(200_000, uniform))
-                .unwrap()
-                .derived();
+            let d = information(&jm, &theta, &samples(200_000, uniform)).unwrap().derived();
             for k in &d.k {
                 assert!((k / want - 1.0).abs() < 0.02, "uniform {uniform}: k {k}");
             }
         }
         // Model error of s from N normal samples: sd(ln s) = sqrt(1 / (2 N)).
         let nx = 20_000;
-        let d = information(&jm, &theta, &samples(nx, false))
-            .unwrap()
-            .derived();
+        let d = information(&jm, &theta, &samples(nx, false)).unwrap().derived();
         let rel = d.model_sd[0] / theta[0] / (1.0 / (2.0 * nx as f64)).sqrt();
         assert!((rel - 1.0).abs() < 0.03, "model sd ratio {rel}");
     }
@@ -216,14 +193,8 @@ mod params {
             parse_fit(&names(&["spread", "spread"])),
             Err(CalibrateError::DuplicateParameter(_))
         ));
-        assert!(matches!(
-            parse_fit(&names(&["mu"])),
-            Err(CalibrateError::UnknownParameter(_))
-        ));
+        assert!(matches!(parse_fit(&names(&["mu"])), Err(CalibrateError::UnknownParameter(_))));
         assert!(matches!(parse_fit(&[]), Err(CalibrateError::EmptyFit)));
-        assert!(matches!(
-            parse_fit(&names(&["spread", ""])),
-            Err(CalibrateError::EmptyFit)
-        ));
+        assert!(matches!(parse_fit(&names(&["spread", ""])), Err(CalibrateError::EmptyFit)));
     }
 }

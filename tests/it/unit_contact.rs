@@ -142,11 +142,7 @@ mod mindlin {
         for case in 0..4000 {
             let n = Vector3::new(next(), next(), next()).normalize();
             let axis = Vector3::new(next(), next(), next());
-            let k = if case % 2 == 0 {
-                [3.1e7, 3.1e7]
-            } else {
-                [2.9e7 * (1.0 + next()), 3.3e7]
-            };
+            let k = if case % 2 == 0 { [3.1e7, 3.1e7] } else { [2.9e7 * (1.0 + next()), 3.3e7] };
             let p = PrincipalStiffness::new(k, &n, &axis);
             let proj = Matrix3::identity() - n * n.transpose();
             let want = match p.axes {
@@ -177,10 +173,7 @@ mod mindlin {
                 let r = limit * (1.0 + excess);
                 let trial = Vector2::new(r * f64::cos(angle), r * f64::sin(angle));
                 let (f, _, _) = project_on_circle(k, &trial, limit);
-                assert!(
-                    (f.norm() / limit - 1.0).abs() < 4.0 * f64::EPSILON,
-                    "{excess} {aniso}"
-                );
+                assert!((f.norm() / limit - 1.0).abs() < 4.0 * f64::EPSILON, "{excess} {aniso}");
                 let g = [0, 1].map(|i| (trial[i] / f[i] - 1.0) / k[i]);
                 assert!(g[0] >= 0.0 && g[1] >= 0.0, "{g:?}");
                 if excess >= 0.02 {
@@ -206,13 +199,7 @@ mod mindlin {
         assert!((got - want).norm() <= 1e-15 * limit, "{got} vs {want}");
         let along_normal = PrincipalStiffness::new([k, 0.5 * k], &n, &n);
         assert!(along_normal.axes.is_none());
-        assert!(
-            along_normal
-                .project(&n, &trial, limit)
-                .0
-                .iter()
-                .all(|v| v.is_finite())
-        );
+        assert!(along_normal.project(&n, &trial, limit).0.iter().all(|v| v.is_finite()));
     }
 }
 
@@ -247,10 +234,7 @@ mod coulomb {
             let p = PrincipalStiffness::new([3e7, 3e7], &n, &Vector3::x());
             let in_plane = |v: Vector3<f64>| v - n * n.dot(&v);
             let e1 = in_plane(Vector3::x()).normalize();
-            let axes = PrincipalStiffness {
-                axes: Some([e1, n.cross(&e1)]),
-                ..p
-            };
+            let axes = PrincipalStiffness { axes: Some([e1, n.cross(&e1)]), ..p };
             let du = in_plane(Vector3::new(next(), next(), next()) * 4e-7);
             let old = TangentialState {
                 force: in_plane(Vector3::new(next(), next(), next()) * 8.0),
@@ -275,43 +259,27 @@ mod coulomb {
                 contact_radius: 0.0,
                 g_star: 0.0,
                 mindlin_shape: Matrix3::zeros(),
-                friction: Friction {
-                    law,
-                    duration: 1e-3,
-                    ..Friction::switch(0.5, 0.4)
-                },
+                friction: Friction { law, duration: 1e-3, ..Friction::switch(0.5, 0.4) },
             };
             let mut got = TangentialResponse::open(n);
             let mut want = TangentialResponse::open(n);
             update(&old, &input, true, &mut got);
-            let elliptical = TangentialInput {
-                principal: axes,
-                ..input
-            };
+            let elliptical = TangentialInput { principal: axes, ..input };
             update(&old, &elliptical, true, &mut want);
             assert_eq!(got.slip, want.slip, "{case}");
             let f = want.force.norm().max(1e-3);
-            assert!(
-                close(got.force.as_slice(), want.force.as_slice(), f),
-                "{case}"
-            );
+            assert!(close(got.force.as_slice(), want.force.as_slice(), f), "{case}");
             let k = want.d_force_d_du.norm();
             let (g, w) = (&got.d_force_d_du, &want.d_force_d_du);
             assert!(close(g.as_slice(), w.as_slice(), k), "{case}: {g} {w}");
             let (g, w) = (&got.d_force_d_fn, &want.d_force_d_fn);
-            assert!(
-                close(g.as_slice(), w.as_slice(), w.norm() + 1.0),
-                "{case}: {g} {w}"
-            );
+            assert!(close(g.as_slice(), w.as_slice(), w.norm() + 1.0), "{case}: {g} {w}");
             let v = got.state.slip_velocity;
             assert!((v - want.state.slip_velocity).abs() <= 1e-12 * v.abs().max(1e-9));
             slips += usize::from(got.slip == SlipState::Slip);
             sticks += usize::from(got.slip == SlipState::Stick);
         }
-        assert!(
-            slips > 100 && sticks > 100,
-            "{slips} slips, {sticks} sticks"
-        );
+        assert!(slips > 100 && sticks > 100, "{slips} slips, {sticks} sticks");
     }
 }
 
@@ -422,12 +390,7 @@ mod curvature {
         radii2: [f64; 2],
         deg: f64,
     ) -> Result<RelativeCurvature, ContactError> {
-        PairCurvature {
-            radii1,
-            radii2,
-            angle: deg.to_radians(),
-        }
-        .relative()
+        PairCurvature { radii1, radii2, angle: deg.to_radians() }.relative()
     }
 
     #[test]
@@ -451,10 +414,7 @@ mod curvature {
             pair([0.0, 1.0], [1.0, 1.0], 0.0),
             Err(ContactError::BadPrincipalRadius { .. })
         ));
-        assert!(matches!(
-            pair([1.0, 1.0], [1.0, 1.0], f64::NAN),
-            Err(ContactError::BadAngle(_))
-        ));
+        assert!(matches!(pair([1.0, 1.0], [1.0, 1.0], f64::NAN), Err(ContactError::BadAngle(_))));
     }
 
     #[test]

@@ -24,19 +24,15 @@ mod field {
         // (it is refused before any field is looked up).
         let no_friction = TEXT.replace("[friction]\nmu_static = 0.5\n", "");
         assert_eq!(
-            SceneFile::parse(&no_friction, "scene.toml")
-                .ok()
-                .map(|s| kind_of("friction.mu_static", &s).ok()),
+            SceneFile::parse(&no_friction, "scene.toml").ok().map(|s| kind_of(
+                "friction.mu_static",
+                &s
+            )
+            .ok()),
             None
         );
-        assert_eq!(
-            kind_of("coupling.ball_material", &s).unwrap(),
-            FieldKind::Material
-        );
-        assert_eq!(
-            kind_of("materials.probe.youngs_modulus", &s).unwrap(),
-            FieldKind::Number
-        );
+        assert_eq!(kind_of("coupling.ball_material", &s).unwrap(), FieldKind::Material);
+        assert_eq!(kind_of("materials.probe.youngs_modulus", &s).unwrap(), FieldKind::Number);
     }
 
     #[test]
@@ -61,25 +57,15 @@ mod field {
             .map(|s| kind_of("coupling.diameter", &s))
             .unwrap_err()
             .to_string();
-        let line = 1 + TEXT
-            .lines()
-            .position(|l| l.contains("diameter = 0.08"))
-            .unwrap();
+        let line = 1 + TEXT.lines().position(|l| l.contains("diameter = 0.08")).unwrap();
         assert!(e.starts_with(&format!("scene.toml:{line}:")), "{e}");
-        assert!(
-            e.contains("invalid type: string \"big\", expected f64"),
-            "{e}"
-        );
+        assert!(e.contains("invalid type: string \"big\", expected f64"), "{e}");
     }
 
     #[test]
     fn string_fields_and_built_in_materials() {
         let s = scene();
-        for path in [
-            "coupling.arrangement",
-            "coupling.groove",
-            "coupling.ball_shape",
-        ] {
+        for path in ["coupling.arrangement", "coupling.groove", "coupling.ball_shape"] {
             assert_eq!(kind_of(path, &s).ok(), Some(FieldKind::Text), "{path}");
         }
         // A built-in material's constants are sweepable without an entry.
@@ -88,18 +74,8 @@ mod field {
             FieldKind::Number
         );
         let mut t = scene();
-        set(
-            &mut t,
-            "materials.steel.poisson_ratio",
-            &SweptValue::Number(0.25),
-        )
-        .unwrap();
-        set(
-            &mut t,
-            "materials.steel.youngs_modulus",
-            &SweptValue::Number(2e11),
-        )
-        .unwrap();
+        set(&mut t, "materials.steel.poisson_ratio", &SweptValue::Number(0.25)).unwrap();
+        set(&mut t, "materials.steel.youngs_modulus", &SweptValue::Number(2e11)).unwrap();
         // One override entry holding the built-in's other constants.
         let entries = &t.materials;
         assert_eq!(entries.len(), 2);
@@ -119,18 +95,8 @@ mod field {
     fn set_replaces_or_inserts() {
         let mut s = scene();
         set(&mut s, "preload.force", &SweptValue::Number(5.0)).unwrap();
-        set(
-            &mut s,
-            "coupling.opening_angle_deg",
-            &SweptValue::Number(60.0),
-        )
-        .unwrap();
-        set(
-            &mut s,
-            "materials.probe.youngs_modulus",
-            &SweptValue::Number(1e11),
-        )
-        .unwrap();
+        set(&mut s, "coupling.opening_angle_deg", &SweptValue::Number(60.0)).unwrap();
+        set(&mut s, "materials.probe.youngs_modulus", &SweptValue::Number(1e11)).unwrap();
         assert_eq!(s.preload.force.as_ref().map(|f| *f.get_ref()), Some(5.0));
         let coupling = s.coupling.as_ref().unwrap();
         assert_eq!(*coupling.opening_angle_deg.get_ref(), 60.0);
@@ -163,13 +129,8 @@ mod values {
             Levels::Numbers(vec![5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0])
         );
         let log = Set::parse("preload.force=log:1:100:5", &s).unwrap();
-        let Levels::Numbers(v) = log.levels else {
-            panic!()
-        };
-        for (got, want) in v
-            .iter()
-            .zip([1.0, 10f64.sqrt(), 10.0, 1000f64.sqrt(), 100.0])
-        {
+        let Levels::Numbers(v) = log.levels else { panic!() };
+        for (got, want) in v.iter().zip([1.0, 10f64.sqrt(), 10.0, 1000f64.sqrt(), 100.0]) {
             assert!((got / want - 1.0).abs() < 1e-14, "{got} vs {want}");
         }
         let list = Set::parse("preload.force=5,10,20", &s).unwrap();
@@ -185,10 +146,7 @@ mod values {
         assert_eq!(item("1e-3"), SweptValue::Number(1e-3));
         assert_eq!(item("planes"), SweptValue::Name("planes".into()));
         assert_eq!(item("\"20\""), SweptValue::Name("20".into()));
-        assert_eq!(
-            item("'gothic-arch'"),
-            SweptValue::Name("gothic-arch".into())
-        );
+        assert_eq!(item("'gothic-arch'"), SweptValue::Name("gothic-arch".into()));
         assert_eq!(item("\""), SweptValue::Name("\"".into()));
         let s = scene();
         let g = Set::parse("coupling.groove=planes,'7',gothic-arch", &s).unwrap();
@@ -196,11 +154,7 @@ mod values {
             g.levels,
             Levels::Names(vec!["planes".into(), "7".into(), "gothic-arch".into()])
         );
-        for bad in [
-            "coupling.groove=planes,7",
-            "coupling.groove=a:b",
-            "coupling.groove=x,'x'",
-        ] {
+        for bad in ["coupling.groove=planes,7", "coupling.groove=a:b", "coupling.groove=x,'x'"] {
             let e = Set::parse(bad, &s).unwrap_err().to_string();
             assert!(e.contains(bad), "{e}");
         }
@@ -221,25 +175,16 @@ mod values {
             let e = Set::parse(bad, &s).unwrap_err().to_string();
             assert!(e.contains(bad), "{e}");
         }
-        assert!(matches!(
-            Set::parse("preload.force", &s),
-            Err(ExploreError::SetSyntax { .. })
-        ));
+        assert!(matches!(Set::parse("preload.force", &s), Err(ExploreError::SetSyntax { .. })));
         let e = Set::parse("preload.force=40:5:3", &s).unwrap_err();
         assert!(
             matches!(
                 e,
-                ExploreError::Values {
-                    reason: ValuesError::Reversed { lo: 40.0, hi: 5.0 },
-                    ..
-                }
+                ExploreError::Values { reason: ValuesError::Reversed { lo: 40.0, hi: 5.0 }, .. }
             ),
             "{e:?}"
         );
-        assert_eq!(
-            e.to_string(),
-            "sets=preload.force=40:5:3: the range needs a < b, got 40 and 5"
-        );
+        assert_eq!(e.to_string(), "sets=preload.force=40:5:3: the range needs a < b, got 40 and 5");
     }
 }
 
@@ -256,9 +201,7 @@ mod design {
             "scene.toml",
         )
         .unwrap();
-        args.iter()
-            .map(|a| Set::parse(a, &scene).unwrap())
-            .collect()
+        args.iter().map(|a| Set::parse(a, &scene).unwrap()).collect()
     }
 
     #[test]
@@ -266,14 +209,8 @@ mod design {
         let s = sets(&["preload.force=1,2,3", "coupling.diameter=0.05,0.1"]);
         let p = design_points(&s, DesignKind::Grid).unwrap();
         assert_eq!(p.len(), 6);
-        assert_eq!(
-            p[1].values,
-            vec![SweptValue::Number(1.0), SweptValue::Number(0.1)]
-        );
-        assert_eq!(
-            p[4].values,
-            vec![SweptValue::Number(3.0), SweptValue::Number(0.05)]
-        );
+        assert_eq!(p[1].values, vec![SweptValue::Number(1.0), SweptValue::Number(0.1)]);
+        assert_eq!(p[4].values, vec![SweptValue::Number(3.0), SweptValue::Number(0.05)]);
     }
 
     #[test]
@@ -283,10 +220,7 @@ mod design {
         let p = design_points(&s, DesignKind::Lhs { points: n, seed: 3 }).unwrap();
         // One point in each of the n equal strata of each (log) range.
         for (k, to_u) in [
-            (
-                0,
-                Box::new(|x: f64| x.log10() / 2.0) as Box<dyn Fn(f64) -> f64>,
-            ),
+            (0, Box::new(|x: f64| x.log10() / 2.0) as Box<dyn Fn(f64) -> f64>),
             (1, Box::new(|x: f64| (x - 0.05) / 0.05)),
         ] {
             let mut strata: Vec<usize> = p
@@ -306,11 +240,7 @@ mod pareto {
     use kinrepro::explore::pareto::*;
 
     fn o(s: f64, k: f64, sf: f64) -> Option<Objectives> {
-        Some(Objectives {
-            sigma_max: s,
-            stiffness_min: k,
-            safety_factor: Some(sf),
-        })
+        Some(Objectives { sigma_max: s, stiffness_min: k, safety_factor: Some(sf) })
     }
 
     #[test]
@@ -318,13 +248,7 @@ mod pareto {
         // 0: best sigma; 1: dominated by 0 (worse sigma, same k and SF);
         // 2: best stiffness; 3: equal to 0 on all (neither dominates);
         // 4: not evaluated.
-        let d = [
-            o(1.0, 5.0, 2.0),
-            o(2.0, 5.0, 2.0),
-            o(3.0, 9.0, 1.0),
-            o(1.0, 5.0, 2.0),
-            None,
-        ];
+        let d = [o(1.0, 5.0, 2.0), o(2.0, 5.0, 2.0), o(3.0, 9.0, 1.0), o(1.0, 5.0, 2.0), None];
         assert_eq!(front(&d), vec![true, false, true, true, false]);
     }
 

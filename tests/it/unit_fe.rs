@@ -32,11 +32,7 @@ mod boussinesq {
         let (p, e, nu) = (10.0, 200e9, 0.3);
         let r = 1e-3;
         let u = displacement(p, e, nu, [r * 0.6, r * 0.8, 0.0]).unwrap();
-        assert_relative_eq!(
-            -u[2],
-            p * (1.0 - nu * nu) / (PI * e * r),
-            max_relative = 1e-12
-        );
+        assert_relative_eq!(-u[2], p * (1.0 - nu * nu) / (PI * e * r), max_relative = 1e-12);
         // surface radial displacement: -(1-2ν)(1+ν) P /(2π E r)
         let ur = u[0].hypot(u[1]);
         assert_relative_eq!(
@@ -111,13 +107,9 @@ mod validate {
     /// z axis node counts in both).
     #[test]
     fn boundary_conditions_fix_rollers_and_far_faces() {
-        let mesh = HexMesh::structured(
-            1,
-            &[0.0, 1.0, 2.0],
-            &[0.0, 1.0, 2.0, 3.0],
-            &[-2.0, -1.0, 0.0],
-        )
-        .unwrap();
+        let mesh =
+            HexMesh::structured(1, &[0.0, 1.0, 2.0], &[0.0, 1.0, 2.0, 3.0], &[-2.0, -1.0, 0.0])
+                .unwrap();
         let [nx, ny, nz] = mesh.dims;
         assert_eq!([nx, ny, nz], [3, 4, 3]);
         let mat = Material { e: 2e11, nu: 0.3 };
@@ -163,11 +155,7 @@ mod system {
         (0..fixed.len())
             .map(|d| {
                 let e = sys.eq_of_dof[d];
-                if e == usize::MAX {
-                    vals[d]
-                } else {
-                    rhs[(e, 0)]
-                }
+                if e == usize::MAX { vals[d] } else { rhs[(e, 0)] }
             })
             .collect()
     }
@@ -227,31 +215,19 @@ mod system {
             for a in 0..nn {
                 let ex = lin(mesh.nodes[a]);
                 for c in 0..3 {
-                    assert!(
-                        (u[3 * a + c] - ex[c]).abs() < 1e-12,
-                        "order {order} node {a}"
-                    );
+                    assert!((u[3 * a + c] - ex[c]).abs() < 1e-12, "order {order} node {a}");
                 }
             }
             // Constant stress = D ε with ε from the linear field's gradient.
-            let eps = [
-                2e-3,
-                1.5e-3,
-                0.9e-3,
-                -0.5e-3 + 0.7e-3,
-                -0.2e-3 + 0.1e-3,
-                0.3e-3 - 0.6e-3,
-            ];
+            let eps = [2e-3, 1.5e-3, 0.9e-3, -0.5e-3 + 0.7e-3, -0.2e-3 + 0.1e-3, 0.3e-3 - 0.6e-3];
             let d = mat.d_matrix();
             let sig: [f64; 6] = std::array::from_fn(|r| (0..6).map(|s| d[r][s] * eps[s]).sum());
             let mut en = Vec::new();
             for el in 0..mesh.n_elements() {
                 mesh.element_nodes(el, &mut en);
                 let coords: Vec<[f64; 3]> = en.iter().map(|&a| mesh.nodes[a]).collect();
-                let ue: Vec<[f64; 3]> = en
-                    .iter()
-                    .map(|&a| [u[3 * a], u[3 * a + 1], u[3 * a + 2]])
-                    .collect();
+                let ue: Vec<[f64; 3]> =
+                    en.iter().map(|&a| [u[3 * a], u[3 * a + 1], u[3 * a + 2]]).collect();
                 for xi in [[0.3, -0.7, 0.1], [-0.9, 0.9, 0.5]] {
                     let s = element_stress(order, &coords, &ue, xi, &mat).unwrap();
                     for r in 0..6 {

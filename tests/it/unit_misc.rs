@@ -27,11 +27,7 @@ mod material {
         assert!(Material::new("x", f64::NAN, 0.3, None).is_err());
         let ok = Material::new("x", 1e9, 0.3, None).unwrap();
         assert!(ok.clone().with_allowable_shear_stress(Some(-1.0)).is_err());
-        assert!(
-            ok.clone()
-                .with_allowable_shear_stress(Some(f64::NAN))
-                .is_err()
-        );
+        assert!(ok.clone().with_allowable_shear_stress(Some(f64::NAN)).is_err());
         assert!(ok.with_allowable_shear_stress(Some(1e9)).is_ok());
         for n in builtin_names() {
             Material::builtin(n).unwrap().validate().unwrap();
@@ -94,15 +90,10 @@ mod contact_layer {
             rotation: UnitQuaternion::from_scaled_axis(Vector3::new(1e-3, -2e-3, 0.5)),
             translation: Vector3::new(1e-6, 2e-6, -3e-6),
         };
-        let committed = pose.moved(
-            &Vector3::new(2e-8, -1e-8, 3e-8),
-            &Vector3::new(1e-7, 3e-7, -2e-7),
-        );
+        let committed =
+            pose.moved(&Vector3::new(2e-8, -1e-8, 3e-8), &Vector3::new(1e-7, 3e-7, -2e-7));
         let motion = Motion::between(&pose, &committed);
-        for p in [
-            Vector3::new(0.04, 0.0, 0.0),
-            Vector3::new(-0.02, 0.035, -0.005),
-        ] {
+        for p in [Vector3::new(0.04, 0.0, 0.0), Vector3::new(-0.02, 0.035, -0.005)] {
             let body = pose.rotation.inverse() * (p - pose.translation);
             let direct = p - committed.apply(&body);
             assert!(direct.norm() > 1e-9);
@@ -139,10 +130,7 @@ mod html {
         };
         let report = HtmlReport {
             sections: vec![
-                Section {
-                    title: "σ vs preload <F>".into(),
-                    svg: svg(40),
-                },
+                Section { title: "σ vs preload <F>".into(), svg: svg(40) },
                 Section {
                     title: "Pareto front".into(),
                     svg: format!("<?xml version=\"1.0\"?>\n{}", svg(50)),
@@ -151,10 +139,8 @@ mod html {
             ..Default::default()
         };
         let html = report.render().unwrap();
-        let (a, b) = (
-            html.find("σ vs preload &lt;F&gt;").unwrap(),
-            html.find("Pareto front").unwrap(),
-        );
+        let (a, b) =
+            (html.find("σ vs preload &lt;F&gt;").unwrap(), html.find("Pareto front").unwrap());
         assert!(a < b);
         assert_eq!(html.matches("data-check=\"chart\"").count(), 2);
         assert!(
@@ -171,9 +157,8 @@ mod html {
 fn pareto_labels_are_placed_apart_and_inside() {
     use kinrepro::report::sweep::pareto::place_labels;
     let bounds = [0.0, 0.0, 400.0, 300.0];
-    let mut points: Vec<(f64, f64)> = (0..12)
-        .map(|i| (200.0 + 3.0 * (i % 4) as f64, 150.0 + 3.0 * (i / 4) as f64))
-        .collect();
+    let mut points: Vec<(f64, f64)> =
+        (0..12).map(|i| (200.0 + 3.0 * (i % 4) as f64, 150.0 + 3.0 * (i / 4) as f64)).collect();
     points.extend([(1.0, 1.0), (399.0, 299.0), (399.0, 1.0), (1.0, 299.0)]);
     let labelled: Vec<usize> = (0..points.len()).collect();
     let sizes = vec![(23.0, 14.0); points.len()];
@@ -187,10 +172,7 @@ fn pareto_labels_are_placed_apart_and_inside() {
             assert!(apart(a, b), "{a:?} {b:?}");
         }
         for &(x, y) in &points {
-            assert!(
-                apart(a, &[x - 4.0, y - 4.0, x + 4.0, y + 4.0]),
-                "{a:?} on ({x}, {y})"
-            );
+            assert!(apart(a, &[x - 4.0, y - 4.0, x + 4.0, y + 4.0]), "{a:?} on ({x}, {y})");
         }
     }
 }

@@ -42,11 +42,7 @@ impl ContactGeometry {
     /// along the unit `normal`, with the point midway (module docs).
     #[inline(always)]
     fn midway(centre: &Vector3<f64>, radius: f64, gap: f64, normal: Vector3<f64>) -> Self {
-        ContactGeometry {
-            gap,
-            normal,
-            point: centre - normal * (radius + 0.5 * gap),
-        }
+        ContactGeometry { gap, normal, point: centre - normal * (radius + 0.5 * gap) }
     }
 }
 
@@ -71,20 +67,15 @@ pub fn contact(surface: &SurfaceGeometry, centre: &Vector3<f64>, radius: f64) ->
         SurfaceGeometry::Plane { point, normal } => {
             ball_plane::contact(centre, radius, point, normal)
         }
-        SurfaceGeometry::Cylinder {
-            axis_point,
-            direction,
-            radius: pin,
-        } => ball_pin::contact(centre, radius, axis_point, direction, *pin),
-        SurfaceGeometry::Sphere {
-            centre: fixed,
-            radius: r_fixed,
-        } => ball_ball::contact(centre, radius, fixed, *r_fixed),
-        SurfaceGeometry::ConcaveCylinder {
-            axis_point,
-            direction,
-            radius: groove,
-        } => ball_groove::contact(centre, radius, axis_point, direction, *groove),
+        SurfaceGeometry::Cylinder { axis_point, direction, radius: pin } => {
+            ball_pin::contact(centre, radius, axis_point, direction, *pin)
+        }
+        SurfaceGeometry::Sphere { centre: fixed, radius: r_fixed } => {
+            ball_ball::contact(centre, radius, fixed, *r_fixed)
+        }
+        SurfaceGeometry::ConcaveCylinder { axis_point, direction, radius: groove } => {
+            ball_groove::contact(centre, radius, axis_point, direction, *groove)
+        }
     }
 }
 
@@ -104,19 +95,8 @@ pub fn pin_contact(
             axis_point: fixed,
             direction: fixed_direction,
             radius: fixed_radius,
-        } => pin_pin::contact(
-            axis_point,
-            direction,
-            radius,
-            fixed,
-            fixed_direction,
-            *fixed_radius,
-        ),
-        _ => ContactGeometry {
-            gap: f64::NAN,
-            normal: Vector3::zeros(),
-            point: *axis_point,
-        },
+        } => pin_pin::contact(axis_point, direction, radius, fixed, fixed_direction, *fixed_radius),
+        _ => ContactGeometry { gap: f64::NAN, normal: Vector3::zeros(), point: *axis_point },
     }
 }
 
@@ -134,40 +114,24 @@ pub fn parry_shape(
 ) -> (SharedShape, Pose) {
     let v = |v: &Vector3<f64>| Vector::new(v.x, v.y, v.z);
     match *surface {
-        SurfaceGeometry::Plane { point, normal } => (
-            SharedShape::new(HalfSpace::new(v(&normal))),
-            Pose::from_translation(v(&point)),
-        ),
-        SurfaceGeometry::Cylinder {
-            axis_point,
-            direction,
-            radius,
-        } => {
+        SurfaceGeometry::Plane { point, normal } => {
+            (SharedShape::new(HalfSpace::new(v(&normal))), Pose::from_translation(v(&point)))
+        }
+        SurfaceGeometry::Cylinder { axis_point, direction, radius } => {
             let foot = ball_centre - axis_offset(ball_centre, &axis_point, &direction);
-            let (a, b) = (
-                foot - direction * half_length,
-                foot + direction * half_length,
-            );
+            let (a, b) = (foot - direction * half_length, foot + direction * half_length);
             let capsule = Capsule::new(v(&a), v(&b), radius);
             (SharedShape::new(capsule), Pose::IDENTITY)
         }
-        SurfaceGeometry::Sphere { centre, radius } => (
-            SharedShape::new(Ball::new(radius)),
-            Pose::from_translation(v(&centre)),
-        ),
-        SurfaceGeometry::ConcaveCylinder {
-            axis_point,
-            direction,
-            radius,
-        } => {
+        SurfaceGeometry::Sphere { centre, radius } => {
+            (SharedShape::new(Ball::new(radius)), Pose::from_translation(v(&centre)))
+        }
+        SurfaceGeometry::ConcaveCylinder { axis_point, direction, radius } => {
             // parry's cylinder lies along its local y axis.
             let foot = ball_centre - axis_offset(ball_centre, &axis_point, &direction);
             let rotation = Rotation::from_rotation_arc(Vector::Y, v(&direction));
             let cylinder = Cylinder::new(half_length, radius);
-            (
-                SharedShape::new(cylinder),
-                Pose::from_parts(v(&foot), rotation),
-            )
+            (SharedShape::new(cylinder), Pose::from_parts(v(&foot), rotation))
         }
     }
 }

@@ -32,10 +32,7 @@ pub fn install() -> Result<(), Error> {
         .map_err(|e| Error::new(format!("cannot handle signals: {e}")))?;
     std::thread::spawn(move || {
         for sig in signals.forever() {
-            if RECEIVED
-                .compare_exchange(0, sig, Ordering::SeqCst, Ordering::SeqCst)
-                .is_err()
-            {
+            if RECEIVED.compare_exchange(0, sig, Ordering::SeqCst, Ordering::SeqCst).is_err() {
                 stop(sig);
             }
             kinrepro::cancel::request();
@@ -67,10 +64,7 @@ pub fn received() -> Option<(u8, String)> {
         0 => None,
         sig => Some((
             (128 + sig) as u8,
-            format!(
-                "{}: interrupted; no output file replaced by a partial one",
-                name(sig)
-            ),
+            format!("{}: interrupted; no output file replaced by a partial one", name(sig)),
         )),
     }
 }

@@ -34,11 +34,7 @@ pub const GRID_CHECK_WARN: f64 = 0.02;
 
 /// A parameter value with its unit (support compliance in m/N).
 fn value(name: &str, v: f64) -> String {
-    if name == "support_compliance" {
-        format!("{v:.4e} m/N")
-    } else {
-        format!("{v:.5}")
-    }
+    if name == "support_compliance" { format!("{v:.4e} m/N") } else { format!("{v:.5}") }
 }
 
 /// One line per fitted parameter: estimate, interval, flags.
@@ -84,11 +80,7 @@ fn correlation_lines(r: &Correlation) -> String {
     let params = r.parameters.iter().map(|n| Column::right(n).fixed(3));
     let mut t = Table::new("<").with(params).indent(2);
     for (n, row) in r.parameters.iter().zip(&r.matrix) {
-        t.row(
-            std::iter::once(n.into())
-                .chain(row.iter().map(|v| Cell::Num(*v)))
-                .collect(),
-        );
+        t.row(std::iter::once(n.into()).chain(row.iter().map(|v| Cell::Num(*v))).collect());
     }
     "correlation of the estimates (sandwich covariance at the estimate):\n".to_string() + &t.text()
 }
@@ -101,12 +93,7 @@ pub fn parameters_summary(c: &Calibration) -> String {
         .parameters
         .iter()
         .map(|(n, p)| {
-            format!(
-                "{n} {} [{}, {}]",
-                value(n, p.estimate),
-                value(n, p.low),
-                value(n, p.high)
-            )
+            format!("{n} {} [{}, {}]", value(n, p.estimate), value(n, p.low), value(n, p.high))
         })
         .collect();
     format!("{} ({:.0} %)", items.join(", "), level * 100.0)
@@ -264,11 +251,10 @@ impl PredictionReport {
     /// The document of `predict --format json` ([`PredictionDocument`]).
     pub fn document(&self) -> PredictionDocument {
         let c = &self.calibration;
-        let mut measured = self.predictions.iter().map(|p| {
-            p.measured
-                .as_ref()
-                .map(|(point, dofs)| MeasuredBlock::new(point, dofs))
-        });
+        let mut measured = self
+            .predictions
+            .iter()
+            .map(|p| p.measured.as_ref().map(|(point, dofs)| MeasuredBlock::new(point, dofs)));
         PredictionDocument {
             study: self.study().map_variants(|variant| PredictedVariant {
                 variant,
@@ -323,14 +309,7 @@ impl PredictionReport {
                             format!("{:.3} ({:.3})", nano(f.measured_sigma), nano(f.noise_sigma))
                         });
                     let interval = format!("[{:>9.3}, {:>9.3}]", bound(lo, j), bound(hi, j));
-                    t.row(cells![
-                        &pt.name,
-                        d.name(),
-                        m.values()[j],
-                        d.unit(),
-                        interval,
-                        meas
-                    ]);
+                    t.row(cells![&pt.name, d.name(), m.values()[j], d.unit(), interval, meas]);
                 }
             }
             s += &t.text();

@@ -38,9 +38,7 @@ fn rows(r: &PredictionReport) -> Vec<Row> {
             let pt = p.variant.points.first()?;
             let stem = Path::new(&p.variant.scene)
                 .file_stem()
-                .map_or(p.variant.scene.clone(), |s| {
-                    s.to_string_lossy().into_owned()
-                });
+                .map_or(p.variant.scene.clone(), |s| s.to_string_lossy().into_owned());
             let measured = std::array::from_fn(|j| {
                 p.measured
                     .as_ref()
@@ -68,15 +66,10 @@ pub fn plot_predictions(
     let p = path.display().to_string();
     let data = rows(report);
     if data.is_empty() {
-        return Err(PlotError::Empty {
-            path: p,
-            reason: "no prediction with an interval".into(),
-        });
+        return Err(PlotError::Empty { path: p, reason: "no prediction with an interval".into() });
     }
-    let err = |e: &dyn std::fmt::Display| PlotError::Draw {
-        path: p.clone(),
-        reason: e.to_string(),
-    };
+    let err =
+        |e: &dyn std::fmt::Display| PlotError::Draw { path: p.clone(), reason: e.to_string() };
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (1100, 520)).into_drawing_area();
@@ -87,9 +80,7 @@ pub fn plot_predictions(
             super::parameters_summary(&report.calibration),
             report.calibration.scene
         );
-        let root = root
-            .titled(&title, ("sans-serif", 13))
-            .map_err(|e| err(&e))?;
+        let root = root.titled(&title, ("sans-serif", 13)).map_err(|e| err(&e))?;
         let (left, right) = root.split_horizontally(550);
         panel(&left, &data, 0, "translations", "nm").map_err(|e| err(&e))?;
         panel(&right, &data, 3, "rotations", "nrad").map_err(|e| err(&e))?;
@@ -114,10 +105,7 @@ fn panel<DB: DrawingBackend>(
         * 1.15;
     let labels: Vec<String> = data.iter().map(|r| r.label.clone()).collect();
     let mut chart = ChartBuilder::on(area)
-        .caption(
-            format!("predicted σ with 90 % prediction interval, {title}"),
-            ("sans-serif", 16),
-        )
+        .caption(format!("predicted σ with 90 % prediction interval, {title}"), ("sans-serif", 16))
         .margin(12)
         .x_label_area_size(40)
         .y_label_area_size(70)
@@ -138,11 +126,7 @@ fn panel<DB: DrawingBackend>(
         .x_desc("scene")
         .y_desc(format!("σ [{unit}]"))
         .draw()?;
-    let colors = [
-        RGBColor(31, 119, 180),
-        RGBColor(214, 39, 40),
-        RGBColor(44, 160, 44),
-    ];
+    let colors = [RGBColor(31, 119, 180), RGBColor(214, 39, 40), RGBColor(44, 160, 44)];
     for (c, j) in (first..first + 3).enumerate() {
         let col = colors[c];
         let dx = (c as f64 - 1.0) * 0.2;

@@ -43,10 +43,7 @@ pub fn contact_table(e: &ContactEvaluation) -> String {
     row("normal load", format!("{:.6} N", e.load_n));
     let gpa = |v: f64| format!("{:.4} GPa", v / 1e9);
     row("effective modulus E*", gpa(e.effective_modulus_pa));
-    row(
-        "effective shear modulus G*",
-        gpa(e.effective_shear_modulus_pa),
-    );
+    row("effective shear modulus G*", gpa(e.effective_shear_modulus_pa));
     row("relative radii Rx, Ry", format!("{rx:.6}, {ry:.6} mm"));
     let k = e.hertz_constant;
     row("Hertz constant K (F = K d^1.5)", format!("{k:.6e} N/m^1.5"));
@@ -57,18 +54,9 @@ pub fn contact_table(e: &ContactEvaluation) -> String {
     let k = e.normal_stiffness_n_per_m;
     row("normal stiffness dF/dd", format!("{k:.6e} N/m"));
     let k = e.tangential_stiffness_n_per_m;
-    row(
-        "tangential stiffness k_t",
-        format!("{k:.6e} N/m (geometric mean)"),
-    );
-    let (ka, kb) = (
-        e.tangential_stiffness_major_n_per_m,
-        e.tangential_stiffness_minor_n_per_m,
-    );
-    row(
-        "k_t along a, along b (Mindlin)",
-        format!("{ka:.6e}, {kb:.6e} N/m"),
-    );
+    row("tangential stiffness k_t", format!("{k:.6e} N/m (geometric mean)"));
+    let (ka, kb) = (e.tangential_stiffness_major_n_per_m, e.tangential_stiffness_minor_n_per_m);
+    row("k_t along a, along b (Mindlin)", format!("{ka:.6e}, {kb:.6e} N/m"));
     row("max subsurface shear tau_max", mpa(e.max_shear_stress_pa));
     let d = e.max_shear_depth_m * 1e6;
     row("depth of tau_max", format!("{d:.4} um"));

@@ -18,11 +18,7 @@ pub fn left_out_notes<'a>(per_contact: impl IntoIterator<Item = &'a [LeftOut]>) 
     groups
         .into_iter()
         .map(|(l, contacts)| {
-            let factor = if l.missing == "allowable_pressure" {
-                "SF_p"
-            } else {
-                "SF_tau"
-            };
+            let factor = if l.missing == "allowable_pressure" { "SF_p" } else { "SF_tau" };
             let list: Vec<String> = contacts.iter().map(|c| c.to_string()).collect();
             format!(
                 "NOTE: contact{} {}: {factor} and SF leave out `{}`, which has no `{}`; they \

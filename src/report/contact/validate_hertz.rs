@@ -86,11 +86,8 @@ pub fn conformity_table(studies: &[ConformityStudy]) -> String {
             ">R_g/r; >a/R_x:.4; >exact: approach [%]:.3; >semi-axes [%]; >quad.: approach [%]:.3; >semi-axes [%]; >exact/quad.: approach [%]:.3; >semi-axes [%]; >DOFs; >t [s]:.1",
         );
         for r in &st.rows {
-            let (e, q, g) = (
-                r.semi_axes_error_rel,
-                r.quadratic_semi_axes_error_rel,
-                r.gap_effect_rel,
-            );
+            let (e, q, g) =
+                (r.semi_axes_error_rel, r.quadratic_semi_axes_error_rel, r.gap_effect_rel);
             let star = if r.bisection { "*" } else { "" };
             t.row(cells![
                 format!("{star}{:.5}", r.groove_over_ball),

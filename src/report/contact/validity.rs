@@ -25,12 +25,7 @@ pub enum HertzValidity {
 /// The smallest radius of curvature of either body [m] (flat directions
 /// left out), or `None` for two flats.
 pub fn smallest_body_radius(c: &PairCurvature) -> Option<f64> {
-    c.radii1
-        .iter()
-        .chain(&c.radii2)
-        .map(|r| r.abs())
-        .filter(|r| r.is_finite())
-        .reduce(f64::min)
+    c.radii1.iter().chain(&c.radii2).map(|r| r.abs()).filter(|r| r.is_finite()).reduce(f64::min)
 }
 
 /// Hertz's validity at normal load `load` [N] (module doc): meaningless if
@@ -72,11 +67,7 @@ pub fn hertz_validity(h: &HertzLaw, c: &PairCurvature, load: f64) -> HertzValidi
 /// ([`ELEMENT_DIAMETER_MAX`] / 2), or for a principal radius (`--radii1`,
 /// `--radii2`, which also describe canoe patches) above [`CANOE_RADIUS_MAX`].
 pub fn radius_hint(flag: &str, r: f64, principal: bool) -> Option<String> {
-    let max = if principal {
-        CANOE_RADIUS_MAX
-    } else {
-        ELEMENT_DIAMETER_MAX / 2.0
-    };
+    let max = if principal { CANOE_RADIUS_MAX } else { ELEMENT_DIAMETER_MAX / 2.0 };
     (r.is_finite() && r.abs() > max).then(|| {
         format!(
             "{flag} {r}: a radius of {} m is implausibly large (limit {max} m): did you give \

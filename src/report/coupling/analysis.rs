@@ -85,16 +85,11 @@ impl StiffnessReport {
             .map(|(name, p)| {
                 let q = seating.pose().apply(p);
                 let m = k.matrix_at(&q);
-                let c = k
-                    .compliance_at(&q)
-                    .ok_or(ReportError::NotPositiveDefinite)?;
+                let c = k.compliance_at(&q).ok_or(ReportError::NotPositiveDefinite)?;
                 let pr = k.principal_at(&q).ok_or(ReportError::NotPositiveDefinite)?;
                 let conv = |v: &[(f64, Vector3<f64>); 3]| {
                     v.iter()
-                        .map(|(s, d)| PrincipalReport {
-                            stiffness: *s,
-                            direction: [d.x, d.y, d.z],
-                        })
+                        .map(|(s, d)| PrincipalReport { stiffness: *s, direction: [d.x, d.y, d.z] })
                         .collect()
                 };
                 Ok(StiffnessPoint {
@@ -148,10 +143,7 @@ impl StiffnessReport {
             let _ = writeln!(s);
             let [x, y, z] = p.position_m;
             let _ = writeln!(s, "point {} at ({x:.4}, {y:.4}, {z:.4}) m", p.name);
-            let _ = writeln!(
-                s,
-                "  stiffness matrix (u [m], phi [rad]) -> (F [N], M [N m]), SI:"
-            );
+            let _ = writeln!(s, "  stiffness matrix (u [m], phi [rad]) -> (F [N], M [N m]), SI:");
             for (i, row) in p.matrix.iter().enumerate() {
                 let cells: Vec<String> = (row.iter().enumerate())
                     .map(|(j, &v)| format!("{:>12.4e}", rounding_zero(&p.matrix, i, j, v)))
@@ -188,11 +180,7 @@ impl StiffnessReport {
 /// DOFs): the table prints 0 for it, so that it does not change with the
 /// order of floating-point operations; the JSON keeps the computed value.
 fn rounding_zero(m: &[[f64; 6]; 6], i: usize, j: usize, v: f64) -> f64 {
-    if i != j && v.abs() < 1e-9 * (m[i][i] * m[j][j]).abs().sqrt() {
-        0.0
-    } else {
-        v
-    }
+    if i != j && v.abs() < 1e-9 * (m[i][i] * m[j][j]).abs().sqrt() { 0.0 } else { v }
 }
 
 /// The deflection of one point under the load.

@@ -7,10 +7,9 @@ pub fn force_text(f: &PreloadForce) -> String {
     let (d, p) = (f.direction, f.point);
     let law = match f.law {
         ForceLaw::Constant => String::new(),
-        ForceLaw::Spring {
-            stiffness,
-            free_length,
-        } => format!(", spring of {stiffness} N/m, free length {free_length} m"),
+        ForceLaw::Spring { stiffness, free_length } => {
+            format!(", spring of {stiffness} N/m, free length {free_length} m")
+        }
         ForceLaw::Weight => ", the weight of the moving half".to_string(),
     };
     format!(
@@ -26,13 +25,7 @@ pub fn summary(p: &Preload) -> String {
         [one] => force_text(one),
         _ => {
             let r = p.resultant().map(|v| v + 0.0);
-            format!(
-                "{} forces, resultant ({:.4}, {:.4}, {:.4}) N",
-                p.forces.len(),
-                r.x,
-                r.y,
-                r.z
-            )
+            format!("{} forces, resultant ({:.4}, {:.4}, {:.4}) N", p.forces.len(), r.x, r.y, r.z)
         }
     }
 }
@@ -43,7 +36,5 @@ pub fn force_lines(p: &Preload, indent: &str) -> String {
         return String::new();
     }
     let lines = p.forces.iter().enumerate();
-    lines
-        .map(|(i, f)| format!("{indent}preload force {}: {}\n", i + 1, force_text(f)))
-        .collect()
+    lines.map(|(i, f)| format!("{indent}preload force {}: {}\n", i + 1, force_text(f))).collect()
 }

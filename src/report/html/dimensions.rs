@@ -66,12 +66,8 @@ pub fn ball_circle(c: &Coupling) -> Vec<Shape> {
 /// `o`, radius `r`), with its extension lines.
 pub fn ball_diameter(o: P, r: f64) -> Vec<Shape> {
     let y = o.1 + 1.3 * r;
-    let ext = |x: f64| Shape::Line {
-        a: (x, o.1),
-        b: (x, y + 0.1 * r),
-        width_m: 0.0,
-        colour: FIXED,
-    };
+    let ext =
+        |x: f64| Shape::Line { a: (x, o.1), b: (x, y + 0.1 * r), width_m: 0.0, colour: FIXED };
     vec![
         ext(o.0 - r),
         ext(o.0 + r),

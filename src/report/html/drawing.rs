@@ -40,19 +40,12 @@ struct Proj {
 
 impl Proj {
     fn top() -> Self {
-        Proj {
-            u: Vector3::x(),
-            v: Vector3::y(),
-        }
+        Proj { u: Vector3::x(), v: Vector3::y() }
     }
     /// Looking along the radial direction of a ball at `c`.
     fn along_radius(c: &Vector3<f64>) -> Self {
         let r = Vector3::new(c.x, c.y, 0.0);
-        let u = if r.norm() > 1e-12 {
-            Vector3::z().cross(&r).normalize()
-        } else {
-            Vector3::x()
-        };
+        let u = if r.norm() > 1e-12 { Vector3::z().cross(&r).normalize() } else { Vector3::x() };
         Proj { u, v: Vector3::z() }
     }
     /// The side view of ball `b`: along the axis of its V (the cross
@@ -84,21 +77,11 @@ fn force_vector(k: &ContactResult) -> Vector3<f64> {
 /// The layout and the close-ups of every ball, with the legend.
 pub fn coupling_views(id: &str, (scene, c): (&Scene, &Coupling), s: &Seating) -> String {
     let r = c.balls.iter().map(|b| b.radius).fold(0.0, f64::max);
-    let fmax = s
-        .contacts
-        .iter()
-        .map(|k| force_vector(k).norm())
-        .fold(0.0, f64::max);
+    let fmax = s.contacts.iter().map(|k| force_vector(k).norm()).fold(0.0, f64::max);
     // The longest contact force is drawn 1.2 ball radii long.
     let scale = if fmax > 0.0 { 1.2 * r / fmax } else { 0.0 };
     let mut out = String::from("<div class=\"views\">\n");
-    let layout = svg(
-        &format!("{id}-layout"),
-        640.0,
-        &layout_shapes(scene, c, s),
-        None,
-        None,
-    );
+    let layout = svg(&format!("{id}-layout"), 640.0, &layout_shapes(scene, c, s), None, None);
     let _ = writeln!(
         out,
         "<figure data-check=\"drawing\" id=\"{id}-layout\">{layout}<figcaption>layout, top view (x right, y up)</figcaption></figure>"
@@ -108,15 +91,15 @@ pub fn coupling_views(id: &str, (scene, c): (&Scene, &Coupling), s: &Seating) ->
     let views: Vec<(usize, &str, &str, Vec<Shape>)> = (0..c.balls.len())
         .flat_map(|b| {
             let (side, along) = Proj::side(c, s, b);
-            [("top", "top view", Proj::top()), ("side", along, side)]
-                .into_iter()
-                .map(move |(tag, what, proj)| {
+            [("top", "top view", Proj::top()), ("side", along, side)].into_iter().map(
+                move |(tag, what, proj)| {
                     let mut shapes = ball_shapes(c, s, b, proj, scale);
                     if tag == "side" {
                         shapes.extend(side_dimensions(c, s, b, proj));
                     }
                     (b, tag, what, shapes)
-                })
+                },
+            )
         })
         .collect();
     let span = views
@@ -178,12 +161,7 @@ fn layout_shapes(scene: &Scene, c: &Coupling, s: &Seating) -> Vec<Shape> {
     out.extend((c.contacts.iter()).flat_map(|k| fixed_element(proj, &k.surface, r)));
     let centres: Vec<Vector3<f64>> = c.balls.iter().map(|b| s.pose().apply(&b.centre)).collect();
     for (i, (b, centre)) in c.balls.iter().zip(&centres).enumerate() {
-        out.push(Shape::Circle {
-            c: p(centre),
-            r: b.radius,
-            stroke: BALL,
-            fill: "#cfe6f5",
-        });
+        out.push(Shape::Circle { c: p(centre), r: b.radius, stroke: BALL, fill: "#cfe6f5" });
         // Outside the coupling, clear of the fixed elements.
         out.push(Shape::Text {
             at: p(&(centre + outward(centre) * 2.6 * r)),
@@ -192,18 +170,12 @@ fn layout_shapes(scene: &Scene, c: &Coupling, s: &Seating) -> Vec<Shape> {
         });
     }
     for k in &s.contacts {
-        out.push(Shape::Dot {
-            c: p(&Vector3::from(k.point_m)),
-            colour: CONTACT,
-        });
+        out.push(Shape::Dot { c: p(&Vector3::from(k.point_m)), colour: CONTACT });
     }
     let forces = &scene.preload.forces;
     for (i, f) in forces.iter().enumerate() {
         let pl = p(&f.point);
-        out.push(Shape::Dot {
-            c: pl,
-            colour: PRELOAD,
-        });
+        out.push(Shape::Dot { c: pl, colour: PRELOAD });
         out.push(Shape::Text {
             at: (pl.0 + 1.3 * r, pl.1 + 0.9 * r),
             text: match forces.len() {
@@ -245,19 +217,13 @@ fn layout_shapes(scene: &Scene, c: &Coupling, s: &Seating) -> Vec<Shape> {
 
 /// The indices of the contacts of ball `b`.
 fn contacts_of(c: &Coupling, b: usize) -> Vec<usize> {
-    (0..c.contacts.len())
-        .filter(|&i| c.contacts[i].ball == b)
-        .collect()
+    (0..c.contacts.len()).filter(|&i| c.contacts[i].ball == b).collect()
 }
 
 /// The horizontal unit vector from the axis to `p` (y off the axis).
 fn outward(p: &Vector3<f64>) -> Vector3<f64> {
     let r = Vector3::new(p.x, p.y, 0.0);
-    if r.norm() > 1e-12 {
-        r.normalize()
-    } else {
-        Vector3::y()
-    }
+    if r.norm() > 1e-12 { r.normalize() } else { Vector3::y() }
 }
 
 /// A side view's dimensions: the ball's diameter (not for crossed pins)
@@ -290,9 +256,8 @@ fn ball_shapes(c: &Coupling, s: &Seating, b: usize, proj: Proj, scale: f64) -> V
     }
     // Crossed pins: the moving pins (a band along each axis, or a circle
     // seen end-on) instead of the ball.
-    let pins: Vec<_> = (mine.iter())
-        .filter_map(|&i| c.contacts[i].axis.map(|a| (&c.contacts[i], a)))
-        .collect();
+    let pins: Vec<_> =
+        (mine.iter()).filter_map(|&i| c.contacts[i].axis.map(|a| (&c.contacts[i], a))).collect();
     if pins.is_empty() {
         out.push(Shape::Circle {
             c: p(&s.pose().apply(&ball.centre)),
@@ -304,38 +269,17 @@ fn ball_shapes(c: &Coupling, s: &Seating, b: usize, proj: Proj, scale: f64) -> V
     for (k, axis) in pins {
         let (at, d) = (s.pose().apply(&k.centre), s.pose().rotation * axis);
         out.push(match rod_ends(proj, &at, &d, 1.6 * r, k.radius) {
-            None => Shape::Circle {
-                c: p(&at),
-                r: k.radius,
-                stroke: BALL,
-                fill: "#cfe6f5",
-            },
-            Some((a, b)) => Shape::Line {
-                a,
-                b,
-                width_m: 2.0 * k.radius,
-                colour: "#cfe6f5",
-            },
+            None => Shape::Circle { c: p(&at), r: k.radius, stroke: BALL, fill: "#cfe6f5" },
+            Some((a, b)) => Shape::Line { a, b, width_m: 2.0 * k.radius, colour: "#cfe6f5" },
         });
     }
     for &i in &mine {
         let k = &s.contacts[i];
         let at = Vector3::from(k.point_m);
         let n = Vector3::from(k.normal);
-        out.push(Shape::Arrow {
-            a: p(&at),
-            b: p(&(at + n * 0.8 * r)),
-            colour: NORMAL,
-        });
-        out.push(Shape::Arrow {
-            a: p(&at),
-            b: p(&(at + force_vector(k) * scale)),
-            colour: FORCE,
-        });
-        out.push(Shape::Dot {
-            c: p(&at),
-            colour: CONTACT,
-        });
+        out.push(Shape::Arrow { a: p(&at), b: p(&(at + n * 0.8 * r)), colour: NORMAL });
+        out.push(Shape::Arrow { a: p(&at), b: p(&(at + force_vector(k) * scale)), colour: FORCE });
+        out.push(Shape::Dot { c: p(&at), colour: CONTACT });
         out.push(Shape::Text {
             at: p(&(at - n * 0.3 * r)),
             text: format!("{}", i + 1),
@@ -355,10 +299,7 @@ fn rod_ends(
     reach: f64,
     radius: f64,
 ) -> Option<((f64, f64), (f64, f64))> {
-    let (a, b) = (
-        proj.p(&(at - direction * reach)),
-        proj.p(&(at + direction * reach)),
-    );
+    let (a, b) = (proj.p(&(at - direction * reach)), proj.p(&(at + direction * reach)));
     ((a.0 - b.0).hypot(a.1 - b.1) >= 0.5 * radius).then_some((a, b))
 }
 
@@ -367,41 +308,26 @@ fn fixed_element(proj: Proj, g: &SurfaceGeometry, r: f64) -> Vec<Shape> {
     let grey = "#c6ccd3";
     match *g {
         SurfaceGeometry::Sphere { centre, radius } => {
-            vec![Shape::Circle {
-                c: p(&centre),
-                r: radius,
-                stroke: FIXED,
-                fill: "#eaeef2",
-            }]
+            vec![Shape::Circle { c: p(&centre), r: radius, stroke: FIXED, fill: "#eaeef2" }]
         }
-        SurfaceGeometry::Cylinder {
-            axis_point,
-            direction,
-            radius,
-        }
-        | SurfaceGeometry::ConcaveCylinder {
-            axis_point,
-            direction,
-            radius,
-        } => {
+        SurfaceGeometry::Cylinder { axis_point, direction, radius }
+        | SurfaceGeometry::ConcaveCylinder { axis_point, direction, radius } => {
             // A gothic-arch flank is drawn as the outline of its cylinder.
             let concave = matches!(g, SurfaceGeometry::ConcaveCylinder { .. });
-            vec![
-                match rod_ends(proj, &axis_point, &direction, 1.6 * r, radius) {
-                    None => Shape::Circle {
-                        c: p(&axis_point),
-                        r: radius,
-                        stroke: FIXED,
-                        fill: if concave { "none" } else { "#eaeef2" },
-                    },
-                    Some((a, b)) => Shape::Line {
-                        a,
-                        b,
-                        width_m: if concave { 0.0 } else { 2.0 * radius },
-                        colour: if concave { FIXED } else { grey },
-                    },
+            vec![match rod_ends(proj, &axis_point, &direction, 1.6 * r, radius) {
+                None => Shape::Circle {
+                    c: p(&axis_point),
+                    r: radius,
+                    stroke: FIXED,
+                    fill: if concave { "none" } else { "#eaeef2" },
                 },
-            ]
+                Some((a, b)) => Shape::Line {
+                    a,
+                    b,
+                    width_m: if concave { 0.0 } else { 2.0 * radius },
+                    colour: if concave { FIXED } else { grey },
+                },
+            }]
         }
         SurfaceGeometry::Plane { point, normal } => {
             let (nx, ny) = p(&normal);

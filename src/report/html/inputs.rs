@@ -46,20 +46,13 @@ pub fn scene_input(scene: Scene, coupling: Coupling) -> Result<SceneInput, HtmlE
         file: scene.file.clone(),
         reason: format!("cannot read the scene file: {e}"),
     })?;
-    Ok(SceneInput {
-        text,
-        scene,
-        coupling,
-    })
+    Ok(SceneInput { text, scene, coupling })
 }
 
 /// Read a study JSON file and the scenes it names.
 pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
     let source = path.display().to_string();
-    let input = |reason: String| HtmlError::Input {
-        file: source.clone(),
-        reason,
-    };
+    let input = |reason: String| HtmlError::Input { file: source.clone(), reason };
     let text = crate::input::read_to_string(path)
         .map_err(|e| input(format!("cannot read the file: {e}")))?;
     let report: StudyReport = serde_json::from_str(&text)
@@ -90,10 +83,8 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
         let text = crate::input::read_to_string(&scene_path)
             .map_err(|e| input(format!("{}: cannot read: {e}", scene_path.display())))?;
         let mut scene = Scene::parse(&text, &v.scene)?;
-        let mut coupling = Coupling::new(&scene).map_err(|source| HtmlError::Assembly {
-            file: v.scene.clone(),
-            source,
-        })?;
+        let mut coupling = Coupling::new(&scene)
+            .map_err(|source| HtmlError::Assembly { file: v.scene.clone(), source })?;
         // A prediction ran the scene with the calibrated parameters.
         prediction.apply(&mut scene, &mut coupling);
         if v.fingerprint.fingerprint_version != FINGERPRINT_VERSION {
@@ -118,18 +109,9 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
                 v.fingerprint.scene_content
             )));
         }
-        scenes.push(SceneInput {
-            text,
-            scene,
-            coupling,
-        });
+        scenes.push(SceneInput { text, scene, coupling });
     }
-    Ok(StudyInput {
-        source,
-        report,
-        scenes,
-        prediction,
-    })
+    Ok(StudyInput { source, report, scenes, prediction })
 }
 
 /// The scene path as written, else relative to the JSON's folder, and
@@ -138,15 +120,9 @@ pub fn load_study(path: &Path) -> Result<StudyInput, HtmlError> {
 /// licence to read any file the user can read. The error names the path,
 /// never the content of a file.
 fn locate(scene: &str, json_dir: &Path) -> Result<PathBuf, Unlocated> {
-    let json_dir = if json_dir.as_os_str().is_empty() {
-        Path::new(".")
-    } else {
-        json_dir
-    };
-    let roots: Vec<PathBuf> = [Path::new("."), json_dir]
-        .iter()
-        .filter_map(|d| d.canonicalize().ok())
-        .collect();
+    let json_dir = if json_dir.as_os_str().is_empty() { Path::new(".") } else { json_dir };
+    let roots: Vec<PathBuf> =
+        [Path::new("."), json_dir].iter().filter_map(|d| d.canonicalize().ok()).collect();
     let p = PathBuf::from(scene);
     let mut outside = false;
     for candidate in [p.clone(), json_dir.join(&p)] {

@@ -91,11 +91,8 @@ pub struct HtmlReport {
 impl HtmlReport {
     /// The HTML document.
     pub fn render(&self) -> Result<String, HtmlError> {
-        let variants: Vec<&VariantReport> = self
-            .studies
-            .iter()
-            .flat_map(|s| s.report.variants.iter())
-            .collect();
+        let variants: Vec<&VariantReport> =
+            self.studies.iter().flat_map(|s| s.report.variants.iter()).collect();
         // Reference rows: the --reference file's, then the measured sigma
         // of a prediction's calibrated design.
         let mut references = self.references.clone();
@@ -131,25 +128,13 @@ impl HtmlReport {
             }
             body.push_str("</section>\n");
         }
-        let scenes = self
-            .studies
-            .iter()
-            .flat_map(|s| s.report.variants.iter().zip(&s.scenes));
+        let scenes = self.studies.iter().flat_map(|s| s.report.variants.iter().zip(&s.scenes));
         for (i, (v, scene)) in scenes.enumerate() {
             scene_section(&mut body, i + 1, v, scene)?;
         }
         for (i, s) in self.sections.iter().enumerate() {
-            let _ = writeln!(
-                body,
-                "<section id=\"extra-{}\"><h2>{}</h2>",
-                i + 1,
-                escape(&s.title)
-            );
-            body.push_str(&page::figure(
-                &format!("extra-{}-svg", i + 1),
-                &s.svg,
-                &s.title,
-            ));
+            let _ = writeln!(body, "<section id=\"extra-{}\"><h2>{}</h2>", i + 1, escape(&s.title));
+            body.push_str(&page::figure(&format!("extra-{}-svg", i + 1), &s.svg, &s.title));
             body.push_str("</section>\n");
         }
         let sources: Vec<&str> = self.studies.iter().map(|s| s.source.as_str()).collect();
@@ -178,12 +163,7 @@ impl HtmlReport {
         }
         body.push_str("</header>\n<nav><ul>\n");
         for (id, title) in toc {
-            let _ = writeln!(
-                body,
-                "<li><a href=\"#{}\">{}</a></li>",
-                escape(id),
-                escape(title)
-            );
+            let _ = writeln!(body, "<li><a href=\"#{}\">{}</a></li>", escape(id), escape(title));
         }
         body.push_str("</ul></nav>\n");
         if self.studies.is_empty() {
@@ -209,11 +189,7 @@ impl HtmlReport {
         }
         if variants.iter().any(|v| !v.interchangeability.is_empty()) {
             body.push_str("<h3>Interchangeability (manufacturing tolerances; nominal friction and preload)</h3>\n");
-            body.push_str(&tables::sigma_table(
-                variants,
-                |v| &v.interchangeability,
-                &[],
-            ));
+            body.push_str(&tables::sigma_table(variants, |v| &v.interchangeability, &[]));
         }
         body.push_str("</section>\n");
     }
@@ -237,12 +213,8 @@ fn chart_caption(file: &str) -> &'static str {
 /// load, quasi-static with default settings, as the drawings show it.
 fn nominal_seating(scene: &Scene, c: &Coupling) -> Result<Seating, HtmlError> {
     let load = Load::nominal(scene);
-    crate::solve::quasistatic::seat(c, &load, &Default::default()).map_err(|source| {
-        HtmlError::Solve {
-            file: scene.file.clone(),
-            source,
-        }
-    })
+    crate::solve::quasistatic::seat(c, &load, &Default::default())
+        .map_err(|source| HtmlError::Solve { file: scene.file.clone(), source })
 }
 
 /// One scene: drawing, mechanics, scene text in both forms.
@@ -256,10 +228,8 @@ fn scene_section(
     let file = v.scene.clone();
     let seating = nominal_seating(&scene.scene, c)?;
     let load = Load::nominal(&scene.scene);
-    let k = CouplingStiffness::new(c, &seating, &load).map_err(|source| HtmlError::Solve {
-        file: file.clone(),
-        source,
-    })?;
+    let k = CouplingStiffness::new(c, &seating, &load)
+        .map_err(|source| HtmlError::Solve { file: file.clone(), source })?;
     let _ = writeln!(
         body,
         "<section id=\"scene-{n}\"><h2>{n}. {}</h2>\n<p class=\"muted\">{}</p>\n<h3>Coupling at the nominal seating</h3>",

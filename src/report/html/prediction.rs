@@ -91,21 +91,15 @@ impl PredictionInput {
             .iter()
             .filter_map(|v| v.measured.as_ref().map(|m| measured_row(&v.scene, m)))
             .collect();
-        Ok(PredictionInput {
-            calibration: extras.calibration,
-            measured,
-        })
+        Ok(PredictionInput { calibration: extras.calibration, measured })
     }
 
     /// The scene and coupling as the prediction ran them: the calibrated
     /// estimates in place of the scene's values.
     pub fn apply(&self, scene: &mut Scene, coupling: &mut Coupling) {
         if let Some(c) = &self.calibration {
-            let values: BTreeMap<String, f64> = c
-                .parameters
-                .iter()
-                .map(|(k, p)| (k.clone(), p.estimate))
-                .collect();
+            let values: BTreeMap<String, f64> =
+                c.parameters.iter().map(|(k, p)| (k.clone(), p.estimate)).collect();
             apply_named(scene, coupling, &values);
         }
     }
@@ -130,11 +124,7 @@ impl PredictionInput {
                 100.0 * p.level,
                 number(p.low),
                 number(p.high),
-                if p.determined {
-                    ""
-                } else {
-                    ", NOT DETERMINED by the data"
-                }
+                if p.determined { "" } else { ", NOT DETERMINED by the data" }
             );
         }
         let _ = write!(

@@ -74,29 +74,15 @@ pub enum Shape {
 
 /// Bounds (x0, y0, x1, y1) of the shapes, with a margin.
 pub fn bounds(shapes: &[Shape]) -> (f64, f64, f64, f64) {
-    let mut b = (
-        f64::INFINITY,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::NEG_INFINITY,
-    );
+    let mut b = (f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
     let mut add = |(x, y): (f64, f64), r: f64| {
-        b = (
-            b.0.min(x - r),
-            b.1.min(y - r),
-            b.2.max(x + r),
-            b.3.max(y + r),
-        );
+        b = (b.0.min(x - r), b.1.min(y - r), b.2.max(x + r), b.3.max(y + r));
     };
     for s in shapes {
         match s {
             Shape::Circle { c, r, .. } => add(*c, *r),
             Shape::Line { a, b, .. } | Shape::Arrow { a, b, .. } => {
-                let w = if let Shape::Line { width_m, .. } = s {
-                    width_m / 2.0
-                } else {
-                    0.0
-                };
+                let w = if let Shape::Line { width_m, .. } = s { width_m / 2.0 } else { 0.0 };
                 add(*a, w);
                 add(*b, w);
             }
@@ -172,24 +158,10 @@ pub fn svg(
     }
     let y = height - bar_room / 2.0;
     let len_m = round_down(0.3 * w / k);
-    bar(
-        &mut o,
-        8.0,
-        y,
-        len_m * k,
-        &format!("{} mm", len_m * 1e3),
-        "#000",
-    );
+    bar(&mut o, 8.0, y, len_m * k, &format!("{} mm", len_m * 1e3), "#000");
     if let Some((scale, fmax)) = forces.filter(|(s, f)| *s > 0.0 && *f > 0.0) {
         let f = round_down(0.8 * fmax);
-        bar(
-            &mut o,
-            w / 2.0 + 4.0,
-            y,
-            f * scale * k,
-            &format!("{f} N"),
-            FORCE,
-        );
+        bar(&mut o, w / 2.0 + 4.0, y, f * scale * k, &format!("{f} N"), FORCE);
     }
     o.push_str("</svg>");
     o
@@ -198,11 +170,7 @@ pub fn svg(
 /// The largest of 1, 2, 5 times a power of ten not above `v`.
 fn round_down(v: f64) -> f64 {
     let p = 10f64.powf(v.log10().floor());
-    [5.0, 2.0, 1.0]
-        .iter()
-        .map(|m| m * p)
-        .find(|c| *c <= v)
-        .unwrap_or(p)
+    [5.0, 2.0, 1.0].iter().map(|m| m * p).find(|c| *c <= v).unwrap_or(p)
 }
 
 fn bar(o: &mut String, x: f64, y: f64, w: f64, label: &str, col: &str) {
@@ -300,11 +268,7 @@ struct Labels {
 
 impl Labels {
     fn new(w: f64, h: f64) -> Self {
-        Labels {
-            w,
-            h,
-            boxes: Vec::new(),
-        }
+        Labels { w, h, boxes: Vec::new() }
     }
 
     /// The centre for `text` nearest its anchor `(x, y)` on rings of 8
@@ -314,22 +278,14 @@ impl Labels {
     fn place(&mut self, x: f64, y: f64, text: &str) -> (f64, f64) {
         let (bw, bh) = (0.62 * FONT * text.chars().count() as f64 + 2.0, 1.25 * FONT);
         let inside = |(cx, cy): (f64, f64)| {
-            let cx = cx.clamp(
-                bw / 2.0 + 1.0,
-                (self.w - bw / 2.0 - 1.0).max(bw / 2.0 + 1.0),
-            );
-            let cy = cy.clamp(
-                bh / 2.0 + 1.0,
-                (self.h - bh / 2.0 - 1.0).max(bh / 2.0 + 1.0),
-            );
+            let cx = cx.clamp(bw / 2.0 + 1.0, (self.w - bw / 2.0 - 1.0).max(bw / 2.0 + 1.0));
+            let cy = cy.clamp(bh / 2.0 + 1.0, (self.h - bh / 2.0 - 1.0).max(bh / 2.0 + 1.0));
             (cx, cy)
         };
         let boxed =
             |(cx, cy): (f64, f64)| [cx - bw / 2.0, cy - bh / 2.0, cx + bw / 2.0, cy + bh / 2.0];
         let clear = |b: &[f64; 4]| {
-            self.boxes
-                .iter()
-                .all(|o| b[2] <= o[0] || o[2] <= b[0] || b[3] <= o[1] || o[3] <= b[1])
+            self.boxes.iter().all(|o| b[2] <= o[0] || o[2] <= b[0] || b[3] <= o[1] || o[3] <= b[1])
         };
         let rings = (1..=12).flat_map(|ring| {
             (0..8).map(move |d| {

@@ -39,12 +39,7 @@ pub fn sweep_html(
     );
     body.push_str("<nav><ul>\n<li><a href=\"#run\">Run</a></li><li><a href=\"#designs\">Design points</a></li>\n");
     for (title, _) in &charts {
-        let _ = writeln!(
-            body,
-            "<li><a href=\"#{}\">{}</a></li>",
-            chart_id(title),
-            escape(title)
-        );
+        let _ = writeln!(body, "<li><a href=\"#{}\">{}</a></li>", chart_id(title), escape(title));
     }
     body.push_str("<li><a href=\"#coupling\">Base coupling</a></li><li><a href=\"#scene\">Base scene</a></li>\n</ul></nav>\n");
     body.push_str("<section id=\"run\"><h2>Run</h2>\n");
@@ -70,10 +65,7 @@ pub fn sweep_html(
         body,
         "<footer class=\"muted\">Written by kinrepro {VERSION}. Self-contained: inline CSS and SVG, no script, no network.</footer>"
     );
-    Ok(page::document(
-        &format!("kinrepro sweep: {}", r.name),
-        &body,
-    ))
+    Ok(page::document(&format!("kinrepro sweep: {}", r.name), &body))
 }
 
 fn chart_id(title: &str) -> String {
@@ -115,10 +107,7 @@ fn provenance(r: &SweepReport) -> String {
         ("design", design),
     ];
     for s in &r.sets {
-        rows.push((
-            "swept field",
-            format!("{} = {}", field_label(&s.field), s.values),
-        ));
+        rows.push(("swept field", format!("{} = {}", field_label(&s.field), s.values)));
     }
     rows.push((
         "Pareto objectives",
@@ -138,11 +127,7 @@ fn design_table(r: &SweepReport) -> String {
     let fields = r.sets.iter().map(|s| Column::left(field_label(&s.field)));
     let sigma = sigma_columns(|d| format!("σ_{} [{}]", d.symbol(), d.unit()));
     let tail = Column::list(">k_min [N/µm]:.2; >SF_p:.2; >μ_lim:.4; >margin:.4; <Pareto; <status");
-    let mut t = Table::new(">#")
-        .with(fields)
-        .with([Column::left("point")])
-        .with(sigma)
-        .with(tail);
+    let mut t = Table::new(">#").with(fields).with([Column::left("point")]).with(sigma).with(tail);
     let lead = 2 + r.sets.len();
     for d in &r.designs {
         let mut head = cells![d.index];

@@ -93,10 +93,7 @@ pub fn sigma_table(
             }
         }
     }
-    let points = variants
-        .iter()
-        .filter(|v| !v.partial)
-        .flat_map(|v| stats(v));
+    let points = variants.iter().filter(|v| !v.partial).flat_map(|v| stats(v));
     let methods = interval_methods(points, "none");
     let estimates = sigma_estimates(variants.iter().copied().filter(|v| !v.partial));
     t.html("sigma")

@@ -135,10 +135,9 @@ impl RunReport {
     fn pose_rows(&self, s: &mut String) {
         let mut t = pose_table("<point; <pose");
         for p in &self.points {
-            for (label, q) in [
-                ("from touching", &p.pose),
-                ("rel. to nominal mu", &p.pose_rel_nominal),
-            ] {
+            for (label, q) in
+                [("from touching", &p.pose), ("rel. to nominal mu", &p.pose_rel_nominal)]
+            {
                 t.row(pose_cells(cells![&p.name, label], q));
             }
         }
@@ -173,10 +172,7 @@ impl RunReport {
             s,
             "tau_max: maximum subsurface shear stress on the contact axis (closed form for circles, Boussinesq quadrature for ellipses); SF = allowable / actual, \"-\" where the materials give no allowable"
         );
-        let left_out = self
-            .contacts
-            .iter()
-            .map(|c| c.safety_factor_left_out.as_slice());
+        let left_out = self.contacts.iter().map(|c| c.safety_factor_left_out.as_slice());
         for note in crate::report::contact::safety::left_out_notes(left_out) {
             let _ = writeln!(s, "{note}");
         }

@@ -29,19 +29,14 @@ pub struct Chart {
 /// A short label of a variant: its scene file stem (they tell the variants
 /// apart), else its truncated name.
 pub fn variant_label(v: &VariantReport) -> String {
-    Path::new(&v.scene).file_stem().map_or_else(
-        || truncate(&v.name, 30),
-        |s| s.to_string_lossy().into_owned(),
-    )
+    Path::new(&v.scene)
+        .file_stem()
+        .map_or_else(|| truncate(&v.name, 30), |s| s.to_string_lossy().into_owned())
 }
 
 /// `label · point` where a variant has several evaluation points, else the label.
 fn series_label(v: &VariantReport, point: &str, points: usize) -> String {
-    if points > 1 {
-        format!("{} · {point}", variant_label(v))
-    } else {
-        variant_label(v)
-    }
+    if points > 1 { format!("{} · {point}", variant_label(v)) } else { variant_label(v) }
 }
 
 /// Bars of every variant and evaluation point, with intervals and the
@@ -141,28 +136,17 @@ pub fn study_charts(
     let mut charts = Vec::new();
     let mut add = |file_name, title: &str, svg| {
         let title = title.into();
-        charts.push(Chart {
-            file_name,
-            title,
-            svg,
-        });
+        charts.push(Chart { file_name, title, svg });
     };
     let with = |f: fn(&VariantReport) -> bool| full.iter().copied().filter(|v| f(v)).collect();
     let reseat: Vec<&VariantReport> = with(|v| !v.points.is_empty());
     if !reseat.is_empty() {
         let svg = sigma_bars_svg(&bars(&reseat, |v| &v.points, references), "re-seating σ")?;
-        add(
-            "sigma_bars.svg",
-            "Re-seating σ per DOF, with 90 % intervals",
-            svg,
-        );
+        add("sigma_bars.svg", "Re-seating σ per DOF, with 90 % intervals", svg);
     }
     let inter: Vec<&VariantReport> = with(|v| !v.interchangeability.is_empty());
     if !inter.is_empty() {
-        let svg = sigma_bars_svg(
-            &bars(&inter, |v| &v.interchangeability, &[]),
-            "interchange σ",
-        )?;
+        let svg = sigma_bars_svg(&bars(&inter, |v| &v.interchangeability, &[]), "interchange σ")?;
         let title = "Interchangeability σ (manufacturing tolerances), with 90 % intervals";
         add("interchange_sigma_bars.svg", title, svg);
     }
@@ -171,11 +155,7 @@ pub fn study_charts(
         let title = "Re-seating x-y scatter of every sample, per evaluation point";
         add("scatter_xy.svg", title, xy_scatter_svg(&xy)?);
         let title = "Convergence of σ with the number of samples, all six DOFs";
-        add(
-            "sigma_convergence.svg",
-            title,
-            convergence_svg(&convergence(&reseat)?)?,
-        );
+        add("sigma_convergence.svg", title, convergence_svg(&convergence(&reseat)?)?);
     }
     let xy = scatter(&inter, true);
     if !xy.is_empty() {

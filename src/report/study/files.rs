@@ -6,7 +6,7 @@ use std::io::Write as _;
 use std::path::Path;
 
 use crate::delimited::csv_cell;
-use crate::output::atomic::{self, AtomicFile, WriteError};
+use crate::output::atomic::{AtomicFile, WriteError};
 use crate::report::study::charts::study_charts;
 use crate::report::study::text::point_csv_rows;
 use crate::report::table::{Column, Table};
@@ -81,21 +81,10 @@ impl StudyReport {
         for c in charts {
             let path = dir.join(c.file_name);
             let mut f = AtomicFile::create(&path, force)?;
-            f.write_all(c.svg.as_bytes())
-                .map_err(|e| WriteError::io(&path, e))?;
+            f.write_all(c.svg.as_bytes()).map_err(|e| WriteError::io(&path, e))?;
             staged.push(f);
         }
         Ok(staged)
-    }
-
-    /// [`Self::stage_files`], committed at once; returns the paths written.
-    pub fn write_files(
-        &self,
-        dir: &Path,
-        force: bool,
-        samples_written: bool,
-    ) -> Result<Vec<String>, WriteError> {
-        atomic::commit_all(self.stage_files(dir, force, samples_written)?)
     }
 }
 
@@ -140,11 +129,7 @@ impl SamplesCsv {
             outputs: v.output_names.len(),
         };
         let names = v.inputs.iter().map(|i| i.name());
-        csv.record(
-            std::iter::once("index".into())
-                .chain(names)
-                .chain(v.output_names.clone()),
-        )?;
+        csv.record(std::iter::once("index".into()).chain(names).chain(v.output_names.clone()))?;
         Ok(csv)
     }
 
@@ -173,17 +158,9 @@ impl RecordSink for SamplesCsv {
 
     /// One sample's row.
     fn push(&mut self, r: &StudyRecord) -> Result<(), WriteError> {
-        let values = r
-            .physical
-            .iter()
-            .chain(&r.outputs)
-            .map(|v| format!("{v:e}"));
+        let values = r.physical.iter().chain(&r.outputs).map(|v| format!("{v:e}"));
         let missing = if r.centred() { 0 } else { self.outputs };
         let empty = std::iter::repeat_n(String::new(), missing);
-        self.record(
-            std::iter::once(r.index.to_string())
-                .chain(values)
-                .chain(empty),
-        )
+        self.record(std::iter::once(r.index.to_string()).chain(values).chain(empty))
     }
 }

@@ -72,12 +72,7 @@ pub struct VariantSigma {
 impl VariantSigma {
     /// Sigma without interval or reference.
     pub fn new(variant: impl Into<String>, sigma: [f64; 6]) -> Self {
-        VariantSigma {
-            variant: variant.into(),
-            sigma,
-            interval: None,
-            reference: None,
-        }
+        VariantSigma { variant: variant.into(), sigma, interval: None, reference: None }
     }
 }
 
@@ -149,8 +144,6 @@ pub(crate) fn headroom(max: f64) -> Result<f64> {
     if top.is_finite() {
         Ok(top)
     } else {
-        Err(PlotError::NonFinite {
-            what: "axis range (values too large)".into(),
-        })
+        Err(PlotError::NonFinite { what: "axis range (values too large)".into() })
     }
 }

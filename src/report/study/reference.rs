@@ -20,12 +20,7 @@ use crate::study::VariantReport;
 #[derive(Debug, thiserror::Error)]
 pub enum ReferenceError {
     #[error("{file}:{line}: {field}: {reason}")]
-    Row {
-        file: String,
-        line: usize,
-        field: String,
-        reason: String,
-    },
+    Row { file: String, line: usize, field: String, reason: String },
     #[error("{file}: {reason}")]
     File { file: String, reason: String },
 }
@@ -33,11 +28,7 @@ pub enum ReferenceError {
 /// The header a reference file must have.
 pub fn reference_header() -> Vec<String> {
     let dofs = Dof::ALL.map(Dof::key);
-    ["label", "scene", "point"]
-        .map(String::from)
-        .into_iter()
-        .chain(dofs)
-        .collect()
+    ["label", "scene", "point"].map(String::from).into_iter().chain(dofs).collect()
 }
 
 /// One row of a reference file.
@@ -53,9 +44,7 @@ pub struct ReferenceRow {
 impl ReferenceRow {
     /// The first row for variant `v` (by scene file stem or name) and `point`.
     pub fn find<'a>(rows: &'a [ReferenceRow], v: &VariantReport, point: &str) -> Option<&'a Self> {
-        let stem = Path::new(&v.scene)
-            .file_stem()
-            .map(|s| s.to_string_lossy().into_owned());
+        let stem = Path::new(&v.scene).file_stem().map(|s| s.to_string_lossy().into_owned());
         rows.iter()
             .find(|r| (Some(&r.scene) == stem.as_ref() || r.scene == v.name) && r.point == point)
     }
@@ -68,15 +57,9 @@ impl ReferenceRow {
 pub fn unshown<'a>(rows: &'a [ReferenceRow], variants: &[&VariantReport]) -> Vec<&'a ReferenceRow> {
     let shown: Vec<&ReferenceRow> = variants
         .iter()
-        .flat_map(|v| {
-            v.points
-                .iter()
-                .filter_map(|p| ReferenceRow::find(rows, v, &p.name))
-        })
+        .flat_map(|v| v.points.iter().filter_map(|p| ReferenceRow::find(rows, v, &p.name)))
         .collect();
-    rows.iter()
-        .filter(|r| !shown.iter().any(|s| std::ptr::eq(*s, *r)))
-        .collect()
+    rows.iter().filter(|r| !shown.iter().any(|s| std::ptr::eq(*s, *r))).collect()
 }
 
 /// Parse reference text; `file` names it in errors.
@@ -148,12 +131,7 @@ fn reference_row(
         let reason = "empty: name the scene (file stem or name) and the evaluation point";
         return Err(err(r.line, &names[k], reason.into()));
     }
-    Ok(ReferenceRow {
-        label: f[0].clone(),
-        scene: f[1].clone(),
-        point: f[2].clone(),
-        sigma,
-    })
+    Ok(ReferenceRow { label: f[0].clone(), scene: f[1].clone(), point: f[2].clone(), sigma })
 }
 
 /// Read and parse a reference file.

@@ -26,17 +26,15 @@ pub fn sobol_table(b: &SensitivityBlock) -> String {
     let t = Table::new("<input");
     // The block's outputs are the six DOFs of one point, in order.
     let dofs = Dof::ALL.iter().take(sob.dofs.len());
-    let mut t = t
-        .with(dofs.map(|d| Column::right(format!("{} (S | ST)", d.name()))))
-        .indent(2);
+    let mut t = t.with(dofs.map(|d| Column::right(format!("{} (S | ST)", d.name())))).indent(2);
     let cells = |f: &dyn Fn(&SobolDof) -> String| -> Vec<Cell> {
         sob.dofs.iter().map(|d| f(d).into()).collect()
     };
     for (j, input) in b.inputs.iter().enumerate() {
         let est = cells(&|d| {
-            d.indices.as_ref().map_or("-".into(), |x| {
-                format!("{:.3} | {:.3}", x.first[j], x.total[j])
-            })
+            d.indices
+                .as_ref()
+                .map_or("-".into(), |x| format!("{:.3} | {:.3}", x.first[j], x.total[j]))
         });
         let ci = cells(&|d| {
             d.indices.as_ref().map_or(String::new(), |x| {

@@ -22,11 +22,7 @@ impl StudyReport {
         for w in self.cannot_seat() {
             let _ = writeln!(s, "CANNOT SEAT: {w}");
         }
-        if self
-            .variants
-            .iter()
-            .any(|v| v.partial || !v.points.is_empty())
-        {
+        if self.variants.iter().any(|v| v.partial || !v.points.is_empty()) {
             let _ = writeln!(
                 s,
                 "Standard deviation of the seated pose relative to the nominal seating (nominal friction and preload, touching start; {}); below each row the 90 % interval of sigma, by a method valid for the design: {}.",
@@ -39,11 +35,7 @@ impl StudyReport {
             let _ = writeln!(s);
             s += &sigma_table(&self.variants, |v| &v.points);
         }
-        if self
-            .variants
-            .iter()
-            .any(|v| !v.interchangeability.is_empty())
-        {
+        if self.variants.iter().any(|v| !v.interchangeability.is_empty()) {
             if self.variants.iter().any(|v| !v.points.is_empty()) {
                 s.push('\n');
             }
@@ -116,10 +108,7 @@ fn variant_text(v: &VariantReport) -> String {
         s += &detail(&v.points);
     }
     if !v.interchangeability.is_empty() {
-        let _ = writeln!(
-            s,
-            "  interchangeability (tolerances; nominal friction and preload):"
-        );
+        let _ = writeln!(s, "  interchangeability (tolerances; nominal friction and preload):");
         s += &detail(&v.interchangeability);
     }
     if let Some(blocks) = &v.sensitivity {

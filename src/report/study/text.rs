@@ -11,9 +11,7 @@ use crate::study::{Dofs, PointStats, VariantReport};
 
 /// The six sigma columns: `<prefix><dof> [unit]`, nm with 3 decimals, nrad with 2.
 pub(crate) fn sigma_columns(header: impl Fn(Dof) -> String) -> Vec<Column> {
-    Dof::ALL
-        .map(|d| Column::right(header(d)).fixed(if d.is_rotation() { 2 } else { 3 }))
-        .into()
+    Dof::ALL.map(|d| Column::right(header(d)).fixed(if d.is_rotation() { 2 } else { 3 })).into()
 }
 
 /// Sigma of a point per DOF as cells, and the 90 % interval of each under
@@ -46,11 +44,7 @@ pub(crate) fn sigma_table(
             continue;
         }
         if v.cannot_seat.is_some() {
-            t.note(format!(
-                "{} {}: CANNOT SEAT: no scatter to report (see above)",
-                i + 1,
-                v.name
-            ));
+            t.note(format!("{} {}: CANNOT SEAT: no scatter to report (see above)", i + 1, v.name));
             continue;
         }
         for p in points(v) {
@@ -74,9 +68,7 @@ pub(crate) fn detail(points: &[PointStats]) -> String {
     let mut s = String::new();
     for p in points {
         let mut t = Table::of([Column::left(&p.name)])
-            .with(Column::list(
-                "<; >mean:.3; >min:.3; >max:.3; >sigma:.3; >+-3 sigma:.3",
-            ))
+            .with(Column::list("<; >mean:.3; >min:.3; >max:.3; >sigma:.3; >+-3 sigma:.3"))
             .indent(2);
         let values = [p.mean, p.min, p.max, p.sigma, p.three_sigma].map(|d| d.values());
         for d in Dof::ALL {
@@ -107,21 +99,13 @@ pub(crate) fn interval_methods<'a>(
             m.push(&p.sigma_interval_method);
         }
     }
-    if m.is_empty() {
-        none.to_string()
-    } else {
-        m.join("; ")
-    }
+    if m.is_empty() { none.to_string() } else { m.join("; ") }
 }
 
 /// The distinct point estimates of sigma of the designs that ran
 /// ([`crate::study::stats::SigmaMethod::estimate`]), in order, joined by `; `.
 pub(crate) fn sigma_estimates<'a>(variants: impl IntoIterator<Item = &'a VariantReport>) -> String {
-    estimates(
-        variants
-            .into_iter()
-            .map(|v| v.sigma_method(v.seating_failures.unwrap_or(0))),
-    )
+    estimates(variants.into_iter().map(|v| v.sigma_method(v.seating_failures.unwrap_or(0))))
 }
 
 /// The distinct estimates of `methods`, in order, joined by `; `.
@@ -138,21 +122,14 @@ pub(crate) fn estimates(methods: impl IntoIterator<Item = SigmaMethod>) -> Strin
 /// The non-zero `[variation]` bounds, in um and mrad.
 pub(crate) fn bounds_text(b: &VariationBounds) -> String {
     let um = |x: f64| format!("{}", x * 1e6);
-    let pm = |v: &[f64]| {
-        v.iter()
-            .map(|x| format!("+-{}", um(*x)))
-            .collect::<Vec<_>>()
-    };
+    let pm = |v: &[f64]| v.iter().map(|x| format!("+-{}", um(*x))).collect::<Vec<_>>();
     let mut parts = Vec::new();
     if b.preload_offset_m.iter().any(|x| *x > 0.0) {
         let p = pm(&b.preload_offset_m).join(", ");
         parts.push(format!("preload offset {p} um"));
     }
     if b.preload_tilt_rad > 0.0 {
-        parts.push(format!(
-            "preload tilt +-{} mrad per axis",
-            b.preload_tilt_rad * 1e3
-        ));
+        parts.push(format!("preload tilt +-{} mrad per axis", b.preload_tilt_rad * 1e3));
     }
     if b.ball_diameter_m > 0.0 {
         parts.push(format!("ball diameter +-{} um", um(b.ball_diameter_m)));
@@ -171,11 +148,7 @@ pub(crate) fn bounds_text(b: &VariationBounds) -> String {
         let p = pm(&b.groove_position_m).join(", ");
         parts.push(format!("groove position {p} um"));
     }
-    if parts.is_empty() {
-        "none".to_string()
-    } else {
-        parts.join("; ")
-    }
+    if parts.is_empty() { "none".to_string() } else { parts.join("; ") }
 }
 
 pub(crate) fn truncate(s: &str, n: usize) -> String {

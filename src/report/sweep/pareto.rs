@@ -40,10 +40,8 @@ pub fn place_labels(
     sizes: &[(f64, f64)],
     bounds: PixelBox,
 ) -> Vec<PixelBox> {
-    let markers: Vec<PixelBox> = points
-        .iter()
-        .map(|&(x, y)| [x - MARKER, y - MARKER, x + MARKER, y + MARKER])
-        .collect();
+    let markers: Vec<PixelBox> =
+        points.iter().map(|&(x, y)| [x - MARKER, y - MARKER, x + MARKER, y + MARKER]).collect();
     let mut placed: Vec<PixelBox> = Vec::new();
     for (&i, &(w, h)) in labelled.iter().zip(sizes) {
         let (px, py) = points[i];
@@ -115,10 +113,7 @@ pub fn draw(
     chart
         .configure_mesh()
         .x_desc("lowest principal translational stiffness k_min [N/µm]")
-        .y_desc(format!(
-            "largest translational σ at {} [nm]",
-            r.pareto_point
-        ))
+        .y_desc(format!("largest translational σ at {} [nm]", r.pareto_point))
         .label_style(("sans-serif", 12))
         .draw()
         .map_err(draw_err)?;
@@ -139,17 +134,10 @@ pub fn draw(
             ((u - base.0) as f64, (v - base.1) as f64)
         })
         .collect();
-    let front: Vec<usize> = (0..pts.len())
-        .filter(|&i| pts[i].2.pareto == Some(true))
-        .collect();
-    let texts: Vec<String> = front
-        .iter()
-        .map(|&i| format!("#{}", pts[i].2.index))
-        .collect();
-    let sizes: Vec<(f64, f64)> = texts
-        .iter()
-        .map(|t| (CHAR_W * t.chars().count() as f64 + 2.0, FONT + 2.0))
-        .collect();
+    let front: Vec<usize> = (0..pts.len()).filter(|&i| pts[i].2.pareto == Some(true)).collect();
+    let texts: Vec<String> = front.iter().map(|&i| format!("#{}", pts[i].2.index)).collect();
+    let sizes: Vec<(f64, f64)> =
+        texts.iter().map(|t| (CHAR_W * t.chars().count() as f64 + 2.0, FONT + 2.0)).collect();
     let (xr, yr) = chart.plotting_area().get_pixel_range();
     let bounds = [
         (xr.start - base.0) as f64,
@@ -164,12 +152,10 @@ pub fn draw(
         if dx.hypot(dy) > 2.5 * FONT {
             let to = (b[0].max(px[i].0.min(b[2])), b[1].max(px[i].1.min(b[3])));
             let line = [(px[i].0, px[i].1), to].map(|(x, y)| (x as i32, y as i32));
-            area.draw(&PathElement::new(line, color(5).mix(0.6)))
-                .map_err(draw_err)?;
+            area.draw(&PathElement::new(line, color(5).mix(0.6))).map_err(draw_err)?;
         }
         let at = ((b[0] + 1.0) as i32, (b[1] + 1.0) as i32);
-        area.draw(&Text::new(text, at, ("sans-serif", FONT)))
-            .map_err(draw_err)?;
+        area.draw(&Text::new(text, at, ("sans-serif", FONT))).map_err(draw_err)?;
     }
     Ok(())
 }

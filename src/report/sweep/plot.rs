@@ -44,21 +44,10 @@ pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> 
         out.push((title, svg(&foot, size, |a| sigma_chart(r, k, a))?));
     }
     if r.sets.len() == 2 && r.design.name() == "grid" {
-        out.push((
-            "sweep_heatmap".to_string(),
-            svg(&foot, (1200, 700), |a| heatmap(r, a))?,
-        ));
+        out.push(("sweep_heatmap".to_string(), svg(&foot, (1200, 700), |a| heatmap(r, a))?));
     }
-    if r.designs
-        .iter()
-        .filter(|d| r.objectives(d).is_some())
-        .count()
-        >= 2
-    {
-        out.push((
-            "sweep_pareto".to_string(),
-            svg(&foot, (1200, 700), |a| pareto_chart(r, a))?,
-        ));
+    if r.designs.iter().filter(|d| r.objectives(d).is_some()).count() >= 2 {
+        out.push(("sweep_pareto".to_string(), svg(&foot, (1200, 700), |a| pareto_chart(r, a))?));
     }
     if !super::status::not_evaluated(r).is_empty() {
         let size = (1200, super::status::height(r));
@@ -142,10 +131,7 @@ fn groups(r: &SweepReport, k: usize) -> Groups<'_> {
             })
             .collect();
         let label = label.join(", ");
-        let x = d
-            .values
-            .get(&r.sets[k].field)
-            .map_or(0.0, |v| x_of(r, k, v));
+        let x = d.values.get(&r.sets[k].field).map_or(0.0, |v| x_of(r, k, v));
         match groups.iter_mut().find(|(l, _)| *l == label) {
             Some((_, g)) => g.push((x, d)),
             None => groups.push((label, vec![(x, d)])),
@@ -159,17 +145,11 @@ fn groups(r: &SweepReport, k: usize) -> Groups<'_> {
 
 fn sigma_chart(r: &SweepReport, k: usize, area: &Area) -> Result<(), SweepPlotError> {
     let groups = groups(r, k);
-    let title = format!(
-        "σ at {} against {} ({})",
-        r.pareto_point, r.sets[k].field, r.name
-    );
+    let title = format!("σ at {} against {} ({})", r.pareto_point, r.sets[k].field, r.name);
     let below = area.titled(&title, ("sans-serif", 20)).map_err(draw_err)?;
     let (legend_area, panels) = below.split_vertically(legend_height(groups.len()));
     legend(&groups, &legend_area)?;
-    let xs: Vec<f64> = groups
-        .iter()
-        .flat_map(|(_, g)| g.iter().map(|p| p.0))
-        .collect();
+    let xs: Vec<f64> = groups.iter().flat_map(|(_, g)| g.iter().map(|p| p.0)).collect();
     let xr = span(&xs);
     for (j, cell) in panels.split_evenly((2, 3)).iter().enumerate() {
         // Per group: (x, sigma, interval low, high) of DOF j [nm or nrad].
@@ -224,19 +204,14 @@ fn legend(groups: &Groups, area: &Area) -> Result<(), SweepPlotError> {
     for (i, (label, _)) in groups.iter().take(LEGEND_LINES).enumerate() {
         let y = 12 + 16 * i as i32;
         let col = color(i);
-        area.draw(&PathElement::new(
-            vec![(70, y), (96, y)],
-            col.stroke_width(3),
-        ))
-        .map_err(draw_err)?;
-        area.draw(&Text::new(label.clone(), (104, y - 7), font.clone()))
+        area.draw(&PathElement::new(vec![(70, y), (96, y)], col.stroke_width(3)))
             .map_err(draw_err)?;
+        area.draw(&Text::new(label.clone(), (104, y - 7), font.clone())).map_err(draw_err)?;
     }
     if groups.len() > LEGEND_LINES {
         let more = format!("and {} more lines", groups.len() - LEGEND_LINES);
         let y = 5 + 16 * LEGEND_LINES as i32;
-        area.draw(&Text::new(more, (104, y), font))
-            .map_err(draw_err)?;
+        area.draw(&Text::new(more, (104, y), font)).map_err(draw_err)?;
     }
     Ok(())
 }
@@ -305,10 +280,7 @@ fn group(chart: &mut Chart, col: RGBColor, g: &[[f64; 4]]) -> Result<(), SweepPl
         .draw_series(g.iter().map(|v| Circle::new((v[0], v[1]), 3, col.filled())))
         .map_err(draw_err)?;
     chart
-        .draw_series(LineSeries::new(
-            g.iter().map(|v| (v[0], v[1])),
-            col.stroke_width(2),
-        ))
+        .draw_series(LineSeries::new(g.iter().map(|v| (v[0], v[1])), col.stroke_width(2)))
         .map_err(draw_err)?;
     Ok(())
 }
@@ -328,21 +300,13 @@ fn span(xs: &[f64]) -> (f64, f64) {
     if !lo.is_finite() || !hi.is_finite() {
         return (0.0, 1.0);
     }
-    let w = if hi > lo {
-        0.05 * (hi - lo)
-    } else {
-        0.5 * lo.abs().max(1.0)
-    };
+    let w = if hi > lo { 0.05 * (hi - lo) } else { 0.5 * lo.abs().max(1.0) };
     (lo - w, hi + w)
 }
 
 /// Colour of t in [0, 1] (blue - green - yellow, after viridis).
 fn ramp(t: f64) -> RGBColor {
-    let stops = [
-        (68.0, 1.0, 84.0),
-        (33.0, 145.0, 140.0),
-        (253.0, 231.0, 37.0),
-    ];
+    let stops = [(68.0, 1.0, 84.0), (33.0, 145.0, 140.0), (253.0, 231.0, 37.0)];
     let t = t.clamp(0.0, 1.0) * 2.0;
     let i = (t as usize).min(1);
     let f = t - i as f64;
@@ -403,10 +367,7 @@ fn heatmap(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
         .map_err(draw_err)?;
     let label = |v: &[SweptValue]| {
         let v = v.to_vec();
-        move |x: &f64| {
-            v.get(x.round().max(0.0) as usize)
-                .map_or(String::new(), value_tick)
-        }
+        move |x: &f64| v.get(x.round().max(0.0) as usize).map_or(String::new(), value_tick)
     };
     chart
         .configure_mesh()
@@ -421,10 +382,8 @@ fn heatmap(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
         .draw()
         .map_err(draw_err)?;
     for d in &r.designs {
-        let (Some(x), Some(y)) = (
-            d.values.get(&r.sets[0].field),
-            d.values.get(&r.sets[1].field),
-        ) else {
+        let (Some(x), Some(y)) = (d.values.get(&r.sets[0].field), d.values.get(&r.sets[1].field))
+        else {
             continue;
         };
         let i = lx.iter().position(|v| v == x).unwrap_or(0) as f64;

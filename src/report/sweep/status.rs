@@ -52,21 +52,14 @@ pub fn draw(
     let draw_err = |e: DrawingAreaErrorKind<_>| SweepPlotError::Draw(e.to_string());
     let n = not_evaluated(r).len();
     area.draw(&Text::new(
-        format!(
-            "{n} of {} design points not evaluated, with the reason",
-            r.designs.len()
-        ),
+        format!("{n} of {} design points not evaluated, with the reason", r.designs.len()),
         (12, 10),
         ("sans-serif", 20).into_font(),
     ))
     .map_err(draw_err)?;
     for (i, l) in lines(r).iter().enumerate() {
-        area.draw(&Text::new(
-            l.clone(),
-            (12, 40 + LINE * i as i32),
-            ("monospace", 15).into_font(),
-        ))
-        .map_err(draw_err)?;
+        area.draw(&Text::new(l.clone(), (12, 40 + LINE * i as i32), ("monospace", 15).into_font()))
+            .map_err(draw_err)?;
     }
     Ok(())
 }

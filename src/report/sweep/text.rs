@@ -20,11 +20,7 @@ pub fn short(v: f64) -> String {
     }
     let digits = (3 - v.abs().log10().floor() as i32).clamp(0, 6) as usize;
     let t = format!("{v:.digits$}");
-    if t.contains('.') {
-        t.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        t
-    }
+    if t.contains('.') { t.trim_end_matches('0').trim_end_matches('.').to_string() } else { t }
 }
 
 /// The unit of a swept field in the scene format (docs/scenes.md): `m`,
@@ -83,16 +79,8 @@ impl SweepReport {
             let head: Vec<String> = [VERSION.to_string(), SCHEMA_VERSION.to_string()]
                 .into_iter()
                 .chain([self.solver.clone(), self.sampler.to_string()])
-                .chain([
-                    self.seed.to_string(),
-                    self.samples.to_string(),
-                    self.vary.join("+"),
-                ])
-                .chain([
-                    self.design.name().to_string(),
-                    self.scene.clone(),
-                    d.index.to_string(),
-                ])
+                .chain([self.seed.to_string(), self.samples.to_string(), self.vary.join("+")])
+                .chain([self.design.name().to_string(), self.scene.clone(), d.index.to_string()])
                 .chain(values)
                 .chain([d.status.clone(), pareto])
                 .collect();
@@ -109,13 +97,7 @@ impl SweepReport {
                 false => d.points.iter().flat_map(point_csv_rows).collect(),
             };
             for st in stats {
-                t.row(
-                    head.iter()
-                        .chain(&st)
-                        .chain(&tail)
-                        .map(Into::into)
-                        .collect(),
-                );
+                t.row(head.iter().chain(&st).chain(&tail).map(Into::into).collect());
             }
         }
         t.csv()
@@ -125,11 +107,8 @@ impl SweepReport {
     pub fn table(&self) -> String {
         let mut s = String::new();
         let _ = writeln!(s, "{}", self.produced_by());
-        let sets: Vec<String> = self
-            .sets
-            .iter()
-            .map(|x| format!("{} = {}", x.field, x.values))
-            .collect();
+        let sets: Vec<String> =
+            self.sets.iter().map(|x| format!("{} = {}", x.field, x.values)).collect();
         let _ = writeln!(
             s,
             "Sweep of {} ({}): {}. Per design point and evaluation point the standard deviation of the seated pose relative to the design's nominal seating ({}), its 90 % interval below ({}); then for the nominal seating: k_min, the lowest principal translational stiffness [N/um]; SF_p, the smallest safety factor against the allowable contact pressure; mu_lim, the friction limit for seating and its margin over mu_static + spread; approach along the preload [nm]. P: on the Pareto front (largest translational sigma at {}, k_min, SF_p).",
@@ -137,10 +116,7 @@ impl SweepReport {
             self.scene,
             sets.join("; "),
             sigma_estimates(self),
-            interval_methods(
-                self.designs.iter().flat_map(|d| &d.points),
-                "no design evaluated"
-            ),
+            interval_methods(self.designs.iter().flat_map(|d| &d.points), "no design evaluated"),
             self.pareto_point
         );
         let _ = writeln!(s);
@@ -209,11 +185,7 @@ pub(crate) fn sigma_estimates(r: &SweepReport) -> String {
     let incomplete = SigmaMethod::IncompleteLhs.describe();
     let methods = r.designs.iter().filter(|d| !d.points.is_empty()).map(|d| {
         let gaps = (d.points.iter()).any(|p| p.sigma_interval_method.starts_with(&incomplete));
-        if gaps {
-            SigmaMethod::IncompleteLhs
-        } else {
-            ran
-        }
+        if gaps { SigmaMethod::IncompleteLhs } else { ran }
     });
     match estimates(methods) {
         e if e.is_empty() => ran.estimate(),

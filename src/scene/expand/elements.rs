@@ -187,27 +187,21 @@ fn element_radii(
     // error naming it.
     let needing = |want: [GrooveKind; 2]| {
         let key = |k: GrooveKind| if k == groove { "groove" } else { "seat" };
-        [groove, seat]
-            .into_iter()
-            .find(|k| want.contains(k))
-            .map(|k| {
-                move |field: &str, what: &str| {
-                    ctx.error(
-                        None,
-                        field,
-                        format!("missing: {} = \"{}\" needs {what}", key(k), groove_name(k)),
-                    )
-                }
-            })
+        [groove, seat].into_iter().find(|k| want.contains(k)).map(|k| {
+            move |field: &str, what: &str| {
+                ctx.error(
+                    None,
+                    field,
+                    format!("missing: {} = \"{}\" needs {what}", key(k), groove_name(k)),
+                )
+            }
+        })
     };
     let r_elem = match needing([GrooveKind::Cylinders, GrooveKind::Balls]) {
         None => 0.0,
         Some(missing) => {
             let d = (c.groove_element_diameter.as_ref()).ok_or_else(|| {
-                missing(
-                    "coupling.groove_element_diameter",
-                    "the pin or ball diameter",
-                )
+                missing("coupling.groove_element_diameter", "the pin or ball diameter")
             })?;
             positive(d, "coupling.groove_element_diameter")? / 2.0
         }

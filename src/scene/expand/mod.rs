@@ -98,12 +98,7 @@ enum Role {
 fn contacts(arrangement: Arrangement, centres: &[Vector3<f64>], alpha: f64) -> Vec<ContactSpec> {
     let ez = Vector3::z();
     let tilt = |horizontal: Vector3<f64>| horizontal * alpha.sin() + ez * alpha.cos();
-    let contact = |ball, normal, axis, role| ContactSpec {
-        ball,
-        normal,
-        axis,
-        role,
-    };
+    let contact = |ball, normal, axis, role| ContactSpec { ball, normal, axis, role };
     let mut out = Vec::new();
     match arrangement {
         Arrangement::Maxwell => {

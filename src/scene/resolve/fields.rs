@@ -38,9 +38,7 @@ impl Fields<'_> {
         if a.iter().all(|x| x.is_finite()) {
             Ok(Vector3::new(a[0], a[1], a[2]))
         } else {
-            Err(self
-                .ctx
-                .error(Some(&v.span()), field, "coordinates must be finite numbers"))
+            Err(self.ctx.error(Some(&v.span()), field, "coordinates must be finite numbers"))
         }
     }
 
@@ -51,11 +49,7 @@ impl Fields<'_> {
         if n > 0.0 {
             Ok(x / n)
         } else {
-            Err(self.ctx.error(
-                Some(&v.span()),
-                field,
-                "a direction must not be the zero vector",
-            ))
+            Err(self.ctx.error(Some(&v.span()), field, "a direction must not be the zero vector"))
         }
     }
 }

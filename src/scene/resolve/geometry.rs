@@ -72,10 +72,7 @@ fn surface(s: &SurfaceFile, i: usize, fx: &Fields, n_balls: usize) -> Result<Sur
         v.clone().ok_or_else(|| missing(s, ctx, &field(k), k))
     };
     let radius = |s: &SurfaceFile| -> Result<f64, SceneError> {
-        let r = s
-            .radius
-            .as_ref()
-            .ok_or_else(|| missing(s, ctx, &field("radius"), "radius"))?;
+        let r = s.radius.as_ref().ok_or_else(|| missing(s, ctx, &field("radius"), "radius"))?;
         fx.positive(r, &field("radius"), "m")
     };
     let geometry = match s.kind.get_ref() {
@@ -148,9 +145,5 @@ fn moving_patch(s: &SurfaceFile, i: usize, fx: &Fields) -> Result<Option<MovingP
 
 fn missing(s: &SurfaceFile, ctx: &ErrorContext, field: &str, key: &str) -> SceneError {
     let kind = s.kind.get_ref().name();
-    ctx.error(
-        Some(&s.kind.span()),
-        field,
-        format!("missing: a {kind} needs `{key}`"),
-    )
+    ctx.error(Some(&s.kind.span()), field, format!("missing: a {kind} needs `{key}`"))
 }

@@ -18,12 +18,7 @@ pub fn user_materials(
 ) -> Result<HashMap<String, Material>, SceneError> {
     // name -> (the material, the 1-based entry that first defined it)
     let mut out: HashMap<String, (Material, usize)> = HashMap::new();
-    for (i, (m, mat)) in f
-        .materials
-        .iter()
-        .zip(material_entries(f, ctx)?)
-        .enumerate()
-    {
+    for (i, (m, mat)) in f.materials.iter().zip(material_entries(f, ctx)?).enumerate() {
         let name = m.name.get_ref();
         let field = format!("materials[{}]", i + 1);
         let builtin = Material::builtin(name).is_ok();

@@ -17,10 +17,7 @@ use super::file::SceneFile;
 use super::{Scene, VariationBounds};
 
 pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
-    let fx = Fields {
-        ctx,
-        materials: materials::user_materials(f, ctx)?,
-    };
+    let fx = Fields { ctx, materials: materials::user_materials(f, ctx)? };
     let balls = geometry::balls(f, &fx)?;
     let surfaces = geometry::surfaces(f, &fx, &balls)?;
     let preload = preload::preload(&f.preload, f.dynamics.as_ref(), &fx)?;

@@ -73,10 +73,7 @@ fn single(p: &PreloadFile, f: &Spanned<f64>, fx: &Fields) -> Result<PreloadForce
 /// `[[preload.forces]]`, in file order; `[preload] point` and `direction`
 /// belong to the single force and are refused beside them.
 fn listed(p: &PreloadFile, fx: &Fields) -> Result<Vec<PreloadForce>, SceneError> {
-    for (v, name) in [
-        (&p.point, "preload.point"),
-        (&p.direction, "preload.direction"),
-    ] {
+    for (v, name) in [(&p.point, "preload.point"), (&p.direction, "preload.direction")] {
         if let Some(v) = v.as_ref().filter(|_| !p.forces.is_empty()) {
             return Err(fx.ctx.error(
                 Some(&v.span()),
@@ -116,20 +113,12 @@ fn entry(f: &PreloadForceFile, at: &str, fx: &Fields) -> Result<PreloadForce, Sc
                     ),
                 ));
             }
-            ForceLaw::Spring {
-                stiffness,
-                free_length,
-            }
+            ForceLaw::Spring { stiffness, free_length }
         }
         (Some(k), None) => return Err(pair(fx, k, at, "stiffness", "free_length")),
         (None, Some(l)) => return Err(pair(fx, l, at, "free_length", "stiffness")),
     };
-    Ok(PreloadForce {
-        force,
-        point,
-        direction,
-        law,
-    })
+    Ok(PreloadForce { force, point, direction, law })
 }
 
 fn pair(fx: &Fields, v: &Spanned<f64>, at: &str, given: &str, missing: &str) -> SceneError {

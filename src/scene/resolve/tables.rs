@@ -78,11 +78,7 @@ pub fn study(st: &StudyFile, ctx: &ErrorContext) -> Result<StudyDefaults, SceneE
             format!("unknown sampler '{name}': expected lhs, mc or corners"),
         )
     })?;
-    Ok(StudyDefaults {
-        samples: samples as usize,
-        sampler,
-        seed: st.seed,
-    })
+    Ok(StudyDefaults { samples: samples as usize, sampler, seed: st.seed })
 }
 
 /// Most `[[evaluation_points]]` of one scene: each adds six columns to the
@@ -108,10 +104,8 @@ pub fn evaluation_points(f: &SceneFile, fx: &Fields) -> Result<Vec<EvaluationPoi
         let reason = if name.trim().is_empty() {
             Some("empty: give the point a name".to_string())
         } else {
-            (points
-                .iter()
-                .position(|p: &EvaluationPoint| p.name == *name))
-            .map(|k| format!("`{name}` is also the name of evaluation point {}", k + 1))
+            (points.iter().position(|p: &EvaluationPoint| p.name == *name))
+                .map(|k| format!("`{name}` is also the name of evaluation point {}", k + 1))
         };
         if let Some(reason) = reason {
             let field = format!("evaluation_points[{}].name", i + 1);
@@ -119,17 +113,11 @@ pub fn evaluation_points(f: &SceneFile, fx: &Fields) -> Result<Vec<EvaluationPoi
         }
         points.push(EvaluationPoint {
             name: name.clone(),
-            position: fx.finite(
-                &e.position,
-                &format!("evaluation_points[{}].position", i + 1),
-            )?,
+            position: fx.finite(&e.position, &format!("evaluation_points[{}].position", i + 1))?,
         });
     }
     if points.is_empty() {
-        points.push(EvaluationPoint {
-            name: "centre".to_string(),
-            position: Vector3::zeros(),
-        });
+        points.push(EvaluationPoint { name: "centre".to_string(), position: Vector3::zeros() });
     }
     Ok(points)
 }
@@ -139,10 +127,7 @@ pub fn evaluation_points(f: &SceneFile, fx: &Fields) -> Result<Vec<EvaluationPoi
 pub fn dynamics(d: &DynamicsFile, fx: &Fields) -> Result<DynamicsSettings, SceneError> {
     let mass = fx.positive(&d.mass, "dynamics.mass", "kg")?;
     let i = fx.finite(&d.inertia, "dynamics.inertia")?;
-    let bad = |reason: String| {
-        fx.ctx
-            .error(Some(&d.inertia.span()), "dynamics.inertia", reason)
-    };
+    let bad = |reason: String| fx.ctx.error(Some(&d.inertia.span()), "dynamics.inertia", reason);
     if !i.iter().all(|v| *v > 0.0) {
         return Err(bad(format!(
             "[{}, {}, {}]: principal moments of inertia must be positive (kg m^2)",
@@ -166,11 +151,7 @@ pub fn dynamics(d: &DynamicsFile, fx: &Fields) -> Result<DynamicsSettings, Scene
         Some(v) => fx.finite(v, "dynamics.centre_of_mass")?,
         None => Vector3::zeros(),
     };
-    Ok(DynamicsSettings {
-        mass,
-        inertia: i,
-        centre_of_mass,
-    })
+    Ok(DynamicsSettings { mass, inertia: i, centre_of_mass })
 }
 
 /// `[friction] law` and `decay_coefficient`: the decay law needs a finite
@@ -253,9 +234,7 @@ pub fn variation_bounds(
         Ok(a)
     }
     let scalar = |v: &Option<Spanned<f64>>, key: &str, unit: &str| -> Result<f64, SceneError> {
-        let arr = v
-            .as_ref()
-            .map(|s| Spanned::new(s.span(), Numbers::of(&[*s.get_ref()])));
+        let arr = v.as_ref().map(|s| Spanned::new(s.span(), Numbers::of(&[*s.get_ref()])));
         Ok(check::<1>(ctx, &arr, key, unit)?[0])
     };
     Ok(VariationBounds {

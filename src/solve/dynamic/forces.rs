@@ -96,14 +96,7 @@ pub fn contact_force(
     friction: Friction,
     damping: Damping,
 ) -> StepContact {
-    let eval = evaluate(
-        coupling,
-        i,
-        motion.pose,
-        committed_pose,
-        committed,
-        friction,
-    );
+    let eval = evaluate(coupling, i, motion.pose, committed_pose, committed, friction);
     let fh = eval.normal_force;
     if fh <= 0.0 {
         return StepContact {
@@ -120,9 +113,7 @@ pub fn contact_force(
     // Normal dashpot (Tsuji et al. 1992).
     let mut f_n = fh;
     if damping.normal > 0.0 {
-        let m_eff = motion
-            .mass
-            .effective_mass(&motion.inv_inertia, &(centre - motion.com), &n);
+        let m_eff = motion.mass.effective_mass(&motion.inv_inertia, &(centre - motion.com), &n);
         let c_n = 2.0 * damping.normal * (m_eff * eval.normal_stiffness).sqrt();
         let approach_rate = -n.dot(&motion.velocity_at(&centre));
         f_n = (fh + c_n * approach_rate).max(0.0);
@@ -135,9 +126,7 @@ pub fn contact_force(
         let speed = vt.norm();
         if speed > 0.0 {
             let dir = vt / speed;
-            let m_eff = motion
-                .mass
-                .effective_mass(&motion.inv_inertia, &(p - motion.com), &dir);
+            let m_eff = motion.mass.effective_mass(&motion.inv_inertia, &(p - motion.com), &dir);
             let (kt, _) = coupling.contacts[i].law.tangential_stiffness(fh);
             let c_t = 2.0 * damping.tangential * (m_eff * kt).sqrt();
             tangential -= vt * c_t;

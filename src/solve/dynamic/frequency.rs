@@ -66,17 +66,14 @@ pub fn seated_frequencies(
         let n = g.normal;
         let s = n * n.transpose() * kn + (Matrix3::identity() - n * n.transpose()) * kt;
         let mut j = nalgebra::Matrix3x6::zeros();
-        j.fixed_view_mut::<3, 3>(0, 0)
-            .copy_from(&Matrix3::identity());
-        j.fixed_view_mut::<3, 3>(0, 3)
-            .copy_from(&(-(g.point - com).cross_matrix()));
+        j.fixed_view_mut::<3, 3>(0, 0).copy_from(&Matrix3::identity());
+        j.fixed_view_mut::<3, 3>(0, 3).copy_from(&(-(g.point - com).cross_matrix()));
         k += j.transpose() * s * j;
     }
     let r = pose.rotation.to_rotation_matrix().into_inner();
     let inertia_world = r * mass.inertia * r.transpose();
     let mut m = Matrix6::zeros();
-    m.fixed_view_mut::<3, 3>(0, 0)
-        .copy_from(&(Matrix3::identity() * mass.mass));
+    m.fixed_view_mut::<3, 3>(0, 0).copy_from(&(Matrix3::identity() * mass.mass));
     m.fixed_view_mut::<3, 3>(3, 3).copy_from(&inertia_world);
     let l = m.cholesky()?.l();
     let l_inv = l.try_inverse()?;
@@ -87,8 +84,5 @@ pub fn seated_frequencies(
     if !(lo > 0.0 && hi.is_finite()) {
         return None;
     }
-    Some(Frequencies {
-        omega_max: hi.sqrt(),
-        omega_min: lo.sqrt(),
-    })
+    Some(Frequencies { omega_max: hi.sqrt(), omega_min: lo.sqrt() })
 }

@@ -77,11 +77,7 @@ impl MassModel {
             .iter()
             .map(|b| {
                 let m = DEFAULT_DENSITY * 4.0 / 3.0 * std::f64::consts::PI * b.radius.powi(3);
-                (
-                    m,
-                    b.centre,
-                    Matrix3::identity() * (0.4 * m * b.radius * b.radius),
-                )
+                (m, b.centre, Matrix3::identity() * (0.4 * m * b.radius * b.radius))
             })
             .collect();
         let rp = l + 2.0 * r_max;
@@ -102,12 +98,7 @@ impl MassModel {
                 i + (Matrix3::identity() * d.norm_squared() - d * d.transpose()) * *m
             })
             .sum();
-        MassModel {
-            mass,
-            centre_of_mass: com,
-            inertia,
-            source: MassSource::BallsAndPlate,
-        }
+        MassModel { mass, centre_of_mass: com, inertia, source: MassSource::BallsAndPlate }
     }
 
     /// Inverse inertia tensor in world axes for a body at `rotation`.

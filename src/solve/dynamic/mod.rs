@@ -138,11 +138,7 @@ pub fn seat_traced(
     if !open.is_empty() {
         let limit = friction_limit(coupling, &load.preload);
         return Err(SolveError::NotCentred {
-            open: open
-                .iter()
-                .map(|i| (i + 1).to_string())
-                .collect::<Vec<_>>()
-                .join(", "),
+            open: open.iter().map(|i| (i + 1).to_string()).collect::<Vec<_>>().join(", "),
             gap_m: open
                 .iter()
                 .map(|&i| sim.contacts[i].eval.geometry.gap)

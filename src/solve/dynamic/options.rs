@@ -18,10 +18,7 @@ pub struct StartPose {
 impl StartPose {
     /// The touching pose itself (the quasi-static start).
     pub fn touching() -> Self {
-        StartPose {
-            offset: Vector3::zeros(),
-            tilt: Vector3::zeros(),
-        }
+        StartPose { offset: Vector3::zeros(), tilt: Vector3::zeros() }
     }
 }
 
@@ -71,10 +68,7 @@ impl Default for DynamicOptions {
         DynamicOptions {
             steps_per_period: 30.0,
             ramp_periods: 40.0,
-            damping: Damping {
-                normal: 0.3,
-                tangential: 1.0,
-            },
+            damping: Damping { normal: 0.3, tangential: 1.0 },
             settle_displacement: 1e-14,
             settle_force: 1e-9,
             max_settle_periods: 2000.0,
@@ -94,10 +88,8 @@ impl DynamicOptions {
         if !(self.ramp_periods >= 0.0 && self.ramp_periods.is_finite()) {
             return bad(format!("ramp_periods = {} must be >= 0", self.ramp_periods));
         }
-        for (name, z) in [
-            ("normal", self.damping.normal),
-            ("tangential", self.damping.tangential),
-        ] {
+        for (name, z) in [("normal", self.damping.normal), ("tangential", self.damping.tangential)]
+        {
             if !(0.0..=1.0).contains(&z) {
                 return bad(format!(
                     "{name} damping ratio {z} must lie in [0, 1] (above 1 the explicit dashpot loses stability)"

@@ -79,10 +79,7 @@ impl<'a> Simulation<'a> {
         for i in 0..n {
             let g = coupling.geometry(i, &start);
             if g.gap < 0.0 && load.start.is_offset() {
-                return Err(SolveError::StartOverlaps {
-                    contact: i + 1,
-                    overlap_m: -g.gap,
-                });
+                return Err(SolveError::StartOverlaps { contact: i + 1, overlap_m: -g.gap });
             }
             states.push(TangentialState::new(g.normal));
         }
@@ -115,11 +112,7 @@ impl<'a> Simulation<'a> {
                 hertz: 0.0,
                 preload_work: 0.0,
             },
-            status: Status {
-                kinetic: 0.0,
-                max_speed: 0.0,
-                residual: f64::INFINITY,
-            },
+            status: Status { kinetic: 0.0, max_speed: 0.0, residual: f64::INFINITY },
             work: 0.0,
             length,
             max_travel,
@@ -214,10 +207,7 @@ impl<'a> Simulation<'a> {
             && new_pose.rotation.coords.iter().all(|x| x.is_finite())
             && v1.iter().chain(w1.iter()).all(|x| x.is_finite());
         if !finite || !residual.is_finite() {
-            return Err(SolveError::NonFinite {
-                time_s: t,
-                step: self.steps,
-            });
+            return Err(SolveError::NonFinite { time_s: t, step: self.steps });
         }
         self.energy = Energy {
             kinetic: kinetic_before,
@@ -233,11 +223,7 @@ impl<'a> Simulation<'a> {
         for (a, point) in preload.iter().zip(points) {
             self.work += a.force.dot(&(new_pose.apply(&point) - a.point));
         }
-        self.status = Status {
-            kinetic: kinetic_before,
-            max_speed,
-            residual,
-        };
+        self.status = Status { kinetic: kinetic_before, max_speed, residual };
         self.pose = pose;
         self.contacts = contacts;
         self.steps += 1;
@@ -307,12 +293,7 @@ impl<'a> Simulation<'a> {
         for a in preload {
             rb.add_force_at_point(dvec(&a.force), dvec(&a.point), false);
         }
-        for ((st, sc), path) in self
-            .states
-            .iter_mut()
-            .zip(contacts)
-            .zip(&mut self.slip_path)
-        {
+        for ((st, sc), path) in self.states.iter_mut().zip(contacts).zip(&mut self.slip_path) {
             *st = sc.eval.tangential.state.clone();
             *path += st.slip_velocity * self.dt;
         }
@@ -323,11 +304,7 @@ impl<'a> Simulation<'a> {
     /// v_slip of a contact is its slip path over the ramp duration (over
     /// the time so far for a step load).
     pub fn decay_cv(&self) -> Option<f64> {
-        let time = if self.ramp_time > 0.0 {
-            self.ramp_time
-        } else {
-            self.time_of_state()
-        };
+        let time = if self.ramp_time > 0.0 { self.ramp_time } else { self.time_of_state() };
         friction::seating_cv(&self.friction, &self.slip_path, time)
     }
 

@@ -46,10 +46,7 @@ pub(crate) fn nvec(v: DVec3) -> Vector3<f64> {
 /// BodyPose -> rapier pose (same convention: world = R body + t).
 pub(crate) fn to_rapier(pose: &BodyPose) -> DPose3 {
     let q = pose.rotation.quaternion();
-    DPose3::from_parts(
-        dvec(&pose.translation),
-        DQuat::from_xyzw(q.i, q.j, q.k, q.w),
-    )
+    DPose3::from_parts(dvec(&pose.translation), DQuat::from_xyzw(q.i, q.j, q.k, q.w))
 }
 
 /// rapier pose -> BodyPose.

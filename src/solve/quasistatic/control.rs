@@ -64,10 +64,7 @@ pub(super) fn level(
     ws: &mut Workspace,
 ) -> Result<End, SolveError> {
     let c = setup.coupling;
-    let opts = SolverOptions {
-        increments: n,
-        ..*opts
-    };
+    let opts = SolverOptions { increments: n, ..*opts };
     let solver = Solver::new(c, &ws.friction, ramp.preload, opts, Program::Seat, ramp.x1);
     ws.bufs.states.clone_from(&setup.virgin);
     solver.run(c.touching_pose, &mut ws.bufs)
@@ -109,9 +106,7 @@ pub(super) fn seat_controlled(
         let error = if motion > 0.0 { change / motion } else { 0.0 } + floor;
         if error <= tolerance || n >= FINEST {
             return Ok(SeatedPose {
-                pose: fine
-                    .pose
-                    .moved(&d.fixed_rows::<3>(0).into(), &d.fixed_rows::<3>(3).into()),
+                pose: fine.pose.moved(&d.fixed_rows::<3>(0).into(), &d.fixed_rows::<3>(3).into()),
                 increments,
                 newton_iterations: iterations,
                 path: super::path_of(halved),

@@ -67,27 +67,11 @@ pub fn apply_load(
 ) -> Result<LoadPath, SolveError> {
     let fr = seated.frictions(coupling)?;
     if states.len() != coupling.contacts.len() {
-        return Err(SolveError::MuCount {
-            expected: coupling.contacts.len(),
-            got: states.len(),
-        });
+        return Err(SolveError::MuCount { expected: coupling.contacts.len(), got: states.len() });
     }
-    let program = Program::Load {
-        load: *external,
-        factor,
-    };
-    let solver = Solver::new(
-        coupling,
-        &fr,
-        &seated.preload,
-        *opts,
-        program,
-        Vector6::zeros(),
-    );
-    let mut bufs = Buffers {
-        states: states.to_vec(),
-        ..Buffers::default()
-    };
+    let program = Program::Load { load: *external, factor };
+    let solver = Solver::new(coupling, &fr, &seated.preload, *opts, program, Vector6::zeros());
+    let mut bufs = Buffers { states: states.to_vec(), ..Buffers::default() };
     let end = solver.run(*start, &mut bufs)?;
     Ok(LoadPath {
         factor: end.reached * factor,

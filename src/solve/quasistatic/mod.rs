@@ -77,12 +77,7 @@ use crate::scene::Preload;
 /// per-contact report: [`seat_in`] in a fresh workspace.
 pub fn seat(coupling: &Coupling, load: &Load, opts: &SolverOptions) -> Result<Seating, SolveError> {
     let mut ws = Workspace::new();
-    let seated = seat_in(
-        &SeatingSetup::new(coupling, &load.preload),
-        load,
-        opts,
-        &mut ws,
-    )?;
+    let seated = seat_in(&SeatingSetup::new(coupling, &load.preload), load, opts, &mut ws)?;
     Ok(ws.seating(coupling, seated))
 }
 
@@ -138,10 +133,7 @@ impl Workspace {
     /// The full result of the last seating `seated` of `coupling` in this
     /// workspace, with the per-contact report (allocates it).
     pub fn seating(&self, coupling: &Coupling, seated: SeatedPose) -> Seating {
-        Seating {
-            seated,
-            contacts: contact_results(coupling, &self.friction, &self.bufs.evals),
-        }
+        Seating { seated, contacts: contact_results(coupling, &self.friction, &self.bufs.evals) }
     }
 }
 
@@ -181,11 +173,7 @@ pub fn seat_in(
 /// The path that served a quasi-static seating: adaptive where an
 /// increment was halved, else uniform.
 fn path_of(halved: bool) -> SeatingPath {
-    if halved {
-        SeatingPath::Adaptive
-    } else {
-        SeatingPath::Uniform
-    }
+    if halved { SeatingPath::Adaptive } else { SeatingPath::Uniform }
 }
 
 /// Zero tangential force at every contact, tangent to its normal at the

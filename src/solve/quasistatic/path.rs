@@ -96,12 +96,7 @@ fn commit(
     new_pose: BodyPose,
     (s_next, duration): (f64, f64),
 ) -> (Vector6<f64>, f64) {
-    for ((st, e), path) in w
-        .states
-        .iter_mut()
-        .zip(trial.iter())
-        .zip(w.slip_path.iter_mut())
-    {
+    for ((st, e), path) in w.states.iter_mut().zip(trial.iter()).zip(w.slip_path.iter_mut()) {
         st.clone_from(&e.tangential.state);
         *path += st.slip_velocity * duration;
     }
@@ -119,14 +114,10 @@ fn commit(
 /// the approach along a proportional path, so a fresh contact sticks or
 /// slips from the first load on.
 fn stick_slip_changed(w: &Walk, trial: &[ContactEval]) -> bool {
-    trial
-        .iter()
-        .zip(w.states.iter())
-        .enumerate()
-        .any(|(i, (e, st))| {
-            (e.slip() == SlipState::Slip) != st.sliding
-                && w.evals.get(i).is_some_and(|old| old.normal_force > 0.0)
-        })
+    trial.iter().zip(w.states.iter()).enumerate().any(|(i, (e, st))| {
+        (e.slip() == SlipState::Slip) != st.sliding
+            && w.evals.get(i).is_some_and(|old| old.normal_force > 0.0)
+    })
 }
 
 impl Solver<'_> {
@@ -231,15 +222,8 @@ impl Solver<'_> {
             None if seating => self.x1 * (s_next - w.s),
             None => Vector6::zeros(),
         };
-        let predictor = w
-            .pose
-            .moved(&dx.fixed_rows::<3>(0).into(), &dx.fixed_rows::<3>(3).into());
-        let loads = Loads {
-            lambda,
-            extra,
-            duration: (s_next - w.s) * self.ramp_time,
-            s: s_next,
-        };
+        let predictor = w.pose.moved(&dx.fixed_rows::<3>(0).into(), &dx.fixed_rows::<3>(3).into());
+        let loads = Loads { lambda, extra, duration: (s_next - w.s) * self.ramp_time, s: s_next };
         (predictor, loads)
     }
 
@@ -272,15 +256,9 @@ impl Solver<'_> {
         let travel = (new_pose.translation - ctx.start.translation).norm();
         if travel > self.max_travel {
             return Some(Verdict::Stop(if ctx.seating {
-                SolveError::SlidAway {
-                    percent: 100.0 * loads.lambda,
-                    displacement_m: travel,
-                }
+                SolveError::SlidAway { percent: 100.0 * loads.lambda, displacement_m: travel }
             } else {
-                SolveError::LoadSlidAway {
-                    percent: 100.0 * loads.s,
-                    displacement_m: travel,
-                }
+                SolveError::LoadSlidAway { percent: 100.0 * loads.s, displacement_m: travel }
             }));
         }
         None

@@ -115,9 +115,7 @@ impl<'a> Solver<'a> {
             Program::Seat => scale,
             Program::Load { load, factor } => {
                 let f = factor.abs();
-                scale
-                    .max(f * load.force.norm())
-                    .max(f * load.moment.norm() / length)
+                scale.max(f * load.force.norm()).max(f * load.moment.norm() / length)
             }
         };
         Solver {
@@ -157,24 +155,14 @@ impl<'a> Solver<'a> {
         let splits = self.opts.max_splits;
         let slid = travel > 0.5 * self.max_travel;
         match (&self.program, slid) {
-            (Program::Seat, true) => SolveError::SlidAway {
-                percent,
-                displacement_m: travel,
-            },
-            (Program::Seat, false) => SolveError::NotConverged {
-                percent,
-                residual,
-                splits,
-            },
-            (Program::Load { .. }, true) => SolveError::LoadSlidAway {
-                percent,
-                displacement_m: travel,
-            },
-            (Program::Load { .. }, false) => SolveError::LoadNotConverged {
-                percent,
-                residual,
-                splits,
-            },
+            (Program::Seat, true) => SolveError::SlidAway { percent, displacement_m: travel },
+            (Program::Seat, false) => SolveError::NotConverged { percent, residual, splits },
+            (Program::Load { .. }, true) => {
+                SolveError::LoadSlidAway { percent, displacement_m: travel }
+            }
+            (Program::Load { .. }, false) => {
+                SolveError::LoadNotConverged { percent, residual, splits }
+            }
         }
     }
 
@@ -213,14 +201,7 @@ impl<'a> Solver<'a> {
                     committed: &states[i],
                     friction: self.friction[i].during(duration),
                 };
-                evaluate_into(
-                    &mut out[i],
-                    self.coupling,
-                    i,
-                    &moved,
-                    &normal[i - start],
-                    tangent,
-                );
+                evaluate_into(&mut out[i], self.coupling, i, &moved, &normal[i - start], tangent);
             }
         }
     }
@@ -343,8 +324,7 @@ impl<'a> Solver<'a> {
                 None => {
                     let fx = f.cross_matrix();
                     j.fixed_view_mut::<3, 3>(3, 0).sub_assign(&fx);
-                    j.fixed_view_mut::<3, 3>(3, 3)
-                        .add_assign(&(fx * p.cross_matrix()));
+                    j.fixed_view_mut::<3, 3>(3, 3).add_assign(&(fx * p.cross_matrix()));
                 }
             }
         }
@@ -372,11 +352,7 @@ fn add_contact(
     moving: &Vector3<f64>,
 ) {
     let kc = [k.column(0), k.column(1), k.column(2)].map(|c| c.into_owned());
-    let kp = [
-        kc[2] * p.y - kc[1] * p.z,
-        kc[0] * p.z - kc[2] * p.x,
-        kc[1] * p.x - kc[0] * p.y,
-    ];
+    let kp = [kc[2] * p.y - kc[1] * p.z, kc[0] * p.z - kc[2] * p.x, kc[1] * p.x - kc[0] * p.y];
     let fx = f.cross_matrix();
     let dot = f.dot(moving);
     let columns = &mut j.data.0;
@@ -486,9 +462,6 @@ mod tests {
         // A turn of rounding size is none, as in nalgebra's exp.
         let noise = Vector3::new(1e-19, -2e-19, 4e-17);
         assert_eq!(rotation_exp(&noise), UnitQuaternion::identity());
-        assert_eq!(
-            UnitQuaternion::from_scaled_axis(noise),
-            UnitQuaternion::identity()
-        );
+        assert_eq!(UnitQuaternion::from_scaled_axis(noise), UnitQuaternion::identity());
     }
 }

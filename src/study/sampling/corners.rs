@@ -14,10 +14,7 @@ pub fn corner_count(dims: usize) -> Result<usize> {
         return Err(StudyError::ZeroDims);
     }
     if dims > MAX_CORNER_DIMS {
-        return Err(StudyError::TooManyCornerDims {
-            dims,
-            max: MAX_CORNER_DIMS,
-        });
+        return Err(StudyError::TooManyCornerDims { dims, max: MAX_CORNER_DIMS });
     }
     Ok(1usize << dims)
 }

@@ -99,15 +99,7 @@ struct State {
 impl State {
     fn new(x: Vec<f64>, n: usize, d: usize) -> Self {
         let r2 = 1.0 / (n as f64 * n as f64);
-        let mut st = State {
-            n,
-            d,
-            x,
-            d2: vec![0.0; n * n],
-            t: vec![0.0; n * n],
-            s: 0.0,
-            r2,
-        };
+        let mut st = State { n, d, x, d2: vec![0.0; n * n], t: vec![0.0; n * n], s: 0.0, r2 };
         for i in 0..n {
             st.refresh_row(i);
         }
@@ -120,10 +112,7 @@ impl State {
     }
 
     fn pair_d2(&self, i: usize, j: usize) -> f64 {
-        let (xi, xj) = (
-            &self.x[i * self.d..][..self.d],
-            &self.x[j * self.d..][..self.d],
-        );
+        let (xi, xj) = (&self.x[i * self.d..][..self.d], &self.x[j * self.d..][..self.d]);
         xi.iter().zip(xj).map(|(a, b)| (a - b) * (a - b)).sum()
     }
 

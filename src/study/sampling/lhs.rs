@@ -60,10 +60,7 @@ fn check(dims: usize, n: usize) -> Result<()> {
         return Err(StudyError::ZeroSamples);
     }
     if n > MAX_LHS_SAMPLES {
-        return Err(StudyError::LhsTooLarge {
-            n,
-            max: MAX_LHS_SAMPLES,
-        });
+        return Err(StudyError::LhsTooLarge { n, max: MAX_LHS_SAMPLES });
     }
     Ok(())
 }

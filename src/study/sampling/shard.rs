@@ -65,10 +65,7 @@ impl FromStr for Shard {
 /// by at most one.
 pub fn shard_range(n: usize, shard_index: usize, shard_count: usize) -> Result<Range<usize>> {
     if shard_index == 0 || shard_index > shard_count {
-        return Err(StudyError::InvalidShard {
-            index: shard_index,
-            count: shard_count,
-        });
+        return Err(StudyError::InvalidShard { index: shard_index, count: shard_count });
     }
     let j = shard_index - 1;
     let base = n / shard_count;

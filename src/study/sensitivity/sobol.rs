@@ -86,10 +86,7 @@ fn estimate(y: &[f64], dims: usize, n: usize, rows: &[usize]) -> (Vec<f64>, Vec<
     let k = rows.len() as f64;
     let (fa, fb) = (&y[..n], &y[n..2 * n]);
     let mean = rows.iter().map(|&j| fa[j] + fb[j]).sum::<f64>() / (2.0 * k);
-    let var = rows
-        .iter()
-        .map(|&j| (fa[j] - mean).powi(2) + (fb[j] - mean).powi(2))
-        .sum::<f64>()
+    let var = rows.iter().map(|&j| (fa[j] - mean).powi(2) + (fb[j] - mean).powi(2)).sum::<f64>()
         / (2.0 * k - 1.0);
     let mut first = Vec::with_capacity(dims);
     let mut total = Vec::with_capacity(dims);
@@ -122,16 +119,11 @@ pub fn sobol_indices(
         )));
     }
     if y.iter().any(|v| !v.is_finite()) {
-        return Err(StudyError::NonFinite {
-            what: "Sobol outputs".into(),
-        });
+        return Err(StudyError::NonFinite { what: "Sobol outputs".into() });
     }
     let all: Vec<usize> = (0..n).collect();
     let mean = y[..2 * n].iter().sum::<f64>() / (2 * n) as f64;
-    let spread = y[..2 * n]
-        .iter()
-        .map(|v| (v - mean).abs())
-        .fold(0.0, f64::max);
+    let spread = y[..2 * n].iter().map(|v| (v - mean).abs()).fold(0.0, f64::max);
     if spread <= 1e-12 * mean.abs() {
         return Err(StudyError::InvalidParameter(
             "the output does not vary: no Sobol indices".into(),
@@ -175,11 +167,7 @@ pub fn sobol_indices(
 
 /// The bootstrap settings of the Sobol intervals (90 %, [`SOBOL_RESAMPLES`]).
 pub fn sobol_bootstrap() -> BootstrapConfig {
-    BootstrapConfig {
-        resamples: SOBOL_RESAMPLES,
-        level: 0.90,
-        seed: BOOTSTRAP_SEED,
-    }
+    BootstrapConfig { resamples: SOBOL_RESAMPLES, level: 0.90, seed: BOOTSTRAP_SEED }
 }
 
 /// Sobol indices of one output (one DOF) on the block's inputs.
@@ -240,11 +228,9 @@ impl SobolRun {
                         indices: Some(pick(&all, inputs)),
                         note: None,
                     },
-                    Err(e) => SobolDof {
-                        output: name.clone(),
-                        indices: None,
-                        note: Some(e.to_string()),
-                    },
+                    Err(e) => {
+                        SobolDof { output: name.clone(), indices: None, note: Some(e.to_string()) }
+                    }
                 }
             })
             .collect();

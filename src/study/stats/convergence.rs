@@ -28,10 +28,7 @@ pub fn sigma_convergence(values: &[f64]) -> Result<Vec<ConvergencePoint>> {
     Ok((values.iter().enumerate())
         .filter_map(|(i, &v)| {
             m.push(v);
-            (i >= 1).then(|| ConvergencePoint {
-                k: i + 1,
-                sigma: m.sigma(),
-            })
+            (i >= 1).then(|| ConvergencePoint { k: i + 1, sigma: m.sigma() })
         })
         .collect())
 }

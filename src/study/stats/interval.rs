@@ -56,9 +56,7 @@ pub(super) fn check_level(level: f64) -> Result<()> {
     if level > 0.0 && level < 1.0 {
         Ok(())
     } else {
-        Err(StudyError::InvalidParameter(format!(
-            "interval level {level} not in (0, 1)"
-        )))
+        Err(StudyError::InvalidParameter(format!("interval level {level} not in (0, 1)")))
     }
 }
 
@@ -70,29 +68,16 @@ fn bonett(n: f64, s2: f64, g: f64, level: f64) -> Result<Interval> {
         return Err(StudyError::TooFewSamples { n: n as usize });
     }
     if s2 == 0.0 {
-        return Ok(Interval {
-            lower: 0.0,
-            upper: 0.0,
-            level,
-        });
+        return Ok(Interval { lower: 0.0, upper: 0.0, level });
     }
     let c = n / (n - z);
     let se = c * ((g - (n - 3.0) / n).max(0.0) / (n - 1.0)).sqrt();
     let centre = (c * s2).ln();
-    let (lower, upper) = (
-        (0.5 * (centre - z * se)).exp(),
-        (0.5 * (centre + z * se)).exp(),
-    );
+    let (lower, upper) = ((0.5 * (centre - z * se)).exp(), (0.5 * (centre + z * se)).exp());
     if !(lower.is_finite() && upper.is_finite()) {
-        return Err(StudyError::NonFinite {
-            what: "sigma interval".into(),
-        });
+        return Err(StudyError::NonFinite { what: "sigma interval".into() });
     }
-    Ok(Interval {
-        lower,
-        upper,
-        level,
-    })
+    Ok(Interval { lower, upper, level })
 }
 
 /// Bonett's interval of sigma for independent samples (needs n >= 3).
@@ -100,18 +85,10 @@ pub fn sigma_interval_iid(values: &[f64], level: f64) -> Result<Interval> {
     check_values(values)?;
     let n = values.len();
     let (mean, s) = mean_sigma_unchecked(values);
-    let m = if n > 4 {
-        trimmed_mean(values, 1.0 / (2.0 * ((n - 4) as f64).sqrt()))
-    } else {
-        mean
-    };
+    let m = if n > 4 { trimmed_mean(values, 1.0 / (2.0 * ((n - 4) as f64).sqrt())) } else { mean };
     let ss: f64 = values.iter().map(|y| (y - mean) * (y - mean)).sum();
     let s4: f64 = values.iter().map(|y| (y - m).powi(4)).sum();
-    let g = if ss > 0.0 {
-        n as f64 * s4 / (ss * ss)
-    } else {
-        0.0
-    };
+    let g = if ss > 0.0 { n as f64 * s4 / (ss * ss) } else { 0.0 };
     bonett(n as f64, s * s, g, level)
 }
 
@@ -133,9 +110,7 @@ pub fn sigma_interval_from_moments(m: &Moments, level: f64) -> Result<Interval> 
         return Err(StudyError::TooFewSamples { n: m.n as usize });
     }
     if ![m.mean, m.m2, m.m4].iter().all(|v| v.is_finite()) {
-        return Err(StudyError::NonFinite {
-            what: "streamed moments".into(),
-        });
+        return Err(StudyError::NonFinite { what: "streamed moments".into() });
     }
     let n = m.n as f64;
     let g = if m.m2 > 0.0 { m.kurtosis() } else { 0.0 };
@@ -164,27 +139,17 @@ pub fn sigma_replicated(values: &[f64], replicates: usize, level: f64) -> Result
         })
         .collect();
     let grand = stats.iter().map(|s| s.0).sum::<f64>() / r;
-    let w: Vec<f64> = stats
-        .iter()
-        .map(|(mean, v)| v + r / (r - 1.0) * (mean - grand) * (mean - grand))
-        .collect();
+    let w: Vec<f64> =
+        stats.iter().map(|(mean, v)| v + r / (r - 1.0) * (mean - grand) * (mean - grand)).collect();
     let (var, sd_w) = mean_sigma_unchecked(&w);
     if var == 0.0 {
-        let zero = Interval {
-            lower: 0.0,
-            upper: 0.0,
-            level,
-        };
+        let zero = Interval { lower: 0.0, upper: 0.0, level };
         return Ok((0.0, zero));
     }
     // t interval of ln sigma^2 (delta method: se = sd(w) / (sqrt(r) mean(w))), halved for sigma.
     let t = student_t_quantile(0.5 + 0.5 * level, replicates - 1)?;
     let half = 0.5 * t * sd_w / (r.sqrt() * var);
     let sigma = var.sqrt();
-    let interval = Interval {
-        lower: sigma * (-half).exp(),
-        upper: sigma * half.exp(),
-        level,
-    };
+    let interval = Interval { lower: sigma * (-half).exp(), upper: sigma * half.exp(), level };
     Ok((sigma, interval))
 }

@@ -29,11 +29,7 @@ pub struct SampleRecord {
 impl SampleRecord {
     /// A sample whose seating did not centre (varied start): no outputs.
     pub fn not_centred(index: usize, inputs: Vec<f64>) -> Self {
-        SampleRecord {
-            index,
-            inputs,
-            outputs: Vec::new(),
-        }
+        SampleRecord { index, inputs, outputs: Vec::new() }
     }
 
     /// False for a seating that did not centre.
@@ -107,10 +103,7 @@ pub fn merge(shards: impl IntoIterator<Item = ShardFile>) -> Result<MergedStudy>
     let mut records = first.records;
     for file in iter {
         if file.design != design {
-            return Err(StudyError::DesignMismatch(format!(
-                "{:?} vs {:?}",
-                file.design, design
-            )));
+            return Err(StudyError::DesignMismatch(format!("{:?} vs {:?}", file.design, design)));
         }
         if file.output_names != output_names {
             return Err(StudyError::DesignMismatch(format!(
@@ -136,11 +129,7 @@ pub fn merge(shards: impl IntoIterator<Item = ShardFile>) -> Result<MergedStudy>
             count: design.n - records.len(),
         });
     }
-    Ok(MergedStudy {
-        design,
-        output_names,
-        records,
-    })
+    Ok(MergedStudy { design, output_names, records })
 }
 
 /// Regenerates the design and checks that every stored input row equals it exactly
@@ -148,15 +137,11 @@ pub fn merge(shards: impl IntoIterator<Item = ShardFile>) -> Result<MergedStudy>
 pub fn verify_inputs(study: &MergedStudy) -> Result<()> {
     let rows = study.design.rows()?;
     for r in &study.records {
-        let expected = rows.get(r.index).ok_or(StudyError::IndexOutOfRange {
-            index: r.index,
-            what: "design".into(),
-        })?;
+        let expected = rows
+            .get(r.index)
+            .ok_or(StudyError::IndexOutOfRange { index: r.index, what: "design".into() })?;
         let same = expected.len() == r.inputs.len()
-            && expected
-                .iter()
-                .zip(&r.inputs)
-                .all(|(a, b)| a.to_bits() == b.to_bits());
+            && expected.iter().zip(&r.inputs).all(|(a, b)| a.to_bits() == b.to_bits());
         if !same {
             return Err(StudyError::InputsMismatch(r.index));
         }

@@ -17,10 +17,7 @@ use crate::flags::{LoadArgs, StiffnessArgs};
 /// The scene's evaluation points by name.
 fn evaluation_points(scene: &Scene) -> Vec<(String, Vector3<f64>)> {
     let points = &scene.evaluation_points;
-    points
-        .iter()
-        .map(|p| (p.name.clone(), p.position))
-        .collect()
+    points.iter().map(|p| (p.name.clone(), p.position)).collect()
 }
 
 /// The scene's nominal load with the static coefficients `mu` if given.
@@ -45,11 +42,7 @@ impl TryFrom<StiffnessArgs> for Stiffness {
 
     fn try_from(a: StiffnessArgs) -> Result<Stiffness> {
         Ok(Stiffness {
-            at: a
-                .at
-                .as_deref()
-                .map(|at| finite3("at", Some(at)))
-                .transpose()?,
+            at: a.at.as_deref().map(|at| finite3("at", Some(at))).transpose()?,
             scene: a.scene,
             mu: a.mu,
             json: a.json,
@@ -68,11 +61,7 @@ pub fn stiffness(s: Stiffness) -> Result {
     let seating = seat(&coupling, &load, &SolverOptions::default()).context(file)?;
     let k = CouplingStiffness::new(&coupling, &seating, &load).context(file)?;
     let report = StiffnessReport::new(&scene, &load.mu, &seating, &k, &points).context(file)?;
-    if s.json {
-        print_json(&report)
-    } else {
-        emit(&report.table())
-    }
+    if s.json { print_json(&report) } else { emit(&report.table()) }
 }
 
 /// `kinrepro load`, its flags checked.
@@ -95,12 +84,7 @@ impl TryFrom<LoadArgs> for LoadCommand {
         if external.force.norm() == 0.0 && external.moment.norm() == 0.0 {
             usage!("--force and --moment are both zero: there is no load to apply");
         }
-        Ok(LoadCommand {
-            scene: a.scene,
-            external,
-            mu: a.mu,
-            json: a.json,
-        })
+        Ok(LoadCommand { scene: a.scene, external, mu: a.mu, json: a.json })
     }
 }
 
@@ -133,11 +117,7 @@ pub fn load(c: LoadCommand) -> Result {
     let mut points = evaluation_points(&scene);
     points.push(("load point".to_string(), ext.point));
     let report = LoadReport::new(&scene, &load.mu, &seating, &ext, &path, &envelope, &points);
-    if c.json {
-        print_json(&report)
-    } else {
-        emit(&report.table())
-    }
+    if c.json { print_json(&report) } else { emit(&report.table()) }
 }
 
 /// `x,y,z` as the flags take it.

@@ -39,9 +39,8 @@ impl TryFrom<CalibrateArgs> for Calibrate {
             parse_noise(n, &mut noise).context("--noise")?;
         }
         check_jobs(a.jobs)?;
-        let delimiter = (a.delimiter.as_deref())
-            .map(kinrepro::delimited::delimiter_named)
-            .transpose()?;
+        let delimiter =
+            (a.delimiter.as_deref()).map(kinrepro::delimited::delimiter_named).transpose()?;
         Ok(Calibrate {
             options: CalibrateOptions {
                 fit: a.fit.iter().map(|s| s.trim().to_string()).collect(),
@@ -107,22 +106,14 @@ pub fn predict(Predict(o): Predict) -> Result {
     if let Some(p) = &o.plot {
         check_overwrite(p, o.force)?;
     }
-    let models = o
-        .scenes
-        .iter()
-        .map(|p| read_scene(p))
-        .collect::<Result<Vec<_>>>()?;
+    let models = o.scenes.iter().map(|p| read_scene(p)).collect::<Result<Vec<_>>>()?;
     set_jobs(o.jobs, o.samples)?;
     let studies = (o.samples, o.seed, Solver::QuasiStatic);
     let predictions = models
         .iter()
         .map(|(s, c)| predict_one(s, c, &cal, &file, studies))
         .collect::<std::result::Result<Vec<_>, _>>()?;
-    let report = PredictionReport {
-        calibration_file: file,
-        calibration: cal,
-        predictions,
-    };
+    let report = PredictionReport { calibration_file: file, calibration: cal, predictions };
     match o.format {
         TextFormat::Table => emit(&report.table())?,
         TextFormat::Json => print_json(&report.document())?,

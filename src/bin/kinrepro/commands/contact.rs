@@ -40,12 +40,7 @@ impl TryFrom<ContactArgs> for Contact {
         };
         let pair = pair(&a)?;
         radius_hints(&a);
-        Ok(Contact {
-            pair,
-            load: a.load,
-            history,
-            json: a.json,
-        })
+        Ok(Contact { pair, load: a.load, history, json: a.json })
     }
 }
 
@@ -113,11 +108,7 @@ pub fn contact(c: Contact) -> Result {
     let load = c.load.unwrap_or(f64::NAN);
     let eval = c.pair.evaluate(load)?;
     validity(&c.pair, load).context(format!("--load {}", number(load)))?;
-    if c.json {
-        print_json(&eval)
-    } else {
-        emit(&contact_table(&eval))
-    }
+    if c.json { print_json(&eval) } else { emit(&contact_table(&eval)) }
 }
 
 /// Hertz's validity at `load`: a warning where the numbers are only
@@ -138,9 +129,8 @@ fn radius_hints(a: &ContactArgs) {
     let single = [("--radius1", a.radius1), ("--radius2", a.radius2)];
     let single = single.into_iter().filter_map(|(f, r)| Some((f, r?, false)));
     let radii = [("--radii1", &a.radii1), ("--radii2", &a.radii2)];
-    let principal = radii
-        .into_iter()
-        .flat_map(|(f, r)| r.iter().flatten().map(move |x| (f, *x, true)));
+    let principal =
+        radii.into_iter().flat_map(|(f, r)| r.iter().flatten().map(move |x| (f, *x, true)));
     for (flag, r, principal) in single.chain(principal) {
         if let Some(hint) = radius_hint(flag, r, principal) {
             eprintln!("warning: {hint}");

@@ -27,19 +27,13 @@ impl TryFrom<ValidateHertzArgs> for ValidateHertz {
 
     fn try_from(a: ValidateHertzArgs) -> Result<ValidateHertz> {
         let levels = a.convergence.clone().unwrap_or_default();
-        if let Some(l) = levels
-            .iter()
-            .find(|l| !(l.is_finite() && **l > 0.0 && **l <= 1.0))
-        {
+        if let Some(l) = levels.iter().find(|l| !(l.is_finite() && **l > 0.0 && **l <= 1.0)) {
             usage!(
                 "--convergence {l}: element sizes are fractions of the contact semi-axis, in (0, 1]"
             );
         }
         for &element_size_rel in &levels {
-            let level = MeshOptions {
-                element_size_rel,
-                ..MeshOptions::default()
-            };
+            let level = MeshOptions { element_size_rel, ..MeshOptions::default() };
             level.check_size().context("--convergence")?;
         }
         if let Some(r) = &a.ratios {
@@ -55,9 +49,7 @@ impl TryFrom<ValidateHertzArgs> for ValidateHertz {
                 MeshKind::Coarse => MeshOptions::coarse(),
             },
             levels,
-            conformity: a
-                .conformity
-                .then(|| a.ratios.unwrap_or_else(|| RATIOS.to_vec())),
+            conformity: a.conformity.then(|| a.ratios.unwrap_or_else(|| RATIOS.to_vec())),
             json: a.json,
         })
     }
@@ -84,10 +76,7 @@ pub fn validate_hertz(v: ValidateHertz) -> Result {
             .map(|(file, text)| Ok(kinrepro::error::parse_scene(text, file)?))
             .collect::<Result<Vec<_>>>()?
     } else {
-        v.scenes
-            .iter()
-            .map(|p| read_scene(p))
-            .collect::<Result<Vec<_>>>()?
+        v.scenes.iter().map(|p| read_scene(p)).collect::<Result<Vec<_>>>()?
     };
     let cases = distinct_pairs(&models).map_err(|(f, e)| Error::new(format!("{f}: {e}")))?;
     if let Some(ratios) = &v.conformity {
@@ -124,14 +113,9 @@ fn conformity(cases: &[PairCase], mesh: &MeshOptions, ratios: &[f64], json: bool
     }
     let mut studies = Vec::new();
     for case in grooves {
-        let name = format!(
-            "sphere-groove {}/{}",
-            case.pair.material1.name, case.pair.material2.name
-        );
-        eprintln!(
-            "conformity study of {name} at {:.4} N (two FE solves per ratio) ...",
-            case.load
-        );
+        let name =
+            format!("sphere-groove {}/{}", case.pair.material1.name, case.pair.material2.name);
+        eprintln!("conformity study of {name} at {:.4} N (two FE solves per ratio) ...", case.load);
         studies.push(conformity_study(case, mesh, ratios).context(name)?);
     }
     if json {

@@ -103,10 +103,7 @@ pub fn set_jobs(jobs: Option<usize>, samples: usize) -> Result {
             "note: --jobs {asked} capped to {j} (at most {JOBS_PER_CORE} per core on {cores} core(s), and no more than the {samples} sample(s))"
         );
     }
-    rayon::ThreadPoolBuilder::new()
-        .num_threads(j)
-        .build_global()
-        .context("--jobs")
+    rayon::ThreadPoolBuilder::new().num_threads(j).build_global().context("--jobs")
 }
 
 /// The progress bar of `total` seatings by `method` (on a terminal only),
@@ -124,16 +121,13 @@ pub fn progress(total: usize, method: &kinrepro::solve::Method) -> Result<indica
     let style = indicatif::ProgressStyle::with_template(
         "{elapsed_precise} [{bar:40}] {pos}/{len} seatings{remaining}",
     )?
-    .with_key(
-        "remaining",
-        |s: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
-            let left =
-                kinrepro::report::progress::remaining(s.elapsed(), s.pos(), s.len().unwrap_or(0));
-            if let Some(left) = left {
-                let _ = write!(w, " (about {} left)", indicatif::HumanDuration(left));
-            }
-        },
-    );
+    .with_key("remaining", |s: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
+        let left =
+            kinrepro::report::progress::remaining(s.elapsed(), s.pos(), s.len().unwrap_or(0));
+        if let Some(left) = left {
+            let _ = write!(w, " (about {} left)", indicatif::HumanDuration(left));
+        }
+    });
     b.set_style(style);
     Ok(b)
 }
@@ -151,10 +145,7 @@ pub fn vector3(flag: &str, v: Option<&[f64]>) -> Result<Vector3<f64>> {
     match v {
         None => Ok(Vector3::zeros()),
         Some(&[x, y, z]) => Ok(Vector3::new(x, y, z)),
-        Some(v) => usage!(
-            "--{flag} needs three comma-separated values, got {}",
-            v.len()
-        ),
+        Some(v) => usage!("--{flag} needs three comma-separated values, got {}", v.len()),
     }
 }
 
@@ -162,12 +153,7 @@ pub fn vector3(flag: &str, v: Option<&[f64]>) -> Result<Vector3<f64>> {
 pub fn finite3(flag: &str, v: Option<&[f64]>) -> Result<Vector3<f64>> {
     let x = vector3(flag, v)?;
     if !x.iter().all(|c| c.is_finite()) {
-        usage!(
-            "--{flag} needs three finite numbers, got ({}, {}, {})",
-            x.x,
-            x.y,
-            x.z
-        );
+        usage!("--{flag} needs three finite numbers, got ({}, {}, {})", x.x, x.y, x.z);
     }
     Ok(x)
 }

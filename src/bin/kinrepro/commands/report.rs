@@ -12,11 +12,8 @@ use crate::error::Result;
 use crate::flags::{Format, ReportArgs};
 
 pub fn report(args: ReportArgs) -> Result {
-    let studies = args
-        .studies
-        .iter()
-        .map(|p| load_study(p))
-        .collect::<std::result::Result<Vec<_>, _>>()?;
+    let studies =
+        args.studies.iter().map(|p| load_study(p)).collect::<std::result::Result<Vec<_>, _>>()?;
     write_html(studies, args.reference.as_deref(), &args.out, args.force)
 }
 

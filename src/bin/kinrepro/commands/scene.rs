@@ -25,9 +25,7 @@ pub fn check(scenes: &[PathBuf]) -> Result {
     }
     let total = scenes.len();
     if failed > 0 {
-        return Err(Error::new(format!(
-            "{failed} of {total} scenes are invalid"
-        )));
+        return Err(Error::new(format!("{failed} of {total} scenes are invalid")));
     }
     // A coupling that cannot seat is valid TOML but not a usable design: a
     // script that checks scenes before a batch run must see it fail.

@@ -53,10 +53,7 @@ pub fn run(r: Run) -> Result {
     let (scene, coupling) = read_scene(&r.scene)?;
     let file = scene.file.clone();
     // The nominal seating starts where the seating does.
-    let nominal = Load {
-        start: r.start,
-        ..Load::nominal(&scene)
-    };
+    let nominal = Load { start: r.start, ..Load::nominal(&scene) };
     let load = match &r.mu {
         Some(mu) => nominal.with_mu(mu),
         None => nominal.clone(),
@@ -72,11 +69,7 @@ pub fn run(r: Run) -> Result {
     }
     let model = (&scene, &coupling);
     let report = RunReport::new(model, &load.mu, &seating, &nominal, r.method.name());
-    if r.json {
-        print_json(&report)
-    } else {
-        emit(&report.table())
-    }
+    if r.json { print_json(&report) } else { emit(&report.table()) }
 }
 
 /// A dynamic seating with its trace written to `path` (whole or not at
@@ -108,7 +101,5 @@ fn traced(
     // Renamed into place under the signal lock; not at all once a signal
     // asked to stop (the partial trace of a cancelled seating is dropped).
     crate::signals::commit(vec![trace_file])?;
-    result
-        .context(&scene.file)
-        .map_err(|e| Error::new(format!("{e} (trace written to {name})")))
+    result.context(&scene.file).map_err(|e| Error::new(format!("{e} (trace written to {name})")))
 }

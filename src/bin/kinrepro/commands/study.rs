@@ -31,8 +31,7 @@ impl TryFrom<StudyArgs> for Study {
         force_needs_output(a.output.force, [&a.output.out, &a.output.html])?;
         check_jobs(a.run.jobs)?;
         let triple = |flag: &str, v: Option<&[f64]>| {
-            v.map(|v| vector3(flag, Some(v)).map(Into::into))
-                .transpose()
+            v.map(|v| vector3(flag, Some(v)).map(Into::into)).transpose()
         };
         let options = StudyOptions {
             solver: a.solver,
@@ -55,11 +54,7 @@ impl TryFrom<StudyArgs> for Study {
 }
 
 pub fn study(s: Study) -> Result {
-    let models = s
-        .scenes
-        .iter()
-        .map(|p| read_scene(p))
-        .collect::<Result<Vec<_>>>()?;
+    let models = s.scenes.iter().map(|p| read_scene(p)).collect::<Result<Vec<_>>>()?;
     let plan = StudyPlan::new(models, &s.options)?;
     set_jobs(s.jobs, plan.seatings)?;
     let bar = progress(plan.seatings, plan.method())?;
@@ -122,11 +117,7 @@ fn refuse_unseated(report: &StudyReport, allow: bool) -> Result {
 }
 
 pub fn merge(args: MergeArgs) -> Result {
-    let MergeArgs {
-        parts,
-        format,
-        allow_unseated,
-    } = args;
+    let MergeArgs { parts, format, allow_unseated } = args;
     // The first part (clap asks for one at least) says which kind of
     // document is merged; it is read once.
     let first = read_text(&parts[0])?;

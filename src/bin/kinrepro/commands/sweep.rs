@@ -63,9 +63,7 @@ pub fn sweep(s: Sweep) -> Result {
     let seatings = share.saturating_mul(plan.variants[0].design.n);
     set_jobs(s.jobs, seatings)?;
     let bar = progress(seatings, plan.method())?;
-    let report = run(&spec, &plan, shard, s.pareto_point.as_deref(), &|| {
-        bar.inc(1)
-    })?;
+    let report = run(&spec, &plan, shard, s.pareto_point.as_deref(), &|| bar.inc(1))?;
     bar.finish_and_clear();
     print_sweep(&report, s.output.format)?;
     if let Some(dir) = &s.output.out {

@@ -17,11 +17,7 @@ pub use studies::{CalibrateArgs, PredictArgs, StudyArgs, SweepArgs};
 pub use verbs::*;
 
 #[derive(Parser)]
-#[command(
-    name = "kinrepro",
-    version,
-    about = "Re-seating reproducibility of kinematic couplings"
-)]
+#[command(name = "kinrepro", version, about = "Re-seating reproducibility of kinematic couplings")]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,

@@ -29,20 +29,10 @@ pub struct ContactArgs {
     pub radius2: Option<f64>,
     /// Principal radii RX,RY of body 1, the moving element [m] (negative:
     /// concave, inf: flat).
-    #[arg(
-        long,
-        value_delimiter = ',',
-        allow_hyphen_values = true,
-        requires = "radii2"
-    )]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, requires = "radii2")]
     pub radii1: Option<Vec<f64>>,
     /// Principal radii RX,RY of body 2, the fixed element [m].
-    #[arg(
-        long,
-        value_delimiter = ',',
-        allow_hyphen_values = true,
-        requires = "radii1"
-    )]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, requires = "radii1")]
     pub radii2: Option<Vec<f64>>,
     /// Angle from body 1's RX direction to body 2's [deg] (with --radii1).
     #[arg(long, allow_hyphen_values = true, requires = "radii1")]
@@ -67,12 +57,7 @@ pub struct ContactArgs {
     #[arg(long, allow_hyphen_values = true, requires = "history")]
     pub mu: Option<f64>,
     /// mu_d = ratio * mu_s, in (0, 1] (with --history).
-    #[arg(
-        long,
-        default_value_t = 0.8,
-        allow_hyphen_values = true,
-        requires = "history"
-    )]
+    #[arg(long, default_value_t = 0.8, allow_hyphen_values = true, requires = "history")]
     pub dynamic_ratio: f64,
     /// coulomb | mindlin-deresiewicz (with --history).
     #[arg(long, default_value = "coulomb", requires = "history")]

@@ -19,15 +19,11 @@ pub fn sigma_bars_svg(data: &[VariantSigma], what: &str) -> Result<String> {
     }
     check_finite(data.iter().flat_map(|v| v.sigma.iter()), "sigma")?;
     check_finite(
-        data.iter()
-            .filter_map(|v| v.interval.as_ref())
-            .flat_map(|(l, h)| l.iter().chain(h.iter())),
+        data.iter().filter_map(|v| v.interval.as_ref()).flat_map(|(l, h)| l.iter().chain(h.iter())),
         "interval of sigma",
     )?;
     check_finite(
-        data.iter()
-            .filter_map(|v| v.reference.as_ref())
-            .flat_map(|r| r.iter().flatten()),
+        data.iter().filter_map(|v| v.reference.as_ref()).flat_map(|r| r.iter().flatten()),
         "reference sigma",
     )?;
     for v in data {
@@ -48,20 +44,8 @@ pub fn sigma_bars_svg(data: &[VariantSigma], what: &str) -> Result<String> {
         let (left, right) = root.split_horizontally(550);
         let translations = [Dof::X, Dof::Y, Dof::Z];
         let rotations = [Dof::PhiX, Dof::PhiY, Dof::PhiZ];
-        panel(
-            &left,
-            data,
-            &translations,
-            &format!("{what}, translations"),
-            true,
-        )?;
-        panel(
-            &right,
-            data,
-            &rotations,
-            &format!("{what}, rotations"),
-            false,
-        )?;
+        panel(&left, data, &translations, &format!("{what}, translations"), true)?;
+        panel(&right, data, &rotations, &format!("{what}, rotations"), false)?;
         root.present().map_err(plot_err)?;
     }
     Ok(svg)
@@ -103,11 +87,7 @@ fn panel<DB: DrawingBackend>(
     let has_ci = data.iter().any(|v| v.interval.is_some());
     let entries = data.len() + usize::from(has_ref || has_ci);
     let (_, height) = area.dim_in_pixel();
-    let room = if legend {
-        legend_room(entries, f64::from(height) - 100.0)
-    } else {
-        1.0
-    };
+    let room = if legend { legend_room(entries, f64::from(height) - 100.0) } else { 1.0 };
     let mut chart = ChartBuilder::on(area)
         .caption(title, ("sans-serif", 20))
         .margin(12)
@@ -175,19 +155,14 @@ fn variant_bars<DB: DrawingBackend>(
     let col = color(v);
     let x0 = move |c: usize| c as f64 - 0.4 + v as f64 * width;
     let bars = dofs.iter().enumerate().map(move |(c, &d)| {
-        Rectangle::new(
-            [(x0(c), 0.0), (x0(c) + width, variant.sigma[idx(d)])],
-            col.filled(),
-        )
+        Rectangle::new([(x0(c), 0.0), (x0(c) + width, variant.sigma[idx(d)])], col.filled())
     });
     chart
         .draw_series(bars)
         .map_err(plot_err)?
         .label(variant.variant.as_str())
         .legend(move |(x, y)| Rectangle::new([(x, y - 5), (x + 12, y + 5)], col.filled()));
-    chart
-        .draw_series(marks(variant, dofs, &x0, width))
-        .map_err(plot_err)?;
+    chart.draw_series(marks(variant, dofs, &x0, width)).map_err(plot_err)?;
     Ok(())
 }
 
@@ -233,20 +208,11 @@ fn marks(
             let (xm, cap) = (x0(c) + width / 2.0, width / 6.0);
             let style = BLACK.stroke_width(2);
             out.push(PathElement::new([(xm, lo[k]), (xm, hi[k])], style));
-            out.push(PathElement::new(
-                [(xm - cap, lo[k]), (xm + cap, lo[k])],
-                style,
-            ));
-            out.push(PathElement::new(
-                [(xm - cap, hi[k]), (xm + cap, hi[k])],
-                style,
-            ));
+            out.push(PathElement::new([(xm - cap, lo[k]), (xm + cap, lo[k])], style));
+            out.push(PathElement::new([(xm - cap, hi[k]), (xm + cap, hi[k])], style));
         }
         if let Some(y) = variant.reference.and_then(|r| r[k]) {
-            out.push(PathElement::new(
-                [(x0(c), y), (x0(c) + width, y)],
-                BLACK.stroke_width(4),
-            ));
+            out.push(PathElement::new([(x0(c), y), (x0(c) + width, y)], BLACK.stroke_width(4)));
         }
     }
     out

@@ -14,10 +14,7 @@ pub fn convergence_svg(data: &[ConvergenceSeries]) -> Result<String> {
     if data.iter().all(|s| s.points.is_empty()) {
         return Err(PlotError::NothingToPlot("no convergence points".into()));
     }
-    check_finite(
-        data.iter().flat_map(|s| s.points.iter().map(|p| &p.sigma)),
-        "convergence sigma",
-    )?;
+    check_finite(data.iter().flat_map(|s| s.points.iter().map(|p| &p.sigma)), "convergence sigma")?;
     let mut variants: Vec<&str> = Vec::new();
     for s in data {
         if !variants.contains(&s.variant.as_str()) {
@@ -48,10 +45,8 @@ pub fn convergence_svg(data: &[ConvergenceSeries]) -> Result<String> {
         let size = (420 * cols as u32, (400 + 14 * legend_lines) * rows as u32);
         let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        for (n, ((dof, group), area)) in groups
-            .iter()
-            .zip(root.split_evenly((rows, cols)))
-            .enumerate()
+        for (n, ((dof, group), area)) in
+            groups.iter().zip(root.split_evenly((rows, cols))).enumerate()
         {
             panel(&area, *dof, group, n == 0)?;
         }
@@ -71,16 +66,9 @@ fn panel<DB: DrawingBackend>(
     let kmax = points().map(|p| p.k).max().unwrap_or(2).max(3) as f64;
     let ymax = points().map(|p| p.sigma).fold(0.0, f64::max);
     let (_, height) = area.dim_in_pixel();
-    let room = if legend {
-        legend_room(series.len(), f64::from(height) - 90.0)
-    } else {
-        1.0
-    };
+    let room = if legend { legend_room(series.len(), f64::from(height) - 90.0) } else { 1.0 };
     let mut chart = ChartBuilder::on(area)
-        .caption(
-            format!("convergence of σ {} [{unit}]", dof.symbol()),
-            ("sans-serif", 17),
-        )
+        .caption(format!("convergence of σ {} [{unit}]", dof.symbol()), ("sans-serif", 17))
         .margin(10)
         .x_label_area_size(42)
         .y_label_area_size(65)

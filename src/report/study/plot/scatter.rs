@@ -14,11 +14,7 @@ pub fn xy_scatter_svg(data: &[VariantScatter]) -> Result<String> {
     if data.is_empty() {
         return Err(PlotError::NothingToPlot("no variants".into()));
     }
-    check_finite(
-        data.iter()
-            .flat_map(|v| v.xy.iter().flat_map(|(x, y)| [x, y])),
-        "x-y samples",
-    )?;
+    check_finite(data.iter().flat_map(|v| v.xy.iter().flat_map(|(x, y)| [x, y])), "x-y samples")?;
     let cols = (1..).find(|c| c * c >= data.len()).unwrap_or(1).min(4);
     let rows = data.len().div_ceil(cols);
     let r = headroom(
@@ -42,12 +38,7 @@ pub fn xy_scatter_svg(data: &[VariantScatter]) -> Result<String> {
             let caption = if panel.point.is_empty() {
                 format!("{} ({} samples)", panel.variant, panel.xy.len())
             } else {
-                format!(
-                    "{} · {} ({} samples)",
-                    panel.variant,
-                    panel.point,
-                    panel.xy.len()
-                )
+                format!("{} · {} ({} samples)", panel.variant, panel.point, panel.xy.len())
             };
             let mut chart = ChartBuilder::on(&area)
                 .caption(caption, ("sans-serif", 17))
@@ -64,17 +55,11 @@ pub fn xy_scatter_svg(data: &[VariantScatter]) -> Result<String> {
                 .y_desc("y [nm]")
                 .draw()
                 .map_err(plot_err)?;
-            let i = variants
-                .iter()
-                .position(|v| *v == panel.variant)
-                .unwrap_or(0);
+            let i = variants.iter().position(|v| *v == panel.variant).unwrap_or(0);
             let col = color(i);
             chart
                 .draw_series(
-                    panel
-                        .xy
-                        .iter()
-                        .map(move |&(x, y)| Circle::new((x, y), 3, col.filled())),
+                    panel.xy.iter().map(move |&(x, y)| Circle::new((x, y), 3, col.filled())),
                 )
                 .map_err(plot_err)?;
         }
