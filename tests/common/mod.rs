@@ -17,6 +17,17 @@ pub fn kinrepro(args: &[&str]) -> (bool, String, String) {
     )
 }
 
+/// The seven bundled variants of the paper, in its order.
+pub const PAPER_SCENES: [&str; 7] = [
+    "01_maxwell_vgroove_steel.toml",
+    "02_maxwell_pins_steel.toml",
+    "03_maxwell_pins_sic.toml",
+    "04_maxwell_balls_steel.toml",
+    "05_maxwell_balls_sic.toml",
+    "06_kelvin_steel.toml",
+    "07_kelvin_sic.toml",
+];
+
 /// Path of a bundled scene.
 pub fn scene(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name)

@@ -5,15 +5,7 @@
 
 use super::*;
 
-const SCENES: [&str; 7] = [
-    "01_maxwell_vgroove_steel.toml",
-    "02_maxwell_pins_steel.toml",
-    "03_maxwell_pins_sic.toml",
-    "04_maxwell_balls_steel.toml",
-    "05_maxwell_balls_sic.toml",
-    "06_kelvin_steel.toml",
-    "07_kelvin_sic.toml",
-];
+use crate::common::PAPER_SCENES as SCENES;
 
 /// The dimensions a scene's drawing must show, from its `[coupling]`:
 /// circle of ball centres and ball diameter [mm], opening angle [deg], and

@@ -17,16 +17,10 @@ use kinrepro::solve::quasistatic::{ExternalLoad, LoadEventKind, seat};
 use kinrepro::solve::{Load, PointPose, SolverOptions};
 use nalgebra::{Matrix6, Vector3, Vector6};
 
-const ALL_SCENES: [&str; 8] = [
-    "01_maxwell_vgroove_steel.toml",
-    "02_maxwell_pins_steel.toml",
-    "03_maxwell_pins_sic.toml",
-    "04_maxwell_balls_steel.toml",
-    "05_maxwell_balls_sic.toml",
-    "06_kelvin_steel.toml",
-    "07_kelvin_sic.toml",
-    "custom_kelvin_explicit.toml",
-];
+/// The paper's variants and the explicit Kelvin scene.
+fn all_scenes() -> impl Iterator<Item = &'static str> {
+    crate::common::PAPER_SCENES.into_iter().chain(["custom_kelvin_explicit.toml"])
+}
 
 /// (normal, ball centre) of the 90-degree Maxwell V-groove of scene 01
 /// (`common::maxwell_contacts`, from docs/model.md's axes and contact numbering, by hand).
@@ -91,7 +85,7 @@ fn frictionless_vgroove_stiffness_equals_the_hand_closed_form() {
 
 #[test]
 fn stiffness_is_symmetric_positive_definite_for_every_bundled_scene() {
-    for name in ALL_SCENES {
+    for name in all_scenes() {
         let (scene, c) = load(name);
         let mu = Load::nominal(&scene);
         let s = seat(&c, &mu, &SolverOptions::default()).unwrap();

@@ -10,15 +10,7 @@ use kinrepro::assembly::{BodyPose, Coupling, constraint};
 use kinrepro::scene::{Scene, SurfaceGeometry};
 use nalgebra::Vector3;
 
-const PAPER_SCENES: [&str; 7] = [
-    "01_maxwell_vgroove_steel.toml",
-    "02_maxwell_pins_steel.toml",
-    "03_maxwell_pins_sic.toml",
-    "04_maxwell_balls_steel.toml",
-    "05_maxwell_balls_sic.toml",
-    "06_kelvin_steel.toml",
-    "07_kelvin_sic.toml",
-];
+use crate::common::PAPER_SCENES;
 
 fn scene_path(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name)

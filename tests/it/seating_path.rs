@@ -32,15 +32,7 @@ fn edited((scene, _): &Model, edit: impl FnOnce(&mut Scene)) -> Model {
     (scene, c)
 }
 
-const SCENES: [&str; 7] = [
-    "01_maxwell_vgroove_steel.toml",
-    "02_maxwell_pins_steel.toml",
-    "03_maxwell_pins_sic.toml",
-    "04_maxwell_balls_steel.toml",
-    "05_maxwell_balls_sic.toml",
-    "06_kelvin_steel.toml",
-    "07_kelvin_sic.toml",
-];
+use crate::common::PAPER_SCENES as SCENES;
 
 /// `samples` friction vectors of the scene's distribution (seed 16).
 fn frictions((scene, c): &Model, samples: usize) -> Vec<Vec<f64>> {
