@@ -108,7 +108,9 @@ pub fn recorded_output_names(scene: &Scene, variation: &Variation) -> Vec<String
     v
 }
 
-/// Run this shard's samples of one scene, reporting to `progress`.
+/// Run this shard's samples of one scene, reporting to `progress`; the
+/// records are kept (the plan bounded them: `StudyPlan::keeping_records`,
+/// or a variant `StudyPlan::new` does not stream).
 ///
 /// Per sample: with friction, preload or start varied, the nominal
 /// coupling is seated with the sample's friction, preload and start, and
@@ -122,12 +124,6 @@ pub fn run_variant<'a>(
     progress: impl Into<Progress<'a>>,
 ) -> Result<VariantRun, StudyError> {
     let in_file = |e: StudyError| e.in_file(v.file());
-    // The records of this run are kept in memory (a kept study, a sweep
-    // point, a calibration's or prediction's model study): bounded before
-    // anything is drawn, whatever the plan would stream.
-    let kept = Some(v.samples.len());
-    super::bounds::check("seatings kept in memory", kept, super::bounds::MAX_KEPT_SEATINGS)
-        .map_err(in_file)?;
     let rows = v.design.range(v.samples.clone()).map_err(in_file)?;
     let cannot_seat = super::verdict::cannot_seat(&v.scene, &v.coupling, &s.method)?;
     let records = evaluate_rows(s, v, v.samples.clone().zip(rows).collect(), progress)?;
