@@ -49,6 +49,8 @@ pub enum Param {
     /// Permission to replace an existing output file.
     Force,
     Jobs,
+    /// The temperature changes a thermal path visits.
+    Cycle,
 }
 
 impl Param {
@@ -82,6 +84,7 @@ impl Param {
             Param::Radii2 => "radii2",
             Param::Force => "force",
             Param::Jobs => "jobs",
+            Param::Cycle => "cycle",
         }
     }
 

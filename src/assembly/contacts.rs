@@ -12,27 +12,54 @@ use crate::scene::{Surface, SurfaceGeometry};
 
 /// Contact `i` (0-based) of surface `s`, served by `ball`.
 pub(super) fn build(i: usize, s: &Surface, ball: &MovingBall) -> Result<Contact, AssemblyError> {
-    let err = |source| AssemblyError::Contact { contact: i + 1, source };
     let (centre, radius, axis) = match s.moving {
         Some(p) => (p.centre, p.radius, p.axis),
         None => (ball.centre, ball.radius, None),
     };
-    let (m1, m2) = (ball.material.clone(), s.material.clone());
+    let moving = MovingSurface { centre, radius, axis };
+    let materials = (ball.material.clone(), s.material.clone());
+    place(i, s.ball, moving, s.geometry, materials, s.support_compliance)
+}
+
+/// The moving element's surface at one contact: its centre of curvature
+/// (a point of a pin's axis) in the body frame, its radius and a pin's axis.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct MovingSurface {
+    pub centre: Vector3<f64>,
+    pub radius: f64,
+    pub axis: Option<Vector3<f64>>,
+}
+
+/// Contact `i` (0-based) of moving ball `ball`: its moving surface against
+/// the fixed `surface`, of `materials` (moving, fixed), with the support
+/// `compliance` [m/N]: the pair's curvature, its laws and the orientation
+/// of its ellipse (also the contact of a coupling at other temperatures,
+/// `assembly::thermal`).
+pub(super) fn place(
+    i: usize,
+    ball: usize,
+    moving: MovingSurface,
+    surface: SurfaceGeometry,
+    (m1, m2): (Material, Material),
+    compliance: f64,
+) -> Result<Contact, AssemblyError> {
+    let err = |source| AssemblyError::Contact { contact: i + 1, source };
+    let MovingSurface { centre, radius, axis } = moving;
     let (pair, major_axis) = match axis {
-        None => sphere_pair(&s.geometry, &centre, radius, m1, m2).map_err(err)?,
-        Some(axis) => pin_pair(&s.geometry, &axis, radius, m1, m2).map_err(err)?,
+        None => sphere_pair(&surface, &centre, radius, m1, m2).map_err(err)?,
+        Some(axis) => pin_pair(&surface, &axis, radius, m1, m2).map_err(err)?,
     };
     let law = pair.law().map_err(err)?;
     Ok(Contact {
-        ball: s.ball,
+        ball,
         centre,
         radius,
         axis,
         major_axis,
-        surface: s.geometry,
+        surface,
         shape: pair.shape,
         shear: ShearRatios::new(&pair, &law.hertz),
-        normal: SeriesNormal::new(law.hertz, s.support_compliance),
+        normal: SeriesNormal::new(law.hertz, compliance),
         pair,
         law,
     })

@@ -4,6 +4,7 @@
 pub mod constraint;
 mod contacts;
 pub mod geometry;
+pub mod thermal;
 
 use nalgebra::{Matrix6, Quaternion, UnitQuaternion, Vector3, Vector6};
 use thiserror::Error;
@@ -13,7 +14,7 @@ use crate::contact::{
     ContactError, ContactLaw, ContactPair, ContactShape, FrictionLaw, SeriesNormal, TangentialLaw,
 };
 use crate::material::Material;
-use crate::scene::{DynamicsSettings, Scene, SurfaceGeometry};
+use crate::scene::{DynamicsSettings, Scene, SurfaceGeometry, ThermalBodies};
 pub use constraint::{ConstraintReport, FrictionLimit};
 pub use geometry::ContactGeometry;
 
@@ -23,6 +24,13 @@ pub use geometry::ContactGeometry;
 pub struct BodyPose {
     pub rotation: UnitQuaternion<f64>,
     pub translation: Vector3<f64>,
+}
+
+impl Default for BodyPose {
+    /// The identity: the body frame on the world frame.
+    fn default() -> Self {
+        BodyPose::identity()
+    }
 }
 
 impl BodyPose {
@@ -126,6 +134,9 @@ pub struct Coupling {
     /// Mass properties of the moving half given by the scene (`[dynamics]`;
     /// `None`: the dynamic solver's default model).
     pub dynamics: Option<DynamicsSettings>,
+    /// The expansion model of the scene's `[thermal]` table, if any (the
+    /// coupling at other temperatures: [`Coupling::at_temperatures`]).
+    pub thermal: Option<ThermalBodies>,
 }
 
 /// The assembly failed: the scene describes no working coupling.
@@ -149,6 +160,8 @@ pub enum AssemblyError {
          ({force_n:.4} N) to balance it"
     )]
     PreloadLifts { contact: usize, force_n: f64 },
+    #[error("the scene has no [thermal] table: thermal drift needs the bodies and their cycle")]
+    NoThermal,
 }
 
 /// Ball centres are placed at most this far from touching (before the
@@ -209,6 +222,7 @@ impl Coupling {
                 tangential: f.tangential_law,
             },
             dynamics: scene.dynamics,
+            thermal: scene.thermal.as_ref().map(|t| t.bodies.clone()),
         };
         for (i, c) in coupling.contacts.iter().enumerate() {
             let g = coupling.geometry(i, &BodyPose::identity());

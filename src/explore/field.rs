@@ -10,7 +10,7 @@
 //! support_compliance}`, `preload.{force, ramp_time}`, `friction.{mu_static,
 //! spread, dynamic_ratio, decay_coefficient}` and
 //! `materials.NAME.{youngs_modulus, poisson_ratio, allowable_pressure,
-//! allowable_shear_stress}` (NAME: a `[[materials]]` entry of the scene or
+//! allowable_shear_stress, thermal_expansion}` (NAME: a `[[materials]]` entry of the scene or
 //! a built-in material; setting a built-in's constant adds an entry with
 //! `override = true` holding the built-in's other constants). Material
 //! fields: `coupling.ball_material`, `coupling.groove_material`. String
@@ -92,8 +92,13 @@ const NUMBERS: [(&str, &[&str]); 3] = [
     ("preload", &["force", "ramp_time"]),
     ("friction", &["mu_static", "spread", "dynamic_ratio", "decay_coefficient"]),
 ];
-const MATERIAL_NUMBERS: [&str; 4] =
-    ["youngs_modulus", "poisson_ratio", "allowable_pressure", "allowable_shear_stress"];
+const MATERIAL_NUMBERS: [&str; 5] = [
+    "youngs_modulus",
+    "poisson_ratio",
+    "allowable_pressure",
+    "allowable_shear_stress",
+    "thermal_expansion",
+];
 const MATERIALS: [&str; 2] = ["coupling.ball_material", "coupling.groove_material"];
 const TEXTS: [&str; 6] = [
     "coupling.arrangement",
@@ -232,6 +237,7 @@ fn set_material(scene: &mut SceneFile, name: &str, key: &str, x: f64) -> Result<
             poisson_ratio: at(m.poisson_ratio),
             allowable_pressure: m.allowable_pressure.map(at),
             allowable_shear_stress: m.allowable_shear_stress.map(at),
+            thermal_expansion: m.thermal_expansion.map(at),
             replaces: Some(at(true)),
         });
     }
@@ -243,6 +249,7 @@ fn set_material(scene: &mut SceneFile, name: &str, key: &str, x: f64) -> Result<
         "poisson_ratio" => m.poisson_ratio = at(x),
         "allowable_pressure" => m.allowable_pressure = Some(at(x)),
         "allowable_shear_stress" => m.allowable_shear_stress = Some(at(x)),
+        "thermal_expansion" => m.thermal_expansion = Some(at(x)),
         _ => return Err(FieldError::NotSweepable),
     }
     Ok(())

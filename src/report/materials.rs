@@ -1,6 +1,6 @@
 //! `kinrepro materials`: the built-in materials ([`crate::material::BUILTIN`])
 //! with their constants and the source of each value, as a table (GPa,
-//! MPa, kg/m^3), CSV or JSON (SI units).
+//! MPa, kg/m^3, 1e-6/K), CSV or JSON (SI units).
 
 use std::fmt::Write;
 
@@ -11,7 +11,7 @@ use crate::report::table::{Column, Table, cells};
 use crate::study::provenance::{SCHEMA_VERSION, VERSION};
 
 /// Header of `kinrepro materials --format csv` (SI units).
-pub const MATERIALS_HEADER: &str = "kinrepro_version,name,description,youngs_modulus_pa,poisson_ratio,density_kg_per_m3,allowable_pressure_pa,source_elastic,source_density,source_allowable_pressure";
+pub const MATERIALS_HEADER: &str = "kinrepro_version,name,description,youngs_modulus_pa,poisson_ratio,density_kg_per_m3,allowable_pressure_pa,source_elastic,source_density,source_allowable_pressure,thermal_expansion_per_k,source_thermal_expansion";
 
 /// The JSON document of `kinrepro materials --format json`.
 #[derive(Debug, Clone, Serialize)]
@@ -19,7 +19,8 @@ pub struct MaterialsDoc {
     pub kinrepro_version: &'static str,
     pub schema_version: u32,
     /// One entry per built-in material, SI units (`youngs_modulus` in Pa,
-    /// `density` in kg/m^3, `allowable_pressure` in Pa or null).
+    /// `density` in kg/m^3, `allowable_pressure` in Pa or null,
+    /// `thermal_expansion` in 1/K).
     pub materials: &'static [BuiltinMaterial],
 }
 
@@ -47,6 +48,8 @@ pub fn materials_csv() -> String {
             m.sources.elastic,
             m.sources.density,
             m.sources.allowable_pressure,
+            format!("{:e}", m.thermal_expansion),
+            m.sources.thermal_expansion,
         ]);
     }
     t.csv()
@@ -57,7 +60,7 @@ pub fn materials_table() -> String {
     let mut s =
         format!("kinrepro {VERSION}: built-in materials (use their names in scene files)\n\n");
     let mut t = Table::new(
-        "<name; >E [GPa]:.0; >nu:.2; >density [kg/m3]:.0; >p_allow [MPa]:.0; <description",
+        "<name; >E [GPa]:.1; >nu:.3; >density [kg/m3]:.0; >p_allow [MPa]:.0; >alpha [1e-6/K]:.2; <description",
     );
     for m in BUILTIN {
         t.row(cells![
@@ -66,6 +69,7 @@ pub fn materials_table() -> String {
             m.poisson_ratio,
             m.density,
             m.allowable_pressure.map(|p| p / 1e6),
+            m.thermal_expansion * 1e6,
             m.description,
         ]);
     }
@@ -76,6 +80,7 @@ pub fn materials_table() -> String {
         let _ = writeln!(s, "  E, nu:   {}", m.sources.elastic);
         let _ = writeln!(s, "  density: {}", m.sources.density);
         let _ = writeln!(s, "  p_allow: {}", m.sources.allowable_pressure);
+        let _ = writeln!(s, "  alpha:   {}", m.sources.thermal_expansion);
     }
     s += "\nNo built-in material carries an allowable shear stress; give allowable_shear_stress in the scene file.\n";
     s

@@ -22,3 +22,4 @@ pub mod seating;
 pub mod study;
 pub mod sweep;
 pub mod table;
+pub mod thermal;

@@ -67,6 +67,33 @@ pub struct SceneFile {
     /// (`--vary preload`, `--vary tolerances`); every bound defaults to 0.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub variation: Option<VariationFile>,
+    /// The bodies that carry the elements, their expansion and the
+    /// temperature cycle (`kinrepro thermal`, a study's thermal drift).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub thermal: Option<ThermalFile>,
+}
+
+/// `[thermal]`: the body carrying the moving elements and the body carrying
+/// the fixed ones (materials by name, each with a thermal expansion), the
+/// point of each that stays put as it expands, and the temperature changes
+/// of the two bodies from the seating temperature, visited in order.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ThermalFile {
+    pub moving_body: Spanned<String>,
+    pub fixed_body: Spanned<String>,
+    /// [m] (default: the origin).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub moving_origin: Option<Spanned<Numbers>>,
+    /// [m] (default: the origin).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fixed_origin: Option<Spanned<Numbers>>,
+    /// Temperature changes [K] of (moving, fixed) body, one pair per point.
+    pub cycle: Spanned<Vec<Spanned<Numbers>>>,
+    /// The thermal path's error tolerance, relative (default
+    /// [`crate::scene::thermal::DEFAULT_THERMAL_TOLERANCE`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub path_tolerance: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -83,6 +110,10 @@ pub struct MaterialFile {
     /// Allowable maximum (subsurface) shear stress [Pa].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub allowable_shear_stress: Option<Spanned<f64>>,
+    /// Mean linear coefficient of thermal expansion [1/K] (needed where a
+    /// `[thermal]` scene uses the material).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub thermal_expansion: Option<Spanned<f64>>,
     /// `override = true`: this entry intentionally replaces the built-in
     /// material or the earlier entry of the same name. Without it a reused
     /// name is an error; with it, a name that replaces nothing is one.

@@ -13,6 +13,7 @@ pub mod file;
 pub mod plausible;
 pub mod preload;
 pub mod resolve;
+pub mod thermal;
 mod tidy;
 
 use std::path::Path;
@@ -27,6 +28,7 @@ use error::ErrorContext;
 pub use error::SceneError;
 pub use file::{Arrangement, GrooveKind, SceneFile};
 pub use preload::{ForceLaw, Preload, PreloadForce};
+pub use thermal::{Body, Temperatures, Thermal, ThermalBodies};
 
 /// A moving ball (body frame = world frame in the touching pose).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -201,6 +203,11 @@ pub struct Scene {
     pub dynamics: Option<DynamicsSettings>,
     /// Bounds of the preload and tolerance variation (`[variation]`; 0: not varied).
     pub variation: VariationBounds,
+    /// The thermal model and cycle (`[thermal]`), if any; left out of the
+    /// canonical form when absent, so that a scene without it keeps the
+    /// fingerprint it had before thermal drift existed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thermal: Option<Thermal>,
 }
 
 /// Half-widths of the uniform distributions of `[variation]` (SI units;

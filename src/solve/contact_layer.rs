@@ -9,6 +9,15 @@
 //! F = F_n n - F_t (F_t the law's force, see `contact::tangential`), applied
 //! at p.
 //!
+//! On a thermal path both bodies also expand between the committed state
+//! and the trial one ([`Expansion`]): the fixed surface's material point
+//! now at p was at p_f = o_f + rho_f (p - o_f) and the moving one at
+//! p_m = T_c (o_m + rho_m (T^-1 p - o_m)), rho each body's stretch at the
+//! committed temperature over its stretch at the trial one; the increment
+//! of the law is the relative displacement du = p_f - p_m, which is the
+//! rigid du above plus eps_f (p - o_f) - eps_m R_c (T^-1 p - o_m),
+//! eps = rho - 1 (`Motion::displacement`).
+//!
 //! Mindlin's stiffness follows the normal load (K_t ~ a ~ F_n^(1/3)), so an
 //! increment integrates dF_t = K_t(a) du with du taken to grow with the
 //! Hertz approach (du ~ d(a^2)) inside the increment: K_t at
@@ -24,6 +33,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use crate::assembly::{BodyPose, ContactGeometry, Coupling};
 use crate::contact::{Friction, SlipState, TangentialInput, TangentialResponse, TangentialState};
+use crate::scene::{Temperatures, ThermalBodies};
 
 /// One contact evaluated at a trial pose.
 #[derive(Debug, Clone)]
@@ -106,6 +116,45 @@ pub fn evaluate(
 pub struct Motion {
     d: Matrix3<f64>,
     b: Vector3<f64>,
+    /// The bodies' expansion over the increment (a thermal path's).
+    thermal: Option<ThermalMotion>,
+}
+
+/// The expansion terms of [`Motion::displacement`] (module docs):
+/// eps_f (p - o_f) - eps_m (Q (p - t) - R_c o_m), Q = R_c R^T.
+#[derive(Debug, Clone, Copy)]
+struct ThermalMotion {
+    eps_f: f64,
+    o_f: Vector3<f64>,
+    eps_m: f64,
+    q: Matrix3<f64>,
+    t: Vector3<f64>,
+    rc_om: Vector3<f64>,
+}
+
+/// How the two bodies expand between a trial state and the committed one
+/// of a thermal path's increment: eps = (1 + alpha dT_c) / (1 + alpha dT)
+/// - 1 of each body (dT_c its committed temperature change, dT the trial
+///   one), and its origin.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Expansion {
+    pub moving: f64,
+    pub moving_origin: Vector3<f64>,
+    pub fixed: f64,
+    pub fixed_origin: Vector3<f64>,
+}
+
+impl Expansion {
+    /// From the trial temperature changes `trial` back to `committed`.
+    pub fn between(bodies: &ThermalBodies, trial: Temperatures, committed: Temperatures) -> Self {
+        let eps = |alpha: f64, t: f64, c: f64| alpha * (c - t) / (1.0 + alpha * t);
+        Expansion {
+            moving: eps(bodies.moving.thermal_expansion, trial.moving, committed.moving),
+            moving_origin: bodies.moving.origin,
+            fixed: eps(bodies.fixed.thermal_expansion, trial.fixed, committed.fixed),
+            fixed_origin: bodies.fixed.origin,
+        }
+    }
 }
 
 impl Motion {
@@ -128,12 +177,31 @@ impl Motion {
             -2.0 * (xx + yy),
         );
         let b = (committed.translation - pose.translation) - d * pose.translation;
-        Motion { d, b }
+        Motion { d, b, thermal: None }
     }
 
-    /// du = p - p_c of the material point now at `p`.
+    /// The motion from `pose` back to `committed` with the bodies'
+    /// `expansion` over the increment (module docs).
+    pub fn expanding(pose: &BodyPose, committed: &BodyPose, expansion: &Expansion) -> Self {
+        let rigid = Motion::between(pose, committed);
+        let thermal = ThermalMotion {
+            eps_f: expansion.fixed,
+            o_f: expansion.fixed_origin,
+            eps_m: expansion.moving,
+            q: Matrix3::identity() + rigid.d,
+            t: pose.translation,
+            rc_om: committed.rotation * expansion.moving_origin,
+        };
+        Motion { thermal: Some(thermal), ..rigid }
+    }
+
+    /// du = p_f - p_m of the material points now at `p` (module docs).
     pub fn displacement(&self, p: &Vector3<f64>) -> Vector3<f64> {
-        -(self.d * p + self.b)
+        let rigid = -(self.d * p + self.b);
+        match &self.thermal {
+            None => rigid,
+            Some(e) => rigid + (p - e.o_f) * e.eps_f - (e.q * (p - e.t) - e.rc_om) * e.eps_m,
+        }
     }
 }
 

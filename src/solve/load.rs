@@ -7,7 +7,8 @@ use super::dynamic::StartPose;
 use crate::assembly::Coupling;
 use crate::contact::Friction;
 use crate::scene::resolve::MU_MAX;
-use crate::scene::{Preload, Scene};
+use crate::scene::thermal::DEFAULT_THERMAL_TOLERANCE;
+use crate::scene::{Preload, Scene, Temperatures};
 
 /// The load of one seating.
 #[derive(Debug, Clone, PartialEq)]
@@ -19,13 +20,25 @@ pub struct Load {
     /// Where the dynamic solver starts (the quasi-static solver always
     /// starts from the touching pose).
     pub start: StartPose,
+    /// The temperature changes a thermal path visits after the seating
+    /// (`[thermal] cycle`; empty for a scene without `[thermal]`). The
+    /// seating itself is at the seating temperature.
+    pub cycle: Vec<Temperatures>,
+    /// The error tolerance of the cycle's legs (`[thermal] path_tolerance`).
+    pub thermal_tolerance: f64,
 }
 
 impl Load {
     /// The scene's nominal load: mu0 at every contact, its preload, the
     /// touching start.
     pub fn nominal(scene: &Scene) -> Self {
-        Load { mu: nominal_mu(scene), preload: scene.preload.clone(), start: StartPose::touching() }
+        Load {
+            mu: nominal_mu(scene),
+            preload: scene.preload.clone(),
+            start: StartPose::touching(),
+            cycle: nominal_cycle(scene),
+            thermal_tolerance: thermal_tolerance(scene),
+        }
     }
 
     /// This load with the static coefficients `mu`.
@@ -45,6 +58,16 @@ impl Load {
 /// The nominal static coefficients of a scene (mu0 at every contact).
 pub fn nominal_mu(scene: &Scene) -> Vec<f64> {
     vec![scene.friction.mu_static; scene.surfaces.len()]
+}
+
+/// The scene's temperature cycle (`[thermal] cycle`; empty without one).
+pub fn nominal_cycle(scene: &Scene) -> Vec<Temperatures> {
+    scene.thermal.as_ref().map_or_else(Vec::new, |t| t.cycle.clone())
+}
+
+/// The scene's `[thermal] path_tolerance` (the default without `[thermal]`).
+pub fn thermal_tolerance(scene: &Scene) -> f64 {
+    scene.thermal.as_ref().map_or(DEFAULT_THERMAL_TOLERANCE, |t| t.path_tolerance)
 }
 
 /// Static coefficients -> per-contact friction (mu_d = ratio mu_s, the

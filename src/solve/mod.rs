@@ -10,17 +10,18 @@ pub mod dynamic;
 pub mod load;
 pub mod preload_forces;
 pub mod quasistatic;
+pub mod thermal;
 
 use nalgebra::Vector3;
 use serde::Serialize;
 use thiserror::Error;
 
-use crate::assembly::{BodyPose, Coupling};
+use crate::assembly::{AssemblyError, BodyPose, Coupling};
 use crate::contact::stress::{LeftOut, contact_stress};
 use crate::contact::{Friction, SlipState};
 use crate::param::{Param, ParamError};
 use contact_layer::ContactEval;
-pub use load::{Load, frictions_into, nominal_mu};
+pub use load::{Load, frictions_into, nominal_cycle, nominal_mu, thermal_tolerance};
 
 /// The accepted numbers of nominal load increments (`increments`).
 pub const INCREMENTS: std::ops::RangeInclusive<usize> = 1..=100_000;
@@ -140,6 +141,26 @@ pub enum SolveError {
          step is too large for the contact stiffness"
     )]
     NonFinite { time_s: f64, step: usize },
+    #[error(
+        "contact {contact} opened completely on the thermal path at temperature changes \
+         [{moving_k}, {fixed_k}] K (moving, fixed body): the bodies' mismatch lifts the moving \
+         half off it"
+    )]
+    ThermalContactOpened { contact: usize, moving_k: f64, fixed_k: f64 },
+    #[error(
+        "the coupling slides away on the thermal path: at temperature changes [{moving_k}, \
+         {fixed_k}] K the moving half has moved {displacement_m:.3e} m"
+    )]
+    ThermalSlidAway { moving_k: f64, fixed_k: f64, displacement_m: f64 },
+    #[error(
+        "the thermal path did not converge at temperature changes [{moving_k}, {fixed_k}] K \
+         (relative residual {residual:.3e} after halving the increment {splits} times)"
+    )]
+    ThermalNotConverged { moving_k: f64, fixed_k: f64, residual: f64, splits: u32 },
+    #[error("{0}")]
+    Thermal(#[from] AssemblyError),
+    #[error("the thermal path needs the quasi-static solver (the dynamic solver seats only)")]
+    ThermalNeedsQuasiStatic,
     #[error("interrupted")]
     Cancelled,
 }
@@ -415,6 +436,20 @@ impl Method {
         match self {
             Method::QuasiStatic(o) => quasistatic::seat(coupling, load, o),
             Method::Dynamic(o) => dynamic::seat(coupling, load, o),
+        }
+    }
+
+    /// Seat the coupling under `load` and follow its temperature cycle
+    /// (`load.cycle`, the coupling's `[thermal]` bodies): the quasi-static
+    /// solver only ([`quasistatic::seat_and_cycle`]).
+    pub fn seat_and_cycle(
+        &self,
+        coupling: &Coupling,
+        load: &Load,
+    ) -> Result<(Seating, thermal::ThermalPath), SolveError> {
+        match self {
+            Method::QuasiStatic(o) => quasistatic::seat_and_cycle(coupling, load, o),
+            Method::Dynamic(_) => Err(SolveError::ThermalNeedsQuasiStatic),
         }
     }
 }

@@ -8,7 +8,7 @@ use super::inputs::{Input, Tolerances};
 use crate::assembly::Coupling;
 use crate::scene::{Scene, VariationBounds};
 use crate::solve::dynamic::StartPose;
-use crate::solve::{Load, nominal_mu};
+use crate::solve::{Load, nominal_cycle, nominal_mu, thermal_tolerance};
 
 /// Bounds of a randomly drawn start pose of the moving half (dynamic solver).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -163,7 +163,9 @@ impl Variation {
             f.point += offset;
             f.direction = UnitQuaternion::from_scaled_axis(tilt) * f.direction;
         }
-        Sample { load: Load { mu, preload, start }, tolerances: tol, physical }
+        let (cycle, thermal_tolerance) = (nominal_cycle(scene), thermal_tolerance(scene));
+        let load = Load { mu, preload, start, cycle, thermal_tolerance };
+        Sample { load, tolerances: tol, physical }
     }
 }
 

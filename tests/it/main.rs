@@ -54,6 +54,7 @@ mod support_compliance;
 mod sweep_cli;
 mod sweep_laws;
 mod tables;
+mod thermal;
 mod unit_calibrate;
 mod unit_contact;
 mod unit_explore;

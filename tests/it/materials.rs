@@ -47,7 +47,9 @@ fn csv_lists_every_builtin_with_library_values_and_sources() {
             "allowable_pressure_pa",
             "source_elastic",
             "source_density",
-            "source_allowable_pressure"
+            "source_allowable_pressure",
+            "thermal_expansion_per_k",
+            "source_thermal_expansion"
         ]
     );
     let rows: Vec<Vec<String>> = lines.map(fields).collect();
@@ -64,7 +66,14 @@ fn csv_lists_every_builtin_with_library_values_and_sources() {
         // Solids denser than water and lighter than osmium.
         let rho: f64 = r[5].parse().unwrap();
         assert!(rho > 1000.0 && rho < 22_600.0, "{}: density {rho}", r[1]);
-        for (k, what) in [(7, "elastic"), (8, "density"), (9, "allowable pressure")] {
+        assert_eq!(Some(r[10].parse::<f64>().unwrap()), m.thermal_expansion, "{}", r[1]);
+        // Every solid expands by less than 1e-4 /K near room temperature
+        // (aluminium 2.4e-5); Zerodur's nominal 0 is the one at zero.
+        let alpha: f64 = r[10].parse().unwrap();
+        assert!((0.0..1e-4).contains(&alpha), "{}: alpha {alpha}", r[1]);
+        for (k, what) in
+            [(7, "elastic"), (8, "density"), (9, "allowable pressure"), (11, "thermal expansion")]
+        {
             assert!(is_source(&r[k]), "{}: no source for the {what} value: {:?}", r[1], r[k]);
         }
     }
@@ -84,7 +93,8 @@ fn json_and_table_agree_with_the_library() {
         assert_eq!(m["youngs_modulus"].as_f64().unwrap(), lib.youngs_modulus);
         assert_eq!(m["poisson_ratio"].as_f64().unwrap(), lib.poisson_ratio);
         assert_eq!(m["allowable_pressure"].as_f64(), lib.allowable_pressure);
-        for k in ["elastic", "density", "allowable_pressure"] {
+        assert_eq!(m["thermal_expansion"].as_f64(), lib.thermal_expansion);
+        for k in ["elastic", "density", "allowable_pressure", "thermal_expansion"] {
             assert!(is_source(m["sources"][k].as_str().unwrap()), "{name}: {k}");
         }
     }
@@ -99,8 +109,12 @@ fn json_and_table_agree_with_the_library() {
             .find(|l| l.split_whitespace().next() == Some(name))
             .unwrap_or_else(|| panic!("{name} not in the table"));
         let cols: Vec<&str> = row.split_whitespace().collect();
-        // E in GPa (the table rounds to whole GPa).
-        assert_eq!(cols[1].parse::<f64>().unwrap(), (lib.youngs_modulus / 1e9).round());
+        // E in GPa and alpha in 1e-6/K, as the table rounds them.
+        let e: f64 = cols[1].parse().unwrap();
+        assert!((e - lib.youngs_modulus / 1e9).abs() <= 0.05 + 1e-9, "{name}: E {e}");
+        let alpha: f64 = cols[5].parse().unwrap();
+        let lib_alpha = lib.thermal_expansion.unwrap() * 1e6;
+        assert!((alpha - lib_alpha).abs() <= 0.005 + 1e-9, "{name}: alpha {alpha}");
         assert!(table.contains(&format!("{name}:\n  E, nu:")), "sources of {name}");
     }
 }

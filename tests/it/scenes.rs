@@ -275,13 +275,14 @@ fn errors_deep_in_a_large_scene_name_the_right_line() {
 }
 
 /// Scene 01 with grooves of a user material `zerodur` (Schott: E 90.3 GPa,
-/// v 0.243), with or without an allowable pressure.
+/// v 0.243) that replaces the built-in one, with or without an allowable
+/// pressure.
 fn zerodur_scene(allowable: &str) -> String {
     std::fs::read_to_string(scene_path("01_maxwell_vgroove_steel.toml"))
         .unwrap()
         .replace("groove_material = \"steel\"", "groove_material = \"zerodur\"")
         + &format!(
-            "\n[[materials]]\nname = \"zerodur\"\nyoungs_modulus = 90.3e9\npoisson_ratio = 0.243\n{allowable}"
+            "\n[[materials]]\nname = \"zerodur\"\noverride = true\nyoungs_modulus = 90.3e9\npoisson_ratio = 0.243\n{allowable}"
         )
 }
 

@@ -75,6 +75,9 @@ fn material_entries(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, 
                     m.allowable_shear_stress.as_ref().map(|t| *t.get_ref()),
                 )
             })
+            .and_then(|mat| {
+                mat.with_thermal_expansion(m.thermal_expansion.as_ref().map(|a| *a.get_ref()))
+            })
             .map_err(|e| {
                 let field = match &e {
                     MaterialError::Invalid { field, .. } => *field,
@@ -85,6 +88,7 @@ fn material_entries(f: &SceneFile, ctx: &ErrorContext) -> Result<Vec<Material>, 
                     "poisson_ratio" => Some(m.poisson_ratio.span()),
                     "allowable_pressure" => m.allowable_pressure.as_ref().map(|p| p.span()),
                     "allowable_shear_stress" => m.allowable_shear_stress.as_ref().map(|t| t.span()),
+                    "thermal_expansion" => m.thermal_expansion.as_ref().map(|a| a.span()),
                     _ => None,
                 }
                 .unwrap_or_else(|| m.name.span());

@@ -8,6 +8,7 @@ pub mod geometry;
 pub mod materials;
 pub mod preload;
 pub mod tables;
+pub mod thermal;
 
 use fields::Fields;
 pub use tables::{MU_MAX, compliance};
@@ -32,6 +33,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         None => VariationBounds::default(),
         Some(v) => tables::variation_bounds(v, ctx)?,
     };
+    let thermal = thermal::thermal(f, &fx, &balls, &surfaces)?;
     Ok(Scene {
         file: ctx.file.to_string(),
         name: f.name.clone().unwrap_or_else(|| ctx.file.to_string()),
@@ -43,5 +45,6 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         evaluation_points,
         dynamics,
         variation,
+        thermal,
     })
 }

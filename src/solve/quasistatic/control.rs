@@ -71,7 +71,7 @@ pub(super) fn level(
 }
 
 /// |(v, w)|_L of the twist `t` (module docs).
-fn size(t: &Vector6<f64>, length: f64) -> f64 {
+pub(super) fn size(t: &Vector6<f64>, length: f64) -> f64 {
     let v = t.fixed_rows::<3>(0).norm();
     let w = t.fixed_rows::<3>(3).norm();
     v.hypot(length * w)
@@ -105,6 +105,7 @@ pub(super) fn seat_controlled(
         let floor = fine.increments as f64 * opts.tolerance;
         let error = if motion > 0.0 { change / motion } else { 0.0 } + floor;
         if error <= tolerance || n >= FINEST {
+            ws.rest_pose = fine.pose;
             return Ok(SeatedPose {
                 pose: fine.pose.moved(&d.fixed_rows::<3>(0).into(), &d.fixed_rows::<3>(3).into()),
                 increments,

@@ -53,13 +53,16 @@
 //! the report.
 
 mod control;
+mod cycle;
 mod external;
 mod load;
 mod lu6;
 mod path;
 mod solver;
+mod thermal;
 
 pub use control::FINEST;
+pub use cycle::{seat_and_cycle, seat_and_cycle_in};
 pub use external::{ExternalLoad, LIFT_OFF_RATIO, LoadEvent, LoadEventKind};
 pub use load::{LoadPath, apply_load, at_rest_states};
 
@@ -69,6 +72,7 @@ use solver::contact_results;
 use nalgebra::Vector6;
 
 use super::{Load, SeatedPose, Seating, SeatingPath, SolveError, SolverOptions, frictions_into};
+use crate::assembly::BodyPose;
 use crate::assembly::Coupling;
 use crate::contact::{Friction, TangentialState};
 use crate::scene::Preload;
@@ -123,6 +127,10 @@ pub(super) struct Ramp<'a> {
 pub struct Workspace {
     friction: Vec<Friction>,
     bufs: Buffers,
+    /// The pose the buffers' states belong to after a seating: its last
+    /// level's (a controlled seating reports the Richardson pose instead),
+    /// where a thermal path continues (`cycle`).
+    rest_pose: BodyPose,
 }
 
 impl Workspace {
@@ -160,6 +168,7 @@ pub fn seat_in(
         return control::seat_controlled(setup, ramp, opts, tolerance, ws);
     }
     let end = control::level(setup, ramp, opts, opts.increments, ws)?;
+    ws.rest_pose = end.pose;
     Ok(SeatedPose {
         pose: end.pose,
         increments: end.increments,

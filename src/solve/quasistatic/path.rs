@@ -148,7 +148,7 @@ impl Solver<'_> {
             start,
             start_fn: w.evals.iter().map(|e| e.normal_force).collect(),
             factor: match self.program {
-                Program::Seat => 1.0,
+                Program::Seat | Program::Hold => 1.0,
                 Program::Load { factor, .. } => factor,
             },
             seating,

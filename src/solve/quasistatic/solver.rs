@@ -38,7 +38,9 @@ use crate::assembly::constraint::frictionless_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
 use crate::scene::Preload;
-use crate::solve::contact_layer::{ContactEval, Motion, Moved, NormalPart, evaluate_into};
+use crate::solve::contact_layer::{
+    ContactEval, Expansion, Motion, Moved, NormalPart, evaluate_into,
+};
 use crate::solve::preload_forces::applied;
 use crate::solve::{ContactResult, SolveError, SolverOptions};
 
@@ -56,6 +58,9 @@ pub(super) enum Program {
     Seat,
     /// Full preload plus s * factor * load.
     Load { load: ExternalLoad, factor: f64 },
+    /// The full preload held while the bodies' temperatures change (a
+    /// thermal path, `super::thermal`).
+    Hold,
 }
 
 /// The loads of one increment: preload factor, extra-load factor, and the
@@ -95,6 +100,9 @@ pub(super) struct Solver<'a> {
     pub max_travel: f64,
     /// Duration of the whole path, s from 0 to 1 (`[preload] ramp_time`) [s].
     pub ramp_time: f64,
+    /// The bodies' expansion over the increment being solved (a thermal
+    /// path's; `None`: the bodies keep their size).
+    pub expansion: Option<Expansion>,
 }
 
 impl<'a> Solver<'a> {
@@ -112,7 +120,7 @@ impl<'a> Solver<'a> {
         let length = coupling.length_scale();
         let scale = preload.scale();
         let force_scale = match program {
-            Program::Seat => scale,
+            Program::Seat | Program::Hold => scale,
             Program::Load { load, factor } => {
                 let f = factor.abs();
                 scale.max(f * load.force.norm()).max(f * load.moment.norm() / length)
@@ -129,6 +137,7 @@ impl<'a> Solver<'a> {
             x1,
             max_travel: coupling.slide_away_travel(),
             ramp_time: preload.ramp_time,
+            expansion: None,
         }
     }
 
@@ -138,6 +147,7 @@ impl<'a> Solver<'a> {
             // s^1.5 as s sqrt(s): one square root instead of pow.
             Program::Seat => (s * s.sqrt(), 0.0),
             Program::Load { factor, .. } => (1.0, s * factor),
+            Program::Hold => (1.0, 0.0),
         }
     }
 
@@ -157,10 +167,10 @@ impl<'a> Solver<'a> {
         match (&self.program, slid) {
             (Program::Seat, true) => SolveError::SlidAway { percent, displacement_m: travel },
             (Program::Seat, false) => SolveError::NotConverged { percent, residual, splits },
-            (Program::Load { .. }, true) => {
+            (Program::Load { .. } | Program::Hold, true) => {
                 SolveError::LoadSlidAway { percent, displacement_m: travel }
             }
-            (Program::Load { .. }, false) => {
+            (Program::Load { .. } | Program::Hold, false) => {
                 SolveError::LoadNotConverged { percent, residual, splits }
             }
         }
@@ -181,7 +191,10 @@ impl<'a> Solver<'a> {
         if out.len() != states.len() {
             out.resize_with(states.len(), ContactEval::empty);
         }
-        let motion = Motion::between(pose, committed_pose);
+        let motion = match &self.expansion {
+            None => Motion::between(pose, committed_pose),
+            Some(e) => Motion::expanding(pose, committed_pose, e),
+        };
         // Two passes over each group of contacts: first geometry and the
         // normal part (the long square- and cube-root chains) of every
         // contact of the group, then the tangential law and the tangent, so
@@ -232,7 +245,7 @@ impl<'a> Solver<'a> {
     fn extra_force(&self, pose: &BodyPose, loads: &Loads) -> Option<PointForce> {
         match self.program {
             Program::Load { load, .. } => Some((load.force * loads.extra, pose.apply(&load.point))),
-            Program::Seat => None,
+            Program::Seat | Program::Hold => None,
         }
     }
 
@@ -240,7 +253,7 @@ impl<'a> Solver<'a> {
     fn extra_moment(&self, loads: &Loads) -> Vector3<f64> {
         match self.program {
             Program::Load { load, .. } => load.moment * loads.extra,
-            Program::Seat => Vector3::zeros(),
+            Program::Seat | Program::Hold => Vector3::zeros(),
         }
     }
 

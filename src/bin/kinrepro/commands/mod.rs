@@ -11,6 +11,7 @@ mod scene;
 mod seat;
 mod study;
 mod sweep;
+mod thermal;
 
 use std::path::{Path, PathBuf};
 
@@ -30,6 +31,7 @@ pub fn dispatch(command: Command) -> Result {
         Command::Run(a) => seat::run(a.try_into()?),
         Command::Stiffness(a) => analysis::stiffness(a.try_into()?),
         Command::Load(a) => analysis::load(a.try_into()?),
+        Command::Thermal(a) => thermal::thermal(a.try_into()?),
         Command::Study(a) => study::study(a.try_into()?),
         Command::Merge(a) => study::merge(a),
         Command::Sweep(a) => sweep::sweep(a.try_into()?),

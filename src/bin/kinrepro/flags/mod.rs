@@ -38,6 +38,10 @@ pub enum Command {
     /// Apply a force (and moment) after seating, preload held: deflection,
     /// contact forces and the safe load envelope (first separation or slip).
     Load(LoadArgs),
+    /// Thermal drift: seat the coupling, then follow its [thermal] temperature
+    /// cycle: the drift of each evaluation point, the contacts that slide,
+    /// the first slip and the residual.
+    Thermal(ThermalArgs),
     /// Reproducibility study: seat each scene once per friction sample and
     /// report the scatter of the pose (Table 2 of the paper).
     Study(StudyArgs),

@@ -118,6 +118,25 @@ pub struct StiffnessArgs {
 }
 
 #[derive(Args)]
+pub struct ThermalArgs {
+    /// Scene file (TOML) with a [thermal] table.
+    pub scene: PathBuf,
+    /// Static friction coefficients, one per contact (default: nominal).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    pub mu: Option<Vec<f64>>,
+    /// Temperature changes [K] of the moving and the fixed body from the
+    /// seating temperature, visited in order: "dTm,dTf;dTm,dTf;..."
+    /// (default: the scene's [thermal] cycle).
+    #[arg(long, allow_hyphen_values = true)]
+    pub cycle: Option<String>,
+    #[command(flatten)]
+    pub path: PathFlags,
+    /// Print one JSON object (SI units, kelvin) instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args)]
 pub struct LoadArgs {
     /// Scene file (TOML).
     pub scene: PathBuf,
