@@ -178,6 +178,17 @@ fn check_scene(scene: &Scene, s: &Settings) -> Result<(), ParamError> {
             "the study varies nothing: vary friction, preload, tolerances or the start pose".into(),
         );
     }
+    if scene.thermal.is_some() && var.reseating() && matches!(s.method, Method::Dynamic(_)) {
+        return fail(
+            Param::Solver,
+            format!(
+                "the scene's [thermal] cycle is followed by the quasi-static solver only ({}; \
+                 the dynamic solver seats only): drop --solver dynamic, or study the scene \
+                 without its [thermal] table",
+                Param::Solver.with("quasi-static")
+            ),
+        );
+    }
     if var.start.is_some() && !matches!(s.method, Method::Dynamic(_)) {
         return fail(
             Param::Solver,

@@ -75,4 +75,21 @@ pub struct PointStats {
     pub mean: Dofs,
     pub min: Dofs,
     pub max: Dofs,
+    /// A scene with `[thermal]`: the drift of this point from each
+    /// sample's own seated pose at each cycle point, over the samples.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub thermal: Vec<CycleStats>,
+}
+
+/// One cycle point's drift statistics of an evaluation point (nm, nrad):
+/// the drift of each sample from its own seated pose (rigid motion of the
+/// moving half and the body's expansion), its mean, sigma with the
+/// interval of the design, +- 3 sigma, min and max.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CycleStats {
+    /// Temperature changes of the moving and the fixed body from the
+    /// seating temperature [K].
+    pub delta_t_k: [f64; 2],
+    #[serde(flatten)]
+    pub drift: PointStats,
 }

@@ -84,6 +84,11 @@ pub struct VariantReport {
     /// to the nominal geometry's seating, per evaluation point.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub interchangeability: Vec<PointStats>,
+    /// A scene with `[thermal]`: the bodies and the cycle every sample
+    /// followed after its seating (the drift statistics are in each
+    /// point's `thermal`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub thermal: Option<ThermalStudy>,
     /// `--sensitivity`: SRC tables of the first evaluation point's DOFs.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub sensitivity: Option<Vec<SensitivityBlock>>,
@@ -200,12 +205,19 @@ impl VariantReport {
             partial: run.shard.count > 1,
             points: Vec::new(),
             interchangeability: Vec::new(),
+            thermal: scene.thermal.as_ref().filter(|_| var.reseating()).map(ThermalStudy::of),
             sensitivity: s.sensitivity.then(Vec::new),
             design: run.design,
             shard: run.shard,
             output_names: run.output_names,
             records,
         }
+    }
+
+    /// The temperature changes [moving, fixed] of each cycle point [K]
+    /// (empty without `[thermal]`).
+    pub fn thermal_cycle(&self) -> Vec<[f64; 2]> {
+        self.thermal.as_ref().map_or_else(Vec::new, |t| t.cycle_delta_t_k.clone())
     }
 
     fn varies(&self, kind: Varied) -> bool {
@@ -297,4 +309,32 @@ impl StudyReport {
 
 fn default_ramp_time() -> f64 {
     DEFAULT_RAMP_TIME
+}
+
+/// The thermal set-up of a study (`[thermal]`): what each sample followed
+/// after its seating.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ThermalStudy {
+    pub moving_body: String,
+    pub moving_thermal_expansion_per_k: f64,
+    pub fixed_body: String,
+    pub fixed_thermal_expansion_per_k: f64,
+    /// Each cycle point's temperature changes [moving, fixed] [K].
+    pub cycle_delta_t_k: Vec<[f64; 2]>,
+    /// The legs' error tolerance (`[thermal] path_tolerance`).
+    pub path_tolerance: f64,
+}
+
+impl ThermalStudy {
+    fn of(t: &crate::scene::Thermal) -> Self {
+        let b = &t.bodies;
+        ThermalStudy {
+            moving_body: b.moving.material.clone(),
+            moving_thermal_expansion_per_k: b.moving.thermal_expansion,
+            fixed_body: b.fixed.material.clone(),
+            fixed_thermal_expansion_per_k: b.fixed.thermal_expansion,
+            cycle_delta_t_k: t.cycle.iter().map(|c| [c.moving, c.fixed]).collect(),
+            path_tolerance: t.path_tolerance,
+        }
+    }
 }

@@ -33,8 +33,9 @@ use super::{DesignSpec, Shard, StudyError};
 use crate::assembly::BodyPose;
 use crate::dof::Dof;
 use crate::scene::Scene;
-use crate::solve::quasistatic::{SeatingSetup, Workspace, seat_in};
+use crate::solve::quasistatic::{SeatingSetup, Workspace, seat_and_cycle_in, seat_in};
 use crate::solve::{Load, Method, PointPose, SeatedPose, SolveError};
+use nalgebra::Vector3;
 
 /// What a run reports as it goes: `tick` once per finished sample, and
 /// the path of every sample seating counted into `tally` where one is
@@ -84,6 +85,21 @@ pub struct VariantRun {
 
 /// Prefix of the interchangeability outputs (`interchange/<point>/<dof>`).
 pub const INTERCHANGE_PREFIX: &str = "interchange/";
+/// Prefix of the thermal drift outputs (`thermal/<k>/<point>/<dof>`, k the
+/// 1-based cycle point).
+pub const THERMAL_PREFIX: &str = "thermal/";
+
+/// Names of the thermal drift outputs of a scene with `[thermal]`: per
+/// cycle point (1-based), every evaluation point's six components of the
+/// drift from the sample's own seated pose (`ThermalPath::drift`).
+pub fn thermal_output_names(scene: &Scene) -> Vec<String> {
+    let points = scene.thermal.as_ref().map_or(0, |t| t.cycle.len());
+    (1..=points)
+        .flat_map(|k| {
+            output_names(scene).into_iter().map(move |n| format!("{THERMAL_PREFIX}{k}/{n}"))
+        })
+        .collect()
+}
 
 /// Names of the re-seating outputs (`<point>/<dof>_<SI unit>`, [`Dof::si_key`]).
 pub fn output_names(scene: &Scene) -> Vec<String> {
@@ -95,12 +111,14 @@ pub fn output_names(scene: &Scene) -> Vec<String> {
 }
 
 /// Names of all recorded outputs under `variation`: the re-seating outputs
-/// (if friction, preload or start vary), then the interchangeability
+/// (if friction, preload or start vary), then the thermal drift outputs
+/// (re-seating of a scene with `[thermal]`), then the interchangeability
 /// outputs (if tolerances vary).
 pub fn recorded_output_names(scene: &Scene, variation: &Variation) -> Vec<String> {
     let mut v = Vec::new();
     if variation.reseating() {
         v.extend(output_names(scene));
+        v.extend(thermal_output_names(scene));
     }
     if variation.tolerances {
         v.extend(output_names(scene).into_iter().map(|n| format!("{INTERCHANGE_PREFIX}{n}")));
@@ -190,6 +208,7 @@ pub fn evaluate_rows<'a>(
         points.iter().flat_map(pose_of)
     };
     let setup = SeatingSetup::new(coupling, &scene.preload);
+    let thermal = coupling.thermal.as_ref();
     // One workspace per rayon job, reused by the samples it seats.
     rows.into_par_iter()
         .map_init(Workspace::new, |ws, (index, row)| {
@@ -198,7 +217,14 @@ pub fn evaluate_rows<'a>(
             }
             let sample = var.sample(scene, coupling, &row);
             let mut outputs: Vec<f64> = Vec::new();
-            if var.reseating() {
+            if var.reseating() && thermal.is_some() {
+                let (seated, drift) =
+                    reseat_and_cycle(&setup, &s.method, &sample.load, &points, ws)
+                        .map_err(|e| seat_err(index, &sample.load.mu, e))?;
+                progress.record(&seated);
+                outputs.extend(relative(seated.pose));
+                outputs.extend(drift.iter().flat_map(|d| d.components()));
+            } else if var.reseating() {
                 let seated = match reseat(&setup, &s.method, &sample.load, ws) {
                     // A varied start that does not centre is counted: a record without outputs.
                     Err(SolveError::NotCentred { .. }) if var.start.is_some() => {
@@ -226,6 +252,30 @@ pub fn evaluate_rows<'a>(
             Ok(SampleRecord { index, inputs: row, outputs })
         })
         .collect::<Result<Vec<_>, StudyError>>()
+}
+
+/// The re-seating of one sample under `load` and its temperature cycle
+/// (quasi-static only: the plan refuses the dynamic solver for a scene
+/// with `[thermal]`): the seated pose and, per cycle point and evaluation
+/// point, the drift from that pose ([`crate::solve::thermal::ThermalPath::drift`]).
+fn reseat_and_cycle(
+    setup: &SeatingSetup,
+    method: &Method,
+    load: &Load,
+    points: &[Vector3<f64>],
+    ws: &mut Workspace,
+) -> Result<(SeatedPose, Vec<PointPose>), SolveError> {
+    let Method::QuasiStatic(o) = method else {
+        return Err(SolveError::ThermalNeedsQuasiStatic);
+    };
+    let coupling = setup.coupling();
+    let bodies = coupling.thermal_bodies()?;
+    let (seated, path) = seat_and_cycle_in(setup, load, o, ws)?;
+    let drift = (0..path.points.len())
+        .flat_map(|k| points.iter().map(move |p| (k, p)))
+        .map(|(k, p)| path.drift(bodies, k, p))
+        .collect();
+    Ok((seated, drift))
 }
 
 /// The re-seating of one sample under `load`: quasi-static by the seat

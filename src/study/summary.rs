@@ -6,9 +6,9 @@
 
 use super::StudyError;
 use super::inputs::Input;
-use super::record::{Dofs, PointStats, StudyRecord};
+use super::record::{CycleStats, Dofs, PointStats, StudyRecord};
 use super::result::VariantReport;
-use super::runner::INTERCHANGE_PREFIX;
+use super::runner::{INTERCHANGE_PREFIX, THERMAL_PREFIX};
 use super::sensitivity::sobol::SobolRun;
 use super::sensitivity::{self, SensitivityBlock};
 use super::stats::{SampleRecord, SigmaMethod, Summary, summarize_moments, summarize_outputs};
@@ -16,11 +16,29 @@ use super::stream::{StreamStats, check_record, streams};
 use crate::dof::Dof;
 
 /// Re-seating statistics per evaluation point from one summary per output
-/// (in `names` order), and interchangeability statistics from the
-/// `interchange/...` outputs after them.
-fn split_points(names: &[String], summaries: &[Summary]) -> (Vec<PointStats>, Vec<PointStats>) {
-    let k = names.iter().position(|n| n.starts_with(INTERCHANGE_PREFIX)).unwrap_or(names.len());
-    (point_stats(&names[..k], &summaries[..k]), point_stats(&names[k..], &summaries[k..]))
+/// (in `names` order), each with its thermal drift statistics from the
+/// `thermal/<k>/...` outputs after them (at the cycle's temperatures
+/// `cycle`), and interchangeability statistics from the `interchange/...`
+/// outputs after those.
+fn split_points(
+    names: &[String],
+    summaries: &[Summary],
+    cycle: &[[f64; 2]],
+) -> (Vec<PointStats>, Vec<PointStats>) {
+    let first = |prefix: &str| names.iter().position(|n| n.starts_with(prefix));
+    let k = first(INTERCHANGE_PREFIX).unwrap_or(names.len());
+    let t = first(THERMAL_PREFIX).unwrap_or(k);
+    let mut points = point_stats(&names[..t], &summaries[..t]);
+    let drift = point_stats(&names[t..k], &summaries[t..k]);
+    if !points.is_empty() {
+        for (j, mut d) in drift.into_iter().enumerate() {
+            let (point, cycle_point) = (j % points.len(), j / points.len());
+            d.name.clone_from(&points[point].name);
+            let delta_t_k = cycle.get(cycle_point).copied().unwrap_or([f64::NAN; 2]);
+            points[point].thermal.push(CycleStats { delta_t_k, drift: d });
+        }
+    }
+    (points, point_stats(&names[k..], &summaries[k..]))
 }
 
 /// One [`PointStats`] per six outputs (`point/<dof>_<SI unit>` over [`Dof::ALL`]),
@@ -49,6 +67,7 @@ fn point_stats(names: &[String], summaries: &[Summary]) -> Vec<PointStats> {
                 mean: pick(&|s| s.mean),
                 min: pick(&|s| s.min),
                 max: pick(&|s| s.max),
+                thermal: Vec::new(),
             }
         })
         .collect()
@@ -71,7 +90,8 @@ impl VariantReport {
             let samples: Vec<SampleRecord> = centred.iter().map(|r| r.sample()).collect();
             let failed = self.records.len() - samples.len();
             let summaries = summarize_outputs(&samples, self.sigma_method(failed))?;
-            (self.points, self.interchangeability) = split_points(&self.output_names, &summaries);
+            (self.points, self.interchangeability) =
+                split_points(&self.output_names, &summaries, &self.thermal_cycle());
             self.count_failures(failed, self.records.len());
         }
         if self.sensitivity.is_some() {
@@ -95,7 +115,8 @@ impl VariantReport {
                 })
             })
             .collect::<Result<Vec<_>, _>>()?;
-        (self.points, self.interchangeability) = split_points(&self.output_names, &summaries);
+        (self.points, self.interchangeability) =
+            split_points(&self.output_names, &summaries, &self.thermal_cycle());
         self.count_failures(st.not_centred, st.samples);
         self.streamed = true;
         Ok(())

@@ -21,6 +21,7 @@ mod cli_output;
 mod cli_run_dynamic;
 mod cli_start_failures;
 mod cli_study_intervals;
+mod cli_thermal;
 mod cli_validate_hertz;
 mod concept_sweep;
 mod contact_laws;

@@ -187,6 +187,11 @@ impl HtmlReport {
                 escape(src)
             );
         }
+        let thermal = tables::thermal_table(variants);
+        if !thermal.is_empty() {
+            body.push_str("<h3>Thermal drift along the [thermal] cycle</h3>\n");
+            body.push_str(&thermal);
+        }
         if variants.iter().any(|v| !v.interchangeability.is_empty()) {
             body.push_str("<h3>Interchangeability (manufacturing tolerances; nominal friction and preload)</h3>\n");
             body.push_str(&tables::sigma_table(variants, |v| &v.interchangeability, &[]));
@@ -202,6 +207,9 @@ fn chart_caption(file: &str) -> &'static str {
         }
         "scatter_xy.svg" | "interchange_scatter_xy.svg" => {
             "Every sample's x-y error relative to the nominal seating [nm], one panel per variant and evaluation point, common axes."
+        }
+        "thermal_drift.svg" => {
+            "Mean drift of each evaluation point from each sample's seated pose (line) and mean ± 3σ over the samples (band), at the seated state and each cycle point [nm, nrad]."
         }
         _ => {
             "σ of the first k samples against k, one panel per DOF. For an LHS a prefix is not itself a Latin hypercube: the curve shows how σ settles."

@@ -3,6 +3,7 @@
 
 use crate::report::study::reference::ReferenceRow;
 use crate::report::study::text::{interval_methods, sigma_cells, sigma_columns, sigma_estimates};
+use crate::report::study::thermal::{delta_t_text, heading};
 use crate::report::table::escape;
 use crate::report::table::{Cell, Table, cells};
 use crate::study::result::varied_kinds;
@@ -101,5 +102,48 @@ pub fn sigma_table(
             "<p class=\"note\">σ: standard deviation of the seated pose relative to the nominal seating ({}). Below each σ its 90 % interval, by a method valid for the design: {}.</p>\n",
             escape(&estimates),
             escape(&methods)
+        )
+}
+
+/// The thermal drift of the variants with `[thermal]`: per evaluation
+/// point and cycle point a row of the mean drift over the samples and a
+/// row of its sigma with the 90 % interval under it (nm, nrad); empty
+/// without one.
+pub fn thermal_table(variants: &[&VariantReport]) -> String {
+    let with: Vec<&VariantReport> =
+        variants.iter().copied().filter(|v| !v.partial && v.thermal.is_some()).collect();
+    if with.is_empty() {
+        return String::new();
+    }
+    let columns = sigma_columns(|d| format!("{} [{}]", d.symbol(), d.unit()));
+    let mut t = Table::new("<variant; <point; <cycle point; <statistic").with(columns);
+    for v in &with {
+        for p in &v.points {
+            for c in &p.thermal {
+                let at = delta_t_text(c.delta_t_k);
+                let mut mean = cells![&v.name, &p.name, &at, "mean"];
+                mean.extend(c.drift.mean.values().map(Cell::Num));
+                t.row(mean);
+                let (sigma, under) = sigma_cells(&c.drift);
+                let mut row = cells!["", "", "", "σ"];
+                row.extend(sigma);
+                match under {
+                    Some(u) => t.row(row).under([vec![String::new(); 4], u].concat()),
+                    None => t.row(row),
+                };
+            }
+        }
+    }
+    let headings: Vec<String> =
+        with.iter().filter_map(|v| v.thermal.as_ref()).map(heading).collect();
+    t.html("sigma")
+        + &format!(
+            "<p class=\"note\">Drift of each evaluation point from each sample's own seated pose at each cycle point: its mean over the samples, and σ with its 90 % interval under it ({}). {}.</p>\n",
+            escape(&interval_methods(
+                with.iter()
+                    .flat_map(|v| v.points.iter().flat_map(|p| p.thermal.iter().map(|c| &c.drift))),
+                "none"
+            )),
+            escape(&headings.join("; "))
         )
 }

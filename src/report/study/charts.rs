@@ -1,7 +1,7 @@
 //! The study's charts as SVG text: sigma bars with intervals (and reference
 //! values), x-y scatter of every evaluation point, convergence of sigma in
-//! all six DOFs, and the same bars and scatter for the interchangeability
-//! when tolerances vary. `kinrepro study --out` writes them as files, the
+//! all six DOFs, the thermal drift along a `[thermal]` cycle, and the same
+//! bars and scatter for the interchangeability when tolerances vary. `kinrepro study --out` writes them as files, the
 //! HTML report inlines them; both take them from [`study_charts`].
 
 use std::path::Path;
@@ -9,8 +9,8 @@ use std::path::Path;
 use crate::dof::{Dof, nano};
 use crate::report::study::plot::PlotError;
 use crate::report::study::plot::{
-    ConvergenceSeries, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
-    xy_scatter_svg,
+    ConvergenceSeries, DriftSeries, DriftStep, VariantScatter, VariantSigma, convergence_svg,
+    drift_svg, sigma_bars_svg, xy_scatter_svg,
 };
 use crate::report::study::reference::ReferenceRow;
 use crate::report::study::text::truncate;
@@ -122,6 +122,24 @@ fn convergence(variants: &[&VariantReport]) -> Result<Vec<ConvergenceSeries>, Pl
     Ok(out)
 }
 
+/// The thermal drift of each variant's evaluation points (variants with
+/// `[thermal]` only).
+fn drift_series(variants: &[&VariantReport]) -> Vec<DriftSeries> {
+    let mut out = Vec::new();
+    for v in variants {
+        for p in v.points.iter().filter(|p| !p.thermal.is_empty()) {
+            let steps = p.thermal.iter().map(|c| DriftStep {
+                delta_t_k: c.delta_t_k,
+                mean: c.drift.mean.values(),
+                sigma: c.drift.sigma.values(),
+            });
+            let label = format!("{} · {}", variant_label(v), p.name);
+            out.push(DriftSeries { label, steps: steps.collect() });
+        }
+    }
+    out
+}
+
 /// The charts of the complete variants of a study. Scatter and convergence
 /// need the samples, which a streamed study does not keep.
 pub fn study_charts(
@@ -156,6 +174,11 @@ pub fn study_charts(
         add("scatter_xy.svg", title, xy_scatter_svg(&xy)?);
         let title = "Convergence of σ with the number of samples, all six DOFs";
         add("sigma_convergence.svg", title, convergence_svg(&convergence(&reseat)?)?);
+    }
+    let drift = drift_series(&reseat);
+    if !drift.is_empty() {
+        let title = "Thermal drift along the cycle: mean over the samples and the ±3σ band, per evaluation point";
+        add("thermal_drift.svg", title, drift_svg(&drift)?);
     }
     let xy = scatter(&inter, true);
     if !xy.is_empty() {

@@ -11,3 +11,4 @@ pub mod reference;
 pub mod sensitivity;
 pub mod table;
 pub mod text;
+pub mod thermal;

@@ -13,6 +13,8 @@
 //! * [`xy_scatter_svg`]: x-y scatter of the samples \[nm\], one panel per variant and
 //!   evaluation point (each named), common axes.
 //! * [`convergence_svg`]: sigma of the first k samples against k, one panel per DOF (all six).
+//! * [`drift_svg`]: the thermal drift along the cycle (mean and +- 3 sigma band), one panel
+//!   per DOF.
 //!
 //! Each `*_svg` function returns the SVG text (`kinrepro study --out` writes it to a file,
 //! the HTML report inlines it; both through `html::charts::study_charts`).
@@ -22,10 +24,12 @@
 
 mod bars;
 mod convergence;
+mod drift;
 mod scatter;
 
 pub use bars::sigma_bars_svg;
 pub use convergence::convergence_svg;
+pub use drift::drift_svg;
 pub use scatter::xy_scatter_svg;
 
 use plotters::style::RGBColor;
@@ -110,6 +114,24 @@ const PALETTE: [RGBColor; 12] = [
     RGBColor(153, 153, 51),
     RGBColor(136, 136, 136),
 ];
+
+/// One evaluation point's thermal drift over a study's samples, per cycle
+/// point (in the point's units: nm, nrad).
+#[derive(Debug, Clone, PartialEq)]
+pub struct DriftSeries {
+    /// "variant · point".
+    pub label: String,
+    pub steps: Vec<DriftStep>,
+}
+
+/// The drift at one cycle point: its temperature changes [K] and the mean
+/// and sigma of each DOF over the samples.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DriftStep {
+    pub delta_t_k: [f64; 2],
+    pub mean: [f64; 6],
+    pub sigma: [f64; 6],
+}
 
 pub(crate) fn color(i: usize) -> RGBColor {
     PALETTE[i % PALETTE.len()]

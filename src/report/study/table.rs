@@ -107,6 +107,7 @@ fn variant_text(v: &VariantReport) -> String {
         let _ = writeln!(s, "  re-seating scatter (one pair of halves):");
         s += &detail(&v.points);
     }
+    s += &super::thermal::thermal_text(v);
     if !v.interchangeability.is_empty() {
         let _ = writeln!(s, "  interchangeability (tolerances; nominal friction and preload):");
         s += &detail(&v.interchangeability);

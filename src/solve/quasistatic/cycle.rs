@@ -49,12 +49,15 @@ pub fn seat_and_cycle(
     let setup = SeatingSetup::new(coupling, &load.preload);
     let seated = seat_in(&setup, load, opts, &mut ws)?;
     let seating = ws.seating(coupling, seated);
-    let path = cycle_after(coupling, load, opts, &mut ws)?;
+    let path = cycle_after(&setup, load, opts, true, &mut ws)?;
     Ok((seating, path))
 }
 
 /// The study kernel: seat `setup`'s coupling under `load` in `ws`
-/// ([`seat_in`]) and follow `load.cycle` from that seating.
+/// ([`seat_in`]) and follow `load.cycle` from that seating, with the
+/// couplings placed at the cycle's temperatures kept in `setup` for the
+/// next sample; the first slip is not located (a study does not report
+/// it).
 pub fn seat_and_cycle_in(
     setup: &SeatingSetup,
     load: &Load,
@@ -62,17 +65,19 @@ pub fn seat_and_cycle_in(
     ws: &mut Workspace,
 ) -> Result<(SeatedPose, ThermalPath), SolveError> {
     let seated = seat_in(setup, load, opts, ws)?;
-    let path = cycle_after(setup.coupling(), load, opts, ws)?;
+    let path = cycle_after(setup, load, opts, false, ws)?;
     Ok((seated, path))
 }
 
 /// The cycle from the seating `ws` holds (its last level's pose and states).
 fn cycle_after(
-    coupling: &Coupling,
+    setup: &SeatingSetup,
     load: &Load,
     opts: &SolverOptions,
+    locate_first_slip: bool,
     ws: &mut Workspace,
 ) -> Result<ThermalPath, SolveError> {
+    let coupling = setup.coupling();
     let bodies = coupling.thermal_bodies()?;
     let start = ws.rest_pose;
     let (friction, bufs) = (&ws.friction, &mut ws.bufs);
@@ -83,8 +88,17 @@ fn cycle_after(
     let mut first_slip = None;
     let mut saved = Vec::new();
     for (k, &to) in load.cycle.iter().enumerate() {
-        let leg =
-            Leg { base: coupling, bodies, friction, preload: &load.preload, opts: *opts, from, to };
+        let leg = Leg {
+            base: coupling,
+            placements: &setup.placements,
+            locate_first_slip,
+            bodies,
+            friction,
+            preload: &load.preload,
+            opts: *opts,
+            from,
+            to,
+        };
         at_rest(&mut bufs.states, friction);
         let reached = match opts.path_tolerance {
             None => Reached::fixed(leg.run(opts.increments, pose, bufs)?),

@@ -96,6 +96,8 @@ pub struct SeatingSetup<'a> {
     x1: Vector6<f64>,
     /// Virgin states at the normals of the touching pose.
     virgin: Vec<TangentialState>,
+    /// The coupling at the temperatures thermal paths have visited.
+    placements: thermal::Placements,
 }
 
 impl<'a> SeatingSetup<'a> {
@@ -105,6 +107,7 @@ impl<'a> SeatingSetup<'a> {
             preload: preload.clone(),
             x1: solver::predictor(coupling, preload),
             virgin: virgin_states(coupling),
+            placements: thermal::Placements::default(),
         }
     }
 

@@ -28,6 +28,9 @@
 //! places it (the sticking response is linear in the temperature to the
 //! change of the contact stiffnesses with the normal force).
 
+use std::collections::HashMap;
+use std::sync::{Arc, RwLock};
+
 use nalgebra::Vector6;
 
 use super::path::Buffers;
@@ -39,10 +42,49 @@ use crate::scene::{Preload, Temperatures, ThermalBodies};
 use crate::solve::contact_layer::Expansion;
 use crate::solve::{SolveError, SolverOptions};
 
+/// Most couplings [`Placements`] keeps (a cycle of two points on the
+/// levels up to 2^7 increments per leg places about 500).
+const MAX_PLACEMENTS: usize = 1024;
+
+/// The coupling placed at each temperature a thermal path has visited
+/// (`Coupling::at_temperatures`, which forms every contact's laws again),
+/// kept for the paths that visit it again: every sample of a study
+/// follows the same cycle on the same uniform increments, so each
+/// placement is made once per study, not once per sample. Shared by the
+/// study's threads; the coupling placed is the same whether it comes from
+/// here or is made afresh, so results do not depend on the order in which
+/// the samples fill it.
+#[derive(Default)]
+pub struct Placements {
+    map: RwLock<HashMap<[u64; 2], Arc<Coupling>>>,
+}
+
+impl Placements {
+    /// `base` at the temperatures `t`, placed once.
+    pub fn get(&self, base: &Coupling, t: Temperatures) -> Result<Arc<Coupling>, SolveError> {
+        let key = [t.moving.to_bits(), t.fixed.to_bits()];
+        if let Some(c) = self.map.read().ok().and_then(|m| m.get(&key).cloned()) {
+            return Ok(c);
+        }
+        let placed = Arc::new(base.at_temperatures(t)?);
+        if let Ok(mut m) = self.map.write()
+            && m.len() < MAX_PLACEMENTS
+        {
+            m.insert(key, placed.clone());
+        }
+        Ok(placed)
+    }
+}
+
 /// What a leg runs on.
 pub(super) struct Leg<'a> {
     /// The coupling at the seating temperature (with its expansion model).
     pub base: &'a Coupling,
+    /// The placements of `base` visited so far.
+    pub placements: &'a Placements,
+    /// Whether to locate the first slip from the sticking solution (the
+    /// `thermal` command; a study does not report it).
+    pub locate_first_slip: bool,
     pub bodies: &'a ThermalBodies,
     pub friction: &'a [Friction],
     /// The preload at the seating temperature.
@@ -71,7 +113,44 @@ fn utilisation(state: &TangentialState, f: &Friction) -> f64 {
     if limit > 0.0 { state.force.norm() / limit } else { 0.0 }
 }
 
-impl Leg<'_> {
+/// The utilisations of each contact's last two committed states and the
+/// s of the earlier one.
+struct Utilisation {
+    now: Vec<f64>,
+    prev: Vec<f64>,
+    s_prev: f64,
+}
+
+impl Utilisation {
+    fn new(states: &[TangentialState], friction: &[Friction]) -> Self {
+        let now = states.iter().zip(friction).map(|(st, f)| utilisation(st, f)).collect();
+        Utilisation { now, prev: vec![f64::NAN; states.len()], s_prev: f64::NAN }
+    }
+
+    /// After a commit at `s` (the states of the increment that ended there
+    /// are `states`).
+    fn advance(&mut self, states: &[TangentialState], friction: &[Friction], s: f64) {
+        std::mem::swap(&mut self.prev, &mut self.now);
+        for ((u, st), f) in self.now.iter_mut().zip(states).zip(friction) {
+            *u = utilisation(st, f);
+        }
+        self.s_prev = s;
+    }
+
+    /// Where contact `i`'s utilisation reaches 1 inside `(s, s_next)`:
+    /// extrapolated linearly from the last two committed states, or the
+    /// middle of the increment without two.
+    fn extrapolate(&self, i: usize, s: f64, s_next: f64) -> f64 {
+        let (ua, up) = (self.now[i], self.prev[i]);
+        if up.is_finite() && ua > up {
+            (s + (1.0 - ua) * (s - self.s_prev) / (ua - up)).clamp(s, s_next)
+        } else {
+            0.5 * (s + s_next)
+        }
+    }
+}
+
+impl<'a> Leg<'a> {
     /// The leg on `n` nominal increments from `start`; the start states
     /// are `bufs.states` (at rest: sticking where there is friction).
     pub fn run(&self, n: usize, start: BodyPose, bufs: &mut Buffers) -> Result<LegEnd, SolveError> {
@@ -87,35 +166,18 @@ impl Leg<'_> {
         };
         let (mut h, mut s, mut committed) = (nominal, 0.0, self.from);
         let mut last_step: Option<(Vector6<f64>, f64)> = None;
-        // Utilisations of the last two committed states and their s.
-        let mut u_now: Vec<f64> =
-            bufs.states.iter().zip(self.friction).map(|(st, f)| utilisation(st, f)).collect();
-        let mut u_prev = vec![f64::NAN; contacts];
-        let mut s_prev = f64::NAN;
+        let mut u = Utilisation::new(&bufs.states, self.friction);
         while s < 1.0 {
             let s_next = if s + h > 1.0 - 1e-12 { 1.0 } else { s + h };
             let at = self.from.towards(self.to, s_next);
-            let coupling = self.base.at_temperatures(at)?;
+            let coupling = self.placements.get(self.base, at)?;
             let preload = preload_at(self.bodies, self.preload, at, &self.base.touching_pose);
-            let program = Program::Hold;
-            let mut solver = Solver::new(
-                &coupling,
-                self.friction,
-                &preload,
-                self.opts,
-                program,
-                Vector6::zeros(),
-            );
-            solver.expansion = Some(Expansion::between(self.bodies, at, committed));
+            let solver = self.solver(&coupling, &preload, at, committed);
             let dx = last_step.map_or(Vector6::zeros(), |(dx, ds)| dx * ((s_next - s) / ds));
             let predictor =
                 end.pose.moved(&dx.fixed_rows::<3>(0).into(), &dx.fixed_rows::<3>(3).into());
-            let loads = Loads {
-                lambda: 1.0,
-                extra: 0.0,
-                duration: (s_next - s) * solver.ramp_time,
-                s: s_next,
-            };
+            let duration = (s_next - s) * solver.ramp_time;
+            let loads = Loads { lambda: 1.0, extra: 0.0, duration, s: s_next };
             let can_halve = h > h_min * 1.5;
             let step = solver.newton(&end.pose, &bufs.states, predictor, &loads, &mut bufs.trial);
             let (new_pose, iterations) = match step {
@@ -139,30 +201,8 @@ impl Leg<'_> {
             };
             end.newton_iterations += iterations;
             self.check(&bufs.trial, &new_pose, &start, at, &solver)?;
-            // Slips, and the first slip of a sticking contact.
-            let breaks = |i: usize| {
-                let (e, st) = (&bufs.trial[i], &bufs.states[i]);
-                self.friction[i].mu_s > 0.0 && e.slip() == SlipState::Slip && !st.sliding
-            };
-            let first = (0..contacts).filter(|&i| breaks(i)).map(|i| {
-                let (ua, up) = (u_now[i], u_prev[i]);
-                let s_star = if up.is_finite() && ua > up {
-                    (s + (1.0 - ua) * (s - s_prev) / (ua - up)).clamp(s, s_next)
-                } else {
-                    0.5 * (s + s_next)
-                };
-                (s_star, i)
-            });
-            let first = first.min_by(|a, b| a.0.total_cmp(&b.0));
-            let all_stuck = bufs.states.iter().all(|st| !st.sliding);
-            let first = match first {
-                Some(_) if end.first_slip.is_none() && all_stuck && self.sticks_linearly() => {
-                    self.first_slip_sticking((s, s_next), committed, &end.pose, bufs).or(first)
-                }
-                _ => first,
-            };
             if end.first_slip.is_none() {
-                end.first_slip = first;
+                end.first_slip = self.first_slip((s, s_next), committed, &end.pose, &u, bufs);
             }
             for i in 0..contacts {
                 end.slid[i] |=
@@ -175,12 +215,8 @@ impl Leg<'_> {
                 st.sliding |= slid;
             }
             std::mem::swap(&mut bufs.evals, &mut bufs.trial);
-            std::mem::swap(&mut u_prev, &mut u_now);
-            for ((u, st), f) in u_now.iter_mut().zip(bufs.states.iter()).zip(self.friction) {
-                *u = utilisation(st, f);
-            }
+            u.advance(&bufs.states, self.friction, s);
             last_step = Some((twist_between(&end.pose, &new_pose), s_next - s));
-            s_prev = s;
             end.pose = new_pose;
             end.increments += 1;
             s = s_next;
@@ -188,6 +224,59 @@ impl Leg<'_> {
             h = (2.0 * h).min(nominal);
         }
         Ok(end)
+    }
+
+    /// The path follower of one increment of the leg to the temperatures
+    /// `at` from the committed ones, on `coupling` placed at `at`.
+    fn solver<'s>(
+        &self,
+        coupling: &'s Coupling,
+        preload: &'s Preload,
+        at: Temperatures,
+        committed: Temperatures,
+    ) -> Solver<'s>
+    where
+        'a: 's,
+    {
+        let mut solver = Solver::new(
+            coupling,
+            self.friction,
+            preload,
+            self.opts,
+            Program::Hold,
+            Vector6::zeros(),
+        );
+        solver.expansion = Some(Expansion::between(self.bodies, at, committed));
+        solver
+    }
+
+    /// The first slip in the increment `(s, s_next)` just solved (its
+    /// evaluations in `bufs.trial`, the committed states in `bufs.states`),
+    /// if a sticking contact breaks away in it: from the sticking solution
+    /// where every contact stuck before and the law sticks linearly (and
+    /// the first slip is asked for), else extrapolated from the
+    /// utilisations `u`.
+    fn first_slip(
+        &self,
+        (s, s_next): (f64, f64),
+        committed: Temperatures,
+        pose: &BodyPose,
+        u: &Utilisation,
+        bufs: &mut Buffers,
+    ) -> Option<(f64, usize)> {
+        let breaks = |i: usize| {
+            let (e, st) = (&bufs.trial[i], &bufs.states[i]);
+            self.friction[i].mu_s > 0.0 && e.slip() == SlipState::Slip && !st.sliding
+        };
+        let first = (0..bufs.states.len())
+            .filter(|&i| breaks(i))
+            .map(|i| (u.extrapolate(i, s, s_next), i))
+            .min_by(|a, b| a.0.total_cmp(&b.0))?;
+        let all_stuck = bufs.states.iter().all(|st| !st.sliding);
+        if self.locate_first_slip && all_stuck && self.sticks_linearly() {
+            return self.first_slip_sticking((s, s_next), committed, pose, bufs).or(Some(first));
+        }
+        Some(first)
     }
 
     /// The increment again with the contacts that break away at its
