@@ -23,6 +23,7 @@ from ._kinrepro import (
     Seating,
     Study,
     Sweep,
+    ThermalPath,
     __version__,
     calibrate,
     merge,
@@ -30,6 +31,7 @@ from ._kinrepro import (
     seat,
     stiffness,
     study,
+    thermal,
 )
 from ._kinrepro import sweep as _sweep
 
@@ -42,6 +44,7 @@ __all__ = [
     "Seating",
     "Study",
     "Sweep",
+    "ThermalPath",
     "__version__",
     "calibrate",
     "merge",
@@ -50,6 +53,7 @@ __all__ = [
     "stiffness",
     "study",
     "sweep",
+    "thermal",
 ]
 
 SetValues = Union[str, float, int, Iterable[Union[float, int, str]]]

@@ -98,6 +98,11 @@ class Study:
         """(n, 6) pose of ``point`` (None: the first evaluation point) per
         sample relative to the nominal seating: x, y, z [m], phi_x, phi_y,
         phi_z [rad]. ``np.std(poses, axis=0, ddof=1)`` is ``sigma``."""
+    def drift(self, point: str | None = None, variant: int = 0) -> Array:
+        """A scene with ``[thermal]``: (n, n_cycle_points, 6) drift of
+        ``point`` (None: the first) from each sample's own seated pose at
+        each cycle point: x, y, z [m], phi_x, phi_y, phi_z [rad]; its
+        statistics (nm, nrad) are ``stats(point)["thermal"]``."""
     def inputs(self, variant: int = 0) -> Array:
         """(n, k) physical value of each varied input per sample (SI;
         mu dimensionless); columns named by :meth:`input_names`."""
@@ -119,6 +124,42 @@ class Study:
     @property
     def shard(self) -> tuple[int, int]: ...
     def __len__(self) -> int: ...
+
+class ThermalPath:
+    """A thermal path (``kinrepro thermal --json``): the seating, then the
+    scene's temperature cycle."""
+
+    @property
+    def point_names(self) -> list[str]: ...
+    @property
+    def delta_t_k(self) -> Array:
+        """(n_cycle_points, 2) temperature changes [K] of the moving and
+        the fixed body."""
+    @property
+    def drift(self) -> Array:
+        """(n_cycle_points, n_points, 6) drift of each evaluation point
+        from where it was seated: x, y, z [m] (rigid motion and the body's
+        expansion), phi_x, phi_y, phi_z [rad]; the last point back at
+        [0, 0] is the residual."""
+    @property
+    def first_slip_delta_t_k(self) -> float | None: ...
+    @property
+    def slipping_contacts(self) -> list[list[int]]: ...
+    @property
+    def path_error(self) -> list[float | None]: ...
+    def to_json(self) -> str: ...
+    def table(self) -> str: ...
+
+def thermal(
+    scene: Scene,
+    mu: Sequence[float] | None = None,
+    cycle: Sequence[tuple[float, float]] | None = None,
+    increments: int | None = None,
+    path_tolerance: float | None = None,
+) -> ThermalPath:
+    """Seat the coupling and follow its ``[thermal]`` temperature cycle
+    (``kinrepro thermal``); ``cycle`` replaces the scene's, pairs
+    (dT_moving, dT_fixed) in K."""
 
 class Sweep:
     """A sweep (``kinrepro sweep --format json``) with numpy views over its

@@ -16,6 +16,7 @@ mod run;
 mod scene;
 mod study;
 mod sweep;
+mod thermal;
 
 use pyo3::prelude::*;
 
@@ -38,12 +39,14 @@ fn _kinrepro(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("KinreproError", m.py().get_type::<KinreproError>())?;
     m.add_class::<scene::Scene>()?;
     m.add_class::<scene::Seating>()?;
+    m.add_class::<thermal::ThermalPath>()?;
     m.add_class::<study::Study>()?;
     m.add_class::<sweep::Sweep>()?;
     m.add_class::<calibrate::Calibration>()?;
     m.add_class::<calibrate::Prediction>()?;
     m.add_function(wrap_pyfunction!(scene::seat, m)?)?;
     m.add_function(wrap_pyfunction!(scene::stiffness, m)?)?;
+    m.add_function(wrap_pyfunction!(thermal::thermal, m)?)?;
     m.add_function(wrap_pyfunction!(study::study, m)?)?;
     m.add_function(wrap_pyfunction!(study::merge, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;

@@ -2,8 +2,8 @@
 
 use kinrepro::dof::Dof;
 use kinrepro::study::{StudyPlan, StudyReport};
-use numpy::ndarray::Array2;
-use numpy::{IntoPyArray, PyArray2};
+use numpy::ndarray::{Array2, Array3};
+use numpy::{IntoPyArray, PyArray2, PyArray3};
 use pyo3::prelude::*;
 
 use crate::err;
@@ -113,6 +113,44 @@ impl Study {
         }
         let r = &v.records;
         Ok(Array2::from_shape_fn((r.len(), 6), |(i, j)| r[i].outputs[cols[j]]).into_pyarray(py))
+    }
+
+    /// A study of a scene with `[thermal]`: each sample's drift of
+    /// evaluation point `point` (None: the first) from its own seated pose
+    /// at each cycle point, (n, n_cycle_points, 6): x, y, z [m], phi_x,
+    /// phi_y, phi_z [rad], in sample order (the cycle's temperatures:
+    /// `stats(point)["thermal"][k]["delta_t_k"]`).
+    #[pyo3(signature = (point = None, variant = 0))]
+    fn drift<'py>(
+        &self,
+        py: Python<'py>,
+        point: Option<&str>,
+        variant: usize,
+    ) -> PyResult<Bound<'py, PyArray3<f64>>> {
+        let v = self.variant(variant)?;
+        let cycle = v.thermal_cycle().len();
+        if cycle == 0 {
+            return Err(err("the study's scene has no [thermal] cycle"));
+        }
+        let point = match point {
+            Some(p) => p.to_string(),
+            None => v.points.first().map(|p| p.name.clone()).unwrap_or_default(),
+        };
+        let prefix = kinrepro::study::runner::THERMAL_PREFIX;
+        let mut cols = Vec::with_capacity(6 * cycle);
+        for k in 1..=cycle {
+            for d in Dof::ALL {
+                let name = format!("{prefix}{k}/{point}/{}", d.si_key());
+                let j = v.output_names.iter().position(|n| *n == name);
+                cols.push(j.ok_or_else(|| err(format!("point {point:?}: no output {name}")))?);
+            }
+        }
+        if v.records.is_empty() && v.streamed {
+            return Err(no_records("drift"));
+        }
+        let r = &v.records;
+        let value = |(i, k, j): (usize, usize, usize)| r[i].outputs[cols[6 * k + j]];
+        Ok(Array3::from_shape_fn((r.len(), cycle, 6), value).into_pyarray(py))
     }
 
     /// The physical value of every varied input per sample, (n, k) in SI

@@ -422,6 +422,15 @@ impl Method {
         }
     }
 
+    /// The load-path tolerance of a quasi-static seating (None: fixed
+    /// increments, or the dynamic solver).
+    pub fn path_tolerance(&self) -> Option<f64> {
+        match self {
+            Method::QuasiStatic(o) => o.path_tolerance,
+            Method::Dynamic(_) => None,
+        }
+    }
+
     /// The solver's name, as on the command line.
     pub fn name(&self) -> &'static str {
         match self {

@@ -287,3 +287,43 @@ fn a_thermal_study_keeps_the_reseating_scatter_and_adds_the_drift() {
         }
     }
 }
+
+/// Every bundled scene with a `[thermal]` table added (a titanium carrier
+/// on a granite base, warmed, the base warmed less, both back): `thermal
+/// --json` follows the cycle with the documented keys, and the last point
+/// back at the seating temperature holds the residual.
+#[test]
+fn every_bundled_scene_follows_a_cycle() {
+    let dir = tempfile::tempdir().unwrap();
+    let table = "\n[thermal]\nmoving_body = \"ti-6al-4v\"\nfixed_body = \"granite\"\ncycle = [[2.0, 0.5], [0.0, 0.0]]\n";
+    for entry in std::fs::read_dir(common::scene("")).unwrap() {
+        let path = entry.unwrap().path();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        let file = dir.path().join(&name);
+        let text = if text.contains("[thermal]") { text } else { text + table };
+        std::fs::write(&file, text).unwrap();
+        let v = json(&["thermal", file.to_str().unwrap(), "--json"]);
+        let cycle = v["cycle"].as_array().unwrap();
+        assert_eq!(cycle.len(), 2, "{name}");
+        for c in cycle {
+            assert!(c["delta_t_k"].is_array() && c["path_error"].is_f64(), "{name}: {c}");
+            assert!(c["slipping_contacts"].is_array(), "{name}");
+            for p in c["points"].as_array().unwrap() {
+                assert!(p["name"].is_string(), "{name}");
+                for key in ["displacement_m", "rotation_rad"] {
+                    let x = p[key].as_array().unwrap();
+                    assert!(
+                        x.len() == 3 && x.iter().all(|v| v.as_f64().unwrap().is_finite()),
+                        "{name}"
+                    );
+                }
+            }
+        }
+        assert_eq!(cycle[1]["delta_t_k"], serde_json::json!([0.0, 0.0]), "{name}");
+        assert!(
+            v["first_slip_delta_t_k"].is_null() || v["first_slip_delta_t_k"].is_f64(),
+            "{name}"
+        );
+    }
+}

@@ -11,7 +11,7 @@ use crate::report::seating::run::{pose_cells, pose_table};
 use crate::report::table::{Column, cells};
 use crate::scene::{Body, Scene, Temperatures, ThermalBodies};
 use crate::solve::thermal::{FirstSlip, ThermalPath};
-use crate::solve::{PointPose, Seating};
+use crate::solve::{Load, PointPose, Seating};
 
 /// One body of `[thermal]`.
 #[derive(Debug, Clone, Serialize)]
@@ -66,8 +66,11 @@ pub struct ThermalReport {
     pub scene: String,
     pub name: String,
     pub solver: String,
-    /// The load-path tolerance of the seating and the cycle (null: fixed increments).
+    /// The seating's load-path tolerance (null: fixed increments).
     pub path_tolerance: Option<f64>,
+    /// The cycle's legs' tolerance (`[thermal] path_tolerance`; null: fixed
+    /// increments).
+    pub thermal_path_tolerance: Option<f64>,
     pub tangential_law: String,
     pub mu_static: Vec<f64>,
     pub moving_body: BodyReport,
@@ -83,10 +86,10 @@ pub struct ThermalReport {
 
 impl ThermalReport {
     /// The report of `path`, which followed the cycle after `seating` of
-    /// `scene` (assembled as `coupling`) with the static coefficients `mu`.
+    /// `scene` (assembled as `coupling`) under `load`.
     pub fn new(
         (scene, coupling): (&Scene, &Coupling),
-        mu: &[f64],
+        load: &Load,
         seating: &Seating,
         path: &ThermalPath,
         path_tolerance: Option<f64>,
@@ -120,8 +123,9 @@ impl ThermalReport {
             name: scene.name.clone(),
             solver: "quasi-static".to_string(),
             path_tolerance,
+            thermal_path_tolerance: path_tolerance.map(|_| load.thermal_tolerance),
             tangential_law: scene.friction.tangential_law.name().to_string(),
-            mu_static: mu.to_vec(),
+            mu_static: load.mu.clone(),
             moving_body: (&bodies.moving).into(),
             fixed_body: (&bodies.fixed).into(),
             seating_path_error: seating.seated.path_error,
@@ -137,9 +141,9 @@ impl ThermalReport {
         let mut s = String::new();
         let _ = writeln!(s, "{}  ({})", self.scene, self.name);
         let mu: Vec<String> = self.mu_static.iter().map(|m| format!("{m:.4}")).collect();
-        let control = match self.path_tolerance {
-            Some(t) => format!("path tolerance {t:.0e}"),
-            None => "fixed increments".to_string(),
+        let control = match (self.path_tolerance, self.thermal_path_tolerance) {
+            (Some(t), Some(c)) => format!("path tolerance {t:.0e} seating, {c:.0e} cycle"),
+            _ => "fixed increments".to_string(),
         };
         let _ = writeln!(
             s,

@@ -27,10 +27,7 @@ impl TryFrom<ThermalArgs> for Thermal {
 
     fn try_from(a: ThermalArgs) -> Result<Thermal> {
         let method = Method::new(Solver::QuasiStatic, a.path.increments, a.path.path_tolerance)?;
-        let path_tolerance = match &method {
-            Method::QuasiStatic(o) => o.path_tolerance,
-            Method::Dynamic(_) => None,
-        };
+        let path_tolerance = method.path_tolerance();
         Ok(Thermal {
             cycle: a.cycle.as_deref().map(parse_cycle).transpose()?,
             scene: a.scene,
@@ -76,7 +73,6 @@ pub fn thermal(t: Thermal) -> Result {
         load.cycle = cycle;
     }
     let (seating, path) = t.method.seat_and_cycle(&coupling, &load).context(&file)?;
-    let report =
-        ThermalReport::new((&scene, &coupling), &load.mu, &seating, &path, t.path_tolerance);
+    let report = ThermalReport::new((&scene, &coupling), &load, &seating, &path, t.path_tolerance);
     if t.json { print_json(&report) } else { emit(&report.table()) }
 }
