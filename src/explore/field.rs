@@ -76,7 +76,7 @@ pub enum FieldError {
     Keyword(String),
 }
 
-const NUMBERS: [(&str, &[&str]); 3] = [
+const NUMBERS: [(&str, &[&str]); 4] = [
     (
         "coupling",
         &[
@@ -91,6 +91,7 @@ const NUMBERS: [(&str, &[&str]); 3] = [
     ),
     ("preload", &["force", "ramp_time"]),
     ("friction", &["mu_static", "spread", "dynamic_ratio", "decay_coefficient"]),
+    ("thermal", &["path_tolerance"]),
 ];
 const MATERIAL_NUMBERS: [&str; 5] = [
     "youngs_modulus",
@@ -99,7 +100,12 @@ const MATERIAL_NUMBERS: [&str; 5] = [
     "allowable_shear_stress",
     "thermal_expansion",
 ];
-const MATERIALS: [&str; 2] = ["coupling.ball_material", "coupling.groove_material"];
+const MATERIALS: [&str; 4] = [
+    "coupling.ball_material",
+    "coupling.groove_material",
+    "thermal.moving_body",
+    "thermal.fixed_body",
+];
 const TEXTS: [&str; 6] = [
     "coupling.arrangement",
     "coupling.groove",
@@ -146,6 +152,9 @@ pub fn kind_of(path: &str, scene: &SceneFile) -> Result<FieldKind, ExploreError>
         ["coupling", ..] if scene.coupling.is_none() => {
             Err(err(FieldError::NoTable("coupling".into())))
         }
+        ["thermal", ..] if scene.thermal.is_none() => {
+            Err(err(FieldError::NoTable("thermal".into())))
+        }
         ["materials", name, _] if material(scene, name).is_none() && !builtin(name) => {
             Err(err(FieldError::NoMaterial(name.to_string())))
         }
@@ -189,6 +198,15 @@ pub fn set(scene: &mut SceneFile, path: &str, value: &SweptValue) -> Result<(), 
         ["preload", "ramp_time"] => scene.preload.ramp_time = Some(at(x)),
         ["friction", key] => return set_friction(scene, key, x, name),
         ["materials", m, key] => return set_material(scene, m, key, x),
+        ["thermal", key] => {
+            let t = scene.thermal.as_mut().ok_or_else(|| FieldError::NoTable("thermal".into()))?;
+            match *key {
+                "path_tolerance" => t.path_tolerance = Some(at(x)),
+                "moving_body" => t.moving_body = at(name),
+                "fixed_body" => t.fixed_body = at(name),
+                _ => return Err(FieldError::NotSweepable),
+            }
+        }
         _ => return Err(FieldError::NotSweepable),
     }
     Ok(())

@@ -199,8 +199,9 @@ fn a_second_identical_cycle_adds_less_than_the_first() {
     ]);
     let r: Vec<Vector6<f64>> = [1, 3, 5].iter().map(|&k| centre(&v, k)).collect();
     let (first, second, third) = (size(&r[0]), size(&(r[1] - r[0])), size(&(r[2] - r[1])));
-    // Shakedown: each cycle walks less than the one before.
-    assert!(second < 0.1 * first && third < second, "{first} {second} {third}");
+    // Shakedown: the first cycle settles the balls (measured: the second
+    // adds 2e-4 nm to a 150 nm residual, the third nothing).
+    assert!(second < 1e-2 * first && third < 1e-2 * first, "{first} {second} {third}");
 }
 
 #[test]
@@ -326,4 +327,51 @@ fn every_bundled_scene_follows_a_cycle() {
             "{name}"
         );
     }
+}
+
+/// A sweep over the carrier's material: each design point's drift
+/// statistics are those of a study of the scene with that material
+/// written in (the same seatings), and the CSV names them
+/// `thermal/<k>/<point>`; a scene without `[thermal]` has no such field.
+#[test]
+fn a_sweep_varies_the_bodies_and_reports_the_drift() {
+    let scene = common::scene(SCENE);
+    let scene = scene.to_str().unwrap();
+    let common_args = ["--samples", "12", "--sampler", "mc", "--seed", "5"];
+    let mut args = vec!["sweep", scene, "--set", "thermal.moving_body=invar-36,ti-6al-4v"];
+    args.extend(common_args);
+    let sweep = json(&[args.as_slice(), &["--format", "json"]].concat());
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(scene).unwrap();
+    for (d, body) in sweep["designs"].as_array().unwrap().iter().zip(["invar-36", "ti-6al-4v"]) {
+        let file = dir.path().join(format!("{body}.toml"));
+        let moved =
+            text.replace("moving_body = \"aluminium-6061\"", &format!("moving_body = \"{body}\""));
+        std::fs::write(&file, moved).unwrap();
+        let mut args = vec!["study", file.to_str().unwrap(), "--format", "json"];
+        args.extend(common_args);
+        let study = json(&args);
+        let (a, b) = (&d["points"][0]["thermal"], &study["variants"][0]["points"][0]["thermal"]);
+        assert_eq!(a.as_array().unwrap().len(), 2, "{body}");
+        for k in 0..2 {
+            for key in ["mean", "sigma"] {
+                for (dof, x) in a[k][key].as_object().unwrap() {
+                    let (x, y) = (x.as_f64().unwrap(), b[k][key][dof].as_f64().unwrap());
+                    assert!((x - y).abs() <= 1e-12 * y.abs(), "{body} {k} {key}.{dof}: {x} vs {y}");
+                }
+            }
+        }
+    }
+    let (z0, z1) = (
+        sweep["designs"][0]["points"][0]["thermal"][0]["mean"]["z_nm"].as_f64().unwrap(),
+        sweep["designs"][1]["points"][0]["thermal"][0]["mean"]["z_nm"].as_f64().unwrap(),
+    );
+    assert!((z0 - z1).abs() > 1.0, "the carrier's material moves the drift: {z0} vs {z1}");
+    let (ok, csv, err) = kinrepro(&[args.as_slice(), &["--format", "csv"]].concat());
+    assert!(ok, "{err}");
+    assert!(csv.lines().any(|l| l.contains(",thermal/2/centre,z,m,")), "{csv}");
+    let plain = common::scene("01_maxwell_vgroove_steel.toml");
+    let (ok, _, err) =
+        kinrepro(&["sweep", plain.to_str().unwrap(), "--set", "thermal.moving_body=invar-36"]);
+    assert!(!ok && err.contains("thermal.moving_body") && err.contains("thermal"), "{err}");
 }

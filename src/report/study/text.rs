@@ -163,8 +163,24 @@ pub(crate) fn truncate(s: &str, n: usize) -> String {
 /// study and of a sweep, one row per DOF: `point,dof,unit,n,mean,min,max,
 /// sigma,three_sigma,sigma_ci90_low,sigma_ci90_high,sigma_interval_method`,
 /// values in SI (m, rad); no interval (corners, a single LHS) is an empty
-/// field.
+/// field. A point's thermal drift statistics follow it, one block per
+/// cycle point, the point named `thermal/<k>/<point>`.
 pub(crate) fn point_csv_rows(p: &PointStats) -> Vec<Vec<String>> {
+    let mut rows = dof_csv_rows(p, &p.name);
+    for (k, c) in p.thermal.iter().enumerate() {
+        rows.extend(dof_csv_rows(&c.drift, &thermal_output_point(k, &p.name)));
+    }
+    rows
+}
+
+/// The output name of a point's drift at cycle point `k` (0-based):
+/// `thermal/<k + 1>/<point>`, as the study's records name it.
+pub(crate) fn thermal_output_point(k: usize, point: &str) -> String {
+    format!("{}{}/{point}", crate::study::runner::THERMAL_PREFIX, k + 1)
+}
+
+/// One row per DOF of `p`'s statistics, the point named `name`.
+fn dof_csv_rows(p: &PointStats, name: &str) -> Vec<Vec<String>> {
     Dof::ALL
         .iter()
         .map(|d| {
@@ -172,7 +188,7 @@ pub(crate) fn point_csv_rows(p: &PointStats) -> Vec<Vec<String>> {
             let si = |v: &Dofs| format!("{:e}", v.si()[k]);
             let ci = |v: &Option<Dofs>| v.as_ref().map_or(String::new(), si);
             vec![
-                p.name.clone(),
+                name.to_string(),
                 d.name().to_string(),
                 d.si_unit().to_string(),
                 p.n.to_string(),

@@ -6,7 +6,8 @@ use crate::dof::nano;
 use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
 use crate::report::study::text::{
-    estimates, interval_methods, point_csv_rows, sigma_cells, sigma_columns, truncate,
+    estimates, interval_methods, point_csv_rows, sigma_cells, sigma_columns, thermal_output_point,
+    truncate,
 };
 use crate::report::table::{Cell, Column, Table, cells};
 use crate::study::provenance::{SCHEMA_VERSION, VERSION};
@@ -38,7 +39,8 @@ pub fn field_unit(path: &str) -> &'static str {
         "ramp_time" => "s",
         "decay_coefficient" => "s/m",
         "youngs_modulus" | "allowable_pressure" | "allowable_shear_stress" => "Pa",
-        "mu_static" | "spread" | "dynamic_ratio" | "poisson_ratio" => "-",
+        "mu_static" | "spread" | "dynamic_ratio" | "poisson_ratio" | "path_tolerance" => "-",
+        "thermal_expansion" => "1/K",
         _ => "",
     }
 }
@@ -111,7 +113,7 @@ impl SweepReport {
             self.sets.iter().map(|x| format!("{} = {}", x.field, x.values)).collect();
         let _ = writeln!(
             s,
-            "Sweep of {} ({}): {}. Per design point and evaluation point the standard deviation of the seated pose relative to the design's nominal seating ({}), its 90 % interval below ({}); then for the nominal seating: k_min, the lowest principal translational stiffness [N/um]; SF_p, the smallest safety factor against the allowable contact pressure; mu_lim, the friction limit for seating and its margin over mu_static + spread; approach along the preload [nm]. P: on the Pareto front (largest translational sigma at {}, k_min, SF_p).",
+            "Sweep of {} ({}): {}. Per design point and evaluation point the standard deviation of the seated pose relative to the design's nominal seating ({}), its 90 % interval below ({}); then for the nominal seating: k_min, the lowest principal translational stiffness [N/um]; SF_p, the smallest safety factor against the allowable contact pressure; mu_lim, the friction limit for seating and its margin over mu_static + spread; approach along the preload [nm]; for a scene with [thermal], thermal/k/point: the mean and sigma of the point's drift from each sample's seated pose at cycle point k. P: on the Pareto front (largest translational sigma at {}, k_min, SF_p).",
             self.name,
             self.scene,
             sets.join("; "),
@@ -171,6 +173,17 @@ impl SweepReport {
                     r.under([vec![String::new(); 3], u, vec![String::new(); 6]].concat());
                 }
                 None => t.note(format!("  (no interval: {})", p.sigma_interval_method)),
+            }
+            for (k, c) in p.thermal.iter().enumerate() {
+                // The drift's scatter at cycle point k, under its mean.
+                let name = truncate(&thermal_output_point(k, &p.name), 15);
+                let mut mean = cells!["", "", format!("{name} mean")];
+                mean.extend(c.drift.mean.values().map(Cell::Num));
+                t.row(mean);
+                let (sigma, _) = sigma_cells(&c.drift);
+                let mut row = cells!["", "", format!("{name} σ")];
+                row.extend(sigma);
+                t.row(row);
             }
         }
     }
