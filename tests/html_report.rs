@@ -118,20 +118,23 @@ fn run_chromium(
     )
 }
 
-/// Two studies (scenes 01 and 06 re-seating; the tolerance scene with
-/// interchangeability) and their report with the paper's reference values.
+/// Two studies (scenes 01 and 06 and the thermal example re-seating; the
+/// tolerance scene with interchangeability) and their report with the
+/// paper's reference values.
 fn make_report(dir: &Path) -> (String, serde_json::Value) {
     let a = dir.join("a.json");
     let b = dir.join("b.json");
-    let (s1, s6, st) = (
+    let (s1, s6, st, th) = (
         scene("01_maxwell_vgroove_steel.toml"),
         scene("06_kelvin_steel.toml"),
         scene("tolerances_maxwell_vgroove.toml"),
+        scene("maxwell_thermal_alu_invar.toml"),
     );
     let (ok, json, err) = kinrepro(&[
         "study",
         s1.to_str().unwrap(),
         s6.to_str().unwrap(),
+        th.to_str().unwrap(),
         "--samples",
         "10",
         "--format",
@@ -268,10 +271,21 @@ fn static_checks(html: &str, study: &serde_json::Value) {
             assert!(html.contains(&format!("[{lo:.2},")), "interval {lo:.2} not in a table");
         }
     }
-    // 5 charts (bars, interchange bars, scatter, convergence, interchange scatter);
-    // per scene a layout and a top and a side view of each of 3 balls.
-    assert_eq!(html.matches("data-check=\"chart\"").count(), 5);
-    assert_eq!(html.matches("data-check=\"drawing\"").count(), 3 * 7);
+    // The thermal example's drift: its table (each cycle point's mean z of
+    // the centre) and its plot.
+    let thermal = &study["variants"][2]["points"][0]["thermal"];
+    for c in thermal.as_array().unwrap() {
+        let z = c["mean"]["z_nm"].as_f64().unwrap();
+        assert!(html.contains(&format!("<td>{z:.3}")), "drift mean z {z:.3} not in a table");
+    }
+    assert!(
+        html.contains("Thermal drift along the [thermal] cycle") && html.contains("thermal-drift")
+    );
+    // 6 charts (bars, interchange bars, scatter, convergence, thermal drift,
+    // interchange scatter); per scene a layout and a top and a side view of
+    // each of 3 balls.
+    assert_eq!(html.matches("data-check=\"chart\"").count(), 6);
+    assert_eq!(html.matches("data-check=\"drawing\"").count(), 4 * 7);
 }
 
 /// In Chromium: a screenshot without console errors, the probe at desktop
@@ -285,7 +299,7 @@ struct Expect {
 }
 
 /// The study report of `make_report`.
-const STUDY_REPORT: Expect = Expect { charts: 5, drawings: 21, min_tables: 8, scenes: 6 };
+const STUDY_REPORT: Expect = Expect { charts: 6, drawings: 28, min_tables: 9, scenes: 8 };
 
 fn browser_checks(exe: &Path, tmp: &Path, html: &str, expect: &Expect) {
     let file = tmp.join("report.html");

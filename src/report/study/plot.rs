@@ -144,6 +144,27 @@ pub(crate) fn legend_room(entries: usize, plot_px: f64) -> f64 {
     1.0 / (1.0 - frac)
 }
 
+/// The legend of a panel's labelled series, upper right, at `font` px on
+/// a translucent white box (every study chart's).
+pub(crate) fn draw_legend<'a, DB, CT>(
+    chart: &mut plotters::chart::ChartContext<'a, DB, CT>,
+    font: u32,
+) -> Result<()>
+where
+    DB: plotters::prelude::DrawingBackend + 'a,
+    CT: plotters::coord::CoordTranslate,
+{
+    use plotters::prelude::{BLACK, Color, SeriesLabelPosition, WHITE};
+    chart
+        .configure_series_labels()
+        .label_font(("sans-serif", font))
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(plot_err)
+}
+
 pub(crate) fn plot_err<E: std::fmt::Display>(e: E) -> PlotError {
     PlotError::Backend(e.to_string())
 }

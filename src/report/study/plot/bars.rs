@@ -5,7 +5,7 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 
 use super::{PlotError, Result};
-use super::{VariantSigma, check_finite, color, headroom, legend_room, plot_err};
+use super::{VariantSigma, check_finite, color, draw_legend, headroom, legend_room, plot_err};
 use crate::dof::Dof;
 
 /// An SVG with two panels, translations \[nm\] and rotations \[nrad\]: one
@@ -107,14 +107,7 @@ fn panel<DB: DrawingBackend>(
     if !legend {
         return Ok(());
     }
-    chart
-        .configure_series_labels()
-        .label_font(("sans-serif", 15))
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()
-        .map_err(plot_err)
+    draw_legend(&mut chart, 15)
 }
 
 /// The mesh: one x label per DOF (its name at the integer positions), the

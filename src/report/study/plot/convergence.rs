@@ -2,7 +2,7 @@
 
 use plotters::prelude::*;
 
-use super::{ConvergenceSeries, check_finite, color, headroom, legend_room, plot_err};
+use super::{ConvergenceSeries, check_finite, color, draw_legend, headroom, legend_room, plot_err};
 use super::{PlotError, Result};
 use crate::dof::Dof;
 
@@ -97,12 +97,5 @@ fn panel<DB: DrawingBackend>(
     if !legend {
         return Ok(());
     }
-    chart
-        .configure_series_labels()
-        .label_font(("sans-serif", 13))
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()
-        .map_err(plot_err)
+    draw_legend(&mut chart, 13)
 }

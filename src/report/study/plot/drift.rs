@@ -2,7 +2,7 @@
 
 use plotters::prelude::*;
 
-use super::{DriftSeries, check_finite, color, plot_err};
+use super::{DriftSeries, check_finite, color, draw_legend, plot_err};
 use super::{PlotError, Result};
 use crate::dof::Dof;
 
@@ -105,12 +105,5 @@ fn panel<DB: DrawingBackend>(
     if !legend {
         return Ok(());
     }
-    chart
-        .configure_series_labels()
-        .label_font(("sans-serif", 13))
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()
-        .map_err(plot_err)
+    draw_legend(&mut chart, 13)
 }
