@@ -291,9 +291,11 @@ pub struct PreloadFile {
     /// the time base of the slip velocity of the quasi-static solver.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ramp_time: Option<Spanned<f64>>,
-    /// Adds the weight of the moving half (mass from `mass` or `[dynamics]`).
+    /// Adds the weight of the moving half (mass from `mass` or
+    /// `[dynamics]`): `true` (standard gravity along -z), `false`, or the
+    /// gravity vector [gx, gy, gz] in m/s^2.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub gravity: Option<Spanned<bool>>,
+    pub gravity: Option<Spanned<toml::Value>>,
     /// Mass of the moving half for `gravity` [kg].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mass: Option<Spanned<f64>>,

@@ -5,8 +5,13 @@
 use nalgebra::Vector3;
 use serde::Serialize;
 
-/// Standard gravity [m/s^2] (CGPM 1901), along -z for `[preload] gravity`.
+/// Standard gravity [m/s^2] (CGPM 1901), along -z for `[preload] gravity
+/// = true`.
 pub const STANDARD_GRAVITY: f64 = 9.80665;
+/// The largest gravity vector a scene gives without `allow_large_values`
+/// [m/s^2] (about 100 g): above it, millimetres per second squared were
+/// probably meant.
+pub const GRAVITY_MAX: f64 = 1000.0;
 
 /// How a preload force follows the motion of the moving half.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -23,7 +28,7 @@ pub enum ForceLaw {
         /// free_length - force / stiffness.
         free_length: f64,
     },
-    /// The weight of the moving half, m g along -z at its centre of mass
+    /// The weight of the moving half, m |g| along g at its centre of mass
     /// (constant; not varied by `--vary preload`).
     Weight,
 }
@@ -46,12 +51,14 @@ impl PreloadForce {
         PreloadForce { force, point, direction, law: ForceLaw::Constant }
     }
 
-    /// The weight m g of a half of mass `mass` [kg] at `centre_of_mass` [m].
-    pub fn weight(mass: f64, centre_of_mass: Vector3<f64>) -> Self {
+    /// The weight m g of a half of mass `mass` [kg] at `centre_of_mass` [m]
+    /// under the gravity vector `g` [m/s^2] (nonzero): m |g| along g.
+    pub fn weight(mass: f64, centre_of_mass: Vector3<f64>, g: Vector3<f64>) -> Self {
+        let size = g.norm();
         PreloadForce {
-            force: mass * STANDARD_GRAVITY,
+            force: mass * size,
             point: centre_of_mass,
-            direction: -Vector3::z(),
+            direction: g / size,
             law: ForceLaw::Weight,
         }
     }

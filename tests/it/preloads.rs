@@ -259,3 +259,101 @@ fn vary_preload_moves_and_tilts_each_force_but_not_the_weight() {
         assert!((f.direction - n.direction).norm() < 1e-15);
     }
 }
+
+/// Scene 01's 20 N central force plus the weight of a 0.5 kg half under
+/// `gravity` (a TOML value), its centre of mass 10 mm above the centre.
+fn with_gravity(gravity: &str) -> String {
+    scene01_without_force("").replace(
+        "[preload]\n",
+        &format!(
+            "[preload]\nforce = 20.0\ngravity = {gravity}\nmass = 0.5\ncentre_of_mass = [0.0, 0.0, 0.01]\n"
+        ),
+    )
+}
+
+#[test]
+fn a_gravity_vector_along_minus_z_is_gravity_true() {
+    let (a, b) = (with_gravity("true"), with_gravity("[0.0, 0.0, -9.80665]"));
+    let (pa, pb) = (Scene::parse(&a, "a.toml").unwrap(), Scene::parse(&b, "b.toml").unwrap());
+    assert_eq!(pa.preload, pb.preload);
+    let d = max_relative(&study_sigmas(&write("g_true", &a)), &study_sigmas(&write("g_vec", &b)));
+    assert!(d <= 1e-12, "{d:e}");
+    // `expand` writes the vector back and it loads to the same preload.
+    let expanded = Scene::expand_text(&b, "b.toml").unwrap();
+    common::assert_close_debug(
+        &pb.preload,
+        &Scene::parse(&expanded, "e.toml").unwrap().preload,
+        "expanded",
+    );
+}
+
+/// Gravity along x on the Maxwell coupling, frictionless: the six contact
+/// forces are statically determinate, N_i from the 6x6 equilibrium of the
+/// seated contact normals and points (solved here) against the preload
+/// and the sideways weight; `run --mu 0,...` gives the same.
+#[test]
+fn sideways_gravity_is_carried_by_the_contacts_as_statics_says() {
+    let g = [4.0, 0.0, -9.0];
+    let file = write("g_side", &with_gravity(&format!("[{:?}, {:?}, {:?}]", g[0], g[1], g[2])));
+    let (ok, out, err) = kinrepro(&["run", &file, "--mu", "0,0,0,0,0,0", "--json"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let vec3 = |x: &serde_json::Value| {
+        Vector3::new(x[0].as_f64().unwrap(), x[1].as_f64().unwrap(), x[2].as_f64().unwrap())
+    };
+    // External loads at the seated pose: 20 N down at the centre, m g at
+    // the centre of mass (both carried by the half, which moved by u).
+    let pose = &v["pose"];
+    let u = Vector3::new(
+        pose["x_m"].as_f64().unwrap(),
+        pose["y_m"].as_f64().unwrap(),
+        pose["z_m"].as_f64().unwrap(),
+    );
+    let weight = Vector3::from(g) * 0.5;
+    let (f, m) = (
+        Vector3::new(0.0, 0.0, -20.0) + weight,
+        u.cross(&Vector3::new(0.0, 0.0, -20.0)) + (u + Vector3::new(0.0, 0.0, 0.01)).cross(&weight),
+    );
+    let contacts = v["contacts"].as_array().unwrap();
+    let mut a = nalgebra::Matrix6::zeros();
+    for (i, c) in contacts.iter().enumerate() {
+        let (n, p) = (vec3(&c["normal"]), vec3(&c["point_m"]));
+        a.fixed_view_mut::<3, 1>(0, i).copy_from(&n);
+        a.fixed_view_mut::<3, 1>(3, i).copy_from(&p.cross(&n));
+    }
+    let rhs = -Vector6::new(f.x, f.y, f.z, m.x, m.y, m.z);
+    let normal = a.lu().solve(&rhs).unwrap();
+    for (i, c) in contacts.iter().enumerate() {
+        let got = c["normal_force_n"].as_f64().unwrap();
+        assert!(
+            (got - normal[i]).abs() <= 1e-6 * 20.0,
+            "contact {}: {got} vs {}",
+            i + 1,
+            normal[i]
+        );
+    }
+    // The sideways weight loads the contacts unevenly.
+    let spread = normal.max() - normal.min();
+    assert!(spread > 0.5, "{normal:?}");
+}
+
+#[test]
+fn bad_gravity_is_refused_naming_the_field_and_line() {
+    for (g, says) in [
+        ("[0.0, 0.0, 0.0]", "no direction"),
+        ("[0.0, 0.0, -9806.65]", "mm/s^2"),
+        ("1.0", "expected true, false or a gravity vector"),
+        ("[0.0, -9.8]", "3 numbers"),
+        ("[0.0, \"down\", -9.8]", "number"),
+    ] {
+        let text = with_gravity(g);
+        let line = text.lines().position(|l| l.starts_with("gravity = ")).unwrap() + 1;
+        let err = Scene::parse(&text, "bad.toml").unwrap_err().to_string();
+        assert!(err.starts_with(&format!("bad.toml:{line}: preload.gravity: ")), "{g}: {err}");
+        assert!(err.contains(says), "{g}: {err}");
+    }
+    let large = format!("allow_large_values = true\n{}", with_gravity("[0.0, 0.0, -9806.65]"));
+    assert!(Scene::parse(&large, "ok.toml").is_ok());
+    let off = with_gravity("false").replace("mass = 0.5\ncentre_of_mass = [0.0, 0.0, 0.01]\n", "");
+    assert_eq!(Scene::parse(&off, "off.toml").unwrap().preload.forces.len(), 1);
+}

@@ -21,7 +21,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     let fx = Fields { ctx, materials: materials::user_materials(f, ctx)? };
     let balls = geometry::balls(f, &fx)?;
     let surfaces = geometry::surfaces(f, &fx, &balls)?;
-    let preload = preload::preload(&f.preload, f.dynamics.as_ref(), &fx)?;
+    let preload = preload::preload(&f.preload, f.dynamics.as_ref(), &fx, f.allow_large_values)?;
     let friction = tables::friction(&f.friction, ctx)?;
     let study = tables::study(&f.study, ctx)?;
     let evaluation_points = tables::evaluation_points(f, &fx)?;

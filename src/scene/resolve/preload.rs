@@ -7,7 +7,8 @@ use toml::Spanned;
 
 use super::fields::Fields;
 use crate::scene::error::SceneError;
-use crate::scene::file::{DynamicsFile, PreloadFile, PreloadForceFile};
+use crate::scene::file::{DynamicsFile, Numbers, PreloadFile, PreloadForceFile};
+use crate::scene::preload::{GRAVITY_MAX, STANDARD_GRAVITY};
 use crate::scene::{DEFAULT_RAMP_TIME, ForceLaw, Preload, PreloadForce};
 
 /// `[preload]`: `force` (positive; point and direction default to the
@@ -17,6 +18,7 @@ pub fn preload(
     p: &PreloadFile,
     dynamics: Option<&DynamicsFile>,
     fx: &Fields,
+    allow_large: bool,
 ) -> Result<Preload, SceneError> {
     let mut forces = match (&p.force, p.forces.is_empty()) {
         (Some(f), true) => vec![single(p, f, fx)?],
@@ -29,13 +31,13 @@ pub fn preload(
         }
         (None, _) => listed(p, fx)?,
     };
-    if let Some(g) = p.gravity.as_ref().filter(|g| *g.get_ref()) {
+    if let Some(g) = gravity(p, fx, allow_large)? {
         forces.push(weight(p, g, dynamics, fx)?);
     } else if let Some(m) = &p.mass {
         return Err(fx.ctx.error(
             Some(&m.span()),
             "preload.mass",
-            "the mass is read only with gravity = true",
+            "the mass is read only with gravity = true (or a gravity vector)",
         ));
     }
     if forces.is_empty() {
@@ -129,11 +131,65 @@ fn pair(fx: &Fields, v: &Spanned<f64>, at: &str, given: &str, missing: &str) -> 
     )
 }
 
-/// The weight of the moving half: `[preload] mass` and `centre_of_mass`
-/// (default the origin), else `[dynamics] mass` and `centre_of_mass`.
+/// A gravity vector [m/s^2] and the place of `[preload] gravity` in the file.
+type Gravity = (Vector3<f64>, std::ops::Range<usize>);
+
+/// `[preload] gravity`: `true` (standard gravity along -z), `false` or
+/// absent (no weight), or a gravity vector [gx, gy, gz] in m/s^2 (finite,
+/// nonzero, at most [`GRAVITY_MAX`] in size unless `allow_large`); the
+/// vector and the field's place in the file.
+fn gravity(p: &PreloadFile, fx: &Fields, allow_large: bool) -> Result<Option<Gravity>, SceneError> {
+    let Some(g) = &p.gravity else {
+        return Ok(None);
+    };
+    let (span, field) = (g.span(), "preload.gravity");
+    let vector = match g.get_ref() {
+        toml::Value::Boolean(false) => return Ok(None),
+        toml::Value::Boolean(true) => -Vector3::z() * STANDARD_GRAVITY,
+        toml::Value::Array(items) => {
+            let numbers = Spanned::new(span.clone(), Numbers(items.clone()));
+            fx.finite(&numbers, field)?
+        }
+        other => {
+            return Err(fx.ctx.error(
+                Some(&span),
+                field,
+                format!(
+                    "expected true, false or a gravity vector [gx, gy, gz] in m/s^2, found {}",
+                    other.type_str()
+                ),
+            ));
+        }
+    };
+    let size = vector.norm();
+    if size == 0.0 {
+        return Err(fx.ctx.error(
+            Some(&span),
+            field,
+            "the gravity vector [0, 0, 0] has no direction: give false (or leave gravity out) \
+             for no weight",
+        ));
+    }
+    if size > GRAVITY_MAX && !allow_large {
+        return Err(fx.ctx.error(
+            Some(&span),
+            field,
+            format!(
+                "|g| = {size} m/s^2 is implausibly large (limit {GRAVITY_MAX} m/s^2): did you \
+                 give mm/s^2? scene files are in SI (m/s^2, standard gravity 9.80665); if the \
+                 value is intended, set `allow_large_values = true` at the top of the file"
+            ),
+        ));
+    }
+    Ok(Some((vector, span)))
+}
+
+/// The weight of the moving half under the gravity vector `g`:
+/// `[preload] mass` and `centre_of_mass` (default the origin), else
+/// `[dynamics] mass` and `centre_of_mass`.
 fn weight(
     p: &PreloadFile,
-    gravity: &Spanned<bool>,
+    (g, span): Gravity,
     dynamics: Option<&DynamicsFile>,
     fx: &Fields,
 ) -> Result<PreloadForce, SceneError> {
@@ -142,7 +198,7 @@ fn weight(
         (None, Some(d)) => (&d.mass, &d.centre_of_mass, "dynamics"),
         (None, None) => {
             return Err(fx.ctx.error(
-                Some(&gravity.span()),
+                Some(&span),
                 "preload.gravity",
                 "needs the mass of the moving half: give [preload] mass (and centre_of_mass) \
                  or a [dynamics] table",
@@ -161,5 +217,5 @@ fn weight(
         Some(c) => fx.finite(c, &format!("{field}.centre_of_mass"))?,
         None => Vector3::zeros(),
     };
-    Ok(PreloadForce::weight(mass, centre))
+    Ok(PreloadForce::weight(mass, centre, g))
 }
