@@ -105,7 +105,9 @@ pub fn moving_point(bodies: &ThermalBodies, p: &Vector3<f64>, t: Temperatures) -
 /// c = (R_0 (p' - p) - (A' - A)) . d and its force there by -k c: the
 /// spring of the returned preload has the force F_0 - k c in the touching
 /// pose, at full load. The spring's own expansion (its free length) is
-/// left out.
+/// left out. A magnet's keeper K = p_0 + gap_0 d on the fixed half moves
+/// likewise, and its gap in the touching pose becomes gap_0 - c (c with K
+/// for A), its force the table's there.
 pub fn preload_at(
     bodies: &ThermalBodies,
     preload: &Preload,
@@ -115,13 +117,24 @@ pub fn preload_at(
     let mut out = preload.clone();
     for f in &mut out.forces {
         let moved = bodies.moving.map(&f.point, t.moving);
-        if let ForceLaw::Spring { stiffness, free_length } = f.law {
-            let p0 = touching.apply(&f.point);
-            let anchor = p0 - f.direction * (free_length - f.force / stiffness);
+        // The change c of the distance along d from the point to the
+        // spring's anchor or the magnet's keeper on the fixed half.
+        let p0 = touching.apply(&f.point);
+        let change = |anchor: Vector3<f64>| {
             let anchor_moved = bodies.fixed.map(&anchor, t.fixed);
-            let c =
-                (touching.rotation * (moved - f.point) - (anchor_moved - anchor)).dot(&f.direction);
-            f.force -= stiffness * c;
+            (touching.rotation * (moved - f.point) - (anchor_moved - anchor)).dot(&f.direction)
+        };
+        match &f.law {
+            ForceLaw::Spring { stiffness, free_length } => {
+                let c = change(p0 - f.direction * (free_length - f.force / stiffness));
+                f.force -= stiffness * c;
+            }
+            ForceLaw::Magnet(m) => {
+                let gap = m.gap - change(p0 + f.direction * m.gap);
+                f.force = m.force(gap).0;
+                f.law = ForceLaw::Magnet(m.at_gap(gap));
+            }
+            ForceLaw::Constant | ForceLaw::Weight => {}
         }
         f.point = moved;
     }

@@ -311,8 +311,10 @@ pub struct PreloadFile {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PreloadForceFile {
-    /// Force at full load in the touching pose [N].
-    pub force: Spanned<f64>,
+    /// Force at full load in the touching pose [N] (not for a magnet,
+    /// whose table gives it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub force: Option<Spanned<f64>>,
     /// Point of application in the moving half [m].
     pub point: Spanned<Numbers>,
     /// Direction (normalised).
@@ -323,6 +325,14 @@ pub struct PreloadForceFile {
     /// Free length of the spring [m] (with `stiffness`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub free_length: Option<Spanned<f64>>,
+    /// A magnet: the gap to its keeper in the touching pose [m] (with
+    /// `force_table`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gap: Option<Spanned<f64>>,
+    /// A magnet's pull against the gap: [[gap_m, force_n], ...] by
+    /// increasing gap (with `gap`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub force_table: Option<Spanned<Vec<Spanned<Numbers>>>>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]

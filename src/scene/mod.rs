@@ -10,6 +10,7 @@ pub mod bundled;
 pub mod error;
 pub mod expand;
 pub mod file;
+pub mod magnet;
 pub mod plausible;
 pub mod preload;
 pub mod resolve;

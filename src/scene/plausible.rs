@@ -277,7 +277,9 @@ pub fn check_explicit(
     check_surfaces(f, ctx)?;
     let p = &f.preload;
     let listed = p.forces.iter().enumerate();
-    let forces = listed.map(|(i, e)| (&e.force, format!("preload.forces[{}].force", i + 1)));
+    let forces = listed.filter_map(|(i, e)| {
+        e.force.as_ref().map(|f| (f, format!("preload.forces[{}].force", i + 1)))
+    });
     let single = p.force.iter().map(|v| (v, "preload.force".to_string()));
     for (v, field) in single.chain(forces) {
         let force = *v.get_ref();

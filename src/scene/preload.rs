@@ -5,6 +5,8 @@
 use nalgebra::Vector3;
 use serde::Serialize;
 
+pub use super::magnet::MagnetLaw;
+
 /// Standard gravity [m/s^2] (CGPM 1901), along -z for `[preload] gravity
 /// = true`.
 pub const STANDARD_GRAVITY: f64 = 9.80665;
@@ -14,7 +16,7 @@ pub const STANDARD_GRAVITY: f64 = 9.80665;
 pub const GRAVITY_MAX: f64 = 1000.0;
 
 /// How a preload force follows the motion of the moving half.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum ForceLaw {
     /// Constant magnitude and direction (the load factor scales it).
     Constant,
@@ -31,10 +33,14 @@ pub enum ForceLaw {
     /// The weight of the moving half, m |g| along g at its centre of mass
     /// (constant; not varied by `--vary preload`).
     Weight,
+    /// A magnet at `point` pulling along `direction` towards its keeper on
+    /// the fixed half: F = lambda F(gap), gap = gap_0 - (p - p_0) . d, F
+    /// from its table ([`MagnetLaw`]; docs/scenes.md).
+    Magnet(MagnetLaw),
 }
 
 /// One force of the preload.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PreloadForce {
     /// Magnitude at full load in the touching pose [N].
     pub force: f64,

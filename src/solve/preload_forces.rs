@@ -4,6 +4,7 @@
 //! ```text
 //! constant, weight:  F = lambda F_0 d
 //! spring:            F = (lambda F_0 - k (p - p_0) . d) d
+//! magnet:            F = lambda F(gap) d,  gap = gap_0 - (p - p_0) . d
 //! ```
 //!
 //! with p_0 the point in the touching pose. The spring lies along d between
@@ -12,12 +13,17 @@
 //! lengthens by (p - p_0) . d as the half moves, losing k times that. The
 //! load path ramps its compression (lambda F_0 / k: the anchor driven in,
 //! as a screw tightening the spring), so every force reaches its full
-//! value together at lambda = 1.
+//! value together at lambda = 1. A magnet pulls along d towards its
+//! keeper on the fixed half, gap_0 away in the touching pose; moving its
+//! point along d closes the gap, and its table's force F(gap)
+//! (`scene::magnet`) is ramped whole (the keeper brought up). Its
+//! stiffness is -lambda dF/dgap d d^T: positive along d where the pull
+//! grows as the gap closes (a magnet destabilises what it holds).
 
 use nalgebra::{Matrix3, Vector3};
 
 use crate::assembly::{BodyPose, Coupling};
-use crate::scene::Preload;
+use crate::scene::{ForceLaw, Preload};
 
 /// One preload force at a pose.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -26,7 +32,8 @@ pub struct Applied {
     pub force: Vector3<f64>,
     /// Its point in the world [m].
     pub point: Vector3<f64>,
-    /// d(force)/d(displacement of the point): -k d d^T (zero unless a spring).
+    /// d(force)/d(displacement of the point): -k d d^T for a spring,
+    /// -lambda dF/dgap d d^T for a magnet (None for a constant force).
     pub stiffness: Option<Matrix3<f64>>,
 }
 
@@ -40,16 +47,25 @@ pub fn applied<'a>(
 ) -> impl Iterator<Item = Applied> + 'a {
     preload.forces.iter().map(move |f| {
         let point = pose.apply(&f.point);
-        let k = f.stiffness();
-        if k > 0.0 {
-            let stretch = (point - coupling.touching_pose.apply(&f.point)).dot(&f.direction);
-            Applied {
-                force: f.direction * (f.force * lambda - k * stretch),
+        let stretch = || (point - coupling.touching_pose.apply(&f.point)).dot(&f.direction);
+        let dd = || f.direction * f.direction.transpose();
+        match &f.law {
+            ForceLaw::Spring { stiffness: k, .. } => Applied {
+                force: f.direction * (f.force * lambda - k * stretch()),
                 point,
-                stiffness: Some(f.direction * f.direction.transpose() * -k),
+                stiffness: Some(dd() * -k),
+            },
+            ForceLaw::Magnet(m) => {
+                let (force, slope) = m.force(m.gap - stretch());
+                Applied {
+                    force: f.direction * (force * lambda),
+                    point,
+                    stiffness: Some(dd() * (-lambda * slope)),
+                }
             }
-        } else {
-            Applied { force: f.direction * (f.force * lambda), point, stiffness: None }
+            ForceLaw::Constant | ForceLaw::Weight => {
+                Applied { force: f.direction * (f.force * lambda), point, stiffness: None }
+            }
         }
     })
 }

@@ -188,16 +188,23 @@ pub struct PreloadForceRecord {
     pub stiffness_n_per_m: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub free_length_m: Option<f64>,
+    /// A magnet's gap in the touching pose [m] and its (gap [m], force [N])
+    /// table (magnets only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gap_m: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub force_table: Option<Vec<[f64; 2]>>,
 }
 
 impl PreloadForceRecord {
     fn new(f: &PreloadForce) -> Self {
-        let (law, spring) = match f.law {
-            ForceLaw::Constant => ("constant", None),
+        let (law, spring, magnet) = match &f.law {
+            ForceLaw::Constant => ("constant", None, None),
             ForceLaw::Spring { stiffness, free_length } => {
-                ("spring", Some((stiffness, free_length)))
+                ("spring", Some((*stiffness, *free_length)), None)
             }
-            ForceLaw::Weight => ("weight", None),
+            ForceLaw::Weight => ("weight", None, None),
+            ForceLaw::Magnet(m) => ("magnet", None, Some(m)),
         };
         PreloadForceRecord {
             law: law.to_string(),
@@ -206,6 +213,8 @@ impl PreloadForceRecord {
             direction: f.direction.into(),
             stiffness_n_per_m: spring.map(|s| s.0),
             free_length_m: spring.map(|s| s.1),
+            gap_m: magnet.map(|m| m.gap),
+            force_table: magnet.map(|m| m.table.clone()),
         }
     }
 }

@@ -357,3 +357,108 @@ fn bad_gravity_is_refused_naming_the_field_and_line() {
     let off = with_gravity("false").replace("mass = 0.5\ncentre_of_mass = [0.0, 0.0, 0.01]\n", "");
     assert_eq!(Scene::parse(&off, "off.toml").unwrap().preload.forces.len(), 1);
 }
+
+/// Scene 01 with its preload as one `[[preload.forces]]` entry at the
+/// centre along -z: a magnet with `gap` and `table` (TOML).
+fn with_magnet(gap: &str, table: &str) -> String {
+    scene01_without_force(&format!(
+        "\n[[preload.forces]]\npoint = [0.0, 0.0, 0.0]\ndirection = [0.0, 0.0, -1.0]\ngap = {gap}\nforce_table = {table}\n"
+    ))
+}
+
+#[test]
+fn a_magnet_with_a_constant_table_is_a_constant_force() {
+    let magnet = with_magnet("0.5e-3", "[[0.0, 20.0], [1.0e-3, 20.0], [2.0e-3, 20.0]]");
+    let constant = std::fs::read_to_string(scene("01_maxwell_vgroove_steel.toml")).unwrap();
+    let d = max_relative(
+        &study_sigmas(&write("magnet_const", &magnet)),
+        &study_sigmas(&write("magnet_as_force", &constant)),
+    );
+    assert!(d <= 1e-12, "{d:e}");
+}
+
+/// A magnet whose pull falls linearly with the gap (two table points: the
+/// monotone interpolant is the line): at the seated pose the contacts
+/// carry the table's force at the seated gap, gap_0 + the settlement.
+#[test]
+fn a_falling_magnet_pulls_with_the_tables_force_at_the_seated_gap() {
+    let (g0, f0, g1, f1) = (0.0, 30.0, 2.0e-3, 10.0);
+    let gap = 0.5e-3;
+    let text = with_magnet(&format!("{gap:?}"), &format!("[[{g0:?}, {f0:?}], [{g1:?}, {f1:?}]]"));
+    let (ok, out, err) = kinrepro(&["run", &write("magnet_line", &text), "--json"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let dz = v["pose"]["z_m"].as_f64().unwrap();
+    assert!(dz < 0.0, "the half settles: {dz}");
+    // Moving along d = -z by -dz closes the gap by -dz.
+    let seated_gap = gap + dz;
+    let expected = f0 + (f1 - f0) * (seated_gap - g0) / (g1 - g0);
+    let carried: f64 = v["contacts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| {
+            let n = c["normal"][2].as_f64().unwrap() * c["normal_force_n"].as_f64().unwrap();
+            n + c["tangential_force"][2].as_f64().unwrap()
+        })
+        .sum();
+    assert!((carried / expected - 1.0).abs() < 1e-9, "{carried} N vs {expected} N");
+    // `expand` writes the magnet back.
+    let expanded = Scene::expand_text(&text, "m.toml").unwrap();
+    let (a, b) =
+        (Scene::parse(&text, "m.toml").unwrap(), Scene::parse(&expanded, "e.toml").unwrap());
+    common::assert_close_debug(&a.preload, &b.preload, "expanded magnet");
+    // It pulls harder than at the touching gap (10 N/mm over ~0.6 um).
+    let touching = f0 + (f1 - f0) * (gap - g0) / (g1 - g0);
+    assert!(carried > touching, "{carried} vs {touching}");
+}
+
+/// The monotone interpolant (Fritsch & Carlson): between two table points
+/// the force stays between their values, and the slope the solvers use is
+/// the derivative of the force (central differences).
+#[test]
+fn the_magnet_table_is_interpolated_monotonically_with_its_slope() {
+    use kinrepro::scene::preload::MagnetLaw;
+    let table = vec![[0.0, 40.0], [0.2e-3, 31.0], [0.5e-3, 30.5], [1.0e-3, 12.0], [3.0e-3, 2.0]];
+    let law = MagnetLaw::new(0.3e-3, table.clone());
+    for w in table.windows(2) {
+        for k in 1..50 {
+            let g = w[0][0] + (w[1][0] - w[0][0]) * k as f64 / 50.0;
+            let (f, slope) = law.force(g);
+            assert!(f <= w[0][1] + 1e-12 && f >= w[1][1] - 1e-12, "{g}: {f} outside {w:?}");
+            let h = 1e-9;
+            let fd = (law.force(g + h).0 - law.force(g - h).0) / (2.0 * h);
+            assert!((slope - fd).abs() <= 1e-5 * slope.abs().max(1e3), "{g}: {slope} vs {fd}");
+            assert!(slope <= 0.0, "{g}: {slope}");
+        }
+    }
+    for w in &table {
+        assert_eq!(law.force(w[0]).0, w[1]);
+    }
+}
+
+#[test]
+fn bad_magnets_are_refused_naming_the_field_and_line() {
+    let cases = [
+        ("0.5e-3", "[[0.0, 20.0]]", "force_table", "at least two rows"),
+        ("0.5e-3", "[[0.0, 20.0], [0.0, 10.0]]", "force_table[2]", "increasing gap"),
+        ("0.5e-3", "[[0.0, 20.0], [1.0e-3, -1.0]]", "force_table[2]", "negative"),
+        ("5.0e-3", "[[0.0, 20.0], [1.0e-3, 10.0]]", "gap", "outside"),
+        ("0.5e-3", "[[0.0, 20.0], [1.0e-3]]", "force_table[2]", "2 numbers"),
+        ("0.5e-3", "[[0.0, 0.0], [1.0e-3, 0.0]]", "gap", "must pull"),
+    ];
+    for (gap, table, field, says) in cases {
+        let text = with_magnet(gap, table);
+        let marker = if field == "gap" { "gap = " } else { "force_table = " };
+        let line = text.lines().position(|l| l.starts_with(marker)).unwrap() + 1;
+        let err = Scene::parse(&text, "bad.toml").unwrap_err().to_string();
+        let want = format!("bad.toml:{line}: preload.forces[1].{field}: ");
+        assert!(err.starts_with(&want) && err.contains(says), "{table}: {err}");
+    }
+    let text = with_magnet("0.5e-3", "[[0.0, 20.0], [1.0e-3, 10.0]]").replace("gap = 0.5e-3\n", "");
+    let err = Scene::parse(&text, "bad.toml").unwrap_err().to_string();
+    assert!(err.contains("force_table") && err.contains("gap is missing"), "{err}");
+    let text = with_magnet("0.5e-3", "[[0.0, 20.0], [1.0e-3, 10.0]]") + "force = 5.0\n";
+    let err = Scene::parse(&text, "bad.toml").unwrap_err().to_string();
+    assert!(err.contains("preload.forces[1].force") && err.contains("drop force"), "{err}");
+}

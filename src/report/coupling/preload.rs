@@ -5,12 +5,20 @@ use crate::scene::{ForceLaw, Preload, PreloadForce};
 /// One force: `F N along (d) at (p) m`, with its spring or weight.
 pub fn force_text(f: &PreloadForce) -> String {
     let (d, p) = (f.direction, f.point);
-    let law = match f.law {
+    let law = match &f.law {
         ForceLaw::Constant => String::new(),
         ForceLaw::Spring { stiffness, free_length } => {
             format!(", spring of {stiffness} N/m, free length {free_length} m")
         }
         ForceLaw::Weight => ", the weight of the moving half".to_string(),
+        ForceLaw::Magnet(m) => {
+            let (_, slope) = m.force(m.gap);
+            format!(
+                ", magnet at a gap of {} m (table of {} points; dF/dgap {slope:.4e} N/m there)",
+                m.gap,
+                m.table.len()
+            )
+        }
     };
     format!(
         "{:.4} N along ({:.3}, {:.3}, {:.3}) at ({:.4}, {:.4}, {:.4}) m{law}",

@@ -8,7 +8,7 @@ use toml::Spanned;
 use super::fields::Fields;
 use crate::scene::error::SceneError;
 use crate::scene::file::{DynamicsFile, Numbers, PreloadFile, PreloadForceFile};
-use crate::scene::preload::{GRAVITY_MAX, STANDARD_GRAVITY};
+use crate::scene::preload::{GRAVITY_MAX, MagnetLaw, STANDARD_GRAVITY};
 use crate::scene::{DEFAULT_RAMP_TIME, ForceLaw, Preload, PreloadForce};
 
 /// `[preload]`: `force` (positive; point and direction default to the
@@ -91,13 +91,31 @@ fn listed(p: &PreloadFile, fx: &Fields) -> Result<Vec<PreloadForce>, SceneError>
         .collect()
 }
 
-/// One `[[preload.forces]]` entry: a constant force, or a spring if it
+/// One `[[preload.forces]]` entry: a constant force, a spring if it
 /// gives `stiffness` and `free_length` (both, positive, and a positive
-/// length free_length - force / stiffness in the touching pose).
+/// length free_length - force / stiffness in the touching pose), or a
+/// magnet if it gives `gap` and `force_table` (both; no `force`).
 fn entry(f: &PreloadForceFile, at: &str, fx: &Fields) -> Result<PreloadForce, SceneError> {
-    let force = fx.positive(&f.force, &format!("{at}.force"), "N")?;
     let point = fx.finite(&f.point, &format!("{at}.point"))?;
     let direction = fx.unit(&f.direction, &format!("{at}.direction"))?;
+    let half = |span: std::ops::Range<usize>, key: &str, missing: &str| {
+        let why = format!("a magnet needs both gap and force_table; {missing} is missing");
+        Err(fx.ctx.error(Some(&span), format!("{at}.{key}"), why))
+    };
+    match (&f.gap, &f.force_table) {
+        (Some(g), Some(t)) => return magnet(f, at, fx, (g, t), (point, direction)),
+        (Some(g), None) => return half(g.span(), "gap", "force_table"),
+        (None, Some(t)) => return half(t.span(), "force_table", "gap"),
+        (None, None) => {}
+    }
+    let Some(given) = &f.force else {
+        return Err(fx.ctx.error(
+            Some(&f.point.span()),
+            format!("{at}.force"),
+            "missing: give the force [N] (or gap and force_table for a magnet)",
+        ));
+    };
+    let force = fx.positive(given, &format!("{at}.force"), "N")?;
     let law = match (&f.stiffness, &f.free_length) {
         (None, None) => ForceLaw::Constant,
         (Some(k), Some(l)) => {
@@ -121,6 +139,69 @@ fn entry(f: &PreloadForceFile, at: &str, fx: &Fields) -> Result<PreloadForce, Sc
         (None, Some(l)) => return Err(pair(fx, l, at, "free_length", "stiffness")),
     };
     Ok(PreloadForce { force, point, direction, law })
+}
+
+/// A magnet entry: `gap` (>= 0) inside its `force_table` of at least two
+/// points [gap m, force N] with strictly increasing gaps >= 0 and finite
+/// forces >= 0, a positive force at `gap`; neither `force` nor a spring's
+/// keys beside them.
+fn magnet(
+    f: &PreloadForceFile,
+    at: &str,
+    fx: &Fields,
+    (gap, table): (&Spanned<f64>, &Spanned<Vec<Spanned<Numbers>>>),
+    (point, direction): (Vector3<f64>, Vector3<f64>),
+) -> Result<PreloadForce, SceneError> {
+    let err = |span: Option<std::ops::Range<usize>>, key: &str, why: String| {
+        fx.ctx.error(span.as_ref(), format!("{at}.{key}"), why)
+    };
+    for (key, v) in
+        [("force", &f.force), ("stiffness", &f.stiffness), ("free_length", &f.free_length)]
+    {
+        if let Some(v) = v {
+            let why = format!("a magnet's force comes from its force_table: drop {key}");
+            return Err(err(Some(v.span()), key, why));
+        }
+    }
+    let mut rows: Vec<[f64; 2]> = Vec::with_capacity(table.get_ref().len());
+    for (k, row) in table.get_ref().iter().enumerate() {
+        let field = format!("{at}.force_table[{}]", k + 1);
+        let [g, force] = fx.ctx.numbers::<2>(row, &field, "[gap m, force N]")?;
+        let why = if !(g.is_finite() && force.is_finite()) {
+            Some("gap and force must be finite numbers".to_string())
+        } else if g < 0.0 || force < 0.0 {
+            Some(format!(
+                "[{g}, {force}]: gap and force must not be negative (the force pulls along direction)"
+            ))
+        } else if rows.last().is_some_and(|p| g <= p[0]) {
+            Some(format!(
+                "gap {g} m is not above the previous row's: give the rows by increasing gap"
+            ))
+        } else {
+            None
+        };
+        if let Some(why) = why {
+            return Err(fx.ctx.error(Some(&row.span()), field, why));
+        }
+        rows.push([g, force]);
+    }
+    if rows.len() < 2 {
+        let why = format!("needs at least two rows [gap m, force N], found {}", rows.len());
+        return Err(err(Some(table.span()), "force_table", why));
+    }
+    let g0 = *gap.get_ref();
+    let (first, last) = (rows[0][0], rows[rows.len() - 1][0]);
+    if !(first..=last).contains(&g0) {
+        let why = format!("{g0} m is outside the force_table's gaps [{first}, {last}] m");
+        return Err(err(Some(gap.span()), "gap", why));
+    }
+    let law = MagnetLaw::new(g0, rows);
+    let force = law.force(g0).0;
+    if force <= 0.0 {
+        let why = format!("the force_table gives {force} N at the gap {g0} m: a magnet must pull");
+        return Err(err(Some(gap.span()), "gap", why));
+    }
+    Ok(PreloadForce { force, point, direction, law: ForceLaw::Magnet(law) })
 }
 
 fn pair(fx: &Fields, v: &Spanned<f64>, at: &str, given: &str, missing: &str) -> SceneError {
