@@ -19,7 +19,7 @@ use kinrepro::study::{StudyOptions, StudyPlan, StudyReport};
 use crate::common::{self, kinrepro};
 
 /// Each bundled scene's `scene_content` under its own `[study]` design.
-const PINNED: [(&str, &str); 14] = [
+const PINNED: [(&str, &str); 15] = [
     ("01_maxwell_vgroove_steel.toml", "22a74c32637fd702"),
     ("02_maxwell_pins_steel.toml", "09a2030cf11862f9"),
     ("03_maxwell_pins_sic.toml", "2621f3b51126e9ea"),
@@ -29,6 +29,7 @@ const PINNED: [(&str, &str); 14] = [
     ("07_kelvin_sic.toml", "a70fd7a1fb281b0d"),
     ("custom_kelvin_explicit.toml", "c8c196d6d068b2ac"),
     ("example_stage_mount.toml", "15cbef60e306c243"),
+    ("kelvin_magnet_wall_mount.toml", "cd11b75bbfdd6e08"),
     ("maxwell_canoe_steel.toml", "58d7618e6b6c7f90"),
     ("maxwell_crossed_pins_steel.toml", "3c6b9475e40986e1"),
     ("maxwell_gothic_arch_steel.toml", "48972e3adcc23cb7"),
