@@ -6,6 +6,8 @@ function, with only the cluster made differently."""
 
 import pathlib
 import re
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -46,14 +48,18 @@ def test_sweep_shards_on_a_local_cluster(client, scene01):
     assert kinrepro.cluster.sweep(client, scene01, sets, shards=2, samples=10, seed=4, jobs=1) == one
 
 
-def test_the_doc_example_runs_and_the_slurm_one_is_the_same_call(study01, tmp_path, monkeypatch):
+def test_the_doc_example_runs_and_the_slurm_one_is_the_same_call(study01, tmp_path):
+    """The LocalCluster example saved to a file and run by a fresh
+    interpreter, as a user runs it (its workers import the script)."""
     local, slurm = doc_blocks()
     assert "LocalCluster(" in local and "SLURMCluster(" in slurm
     call = "kinrepro.cluster.study(client, scene, shards="
     assert call in local and call in slurm
-    monkeypatch.chdir(tmp_path)
     (tmp_path / "scenes").symlink_to(DOC.parents[1] / "scenes")
-    env = {}
-    exec(compile(local, str(DOC), "exec"), env)
-    assert env["study"] == kinrepro.merge([study01])
+    script = tmp_path / "study_on_dask.py"
+    script.write_text(local)
+    out = subprocess.run(
+        [sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True, timeout=300
+    )
+    assert out.returncode == 0, out.stderr[-2000:]
     assert (tmp_path / "study.json").read_text() == kinrepro.merge([study01]).to_json()
