@@ -462,3 +462,23 @@ fn bad_magnets_are_refused_naming_the_field_and_line() {
     let err = Scene::parse(&text, "bad.toml").unwrap_err().to_string();
     assert!(err.contains("preload.forces[1].force") && err.contains("drop force"), "{err}");
 }
+
+/// Preload geometry in millimetres or pointing away from the seat is
+/// refused where it is written: a spring's point 40 m out, a centre of
+/// mass 15 m away, forces whose resultant lifts the half.
+#[test]
+fn preload_geometry_errors_name_the_field_and_line() {
+    let far = scene01_without_force(&force_entry(20.0, &Vector3::new(0.0, 40.0, 0.0), ""));
+    assert_error_at(&far, "point = [0.0, 40.0", "preload.forces[1].point");
+    let com = with_gravity("true").replace("[0.0, 0.0, 0.01]", "[0.0, 0.0, 15.0]");
+    assert_error_at(&com, "centre_of_mass", "preload.centre_of_mass");
+    // 20 N down at the balls, 30 N up at the centre: the last lifts.
+    let up =
+        force_entry(30.0, &Vector3::zeros(), "").replace("[0.0, 0.0, -1.0]", "[0.0, 0.0, 1.0]");
+    let lift = scene01_without_force(&(three_forces("") + &up));
+    assert_error_at(&lift, "direction = [0.0, 0.0, 1.0]", "preload.forces[4].direction");
+    let err = Scene::parse(&lift, "bad.toml").unwrap_err().to_string();
+    assert!(err.contains("does not press the moving half"), "{err}");
+    let allowed = format!("allow_large_values = true\n{com}");
+    assert!(Scene::parse(&allowed, "ok.toml").is_ok());
+}

@@ -260,13 +260,25 @@ fn failures_are_clear_errors_not_poses() {
     let opts = SolverOptions { max_newton: 1, max_splits: 2, ..Default::default() };
     let e = seat(&c, &[0.5; 6], &opts).unwrap_err();
     assert!(e.to_string().contains("did not converge"), "{e}");
-    // A preload pulling sideways-up cannot seat the coupling: refused at assembly.
+    // A preload pulling sideways-up cannot seat the coupling: refused when
+    // the scene is read, at its direction's line.
     let text = std::fs::read_to_string(
         Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/01_maxwell_vgroove_steel.toml"),
     )
     .unwrap()
     .replace("force = 20.0", "force = 20.0\ndirection = [1.0, 0.0, 0.2]");
-    let s = kinrepro::scene::Scene::parse(&text, "lift.toml").unwrap();
+    let line = text.lines().position(|l| l.starts_with("direction = [1.0")).unwrap() + 1;
+    let err = kinrepro::scene::Scene::parse(&text, "lift.toml").unwrap_err().to_string();
+    assert!(err.starts_with(&format!("lift.toml:{line}: preload.direction: ")), "{err}");
+    assert!(err.contains("does not press the moving half"), "{err}");
+    // A sideways preload with some -z passes the resultant check and is
+    // refused by the statics at assembly.
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/01_maxwell_vgroove_steel.toml"),
+    )
+    .unwrap()
+    .replace("force = 20.0", "force = 20.0\ndirection = [1.0, 0.0, -0.2]");
+    let s = kinrepro::scene::Scene::parse(&text, "side.toml").unwrap();
     let err = Coupling::new(&s).unwrap_err().to_string();
     assert!(err.contains("preload cannot seat") && err.contains("pulling force"), "{err}");
     // A preload far outside the ball circle tips the half off a groove.

@@ -8,6 +8,7 @@ use toml::Spanned;
 use super::fields::Fields;
 use crate::scene::error::SceneError;
 use crate::scene::file::{DynamicsFile, Numbers, PreloadFile, PreloadForceFile};
+use crate::scene::plausible::CIRCLE_DIAMETER_MAX;
 use crate::scene::preload::{GRAVITY_MAX, MagnetLaw, STANDARD_GRAVITY};
 use crate::scene::{DEFAULT_RAMP_TIME, ForceLaw, Preload, PreloadForce};
 
@@ -47,6 +48,7 @@ pub fn preload(
             "missing: give force, [[preload.forces]] or gravity = true",
         ));
     }
+    check_geometry(p, dynamics, &forces, fx, allow_large)?;
     Ok(Preload {
         forces,
         ramp_time: match &p.ramp_time {
@@ -299,4 +301,87 @@ fn weight(
         None => Vector3::zeros(),
     };
     Ok(PreloadForce::weight(mass, centre, g))
+}
+
+/// Where each force's point and direction are written: field and place.
+struct Place {
+    point: (String, Option<std::ops::Range<usize>>),
+    direction: (String, Option<std::ops::Range<usize>>),
+}
+
+/// The places of `forces` (the single force or the listed ones, then the
+/// weight) in the file.
+fn places(p: &PreloadFile, dynamics: Option<&DynamicsFile>, count: usize) -> Vec<Place> {
+    let span = |v: &Option<Spanned<Numbers>>| v.as_ref().map(|v| v.span());
+    let mut out: Vec<Place> = match &p.force {
+        Some(_) => vec![Place {
+            point: ("preload.point".into(), span(&p.point)),
+            direction: ("preload.direction".into(), span(&p.direction)),
+        }],
+        None => (p.forces.iter().enumerate())
+            .map(|(i, f)| Place {
+                point: (format!("preload.forces[{}].point", i + 1), Some(f.point.span())),
+                direction: (
+                    format!("preload.forces[{}].direction", i + 1),
+                    Some(f.direction.span()),
+                ),
+            })
+            .collect(),
+    };
+    if out.len() < count {
+        let (field, com) = match (&p.mass, dynamics) {
+            (None, Some(d)) => ("dynamics.centre_of_mass", span(&d.centre_of_mass)),
+            _ => ("preload.centre_of_mass", span(&p.centre_of_mass)),
+        };
+        let gravity = p.gravity.as_ref().map(|g| g.span());
+        out.push(Place {
+            point: (field.into(), com),
+            direction: ("preload.gravity".into(), gravity),
+        });
+    }
+    out
+}
+
+/// The preload's geometry: every point within [`CIRCLE_DIAMETER_MAX`] of
+/// the origin (unless `allow_large`: a point in millimetres is metres
+/// away), and a resultant that presses the moving half onto the fixed one
+/// (z points from the fixed to the moving half, so it needs a component
+/// along -z; the force that pulls most along +z is named).
+fn check_geometry(
+    p: &PreloadFile,
+    dynamics: Option<&DynamicsFile>,
+    forces: &[PreloadForce],
+    fx: &Fields,
+    allow_large: bool,
+) -> Result<(), SceneError> {
+    let places = places(p, dynamics, forces.len());
+    for (f, place) in forces.iter().zip(&places) {
+        let r = f.point.norm();
+        if r > CIRCLE_DIAMETER_MAX && !allow_large {
+            let (field, span) = &place.point;
+            let why = format!(
+                "the point lies {r} m from the origin (limit {CIRCLE_DIAMETER_MAX} m): did you \
+                 give millimetres? scene files are in SI (m); if the value is intended, set \
+                 `allow_large_values = true` at the top of the file"
+            );
+            return Err(fx.ctx.error(span.as_ref(), field.clone(), why));
+        }
+    }
+    let z: f64 = forces.iter().map(|f| f.direction.z * f.force).sum();
+    if z >= 0.0 {
+        let worst = (0..forces.len())
+            .max_by(|&a, &b| {
+                let up = |i: usize| forces[i].direction.z * forces[i].force;
+                up(a).total_cmp(&up(b))
+            })
+            .unwrap_or(0);
+        let (field, span) = &places[worst].direction;
+        let why = format!(
+            "the preload's resultant has {z:.4} N along +z: it does not press the moving half \
+             onto the fixed one (z points from the fixed to the moving half; a preload presses \
+             along -z, e.g. direction = [0.0, 0.0, -1.0])"
+        );
+        return Err(fx.ctx.error(span.as_ref(), field.clone(), why));
+    }
+    Ok(())
 }
