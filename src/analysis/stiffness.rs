@@ -52,7 +52,8 @@ pub struct ContactSpring {
     pub normal_force: f64,
     /// Normal stiffness k_n [N/m] (Hertz, in series with the support compliance).
     pub normal_stiffness: f64,
-    /// Mindlin tangential stiffness k_t [N/m] (0 for a frictionless contact).
+    /// Mindlin tangential stiffness k_t [N/m], in series with the tangential
+    /// support compliance (0 for a frictionless contact).
     pub tangential_stiffness: f64,
     /// d(force on the moving half)/d(displacement of the contact point) [N/m],
     /// i.e. -K_i.

@@ -6,7 +6,9 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::{AssemblyError, Contact, MovingBall, geometry};
 use crate::contact::stress::ShearRatios;
-use crate::contact::{ContactError, ContactPair, ContactShape, PairCurvature, SeriesNormal};
+use crate::contact::{
+    ContactError, ContactLaw, ContactPair, ContactShape, PairCurvature, SeriesNormal,
+};
 use crate::material::Material;
 use crate::scene::{Surface, SurfaceGeometry};
 
@@ -18,7 +20,8 @@ pub(super) fn build(i: usize, s: &Surface, ball: &MovingBall) -> Result<Contact,
     };
     let moving = MovingSurface { centre, radius, axis };
     let materials = (ball.material.clone(), s.material.clone());
-    place(i, s.ball, moving, s.geometry, materials, s.support_compliance)
+    let compliance = (s.support_compliance, s.tangential_compliance);
+    place(i, s.ball, moving, s.geometry, materials, compliance)
 }
 
 /// The moving element's surface at one contact: its centre of curvature
@@ -32,7 +35,7 @@ pub(super) struct MovingSurface {
 
 /// Contact `i` (0-based) of moving ball `ball`: its moving surface against
 /// the fixed `surface`, of `materials` (moving, fixed), with the support
-/// `compliance` [m/N]: the pair's curvature, its laws and the orientation
+/// compliance (normal, tangential) [m/N]: the pair's curvature, its laws and the orientation
 /// of its ellipse (also the contact of a coupling at other temperatures,
 /// `assembly::thermal`).
 pub(super) fn place(
@@ -41,7 +44,7 @@ pub(super) fn place(
     moving: MovingSurface,
     surface: SurfaceGeometry,
     (m1, m2): (Material, Material),
-    compliance: f64,
+    (compliance, tangential): (f64, f64),
 ) -> Result<Contact, AssemblyError> {
     let err = |source| AssemblyError::Contact { contact: i + 1, source };
     let MovingSurface { centre, radius, axis } = moving;
@@ -49,7 +52,7 @@ pub(super) fn place(
         None => sphere_pair(&surface, &centre, radius, m1, m2).map_err(err)?,
         Some(axis) => pin_pair(&surface, &axis, radius, m1, m2).map_err(err)?,
     };
-    let law = pair.law().map_err(err)?;
+    let law = ContactLaw { tangential_compliance: tangential, ..pair.law().map_err(err)? };
     Ok(Contact {
         ball,
         centre,

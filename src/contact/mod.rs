@@ -197,6 +197,10 @@ pub struct ContactLaw {
     /// Mindlin's k_t / a along the major and the minor axis of the contact
     /// ellipse [N/m^2] (`mindlin`), a the major semi-axis.
     pub mindlin: [f64; 2],
+    /// A support compliance in series with Mindlin's stiffness, isotropic
+    /// in the tangent plane [m/N] (0: none): k_t,eff = 1 / (1/k_t + c_t)
+    /// along each principal axis ([`ContactLaw::increment_stiffness`]).
+    pub tangential_compliance: f64,
 }
 
 /// Everything a contact gives at one normal load (SI units).
@@ -273,6 +277,7 @@ impl ContactPair {
             hertz,
             g_star: effective_shear_modulus(&self.material1, &self.material2),
             mindlin: mindlin_axis_coefficients(&self.material1, &self.material2, hertz.axis_ratio),
+            tangential_compliance: 0.0,
         })
     }
 
@@ -313,7 +318,8 @@ impl ContactLaw {
     /// (k_t ~ a ~ F^(1/3), so dk/dF = k / (3 F)); zero when unloaded.
     pub fn tangential_stiffness_axes(&self, load: f64) -> [f64; 2] {
         let a = self.hertz.semi_axes(load)[0];
-        self.mindlin.map(|c| c * a)
+        let c_t = self.tangential_compliance;
+        self.mindlin.map(|c| c * a).map(|k| if c_t > 0.0 { k / (1.0 + k * c_t) } else { k })
     }
 
     /// A scalar k_t at normal load F: the geometric mean of the two axes
@@ -326,7 +332,11 @@ impl ContactLaw {
         }
         let [k1, k2] = self.tangential_stiffness_axes(load);
         let kt = (k1 * k2).sqrt();
-        (kt, kt / (3.0 * load))
+        // With the series support: d ln k_i'/dF = (1/(3F)) k_i' / k_i =
+        // (1/(3F)) (1 - k_i' c_t), averaged over the two axes.
+        let c_t = self.tangential_compliance;
+        let share = 1.0 - 0.5 * c_t * (k1 + k2);
+        (kt, kt / (3.0 * load) * share)
     }
 
     /// The increment's effective semi-axis for K_t and its relative
@@ -368,14 +378,26 @@ impl ContactLaw {
         major_axis: &Vector3<f64>,
         tangent: bool,
     ) -> (PrincipalStiffness, Matrix3<f64>, Matrix3<f64>) {
-        let principal =
-            PrincipalStiffness::new(self.mindlin.map(|c| c * a_eff), normal, major_axis);
+        let k = self.mindlin.map(|c| c * a_eff);
+        let c_t = self.tangential_compliance;
+        // In series with the support: k' = k / (1 + k c_t) per principal
+        // axis (the increment's, since the support is linear), and
+        // dk'/dF_n = (dk/dF_n) / (1 + k c_t)^2 with dk/dF_n = k dlog.
+        let series = if c_t > 0.0 { k.map(|k| k / (1.0 + k * c_t)) } else { k };
+        let principal = PrincipalStiffness::new(series, normal, major_axis);
         let kt = if tangent || principal.axes.is_some() {
             principal.tensor(normal)
         } else {
             Matrix3::zeros()
         };
-        let dkt = if tangent { kt * dlog } else { Matrix3::zeros() };
+        let dkt = match (tangent, c_t > 0.0) {
+            (false, _) => Matrix3::zeros(),
+            (true, false) => kt * dlog,
+            (true, true) => {
+                let d = k.map(|k| k * dlog / ((1.0 + k * c_t) * (1.0 + k * c_t)));
+                PrincipalStiffness::new(d, normal, major_axis).tensor(normal)
+            }
+        };
         (principal, kt, dkt)
     }
 

@@ -220,7 +220,8 @@ fn set_coupling(c: &mut CouplingFile, key: &str, x: f64, name: String) -> Result
         "groove_radius" => c.groove_radius = Some(at(x)),
         "canoe_radius" => c.canoe_radius = Some(at(x)),
         "opening_angle_deg" => c.opening_angle_deg = at(x),
-        "support_compliance" => c.support_compliance = Some(at(x)),
+        // The number is the normal compliance; it replaces a table.
+        "support_compliance" => c.support_compliance = Some(at(toml::Value::Float(x))),
         "ball_material" => c.ball_material = at(name),
         "groove_material" => c.groove_material = at(name),
         "arrangement" => c.arrangement = keyword(&name)?,

@@ -192,7 +192,7 @@ pub struct CouplingFile {
     pub opening_angle_deg: Spanned<f64>,
     /// Support compliance in series with every contact, normal direction [m/N].
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub support_compliance: Option<Spanned<f64>>,
+    pub support_compliance: Option<Spanned<toml::Value>>,
 }
 
 fn default_opening_angle() -> Spanned<f64> {
@@ -260,7 +260,7 @@ pub struct SurfaceFile {
     pub radius: Option<Spanned<f64>>,
     /// Support compliance in series with this contact, normal direction [m/N].
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub support_compliance: Option<Spanned<f64>>,
+    pub support_compliance: Option<Spanned<toml::Value>>,
     /// Centre of curvature of the moving element's patch at this contact,
     /// in the moving half [m].
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -85,6 +85,10 @@ pub struct Surface {
     pub line: Option<usize>,
     /// Support compliance in series with the contact, normal direction [m/N].
     pub support_compliance: f64,
+    /// Support compliance in series with the contact's tangential
+    /// stiffness, isotropic in the tangent plane [m/N] (0: none).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub tangential_compliance: f64,
     /// The moving element's surface at this contact; `None`: the ball's sphere.
     pub moving: Option<MovingPatch>,
 }
@@ -312,4 +316,10 @@ fn parse_file(source: &str, ctx: &ErrorContext) -> Result<SceneFile, SceneError>
         let span = e.span();
         ctx.error(span.as_ref(), "", e.message().trim().to_string())
     })
+}
+
+/// Serde: leave a zero out (a field added later, so that the fingerprints
+/// of scenes without it stay as they were).
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }

@@ -101,9 +101,21 @@ fn at_least(
     Ok(())
 }
 
-/// A support compliance [m/N] above [`SUPPORT_COMPLIANCE_MAX`].
-fn support_compliance(ctx: &ErrorContext, v: &Spanned<f64>, field: &str) -> Result<(), SceneError> {
-    let c = *v.get_ref();
+/// A support compliance [m/N] (either part of it) above
+/// [`SUPPORT_COMPLIANCE_MAX`]; its syntax is checked where it is read.
+fn support_compliance(
+    ctx: &ErrorContext,
+    v: &Spanned<toml::Value>,
+    field: &str,
+) -> Result<(), SceneError> {
+    let as_number = |x: &toml::Value| x.as_float().or(x.as_integer().map(|i| i as f64));
+    let parts: Vec<f64> = match v.get_ref() {
+        toml::Value::Table(t) => t.values().filter_map(as_number).collect(),
+        x => as_number(x).into_iter().collect(),
+    };
+    let Some(c) = parts.into_iter().reduce(f64::max) else {
+        return Ok(());
+    };
     if c > SUPPORT_COMPLIANCE_MAX {
         return Err(ctx.error(
             Some(&v.span()),

@@ -179,6 +179,10 @@ pub struct ContactResult {
     pub support_approach_m: f64,
     /// Support compliance c [m/N] (0: none).
     pub support_compliance_m_per_n: f64,
+    /// Its tangential support compliance (in series with Mindlin's) [m/N];
+    /// left out of the JSON when 0.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub tangential_support_compliance_m_per_n: f64,
     pub state: SlipState,
     /// Static and dynamic coefficient used.
     pub mu_static: f64,
@@ -219,6 +223,7 @@ impl ContactResult {
             hertz_approach_m: contact.normal.hertz.approach(e.normal_force),
             support_approach_m: contact.normal.support_approach(e.normal_force),
             support_compliance_m_per_n: contact.normal.compliance,
+            tangential_support_compliance_m_per_n: contact.law.tangential_compliance,
             state: e.slip(),
             mu_static: friction.mu_s,
             mu_dynamic: friction.mu_d,
@@ -461,4 +466,9 @@ impl Method {
             Method::Dynamic(_) => Err(SolveError::ThermalNeedsQuasiStatic),
         }
     }
+}
+
+/// Serde: a field left out when 0.
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }

@@ -5,7 +5,7 @@ use nalgebra::Vector3;
 use toml::Spanned;
 
 use super::fields::Fields;
-use super::tables::compliance;
+use super::tables::{Support, support};
 use crate::scene::error::{ErrorContext, SceneError};
 use crate::scene::file::{BallFile, Numbers, SceneFile, SurfaceFile, SurfaceKind};
 use crate::scene::plausible;
@@ -95,15 +95,17 @@ fn surface(s: &SurfaceFile, i: usize, fx: &Fields, n_balls: usize) -> Result<Sur
             radius: radius(s)?,
         },
     };
+    let support = match &s.support_compliance {
+        Some(v) => support(ctx, v, &field("support_compliance"))?,
+        None => Support::default(),
+    };
     Ok(Surface {
         geometry,
         material: fx.material(&s.material, &field("material"))?,
         ball: ball as usize - 1,
         line: ctx.line_of(&s.kind.span()),
-        support_compliance: match &s.support_compliance {
-            Some(v) => compliance(ctx, v, &field("support_compliance"))?,
-            None => 0.0,
-        },
+        support_compliance: support.normal,
+        tangential_compliance: support.tangential,
         moving: moving_patch(s, i, fx)?,
     })
 }

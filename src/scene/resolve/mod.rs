@@ -11,11 +11,12 @@ pub mod tables;
 pub mod thermal;
 
 use fields::Fields;
-pub use tables::{MU_MAX, compliance};
+pub use tables::{MU_MAX, Support, compliance, support};
 
 use super::error::{ErrorContext, SceneError};
 use super::file::SceneFile;
 use super::{Scene, VariationBounds};
+use crate::contact::TangentialLaw;
 
 pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     let fx = Fields { ctx, materials: materials::user_materials(f, ctx)? };
@@ -23,6 +24,18 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     let surfaces = geometry::surfaces(f, &fx, &balls)?;
     let preload = preload::preload(&f.preload, f.dynamics.as_ref(), &fx, f.allow_large_values)?;
     let friction = tables::friction(&f.friction, ctx)?;
+    let tangential = surfaces.iter().position(|s| s.tangential_compliance > 0.0);
+    if let (Some(i), TangentialLaw::MindlinDeresiewicz) = (tangential, friction.tangential_law) {
+        return Err(ctx.error(
+            None,
+            "friction.tangential_law",
+            format!(
+                "mindlin-deresiewicz does not take a tangential support compliance (surface {} \
+                 has one): use coulomb, or give the support compliance without `tangential`",
+                i + 1
+            ),
+        ));
+    }
     let study = tables::study(&f.study, ctx)?;
     let evaluation_points = tables::evaluation_points(f, &fx)?;
     let dynamics = match &f.dynamics {
