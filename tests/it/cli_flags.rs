@@ -96,3 +96,14 @@ fn a_bad_value_of_each_checked_flag_is_one_line_naming_it() {
         );
     }
 }
+
+/// `report --help` states where a report reads the studies' scenes from
+/// (the current folder or the JSON's, nowhere else), as docs/guide-studies.md does.
+#[test]
+fn report_help_states_the_folder_rule() {
+    let (ok, out, _) = kinrepro(&["report", "--help"]);
+    assert!(ok);
+    let text = out.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(text.contains("only from the current folder or the JSON's folder"), "{out}");
+    assert!(text.contains("a scene elsewhere is refused"), "{out}");
+}

@@ -213,3 +213,29 @@ fn values_are_numbers_unless_they_do_not_parse_or_are_quoted() {
     let (ok, _, err) = sweep(&["--set", "preload.force=\"20\""], "json");
     assert!(!ok && err.contains("is not a number"), "{err}");
 }
+
+/// README's concept sweep evaluates every point it shows: the canoe scene
+/// carries the keys of each concept (groove pins and canoe faces).
+#[test]
+fn the_readme_concept_sweep_evaluates_every_point() {
+    let readme =
+        std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md"))
+            .unwrap();
+    let line = readme
+        .lines()
+        .find(|l| l.starts_with("kinrepro sweep ") && l.contains("coupling.ball_shape"))
+        .expect("README shows a concept sweep");
+    let mut args: Vec<&str> = line.split_whitespace().skip(1).collect();
+    let scene = crate::common::scene(args[1].trim_start_matches("scenes/"));
+    let scene = scene.to_str().unwrap().to_string();
+    args[1] = &scene;
+    args.extend(["--samples", "10", "--format", "json"]);
+    let (ok, out, err) = crate::common::kinrepro(&args);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let designs = v["designs"].as_array().unwrap();
+    assert_eq!(designs.len(), 4);
+    for d in designs {
+        assert_eq!(d["status"], "ok", "{}", d["values"]);
+    }
+}

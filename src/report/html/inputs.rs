@@ -148,7 +148,7 @@ fn locate(scene: &str, json_dir: &Path) -> Result<PathBuf, Unlocated> {
 #[derive(Debug, thiserror::Error)]
 enum Unlocated {
     #[error(
-        "scene `{0}` is outside the folders a report reads scenes from (the current folder and the JSON's folder): refused"
+        "scene `{0}` is outside the folders a report reads scenes from (the current folder and the JSON's folder): refused; run `report` where the study ran, or copy the scene next to the JSON"
     )]
     Outside(String),
     #[error("scene `{0}` not found (neither from the current folder nor next to the JSON)")]

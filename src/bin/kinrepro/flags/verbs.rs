@@ -206,6 +206,11 @@ pub struct ExpandArgs {
 #[derive(Args)]
 pub struct ReportArgs {
     /// Study JSON files (`kinrepro study --format json`, or `kinrepro merge`).
+    /// Each study names its scene files; the report reads them (for the
+    /// drawings and the scene text) as written, else next to the JSON, and
+    /// only from the current folder or the JSON's folder (and below): a
+    /// scene elsewhere is refused. Run `report` where the study ran, or
+    /// keep the scenes beside the JSON.
     #[arg(required = true)]
     pub studies: Vec<PathBuf>,
     /// The HTML file to write.
