@@ -102,7 +102,20 @@ impl Scene {
         };
         set(&mut typed, field, &v).map_err(|e| err(format!("{field}: {e}")))?;
         let text = toml::to_string(&typed).map_err(err)?;
-        Scene::new(text, self.file.clone())
+        // The set scene is new text: its line numbers are not the user's
+        // file's, so an error names the set instead of a line.
+        let (scene, _) = parse_scene(&text, &self.file).map_err(|e| match e {
+            kinrepro::error::Error::Scene(s) => {
+                err(format!("{}: after set({field:?}, {value}): {}: {}", s.file, s.field, s.reason))
+            }
+            other => err(format!("after set({field:?}, {value}): {other}")),
+        })?;
+        Ok(Scene {
+            name: scene.name.clone(),
+            points: scene.evaluation_points.iter().map(|p| p.name.clone()).collect(),
+            text,
+            file: self.file.clone(),
+        })
     }
 
     /// The file name given at load (or `<string>`).

@@ -126,6 +126,13 @@ def test_scene_set_and_toml(scene01):
     assert scene01.to_toml() != s.to_toml()  # the original is unchanged
     with pytest.raises(kinrepro.KinreproError, match="preload.bogus"):
         scene01.set("preload.bogus", 1.0)
+    # A value the scene refuses names the set, not a line of a file the
+    # user never wrote (the set scene is new text).
+    with pytest.raises(kinrepro.KinreproError) as e:
+        scene01.set("preload.force", -5)
+    msg = str(e.value)
+    assert 'after set("preload.force", -5)' in msg and "must be positive" in msg, msg
+    assert re.search(r"\.toml:\d", msg) is None, msg
 
 
 def test_bad_scene_raises_the_library_message(tmp_path):
