@@ -345,6 +345,12 @@ fn the_flexure_example_scatters_less_than_rigid_grooves() {
         (study("maxwell_flexure_grooves.toml"), study("01_maxwell_vgroove_steel.toml"));
     assert!(flexure < 0.1 * rigid, "{flexure} vs {rigid}");
     let file = common::scene("maxwell_flexure_grooves.toml");
+    let (ok, check, err) = common::kinrepro(&["check", file.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    assert!(
+        check.contains("support compliance behind contact(s) 1, 2, 3, 4, 5, 6: normal 9.1e-9 m/N, tangential 4.37e-7 m/N"),
+        "{check}"
+    );
     let run = json_of(&["run", file.to_str().unwrap(), "--json"]);
     for c in run["contacts"].as_array().unwrap() {
         assert_eq!(c["state"], "stick");

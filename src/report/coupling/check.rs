@@ -58,7 +58,34 @@ pub fn check_summary(s: &Scene, c: &Coupling) -> String {
         s.friction.tangential_law
     );
     out.push_str(&preload::force_lines(&s.preload, "    "));
+    out.push_str(&support_lines(s));
     contact_rows(&mut out, s, c);
+    out
+}
+
+/// The support compliances behind the contacts (`support_compliance`),
+/// one line per distinct pair of values; empty where every support is rigid.
+fn support_lines(s: &Scene) -> String {
+    let mut groups: Vec<((f64, f64), Vec<usize>)> = Vec::new();
+    for (i, surface) in s.surfaces.iter().enumerate() {
+        let key = (surface.support_compliance, surface.tangential_compliance);
+        if key == (0.0, 0.0) {
+            continue;
+        }
+        match groups.iter_mut().find(|(k, _)| *k == key) {
+            Some((_, contacts)) => contacts.push(i + 1),
+            None => groups.push((key, vec![i + 1])),
+        }
+    }
+    let mut out = String::new();
+    for ((normal, tangential), contacts) in groups {
+        let list: Vec<String> = contacts.iter().map(|c| c.to_string()).collect();
+        let _ = writeln!(
+            out,
+            "  support compliance behind contact(s) {}: normal {normal:e} m/N, tangential {tangential:e} m/N",
+            list.join(", ")
+        );
+    }
     out
 }
 
