@@ -260,3 +260,71 @@ fn history_needs_no_load() {
     let (ok, _, err) = run(&[]);
     assert!(!ok && err.contains("--load"), "{err}");
 }
+
+/// A tangential support compliance c_t behind the contact (a flexure):
+/// under proportional loading below slip (Q = 0.2 P, P up to 10 N in 40
+/// steps) the tangential displacement is Mindlin's 1.5 Q / (8 G* a) plus
+/// the support's c_t Q (Johnson 1985, §7.3, in series with a linear
+/// spring); with c_t = 0 it is Mindlin's alone.
+#[test]
+fn history_with_a_tangential_compliance_adds_c_t_q() {
+    let tmp = tempfile::tempdir().unwrap();
+    let rows: String = (1..=40)
+        .map(|k| {
+            let p = 10.0 * k as f64 / 40.0;
+            format!("{p},{},0\n", 0.2 * p)
+        })
+        .collect();
+    let file = write(tmp.path(), "prop.csv", &format!("P_N,Qx_N,Qy_N\n{rows}"));
+    let (e, nu) = (210e9_f64, 0.3_f64);
+    let g_star = e / (2.0 * (1.0 + nu)) / (2.0 * (2.0 - nu));
+    let a = (3.0 * 10.0 * 5e-3 / (4.0 * e / (2.0 * (1.0 - nu * nu)))).cbrt();
+    let q = 2.0;
+    for c_t in [0.0, 2e-7] {
+        let c = format!("{c_t:e}");
+        let (ok, out, err) = kinrepro(&[
+            "contact",
+            "--shape",
+            "sphere-plane",
+            "--radius1",
+            "0.005",
+            "--material1",
+            "steel",
+            "--material2",
+            "steel",
+            "--mu",
+            "0.5",
+            "--history",
+            &file,
+            "--tangential-compliance",
+            &c,
+        ]);
+        assert!(ok, "{err}");
+        assert!(out.contains(&format!("tangential support compliance {c} m/N")), "{out}");
+        let last: Vec<&str> = out.lines().last().unwrap().split(',').collect();
+        let (sx, slip) = (last[4].parse::<f64>().unwrap(), last[6]);
+        assert_eq!(slip, "stick");
+        let expect = 1.5 * q / (8.0 * g_star * a) + c_t * q;
+        assert!((sx / expect - 1.0).abs() < 1e-9, "c_t {c_t}: {sx} vs {expect}");
+    }
+    let (ok, _, err) = kinrepro(&[
+        "contact",
+        "--shape",
+        "sphere-plane",
+        "--radius1",
+        "0.005",
+        "--material1",
+        "steel",
+        "--material2",
+        "steel",
+        "--mu",
+        "0.5",
+        "--history",
+        &file,
+        "--tangential-compliance",
+        "1e-7",
+        "--tangential-law",
+        "mindlin-deresiewicz",
+    ]);
+    assert!(!ok && err.contains("--tangential-compliance"), "{err}");
+}

@@ -72,6 +72,8 @@ pub struct HistoryProvenance<'a> {
     pub mu_static: f64,
     pub mu_dynamic: f64,
     pub history_file: &'a str,
+    /// A support compliance in series with Mindlin's [m/N] (0: none).
+    pub tangential_compliance: f64,
     /// The command that drove it, as its user wrote it (e.g. the CLI's
     /// `contact --history`).
     pub command: &'a str,
@@ -86,7 +88,7 @@ pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
     let [c1, c2] = [p.curvature.radii1, p.curvature.radii2];
     let _ = writeln!(
         s,
-        "# kinrepro {} {} {}: {} radii1 {:e},{:e} m radii2 {:e},{:e} m angle {} deg, {} on {}, tangential law {}, mu_s {}, mu_d {}",
+        "# kinrepro {} {} {}: {} radii1 {:e},{:e} m radii2 {:e},{:e} m angle {} deg, {} on {}, tangential law {}, mu_s {}, mu_d {}, tangential support compliance {:e} m/N",
         env!("CARGO_PKG_VERSION"),
         p.command,
         p.history_file,
@@ -100,7 +102,8 @@ pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
         p.materials.1,
         p.law,
         p.mu_static,
-        p.mu_dynamic
+        p.mu_dynamic,
+        p.tangential_compliance
     );
     let _ = writeln!(
         s,

@@ -4,7 +4,9 @@
 use std::path::{Path, PathBuf};
 
 use kinrepro::contact::history::{HistoryError, LoadStep, drive, parse_history_csv};
-use kinrepro::contact::{ContactPair, ContactShape, Friction, PairCurvature, TangentialLaw};
+use kinrepro::contact::{
+    ContactLaw, ContactPair, ContactShape, Friction, PairCurvature, TangentialLaw,
+};
 use kinrepro::material::Material;
 use kinrepro::report::contact::validity::{HertzValidity, hertz_validity, radius_hint};
 use kinrepro::report::contact::{HistoryProvenance, contact_table, history_csv};
@@ -18,7 +20,7 @@ use crate::flags::ContactArgs;
 pub struct Contact {
     pair: ContactPair,
     load: Option<f64>,
-    history: Option<(PathBuf, Friction, TangentialLaw)>,
+    history: Option<(PathBuf, Friction, TangentialLaw, f64)>,
     json: bool,
 }
 
@@ -36,7 +38,18 @@ impl TryFrom<ContactArgs> for Contact {
         }
         let history = match a.history.clone() {
             None => None,
-            Some(path) => Some((path, history_friction(&a)?, a.tangential_law)),
+            Some(path) => {
+                let c = a.tangential_compliance;
+                if !(c.is_finite() && c >= 0.0) {
+                    usage!("--tangential-compliance {c}: must be finite and >= 0 (m/N)");
+                }
+                if c > 0.0 && a.tangential_law == TangentialLaw::MindlinDeresiewicz {
+                    usage!(
+                        "--tangential-compliance {c}: the mindlin-deresiewicz law does not take one (use --tangential-law coulomb)"
+                    );
+                }
+                Some((path, history_friction(&a)?, a.tangential_law, c))
+            }
         };
         let pair = pair(&a)?;
         radius_hints(&a);
@@ -95,14 +108,14 @@ fn principal_radii(flag: &str, v: &[f64]) -> Result<[f64; 2]> {
 }
 
 pub fn contact(c: Contact) -> Result {
-    if let Some((path, friction, law)) = &c.history {
+    if let Some((path, friction, law, compliance)) = &c.history {
         if let Some(load) = c.load {
             eprintln!(
                 "warning: --load {load} is not used with --history: the normal loads come from the P_N column of {}",
                 path.display()
             );
         }
-        return history(&c.pair, path, *friction, *law);
+        return history(&c.pair, path, *friction, (*law, *compliance));
     }
     // Without --history the flags require --load.
     let load = c.load.unwrap_or(f64::NAN);
@@ -143,12 +156,12 @@ fn history(
     pair: &ContactPair,
     path: &Path,
     friction: Friction,
-    tangential_law: TangentialLaw,
+    (tangential_law, compliance): (TangentialLaw, f64),
 ) -> Result {
     let file = path.display().to_string();
     let rows = parse_history_csv(&read_text(path)?, &file)?;
     let loads: Vec<LoadStep> = rows.iter().map(|r| r.load).collect();
-    let law = pair.law()?;
+    let law = ContactLaw { tangential_compliance: compliance, ..pair.law()? };
     // Hertz's half-space assumption is checked at the largest normal load.
     let peak = loads.iter().map(|l| l.normal_force).fold(0.0, f64::max);
     validity(pair, peak).context(format!("{file}: P_N {}", number(peak)))?;
@@ -169,6 +182,7 @@ fn history(
         mu_static: friction.mu_s,
         mu_dynamic: friction.mu_d,
         history_file: &file,
+        tangential_compliance: compliance,
         command: "contact --history",
     };
     emit(&history_csv(&prov, &steps))

@@ -62,6 +62,11 @@ pub struct ContactArgs {
     /// coulomb | mindlin-deresiewicz (with --history).
     #[arg(long, default_value = "coulomb", requires = "history")]
     pub tangential_law: TangentialLaw,
+    /// A support compliance [m/N] in series with Mindlin's tangential
+    /// stiffness (with --history; the coulomb law): a flexure behind the
+    /// contact, as `support_compliance = { tangential = ... }` in a scene.
+    #[arg(long, default_value_t = 0.0, requires = "history")]
+    pub tangential_compliance: f64,
 }
 
 #[derive(Args)]
