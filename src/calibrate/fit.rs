@@ -49,6 +49,14 @@ pub fn calibrate(
     let point_name = opts.point.as_deref().or(m.point.as_deref());
     let point = point_index(scene, point_name, &m.file)?;
     let f = scene.friction;
+    if scene.contact_friction.is_some() {
+        return Err(CalibrateError::Model {
+            file: scene.file.clone(),
+            reason: "[friction] gives mu_static or spread per contact; calibration fits one \
+                     mu_static and one spread for every contact: give them as numbers"
+                .to_string(),
+        });
+    }
     let fit_spread = params.contains(&Param::Spread);
     if !fit_spread && f.spread == 0.0 {
         return Err(CalibrateError::Model {

@@ -68,6 +68,14 @@ pub fn predict(
     (samples, seed, solver): (usize, u64, Solver),
 ) -> Result<Prediction, CalibrateError> {
     let file = scene.file.clone();
+    if scene.contact_friction.is_some() {
+        return Err(CalibrateError::Model {
+            file,
+            reason: "[friction] gives mu_static or spread per contact; a calibration sets one \
+                     mu_static and one spread for every contact: give them as numbers"
+                .to_string(),
+        });
+    }
     let options = StudyOptions::monte_carlo(samples, seed, solver);
     let plan = StudyPlan::keeping_records(vec![(scene.clone(), coupling.clone())], &options)?;
     let estimate = with_parameters(&plan.variants[0], &cal.estimates());

@@ -236,8 +236,9 @@ fn set_coupling(c: &mut CouplingFile, key: &str, x: f64, name: String) -> Result
 fn set_friction(scene: &mut SceneFile, key: &str, x: f64, name: String) -> Result<(), FieldError> {
     let f = &mut scene.friction;
     match key {
-        "mu_static" => f.mu_static = at(x),
-        "spread" => f.spread = at(x),
+        // A number sets every contact's (it replaces a per-contact list).
+        "mu_static" => f.mu_static = at(toml::Value::Float(x)),
+        "spread" => f.spread = at(toml::Value::Float(x)),
         "dynamic_ratio" => f.dynamic_ratio = at(x),
         "decay_coefficient" => f.decay_coefficient = Some(at(x)),
         "distribution" => f.distribution = keyword(&name)?,

@@ -346,11 +346,13 @@ pub enum Distribution {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FrictionFile {
-    /// Nominal static coefficient mu0.
-    pub mu_static: Spanned<f64>,
-    /// Half-width of the variation: mu_s in mu0 +- spread.
+    /// Nominal static coefficient mu0: a number, or a list with one per
+    /// contact (contact order).
+    pub mu_static: Spanned<toml::Value>,
+    /// Half-width of the variation: mu_s in mu0 +- spread; a number, or a
+    /// list with one per contact.
     #[serde(default = "zero")]
-    pub spread: Spanned<f64>,
+    pub spread: Spanned<toml::Value>,
     #[serde(default)]
     pub distribution: Distribution,
     /// mu_d / mu_s.
@@ -376,8 +378,8 @@ pub enum FrictionLawName {
     Decay,
 }
 
-fn zero() -> Spanned<f64> {
-    Spanned::new(0..0, 0.0)
+fn zero() -> Spanned<toml::Value> {
+    Spanned::new(0..0, toml::Value::Float(0.0))
 }
 
 fn default_dynamic_ratio() -> Spanned<f64> {

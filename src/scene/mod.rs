@@ -101,7 +101,9 @@ pub const DEFAULT_RAMP_TIME: f64 = 1.0;
 /// and the law of the sliding coefficient (switch or decay).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct FrictionSettings {
+    /// mu0: the one value, or the mean of the per-contact values.
     pub mu_static: f64,
+    /// The spread: the one value, or the mean of the per-contact values.
     pub spread: f64,
     pub dynamic_ratio: f64,
     pub tangential_law: TangentialLaw,
@@ -202,6 +204,11 @@ pub struct Scene {
     pub surfaces: Vec<Surface>,
     pub preload: Preload,
     pub friction: FrictionSettings,
+    /// `[friction] mu_static` or `spread` given per contact: (mu0, spread)
+    /// of each contact, in contact order (`None`: the one pair of
+    /// `friction` at every contact).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact_friction: Option<Vec<[f64; 2]>>,
     pub study: StudyDefaults,
     pub evaluation_points: Vec<EvaluationPoint>,
     /// Mass properties for the dynamic solver; `None`: the default model.
@@ -322,4 +329,25 @@ fn parse_file(source: &str, ctx: &ErrorContext) -> Result<SceneFile, SceneError>
 /// of scenes without it stay as they were).
 fn is_zero(x: &f64) -> bool {
     *x == 0.0
+}
+
+impl Scene {
+    /// (mu0, spread) of contact `k` (0-based): its own where `[friction]`
+    /// gives lists, else the scene's.
+    pub fn friction_of(&self, k: usize) -> (f64, f64) {
+        match &self.contact_friction {
+            Some(v) => (v[k][0], v[k][1]),
+            None => (self.friction.mu_static, self.friction.spread),
+        }
+    }
+
+    /// The largest mu0 + spread over the contacts.
+    pub fn largest_mu(&self) -> f64 {
+        (0..self.surfaces.len())
+            .map(|k| {
+                let (m, s) = self.friction_of(k);
+                m + s
+            })
+            .fold(self.friction.mu_static + self.friction.spread, f64::max)
+    }
 }

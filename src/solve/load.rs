@@ -57,7 +57,7 @@ impl Load {
 
 /// The nominal static coefficients of a scene (mu0 at every contact).
 pub fn nominal_mu(scene: &Scene) -> Vec<f64> {
-    vec![scene.friction.mu_static; scene.surfaces.len()]
+    (0..scene.surfaces.len()).map(|k| scene.friction_of(k).0).collect()
 }
 
 /// The scene's temperature cycle (`[thermal] cycle`; empty without one).

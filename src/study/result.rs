@@ -48,6 +48,11 @@ pub struct VariantReport {
     pub seed: u64,
     pub mu_static: f64,
     pub spread: f64,
+    /// `[friction]` per contact: [mu_static, spread] of each contact, in
+    /// contact order (absent where one pair holds for every contact;
+    /// `mu_static` and `spread` above are then their means).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact_friction: Option<Vec<[f64; 2]>>,
     pub dynamic_ratio: f64,
     /// Sliding coefficient: the sudden switch or the decay law
     /// (`{"law": "switch"}` or `{"law": "decay", "coefficient": c}`, c in s/m).
@@ -193,6 +198,7 @@ impl VariantReport {
             seed: run.design.seed,
             mu_static: f.mu_static,
             spread: f.spread,
+            contact_friction: scene.contact_friction.clone(),
             dynamic_ratio: f.dynamic_ratio,
             friction_law: f.law,
             ramp_time_s: scene.preload.ramp_time,

@@ -172,10 +172,15 @@ fn check_record(v: &VariantReport, r: &StudyRecord, at: &str) -> Result<(), Docu
             return Err(bad(format!("{at}.{name}[{j}]"), reason));
         }
     }
-    let (lo, hi) = (v.mu_static - v.spread, v.mu_static + v.spread);
-    let slack = 1e-9 * hi.max(1.0);
     for (j, (input, mu)) in v.inputs.iter().zip(&r.physical).enumerate() {
-        if matches!(input, Input::Mu(_)) && !(*mu >= lo - slack && *mu <= hi + slack) {
+        let Input::Mu(k) = input else { continue };
+        let (mu0, spread) = match v.contact_friction.as_ref().and_then(|c| c.get(*k)) {
+            Some(&[m, s]) => (m, s),
+            None => (v.mu_static, v.spread),
+        };
+        let (lo, hi) = (mu0 - spread, mu0 + spread);
+        let slack = 1e-9 * hi.max(1.0);
+        if !(*mu >= lo - slack && *mu <= hi + slack) {
             let reason =
                 format!("{} = {mu} is outside mu_static +- spread = [{lo}, {hi}]", input.name());
             return Err(bad(format!("{at}.inputs_si[{j}]"), reason));

@@ -119,7 +119,6 @@ impl Variation {
     pub fn sample(&self, scene: &Scene, coupling: &Coupling, row: &[f64]) -> Sample {
         let inputs = self.inputs(scene);
         let b = scene.variation;
-        let f = &scene.friction;
         let mut preload = scene.preload.clone();
         let mut mu = nominal_mu(scene);
         let mut start_u = [0.5; 6];
@@ -132,7 +131,8 @@ impl Variation {
             let t = tol.as_mut();
             let value = match (*input, t) {
                 (Input::Mu(k), _) => {
-                    mu[k] = f.mu_static + f.spread * c;
+                    let (mu0, spread) = scene.friction_of(k);
+                    mu[k] = mu0 + spread * c;
                     mu[k]
                 }
                 (Input::PreloadOffset(k, a), _) => {

@@ -24,6 +24,7 @@ mod cli_study_intervals;
 mod cli_thermal;
 mod cli_validate_hertz;
 mod concept_sweep;
+mod contact_friction;
 mod contact_laws;
 mod coupling_shapes;
 mod dynamic;

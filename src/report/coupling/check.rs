@@ -13,8 +13,7 @@ use crate::scene::Scene;
 /// (`cannot_seat`, the verdict of `study::verdict::cannot_seat`), if it
 /// cannot; empty below the limit.
 pub fn seating_note(scene: &Scene, c: &Coupling, cannot_seat: Option<&str>) -> String {
-    let f = &scene.friction;
-    let mu_max = f.mu_static + f.spread;
+    let mu_max = scene.largest_mu();
     let limit = friction_limit(c, &scene.preload).mu_limit;
     if let Some(reason) = cannot_seat {
         return format!(
@@ -48,12 +47,17 @@ pub fn check_summary(s: &Scene, c: &Coupling) -> String {
         "none below mu = 10".to_string()
     };
     let _ = writeln!(out, "  friction limit for seating: {limit_text}");
+    let mu = match &s.contact_friction {
+        None => format!("mu_s = {} +- {} (uniform)", s.friction.mu_static, s.friction.spread),
+        Some(c) => {
+            let each: Vec<String> = c.iter().map(|[m, d]| format!("{m} +- {d}")).collect();
+            format!("mu_s per contact = [{}] (uniform)", each.join(", "))
+        }
+    };
     let _ = writeln!(
         out,
-        "  preload: {}; mu_s = {} +- {} (uniform), mu_d/mu_s = {}, {:?} tangential law",
+        "  preload: {}; {mu}, mu_d/mu_s = {}, {:?} tangential law",
         preload::summary(&s.preload),
-        s.friction.mu_static,
-        s.friction.spread,
         s.friction.dynamic_ratio,
         s.friction.tangential_law
     );

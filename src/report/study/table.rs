@@ -54,16 +54,21 @@ impl StudyReport {
 /// sensitivity tables.
 fn variant_text(v: &VariantReport) -> String {
     let mut s = String::new();
+    let mu = match &v.contact_friction {
+        None => format!("mu_s = {} +- {} uniform", v.mu_static, v.spread),
+        Some(c) => {
+            let each: Vec<String> = c.iter().map(|[m, d]| format!("{m} +- {d}")).collect();
+            format!("mu_s per contact = [{}] uniform", each.join(", "))
+        }
+    };
     let _ = writeln!(
         s,
-        "\n{} ({}): {} samples, {} seed {}, mu_s = {} +- {} uniform, mu_d = {} mu_s, {}",
+        "\n{} ({}): {} samples, {} seed {}, {mu}, mu_d = {} mu_s, {}",
         v.name,
         v.scene,
         v.samples,
         v.sampler,
         v.seed,
-        v.mu_static,
-        v.spread,
         v.dynamic_ratio,
         friction_law_text(&v.friction_law, v.ramp_time_s)
     );

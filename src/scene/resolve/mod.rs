@@ -23,7 +23,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     let balls = geometry::balls(f, &fx)?;
     let surfaces = geometry::surfaces(f, &fx, &balls)?;
     let preload = preload::preload(&f.preload, f.dynamics.as_ref(), &fx, f.allow_large_values)?;
-    let friction = tables::friction(&f.friction, ctx)?;
+    let (friction, contact_friction) = tables::friction(&f.friction, surfaces.len(), ctx)?;
     let tangential = surfaces.iter().position(|s| s.tangential_compliance > 0.0);
     if let (Some(i), TangentialLaw::MindlinDeresiewicz) = (tangential, friction.tangential_law) {
         return Err(ctx.error(
@@ -54,6 +54,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         surfaces,
         preload,
         friction,
+        contact_friction,
         study,
         evaluation_points,
         dynamics,

@@ -19,30 +19,90 @@ pub const MU_MAX: f64 = 2.0;
 
 /// `[friction]`: 0 <= mu_s <= [`MU_MAX`], 0 <= spread <= mu_s with
 /// mu_s + spread <= [`MU_MAX`], 0 < dynamic_ratio <= 1, and the law.
-pub fn friction(fr: &FrictionFile, ctx: &ErrorContext) -> Result<FrictionSettings, SceneError> {
-    let mu = *fr.mu_static.get_ref();
-    if !(0.0..=MU_MAX).contains(&mu) {
-        return Err(ctx.error(
-            Some(&fr.mu_static.span()),
-            "friction.mu_static",
-            format!("{mu} is outside [0, {MU_MAX}]"),
-        ));
+/// One number of `friction.<key>`, or one per contact: the values and
+/// whether a list was given (checked: finite, as many as `contacts`).
+fn per_contact(
+    v: &Spanned<toml::Value>,
+    key: &str,
+    contacts: usize,
+    ctx: &ErrorContext,
+) -> Result<(Vec<f64>, bool), SceneError> {
+    let field = format!("friction.{key}");
+    let number = |x: &toml::Value| x.as_float().or(x.as_integer().map(|i| i as f64));
+    let bad = |why: String| ctx.error(Some(&v.span()), field.clone(), why);
+    match v.get_ref() {
+        toml::Value::Array(items) => {
+            if items.len() != contacts {
+                return Err(bad(format!(
+                    "{} values for {contacts} contacts: give one per contact, in contact order \
+                     (docs/model.md, \"Axes and contact numbering\"), or one number",
+                    items.len()
+                )));
+            }
+            let values: Option<Vec<f64>> = items.iter().map(number).collect();
+            let values = values.ok_or_else(|| bad("every value must be a number".into()))?;
+            Ok((values, true))
+        }
+        x => match number(x) {
+            Some(n) => Ok((vec![n; contacts], false)),
+            None => {
+                Err(bad(format!("expected a number or a list of numbers, found {}", x.type_str())))
+            }
+        },
     }
-    let spread = *fr.spread.get_ref();
-    if !(spread >= 0.0 && spread <= mu) {
-        return Err(ctx.error(
-            Some(&fr.spread.span()),
-            "friction.spread",
-            format!("{spread} must lie in [0, mu_static = {mu}] (friction cannot be negative)"),
-        ));
+}
+
+/// [mu_static, spread] of each contact, in contact order.
+pub type ContactFriction = Vec<[f64; 2]>;
+
+/// `[friction]` for `contacts` contacts: the settings (one mu0 and spread,
+/// the means where lists are given) and the per-contact pairs when lists
+/// are given; each contact's mu0 in [0, MU_MAX], spread in [0, mu0] and
+/// mu0 + spread <= MU_MAX.
+pub fn friction(
+    fr: &FrictionFile,
+    contacts: usize,
+    ctx: &ErrorContext,
+) -> Result<(FrictionSettings, Option<ContactFriction>), SceneError> {
+    let (mus, mu_list) = per_contact(&fr.mu_static, "mu_static", contacts, ctx)?;
+    let (spreads, spread_list) = per_contact(&fr.spread, "spread", contacts, ctx)?;
+    let at =
+        |list: bool, k: usize| if list { format!(" (contact {})", k + 1) } else { String::new() };
+    for (k, (&mu, &spread)) in mus.iter().zip(&spreads).enumerate() {
+        if !(0.0..=MU_MAX).contains(&mu) {
+            return Err(ctx.error(
+                Some(&fr.mu_static.span()),
+                "friction.mu_static",
+                format!("{mu}{} is outside [0, {MU_MAX}]", at(mu_list, k)),
+            ));
+        }
+        if !(spread >= 0.0 && spread <= mu) {
+            return Err(ctx.error(
+                Some(&fr.spread.span()),
+                "friction.spread",
+                format!(
+                    "{spread}{} must lie in [0, mu_static = {mu}] (friction cannot be negative)",
+                    at(spread_list || mu_list, k)
+                ),
+            ));
+        }
+        if mu + spread > MU_MAX {
+            return Err(ctx.error(
+                Some(&fr.spread.span()),
+                "friction.spread",
+                format!("mu_static + spread = {}{} exceeds {MU_MAX}", mu + spread, at(true, k)),
+            ));
+        }
     }
-    if mu + spread > MU_MAX {
-        return Err(ctx.error(
-            Some(&fr.spread.span()),
-            "friction.spread",
-            format!("mu_static + spread = {} exceeds {MU_MAX}", mu + spread),
-        ));
-    }
+    let n = contacts.max(1) as f64;
+    let mean = |v: &[f64]| if v.is_empty() { 0.0 } else { v.iter().sum::<f64>() / n };
+    let (mu, spread) = if mu_list || spread_list {
+        (mean(&mus), mean(&spreads))
+    } else {
+        (mus.first().copied().unwrap_or(0.0), spreads.first().copied().unwrap_or(0.0))
+    };
+    let lists =
+        (mu_list || spread_list).then(|| mus.iter().zip(&spreads).map(|(&m, &s)| [m, s]).collect());
     let ratio = *fr.dynamic_ratio.get_ref();
     if !(ratio > 0.0 && ratio <= 1.0) {
         return Err(ctx.error(
@@ -51,13 +111,14 @@ pub fn friction(fr: &FrictionFile, ctx: &ErrorContext) -> Result<FrictionSetting
             format!("{ratio} must lie in (0, 1]: mu_d = ratio * mu_s"),
         ));
     }
-    Ok(FrictionSettings {
+    let settings = FrictionSettings {
         mu_static: mu,
         spread,
         dynamic_ratio: ratio,
         tangential_law: fr.tangential_law,
         law: friction_law(fr, ctx)?,
-    })
+    };
+    Ok((settings, lists))
 }
 
 /// `[study]`: at least 2 samples and a known sampler name.
