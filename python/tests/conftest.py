@@ -9,6 +9,7 @@ import json
 import os
 import pathlib
 import subprocess
+import sys
 
 import pytest
 
@@ -57,3 +58,15 @@ def scene01():
 def study01(scene01):
     """The issue's reference study: 400 Monte Carlo samples, seed 9."""
     return kinrepro.study(scene01, samples=400, sampler="mc", seed=9)
+
+
+def run_script(code, folder, timeout=300):
+    """`code` saved as a script in `folder` (beside a link to the bundled
+    scenes) and run by a fresh interpreter there, as a user runs an
+    example; the completed process."""
+    (folder / "scenes").symlink_to(SCENES)
+    script = folder / "example.py"
+    script.write_text(code)
+    return subprocess.run(
+        [sys.executable, str(script)], cwd=folder, capture_output=True, text=True, timeout=timeout
+    )

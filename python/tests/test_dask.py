@@ -6,14 +6,13 @@ function, with only the cluster made differently."""
 
 import pathlib
 import re
-import subprocess
-import sys
 
 import numpy as np
 import pytest
 
 import kinrepro
 import kinrepro.cluster
+from conftest import run_script
 
 distributed = pytest.importorskip("distributed")
 
@@ -55,11 +54,6 @@ def test_the_doc_example_runs_and_the_slurm_one_is_the_same_call(study01, tmp_pa
     assert "LocalCluster(" in local and "SLURMCluster(" in slurm
     call = "kinrepro.cluster.study(client, scene, shards="
     assert call in local and call in slurm
-    (tmp_path / "scenes").symlink_to(DOC.parents[1] / "scenes")
-    script = tmp_path / "study_on_dask.py"
-    script.write_text(local)
-    out = subprocess.run(
-        [sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True, timeout=300
-    )
+    out = run_script(local, tmp_path)
     assert out.returncode == 0, out.stderr[-2000:]
     assert (tmp_path / "study.json").read_text() == kinrepro.merge([study01]).to_json()

@@ -6,10 +6,10 @@ real Slurm); python/examples runs in test_example.py."""
 
 import pathlib
 import re
-import subprocess
-import sys
 
 import pytest
+
+from conftest import run_script
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 PAGES = sorted((ROOT / "docs").glob("*.md")) + [ROOT / "README.md"]
@@ -27,12 +27,7 @@ def blocks():
 
 @pytest.mark.parametrize("code", blocks())
 def test_a_doc_example_runs_as_a_script(code, tmp_path):
-    (tmp_path / "scenes").symlink_to(ROOT / "scenes")
-    script = tmp_path / "example.py"
-    script.write_text(code)
-    out = subprocess.run(
-        [sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True, timeout=300
-    )
+    out = run_script(code, tmp_path)
     assert out.returncode == 0, out.stderr[-2000:]
     if "KinreproError as e" in code:
         # The error example prints the library's message.

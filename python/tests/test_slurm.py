@@ -5,13 +5,11 @@ KINREPRO_SLURM=1 (then a missing scheduler or dask-jobqueue fails the
 test); elsewhere it is skipped."""
 
 import os
-import pathlib
-import subprocess
-import sys
 
 import pytest
 
 import kinrepro
+from conftest import run_script
 from test_dask import DOC, doc_blocks
 
 REQUIRED = os.environ.get("KINREPRO_SLURM") == "1"
@@ -23,12 +21,7 @@ def test_the_slurm_example_runs_against_slurm(tmp_path):
     import dask_jobqueue  # noqa: F401  (the example needs it; a failure here is the test's)
 
     _, slurm = doc_blocks()
-    (tmp_path / "scenes").symlink_to(DOC.parents[1] / "scenes")
-    script = tmp_path / "study_on_slurm.py"
-    script.write_text(slurm)
-    out = subprocess.run(
-        [sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True, timeout=600
-    )
+    out = run_script(slurm, tmp_path, timeout=600)
     assert out.returncode == 0, out.stderr[-3000:]
     scene = kinrepro.Scene.load(str(DOC.parents[1] / "scenes" / "01_maxwell_vgroove_steel.toml"))
     one = kinrepro.study(scene, samples=4000, sampler="mc", seed=9)

@@ -280,34 +280,7 @@ fn history_with_a_tangential_compliance_adds_c_t_q() {
     let g_star = e / (2.0 * (1.0 + nu)) / (2.0 * (2.0 - nu));
     let a = (3.0 * 10.0 * 5e-3 / (4.0 * e / (2.0 * (1.0 - nu * nu)))).cbrt();
     let q = 2.0;
-    for c_t in [0.0, 2e-7] {
-        let c = format!("{c_t:e}");
-        let (ok, out, err) = kinrepro(&[
-            "contact",
-            "--shape",
-            "sphere-plane",
-            "--radius1",
-            "0.005",
-            "--material1",
-            "steel",
-            "--material2",
-            "steel",
-            "--mu",
-            "0.5",
-            "--history",
-            &file,
-            "--tangential-compliance",
-            &c,
-        ]);
-        assert!(ok, "{err}");
-        assert!(out.contains(&format!("tangential support compliance {c} m/N")), "{out}");
-        let last: Vec<&str> = out.lines().last().unwrap().split(',').collect();
-        let (sx, slip) = (last[4].parse::<f64>().unwrap(), last[6]);
-        assert_eq!(slip, "stick");
-        let expect = 1.5 * q / (8.0 * g_star * a) + c_t * q;
-        assert!((sx / expect - 1.0).abs() < 1e-9, "c_t {c_t}: {sx} vs {expect}");
-    }
-    let (ok, _, err) = kinrepro(&[
+    let base = [
         "contact",
         "--shape",
         "sphere-plane",
@@ -322,9 +295,19 @@ fn history_with_a_tangential_compliance_adds_c_t_q() {
         "--history",
         &file,
         "--tangential-compliance",
-        "1e-7",
-        "--tangential-law",
-        "mindlin-deresiewicz",
-    ]);
+    ];
+    for c_t in [0.0, 2e-7] {
+        let c = format!("{c_t:e}");
+        let (ok, out, err) = kinrepro(&[&base[..], &[c.as_str()]].concat());
+        assert!(ok, "{err}");
+        assert!(out.contains(&format!("tangential support compliance {c} m/N")), "{out}");
+        let last: Vec<&str> = out.lines().last().unwrap().split(',').collect();
+        let (sx, slip) = (last[4].parse::<f64>().unwrap(), last[6]);
+        assert_eq!(slip, "stick");
+        let expect = 1.5 * q / (8.0 * g_star * a) + c_t * q;
+        assert!((sx / expect - 1.0).abs() < 1e-9, "c_t {c_t}: {sx} vs {expect}");
+    }
+    let md = ["1e-7", "--tangential-law", "mindlin-deresiewicz"];
+    let (ok, _, err) = kinrepro(&[&base[..], &md[..]].concat());
     assert!(!ok && err.contains("--tangential-compliance"), "{err}");
 }
