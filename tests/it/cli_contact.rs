@@ -222,6 +222,22 @@ fn bad_history_is_one_clear_error_naming_file_line_and_column() {
     assert!(!ok && err.contains("--mu"), "{err}");
 }
 
+/// `contact` for a 10 mm steel ball on a steel plane with mu_s = 0.5 (the
+/// history tests' pair).
+const STEEL_BALL_ON_PLANE: [&str; 11] = [
+    "contact",
+    "--shape",
+    "sphere-plane",
+    "--radius1",
+    "0.005",
+    "--material1",
+    "steel",
+    "--material2",
+    "steel",
+    "--mu",
+    "0.5",
+];
+
 /// The form of the README: `--history` without `--load` (the file gives the
 /// loads); `--load` beside it is not used, and says so; without either, the
 /// error names `--load`.
@@ -229,20 +245,7 @@ fn bad_history_is_one_clear_error_naming_file_line_and_column() {
 fn history_needs_no_load() {
     let tmp = tempfile::tempdir().unwrap();
     let file = write(tmp.path(), "h.csv", "P_N,Qx_N,Qy_N\n10,0,0\n10,1,0\n");
-    let base = [
-        "contact",
-        "--shape",
-        "sphere-plane",
-        "--radius1",
-        "0.005",
-        "--material1",
-        "steel",
-        "--material2",
-        "steel",
-        "--mu",
-        "0.5",
-    ];
-    let run = |extra: &[&str]| kinrepro(&[&base[..], extra].concat());
+    let run = |extra: &[&str]| kinrepro(&[&STEEL_BALL_ON_PLANE[..], extra].concat());
     let (ok, out, err) = run(&["--history", &file]);
     assert!(ok, "{err}");
     assert!(err.is_empty(), "{err}");
@@ -280,22 +283,8 @@ fn history_with_a_tangential_compliance_adds_c_t_q() {
     let g_star = e / (2.0 * (1.0 + nu)) / (2.0 * (2.0 - nu));
     let a = (3.0 * 10.0 * 5e-3 / (4.0 * e / (2.0 * (1.0 - nu * nu)))).cbrt();
     let q = 2.0;
-    let base = [
-        "contact",
-        "--shape",
-        "sphere-plane",
-        "--radius1",
-        "0.005",
-        "--material1",
-        "steel",
-        "--material2",
-        "steel",
-        "--mu",
-        "0.5",
-        "--history",
-        &file,
-        "--tangential-compliance",
-    ];
+    let history = ["--history", file.as_str(), "--tangential-compliance"];
+    let base = [&STEEL_BALL_ON_PLANE[..], &history[..]].concat();
     for c_t in [0.0, 2e-7] {
         let c = format!("{c_t:e}");
         let (ok, out, err) = kinrepro(&[&base[..], &[c.as_str()]].concat());
