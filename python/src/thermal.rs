@@ -113,11 +113,6 @@ pub fn thermal(
     let (text, file) = (scene.text.clone(), scene.file.clone());
     let report = py.detach(move || -> Result<ThermalReport, Failure> {
         let (scene, c) = parse_scene(&text, &file)?;
-        if scene.thermal.is_none() {
-            return Err(Failure(format!(
-                "{file}: the scene has no [thermal] table: give the bodies and the cycle"
-            )));
-        }
         let mut load = Load::nominal(&scene);
         if let Some(mu) = mu {
             load = load.with_mu(&mu);
@@ -127,7 +122,8 @@ pub fn thermal(
         }
         let (seating, path) =
             method.seat_and_cycle(&c, &load).map_err(|e| Failure(format!("{file}: {e}")))?;
-        Ok(ThermalReport::new((&scene, &c), &load, &seating, &path, tolerance))
+        ThermalReport::new((&scene, &c), &load, &seating, &path, tolerance)
+            .map_err(|e| Failure(format!("{file}: {e}")))
     });
     Ok(ThermalPath { report: report.map_err(|Failure(m)| err(m))? })
 }

@@ -325,9 +325,9 @@ fn parse_file(source: &str, ctx: &ErrorContext) -> Result<SceneFile, SceneError>
     })
 }
 
-/// Serde: leave a zero out (a field added later, so that the fingerprints
-/// of scenes without it stay as they were).
-fn is_zero(x: &f64) -> bool {
+/// Serde: leave a zero out (a field added later, so that documents and
+/// fingerprints without it stay as they were).
+pub(crate) fn is_zero(x: &f64) -> bool {
     *x == 0.0
 }
 

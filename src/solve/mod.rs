@@ -181,7 +181,7 @@ pub struct ContactResult {
     pub support_compliance_m_per_n: f64,
     /// Its tangential support compliance (in series with Mindlin's) [m/N];
     /// left out of the JSON when 0.
-    #[serde(skip_serializing_if = "is_zero")]
+    #[serde(skip_serializing_if = "crate::scene::is_zero")]
     pub tangential_support_compliance_m_per_n: f64,
     pub state: SlipState,
     /// Static and dynamic coefficient used.
@@ -466,9 +466,4 @@ impl Method {
             Method::Dynamic(_) => Err(SolveError::ThermalNeedsQuasiStatic),
         }
     }
-}
-
-/// Serde: a field left out when 0.
-fn is_zero(x: &f64) -> bool {
-    *x == 0.0
 }

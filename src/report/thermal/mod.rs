@@ -6,7 +6,7 @@ use std::fmt::Write;
 
 use serde::Serialize;
 
-use crate::assembly::Coupling;
+use crate::assembly::{AssemblyError, Coupling};
 use crate::report::seating::run::{pose_cells, pose_table};
 use crate::report::table::{Column, cells};
 use crate::scene::{Body, Scene, Temperatures, ThermalBodies};
@@ -93,9 +93,8 @@ impl ThermalReport {
         seating: &Seating,
         path: &ThermalPath,
         path_tolerance: Option<f64>,
-    ) -> Self {
-        let bodies: &ThermalBodies =
-            coupling.thermal.as_ref().expect("a thermal path's coupling has [thermal]");
+    ) -> Result<Self, AssemblyError> {
+        let bodies: &ThermalBodies = coupling.thermal_bodies()?;
         let cycle = (path.points.iter().enumerate())
             .map(|(k, c)| CycleReport {
                 delta_t_k: c.temperatures,
@@ -116,7 +115,7 @@ impl ThermalReport {
                 newton_iterations: c.newton_iterations,
             })
             .collect();
-        ThermalReport {
+        Ok(ThermalReport {
             kinrepro_version: crate::study::provenance::VERSION.to_string(),
             schema_version: crate::study::provenance::SCHEMA_VERSION,
             scene: scene.file.clone(),
@@ -132,7 +131,7 @@ impl ThermalReport {
             cycle,
             first_slip_delta_t_k: path.first_slip.map(|f| f.temperatures.size()),
             first_slip: path.first_slip,
-        }
+        })
     }
 
     /// Human-readable: the bodies, then per cycle point the drift of each

@@ -45,6 +45,7 @@ pub fn seat_and_cycle(
     load: &Load,
     opts: &SolverOptions,
 ) -> Result<(Seating, ThermalPath), SolveError> {
+    coupling.thermal_bodies()?;
     let mut ws = Workspace::new();
     let setup = SeatingSetup::new(coupling, &load.preload);
     let seated = seat_in(&setup, load, opts, &mut ws)?;

@@ -60,11 +60,6 @@ fn parse_cycle(text: &str) -> Result<Vec<Temperatures>> {
 pub fn thermal(t: Thermal) -> Result {
     let (scene, coupling) = read_scene(&t.scene)?;
     let file = scene.file.clone();
-    if scene.thermal.is_none() {
-        return Err(Error::new(format!(
-            "{file}: the scene has no [thermal] table: give the bodies and the cycle (docs/scenes.md, [thermal])"
-        )));
-    }
     let mut load = Load::nominal(&scene);
     if let Some(mu) = &t.mu {
         load = load.with_mu(mu);
@@ -73,6 +68,7 @@ pub fn thermal(t: Thermal) -> Result {
         load.cycle = cycle;
     }
     let (seating, path) = t.method.seat_and_cycle(&coupling, &load).context(&file)?;
-    let report = ThermalReport::new((&scene, &coupling), &load, &seating, &path, t.path_tolerance);
+    let report = ThermalReport::new((&scene, &coupling), &load, &seating, &path, t.path_tolerance)
+        .context(&file)?;
     if t.json { print_json(&report) } else { emit(&report.table()) }
 }
