@@ -123,6 +123,7 @@ fn cycle_after(
             friction,
             preload: &load.preload,
             opts: leg_options(opts, load),
+            sticking_tolerance: opts.tolerance,
             from,
             to,
         };

@@ -90,6 +90,11 @@ pub(super) struct Leg<'a> {
     /// The preload at the seating temperature.
     pub preload: &'a Preload,
     pub opts: SolverOptions,
+    /// The Newton tolerance of the sticking solution that locates the
+    /// first slip (the seating's: `opts.tolerance` of a controlled leg is
+    /// looser, and the contacts of a symmetric coupling reach their limit
+    /// together, to round-off only at the seating's tolerance).
+    pub sticking_tolerance: f64,
     pub from: Temperatures,
     pub to: Temperatures,
 }
@@ -351,8 +356,9 @@ impl<'a> Leg<'a> {
             let at = self.from.towards(self.to, end);
             let coupling = self.base.at_temperatures(at).ok()?;
             let preload = preload_at(self.bodies, self.preload, at, &self.base.touching_pose);
+            let opts = SolverOptions { tolerance: self.sticking_tolerance, ..self.opts };
             let mut solver =
-                Solver::new(&coupling, &held, &preload, self.opts, Program::Hold, Vector6::zeros());
+                Solver::new(&coupling, &held, &preload, opts, Program::Hold, Vector6::zeros());
             solver.expansion = Some(Expansion::between(self.bodies, at, committed));
             let loads =
                 Loads { lambda: 1.0, extra: 0.0, duration: (end - s) * solver.ramp_time, s: end };
