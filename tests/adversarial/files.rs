@@ -157,10 +157,12 @@ fn contents(dir: &Path) -> Vec<(String, Vec<u8>)> {
 
 /// A signal during a streamed `study --out DIR --force` (its per-sample
 /// CSV under a temporary name in DIR) leaves DIR as it was, without a
-/// temporary, and exits 128 + the signal.
+/// temporary, and exits 128 + the signal: SIGTERM and SIGINT, and SIGHUP
+/// (a closed terminal), SIGQUIT, SIGUSR1 and SIGUSR2 the same way.
 #[test]
 fn signal_during_study_leaves_out_folder_as_it_was() {
-    for (signal, code) in [("TERM", 143), ("INT", 130)] {
+    let signals = [("TERM", 143), ("INT", 130), ("HUP", 129), ("QUIT", 131), ("USR1", 138)];
+    for (signal, code) in signals.into_iter().chain([("USR2", 140)]) {
         let dir = tempfile::tempdir().unwrap();
         let d = dir.path().display().to_string();
         let small = ["study", &scene(), "--sampler", "mc", "--samples", "40", "--out", &d];

@@ -1,6 +1,8 @@
-//! SIGINT and SIGTERM (`signal-hook`): the first asks the library to stop
-//! ([`kinrepro::cancel`]); the run unwinds, its temporary files are deleted
-//! by their destructors, and the process exits 128 + the signal (130, 143).
+//! SIGINT, SIGTERM, SIGHUP (a closed terminal or ssh session), SIGQUIT,
+//! SIGUSR1 and SIGUSR2 ([`HANDLED`], `signal-hook`): the first asks the
+//! library to stop ([`kinrepro::cancel`]); the run unwinds, its temporary
+//! files are deleted by their destructors, and the process exits 128 + the
+//! signal (130, 143, 129, 131, 138, 140).
 //! A command that does not check the request (a single long FE solve) is
 //! stopped after [`GRACE`], as is any run at a second signal, but never in
 //! the middle of [`commit`]: a folder of outputs is renamed whole or not at
@@ -12,7 +14,7 @@ use std::sync::atomic::{AtomicI32, Ordering};
 use std::time::Duration;
 
 use kinrepro::output::atomic::{AtomicFile, commit_all};
-use signal_hook::consts::{SIGINT, SIGTERM};
+use signal_hook::consts::{SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2};
 use signal_hook::iterator::Signals;
 
 use crate::error::Error;
@@ -26,9 +28,21 @@ static RECEIVED: AtomicI32 = AtomicI32::new(0);
 /// Held while output files are renamed into place.
 static COMMITTING: Mutex<()> = Mutex::new(());
 
-/// Handle SIGINT and SIGTERM on a thread of their own.
+/// The signals that stop a run as SIGTERM does, with their names. Each of
+/// the others would end the process without unwinding (SIGQUIT with a
+/// core dump) and leave its temporaries behind.
+const HANDLED: [(i32, &str); 6] = [
+    (SIGINT, "SIGINT"),
+    (SIGTERM, "SIGTERM"),
+    (SIGHUP, "SIGHUP"),
+    (SIGQUIT, "SIGQUIT"),
+    (SIGUSR1, "SIGUSR1"),
+    (SIGUSR2, "SIGUSR2"),
+];
+
+/// Handle the signals of [`HANDLED`] on a thread of their own.
 pub fn install() -> Result<(), Error> {
-    let mut signals = Signals::new([SIGINT, SIGTERM])
+    let mut signals = Signals::new(HANDLED.map(|(sig, _)| sig))
         .map_err(|e| Error::new(format!("cannot handle signals: {e}")))?;
     std::thread::spawn(move || {
         for sig in signals.forever() {
@@ -55,7 +69,7 @@ fn stop(sig: i32) -> ! {
 }
 
 fn name(sig: i32) -> &'static str {
-    if sig == SIGINT { "SIGINT" } else { "SIGTERM" }
+    HANDLED.iter().find(|(s, _)| *s == sig).map_or("signal", |(_, n)| n)
 }
 
 /// The exit code and message of a run stopped by a signal, if one came.
