@@ -15,9 +15,11 @@ pub const MAX_INPUT_BYTES: u64 = 256 << 20;
 /// The text of `path`, refused (an `InvalidData` error giving the size and
 /// the bound) if it holds more than [`MAX_INPUT_BYTES`]: a regular file by
 /// its size before anything is read, any other (a pipe, a device) once
-/// more than the bound has arrived.
+/// more than the bound has arrived. The file is noted as an input of the
+/// command (`output::inputs`), which no output of it may replace.
 pub fn read_to_string(path: impl AsRef<Path>) -> std::io::Result<String> {
-    let file = std::fs::File::open(path)?;
+    let file = std::fs::File::open(&path)?;
+    crate::output::inputs::register(path.as_ref());
     let meta = file.metadata()?;
     if meta.is_file() && meta.len() > MAX_INPUT_BYTES {
         return Err(too_large(&format!("{} bytes", meta.len())));

@@ -31,6 +31,11 @@ pub enum WriteError {
     NotRegular { path: String, kind: &'static str },
     #[error("{path}: cannot write: {reason}")]
     Io { path: String, reason: String },
+    #[error(
+        "{path}: is an input of this command (read as {input}); not overwritten, even with {}",
+        Param::Force
+    )]
+    IsInput { path: String, input: String },
 }
 
 impl WriteError {
@@ -39,8 +44,13 @@ impl WriteError {
     }
 }
 
-/// Refuse an existing `path` unless `force`.
+/// Refuse an existing `path` unless `force`, and an input of the command
+/// ([`super::inputs`]) always.
 pub fn check_overwrite(path: &Path, force: bool) -> Result<(), WriteError> {
+    if let Some(input) = super::inputs::input_at(path) {
+        let (path, input) = (path.display().to_string(), input.display().to_string());
+        return Err(WriteError::IsInput { path, input });
+    }
     if !force && path.exists() {
         return Err(WriteError::Exists { path: path.display().to_string() });
     }

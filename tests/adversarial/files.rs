@@ -354,3 +354,43 @@ fn evaluation_points_are_bounded() {
         }
     }
 }
+
+/// An output that is an input of the same command is refused, `--force`
+/// or not, by any path to it (its own, a symbolic link, a hard link), and
+/// the input is left as it was: the scene under `study --html` and
+/// `sweep --html`, the study JSON under `report --out`.
+#[test]
+fn an_output_onto_an_input_of_the_same_command_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let s = dir.path().join("s.toml");
+    fs::copy(scene(), &s).unwrap();
+    let (link, hard) = (dir.path().join("link.toml"), dir.path().join("hard.toml"));
+    std::os::unix::fs::symlink(&s, &link).unwrap();
+    fs::hard_link(&s, &hard).unwrap();
+    let text = fs::read(&s).unwrap();
+    let path = |p: &Path| p.display().to_string();
+    let scene_path = path(&s);
+    for out in [&s, &link, &hard] {
+        for cmd in [["study", "--samples", "10"], ["sweep", "--set", "preload.force=10,20"]] {
+            let out = path(out);
+            let args = [cmd[0], &scene_path, cmd[1], cmd[2], "--html", &out, "--force"];
+            let (ok, _, err) = common::kinrepro(&args);
+            assert!(!ok, "{args:?}");
+            assert!(err.contains("is an input of this command") && err.contains("s.toml"), "{err}");
+            assert_eq!(fs::read(&s).unwrap(), text, "{args:?} kept the scene");
+        }
+    }
+    let json = dir.path().join("in.json");
+    let (ok, study, err) =
+        common::kinrepro(&["study", &path(&s), "--samples", "10", "--format", "json"]);
+    assert!(ok, "{err}");
+    fs::write(&json, &study).unwrap();
+    let (ok, _, err) =
+        common::kinrepro(&["report", &path(&json), "--out", &path(&json), "--force"]);
+    assert!(!ok && err.contains("is an input of this command"), "{err}");
+    assert_eq!(fs::read_to_string(&json).unwrap(), study);
+    // Another file is written as before.
+    let html = path(&dir.path().join("report.html"));
+    let (ok, _, err) = common::kinrepro(&["report", &path(&json), "--out", &html]);
+    assert!(ok, "{err}");
+}

@@ -14,6 +14,8 @@ fn main() -> ExitCode {
     let cli = flags::Cli::parse();
     // The library names its parameters; here they are flags.
     kinrepro::param::set_spelling(flags::spelling);
+    // No output of this run replaces a file it read (`output::inputs`).
+    kinrepro::output::inputs::track();
     let run = signals::install().and_then(|()| commands::dispatch(cli.command));
     if let Some((code, msg)) = signals::received() {
         eprintln!("kinrepro: {msg}");
