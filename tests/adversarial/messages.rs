@@ -273,3 +273,24 @@ fn history_header_bom_is_accepted_or_named() {
         contact(&["--shape", "sphere-plane", "--radius1", "0.005", "--history", &p, "--mu", "0.3"]);
     assert!(ok || (err.contains("h.csv:1") && err.contains("\\u{feff}")), "{err}");
 }
+
+/// `contact --history --mu` beyond the bound every scene keeps (mu_static
+/// <= 2) is refused naming the option and the bound, as zero and negative
+/// values are; 2 itself is accepted.
+#[test]
+fn history_mu_outside_the_scenes_bound_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("h.csv");
+    std::fs::write(&path, "P_N,Qx_N,Qy_N\n5,1.5,0\n").unwrap();
+    let p = path.display().to_string();
+    let base =
+        ["contact", "--material1", "steel", "--material2", "steel", "--shape", "sphere-plane"];
+    for mu in ["5", "2.0000001", "0", "-0.1"] {
+        let mut args = base.to_vec();
+        args.extend(["--radius1", "0.005", "--history", &p, "--mu", mu]);
+        refused(&args, &[&format!("--mu {}", mu.parse::<f64>().unwrap()), "(0, 2]"]);
+    }
+    let (ok, _, err) =
+        contact(&["--shape", "sphere-plane", "--radius1", "0.005", "--history", &p, "--mu", "2"]);
+    assert!(ok, "{err}");
+}

@@ -60,8 +60,9 @@ impl TryFrom<ContactArgs> for Contact {
 /// `--mu` and `--dynamic-ratio` of `--history`.
 fn history_friction(a: &ContactArgs) -> Result<Friction> {
     let mu = a.mu.unwrap_or(f64::NAN);
-    if !(mu.is_finite() && mu > 0.0) {
-        usage!("--mu {mu}: the friction coefficient must be positive and finite");
+    let max = kinrepro::scene::resolve::MU_MAX;
+    if !(mu.is_finite() && mu > 0.0 && mu <= max) {
+        usage!("--mu {mu}: the friction coefficient must lie in (0, {max}] (the scenes' bound)");
     }
     let ratio = a.dynamic_ratio;
     if !(ratio > 0.0 && ratio <= 1.0) {

@@ -53,7 +53,7 @@ pub struct ContactArgs {
     /// P_N,Qx_N,Qy_N) and print step,P_N,Qx_N,Qy_N,sx_m,sy_m,slip.
     #[arg(long, requires = "mu")]
     pub history: Option<PathBuf>,
-    /// Static friction coefficient mu_s (with --history).
+    /// Static friction coefficient mu_s, in (0, 2] (with --history).
     #[arg(long, allow_hyphen_values = true, requires = "history")]
     pub mu: Option<f64>,
     /// mu_d = ratio * mu_s, in (0, 1] (with --history).
