@@ -57,6 +57,16 @@ pub fn calibrate(
                 .to_string(),
         });
     }
+    if !scene.mu_distribution.is_uniform() {
+        return Err(CalibrateError::Model {
+            file: scene.file.clone(),
+            reason: format!(
+                "[friction] distribution = \"{}\"; calibration fits the spread of a uniform \
+                 distribution only: give distribution = \"uniform\"",
+                scene.mu_distribution.name()
+            ),
+        });
+    }
     let fit_spread = params.contains(&Param::Spread);
     if !fit_spread && f.spread == 0.0 {
         return Err(CalibrateError::Model {

@@ -76,6 +76,16 @@ pub fn predict(
                 .to_string(),
         });
     }
+    if !scene.mu_distribution.is_uniform() {
+        return Err(CalibrateError::Model {
+            file,
+            reason: format!(
+                "[friction] distribution = \"{}\"; a calibration sets the spread of a uniform \
+                 distribution: give distribution = \"uniform\"",
+                scene.mu_distribution.name()
+            ),
+        });
+    }
     let options = StudyOptions::monte_carlo(samples, seed, solver);
     let plan = StudyPlan::keeping_records(vec![(scene.clone(), coupling.clone())], &options)?;
     let estimate = with_parameters(&plan.variants[0], &cal.estimates());

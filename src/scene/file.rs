@@ -335,12 +335,22 @@ pub struct PreloadForceFile {
     pub force_table: Option<Spanned<Vec<Spanned<Numbers>>>>,
 }
 
+/// `[friction] distribution`: how each contact's mu_s is drawn
+/// (`scene::mu`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Distribution {
     /// Rectangular in mu0 +- spread (the paper's).
     #[default]
     Uniform,
+    /// Normal of mean mu0 and standard deviation `sd`, truncated to
+    /// [0, MU_MAX].
+    Normal,
+    /// Lognormal of mean mu0 and standard deviation `sd`, truncated above
+    /// MU_MAX.
+    Lognormal,
+    /// The measured `values`, each equally likely (resampled).
+    Empirical,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -355,6 +365,13 @@ pub struct FrictionFile {
     pub spread: Spanned<toml::Value>,
     #[serde(default)]
     pub distribution: Distribution,
+    /// Standard deviation of mu_s (normal, lognormal): a number, or a list
+    /// with one per contact.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sd: Option<Spanned<toml::Value>>,
+    /// The measured coefficients an empirical distribution resamples.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub values: Option<Spanned<Vec<f64>>>,
     /// mu_d / mu_s.
     #[serde(default = "default_dynamic_ratio")]
     pub dynamic_ratio: Spanned<f64>,

@@ -11,6 +11,7 @@ pub mod error;
 pub mod expand;
 pub mod file;
 pub mod magnet;
+pub mod mu;
 pub mod plausible;
 pub mod preload;
 pub mod resolve;
@@ -28,6 +29,7 @@ use crate::param::{Param, ParamError};
 use error::ErrorContext;
 pub use error::SceneError;
 pub use file::{Arrangement, GrooveKind, SceneFile};
+pub use mu::MuDistribution;
 pub use preload::{ForceLaw, Preload, PreloadForce};
 pub use thermal::{Body, Temperatures, Thermal, ThermalBodies};
 
@@ -209,6 +211,11 @@ pub struct Scene {
     /// `friction` at every contact).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub contact_friction: Option<Vec<[f64; 2]>>,
+    /// `[friction] distribution`: how each contact's mu_s is drawn beyond
+    /// its mu0 and spread (`mu`); left out of the serialised form (and so
+    /// of the fingerprint) when uniform.
+    #[serde(default, skip_serializing_if = "MuDistribution::is_uniform")]
+    pub mu_distribution: MuDistribution,
     pub study: StudyDefaults,
     pub evaluation_points: Vec<EvaluationPoint>,
     /// Mass properties for the dynamic solver; `None`: the default model.
@@ -341,13 +348,27 @@ impl Scene {
         }
     }
 
-    /// The largest mu0 + spread over the contacts.
+    /// mu_s of contact `k` at the design coordinate `u` in [0, 1]: the
+    /// quantile of its distribution (`mu`).
+    pub fn mu_at(&self, k: usize, u: f64) -> f64 {
+        let (mu0, spread) = self.friction_of(k);
+        self.mu_distribution.quantile(k, mu0, spread, u)
+    }
+
+    /// The range contact `k`'s mu_s is drawn from
+    /// ([`MuDistribution::range`]).
+    pub fn mu_range(&self, k: usize) -> (f64, f64) {
+        let (mu0, spread) = self.friction_of(k);
+        self.mu_distribution.range(k, mu0, spread)
+    }
+
+    /// The largest mu_s a study draws at any contact (the top of
+    /// [`Scene::mu_range`]; mu0 + spread where uniform).
     pub fn largest_mu(&self) -> f64 {
-        (0..self.surfaces.len())
-            .map(|k| {
-                let (m, s) = self.friction_of(k);
-                m + s
-            })
-            .fold(self.friction.mu_static + self.friction.spread, f64::max)
+        let start = match self.mu_distribution {
+            MuDistribution::Uniform => self.friction.mu_static + self.friction.spread,
+            _ => 0.0,
+        };
+        (0..self.surfaces.len()).map(|k| self.mu_range(k).1).fold(start, f64::max)
     }
 }

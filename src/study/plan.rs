@@ -127,6 +127,13 @@ fn design_for(
 ) -> Result<DesignSpec, StudyError> {
     let st = &scene.study;
     let sampler = options.sampler.unwrap_or(st.sampler);
+    if sampler == Sampler::Corners && variation.friction && !scene.mu_distribution.is_uniform() {
+        return Err(StudyError::InvalidParameter(format!(
+            "the corners sampler draws each input at the ends of its range, which a {} \
+             distribution of mu_s (friction.distribution) does not have: use lhs or mc",
+            scene.mu_distribution.name()
+        )));
+    }
     let n = match sampler {
         Sampler::Corners => None,
         _ => Some(options.samples.unwrap_or(st.samples)),

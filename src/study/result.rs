@@ -16,7 +16,7 @@ use super::sensitivity::SensitivityBlock;
 use super::variant::Variant;
 use super::{DesignSpec, Sampler, Shard, StudyError};
 use crate::contact::FrictionLaw;
-use crate::scene::{DEFAULT_RAMP_TIME, VariationBounds};
+use crate::scene::{DEFAULT_RAMP_TIME, MuDistribution, VariationBounds};
 
 /// One scene's study.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -53,6 +53,11 @@ pub struct VariantReport {
     /// `mu_static` and `spread` above are then their means).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub contact_friction: Option<Vec<[f64; 2]>>,
+    /// `[friction] distribution` where not uniform: `{"kind": "normal",
+    /// "sd": [...]}` (one per contact), `lognormal` likewise, or
+    /// `{"kind": "empirical", "values": [...]}` (ascending).
+    #[serde(default, skip_serializing_if = "MuDistribution::is_uniform")]
+    pub mu_distribution: MuDistribution,
     pub dynamic_ratio: f64,
     /// Sliding coefficient: the sudden switch or the decay law
     /// (`{"law": "switch"}` or `{"law": "decay", "coefficient": c}`, c in s/m).
@@ -199,6 +204,7 @@ impl VariantReport {
             mu_static: f.mu_static,
             spread: f.spread,
             contact_friction: scene.contact_friction.clone(),
+            mu_distribution: scene.mu_distribution.clone(),
             dynamic_ratio: f.dynamic_ratio,
             friction_law: f.law,
             ramp_time_s: scene.preload.ramp_time,

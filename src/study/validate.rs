@@ -11,6 +11,7 @@ use thiserror::Error;
 use super::inputs::Input;
 use super::record::{PointStats, StudyRecord};
 use super::result::{StudyReport, VariantReport};
+use crate::scene::MuDistribution;
 use crate::scene::resolve::MU_MAX;
 
 /// A field of a study document that no study could have written.
@@ -172,17 +173,29 @@ fn check_record(v: &VariantReport, r: &StudyRecord, at: &str) -> Result<(), Docu
             return Err(bad(format!("{at}.{name}[{j}]"), reason));
         }
     }
+    if let MuDistribution::Empirical { values } = &v.mu_distribution
+        && values.is_empty()
+    {
+        return Err(bad(format!("{at}: mu_distribution.values"), "is empty".into()));
+    }
     for (j, (input, mu)) in v.inputs.iter().zip(&r.physical).enumerate() {
         let Input::Mu(k) = input else { continue };
         let (mu0, spread) = match v.contact_friction.as_ref().and_then(|c| c.get(*k)) {
             Some(&[m, s]) => (m, s),
             None => (v.mu_static, v.spread),
         };
-        let (lo, hi) = (mu0 - spread, mu0 + spread);
+        // Where the distribution reaches: mu0 +- spread, its truncation to
+        // [0, MU_MAX] (normal, lognormal) or its values (empirical).
+        let (lo, hi, what) = match &v.mu_distribution {
+            MuDistribution::Uniform => (mu0 - spread, mu0 + spread, "mu_static +- spread"),
+            MuDistribution::Empirical { values } => {
+                (values[0], values[values.len() - 1], "the empirical values")
+            }
+            _ => (0.0, MU_MAX, "the truncation of its distribution"),
+        };
         let slack = 1e-9 * hi.max(1.0);
         if !(*mu >= lo - slack && *mu <= hi + slack) {
-            let reason =
-                format!("{} = {mu} is outside mu_static +- spread = [{lo}, {hi}]", input.name());
+            let reason = format!("{} = {mu} is outside {what} = [{lo}, {hi}]", input.name());
             return Err(bad(format!("{at}.inputs_si[{j}]"), reason));
         }
     }

@@ -114,8 +114,9 @@ impl Variation {
 
     /// Everything one design row sets for the scene `scene` assembled as
     /// `coupling`. Each column u in [0, 1] maps to b (2u - 1), uniform in
-    /// +-b (mu: mu0 + spread (2u - 1)); the start pose as described in the
-    /// module documentation of `study::runner`.
+    /// +-b; a contact's mu to the quantile of its distribution at u
+    /// (`Scene::mu_at`: mu0 + spread (2u - 1) where uniform); the start
+    /// pose as described in the module documentation of `study::runner`.
     pub fn sample(&self, scene: &Scene, coupling: &Coupling, row: &[f64]) -> Sample {
         let inputs = self.inputs(scene);
         let b = scene.variation;
@@ -131,8 +132,7 @@ impl Variation {
             let t = tol.as_mut();
             let value = match (*input, t) {
                 (Input::Mu(k), _) => {
-                    let (mu0, spread) = scene.friction_of(k);
-                    mu[k] = mu0 + spread * c;
+                    mu[k] = scene.mu_at(k, u);
                     mu[k]
                 }
                 (Input::PreloadOffset(k, a), _) => {

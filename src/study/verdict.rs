@@ -35,13 +35,17 @@ pub fn cannot_seat(
         return Ok(None);
     }
     let n = coupling.contacts.len();
-    // Each contact at its mu0 -+ spread (+-10 % of mu0 without spread).
+    // Each contact at the ends of its range (`Scene::mu_range`: mu0 -+
+    // spread where uniform), or at mu0 -+ 10 % where the range is a point.
     let probe = |sign: f64| -> Vec<f64> {
         (0..n)
             .map(|k| {
-                let (mu0, spread) = scene.friction_of(k);
-                let d = if spread > 0.0 { spread } else { 0.1 * mu0 };
-                (mu0 + sign * d).max(0.0)
+                let (lo, hi) = scene.mu_range(k);
+                if lo < hi {
+                    return if sign < 0.0 { lo.max(0.0) } else { hi };
+                }
+                let mu0 = scene.friction_of(k).0;
+                (mu0 + sign * 0.1 * mu0).max(0.0)
             })
             .collect()
     };
@@ -61,9 +65,10 @@ pub fn cannot_seat(
     let p = &scene.evaluation_points[0].position;
     let moves = PointPose::between(&poses[0], &poses[1], p).components().iter().any(|c| *c != 0.0);
     let why = || {
-        match &scene.contact_friction {
-        None => reason(f.mu_static, f.spread),
-        Some(_) => "with each contact's mu_s at its mu_static +- spread every contact sticks from the first load increment: the seated pose does not depend on friction and the coupling does not centre".to_string(),
+        match (&scene.contact_friction, scene.mu_distribution.is_uniform()) {
+        (None, true) => reason(f.mu_static, f.spread),
+        (Some(_), true) => "with each contact's mu_s at its mu_static +- spread every contact sticks from the first load increment: the seated pose does not depend on friction and the coupling does not centre".to_string(),
+        (_, false) => "with each contact's mu_s at the 0.1 % and 99.9 % quantiles of its distribution every contact sticks from the first load increment: the seated pose does not depend on friction and the coupling does not centre".to_string(),
     }
     };
     Ok((!moves).then(why))

@@ -37,6 +37,7 @@ mod friction_readings;
 mod general_hertz;
 mod geometry;
 mod materials;
+mod mu_distribution;
 mod path_control;
 mod preloads;
 mod quasistatic;

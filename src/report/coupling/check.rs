@@ -23,8 +23,13 @@ pub fn seating_note(scene: &Scene, c: &Coupling, cannot_seat: Option<&str>) -> S
     if mu_max < limit {
         return String::new();
     }
+    let what = if scene.mu_distribution.is_uniform() {
+        "mu_static + spread"
+    } else {
+        "the 99.9 % quantile of mu_s"
+    };
     format!(
-        "  WARNING: mu_static + spread = {mu_max:.3} is above the friction limit {limit:.4}: seating from the touching pose (as `study` does) is unaffected, but a half that arrives off-centre (one contact still open) may stick off its seat instead of centring\n"
+        "  WARNING: {what} = {mu_max:.3} is above the friction limit {limit:.4}: seating from the touching pose (as `study` does) is unaffected, but a half that arrives off-centre (one contact still open) may stick off its seat instead of centring\n"
     )
 }
 
@@ -47,13 +52,12 @@ pub fn check_summary(s: &Scene, c: &Coupling) -> String {
         "none below mu = 10".to_string()
     };
     let _ = writeln!(out, "  friction limit for seating: {limit_text}");
-    let mu = match &s.contact_friction {
-        None => format!("mu_s = {} +- {} (uniform)", s.friction.mu_static, s.friction.spread),
-        Some(c) => {
-            let each: Vec<String> = c.iter().map(|[m, d]| format!("{m} +- {d}")).collect();
-            format!("mu_s per contact = [{}] (uniform)", each.join(", "))
-        }
-    };
+    let mu = crate::scene::mu::describe_friction(
+        (s.friction.mu_static, s.friction.spread),
+        s.contact_friction.as_deref(),
+        &s.mu_distribution,
+        "(uniform)",
+    );
     let _ = writeln!(
         out,
         "  preload: {}; {mu}, mu_d/mu_s = {}, {:?} tangential law",

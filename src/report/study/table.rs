@@ -54,13 +54,12 @@ impl StudyReport {
 /// sensitivity tables.
 fn variant_text(v: &VariantReport) -> String {
     let mut s = String::new();
-    let mu = match &v.contact_friction {
-        None => format!("mu_s = {} +- {} uniform", v.mu_static, v.spread),
-        Some(c) => {
-            let each: Vec<String> = c.iter().map(|[m, d]| format!("{m} +- {d}")).collect();
-            format!("mu_s per contact = [{}] uniform", each.join(", "))
-        }
-    };
+    let mu = crate::scene::mu::describe_friction(
+        (v.mu_static, v.spread),
+        v.contact_friction.as_deref(),
+        &v.mu_distribution,
+        "uniform",
+    );
     let _ = writeln!(
         s,
         "\n{} ({}): {} samples, {} seed {}, {mu}, mu_d = {} mu_s, {}",

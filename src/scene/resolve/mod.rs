@@ -23,7 +23,8 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     let balls = geometry::balls(f, &fx)?;
     let surfaces = geometry::surfaces(f, &fx, &balls)?;
     let preload = preload::preload(&f.preload, f.dynamics.as_ref(), &fx, f.allow_large_values)?;
-    let (friction, contact_friction) = tables::friction(&f.friction, surfaces.len(), ctx)?;
+    let (friction, contact_friction, mu_distribution) =
+        tables::friction(&f.friction, surfaces.len(), ctx)?;
     let tangential = surfaces.iter().position(|s| s.tangential_compliance > 0.0);
     if let (Some(i), TangentialLaw::MindlinDeresiewicz) = (tangential, friction.tangential_law) {
         return Err(ctx.error(
@@ -55,6 +56,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         preload,
         friction,
         contact_friction,
+        mu_distribution,
         study,
         evaluation_points,
         dynamics,

@@ -8,10 +8,12 @@ use super::fields::Fields;
 use crate::contact::{FrictionLaw, TangentialLaw};
 use crate::scene::error::{ErrorContext, SceneError};
 use crate::scene::file::{
-    DynamicsFile, FrictionFile, FrictionLawName, Numbers, SceneFile, StudyFile, VariationFile,
+    Distribution, DynamicsFile, FrictionFile, FrictionLawName, Numbers, SceneFile, StudyFile,
+    VariationFile,
 };
 use crate::scene::{
-    DynamicsSettings, EvaluationPoint, FrictionSettings, Sampler, StudyDefaults, VariationBounds,
+    DynamicsSettings, EvaluationPoint, FrictionSettings, MuDistribution, Sampler, StudyDefaults,
+    VariationBounds,
 };
 
 /// Largest friction coefficient accepted in a scene.
@@ -63,7 +65,7 @@ pub fn friction(
     fr: &FrictionFile,
     contacts: usize,
     ctx: &ErrorContext,
-) -> Result<(FrictionSettings, Option<ContactFriction>), SceneError> {
+) -> Result<(FrictionSettings, Option<ContactFriction>, MuDistribution), SceneError> {
     let (mus, mu_list) = per_contact(&fr.mu_static, "mu_static", contacts, ctx)?;
     let (spreads, spread_list) = per_contact(&fr.spread, "spread", contacts, ctx)?;
     let at =
@@ -103,6 +105,8 @@ pub fn friction(
     };
     let lists =
         (mu_list || spread_list).then(|| mus.iter().zip(&spreads).map(|(&m, &s)| [m, s]).collect());
+    let distribution =
+        distribution(fr, &mus, spread_list || spreads.iter().any(|&s| s > 0.0), ctx)?;
     let ratio = *fr.dynamic_ratio.get_ref();
     if !(ratio > 0.0 && ratio <= 1.0) {
         return Err(ctx.error(
@@ -118,7 +122,95 @@ pub fn friction(
         tangential_law: fr.tangential_law,
         law: friction_law(fr, ctx)?,
     };
-    Ok((settings, lists))
+    Ok((settings, lists, distribution))
+}
+
+/// `[friction] distribution` with its keys (`scene::mu`): `sd` for a
+/// normal or lognormal (each >= 0; a lognormal's mu_static > 0 where its
+/// sd is), `values` for an empirical one (at least 2, each in
+/// [0, MU_MAX]); `spread` (`has_spread`: given non-zero) only for a
+/// uniform one, and each key only with its distribution.
+fn distribution(
+    fr: &FrictionFile,
+    mus: &[f64],
+    has_spread: bool,
+    ctx: &ErrorContext,
+) -> Result<MuDistribution, SceneError> {
+    let kind = fr.distribution;
+    let name = format!("{kind:?}").to_lowercase();
+    let refuse = |span: std::ops::Range<usize>, field: &str, why: String| {
+        Err(ctx.error(Some(&span), field, why))
+    };
+    if kind != Distribution::Uniform && has_spread {
+        let why = format!(
+            "the half-width of a uniform distribution; a {name} one takes {} (give spread = 0 or leave it out)",
+            if kind == Distribution::Empirical { "values" } else { "sd" }
+        );
+        return refuse(fr.spread.span(), "friction.spread", why);
+    }
+    if let (Some(sd), Distribution::Uniform | Distribution::Empirical) = (&fr.sd, kind) {
+        let why = format!(
+            "a standard deviation, for distribution = \"normal\" or \"lognormal\" (here {name})"
+        );
+        return refuse(sd.span(), "friction.sd", why);
+    }
+    if let (Some(v), Distribution::Uniform | Distribution::Normal | Distribution::Lognormal) =
+        (&fr.values, kind)
+    {
+        let why = format!("measured coefficients, for distribution = \"empirical\" (here {name})");
+        return refuse(v.span(), "friction.values", why);
+    }
+    match kind {
+        Distribution::Uniform => Ok(MuDistribution::Uniform),
+        Distribution::Normal | Distribution::Lognormal => {
+            let Some(sd) = &fr.sd else {
+                let why = format!("a {name} distribution needs sd, the standard deviation of mu_s");
+                return Err(ctx.error(Some(&fr.mu_static.span()), "friction.sd", why));
+            };
+            let (sd, _) = per_contact(sd, "sd", mus.len(), ctx)?;
+            for (k, (&s, &mu)) in sd.iter().zip(mus).enumerate() {
+                let at = format!(" (contact {})", k + 1);
+                if !(s.is_finite() && s >= 0.0) {
+                    return refuse(
+                        fr.sd.as_ref().unwrap().span(),
+                        "friction.sd",
+                        format!("{s}{at} must be finite and >= 0"),
+                    );
+                }
+                if kind == Distribution::Lognormal && s > 0.0 && mu <= 0.0 {
+                    let why = format!("{mu}{at}: a lognormal's mean must be > 0");
+                    return refuse(fr.mu_static.span(), "friction.mu_static", why);
+                }
+            }
+            Ok(match kind {
+                Distribution::Normal => MuDistribution::Normal { sd },
+                _ => MuDistribution::Lognormal { sd },
+            })
+        }
+        Distribution::Empirical => {
+            let Some(v) = &fr.values else {
+                let why = "an empirical distribution needs values, the measured coefficients";
+                return Err(ctx.error(Some(&fr.mu_static.span()), "friction.values", why));
+            };
+            let mut values = v.get_ref().clone();
+            if values.len() < 2 {
+                return refuse(
+                    v.span(),
+                    "friction.values",
+                    format!("{} values: give at least 2", values.len()),
+                );
+            }
+            if let Some(x) = values.iter().find(|x| !(0.0..=MU_MAX).contains(*x)) {
+                return refuse(
+                    v.span(),
+                    "friction.values",
+                    format!("{x} is outside [0, {MU_MAX}]"),
+                );
+            }
+            values.sort_by(f64::total_cmp);
+            Ok(MuDistribution::Empirical { values })
+        }
+    }
 }
 
 /// `[study]`: at least 2 samples and a known sampler name.
