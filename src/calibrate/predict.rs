@@ -76,6 +76,16 @@ pub fn predict(
                 .to_string(),
         });
     }
+    if scene.mu_correlation > 0.0 {
+        return Err(CalibrateError::Model {
+            file: scene.file.clone(),
+            reason: format!(
+                "[friction] correlation = {}; a calibration sets the spread of independent \
+                 coefficients: leave correlation out",
+                scene.mu_correlation
+            ),
+        });
+    }
     if !scene.mu_distribution.is_uniform() {
         return Err(CalibrateError::Model {
             file,

@@ -372,6 +372,10 @@ pub struct FrictionFile {
     /// The measured coefficients an empirical distribution resamples.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub values: Option<Spanned<Vec<f64>>>,
+    /// Correlation in [0, 1] between the coefficients of the contacts of
+    /// one ball (a Gaussian copula, `scene::mu::correlate`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub correlation: Option<Spanned<f64>>,
     /// mu_d / mu_s.
     #[serde(default = "default_dynamic_ratio")]
     pub dynamic_ratio: Spanned<f64>,

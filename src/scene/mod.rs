@@ -216,6 +216,10 @@ pub struct Scene {
     /// of the fingerprint) when uniform.
     #[serde(default, skip_serializing_if = "MuDistribution::is_uniform")]
     pub mu_distribution: MuDistribution,
+    /// `[friction] correlation`: between the coefficients of the contacts
+    /// of one ball (`mu::correlate`); left out when 0.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub mu_correlation: f64,
     pub study: StudyDefaults,
     pub evaluation_points: Vec<EvaluationPoint>,
     /// Mass properties for the dynamic solver; `None`: the default model.

@@ -166,10 +166,27 @@ impl MuDistribution {
 }
 
 /// The friction of a scene or a study in words: `mu_s = 0.5 +- 0.05` and
-/// `uniform` (joined by the caller: `check` writes `(uniform)`), or one
+/// `uniform` (given by the caller: `check` writes `(uniform)`), or one
 /// contact's pair after another where lists are given, or the
-/// distribution ([`MuDistribution::describe`]) with each contact's mu0.
+/// distribution ([`MuDistribution::describe`]) with each contact's mu0;
+/// then the correlation within each ball, if any.
 pub fn describe_friction(
+    (mu_static, spread): (f64, f64),
+    contact_friction: Option<&[[f64; 2]]>,
+    (distribution, correlation): (&MuDistribution, f64),
+    uniform: &str,
+) -> String {
+    let text = describe_marginals((mu_static, spread), contact_friction, distribution, uniform);
+    if correlation > 0.0 {
+        format!(
+            "{text}, correlation {correlation} between the contacts of each ball (Gaussian copula)"
+        )
+    } else {
+        text
+    }
+}
+
+fn describe_marginals(
     (mu_static, spread): (f64, f64),
     contact_friction: Option<&[[f64; 2]]>,
     distribution: &MuDistribution,
@@ -192,5 +209,62 @@ pub fn describe_friction(
             };
             format!("mu_s {}", d.describe(&mu0s))
         }
+    }
+}
+
+/// The design coordinates `u` of the contacts (in contact order; `ball[k]`
+/// the ball of contact k) made dependent between the contacts of each
+/// ball by a Gaussian copula of correlation `rho` in [0, 1]: z = Phi^-1(u),
+/// z' = L z over each ball's contacts with L L^T the equicorrelation
+/// matrix (1 on the diagonal, rho elsewhere; its Cholesky factor, column j
+/// of a row left 0 where L_jj = 0, as at rho = 1), and u' = Phi(z')
+/// (Nelsen, *An Introduction to Copulas*, 2006, §2.3 and §5.3). Each z'_k is
+/// standard normal, so each u'_k stays uniform and each contact keeps its
+/// distribution. The first contact of each ball keeps its own coordinate
+/// (and its Latin-hypercube stratum); the others mix theirs with it, and
+/// at rho = 1 take the first one's exactly. `rho = 0` leaves `u` as it is.
+pub fn correlate(u: &mut [f64], ball: &[usize], rho: f64) {
+    if rho == 0.0 {
+        return;
+    }
+    if rho == 1.0 {
+        for k in 1..u.len() {
+            if ball[k] == ball[k - 1] {
+                u[k] = u[k - 1];
+            }
+        }
+        return;
+    }
+    let n = phi();
+    let mut start = 0;
+    while start < u.len() {
+        let end = start + ball[start..].iter().take_while(|&&b| b == ball[start]).count();
+        let m = end - start;
+        // Cholesky factor of the m x m equicorrelation matrix (0 < rho < 1:
+        // positive definite).
+        let mut l = vec![vec![0.0; m]; m];
+        for i in 0..m {
+            for j in 0..=i {
+                let target = if i == j { 1.0 } else { rho };
+                let dot: f64 = (0..j).map(|k| l[i][k] * l[j][k]).sum();
+                l[i][j] = if i == j {
+                    (target - dot).max(0.0).sqrt()
+                } else if l[j][j] > 0.0 {
+                    (target - dot) / l[j][j]
+                } else {
+                    0.0
+                };
+            }
+        }
+        // Coordinates of 0 or 1 (infinite z) moved inside by one ulp.
+        let z: Vec<f64> = u[start..end]
+            .iter()
+            .map(|&x| n.inverse_cdf(x.clamp(f64::EPSILON, 1.0 - f64::EPSILON)))
+            .collect();
+        for i in 1..m {
+            let zi: f64 = (0..=i).map(|k| l[i][k] * z[k]).sum();
+            u[start + i] = n.cdf(zi);
+        }
+        start = end;
     }
 }

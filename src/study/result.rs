@@ -58,6 +58,10 @@ pub struct VariantReport {
     /// `{"kind": "empirical", "values": [...]}` (ascending).
     #[serde(default, skip_serializing_if = "MuDistribution::is_uniform")]
     pub mu_distribution: MuDistribution,
+    /// `[friction] correlation` between the coefficients of one ball's
+    /// contacts (absent where 0).
+    #[serde(default, skip_serializing_if = "crate::scene::is_zero")]
+    pub mu_correlation: f64,
     pub dynamic_ratio: f64,
     /// Sliding coefficient: the sudden switch or the decay law
     /// (`{"law": "switch"}` or `{"law": "decay", "coefficient": c}`, c in s/m).
@@ -205,6 +209,7 @@ impl VariantReport {
             spread: f.spread,
             contact_friction: scene.contact_friction.clone(),
             mu_distribution: scene.mu_distribution.clone(),
+            mu_correlation: scene.mu_correlation,
             dynamic_ratio: f.dynamic_ratio,
             friction_law: f.law,
             ramp_time_s: scene.preload.ramp_time,

@@ -127,6 +127,18 @@ impl Variation {
         let mut tilt = offset.clone();
         let mut tol = self.tolerances.then(|| Tolerances::zero(scene));
         let mut physical = Vec::with_capacity(inputs.len());
+        // The friction columns (the first, one per contact) made dependent
+        // within each ball where `[friction] correlation` asks for it.
+        let correlated;
+        let row = if self.friction && scene.mu_correlation > 0.0 {
+            let mut r = row.to_vec();
+            let balls: Vec<usize> = scene.surfaces.iter().map(|s| s.ball).collect();
+            crate::scene::mu::correlate(&mut r[..balls.len()], &balls, scene.mu_correlation);
+            correlated = r;
+            &correlated[..]
+        } else {
+            row
+        };
         for (input, &u) in inputs.iter().zip(row) {
             let c = 2.0 * u - 1.0;
             let t = tol.as_mut();

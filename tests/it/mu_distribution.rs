@@ -157,3 +157,49 @@ fn distribution_keys_are_checked_at_their_line() {
     let (ok, _, err) = kinrepro(&["calibrate", &file, "--measured", measured.to_str().unwrap()]);
     assert!(!ok && err.contains("distribution = \"normal\""), "{err}");
 }
+
+fn pearson(a: &[f64], b: &[f64]) -> f64 {
+    let ((ma, sa), (mb, sb)) = (mean_sd(a), mean_sd(b));
+    let n = a.len() as f64;
+    a.iter().zip(b).map(|(x, y)| (x - ma) * (y - mb)).sum::<f64>() / ((n - 1.0) * sa * sb)
+}
+
+/// Contact `k`'s coefficients (0-based) of the draws of 6 contacts.
+fn contact(mu: &[f64], k: usize) -> Vec<f64> {
+    mu.iter().skip(k).step_by(6).copied().collect()
+}
+
+/// Correlation 1: the two contacts of each ball of scene 01 (contacts 1-2,
+/// 3-4, 5-6) draw the same coefficient; the balls stay independent.
+#[test]
+fn correlation_one_gives_a_ball_one_coefficient() {
+    let friction = "mu_static = 0.5\nspread = 0.05\ncorrelation = 1.0\ndistribution = \"uniform\"";
+    let (mu, v) = drawn("corr1", friction, "mc", "200");
+    for ball in 0..3 {
+        assert_eq!(contact(&mu, 2 * ball), contact(&mu, 2 * ball + 1), "ball {}", ball + 1);
+    }
+    assert!(pearson(&contact(&mu, 0), &contact(&mu, 2)).abs() < 3.0 / 199f64.sqrt());
+    assert_eq!(v["variants"][0]["mu_correlation"], 1.0);
+}
+
+/// Correlation 0.6 of normal coefficients (truncation negligible): the
+/// standard scores of one ball's two contacts correlate by 0.6 within
+/// 3 standard errors ((1 - rho^2)/sqrt(n - 1)), those of two balls by 0,
+/// and the second contact keeps its normal marginal (mean, sd).
+#[test]
+fn a_gaussian_copula_correlates_a_ball_and_keeps_the_marginals() {
+    let friction = "mu_static = 0.5\nsd = 0.05\ncorrelation = 0.6\ndistribution = \"normal\"";
+    let (mu, _) = drawn("corr06", friction, "mc", "400");
+    let n = 400.0f64;
+    let r_ball = pearson(&contact(&mu, 0), &contact(&mu, 1));
+    assert!((r_ball - 0.6).abs() < 3.0 * (1.0 - 0.36) / (n - 1.0).sqrt(), "one ball: {r_ball}");
+    let r_balls = pearson(&contact(&mu, 1), &contact(&mu, 2));
+    assert!(r_balls.abs() < 3.0 / (n - 1.0).sqrt(), "two balls: {r_balls}");
+    normal_moments_hold(&contact(&mu, 1), 0.5, 0.05, "contact 2");
+    normal_moments_hold(&contact(&mu, 3), 0.5, 0.05, "contact 4");
+    let text =
+        scene01("mu_static = 0.5\nspread = 0.05\ncorrelation = 1.5\ndistribution = \"uniform\"");
+    let line = text.lines().position(|l| l.starts_with("correlation =")).unwrap() + 1;
+    let err = Scene::parse(&text, "bad.toml").unwrap_err().to_string();
+    assert!(err.starts_with(&format!("bad.toml:{line}: friction.correlation: ")), "{err}");
+}

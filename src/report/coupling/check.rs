@@ -55,7 +55,7 @@ pub fn check_summary(s: &Scene, c: &Coupling) -> String {
     let mu = crate::scene::mu::describe_friction(
         (s.friction.mu_static, s.friction.spread),
         s.contact_friction.as_deref(),
-        &s.mu_distribution,
+        (&s.mu_distribution, s.mu_correlation),
         "(uniform)",
     );
     let _ = writeln!(

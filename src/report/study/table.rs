@@ -57,7 +57,7 @@ fn variant_text(v: &VariantReport) -> String {
     let mu = crate::scene::mu::describe_friction(
         (v.mu_static, v.spread),
         v.contact_friction.as_deref(),
-        &v.mu_distribution,
+        (&v.mu_distribution, v.mu_correlation),
         "uniform",
     );
     let _ = writeln!(

@@ -57,6 +57,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         friction,
         contact_friction,
         mu_distribution,
+        mu_correlation: tables::correlation(&f.friction, ctx)?,
         study,
         evaluation_points,
         dynamics,

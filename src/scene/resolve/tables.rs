@@ -213,6 +213,19 @@ fn distribution(
     }
 }
 
+/// `[friction] correlation`: in [0, 1] (0 where not given).
+pub fn correlation(fr: &FrictionFile, ctx: &ErrorContext) -> Result<f64, SceneError> {
+    let Some(c) = &fr.correlation else { return Ok(0.0) };
+    let rho = *c.get_ref();
+    if !(0.0..=1.0).contains(&rho) {
+        let why = format!(
+            "{rho} must lie in [0, 1]: the correlation between the coefficients of one ball's contacts"
+        );
+        return Err(ctx.error(Some(&c.span()), "friction.correlation", why));
+    }
+    Ok(rho)
+}
+
 /// `[study]`: at least 2 samples and a known sampler name.
 pub fn study(st: &StudyFile, ctx: &ErrorContext) -> Result<StudyDefaults, SceneError> {
     let samples = *st.samples.get_ref();
