@@ -8,7 +8,7 @@
 //! Numeric fields: `coupling.{diameter, ball_diameter,
 //! groove_element_diameter, groove_radius, canoe_radius, opening_angle_deg,
 //! support_compliance}`, `preload.{force, ramp_time}`, `friction.{mu_static,
-//! spread, dynamic_ratio, decay_coefficient}` and
+//! spread, sd, correlation, dynamic_ratio, decay_coefficient}` and
 //! `materials.NAME.{youngs_modulus, poisson_ratio, allowable_pressure,
 //! allowable_shear_stress, thermal_expansion}` (NAME: a `[[materials]]` entry of the scene or
 //! a built-in material; setting a built-in's constant adds an entry with
@@ -90,7 +90,10 @@ const NUMBERS: [(&str, &[&str]); 4] = [
         ],
     ),
     ("preload", &["force", "ramp_time"]),
-    ("friction", &["mu_static", "spread", "dynamic_ratio", "decay_coefficient"]),
+    (
+        "friction",
+        &["mu_static", "spread", "sd", "correlation", "dynamic_ratio", "decay_coefficient"],
+    ),
     ("thermal", &["path_tolerance"]),
 ];
 const MATERIAL_NUMBERS: [&str; 5] = [
@@ -239,6 +242,8 @@ fn set_friction(scene: &mut SceneFile, key: &str, x: f64, name: String) -> Resul
         // A number sets every contact's (it replaces a per-contact list).
         "mu_static" => f.mu_static = at(toml::Value::Float(x)),
         "spread" => f.spread = at(toml::Value::Float(x)),
+        "sd" => f.sd = Some(at(toml::Value::Float(x))),
+        "correlation" => f.correlation = Some(at(x)),
         "dynamic_ratio" => f.dynamic_ratio = at(x),
         "decay_coefficient" => f.decay_coefficient = Some(at(x)),
         "distribution" => f.distribution = keyword(&name)?,

@@ -19,7 +19,7 @@ use kinrepro::study::{StudyOptions, StudyPlan, StudyReport};
 use crate::common::{self, kinrepro};
 
 /// Each bundled scene's `scene_content` under its own `[study]` design.
-const PINNED: [(&str, &str); 16] = [
+const PINNED: [(&str, &str); 17] = [
     ("01_maxwell_vgroove_steel.toml", "22a74c32637fd702"),
     ("02_maxwell_pins_steel.toml", "09a2030cf11862f9"),
     ("03_maxwell_pins_sic.toml", "2621f3b51126e9ea"),
@@ -34,6 +34,7 @@ const PINNED: [(&str, &str); 16] = [
     ("maxwell_crossed_pins_steel.toml", "3c6b9475e40986e1"),
     ("maxwell_flexure_grooves.toml", "e28221e225e9f9a7"),
     ("maxwell_gothic_arch_steel.toml", "48972e3adcc23cb7"),
+    ("maxwell_mixed_friction.toml", "f9e2e79bdf8af2aa"),
     ("maxwell_thermal_alu_invar.toml", "f1d7dd4ed04c04b0"),
     ("tolerances_maxwell_vgroove.toml", "bd54322ea50f98b8"),
 ];
