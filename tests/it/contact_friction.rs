@@ -115,3 +115,43 @@ fn bad_lists_are_refused_naming_the_field_and_line() {
     let (ok, _, err) = kinrepro(&["calibrate", &file, "--measured", measured.to_str().unwrap()]);
     assert!(!ok && err.contains("per contact"), "{err}");
 }
+
+/// A table by ball gives each ball's contacts its value: the same study,
+/// record for record, as the list that repeats it per contact (scene 01:
+/// contacts 1-2 on ball 1, 3-4 on ball 2, 5-6 on ball 3); a table must
+/// name every ball, by its number, with numbers.
+#[test]
+fn a_table_by_ball_is_the_list_per_contact() {
+    let table = write(
+        "by_ball",
+        &scene01(
+            "mu_static = { 1 = 0.5, 2 = 0.15, 3 = 0.5 }\nspread = { 1 = 0.05, 3 = 0.05, 2 = 0.02 }",
+        ),
+    );
+    let list = write(
+        "by_contact",
+        &scene01(
+            "mu_static = [0.5, 0.5, 0.15, 0.15, 0.5, 0.5]\nspread = [0.05, 0.05, 0.02, 0.02, 0.05, 0.05]",
+        ),
+    );
+    let (a, b) = (study(&table, &[]), study(&list, &[]));
+    assert_eq!(a["variants"][0]["records"], b["variants"][0]["records"]);
+    assert_eq!(a["variants"][0]["contact_friction"][2], serde_json::json!([0.15, 0.02]));
+    for (friction, says) in [
+        ("mu_static = { 1 = 0.5, 2 = 0.15 }\nspread = 0.01", "ball 3 is missing"),
+        ("mu_static = { 1 = 0.5, 2 = 0.15, 3 = 0.5, 4 = 0.5 }\nspread = 0.01", "'4' is not a ball"),
+        (
+            "mu_static = { 1 = 0.5, 2 = \"oil\", 3 = 0.5 }\nspread = 0.01",
+            "ball 2: the value must be a number",
+        ),
+    ] {
+        let text = scene01(friction);
+        let line = text.lines().position(|l| l.starts_with("mu_static =")).unwrap() + 1;
+        let err = Scene::parse(&text, "bad.toml").unwrap_err().to_string();
+        assert!(
+            err.starts_with(&format!("bad.toml:{line}: friction.mu_static: "))
+                && err.contains(says),
+            "{err}"
+        );
+    }
+}

@@ -43,7 +43,7 @@ mod scene_tables {
 
     fn friction_of(text: &str) -> Result<FrictionSettings, SceneError> {
         let f: FrictionFile = toml::from_str(text).unwrap();
-        friction(&f, 6, &ErrorContext::new("f.toml", text)).map(|(s, _, _)| s)
+        friction(&f, &[0, 0, 1, 1, 2, 2], &ErrorContext::new("f.toml", text)).map(|(s, _, _)| s)
     }
 
     /// mu_s may vary in mu0 +- spread only while it stays in [0, MU_MAX]:

@@ -23,8 +23,9 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     let balls = geometry::balls(f, &fx)?;
     let surfaces = geometry::surfaces(f, &fx, &balls)?;
     let preload = preload::preload(&f.preload, f.dynamics.as_ref(), &fx, f.allow_large_values)?;
+    let ball_of: Vec<usize> = surfaces.iter().map(|s| s.ball).collect();
     let (friction, contact_friction, mu_distribution) =
-        tables::friction(&f.friction, surfaces.len(), ctx)?;
+        tables::friction(&f.friction, &ball_of, ctx)?;
     let tangential = surfaces.iter().position(|s| s.tangential_compliance > 0.0);
     if let (Some(i), TangentialLaw::MindlinDeresiewicz) = (tangential, friction.tangential_law) {
         return Err(ctx.error(

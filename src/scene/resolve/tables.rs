@@ -21,14 +21,18 @@ pub const MU_MAX: f64 = 2.0;
 
 /// `[friction]`: 0 <= mu_s <= [`MU_MAX`], 0 <= spread <= mu_s with
 /// mu_s + spread <= [`MU_MAX`], 0 < dynamic_ratio <= 1, and the law.
-/// One number of `friction.<key>`, or one per contact: the values and
-/// whether a list was given (checked: finite, as many as `contacts`).
+/// One number of `friction.<key>`, one per contact (a list in contact
+/// order), or one per ball (a table `{ 1 = 0.5, 2 = 0.15, 3 = 0.5 }` by
+/// ball number, every ball given, each ball's value at all its
+/// contacts); `ball_of[k]` is contact k's ball (0-based). The values per
+/// contact and whether they may differ (a list or a table was given).
 fn per_contact(
     v: &Spanned<toml::Value>,
     key: &str,
-    contacts: usize,
+    ball_of: &[usize],
     ctx: &ErrorContext,
 ) -> Result<(Vec<f64>, bool), SceneError> {
+    let contacts = ball_of.len();
     let field = format!("friction.{key}");
     let number = |x: &toml::Value| x.as_float().or(x.as_integer().map(|i| i as f64));
     let bad = |why: String| ctx.error(Some(&v.span()), field.clone(), why);
@@ -45,13 +49,37 @@ fn per_contact(
             let values = values.ok_or_else(|| bad("every value must be a number".into()))?;
             Ok((values, true))
         }
+        toml::Value::Table(t) => Ok((by_ball(t, ball_of, &bad)?, true)),
         x => match number(x) {
             Some(n) => Ok((vec![n; contacts], false)),
-            None => {
-                Err(bad(format!("expected a number or a list of numbers, found {}", x.type_str())))
-            }
+            None => Err(bad(format!(
+                "expected a number, a list with one per contact or a table by ball, found {}",
+                x.type_str()
+            ))),
         },
     }
+}
+
+/// The values per contact of a table by ball number (1-based; module docs
+/// of [`per_contact`]).
+fn by_ball(
+    t: &toml::Table,
+    ball_of: &[usize],
+    bad: &dyn Fn(String) -> SceneError,
+) -> Result<Vec<f64>, SceneError> {
+    let balls = ball_of.iter().max().map_or(0, |b| b + 1);
+    let mut value = vec![None; balls];
+    for (key, x) in t {
+        let b = key.parse::<usize>().ok().filter(|b| (1..=balls).contains(b)).ok_or_else(|| {
+            bad(format!("'{key}' is not a ball: the keys are ball numbers 1 to {balls}"))
+        })?;
+        let n = x.as_float().or(x.as_integer().map(|i| i as f64));
+        value[b - 1] = Some(n.ok_or_else(|| bad(format!("ball {b}: the value must be a number")))?);
+    }
+    if let Some(b) = value.iter().position(Option::is_none) {
+        return Err(bad(format!("ball {} is missing: give every ball of the {balls}", b + 1)));
+    }
+    Ok(ball_of.iter().map(|&b| value[b].unwrap_or(0.0)).collect())
 }
 
 /// [mu_static, spread] of each contact, in contact order.
@@ -63,11 +91,12 @@ pub type ContactFriction = Vec<[f64; 2]>;
 /// mu0 + spread <= MU_MAX.
 pub fn friction(
     fr: &FrictionFile,
-    contacts: usize,
+    ball_of: &[usize],
     ctx: &ErrorContext,
 ) -> Result<(FrictionSettings, Option<ContactFriction>, MuDistribution), SceneError> {
-    let (mus, mu_list) = per_contact(&fr.mu_static, "mu_static", contacts, ctx)?;
-    let (spreads, spread_list) = per_contact(&fr.spread, "spread", contacts, ctx)?;
+    let contacts = ball_of.len();
+    let (mus, mu_list) = per_contact(&fr.mu_static, "mu_static", ball_of, ctx)?;
+    let (spreads, spread_list) = per_contact(&fr.spread, "spread", ball_of, ctx)?;
     let at =
         |list: bool, k: usize| if list { format!(" (contact {})", k + 1) } else { String::new() };
     for (k, (&mu, &spread)) in mus.iter().zip(&spreads).enumerate() {
@@ -105,8 +134,8 @@ pub fn friction(
     };
     let lists =
         (mu_list || spread_list).then(|| mus.iter().zip(&spreads).map(|(&m, &s)| [m, s]).collect());
-    let distribution =
-        distribution(fr, &mus, spread_list || spreads.iter().any(|&s| s > 0.0), ctx)?;
+    let has_spread = spread_list || spreads.iter().any(|&s| s > 0.0);
+    let distribution = distribution(fr, &mus, ball_of, has_spread, ctx)?;
     let ratio = *fr.dynamic_ratio.get_ref();
     if !(ratio > 0.0 && ratio <= 1.0) {
         return Err(ctx.error(
@@ -133,6 +162,7 @@ pub fn friction(
 fn distribution(
     fr: &FrictionFile,
     mus: &[f64],
+    ball_of: &[usize],
     has_spread: bool,
     ctx: &ErrorContext,
 ) -> Result<MuDistribution, SceneError> {
@@ -167,7 +197,7 @@ fn distribution(
                 let why = format!("a {name} distribution needs sd, the standard deviation of mu_s");
                 return Err(ctx.error(Some(&fr.mu_static.span()), "friction.sd", why));
             };
-            let (sd, _) = per_contact(sd, "sd", mus.len(), ctx)?;
+            let (sd, _) = per_contact(sd, "sd", ball_of, ctx)?;
             for (k, (&s, &mu)) in sd.iter().zip(mus).enumerate() {
                 let at = format!(" (contact {})", k + 1);
                 if !(s.is_finite() && s >= 0.0) {
