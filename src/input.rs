@@ -15,8 +15,9 @@ pub const MAX_INPUT_BYTES: u64 = 256 << 20;
 /// The text of `path`, refused (an `InvalidData` error giving the size and
 /// the bound) if it holds more than [`MAX_INPUT_BYTES`]: a regular file by
 /// its size before anything is read, any other (a pipe, a device) once
-/// more than the bound has arrived. The file is noted as an input of the
-/// command (`output::inputs`), which no output of it may replace.
+/// more than the bound has arrived. A leading UTF-8 byte-order mark is
+/// dropped. The file is noted as an input of the command
+/// (`output::inputs`), which no output of it may replace.
 pub fn read_to_string(path: impl AsRef<Path>) -> std::io::Result<String> {
     let file = std::fs::File::open(&path)?;
     crate::output::inputs::register(path.as_ref());
@@ -29,7 +30,20 @@ pub fn read_to_string(path: impl AsRef<Path>) -> std::io::Result<String> {
     if text.len() as u64 > MAX_INPUT_BYTES {
         return Err(too_large(&format!("more than {MAX_INPUT_BYTES} bytes")));
     }
+    if text.starts_with(BOM) {
+        text.drain(..BOM.len_utf8());
+    }
     Ok(text)
+}
+
+/// The UTF-8 byte-order mark some editors put at the start of a file.
+const BOM: char = '\u{feff}';
+
+/// `text` without a leading byte-order mark (a file's text passed as a
+/// string: Python's `Study.from_json`); [`read_to_string`] drops it too, so
+/// that a scene, a CSV and a JSON document read the same with or without.
+pub fn without_bom(text: &str) -> &str {
+    text.strip_prefix(BOM).unwrap_or(text)
 }
 
 fn too_large(size: &str) -> std::io::Error {

@@ -51,7 +51,7 @@ impl Study {
     /// a merge).
     #[staticmethod]
     fn from_json(text: &str) -> PyResult<Study> {
-        let report = serde_json::from_str(text)
+        let report = serde_json::from_str(kinrepro::input::without_bom(text))
             .map_err(|e| err(format!("not a kinrepro study JSON: {e}")))?;
         Ok(Study { report })
     }

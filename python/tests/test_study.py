@@ -89,6 +89,8 @@ def test_from_json_round_trips(study01):
     again = kinrepro.Study.from_json(text)
     assert again == study01
     assert again.to_json() == text
+    # Saved by an editor that writes a byte-order mark: the same document.
+    assert kinrepro.Study.from_json("\ufeff" + text) == study01
     with pytest.raises(kinrepro.KinreproError, match="not a kinrepro study JSON"):
         kinrepro.Study.from_json("{}")
 

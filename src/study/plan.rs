@@ -58,6 +58,16 @@ impl StudyPlan {
         let sobol = settings.sobol_samples.filter(|_| settings.shard.count == 1);
         let mut plan =
             StudyPlan { settings, variants: Vec::with_capacity(models.len()), sobol, seatings: 0 };
+        if let Some(n @ 0..=1) = options.samples
+            && options.sampler != Some(Sampler::Corners)
+        {
+            let why = "a study needs at least 2 samples (a sigma needs two)";
+            return Err(ParamError::new(
+                Param::Samples,
+                format!("{}: {why}", Param::Samples.with(n)),
+            )
+            .into());
+        }
         let mut kept = 0usize;
         for (scene, coupling) in models {
             let mut v = plan.variant(scene, coupling, options)?;

@@ -294,3 +294,37 @@ fn history_mu_outside_the_scenes_bound_is_refused() {
         contact(&["--shape", "sphere-plane", "--radius1", "0.005", "--history", &p, "--mu", "2"]);
     assert!(ok, "{err}");
 }
+
+/// `--samples 0` (or 1) names the option, not the scene file.
+#[test]
+fn too_few_samples_name_the_option() {
+    for n in ["0", "1"] {
+        let err =
+            refused(&["study", &s01(), "--samples", n], &[&format!("--samples {n}"), "at least 2"]);
+        assert!(!err.contains("01_maxwell"), "{err}");
+    }
+}
+
+/// `load`: a moment alone is a load (no --force, no --at); a force needs
+/// its point, and the message says so instead of a count of values.
+#[test]
+fn load_takes_a_moment_alone_and_a_force_with_its_point() {
+    let (ok, out, err) = kinrepro(&["load", &s01(), "--moment", "0,0,0.01"]);
+    assert!(ok && out.contains("load factor"), "{err}");
+    refused(&["load", &s01(), "--force", "0,0,-10"], &["--force needs --at"]);
+    refused(&["load", &s01()], &["--force", "--moment"]);
+}
+
+/// A study JSON saved with a byte-order mark (as some editors do) reads
+/// as the same document, as scenes and CSV files do.
+#[test]
+fn a_study_json_with_a_byte_order_mark_is_read() {
+    let (ok, json, err) = kinrepro(&["study", &s01(), "--samples", "10", "--format", "json"]);
+    assert!(ok, "{err}");
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("bom.json");
+    std::fs::write(&path, format!("\u{feff}{json}")).unwrap();
+    let (ok, merged, err) = kinrepro(&["merge", path.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    assert_eq!(merged, json);
+}

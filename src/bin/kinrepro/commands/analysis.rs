@@ -76,9 +76,15 @@ impl TryFrom<LoadArgs> for LoadCommand {
     type Error = Error;
 
     fn try_from(a: LoadArgs) -> Result<LoadCommand> {
+        if a.force.is_none() && a.moment.is_none() {
+            usage!("give --force FX,FY,FZ with --at X,Y,Z, or --moment MX,MY,MZ, or both");
+        }
+        if a.force.is_some() && a.at.is_none() {
+            usage!("--force needs --at X,Y,Z: the point of the moving half it acts at [m]");
+        }
         let external = ExternalLoad {
-            force: finite3("force", Some(&a.force))?,
-            point: finite3("at", Some(&a.at))?,
+            force: finite3("force", a.force.as_deref())?,
+            point: finite3("at", a.at.as_deref())?,
             moment: finite3("moment", a.moment.as_deref())?,
         };
         if external.force.norm() == 0.0 && external.moment.norm() == 0.0 {

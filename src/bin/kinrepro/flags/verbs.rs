@@ -145,12 +145,12 @@ pub struct ThermalArgs {
 pub struct LoadArgs {
     /// Scene file (TOML).
     pub scene: PathBuf,
-    /// Force fx,fy,fz [N] (fixed direction).
+    /// Force fx,fy,fz [N] (fixed direction; default 0: a moment alone).
     #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
-    pub force: Vec<f64>,
-    /// Point of application x,y,z in the moving half [m].
+    pub force: Option<Vec<f64>>,
+    /// Point of application x,y,z in the moving half [m] (needed with --force).
     #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
-    pub at: Vec<f64>,
+    pub at: Option<Vec<f64>>,
     /// Moment mx,my,mz [N m] (default 0).
     #[arg(long, value_delimiter = ',', num_args = 1, allow_hyphen_values = true)]
     pub moment: Option<Vec<f64>>,
