@@ -53,6 +53,9 @@ impl Study {
     fn from_json(text: &str) -> PyResult<Study> {
         let report = serde_json::from_str(kinrepro::input::without_bom(text))
             .map_err(|e| err(format!("not a kinrepro study JSON: {e}")))?;
+        // Checked as `report` and `merge` check a document: ranges, and the
+        // statistics against the records they come from.
+        kinrepro::study::validate::check_document(&report).map_err(err)?;
         Ok(Study { report })
     }
 

@@ -91,6 +91,11 @@ def test_from_json_round_trips(study01):
     assert again.to_json() == text
     # Saved by an editor that writes a byte-order mark: the same document.
     assert kinrepro.Study.from_json("\ufeff" + text) == study01
+    # A statistic its records contradict is refused, naming it.
+    doc = json.loads(text)
+    doc["variants"][0]["points"][0]["sigma"]["x_nm"] = 1e6
+    with pytest.raises(kinrepro.KinreproError, match=r"sigma\.x_nm: 1000000 disagrees with the records"):
+        kinrepro.Study.from_json(json.dumps(doc))
     with pytest.raises(kinrepro.KinreproError, match="not a kinrepro study JSON"):
         kinrepro.Study.from_json("{}")
 

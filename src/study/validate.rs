@@ -40,8 +40,65 @@ pub fn check_document(report: &StudyReport) -> Result<(), DocumentError> {
         for (j, p) in v.points.iter().chain(&v.interchangeability).enumerate() {
             check_point(v, p, &format!("{at}.points[{j}] ({})", p.name))?;
         }
+        check_statistics(v, &at)?;
     }
     Ok(())
+}
+
+/// The statistics of a whole variant that holds every record, recomputed
+/// from the records as `merge` does (`VariantReport::finish`) and compared
+/// with the document's: a hand-edited sigma (or mean, min, max, interval)
+/// that its records contradict is refused, naming it. A shard, or a
+/// streamed study without records, has nothing to recompute from.
+fn check_statistics(v: &VariantReport, at: &str) -> Result<(), DocumentError> {
+    if v.partial || v.records.is_empty() || v.records.len() != v.samples {
+        return Ok(());
+    }
+    let mut again = v.clone();
+    if let Err(e) = again.finish() {
+        return Err(bad(format!("{at}.records"), format!("give no statistics: {e}")));
+    }
+    let (given, computed) = (
+        v.points.iter().chain(&v.interchangeability),
+        again.points.iter().chain(&again.interchangeability),
+    );
+    for (j, (p, q)) in given.zip(computed).enumerate() {
+        let (a, b) = (serde_json::to_value(p), serde_json::to_value(q));
+        let (Ok(a), Ok(b)) = (a, b) else { continue };
+        if let Some((path, x, y)) = first_difference(&a, &b, String::new()) {
+            return Err(bad(
+                format!("{at}.points[{j}] ({}){path}", p.name),
+                format!("{x} disagrees with the records, which give {y}"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The first number of `a` that differs from `b`'s by more than 1e-9
+/// relative (the JSON path below `path`, the two values).
+fn first_difference(
+    a: &serde_json::Value,
+    b: &serde_json::Value,
+    path: String,
+) -> Option<(String, f64, f64)> {
+    use serde_json::Value;
+    match (a, b) {
+        (Value::Number(x), Value::Number(y)) => {
+            let (x, y) = (x.as_f64()?, y.as_f64()?);
+            let close = (x - y).abs() <= 1e-9 * x.abs().max(y.abs()) || x == y;
+            (!close).then_some((path, x, y))
+        }
+        (Value::Object(m), Value::Object(n)) => m.iter().find_map(|(k, x)| {
+            n.get(k).and_then(|y| first_difference(x, y, format!("{path}.{k}")))
+        }),
+        (Value::Array(m), Value::Array(n)) => m
+            .iter()
+            .zip(n)
+            .enumerate()
+            .find_map(|(i, (x, y))| first_difference(x, y, format!("{path}[{i}]"))),
+        _ => None,
+    }
 }
 
 /// The scene's `[friction]` bounds, and the fingerprint agreeing.

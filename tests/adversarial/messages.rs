@@ -328,3 +328,35 @@ fn a_study_json_with_a_byte_order_mark_is_read() {
     assert!(ok, "{err}");
     assert_eq!(merged, json);
 }
+
+/// A hand-edited statistic that its records contradict (sigma_x set to
+/// 1e6 nm) is refused by `report` and `merge`, naming the field and the
+/// value the records give; the untouched document is accepted.
+#[test]
+fn a_statistic_its_records_contradict_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("s.toml");
+    std::fs::copy(common::scene(SCENE01), &scene).unwrap();
+    let (ok, json, err) =
+        kinrepro(&["study", scene.to_str().unwrap(), "--samples", "10", "--format", "json"]);
+    assert!(ok, "{err}");
+    let mut doc: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let true_sigma = doc["variants"][0]["points"][0]["sigma"]["x_nm"].as_f64().unwrap();
+    doc["variants"][0]["points"][0]["sigma"]["x_nm"] = serde_json::json!(1e6);
+    let (good, bad) = (dir.path().join("good.json"), dir.path().join("bad.json"));
+    std::fs::write(&good, &json).unwrap();
+    std::fs::write(&bad, doc.to_string()).unwrap();
+    let html = dir.path().join("r.html").display().to_string();
+    let (ok, _, err) = kinrepro(&["report", good.to_str().unwrap(), "--out", &html]);
+    assert!(ok, "{err}");
+    for cmd in [
+        vec!["report", bad.to_str().unwrap(), "--out", &html, "--force"],
+        vec!["merge", bad.to_str().unwrap()],
+    ] {
+        let err = refused(
+            &cmd,
+            &["points[0] (centre).sigma.x_nm", "1000000", "disagrees with the records"],
+        );
+        assert!(err.contains(&true_sigma.to_string()), "{err}");
+    }
+}
