@@ -146,9 +146,11 @@ impl Sampler {
         }
     }
 
-    /// The sampler named `name` (ASCII case-insensitive, trimmed).
+    /// The sampler named `name`, spelled exactly as [`Sampler::name`]
+    /// (as every other keyword of a scene: `MC` is refused, not read as
+    /// `mc`).
     pub fn parse(name: &str) -> Option<Self> {
-        match name.trim().to_ascii_lowercase().as_str() {
+        match name {
             "lhs" => Some(Sampler::Lhs),
             "mc" => Some(Sampler::MonteCarlo),
             "corners" => Some(Sampler::Corners),

@@ -360,3 +360,36 @@ fn a_statistic_its_records_contradict_is_refused() {
         assert!(err.contains(&true_sigma.to_string()), "{err}");
     }
 }
+
+/// Keys accepted without effect are refused at file:line:field: a
+/// sampler spelt `MC` (every keyword is exact), an empty material name, a
+/// `radius` on an explicit plane; and `--angle-deg` beyond a turn.
+#[test]
+fn inputs_without_effect_are_refused() {
+    let (_dir, path) = edited("sampler = \"lhs\"", "sampler = \"MC\"");
+    refused(&["check", &path], &[":", "study.sampler", "unknown sampler 'MC'"]);
+    refused(&["study", &s01(), "--sampler", "MC"], &["--sampler", "unknown sampler 'MC'"]);
+    let (_dir, path) = edited(
+        "[friction]",
+        "[[materials]]\nname = \"\"\nyoungs_modulus = 2e11\npoisson_ratio = 0.3\n\n[friction]",
+    );
+    refused(&["check", &path], &["materials[1].name", "is empty"]);
+    let explicit = std::fs::read_to_string(common::scene("custom_kelvin_explicit.toml")).unwrap();
+    let plane = "normal = [0.0, 0.707106781187, 0.707106781187]";
+    assert!(explicit.contains(plane));
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("r.toml");
+    std::fs::write(&path, explicit.replacen(plane, &format!("radius = 0.002\n{plane}"), 1))
+        .unwrap();
+    refused(
+        &["check", path.to_str().unwrap()],
+        &["surfaces[1].radius", "a plane takes point, normal, not radius"],
+    );
+    let curv = ["--radii1", "0.005,0.005", "--radii2", "0.002,inf", "--load", "5", "--angle-deg"];
+    for angle in ["1e308", "361", "nan"] {
+        let mut args = vec!["contact", "--material1", "steel", "--material2", "steel"];
+        args.extend(curv);
+        args.push(angle);
+        refused(&args, &["--angle-deg", "[-360, 360]"]);
+    }
+}

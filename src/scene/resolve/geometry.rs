@@ -75,6 +75,7 @@ fn surface(s: &SurfaceFile, i: usize, fx: &Fields, n_balls: usize) -> Result<Sur
         let r = s.radius.as_ref().ok_or_else(|| missing(s, ctx, &field("radius"), "radius"))?;
         fx.positive(r, &field("radius"), "m")
     };
+    unused_keys(s, ctx, &field)?;
     let geometry = match s.kind.get_ref() {
         SurfaceKind::Plane => SurfaceGeometry::Plane {
             point: fx.finite(&need(&s.point, "point")?, &field("point"))?,
@@ -108,6 +109,43 @@ fn surface(s: &SurfaceFile, i: usize, fx: &Fields, n_balls: usize) -> Result<Sur
         tangential_compliance: support.tangential,
         moving: moving_patch(s, i, fx)?,
     })
+}
+
+/// A key of another surface type given to `s` (a `radius` on a plane):
+/// refused, since it would have no effect.
+fn unused_keys(
+    s: &SurfaceFile,
+    ctx: &ErrorContext,
+    field: &dyn Fn(&str) -> String,
+) -> Result<(), SceneError> {
+    let (name, takes): (&str, &[&str]) = match s.kind.get_ref() {
+        SurfaceKind::Plane => ("plane", &["point", "normal"]),
+        SurfaceKind::Cylinder | SurfaceKind::ConcaveCylinder => {
+            ("cylinder", &["axis_point", "direction", "radius"])
+        }
+        SurfaceKind::Sphere => ("sphere", &["centre", "radius"]),
+    };
+    let numbers = |v: &Option<Spanned<Numbers>>| v.as_ref().map(|x| x.span());
+    let given = [
+        ("point", numbers(&s.point)),
+        ("normal", numbers(&s.normal)),
+        ("axis_point", numbers(&s.axis_point)),
+        ("direction", numbers(&s.direction)),
+        ("centre", numbers(&s.centre)),
+        ("radius", s.radius.as_ref().map(|x| x.span())),
+    ];
+    for (key, span) in given {
+        if let Some(span) = span
+            && !takes.contains(&key)
+        {
+            let why = format!(
+                "a {name} takes {}, not {key}: remove it (it would have no effect)",
+                takes.join(", ")
+            );
+            return Err(ctx.error(Some(&span), field(key), why));
+        }
+    }
+    Ok(())
 }
 
 /// The moving element's own patch at surface `i`: `moving_centre` and

@@ -21,6 +21,13 @@ pub fn user_materials(
     for (i, (m, mat)) in f.materials.iter().zip(material_entries(f, ctx)?).enumerate() {
         let name = m.name.get_ref();
         let field = format!("materials[{}]", i + 1);
+        if name.trim().is_empty() {
+            return Err(ctx.error(
+                Some(&m.name.span()),
+                format!("{field}.name"),
+                "is empty: a material needs a name the scene can refer to".to_string(),
+            ));
+        }
         let builtin = Material::builtin(name).is_ok();
         let replaces = m.replaces.as_ref().is_some_and(|r| *r.get_ref());
         let first = out.get(name).map(|(_, j)| *j);

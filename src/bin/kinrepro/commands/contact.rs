@@ -57,6 +57,17 @@ impl TryFrom<ContactArgs> for Contact {
     }
 }
 
+/// `--angle-deg` in radians: finite and within one turn each way (beyond
+/// it the sine and cosine of a large number carry its rounding only).
+fn angle_rad(deg: Option<f64>) -> Result<f64> {
+    let deg = deg.unwrap_or(0.0);
+    if !(deg.is_finite() && deg.abs() <= 360.0) {
+        let shown = if deg.abs() < 1e6 { deg.to_string() } else { format!("{deg:e}") };
+        usage!("--angle-deg {shown}: give an angle in [-360, 360] degrees");
+    }
+    Ok(deg.to_radians())
+}
+
 /// `--mu` and `--dynamic-ratio` of `--history`.
 fn history_friction(a: &ContactArgs) -> Result<Friction> {
     let mu = a.mu.unwrap_or(f64::NAN);
@@ -86,7 +97,7 @@ fn pair(a: &ContactArgs) -> Result<ContactPair> {
             curvature: PairCurvature {
                 radii1: principal_radii("--radii1", r1)?,
                 radii2: principal_radii("--radii2", r2)?,
-                angle: a.angle_deg.unwrap_or(0.0).to_radians(),
+                angle: angle_rad(a.angle_deg)?,
             },
             material1,
             material2,
