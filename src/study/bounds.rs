@@ -33,15 +33,24 @@ pub fn check(what: &'static str, count: Option<usize>, max: usize) -> Result<usi
 }
 
 /// Typical cost of one seating on one core [s]: a quasi-static seating of a
-/// three-contact coupling (scene 01, about 50 us) or a dynamic one (about
-/// 0.08 s). Measured on the development machine; a run's progress line
-/// gives the measured rate.
+/// three-contact coupling (scene 01, about 50 us on the controlled path of
+/// 9 increments), or [`SECONDS_PER_INCREMENT`] per increment where fixed
+/// increments (`--increments N`) cost more; a dynamic one about 0.08 s.
+/// Measured on the development machine; a run's progress line gives the
+/// measured rate.
 pub fn seating_seconds(method: &crate::solve::Method) -> f64 {
     match method {
+        crate::solve::Method::QuasiStatic(o) if o.path_tolerance.is_none() => {
+            (o.increments as f64 * SECONDS_PER_INCREMENT).max(50e-6)
+        }
         crate::solve::Method::QuasiStatic(_) => 50e-6,
         crate::solve::Method::Dynamic(_) => 0.08,
     }
 }
+
+/// One fixed load increment of a scene-01 seating on one core [s]:
+/// `run --increments 100000` takes 0.18 s.
+pub const SECONDS_PER_INCREMENT: f64 = 1.8e-6;
 
 /// Runs estimated above this many seconds say so before they start.
 pub const ANNOUNCE_ABOVE_S: f64 = 60.0;

@@ -176,3 +176,21 @@ fn pareto_labels_are_placed_apart_and_inside() {
         }
     }
 }
+
+mod run_estimate {
+    use kinrepro::solve::{Method, SolverOptions};
+    use kinrepro::study::bounds::{estimate_note, seating_seconds};
+
+    /// The estimate follows the fixed increments asked for: ten times the
+    /// increments, ten times the time per seating (above the controlled
+    /// path's floor), so `--increments 100000 --samples 1000` is announced
+    /// before it starts, while the default path's 1000 seatings are not.
+    #[test]
+    fn the_estimate_scales_with_the_increments() {
+        let fixed = |n| Method::QuasiStatic(SolverOptions::fixed(n));
+        let (a, b) = (seating_seconds(&fixed(10_000)), seating_seconds(&fixed(100_000)));
+        assert!((b / a - 10.0).abs() < 1e-12, "{a} {b}");
+        assert!(estimate_note(1000, &fixed(100_000), 2).is_some());
+        assert!(estimate_note(1000, &Method::QuasiStatic(SolverOptions::default()), 2).is_none());
+    }
+}
