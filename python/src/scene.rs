@@ -44,12 +44,16 @@ impl Scene {
 
 /// One `Scene` or a list of them (`what`: the argument's name).
 pub fn scenes(arg: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Scene>> {
-    match arg.extract::<Scene>() {
-        Ok(s) => Ok(vec![s]),
+    let list: Vec<Scene> = match arg.extract::<Scene>() {
+        Ok(s) => vec![s],
         Err(_) => arg
             .extract()
-            .map_err(|_| err(format!("{what}: give a kinrepro.Scene or a list of them"))),
+            .map_err(|_| err(format!("{what}: give a kinrepro.Scene or a list of them")))?,
+    };
+    if list.is_empty() {
+        return Err(err(format!("{what}: an empty list; give at least one kinrepro.Scene")));
     }
+    Ok(list)
 }
 
 #[pymethods]
@@ -89,6 +93,10 @@ impl Scene {
         let mut typed = SceneFile::parse(&self.text, &self.file).map_err(err)?;
         let kind = kind_of(field, &typed).map_err(err)?;
         let v = match kind {
+            // A bool is an int to Python (True == 1): not a number of a scene.
+            FieldKind::Number if value.is_instance_of::<pyo3::types::PyBool>() => {
+                return Err(err(format!("{field}: needs a number, got {value}")));
+            }
             FieldKind::Number => SweptValue::Number(
                 value
                     .extract::<f64>()

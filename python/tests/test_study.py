@@ -133,6 +133,12 @@ def test_scene_set_and_toml(scene01):
     assert scene01.to_toml() != s.to_toml()  # the original is unchanged
     with pytest.raises(kinrepro.KinreproError, match="preload.bogus"):
         scene01.set("preload.bogus", 1.0)
+    # True is 1 to Python, not a force: refused, as a string would be.
+    with pytest.raises(kinrepro.KinreproError, match="preload.force: needs a number, got True"):
+        scene01.set("preload.force", True)
+    # No scene, no study (not an empty one).
+    with pytest.raises(kinrepro.KinreproError, match="empty list"):
+        kinrepro.study([])
     # A value the scene refuses names the set, not a line of a file the
     # user never wrote (the set scene is new text).
     with pytest.raises(kinrepro.KinreproError) as e:
