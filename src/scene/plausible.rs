@@ -287,6 +287,18 @@ pub fn check_explicit(
         }
     }
     check_surfaces(f, ctx)?;
+    for (i, e) in f.evaluation_points.iter().enumerate() {
+        let number = |x: &toml::Value| x.as_float().or(x.as_integer().map(|i| i as f64));
+        let r = e.position.get_ref().0.iter().filter_map(number).map(|x| x * x).sum::<f64>().sqrt();
+        if r > CIRCLE_DIAMETER_MAX {
+            return Err(too_large(
+                ctx,
+                Some(&e.position.span()),
+                &format!("evaluation_points[{}].position", i + 1),
+                format!("the point lies {r} m from the origin (limit {CIRCLE_DIAMETER_MAX} m)"),
+            ));
+        }
+    }
     let p = &f.preload;
     let listed = p.forces.iter().enumerate();
     let forces = listed.filter_map(|(i, e)| {

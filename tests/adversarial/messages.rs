@@ -393,3 +393,17 @@ fn inputs_without_effect_are_refused() {
         refused(&args, &["--angle-deg", "[-360, 360]"]);
     }
 }
+
+/// An evaluation point 12 m from the origin (12 mm meant) is refused by
+/// the length guard at its line, as a preload point is; 1 m is accepted.
+#[test]
+fn an_evaluation_point_in_millimetres_is_refused() {
+    let point = |z: &str| {
+        format!("[[evaluation_points]]\nname = \"tip\"\nposition = [0.0, 0.0, {z}]\n\n[friction]")
+    };
+    let (_dir, path) = edited("[friction]", &point("12.0"));
+    refused(&["check", &path], &["evaluation_points[1].position", "12 m", "millimetres"]);
+    let (_dir, path) = edited("[friction]", &point("1.0"));
+    let (ok, _, err) = kinrepro(&["check", &path]);
+    assert!(ok, "{err}");
+}
