@@ -37,6 +37,36 @@ use crate::scene::Scene;
 use crate::study::stats::quantile::normal_quantile;
 use crate::study::{StudyOptions, StudyPlan, Variant};
 
+/// A calibration's friction model: one mu_static and one spread of
+/// independent, uniform coefficients at every contact; a scene with per
+/// contact values, a correlation or another distribution is refused,
+/// saying which (`fit` and `predict`).
+pub(crate) fn one_uniform_friction(scene: &Scene) -> Result<(), CalibrateError> {
+    let refuse = |reason: String| Err(CalibrateError::Model { file: scene.file.clone(), reason });
+    if scene.contact_friction.is_some() {
+        return refuse(
+            "[friction] gives mu_static or spread per contact; a calibration fits one \
+             mu_static and one spread for every contact: give them as numbers"
+                .to_string(),
+        );
+    }
+    if scene.mu_correlation > 0.0 {
+        return refuse(format!(
+            "[friction] correlation = {}; a calibration fits the spread of independent \
+             coefficients: leave correlation out",
+            scene.mu_correlation
+        ));
+    }
+    if !scene.mu_distribution.is_uniform() {
+        return refuse(format!(
+            "[friction] distribution = \"{}\"; a calibration fits the spread of a uniform \
+             distribution only: give distribution = \"uniform\"",
+            scene.mu_distribution.name()
+        ));
+    }
+    Ok(())
+}
+
 /// Calibrate the parameters `opts.fit` of `scene` (assembled as
 /// `coupling`) on measurement `m`.
 pub fn calibrate(
@@ -49,34 +79,7 @@ pub fn calibrate(
     let point_name = opts.point.as_deref().or(m.point.as_deref());
     let point = point_index(scene, point_name, &m.file)?;
     let f = scene.friction;
-    if scene.contact_friction.is_some() {
-        return Err(CalibrateError::Model {
-            file: scene.file.clone(),
-            reason: "[friction] gives mu_static or spread per contact; calibration fits one \
-                     mu_static and one spread for every contact: give them as numbers"
-                .to_string(),
-        });
-    }
-    if scene.mu_correlation > 0.0 {
-        return Err(CalibrateError::Model {
-            file: scene.file.clone(),
-            reason: format!(
-                "[friction] correlation = {}; a calibration fits the spread of independent \
-                 coefficients: leave correlation out",
-                scene.mu_correlation
-            ),
-        });
-    }
-    if !scene.mu_distribution.is_uniform() {
-        return Err(CalibrateError::Model {
-            file: scene.file.clone(),
-            reason: format!(
-                "[friction] distribution = \"{}\"; calibration fits the spread of a uniform \
-                 distribution only: give distribution = \"uniform\"",
-                scene.mu_distribution.name()
-            ),
-        });
-    }
+    one_uniform_friction(scene)?;
     let fit_spread = params.contains(&Param::Spread);
     if !fit_spread && f.spread == 0.0 {
         return Err(CalibrateError::Model {

@@ -68,34 +68,7 @@ pub fn predict(
     (samples, seed, solver): (usize, u64, Solver),
 ) -> Result<Prediction, CalibrateError> {
     let file = scene.file.clone();
-    if scene.contact_friction.is_some() {
-        return Err(CalibrateError::Model {
-            file,
-            reason: "[friction] gives mu_static or spread per contact; a calibration sets one \
-                     mu_static and one spread for every contact: give them as numbers"
-                .to_string(),
-        });
-    }
-    if scene.mu_correlation > 0.0 {
-        return Err(CalibrateError::Model {
-            file: scene.file.clone(),
-            reason: format!(
-                "[friction] correlation = {}; a calibration sets the spread of independent \
-                 coefficients: leave correlation out",
-                scene.mu_correlation
-            ),
-        });
-    }
-    if !scene.mu_distribution.is_uniform() {
-        return Err(CalibrateError::Model {
-            file,
-            reason: format!(
-                "[friction] distribution = \"{}\"; a calibration sets the spread of a uniform \
-                 distribution: give distribution = \"uniform\"",
-                scene.mu_distribution.name()
-            ),
-        });
-    }
+    super::fit::one_uniform_friction(scene)?;
     let options = StudyOptions::monte_carlo(samples, seed, solver);
     let plan = StudyPlan::keeping_records(vec![(scene.clone(), coupling.clone())], &options)?;
     let estimate = with_parameters(&plan.variants[0], &cal.estimates());

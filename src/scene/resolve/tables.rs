@@ -217,30 +217,29 @@ fn distribution(
                 _ => MuDistribution::Lognormal { sd },
             })
         }
-        Distribution::Empirical => {
-            let Some(v) = &fr.values else {
-                let why = "an empirical distribution needs values, the measured coefficients";
-                return Err(ctx.error(Some(&fr.mu_static.span()), "friction.values", why));
-            };
-            let mut values = v.get_ref().clone();
-            if values.len() < 2 {
-                return refuse(
-                    v.span(),
-                    "friction.values",
-                    format!("{} values: give at least 2", values.len()),
-                );
-            }
-            if let Some(x) = values.iter().find(|x| !(0.0..=MU_MAX).contains(*x)) {
-                return refuse(
-                    v.span(),
-                    "friction.values",
-                    format!("{x} is outside [0, {MU_MAX}]"),
-                );
-            }
-            values.sort_by(f64::total_cmp);
-            Ok(MuDistribution::Empirical { values })
-        }
+        Distribution::Empirical => empirical(fr, ctx),
     }
+}
+
+/// `values` of an empirical distribution: at least 2, each in [0, MU_MAX],
+/// kept ascending.
+fn empirical(fr: &FrictionFile, ctx: &ErrorContext) -> Result<MuDistribution, SceneError> {
+    let refuse = |span: std::ops::Range<usize>, why: String| {
+        Err(ctx.error(Some(&span), "friction.values", why))
+    };
+    let Some(v) = &fr.values else {
+        let why = "an empirical distribution needs values, the measured coefficients";
+        return Err(ctx.error(Some(&fr.mu_static.span()), "friction.values", why));
+    };
+    let mut values = v.get_ref().clone();
+    if values.len() < 2 {
+        return refuse(v.span(), format!("{} values: give at least 2", values.len()));
+    }
+    if let Some(x) = values.iter().find(|x| !(0.0..=MU_MAX).contains(*x)) {
+        return refuse(v.span(), format!("{x} is outside [0, {MU_MAX}]"));
+    }
+    values.sort_by(f64::total_cmp);
+    Ok(MuDistribution::Empirical { values })
 }
 
 /// `[friction] correlation`: in [0, 1] (0 where not given).
