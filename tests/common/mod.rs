@@ -155,3 +155,17 @@ pub fn report(plan: &kinrepro::study::StudyPlan) -> kinrepro::study::VariantRepo
     let (s, v) = (&plan.settings, &plan.variants[0]);
     kinrepro::study::VariantReport::new(s, v, run_variant(s, v, &|| {}).unwrap()).unwrap()
 }
+
+/// Scene text `text` is refused at the line of its first `KEY =` (KEY the
+/// last part of `field`, e.g. `friction.sd`), naming `field` and saying
+/// `says`.
+#[allow(dead_code)]
+pub fn refused_at_key(text: &str, field: &str, says: &str) {
+    let key = field.rsplit('.').next().unwrap();
+    let line = text.lines().position(|l| l.starts_with(&format!("{key} ="))).unwrap() + 1;
+    let err = kinrepro::scene::Scene::parse(text, "bad.toml").unwrap_err().to_string();
+    assert!(
+        err.starts_with(&format!("bad.toml:{line}: {field}: ")) && err.contains(says),
+        "{field}: {err}"
+    );
+}

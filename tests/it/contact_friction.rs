@@ -100,14 +100,7 @@ fn bad_lists_are_refused_naming_the_field_and_line() {
             "number",
         ),
     ] {
-        let text = scene01(friction);
-        let key = field.trim_start_matches("friction.");
-        let line = text.lines().position(|l| l.starts_with(&format!("{key} ="))).unwrap() + 1;
-        let err = Scene::parse(&text, "bad.toml").unwrap_err().to_string();
-        assert!(
-            err.starts_with(&format!("bad.toml:{line}: {field}: ")) && err.contains(says),
-            "{err}"
-        );
+        common::refused_at_key(&scene01(friction), field, says);
     }
     let file =
         write("calibrate", &scene01("mu_static = [0.5, 0.5, 0.5, 0.5, 0.5, 0.4]\nspread = 0.05"));

@@ -132,14 +132,7 @@ fn distribution_keys_are_checked_at_their_line() {
             "outside [0, 2]",
         ),
     ] {
-        let text = scene01(friction);
-        let key = field.trim_start_matches("friction.");
-        let line = text.lines().position(|l| l.starts_with(&format!("{key} ="))).unwrap() + 1;
-        let err = Scene::parse(&text, "bad.toml").unwrap_err().to_string();
-        assert!(
-            err.starts_with(&format!("bad.toml:{line}: {field}: ")) && err.contains(says),
-            "{friction}: {err}"
-        );
+        common::refused_at_key(&scene01(friction), field, says);
     }
     // A normal needs its sd; corners have no ends to draw; calibration
     // fits a uniform spread only.
