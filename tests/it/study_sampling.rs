@@ -213,7 +213,9 @@ fn shard_and_sampler_parse() {
         assert!(bad.parse::<Shard>().is_err(), "{bad}");
     }
     assert_eq!("lhs".parse::<Sampler>().unwrap(), Sampler::Lhs);
-    assert_eq!("MC".parse::<Sampler>().unwrap(), Sampler::MonteCarlo);
+    assert_eq!("mc".parse::<Sampler>().unwrap(), Sampler::MonteCarlo);
+    // Spelt exactly, as every keyword of a scene.
+    assert!("MC".parse::<Sampler>().is_err());
     assert_eq!("corners".parse::<Sampler>().unwrap(), Sampler::Corners);
     assert!("sobol".parse::<Sampler>().is_err());
 }

@@ -61,16 +61,18 @@ mod scene_tables {
         assert!(e.reason.contains("exceeds"), "{e}");
     }
 
-    /// The sampler name is checked here, case-insensitively, and kept as
-    /// plain data.
+    /// The sampler name is checked here, spelt exactly (`MC` is refused,
+    /// as any other keyword spelt otherwise), and kept as plain data.
     #[test]
     fn study_sampler_is_checked_at_parse_time() {
         let study_of = |text: &str| {
             let st: StudyFile = toml::from_str(text).unwrap();
             study(&st, &ErrorContext::new("s.toml", text))
         };
-        let s = study_of("samples = 8\nsampler = \"MC\"\n").unwrap();
+        let s = study_of("samples = 8\nsampler = \"mc\"\n").unwrap();
         assert_eq!((s.samples, s.sampler), (8, Sampler::MonteCarlo));
+        let e = study_of("samples = 8\nsampler = \"MC\"\n").unwrap_err();
+        assert_eq!((e.line, e.field.as_str()), (Some(2), "study.sampler"));
         let e = study_of("samples = 8\nsampler = \"sobol\"\n").unwrap_err();
         assert_eq!((e.line, e.field.as_str()), (Some(2), "study.sampler"));
         assert!(e.reason.contains("lhs, mc or corners"), "{e}");
