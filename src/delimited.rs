@@ -47,7 +47,7 @@ pub fn delimiter_named(s: &str) -> Result<u8, ParamError> {
 /// Split `text` into comments and records; `delimiter` None: detected from
 /// the first record ([`detect_delimiter`]).
 pub fn read(text: &str, delimiter: Option<u8>) -> Delimited {
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let text = crate::input::without_bom(text);
     let mut comments = Vec::new();
     let mut lines = Vec::new();
     for (i, raw) in text.lines().enumerate() {

@@ -20,8 +20,10 @@ pub const MAX_INPUT_BYTES: u64 = 256 << 20;
 /// (`output::inputs`), which no output of it may replace.
 pub fn read_to_string(path: impl AsRef<Path>) -> std::io::Result<String> {
     let file = std::fs::File::open(&path)?;
-    crate::output::inputs::register(path.as_ref());
     let meta = file.metadata()?;
+    if meta.is_file() {
+        crate::output::inputs::register(path.as_ref(), &file);
+    }
     if meta.is_file() && meta.len() > MAX_INPUT_BYTES {
         return Err(too_large(&format!("{} bytes", meta.len())));
     }
@@ -40,8 +42,9 @@ pub fn read_to_string(path: impl AsRef<Path>) -> std::io::Result<String> {
 const BOM: char = '\u{feff}';
 
 /// `text` without a leading byte-order mark (a file's text passed as a
-/// string: Python's `Study.from_json`); [`read_to_string`] drops it too, so
-/// that a scene, a CSV and a JSON document read the same with or without.
+/// string: Python's `Study.from_json`, the delimited readers);
+/// [`read_to_string`] drops it too, so that a scene, a CSV and a JSON
+/// document read the same with or without.
 pub fn without_bom(text: &str) -> &str {
     text.strip_prefix(BOM).unwrap_or(text)
 }

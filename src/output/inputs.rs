@@ -28,13 +28,15 @@ pub fn track() {
     TRACK.store(true, Ordering::SeqCst);
 }
 
-/// Note `path` as read, if tracking and it is a regular file (a pipe or a
-/// device is not replaced by an output anyway).
-pub fn register(path: &Path) {
-    if !TRACK.load(Ordering::SeqCst) || !path.metadata().is_ok_and(|m| m.is_file()) {
+/// Note the regular file `file`, opened at `path`, as read, if tracking
+/// (a pipe or a device is not replaced by an output anyway, and the
+/// caller registers regular files only). Its identity comes from the open
+/// file itself, so it is the file that was read.
+pub fn register(path: &Path, file: &std::fs::File) {
+    if !TRACK.load(Ordering::SeqCst) {
         return;
     }
-    if let Ok(h) = Handle::from_path(path) {
+    if let Ok(h) = file.try_clone().and_then(Handle::from_file) {
         let mut r = read();
         if !r.iter().any(|(_, known)| *known == h) {
             r.push((path.to_path_buf(), h));
@@ -62,7 +64,7 @@ mod tests {
         std::fs::write(&a, "x").unwrap();
         std::fs::write(&b, "x").unwrap();
         track();
-        register(&a);
+        register(&a, &std::fs::File::open(&a).unwrap());
         let link = dir.path().join("link");
         std::os::unix::fs::symlink(&a, &link).unwrap();
         let other_spelling = dir.path().join(".").join("a.toml");

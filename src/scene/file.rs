@@ -19,6 +19,12 @@ use crate::contact::TangentialLaw;
 #[serde(transparent)]
 pub struct Numbers(pub Vec<toml::Value>);
 
+/// The number a TOML value holds: a float, or an integer written without
+/// a decimal point (`force = 20`).
+pub fn number(x: &toml::Value) -> Option<f64> {
+    x.as_float().or(x.as_integer().map(|i| i as f64))
+}
+
 impl Numbers {
     /// The array of these values (as `expand` writes it).
     pub fn of(values: &[f64]) -> Self {

@@ -15,7 +15,7 @@ use nalgebra::Vector3;
 use toml::Spanned;
 
 use super::error::{ErrorContext, SceneError};
-use super::file::{CouplingFile, SceneFile, SurfaceKind};
+use super::file::{CouplingFile, SceneFile, SurfaceKind, number};
 
 /// Largest plausible moving-ball diameter [m].
 pub const BALL_DIAMETER_MAX: f64 = 0.5;
@@ -108,10 +108,9 @@ fn support_compliance(
     v: &Spanned<toml::Value>,
     field: &str,
 ) -> Result<(), SceneError> {
-    let as_number = |x: &toml::Value| x.as_float().or(x.as_integer().map(|i| i as f64));
     let parts: Vec<f64> = match v.get_ref() {
-        toml::Value::Table(t) => t.values().filter_map(as_number).collect(),
-        x => as_number(x).into_iter().collect(),
+        toml::Value::Table(t) => t.values().filter_map(number).collect(),
+        x => number(x).into_iter().collect(),
     };
     let Some(c) = parts.into_iter().reduce(f64::max) else {
         return Ok(());
@@ -288,7 +287,6 @@ pub fn check_explicit(
     }
     check_surfaces(f, ctx)?;
     for (i, e) in f.evaluation_points.iter().enumerate() {
-        let number = |x: &toml::Value| x.as_float().or(x.as_integer().map(|i| i as f64));
         let r = e.position.get_ref().0.iter().filter_map(number).map(|x| x * x).sum::<f64>().sqrt();
         if r > CIRCLE_DIAMETER_MAX {
             return Err(too_large(

@@ -119,12 +119,47 @@ fn check_friction(v: &VariantReport, at: &str) -> Result<(), DocumentError> {
         let reason = format!("{} must lie in (0, 1]", v.dynamic_ratio);
         return Err(bad(format!("{at}.dynamic_ratio"), reason));
     }
+    check_mu_distribution(v, at)?;
     let fp = &v.fingerprint;
     for (name, a, b) in [("mu_static", fp.mu_static, mu), ("spread", fp.spread, spread)] {
         if a.to_bits() != b.to_bits() {
             let reason = format!("{a} differs from the variant's {name} {b}");
             return Err(bad(format!("{at}.fingerprint.{name}"), reason));
         }
+    }
+    Ok(())
+}
+
+/// `mu_distribution` and `mu_correlation` as a scene gives them: an
+/// empirical one with values in [0, MU_MAX], a normal or lognormal one
+/// with a finite sd >= 0 per contact (as many as `contact_friction` has
+/// pairs, where given), a correlation in [0, 1].
+fn check_mu_distribution(v: &VariantReport, at: &str) -> Result<(), DocumentError> {
+    let field = |name: &str| format!("{at}.mu_distribution.{name}");
+    match &v.mu_distribution {
+        MuDistribution::Uniform => {}
+        MuDistribution::Empirical { values } => {
+            if values.is_empty() {
+                return Err(bad(field("values"), "is empty".into()));
+            }
+            if let Some(x) = values.iter().find(|x| !(0.0..=MU_MAX).contains(*x)) {
+                return Err(bad(field("values"), format!("{x} is outside [0, {MU_MAX}]")));
+            }
+        }
+        MuDistribution::Normal { sd } | MuDistribution::Lognormal { sd } => {
+            if let Some(c) = v.contact_friction.as_ref().filter(|c| c.len() != sd.len()) {
+                let reason =
+                    format!("{} values for the {} contacts of contact_friction", sd.len(), c.len());
+                return Err(bad(field("sd"), reason));
+            }
+            if let Some(x) = sd.iter().find(|x| !(x.is_finite() && **x >= 0.0)) {
+                return Err(bad(field("sd"), format!("{x} must be finite and >= 0")));
+            }
+        }
+    }
+    if !(0.0..=1.0).contains(&v.mu_correlation) {
+        let reason = format!("{} must lie in [0, 1]", v.mu_correlation);
+        return Err(bad(format!("{at}.mu_correlation"), reason));
     }
     Ok(())
 }
@@ -229,11 +264,6 @@ fn check_record(v: &VariantReport, r: &StudyRecord, at: &str) -> Result<(), Docu
             let reason = format!("{} is not a finite number", values[j]);
             return Err(bad(format!("{at}.{name}[{j}]"), reason));
         }
-    }
-    if let MuDistribution::Empirical { values } = &v.mu_distribution
-        && values.is_empty()
-    {
-        return Err(bad(format!("{at}: mu_distribution.values"), "is empty".into()));
     }
     for (j, (input, mu)) in v.inputs.iter().zip(&r.physical).enumerate() {
         let Input::Mu(k) = input else { continue };

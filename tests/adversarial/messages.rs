@@ -407,3 +407,46 @@ fn an_evaluation_point_in_millimetres_is_refused() {
     let (ok, _, err) = kinrepro(&["check", &path]);
     assert!(ok, "{err}");
 }
+
+/// A study document whose friction distribution no scene could give (no
+/// empirical values, an sd per contact short of the contacts, a
+/// correlation above 1) is refused naming the field, before anything
+/// describes it.
+#[test]
+fn a_document_with_an_impossible_distribution_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = common::scene("maxwell_mixed_friction.toml");
+    let args = [
+        "study",
+        scene.to_str().unwrap(),
+        "--samples",
+        "10",
+        "--sampler",
+        "mc",
+        "--format",
+        "json",
+    ];
+    let (ok, json, err) = kinrepro(&args);
+    assert!(ok, "{err}");
+    let doc: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let edits: [(&str, serde_json::Value, &str); 3] = [
+        (
+            "mu_distribution",
+            serde_json::json!({"kind": "empirical", "values": []}),
+            "mu_distribution.values: is empty",
+        ),
+        (
+            "mu_distribution",
+            serde_json::json!({"kind": "normal", "sd": vec![0.05; 5]}),
+            "mu_distribution.sd: 5 values for the 6 contacts",
+        ),
+        ("mu_correlation", serde_json::json!(1.5), "mu_correlation: 1.5 must lie in [0, 1]"),
+    ];
+    for (key, value, says) in edits {
+        let mut bad = doc.clone();
+        bad["variants"][0][key] = value;
+        let path = dir.path().join("bad.json");
+        std::fs::write(&path, bad.to_string()).unwrap();
+        refused(&["merge", path.to_str().unwrap(), "--format", "table"], &[says]);
+    }
+}

@@ -9,7 +9,7 @@ use crate::contact::{FrictionLaw, TangentialLaw};
 use crate::scene::error::{ErrorContext, SceneError};
 use crate::scene::file::{
     Distribution, DynamicsFile, FrictionFile, FrictionLawName, Numbers, SceneFile, StudyFile,
-    VariationFile,
+    VariationFile, number,
 };
 use crate::scene::{
     DynamicsSettings, EvaluationPoint, FrictionSettings, MuDistribution, Sampler, StudyDefaults,
@@ -34,7 +34,6 @@ fn per_contact(
 ) -> Result<(Vec<f64>, bool), SceneError> {
     let contacts = ball_of.len();
     let field = format!("friction.{key}");
-    let number = |x: &toml::Value| x.as_float().or(x.as_integer().map(|i| i as f64));
     let bad = |why: String| ctx.error(Some(&v.span()), field.clone(), why);
     match v.get_ref() {
         toml::Value::Array(items) => {
@@ -73,7 +72,7 @@ fn by_ball(
         let b = key.parse::<usize>().ok().filter(|b| (1..=balls).contains(b)).ok_or_else(|| {
             bad(format!("'{key}' is not a ball: the keys are ball numbers 1 to {balls}"))
         })?;
-        let n = x.as_float().or(x.as_integer().map(|i| i as f64));
+        let n = number(x);
         value[b - 1] = Some(n.ok_or_else(|| bad(format!("ball {b}: the value must be a number")))?);
     }
     if let Some(b) = value.iter().position(Option::is_none) {
@@ -405,18 +404,11 @@ pub fn support(
     field: &str,
 ) -> Result<Support, SceneError> {
     let span = v.span();
-    let number = |x: &toml::Value, field: &str| -> Result<f64, SceneError> {
-        let value = match x {
-            toml::Value::Float(f) => *f,
-            toml::Value::Integer(i) => *i as f64,
-            other => {
-                return Err(ctx.error(
-                    Some(&span),
-                    field,
-                    format!("expected a compliance in m/N, found {}", other.type_str()),
-                ));
-            }
-        };
+    let checked = |x: &toml::Value, field: &str| -> Result<f64, SceneError> {
+        let value = number(x).ok_or_else(|| {
+            let why = format!("expected a compliance in m/N, found {}", x.type_str());
+            ctx.error(Some(&span), field, why)
+        })?;
         compliance(ctx, &Spanned::new(span.clone(), value), field)
     };
     match v.get_ref() {
@@ -425,8 +417,8 @@ pub fn support(
             for (key, x) in t {
                 let sub = format!("{field}.{key}");
                 match key.as_str() {
-                    "normal" => out.normal = number(x, &sub)?,
-                    "tangential" => out.tangential = number(x, &sub)?,
+                    "normal" => out.normal = checked(x, &sub)?,
+                    "tangential" => out.tangential = checked(x, &sub)?,
                     _ => {
                         return Err(ctx.error(
                             Some(&span),
@@ -438,7 +430,7 @@ pub fn support(
             }
             Ok(out)
         }
-        x => Ok(Support { normal: number(x, field)?, tangential: 0.0 }),
+        x => Ok(Support { normal: checked(x, field)?, tangential: 0.0 }),
     }
 }
 
