@@ -302,7 +302,7 @@ def sweep(
 def calibrate(
     scene: Scene,
     measured: Union[str, os.PathLike[str], npt.ArrayLike],
-    fit: Sequence[str] = ("spread",),
+    fit: Sequence[str] = (),
     noise: str | None = None,
     point: str | None = None,
     model_samples: int = 2000,
@@ -311,8 +311,10 @@ def calibrate(
     jobs: int | None = None,
     dofs: Sequence[str] | None = None,
 ) -> Calibration:
-    """Fit the friction spread (and optionally ``mu_static``,
-    ``dynamic_ratio``, ``support_compliance``) to the measured re-seating
+    """Fit the scale of the friction distribution (``spread`` for a uniform
+    one, ``sd`` for a normal or lognormal one; the default ``()``) and
+    optionally ``mu_static``, ``dynamic_ratio``, ``support_compliance``
+    to the measured re-seating
     scatter (``kinrepro calibrate``). ``measured``: a measurement file
     (docs/measurements.md; ``delimiter`` as ``--delimiter``), or an
     (n_cycles, k) array of the readings of each re-seating cycle in SI

@@ -140,12 +140,13 @@ impl Measured {
     }
 }
 
-/// Fit the friction spread (and optionally mu_static, dynamic_ratio,
-/// support_compliance) to a measured scatter (`kinrepro calibrate`): a
+/// Fit the scale of the friction distribution (spread or sd, the default)
+/// and optionally mu_static, dynamic_ratio, support_compliance to a
+/// measured scatter (`kinrepro calibrate`): a
 /// file, or an (n, k) array of readings per cycle in m and rad.
 #[pyfunction]
 #[pyo3(signature = (
-    scene, measured, fit = vec!["spread".to_string()], noise = None, point = None,
+    scene, measured, fit = Vec::new(), noise = None, point = None,
     model_samples = MODEL_SAMPLES, seed = MODEL_SEED, delimiter = None, jobs = None, dofs = None,
 ))]
 #[allow(clippy::too_many_arguments)]

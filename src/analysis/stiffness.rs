@@ -52,8 +52,9 @@ pub struct ContactSpring {
     pub normal_force: f64,
     /// Normal stiffness k_n [N/m] (Hertz, in series with the support compliance).
     pub normal_stiffness: f64,
-    /// Mindlin tangential stiffness k_t [N/m], in series with the tangential
-    /// support compliance (0 for a frictionless contact).
+    /// Mindlin tangential stiffness k_t [N/m] in series with the tangential
+    /// support compliance: sqrt(det) of the 2x2 in the tangent plane (the
+    /// geometric mean of the principal values; 0 for a frictionless contact).
     pub tangential_stiffness: f64,
     /// d(force on the moving half)/d(displacement of the contact point) [N/m],
     /// i.e. -K_i.
@@ -90,9 +91,13 @@ impl CouplingStiffness {
                 let e = evaluate(coupling, i, &pose, &pose, &states[i], friction[i]);
                 let n = e.geometry.normal;
                 let nn = n * n.transpose();
-                let law = &coupling.contacts[i].law;
+                let contact = &coupling.contacts[i];
                 let (tangent, kt) = if friction[i].mu_s > 0.0 {
-                    (e.stiffness, law.tangential_stiffness(e.normal_force).0)
+                    let major = &contact.major_axis;
+                    (
+                        e.stiffness,
+                        contact.law.oriented_tangential_stiffness(e.normal_force, &n, major),
+                    )
                 } else {
                     // Frictionless: the normal spring only.
                     (-e.normal_stiffness * nn, 0.0)

@@ -8,6 +8,7 @@ use super::{AssemblyError, Contact, MovingBall, geometry};
 use crate::contact::stress::ShearRatios;
 use crate::contact::{
     ContactError, ContactLaw, ContactPair, ContactShape, PairCurvature, SeriesNormal,
+    TangentialSupport,
 };
 use crate::material::Material;
 use crate::scene::{Surface, SurfaceGeometry};
@@ -20,9 +21,14 @@ pub(super) fn build(i: usize, s: &Surface, ball: &MovingBall) -> Result<Contact,
     };
     let moving = MovingSurface { centre, radius, axis };
     let materials = (ball.material.clone(), s.material.clone());
-    let compliance = (s.support_compliance, s.tangential_compliance);
+    let compliance = (s.support_compliance, s.tangential_support);
     place(i, s.ball, moving, s.geometry, materials, compliance)
 }
+
+/// The least angle between an anisotropic support's axis and the contact
+/// normal [deg]: the axis is projected into the tangent plane, and nearer
+/// the normal its projection's direction is set by round-off.
+pub const MIN_SUPPORT_AXIS_ANGLE_DEG: f64 = 5.0;
 
 /// The moving element's surface at one contact: its centre of curvature
 /// (a point of a pin's axis) in the body frame, its radius and a pin's axis.
@@ -36,7 +42,8 @@ pub(super) struct MovingSurface {
 /// Contact `i` (0-based) of moving ball `ball`: its moving surface against
 /// the fixed `surface`, of `materials` (moving, fixed), with the support
 /// compliance (normal, tangential) [m/N]: the pair's curvature, its laws and the orientation
-/// of its ellipse (also the contact of a coupling at other temperatures,
+/// of its ellipse; an anisotropic support's axis must not lie within
+/// [`MIN_SUPPORT_AXIS_ANGLE_DEG`] of the contact normal (also the contact of a coupling at other temperatures,
 /// `assembly::thermal`).
 pub(super) fn place(
     i: usize,
@@ -44,7 +51,7 @@ pub(super) fn place(
     moving: MovingSurface,
     surface: SurfaceGeometry,
     (m1, m2): (Material, Material),
-    (compliance, tangential): (f64, f64),
+    (compliance, tangential): (f64, TangentialSupport),
 ) -> Result<Contact, AssemblyError> {
     let err = |source| AssemblyError::Contact { contact: i + 1, source };
     let MovingSurface { centre, radius, axis } = moving;
@@ -52,7 +59,14 @@ pub(super) fn place(
         None => sphere_pair(&surface, &centre, radius, m1, m2).map_err(err)?,
         Some(axis) => pin_pair(&surface, &axis, radius, m1, m2).map_err(err)?,
     };
-    let law = ContactLaw { tangential_compliance: tangential, ..pair.law().map_err(err)? };
+    if !tangential.is_isotropic() {
+        let n = geometry::contact(&surface, &centre, radius).normal;
+        let angle = n.dot(&tangential.axis).abs().clamp(0.0, 1.0).acos().to_degrees();
+        if angle < MIN_SUPPORT_AXIS_ANGLE_DEG {
+            return Err(err(ContactError::SupportAxisAlongNormal { angle_deg: angle }));
+        }
+    }
+    let law = ContactLaw { tangential_support: tangential, ..pair.law().map_err(err)? };
     Ok(Contact {
         ball,
         centre,

@@ -76,7 +76,7 @@ impl Coupling {
                 axis: c.axis,
             };
             let materials = (c.pair.material1.clone(), c.pair.material2.clone());
-            let compliance = (c.normal.compliance, c.law.tangential_compliance);
+            let compliance = (c.normal.compliance, c.law.tangential_support);
             contacts.push(place(i, c.ball, moving_surface, surface, materials, compliance)?);
         }
         Ok(Coupling {

@@ -92,6 +92,12 @@ pub struct ModelInfo {
     pub sampler: String,
     pub seed: u64,
     pub samples: usize,
+    /// The scale parameter of the friction distribution that
+    /// `reference_spread` and the grid's `spread` give: `spread` (uniform)
+    /// or `sd` (normal, lognormal); older files have none (`spread`).
+    #[serde(default = "spread_name")]
+    pub scale: String,
+    /// The reference value of the scale parameter (`scale`).
     pub reference_spread: f64,
     /// Largest relative change over the measured DOFs of sigma / spread
     /// between the reference (the first model grid, at the reference
@@ -135,6 +141,10 @@ pub struct Calibration {
     pub fingerprint: Fingerprint,
 }
 
+fn spread_name() -> String {
+    "spread".into()
+}
+
 /// The design hash of a scene: [`content_hash`] of the scene without its
 /// file, name, spread and study defaults (the calibrated design,
 /// whichever spread and study it is run with).
@@ -142,7 +152,7 @@ pub fn design_hash(scene: &Scene) -> String {
     let mut s = scene.clone();
     s.file = String::new();
     s.name = String::new();
-    s.friction.spread = 0.0;
+    s.set_mu_scale(0.0);
     s.study = StudyDefaults { samples: 0, sampler: Sampler::MonteCarlo, seed: 0 };
     content_hash(&s)
 }
@@ -266,8 +276,8 @@ fn check_parameter(name: &str, p: &Parameter) -> Option<String> {
             return Some(format!("`parameters.{name}.{field}`: {r}"));
         }
     }
-    if name == "spread" && e <= 0.0 {
-        return Some(format!("{at}: estimate {e}: a calibrated spread is > 0"));
+    if (name == "spread" || name == "sd") && e <= 0.0 {
+        return Some(format!("{at}: estimate {e}: a calibrated {name} is > 0"));
     }
     if !(p.level > 0.0 && p.level < 1.0) {
         return Some(format!("{at}: level {}: need a probability in (0, 1)", p.level));

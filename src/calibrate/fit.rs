@@ -33,15 +33,16 @@ use super::model::StudySpec;
 use super::params::{Param, parse_fit, with_values};
 use crate::assembly::Coupling;
 use crate::param::Param as Arg;
-use crate::scene::Scene;
+use crate::scene::{MuDistribution, Scene};
 use crate::study::stats::quantile::normal_quantile;
 use crate::study::{StudyOptions, StudyPlan, Variant};
 
-/// A calibration's friction model: one mu_static and one spread of
-/// independent, uniform coefficients at every contact; a scene with per
-/// contact values, a correlation or another distribution is refused,
-/// saying which (`fit` and `predict`).
-pub(crate) fn one_uniform_friction(scene: &Scene) -> Result<(), CalibrateError> {
+/// A calibration's friction model: independent coefficients, one
+/// mu_static and one scale at every contact (the spread of a uniform
+/// distribution, the sd of a normal or lognormal one); a scene with per
+/// contact values, a correlation or empirical values is refused, saying
+/// which (`fit` and `predict`).
+pub(crate) fn one_friction_scale(scene: &Scene) -> Result<(), CalibrateError> {
     let refuse = |reason: String| Err(CalibrateError::Model { file: scene.file.clone(), reason });
     if scene.contact_friction.is_some() {
         return refuse(
@@ -57,14 +58,46 @@ pub(crate) fn one_uniform_friction(scene: &Scene) -> Result<(), CalibrateError> 
             scene.mu_correlation
         ));
     }
-    if !scene.mu_distribution.is_uniform() {
-        return refuse(format!(
-            "[friction] distribution = \"{}\"; a calibration fits the spread of a uniform \
-             distribution only: give distribution = \"uniform\"",
-            scene.mu_distribution.name()
-        ));
+    match &scene.mu_distribution {
+        MuDistribution::Empirical { .. } => refuse(
+            "[friction] distribution = \"empirical\": measured values have no parameter to \
+             fit; give distribution = \"uniform\" (fits spread) or \"normal\" or \
+             \"lognormal\" (fits sd)"
+                .to_string(),
+        ),
+        MuDistribution::Normal { sd } | MuDistribution::Lognormal { sd }
+            if sd.iter().any(|s| *s != sd[0]) =>
+        {
+            refuse(
+                "[friction] sd differs between contacts; a calibration fits one sd for every \
+                 contact: give sd as a number"
+                    .to_string(),
+            )
+        }
+        _ => Ok(()),
     }
-    Ok(())
+}
+
+/// The parameters `fit` names for `scene` (empty: the scale of its
+/// friction distribution, `spread` or `sd`); a scale parameter of another
+/// distribution is refused, naming the scene's.
+fn fit_for(scene: &Scene, fit: &[String]) -> Result<Vec<Param>, CalibrateError> {
+    let scale = Param::scale_of(scene);
+    let params = if fit.is_empty() { vec![scale] } else { parse_fit(fit)? };
+    match params.iter().find(|p| !p.applies_to(scene)) {
+        Some(p) => Err(CalibrateError::Model {
+            file: scene.file.clone(),
+            reason: format!(
+                "`{}` is the scale of another friction distribution: this scene's is {} \
+                 ([friction] distribution), whose scale is `{}`: fit that ({})",
+                p.name(),
+                scene.mu_distribution.name(),
+                scale.name(),
+                Arg::Fit.with(scale.name())
+            ),
+        }),
+        None => Ok(params),
+    }
 }
 
 /// Calibrate the parameters `opts.fit` of `scene` (assembled as
@@ -75,18 +108,20 @@ pub fn calibrate(
     m: &Measurement,
     opts: &CalibrateOptions,
 ) -> Result<Calibration, CalibrateError> {
-    let params = parse_fit(&opts.fit)?;
+    one_friction_scale(scene)?;
+    let params = fit_for(scene, &opts.fit)?;
     let point_name = opts.point.as_deref().or(m.point.as_deref());
     let point = point_index(scene, point_name, &m.file)?;
     let f = scene.friction;
-    one_uniform_friction(scene)?;
-    let fit_spread = params.contains(&Param::Spread);
-    if !fit_spread && f.spread == 0.0 {
+    let scale = Param::scale_of(scene);
+    let fit_scale = params.iter().any(|p| p.is_scale());
+    if !fit_scale && scene.mu_scale() == 0.0 {
         return Err(CalibrateError::Model {
             file: m.file.clone(),
             reason: format!(
-                "the scene's friction spread is 0, so the model has no scatter: fit the spread too ({})",
-                Arg::Fit.with("spread,...")
+                "the scene's friction {0} is 0, so the model has no scatter: fit the {0} too ({1})",
+                scale.name(),
+                Arg::Fit.with(format!("{},...", scale.name()))
             ),
         });
     }
@@ -97,7 +132,7 @@ pub fn calibrate(
     let plan = StudyPlan::keeping_records(vec![(scene.clone(), coupling.clone())], &models)?;
     let spec = StudySpec { plan: &plan, point, dofs: &m.dofs };
     let base: &Variant = spec.base();
-    let s_ref = if f.spread > 0.0 { f.spread } else { 0.1 * f.mu_static };
+    let s_ref = if scene.mu_scale() > 0.0 { scene.mu_scale() } else { 0.1 * f.mu_static };
     let (reference, grid) = two_pass_grid(&spec, &obs, &params, &noise_var, s_ref)?;
     let grid = grid.as_ref().unwrap_or(&reference);
     let jm = JointModel::new(&obs, grid, &params, base, &noise_var);
@@ -140,12 +175,12 @@ fn two_pass_grid(
     noise_var: &[f64],
     s_ref: f64,
 ) -> Result<(ModelGrid, Option<ModelGrid>), CalibrateError> {
-    let grid_params: Vec<Param> = params.iter().copied().filter(|p| *p != Param::Spread).collect();
+    let grid_params: Vec<Param> = params.iter().copied().filter(|p| !p.is_scale()).collect();
     let fit_mu = params.contains(&Param::MuStatic);
     let ranges: Vec<(f64, f64)> =
         grid_params.iter().map(|p| p.range(spec.base(), fit_mu)).collect();
     let reference = ModelGrid::build(spec, &grid_params, &ranges, s_ref)?;
-    if !params.contains(&Param::Spread) {
+    if !params.iter().any(|p| p.is_scale()) {
         return Ok((reference, None));
     }
     let jm = JointModel::new(obs, &reference, params, spec.base(), noise_var);
@@ -168,6 +203,7 @@ fn model_info(
         sampler: "mc".into(),
         seed: design.seed,
         samples: design.n,
+        scale: Param::scale_of(&spec.base().scene).name().into(),
         reference_spread: s_ref,
         linearity,
         grid: (!grid.params.is_empty()).then(|| GridInfo {
@@ -272,7 +308,7 @@ fn intervals(
         let lo = profile_end(jm, a, d.k[a], u_hat, l_max, -1.0);
         let hi = profile_end(jm, a, d.k[a], u_hat, l_max, 1.0);
         let (r0, r1) = jm.ranges[a];
-        let spread = *p == Param::Spread;
+        let spread = p.is_scale();
         let value = |e: &End| {
             if spread && e.at_bound && e.u == 0.0 { 0.0 } else { jm.theta(&e.point)[a] }
         };
@@ -320,7 +356,7 @@ fn method_text(p: Param, jm: &JointModel) -> String {
     } else {
         format!("k 2 (l_max - l) <= chi^2_1(0.90) = {chi2:.4}, k the sandwich factor")
     };
-    let scale = if p == Param::Spread { "on ln s" } else { "linearly" };
+    let scale = if p.is_scale() { "on ln s" } else { "linearly" };
     let grid = if jm.grid.params.is_empty() {
         ""
     } else {
@@ -394,7 +430,7 @@ fn correlation(params: &[Param], v: &DMatrix<f64>) -> Correlation {
 fn fixed(v: &Variant, params: &[Param]) -> BTreeMap<String, f64> {
     Param::ALL
         .into_iter()
-        .filter(|p| !params.contains(p))
+        .filter(|p| !params.contains(p) && p.applies_to(&v.scene))
         .map(|p| (p.name().to_string(), p.value(v)))
         .collect()
 }

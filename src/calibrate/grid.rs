@@ -74,8 +74,9 @@ impl ModelGrid {
                 .collect();
             let mut c = with_values(spec.base(), params, &values);
             let mu = c.scene.friction.mu_static;
-            let s = if cap { spread.min(0.5 * mu) } else { spread };
-            Param::Spread.set(&mut c.scene, &mut c.coupling, s);
+            let reach = Param::scale_of(&c.scene).sds_inside();
+            let s = if cap { spread.min(0.5 * mu / reach) } else { spread };
+            c.scene.set_mu_scale(s);
             g.push(spec.run(&c)?.per_unit(spec.dofs));
         }
         Ok(ModelGrid { params: params.to_vec(), nodes, g, spread })

@@ -8,7 +8,6 @@ use nalgebra::{DMatrix, DVector};
 use super::joint::{JointModel, S_MIN_REL};
 use super::likelihood::Observed;
 use super::model::covariance;
-use super::params::Param;
 
 /// The information matrices at theta: H (what the Wishart / chi-square law
 /// assumes), J (the true variance of the score, with the pose's fourth
@@ -37,7 +36,7 @@ pub fn d_sigma(m: &JointModel, theta: &[f64]) -> Option<Vec<DMatrix<f64>>> {
         .map(|a| {
             let (lo, hi) = m.ranges[a];
             let h = match m.params[a] {
-                Param::Spread => 1e-4 * theta[a].max(hi * S_MIN_REL),
+                p if p.is_scale() => 1e-4 * theta[a].max(hi * S_MIN_REL),
                 _ => 1e-4 * (hi - lo),
             };
             let at = |d: f64| {

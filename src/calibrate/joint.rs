@@ -37,7 +37,9 @@ pub struct JointModel<'a> {
     pub params: Vec<Param>,
     /// Searched range per fitted parameter.
     pub ranges: Vec<(f64, f64)>,
-    /// The spread and mu_static where they are not fitted.
+    /// The scale parameter of the scene's distribution (spread or sd).
+    pub scale: Param,
+    /// The scale and mu_static where they are not fitted.
     pub spread_fixed: f64,
     pub mu_fixed: f64,
     pub noise_var: Vec<f64>,
@@ -61,7 +63,8 @@ impl<'a> JointModel<'a> {
             grid,
             params: params.to_vec(),
             ranges: params.iter().map(|p| p.range(v, fit_mu)).collect(),
-            spread_fixed: f.spread,
+            scale: Param::scale_of(&v.scene),
+            spread_fixed: v.scene.mu_scale(),
             mu_fixed: f.mu_static,
             noise_var: noise_var.to_vec(),
         }
@@ -75,7 +78,7 @@ impl<'a> JointModel<'a> {
     pub fn sigma(&self, theta: &[f64]) -> Option<DMatrix<f64>> {
         let s = self.spread(theta);
         let mu = self.index(Param::MuStatic).map_or(self.mu_fixed, |i| theta[i]);
-        if !admissible(s, mu) {
+        if !admissible(self.scale, s, mu) {
             return None;
         }
         Some(model_covariance(&self.grid.at(&self.phi(theta)), &self.noise_var, s))
@@ -83,7 +86,7 @@ impl<'a> JointModel<'a> {
 
     /// The spread at theta (fitted or fixed).
     pub fn spread(&self, theta: &[f64]) -> f64 {
-        (self.index(Param::Spread)).map_or(self.spread_fixed, |i| theta[i])
+        (self.index(self.scale)).map_or(self.spread_fixed, |i| theta[i])
     }
 
     /// The values of the grid parameters phi in theta.
@@ -108,7 +111,7 @@ impl<'a> JointModel<'a> {
             .zip(&self.ranges)
             .zip(u)
             .map(|((p, &(a, b)), &u)| match p {
-                Param::Spread => {
+                p if p.is_scale() => {
                     let (t0, t1) = ((b * S_MIN_REL).ln(), b.ln());
                     (t0 + u * (t1 - t0)).exp()
                 }
@@ -121,7 +124,7 @@ impl<'a> JointModel<'a> {
     pub fn unit(&self, a: usize, v: f64) -> f64 {
         let (lo, hi) = self.ranges[a];
         match self.params[a] {
-            Param::Spread => {
+            p if p.is_scale() => {
                 let (t0, t1) = ((hi * S_MIN_REL).ln(), hi.ln());
                 ((v.max(hi * S_MIN_REL).ln() - t0) / (t1 - t0)).clamp(0.0, 1.0)
             }

@@ -67,7 +67,7 @@ impl StudySpec<'_> {
     pub fn run(&self, v: &Variant) -> Result<ModelStudy, CalibrateError> {
         let s = &self.plan.settings;
         let run = run_variant(s, v, &|| {})?;
-        let spread = v.scene.friction.spread;
+        let spread = v.scene.mu_scale();
         if let Some(reason) = run.cannot_seat {
             return Err(CalibrateError::CannotSeat {
                 file: v.file().to_string(),

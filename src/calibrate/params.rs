@@ -5,6 +5,11 @@
 //! * `spread`: `[friction] spread`, the half-width of mu_s in mu0 +- spread,
 //!   searched in (1e-4 s_max, s_max] with s_max = min(mu_static,
 //!   MU_MAX - mu_static) (the scene's own rule, `scene::resolve::tables`).
+//! * `sd`: `[friction] sd` of a normal or lognormal distribution, the same
+//!   at every contact, searched in (1e-4 s_max, s_max] with s_max =
+//!   min(mu_static, MU_MAX - mu_static) / 2: two standard deviations each
+//!   side inside [0, MU_MAX], so that the truncation removes at most 2.3 %
+//!   at each end and the scatter keeps scaling with sd.
 //! * `mu_static`: `[friction] mu_static`, searched in [0.1, 0.8]: dry and
 //!   boundary-lubricated metal and ceramic pairs (steel on steel dry about
 //!   0.5-0.8, lubricated 0.1-0.2); and spread <= mu_static at every point.
@@ -23,12 +28,13 @@ use super::error::CalibrateError;
 use crate::assembly::Coupling;
 use crate::assembly::constraint::frictionless_preload_forces;
 use crate::contact::SeriesNormal;
-use crate::scene::Scene;
 use crate::scene::resolve::MU_MAX;
+use crate::scene::{MuDistribution, Scene};
 use crate::study::Variant;
 
 /// The parameters `fit` may name, in the order they are fitted and reported.
-pub const PARAMETERS: [&str; 4] = ["spread", "mu_static", "dynamic_ratio", "support_compliance"];
+pub const PARAMETERS: [&str; 5] =
+    ["spread", "sd", "mu_static", "dynamic_ratio", "support_compliance"];
 
 /// Searched range of `mu_static`.
 pub const MU_STATIC_RANGE: (f64, f64) = (0.1, 0.8);
@@ -40,18 +46,41 @@ pub const SUPPORT_COMPLIANCE_HERTZ_MULTIPLE: f64 = 4.0;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Param {
     Spread,
+    Sd,
     MuStatic,
     DynamicRatio,
     SupportCompliance,
 }
 
 impl Param {
-    /// All four, in the order of [`PARAMETERS`].
-    pub const ALL: [Param; 4] =
-        [Param::Spread, Param::MuStatic, Param::DynamicRatio, Param::SupportCompliance];
+    /// All five, in the order of [`PARAMETERS`].
+    pub const ALL: [Param; 5] =
+        [Param::Spread, Param::Sd, Param::MuStatic, Param::DynamicRatio, Param::SupportCompliance];
 
     pub fn name(self) -> &'static str {
         PARAMETERS[self as usize]
+    }
+
+    /// The scale of the coefficients' distribution ([`Scene::mu_scale`]):
+    /// the spread or the sd. The calibration's model scales the pose
+    /// covariance with its square and searches it on a log scale.
+    pub fn is_scale(self) -> bool {
+        matches!(self, Param::Spread | Param::Sd)
+    }
+
+    /// The scale parameter of `scene`'s distribution: `sd` for a normal or
+    /// lognormal one, else `spread`.
+    pub fn scale_of(scene: &Scene) -> Param {
+        match scene.mu_distribution {
+            MuDistribution::Normal { .. } | MuDistribution::Lognormal { .. } => Param::Sd,
+            _ => Param::Spread,
+        }
+    }
+
+    /// Whether this parameter applies to `scene` (a scale parameter only
+    /// to its own distribution).
+    pub fn applies_to(self, scene: &Scene) -> bool {
+        !self.is_scale() || self == Param::scale_of(scene)
     }
 
     /// The parameter of a `fit` name.
@@ -63,7 +92,7 @@ impl Param {
     pub fn value(self, v: &Variant) -> f64 {
         let f = &v.scene.friction;
         match self {
-            Param::Spread => f.spread,
+            Param::Spread | Param::Sd => v.scene.mu_scale(),
             Param::MuStatic => f.mu_static,
             Param::DynamicRatio => f.dynamic_ratio,
             Param::SupportCompliance => {
@@ -76,9 +105,9 @@ impl Param {
     /// upper end also depends on mu_static (see [`admissible`]).
     pub fn range(self, v: &Variant, fit_mu: bool) -> (f64, f64) {
         match self {
-            Param::Spread => {
+            Param::Spread | Param::Sd => {
                 let mu = if fit_mu { MU_STATIC_RANGE.1 } else { v.scene.friction.mu_static };
-                (0.0, mu.min(MU_MAX - mu))
+                (0.0, mu.min(MU_MAX - mu) / self.sds_inside())
             }
             Param::MuStatic => MU_STATIC_RANGE,
             Param::DynamicRatio => DYNAMIC_RATIO_RANGE,
@@ -92,12 +121,11 @@ impl Param {
     /// scene and, where the coupling carries it (the dynamic ratio, the
     /// compliances), there.
     pub fn set(self, scene: &mut Scene, coupling: &mut Coupling, x: f64) {
-        let f = &mut scene.friction;
         match self {
-            Param::Spread => f.spread = x,
-            Param::MuStatic => f.mu_static = x,
+            Param::Spread | Param::Sd => scene.set_mu_scale(x),
+            Param::MuStatic => scene.friction.mu_static = x,
             Param::DynamicRatio => {
-                f.dynamic_ratio = x;
+                scene.friction.dynamic_ratio = x;
                 coupling.friction.dynamic_ratio = x;
             }
             Param::SupportCompliance => {
@@ -119,8 +147,9 @@ impl Param {
 /// exceeds mu_s), a finite support compliance >= 0. `Err` says the range.
 pub fn physical(name: &str, v: f64) -> Result<(), OutOfRange> {
     let (ok, range) = match Param::from_name(name) {
-        Some(Param::Spread) => {
-            ((0.0..=MU_MAX / 2.0).contains(&v), format!("[0, {}]", MU_MAX / 2.0))
+        Some(p @ (Param::Spread | Param::Sd)) => {
+            let top = MU_MAX / 2.0 / p.sds_inside();
+            ((0.0..=top).contains(&v), format!("[0, {top}]"))
         }
         Some(Param::MuStatic) => ((0.0..=MU_MAX).contains(&v), format!("[0, {MU_MAX}]")),
         Some(Param::DynamicRatio) => (v > 0.0 && v <= 1.0, "(0, 1]".into()),
@@ -137,9 +166,19 @@ pub struct OutOfRange {
     pub range: String,
 }
 
-/// Whether spread `s` and mu_static `mu` keep every mu_s in [0, MU_MAX].
-pub fn admissible(s: f64, mu: f64) -> bool {
-    s >= 0.0 && s <= mu && mu + s <= MU_MAX
+impl Param {
+    /// How many of its scales the distribution keeps each side of mu0
+    /// inside [0, MU_MAX]: the spread 1 (all of a uniform's range), the sd 2.
+    pub fn sds_inside(self) -> f64 {
+        if self == Param::Sd { 2.0 } else { 1.0 }
+    }
+}
+
+/// Whether scale `s` of parameter `scale` (the spread, or the sd) and
+/// mu_static `mu` keep mu0 +- s (mu0 +- 2 sd) in [0, MU_MAX].
+pub fn admissible(scale: Param, s: f64, mu: f64) -> bool {
+    let reach = scale.sds_inside() * s;
+    s >= 0.0 && reach <= mu && mu + reach <= MU_MAX
 }
 
 /// The model `v` with the parameters `params` set to `values`.

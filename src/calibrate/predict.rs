@@ -28,7 +28,7 @@ use std::collections::BTreeMap;
 
 use super::error::CalibrateError;
 use super::file::{Calibration, DofFit, design_hash};
-use super::params::{admissible, apply_named};
+use super::params::{Param, admissible, apply_named};
 use crate::assembly::Coupling;
 use crate::scene::Scene;
 use crate::solve::Solver;
@@ -68,7 +68,7 @@ pub fn predict(
     (samples, seed, solver): (usize, u64, Solver),
 ) -> Result<Prediction, CalibrateError> {
     let file = scene.file.clone();
-    super::fit::one_uniform_friction(scene)?;
+    super::fit::one_friction_scale(scene)?;
     let options = StudyOptions::monte_carlo(samples, seed, solver);
     let plan = StudyPlan::keeping_records(vec![(scene.clone(), coupling.clone())], &options)?;
     let estimate = with_parameters(&plan.variants[0], &cal.estimates());
@@ -104,9 +104,7 @@ pub fn predict(
         .iter()
         .enumerate()
         .map(|(i, c)| {
-            (c.scene.friction.spread > 0.0)
-                .then(|| report(c, Some(i)).map(|v| v.points))
-                .transpose()
+            (c.scene.mu_scale() > 0.0).then(|| report(c, Some(i)).map(|v| v.points)).transpose()
         })
         .collect::<Result<_, _>>()?;
     for (k, p) in variant.points.iter_mut().enumerate() {
@@ -133,13 +131,16 @@ pub fn predict(
 }
 
 /// Why the friction of `c` (a scene at calibrated values) is no scene's:
-/// mu_s = mu_static +- spread leaves [0, MU_MAX].
+/// mu_s = mu_static +- spread (mu_static +- 2 sd) leaves [0, MU_MAX].
 fn inadmissible(v: &Variant) -> Option<String> {
     let f = &v.scene.friction;
-    (!admissible(f.spread, f.mu_static)).then(|| {
+    let scale = Param::scale_of(&v.scene);
+    let s = v.scene.mu_scale();
+    let reach = if scale == Param::Sd { "2 sd" } else { "spread" };
+    (!admissible(scale, s, f.mu_static)).then(|| {
         format!(
-            "spread {} with mu_static {}: mu_s = mu_static +- spread would leave [0, {}]",
-            f.spread,
+            "{} {s} with mu_static {}: mu_static +- {reach} would leave [0, {}]",
+            scale.name(),
             f.mu_static,
             crate::scene::resolve::MU_MAX
         )

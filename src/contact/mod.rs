@@ -29,6 +29,7 @@ pub mod mindlin_deresiewicz;
 pub mod quadrature;
 pub mod series;
 pub mod stress;
+pub mod support;
 pub mod tangential;
 pub mod tangential_types;
 
@@ -42,6 +43,7 @@ pub use friction::FrictionLaw;
 pub use hertz::HertzLaw;
 pub use mindlin::{PrincipalStiffness, mindlin_axis_coefficients, tangential_tensor};
 pub use series::SeriesNormal;
+pub use support::TangentialSupport;
 pub use tangential::{
     Friction, SlipState, TangentialInput, TangentialLaw, TangentialResponse, TangentialState,
 };
@@ -176,6 +178,12 @@ pub enum ContactError {
          groove would touch it along a line or not at a single point)"
     )]
     MovingPinNeedsPin,
+    #[error(
+        "the support compliance's axis lies {angle_deg:.2} deg from the contact normal: `along` \
+         acts in the tangent plane, so give an axis at least 5 deg from the normal (along the \
+         groove, or across it)"
+    )]
+    SupportAxisAlongNormal { angle_deg: f64 },
 }
 
 /// One contact pair: its shape, the principal radii of both bodies and the
@@ -197,10 +205,11 @@ pub struct ContactLaw {
     /// Mindlin's k_t / a along the major and the minor axis of the contact
     /// ellipse [N/m^2] (`mindlin`), a the major semi-axis.
     pub mindlin: [f64; 2],
-    /// A support compliance in series with Mindlin's stiffness, isotropic
-    /// in the tangent plane [m/N] (0: none): k_t,eff = 1 / (1/k_t + c_t)
-    /// along each principal axis ([`ContactLaw::increment_stiffness`]).
-    pub tangential_compliance: f64,
+    /// A support compliance in series with Mindlin's stiffness in the
+    /// tangent plane (rigid: none): isotropic, k_t,eff = 1 / (1/k_t + c_t)
+    /// along each principal axis; or along and across an axis, the tensor
+    /// (K_m^-1 + C)^-1 (`support`, [`ContactLaw::increment_stiffness`]).
+    pub tangential_support: TangentialSupport,
 }
 
 /// Everything a contact gives at one normal load (SI units).
@@ -277,7 +286,7 @@ impl ContactPair {
             hertz,
             g_star: effective_shear_modulus(&self.material1, &self.material2),
             mindlin: mindlin_axis_coefficients(&self.material1, &self.material2, hertz.axis_ratio),
-            tangential_compliance: 0.0,
+            tangential_support: TangentialSupport::default(),
         })
     }
 
@@ -315,28 +324,59 @@ impl ContactPair {
 
 impl ContactLaw {
     /// Mindlin's k_t along the major and the minor axis at normal load F
-    /// (k_t ~ a ~ F^(1/3), so dk/dF = k / (3 F)); zero when unloaded.
+    /// (k_t ~ a ~ F^(1/3), so dk/dF = k / (3 F)); zero when unloaded. In
+    /// series with the support taken isotropic at its mean compliance
+    /// (exact for an isotropic support; an anisotropic one's principal
+    /// values need the contact's orientation, which the contact laws give
+    /// [`ContactLaw::increment_stiffness`]).
     pub fn tangential_stiffness_axes(&self, load: f64) -> [f64; 2] {
         let a = self.hertz.semi_axes(load)[0];
-        let c_t = self.tangential_compliance;
+        let s = &self.tangential_support;
+        let c_t = 0.5 * (s.along + s.across);
         self.mindlin.map(|c| c * a).map(|k| if c_t > 0.0 { k / (1.0 + k * c_t) } else { k })
     }
 
-    /// A scalar k_t at normal load F: the geometric mean of the two axes
-    /// (8 G* a for a circle), and dk_t/dF = k_t / (3 F). For uses that need
+    /// A scalar k_t at normal load F: sqrt(det K) of the 2x2 tangential
+    /// stiffness (8 G* a for a circle), and dk_t/dF. For uses that need
     /// one number (damping, frequency estimates); the contact laws use the
-    /// 2x2 stiffness of [`ContactLaw::tangential_stiffness_axes`].
+    /// 2x2 stiffness of [`ContactLaw::increment_stiffness`]. With Mindlin's
+    /// k1, k2 in series with the support (`support`),
+    /// det K = k1 k2 / D, D = 1 + c_m (k1 + k2) + c_along c_across k1 k2,
+    /// c_m = (c_along + c_across)/2 (tr(C K_m) averaged over the support's
+    /// orientation; exact for an isotropic support or a circular contact),
+    /// and, with k_i ~ F^(1/3),
+    /// d ln k_t/dF = (1 - (c_m (k1 + k2) + 2 c_along c_across k1 k2) / (2 D)) / (3 F).
     pub fn tangential_stiffness(&self, load: f64) -> (f64, f64) {
         if load <= 0.0 {
             return (0.0, 0.0);
         }
-        let [k1, k2] = self.tangential_stiffness_axes(load);
-        let kt = (k1 * k2).sqrt();
-        // With the series support: d ln k_i'/dF = (1/(3F)) k_i' / k_i =
-        // (1/(3F)) (1 - k_i' c_t), averaged over the two axes.
-        let c_t = self.tangential_compliance;
-        let share = 1.0 - 0.5 * c_t * (k1 + k2);
+        let a = self.hertz.semi_axes(load)[0];
+        let [k1, k2] = self.mindlin.map(|c| c * a);
+        let s = &self.tangential_support;
+        let c_m = 0.5 * (s.along + s.across);
+        let cross = s.along * s.across * k1 * k2;
+        let d = 1.0 + c_m * (k1 + k2) + cross;
+        let kt = (k1 * k2 / d).sqrt();
+        let share = 1.0 - (c_m * (k1 + k2) + 2.0 * cross) / (2.0 * d);
         (kt, kt / (3.0 * load) * share)
+    }
+
+    /// k_t = sqrt(det K) of the contact's 2x2 tangential stiffness at
+    /// normal load F, oriented: Mindlin's principal stiffness about
+    /// `major_axis` in series with the support (exact for an anisotropic
+    /// support too, unlike [`Self::tangential_stiffness`]); zero unloaded.
+    pub fn oriented_tangential_stiffness(
+        &self,
+        load: f64,
+        normal: &Vector3<f64>,
+        major_axis: &Vector3<f64>,
+    ) -> f64 {
+        if load <= 0.0 {
+            return 0.0;
+        }
+        let a = self.hertz.semi_axes(load)[0];
+        let (principal, _, _) = self.increment_stiffness(a, 0.0, normal, major_axis, false);
+        (principal.k[0] * principal.k[1]).sqrt()
     }
 
     /// The increment's effective semi-axis for K_t and its relative
@@ -379,7 +419,13 @@ impl ContactLaw {
         tangent: bool,
     ) -> (PrincipalStiffness, Matrix3<f64>, Matrix3<f64>) {
         let k = self.mindlin.map(|c| c * a_eff);
-        let c_t = self.tangential_compliance;
+        let support = &self.tangential_support;
+        if !support.is_isotropic() {
+            let series = support.series(k, normal, major_axis);
+            let dkt = if tangent { series.derivative * dlog } else { Matrix3::zeros() };
+            return (series.principal, series.tensor, dkt);
+        }
+        let c_t = support.along;
         // In series with the support: k' = k / (1 + k c_t) per principal
         // axis (the increment's, since the support is linear), and
         // dk'/dF_n = (dk/dF_n) / (1 + k c_t)^2 with dk/dF_n = k dlog.

@@ -23,7 +23,7 @@ use std::path::Path;
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
-use crate::contact::{FrictionLaw, TangentialLaw};
+use crate::contact::{FrictionLaw, TangentialLaw, TangentialSupport};
 use crate::material::Material;
 use crate::param::{Param, ParamError};
 use error::ErrorContext;
@@ -88,9 +88,10 @@ pub struct Surface {
     /// Support compliance in series with the contact, normal direction [m/N].
     pub support_compliance: f64,
     /// Support compliance in series with the contact's tangential
-    /// stiffness, isotropic in the tangent plane [m/N] (0: none).
-    #[serde(default, skip_serializing_if = "is_zero")]
-    pub tangential_compliance: f64,
+    /// stiffness [m/N]: isotropic in the tangent plane, or along and
+    /// across an axis (rigid: none).
+    #[serde(flatten)]
+    pub tangential_support: TangentialSupport,
     /// The moving element's surface at this contact; `None`: the ball's sphere.
     pub moving: Option<MovingPatch>,
 }
@@ -345,6 +346,37 @@ pub(crate) fn is_zero(x: &f64) -> bool {
 }
 
 impl Scene {
+    /// The scale of the friction coefficients' distribution, the one number
+    /// a calibration fits for it: the spread of a uniform one, the sd of a
+    /// normal or lognormal one (its first contact's; `calibrate` requires
+    /// one for all); 0 for empirical values (nothing to scale).
+    pub fn mu_scale(&self) -> f64 {
+        match &self.mu_distribution {
+            MuDistribution::Uniform => self.friction.spread,
+            MuDistribution::Normal { sd } | MuDistribution::Lognormal { sd } => {
+                sd.first().copied().unwrap_or(0.0)
+            }
+            MuDistribution::Empirical { .. } => 0.0,
+        }
+    }
+
+    /// Set [`Scene::mu_scale`] to `x` at every contact (empirical values
+    /// are left as they are).
+    pub fn set_mu_scale(&mut self, x: f64) {
+        match &mut self.mu_distribution {
+            MuDistribution::Uniform => self.friction.spread = x,
+            MuDistribution::Normal { sd } | MuDistribution::Lognormal { sd } => sd.fill(x),
+            MuDistribution::Empirical { .. } => {}
+        }
+    }
+
+    /// The warning where the truncation of a normal or lognormal
+    /// distribution removes much of it ([`MuDistribution::truncation_warning`]).
+    pub fn truncation_warning(&self) -> Option<String> {
+        let mu0s: Vec<f64> = (0..self.surfaces.len()).map(|k| self.friction_of(k).0).collect();
+        self.mu_distribution.truncation_warning(&mu0s)
+    }
+
     /// (mu0, spread) of contact `k` (0-based): its own where `[friction]`
     /// gives lists, else the scene's.
     pub fn friction_of(&self, k: usize) -> (f64, f64) {

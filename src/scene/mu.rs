@@ -43,6 +43,11 @@ pub enum MuDistribution {
     Empirical { values: Vec<f64> },
 }
 
+/// The share of a distribution's mass its truncation may remove before
+/// `check` and `study` warn (1 %: the mean and sd drawn then differ from
+/// the stated ones by a few per cent).
+pub const TRUNCATION_WARN: f64 = 0.01;
+
 fn phi() -> Normal {
     Normal::new(0.0, 1.0).expect("the standard normal")
 }
@@ -118,6 +123,33 @@ impl MuDistribution {
             }
             _ => 0.0,
         }
+    }
+
+    /// A warning where the truncation to [0, MU_MAX] removes more than
+    /// [`TRUNCATION_WARN`] of a contact's distribution (from each contact's
+    /// nominal `mu0s`): the coefficients drawn then no longer have the
+    /// stated mean and sd. `None` below it.
+    pub fn truncation_warning(&self, mu0s: &[f64]) -> Option<String> {
+        let (name, sd) = match self {
+            MuDistribution::Normal { sd } => ("normal", sd),
+            MuDistribution::Lognormal { sd } => ("lognormal", sd),
+            _ => return None,
+        };
+        let (k, most) = (0..sd.len())
+            .map(|k| (k, self.truncated_mass(k, mu0s[k])))
+            .fold((0, 0.0), |a, b| if b.1 > a.1 { b } else { a });
+        (most > TRUNCATION_WARN).then(|| {
+            format!(
+                "the {name} distribution of contact {} (mean {}, sd {}) loses {:.1} % of its \
+                 mass to the truncation to [0, {MU_MAX}]: the coefficients drawn do not have \
+                 that mean and sd (their distribution is the truncated one); a smaller sd keeps \
+                 the stated one",
+                k + 1,
+                mu0s[k],
+                sd[k],
+                100.0 * most
+            )
+        })
     }
 
     /// One phrase for the reports, e.g. `normal, mean 0.5, sd 0.05,

@@ -179,10 +179,17 @@ pub struct ContactResult {
     pub support_approach_m: f64,
     /// Support compliance c [m/N] (0: none).
     pub support_compliance_m_per_n: f64,
-    /// Its tangential support compliance (in series with Mindlin's) [m/N];
-    /// left out of the JSON when 0.
+    /// Its tangential support compliance (in series with Mindlin's) [m/N],
+    /// along `tangential_support_axis` when that is given; left out of
+    /// the JSON when 0.
     #[serde(skip_serializing_if = "crate::scene::is_zero")]
     pub tangential_support_compliance_m_per_n: f64,
+    /// An anisotropic support's compliance across its axis [m/N] and the
+    /// axis (unit, world frame at the scene pose); absent when isotropic.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tangential_support_compliance_across_m_per_n: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tangential_support_axis: Option<[f64; 3]>,
     pub state: SlipState,
     /// Static and dynamic coefficient used.
     pub mu_static: f64,
@@ -213,6 +220,8 @@ impl ContactResult {
     pub fn from_eval(coupling: &Coupling, i: usize, e: &ContactEval, friction: Friction) -> Self {
         let contact = &coupling.contacts[i];
         let ft = -e.tangential.force;
+        let support = contact.law.tangential_support;
+        let anisotropic = !support.is_isotropic();
         let stress =
             contact_stress(&contact.pair, &contact.law.hertz, &contact.shear, e.normal_force);
         ContactResult {
@@ -223,7 +232,9 @@ impl ContactResult {
             hertz_approach_m: contact.normal.hertz.approach(e.normal_force),
             support_approach_m: contact.normal.support_approach(e.normal_force),
             support_compliance_m_per_n: contact.normal.compliance,
-            tangential_support_compliance_m_per_n: contact.law.tangential_compliance,
+            tangential_support_compliance_m_per_n: support.along,
+            tangential_support_compliance_across_m_per_n: anisotropic.then_some(support.across),
+            tangential_support_axis: anisotropic.then_some(support.axis.into()),
             state: e.slip(),
             mu_static: friction.mu_s,
             mu_dynamic: friction.mu_d,

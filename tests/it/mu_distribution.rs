@@ -135,7 +135,7 @@ fn distribution_keys_are_checked_at_their_line() {
         common::refused_at_key(&scene01(friction), field, says);
     }
     // A normal needs its sd; corners have no ends to draw; calibration
-    // fits a uniform spread only.
+    // fits its sd, not a uniform's spread.
     let err = Scene::parse(&scene01("mu_static = 0.5\ndistribution = \"normal\""), "bad.toml")
         .unwrap_err()
         .to_string();
@@ -147,8 +147,9 @@ fn distribution_keys_are_checked_at_their_line() {
     let (ok, _, err) = kinrepro(&["study", &file, "--sampler", "corners"]);
     assert!(!ok && err.contains("corners") && err.contains("normal"), "{err}");
     let measured = common::worked_measurement();
-    let (ok, _, err) = kinrepro(&["calibrate", &file, "--measured", measured.to_str().unwrap()]);
-    assert!(!ok && err.contains("distribution = \"normal\""), "{err}");
+    let measured = measured.to_str().unwrap();
+    let (ok, _, err) = kinrepro(&["calibrate", &file, "--measured", measured, "--fit", "spread"]);
+    assert!(!ok && err.contains("normal") && err.contains("`sd`"), "{err}");
 }
 
 fn pearson(a: &[f64], b: &[f64]) -> f64 {
@@ -195,4 +196,40 @@ fn a_gaussian_copula_correlates_a_ball_and_keeps_the_marginals() {
     let line = text.lines().position(|l| l.starts_with("correlation =")).unwrap() + 1;
     let err = Scene::parse(&text, "bad.toml").unwrap_err().to_string();
     assert!(err.starts_with(&format!("bad.toml:{line}: friction.correlation: ")), "{err}");
+}
+
+/// A normal whose truncation to [0, 2] removes more than 1 % is warned
+/// about by `check` and `study`, with the share removed: sd 5 about 0.5
+/// loses Phi(-0.1) + 1 - Phi(0.3) = 0.4602 + 0.3821 = 84.2 %; sd 0.05
+/// loses nothing worth a warning.
+#[test]
+fn a_heavy_truncation_is_warned_about() {
+    let write = |name: &str, friction: &str| {
+        let path = std::env::temp_dir().join(format!("kinrepro_mu_truncation_{name}.toml"));
+        std::fs::write(&path, scene01(friction)).unwrap();
+        path.display().to_string()
+    };
+    let heavy = write("heavy", "mu_static = 0.5\ndistribution = \"normal\"\nsd = 5");
+    let (ok, out, err) = kinrepro(&["check", &heavy]);
+    assert!(ok, "{err}");
+    assert!(out.contains("WARNING") && out.contains("84.2 %"), "{out}");
+    let (ok, _, err) = kinrepro(&["study", &heavy, "--samples", "10", "--sampler", "mc"]);
+    assert!(ok && err.contains("warning") && err.contains("84.2 %"), "{err}");
+    let mild = write("mild", "mu_static = 0.5\ndistribution = \"normal\"\nsd = 0.05");
+    let (ok, out, _) = kinrepro(&["check", &mild]);
+    assert!(ok && !out.contains("mass to the truncation"), "{out}");
+}
+
+/// The keyword a message names is the one the scene file reads.
+#[test]
+fn distribution_names_are_the_scene_keywords() {
+    use kinrepro::scene::file::Distribution;
+    for d in [
+        Distribution::Uniform,
+        Distribution::Normal,
+        Distribution::Lognormal,
+        Distribution::Empirical,
+    ] {
+        assert_eq!(serde_json::to_string(&d).unwrap(), format!("\"{}\"", d.name()));
+    }
 }

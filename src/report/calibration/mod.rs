@@ -42,7 +42,7 @@ fn parameter_lines(c: &Calibration) -> String {
     let mut s = String::new();
     for (name, p) in &c.parameters {
         let alone = name == "spread" && c.parameters.len() == 1;
-        let low = match (p.low_at_bound, name == "spread") {
+        let low = match (p.low_at_bound, name == "spread" || name == "sd") {
             (false, _) => "",
             (true, true) => "  (low end: no lower bound)",
             (true, false) => "  (low end: at the range end)",
@@ -111,9 +111,12 @@ pub fn calibration_table(c: &Calibration) -> String {
         s += &format!("{name}: {} (held at the scene's value)\n", value(name, *v));
     }
     if !c.fixed.is_empty() {
-        s += "  the intervals are conditional on the held values: a held value that is wrong \
-              moves the fitted ones (a fitted support_compliance or mu_static can absorb a wrong \
-              spread); fit them together to see whether the data separate them\n";
+        s += &format!(
+            "  the intervals are conditional on the held values: a held value that is wrong \
+             moves the fitted ones (a fitted support_compliance or mu_static can absorb a wrong \
+             {}); fit them together to see whether the data separate them\n",
+            c.model.scale
+        );
     }
     if let Some(r) = &c.correlation {
         s += &correlation_lines(r);
@@ -121,18 +124,20 @@ pub fn calibration_table(c: &Calibration) -> String {
     match &c.model.grid {
         None => {
             s += &format!(
-                "model: reference spread {}, sigma/spread changed by {:.2} % from it to the estimate\n\n",
+                "model: reference {0} {1}, sigma/{0} changed by {2:.2} % from it to the estimate\n\n",
+                c.model.scale,
                 c.model.reference_spread,
                 100.0 * c.model.linearity
             )
         }
         Some(g) => {
             s += &format!(
-                "model: {} node studies over {} (spread {:.5}); grid and sigma ∝ spread against direct studies at the estimate and the region points: largest sigma difference {:.2} %\n\n",
+                "model: {} node studies over {} ({4} {:.5}); grid and sigma ∝ {4} against direct studies at the estimate and the region points: largest sigma difference {:.2} %\n\n",
                 g.nodes.iter().map(Vec::len).product::<usize>(),
                 g.parameters.join(" x "),
                 g.spread,
-                100.0 * g.check
+                100.0 * g.check,
+                c.model.scale,
             );
             if g.check > GRID_CHECK_WARN {
                 s += &format!(
@@ -165,8 +170,8 @@ pub fn calibration_table(c: &Calibration) -> String {
             String::new()
         } else {
             format!(
-                "\n  POOR FIT (p < {}): no friction spread explains the measured shape (DOF ratios, correlations); do not use this spread",
-                g.threshold
+                "\n  POOR FIT (p < {}): no friction {1} explains the measured shape (DOF ratios, correlations); do not use this {1}",
+                g.threshold, c.model.scale
             )
         }
     );

@@ -11,7 +11,7 @@ use std::fmt::Write;
 
 use crate::contact::hertz::CONFORMITY_LIMIT;
 use crate::contact::history::HistoryStep;
-use crate::contact::{ContactEvaluation, HertzLaw, PairCurvature};
+use crate::contact::{ContactEvaluation, HertzLaw, PairCurvature, TangentialSupport};
 use crate::dof::nano;
 use crate::report::table::{Table, cells};
 
@@ -72,11 +72,22 @@ pub struct HistoryProvenance<'a> {
     pub mu_static: f64,
     pub mu_dynamic: f64,
     pub history_file: &'a str,
-    /// A support compliance in series with Mindlin's [m/N] (0: none).
-    pub tangential_compliance: f64,
+    /// A support compliance in series with Mindlin's [m/N] (rigid: none);
+    /// an anisotropic one along x (its axis) and across it.
+    pub tangential_support: TangentialSupport,
     /// The command that drove it, as its user wrote it (e.g. the CLI's
     /// `contact --history`).
     pub command: &'a str,
+}
+
+/// The tangential support of a history's header: one compliance, or the
+/// two along x and across it (y).
+fn support_text(s: &TangentialSupport) -> String {
+    if s.is_isotropic() {
+        format!("{:e} m/N", s.along)
+    } else {
+        format!("{:e} m/N along x, {:e} m/N along y", s.along, s.across)
+    }
 }
 
 /// The CSV of `kinrepro contact --history`: `#` provenance lines, then the
@@ -88,7 +99,7 @@ pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
     let [c1, c2] = [p.curvature.radii1, p.curvature.radii2];
     let _ = writeln!(
         s,
-        "# kinrepro {} {} {}: {} radii1 {:e},{:e} m radii2 {:e},{:e} m angle {} deg, {} on {}, tangential law {}, mu_s {}, mu_d {}, tangential support compliance {:e} m/N",
+        "# kinrepro {} {} {}: {} radii1 {:e},{:e} m radii2 {:e},{:e} m angle {} deg, {} on {}, tangential law {}, mu_s {}, mu_d {}, tangential support compliance {}",
         env!("CARGO_PKG_VERSION"),
         p.command,
         p.history_file,
@@ -103,7 +114,7 @@ pub fn history_csv(p: &HistoryProvenance, steps: &[HistoryStep]) -> String {
         p.law,
         p.mu_static,
         p.mu_dynamic,
-        p.tangential_compliance
+        support_text(&p.tangential_support)
     );
     let _ = writeln!(
         s,

@@ -20,8 +20,12 @@ pub fn seating_note(scene: &Scene, c: &Coupling, cannot_seat: Option<&str>) -> S
             "  CANNOT SEAT: {reason}; a study of it exits non-zero (its scatter is not a result)\n"
         );
     }
+    let truncation = match scene.truncation_warning() {
+        Some(w) => format!("  WARNING: {w}\n"),
+        None => String::new(),
+    };
     if mu_max < limit {
-        return String::new();
+        return truncation;
     }
     let what = if scene.mu_distribution.is_uniform() {
         "mu_static + spread"
@@ -29,7 +33,7 @@ pub fn seating_note(scene: &Scene, c: &Coupling, cannot_seat: Option<&str>) -> S
         "the 99.9 % quantile of mu_s"
     };
     format!(
-        "  WARNING: {what} = {mu_max:.3} is above the friction limit {limit:.4}: seating from the touching pose (as `study` does) is unaffected, but a half that arrives off-centre (one contact still open) may stick off its seat instead of centring\n"
+        "{truncation}  WARNING: {what} = {mu_max:.3} is above the friction limit {limit:.4}: seating from the touching pose (as `study` does) is unaffected, but a half that arrives off-centre (one contact still open) may stick off its seat instead of centring\n"
     )
 }
 
@@ -74,10 +78,11 @@ pub fn check_summary(s: &Scene, c: &Coupling) -> String {
 /// The support compliances behind the contacts (`support_compliance`),
 /// one line per distinct pair of values; empty where every support is rigid.
 fn support_lines(s: &Scene) -> String {
-    let mut groups: Vec<((f64, f64), Vec<usize>)> = Vec::new();
+    let mut groups: Vec<((f64, f64, f64), Vec<usize>)> = Vec::new();
     for (i, surface) in s.surfaces.iter().enumerate() {
-        let key = (surface.support_compliance, surface.tangential_compliance);
-        if key == (0.0, 0.0) {
+        let t = &surface.tangential_support;
+        let key = (surface.support_compliance, t.along, t.across);
+        if key == (0.0, 0.0, 0.0) {
             continue;
         }
         match groups.iter_mut().find(|(k, _)| *k == key) {
@@ -86,11 +91,16 @@ fn support_lines(s: &Scene) -> String {
         }
     }
     let mut out = String::new();
-    for ((normal, tangential), contacts) in groups {
+    for ((normal, along, across), contacts) in groups {
         let list: Vec<String> = contacts.iter().map(|c| c.to_string()).collect();
+        let tangential = if along == across {
+            format!("tangential {along:e} m/N")
+        } else {
+            format!("tangential {along:e} m/N along its axis, {across:e} m/N across")
+        };
         let _ = writeln!(
             out,
-            "  support compliance behind contact(s) {}: normal {normal:e} m/N, tangential {tangential:e} m/N",
+            "  support compliance behind contact(s) {}: normal {normal:e} m/N, {tangential}",
             list.join(", ")
         );
     }

@@ -53,7 +53,7 @@ pub(super) fn check_coupling(
         }
     }
     if let Some(v) = &c.support_compliance {
-        crate::scene::resolve::support(ctx, v, "coupling.support_compliance")?;
+        crate::scene::resolve::support(ctx, v, "coupling.support_compliance", false)?;
     }
     let diameter = positive(&c.diameter, "coupling.diameter")?;
     plausible::check_coupling(c, raw.allow_large_values, ctx)?;

@@ -144,7 +144,7 @@ fn surface(c: &CouplingFile, dims: &Dimensions, k: &ContactSpec, ck: &Vector3<f6
         direction: None,
         centre: None,
         radius: None,
-        support_compliance: c.support_compliance.clone(),
+        support_compliance: c.support_compliance.as_ref().map(|v| oriented(v, k, ck)),
         moving_centre: None,
         moving_radius: None,
         moving_direction: None,
@@ -192,6 +192,27 @@ fn surface(c: &CouplingFile, dims: &Dimensions, k: &ContactSpec, ck: &Vector3<f6
         }
     }
     s
+}
+
+/// A support compliance with `along` and `across` gets the axis of
+/// `along`: the groove's (a V's, a pin's, a gothic arch's), a trihedral
+/// element's horizontal line, or for Kelvin's flat the radial direction of
+/// its ball (docs/scenes.md).
+fn oriented(v: &Spanned<toml::Value>, k: &ContactSpec, ck: &Vector3<f64>) -> Spanned<toml::Value> {
+    let toml::Value::Table(t) = v.get_ref() else {
+        return v.clone();
+    };
+    if !(t.contains_key("along") || t.contains_key("across")) {
+        return v.clone();
+    }
+    let axis = match k.role {
+        Role::Flat => Vector3::new(ck.x, ck.y, 0.0).normalize(),
+        Role::Groove | Role::Seat => k.axis,
+    };
+    let mut t = t.clone();
+    let numbers = [axis.x, axis.y, axis.z].map(toml::Value::Float);
+    t.insert("axis".into(), toml::Value::Array(numbers.to_vec()));
+    Spanned::new(v.span(), toml::Value::Table(t))
 }
 
 /// The file's evaluation points, or the centre (and, for Kelvin, the

@@ -5,7 +5,7 @@ use nalgebra::Vector3;
 use toml::Spanned;
 
 use super::fields::Fields;
-use super::tables::{Support, support};
+use super::support::{Support, support};
 use crate::scene::error::{ErrorContext, SceneError};
 use crate::scene::file::{BallFile, Numbers, SceneFile, SurfaceFile, SurfaceKind};
 use crate::scene::plausible;
@@ -96,17 +96,24 @@ fn surface(s: &SurfaceFile, i: usize, fx: &Fields, n_balls: usize) -> Result<Sur
             radius: radius(s)?,
         },
     };
-    let support = match &s.support_compliance {
-        Some(v) => support(ctx, v, &field("support_compliance"))?,
-        None => Support::default(),
+    let (support, span) = match &s.support_compliance {
+        Some(v) => (support(ctx, v, &field("support_compliance"), true)?, v.span()),
+        None => (Support::default(), s.kind.span()),
     };
+    let own_axis = match geometry {
+        SurfaceGeometry::Cylinder { direction, .. }
+        | SurfaceGeometry::ConcaveCylinder { direction, .. } => Some(direction),
+        SurfaceGeometry::Plane { .. } | SurfaceGeometry::Sphere { .. } => None,
+    };
+    let tangential_support =
+        support.oriented(own_axis, ctx, &span, &field("support_compliance"))?;
     Ok(Surface {
         geometry,
         material: fx.material(&s.material, &field("material"))?,
         ball: ball as usize - 1,
         line: ctx.line_of(&s.kind.span()),
         support_compliance: support.normal,
-        tangential_compliance: support.tangential,
+        tangential_support,
         moving: moving_patch(s, i, fx)?,
     })
 }

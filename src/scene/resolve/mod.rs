@@ -7,11 +7,13 @@ mod fields;
 pub mod geometry;
 pub mod materials;
 pub mod preload;
+pub mod support;
 pub mod tables;
 pub mod thermal;
 
 use fields::Fields;
-pub use tables::{MU_MAX, Support, compliance, support};
+pub use support::{Support, compliance, support};
+pub use tables::MU_MAX;
 
 use super::error::{ErrorContext, SceneError};
 use super::file::SceneFile;
@@ -26,7 +28,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     let ball_of: Vec<usize> = surfaces.iter().map(|s| s.ball).collect();
     let (friction, contact_friction, mu_distribution) =
         tables::friction(&f.friction, &ball_of, ctx)?;
-    let tangential = surfaces.iter().position(|s| s.tangential_compliance > 0.0);
+    let tangential = surfaces.iter().position(|s| !s.tangential_support.is_rigid());
     if let (Some(i), TangentialLaw::MindlinDeresiewicz) = (tangential, friction.tangential_law) {
         return Err(ctx.error(
             None,

@@ -166,7 +166,7 @@ fn distribution(
     ctx: &ErrorContext,
 ) -> Result<MuDistribution, SceneError> {
     let kind = fr.distribution;
-    let name = format!("{kind:?}").to_lowercase();
+    let name = kind.name();
     let refuse = |span: std::ops::Range<usize>, field: &str, why: String| {
         Err(ctx.error(Some(&span), field, why))
     };
@@ -382,68 +382,6 @@ fn friction_law(fr: &FrictionFile, ctx: &ErrorContext) -> Result<FrictionLaw, Sc
             }
             Ok(FrictionLaw::Decay { coefficient: v })
         }
-    }
-}
-
-/// A support compliance [m/N]: finite and >= 0.
-/// A support compliance in series with a contact [m/N]: normal (Hertz's
-/// direction) and tangential (isotropic in the tangent plane, in series
-/// with Mindlin's stiffness).
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct Support {
-    pub normal: f64,
-    pub tangential: f64,
-}
-
-/// `support_compliance`: a number (normal only) or
-/// `{ normal = c_n, tangential = c_t }` (each optional, default 0), every
-/// value finite and >= 0 [m/N].
-pub fn support(
-    ctx: &ErrorContext,
-    v: &Spanned<toml::Value>,
-    field: &str,
-) -> Result<Support, SceneError> {
-    let span = v.span();
-    let checked = |x: &toml::Value, field: &str| -> Result<f64, SceneError> {
-        let value = number(x).ok_or_else(|| {
-            let why = format!("expected a compliance in m/N, found {}", x.type_str());
-            ctx.error(Some(&span), field, why)
-        })?;
-        compliance(ctx, &Spanned::new(span.clone(), value), field)
-    };
-    match v.get_ref() {
-        toml::Value::Table(t) => {
-            let mut out = Support::default();
-            for (key, x) in t {
-                let sub = format!("{field}.{key}");
-                match key.as_str() {
-                    "normal" => out.normal = checked(x, &sub)?,
-                    "tangential" => out.tangential = checked(x, &sub)?,
-                    _ => {
-                        return Err(ctx.error(
-                            Some(&span),
-                            sub,
-                            "unknown key: a support compliance has `normal` and `tangential` [m/N]",
-                        ));
-                    }
-                }
-            }
-            Ok(out)
-        }
-        x => Ok(Support { normal: checked(x, field)?, tangential: 0.0 }),
-    }
-}
-
-pub fn compliance(ctx: &ErrorContext, v: &Spanned<f64>, field: &str) -> Result<f64, SceneError> {
-    let x = *v.get_ref();
-    if x.is_finite() && x >= 0.0 {
-        Ok(x)
-    } else {
-        Err(ctx.error(
-            Some(&v.span()),
-            field,
-            format!("{x} must be finite and >= 0 (a compliance in m/N)"),
-        ))
     }
 }
 

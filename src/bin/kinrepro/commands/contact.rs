@@ -6,10 +6,12 @@ use std::path::{Path, PathBuf};
 use kinrepro::contact::history::{HistoryError, LoadStep, drive, parse_history_csv};
 use kinrepro::contact::{
     ContactLaw, ContactPair, ContactShape, Friction, PairCurvature, TangentialLaw,
+    TangentialSupport,
 };
 use kinrepro::material::Material;
 use kinrepro::report::contact::validity::{HertzValidity, hertz_validity, radius_hint};
 use kinrepro::report::contact::{HistoryProvenance, contact_table, history_csv};
+use nalgebra::Vector3;
 
 use super::{emit, number, print_json, read_text};
 use crate::error::{Context, Error, Result, usage};
@@ -20,7 +22,7 @@ use crate::flags::ContactArgs;
 pub struct Contact {
     pair: ContactPair,
     load: Option<f64>,
-    history: Option<(PathBuf, Friction, TangentialLaw, f64)>,
+    history: Option<(PathBuf, Friction, TangentialLaw, TangentialSupport)>,
     json: bool,
 }
 
@@ -40,15 +42,24 @@ impl TryFrom<ContactArgs> for Contact {
             None => None,
             Some(path) => {
                 let c = a.tangential_compliance;
-                if !(c.is_finite() && c >= 0.0) {
-                    usage!("--tangential-compliance {c}: must be finite and >= 0 (m/N)");
+                let across = a.tangential_compliance_across;
+                for (flag, c) in [("", Some(c)), ("-across", across)] {
+                    if let Some(c) = c
+                        && !(c.is_finite() && c >= 0.0)
+                    {
+                        usage!("--tangential-compliance{flag} {c}: must be finite and >= 0 (m/N)");
+                    }
                 }
-                if c > 0.0 && a.tangential_law == TangentialLaw::MindlinDeresiewicz {
+                let support = match across {
+                    None => TangentialSupport::isotropic(c),
+                    Some(across) => TangentialSupport { along: c, across, axis: Vector3::x() },
+                };
+                if !support.is_rigid() && a.tangential_law == TangentialLaw::MindlinDeresiewicz {
                     usage!(
-                        "--tangential-compliance {c}: the mindlin-deresiewicz law does not take one (use --tangential-law coulomb)"
+                        "--tangential-compliance: the mindlin-deresiewicz law does not take a support compliance (use --tangential-law coulomb)"
                     );
                 }
-                Some((path, history_friction(&a)?, a.tangential_law, c))
+                Some((path, history_friction(&a)?, a.tangential_law, support))
             }
         };
         let pair = pair(&a)?;
@@ -168,12 +179,12 @@ fn history(
     pair: &ContactPair,
     path: &Path,
     friction: Friction,
-    (tangential_law, compliance): (TangentialLaw, f64),
+    (tangential_law, support): (TangentialLaw, TangentialSupport),
 ) -> Result {
     let file = path.display().to_string();
     let rows = parse_history_csv(&read_text(path)?, &file)?;
     let loads: Vec<LoadStep> = rows.iter().map(|r| r.load).collect();
-    let law = ContactLaw { tangential_compliance: compliance, ..pair.law()? };
+    let law = ContactLaw { tangential_support: support, ..pair.law()? };
     // Hertz's half-space assumption is checked at the largest normal load.
     let peak = loads.iter().map(|l| l.normal_force).fold(0.0, f64::max);
     validity(pair, peak).context(format!("{file}: P_N {}", number(peak)))?;
@@ -194,7 +205,7 @@ fn history(
         mu_static: friction.mu_s,
         mu_dynamic: friction.mu_d,
         history_file: &file,
-        tangential_compliance: compliance,
+        tangential_support: support,
         command: "contact --history",
     };
     emit(&history_csv(&prov, &steps))

@@ -55,6 +55,11 @@ impl TryFrom<StudyArgs> for Study {
 
 pub fn study(s: Study) -> Result {
     let models = s.scenes.iter().map(|p| read_scene(p)).collect::<Result<Vec<_>>>()?;
+    for (scene, _) in &models {
+        if let Some(w) = scene.truncation_warning() {
+            eprintln!("warning: {}: {w}", scene.file);
+        }
+    }
     let plan = StudyPlan::new(models, &s.options)?;
     set_jobs(s.jobs, plan.seatings)?;
     let bar = progress(plan.seatings, plan.method())?;

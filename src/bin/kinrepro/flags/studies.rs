@@ -104,10 +104,11 @@ pub struct CalibrateArgs {
     /// ASCII character); default: detected from its header line.
     #[arg(long)]
     pub delimiter: Option<String>,
-    /// Parameters to fit, comma-separated: any of spread, mu_static,
-    /// dynamic_ratio, support_compliance (the others held at the scene's
-    /// values; docs/calibration.md gives the searched ranges).
-    #[arg(long, value_delimiter = ',', default_value = "spread")]
+    /// Parameters to fit, comma-separated: the scale of the scene's friction
+    /// distribution (spread for uniform, sd for normal or lognormal; the
+    /// default), mu_static, dynamic_ratio, support_compliance (the others
+    /// held at the scene's values; docs/calibration.md gives the ranges).
+    #[arg(long, value_delimiter = ',')]
     pub fit: Vec<String>,
     /// Sensor noise sigma per DOF, e.g. x=1nm,y=1nm,phi_x=20nrad (a number
     /// without unit is SI: m or rad); overrides the file's `# noise:`.

@@ -67,6 +67,11 @@ pub struct ContactArgs {
     /// contact, as `support_compliance = { tangential = ... }` in a scene.
     #[arg(long, default_value_t = 0.0, requires = "history")]
     pub tangential_compliance: f64,
+    /// The support's compliance across the major axis [m/N] (y; with
+    /// --history): --tangential-compliance is then the compliance along it
+    /// (x), as `support_compliance = { along = ..., across = ... }`.
+    #[arg(long, requires = "history")]
+    pub tangential_compliance_across: Option<f64>,
 }
 
 #[derive(Args)]
