@@ -146,7 +146,8 @@ impl AtomicFile {
     pub fn create(target: &Path, force: bool) -> Result<Self, WriteError> {
         let sink = match destination(target, force)? {
             Destination::Replace(real) => {
-                let tmp = temp_next_to(&real, "")?;
+                super::temporaries::note_stale(&real);
+                let tmp = temp_next_to(&real)?;
                 let reg = Registered::new(tmp.path());
                 Sink::Temp(BufWriter::new(tmp), real, reg)
             }
@@ -214,16 +215,17 @@ impl Write for AtomicFile {
         }
     }
 }
-/// A new empty temporary file in `target`'s folder (`.name.XXXX.suffix`).
-pub fn temp_next_to(target: &Path, suffix: &str) -> Result<NamedTempFile, WriteError> {
+/// A new empty temporary file in `target`'s folder,
+/// `.NAME.kinrepro-XXXXXX.tmp` ([`super::temporaries::MARK`], `SUFFIX`).
+pub fn temp_next_to(target: &Path) -> Result<NamedTempFile, WriteError> {
     let dir = match target.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
     let name = target.file_name().map_or("kinrepro".into(), |n| n.to_string_lossy().into_owned());
-    let prefix = format!(".{name}.");
+    let prefix = format!(".{name}{}", super::temporaries::MARK);
     let mut builder = tempfile::Builder::new();
-    builder.prefix(&prefix).suffix(suffix);
+    builder.prefix(&prefix).suffix(super::temporaries::SUFFIX);
     // An ordinary file's mode (0666 less the umask), not the 0600 of a
     // private temporary file: the output is shared like any other file.
     #[cfg(unix)]

@@ -191,6 +191,83 @@ fn signal_during_study_leaves_out_folder_as_it_was() {
     }
 }
 
+/// A signal during `sweep --out DIR --html FILE --force` leaves DIR and
+/// FILE as an earlier sweep wrote them (no output of interrupted design
+/// points, no "wrote"), without a temporary, and exits 128 + the signal.
+#[test]
+fn signal_during_sweep_leaves_its_outputs_as_they_were() {
+    for (signal, code) in [("TERM", 143), ("INT", 130), ("HUP", 129)] {
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join("charts");
+        let html = dir.path().join("sweep.html");
+        let (o, h) = (out.display().to_string(), html.display().to_string());
+        let base = ["sweep", &scene(), "--set", "preload.force=10,20", "--sampler", "mc"];
+        let files = ["--out", &o, "--html", &h];
+        let (ok, _, err) =
+            common::kinrepro(&[&base[..], &["--samples", "10"], &files[..]].concat());
+        assert!(ok, "{err}");
+        let (charts, page) = (contents(&out), fs::read(&html).unwrap());
+        assert!(!charts.is_empty());
+        let child = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
+            .args([&base[..], &["--samples", "2000000"], &files[..], &["--force"]].concat())
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        // The run is under way well before its 4 million seatings end.
+        std::thread::sleep(std::time::Duration::from_millis(1500));
+        let pid = child.id().to_string();
+        let sent = Command::new("kill").args([&format!("-{signal}"), &pid]).status();
+        assert!(sent.unwrap().success());
+        let done = child.wait_with_output().unwrap();
+        let err = String::from_utf8_lossy(&done.stderr);
+        assert_eq!(done.status.code(), Some(code), "SIG{signal}: {err}");
+        assert!(err.contains("interrupted") && !err.contains("wrote"), "{err}");
+        assert!(hidden(&out).is_empty() && hidden(dir.path()).is_empty(), "SIG{signal}");
+        assert!(contents(&out) == charts, "SIG{signal}: the earlier charts are intact");
+        assert!(fs::read(&html).unwrap() == page, "SIG{signal}: the earlier page is intact");
+    }
+}
+
+/// A run killed outright (SIGKILL) leaves its temporary; the next run
+/// writing the same output names it (modified before that run started),
+/// and `kinrepro clean DIR` removes it once untouched for a minute, while
+/// keeping a fresh one (a live run's) and every other file.
+#[test]
+fn a_killed_runs_temporaries_are_named_and_cleaned() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path().display().to_string();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
+        .args(["study", &scene(), "--sampler", "mc", "--samples", "3000000", "--out", &d])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    wait_for_temporary(dir.path());
+    child.kill().unwrap();
+    child.wait().unwrap();
+    let left = hidden(dir.path());
+    assert_eq!(left.len(), 1, "{left:?}");
+    assert!(left[0].contains(".kinrepro-") && left[0].ends_with(".tmp"), "{left:?}");
+    let (ok, _, err) =
+        common::kinrepro(&["study", &scene(), "--samples", "10", "--out", &d, "--force"]);
+    assert!(ok, "{err}");
+    assert!(err.contains(&left[0]) && err.contains("kinrepro clean"), "{err}");
+    // Untouched for two hours, as after a night: removed; a fresh one kept.
+    let stale = dir.path().join(&left[0]);
+    let aged = Command::new("touch").args(["-d", "2 hours ago"]).arg(&stale).status();
+    assert!(aged.unwrap().success());
+    let fresh = dir.path().join(".other.csv.kinrepro-abcdef.tmp");
+    fs::write(&fresh, "in use").unwrap();
+    let before = contents(dir.path()).len();
+    let (ok, out, err) = common::kinrepro(&["clean", &d]);
+    assert!(ok, "{err}");
+    assert!(out.contains("removed") && out.contains(&left[0]), "{out}");
+    assert!(err.contains("kept") && err.contains(".other.csv.kinrepro-abcdef.tmp"), "{err}");
+    assert!(!stale.exists() && fresh.exists());
+    assert_eq!(contents(dir.path()).len(), before - 1);
+}
+
 /// A 1 GB history file (sparse: zeros) is refused at the input-file
 /// bound before it is read: in well under a second, in bounded memory.
 #[test]

@@ -11,12 +11,22 @@ use std::process::ExitCode;
 use clap::Parser;
 
 fn main() -> ExitCode {
+    // Temporaries modified before now are an earlier run's (`output::temporaries`).
+    kinrepro::output::temporaries::run_started();
     let cli = flags::Cli::parse();
     // The library names its parameters; here they are flags.
     kinrepro::param::set_spelling(flags::spelling);
     // No output of this run replaces a file it read (`output::inputs`).
     kinrepro::output::inputs::track();
     let run = signals::install().and_then(|()| commands::dispatch(cli.command));
+    for p in kinrepro::output::temporaries::stale() {
+        eprintln!(
+            "warning: {}: a temporary file left by an earlier kinrepro run that was killed \
+             before it could delete it; `kinrepro clean {}` removes such files",
+            p.display(),
+            p.parent().map_or(".".into(), |d| d.display().to_string())
+        );
+    }
     if let Some((code, msg)) = signals::received() {
         eprintln!("kinrepro: {msg}");
         return ExitCode::from(code);

@@ -5,7 +5,7 @@
 //! and the Pareto front (largest translational sigma against the lowest
 //! principal stiffness, the front marked). Every chart carries the
 //! provenance line. [`charts`] returns the SVG texts (for an HTML report),
-//! [`write_charts`] writes them to files.
+//! [`stage_charts`] writes them to temporaries the caller commits.
 
 use std::path::Path;
 
@@ -17,7 +17,9 @@ pub use super::SweepPlotError;
 use crate::dof::Dof;
 use crate::explore::SweptValue;
 use crate::explore::{DesignReport, SweepReport};
-use crate::output::atomic::{WriteError, check_overwrite, write_file};
+use std::io::Write;
+
+use crate::output::atomic::{AtomicFile, WriteError, check_overwrite};
 use crate::report::study::plot::color;
 use crate::report::sweep::text::field_label;
 use crate::report::sweep::text::short as tick;
@@ -57,25 +59,26 @@ pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> 
     Ok(out)
 }
 
-/// Write [`charts`] as `<title>.svg` into `dir` (none if any exists, unless
-/// `force`); returns the paths written.
-pub fn write_charts(
+/// Write [`charts`] as `<title>.svg` into `dir` under temporary names
+/// (none if any exists, unless `force`), for the caller to commit all at
+/// once ([`crate::output::atomic::commit_all`]).
+pub fn stage_charts(
     r: &SweepReport,
     dir: &Path,
     force: bool,
-) -> Result<Vec<String>, SweepPlotError> {
+) -> Result<Vec<AtomicFile>, SweepPlotError> {
     std::fs::create_dir_all(dir).map_err(|e| WriteError::io(dir, e))?;
     let all = charts(r)?;
     for (t, _) in &all {
         check_overwrite(&dir.join(format!("{t}.svg")), force)?;
     }
-    let mut written = Vec::new();
-    for (t, text) in all {
+    let stage = |(t, text): (String, String)| {
         let p = dir.join(format!("{t}.svg"));
-        write_file(&p, &text, force)?;
-        written.push(p.display().to_string());
-    }
-    Ok(written)
+        let mut f = AtomicFile::create(&p, force)?;
+        f.write_all(text.as_bytes()).map_err(|e| WriteError::io(&p, e))?;
+        Ok(f)
+    };
+    all.into_iter().map(stage).collect()
 }
 
 /// Draw into an SVG string; the provenance line goes at the bottom.

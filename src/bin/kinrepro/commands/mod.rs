@@ -4,6 +4,7 @@
 
 mod analysis;
 mod calibrate;
+mod clean;
 mod contact;
 mod fe;
 mod report;
@@ -40,6 +41,7 @@ pub fn dispatch(command: Command) -> Result {
         Command::Materials(a) => report::materials(a.format),
         Command::Calibrate(a) => calibrate::calibrate(a.try_into()?),
         Command::Predict(a) => calibrate::predict(a.try_into()?),
+        Command::Clean(a) => clean::clean(&a.dirs),
     }
 }
 

@@ -1,10 +1,12 @@
 //! `kinrepro sweep`: reproducibility, stiffness and safety over a grid or
 //! an LHS of scene fields (library: `explore`; output: `report::sweep`).
 
+use std::io::Write;
 use std::path::PathBuf;
 
 use kinrepro::explore::run::{run, study_plan};
 use kinrepro::explore::{DesignKind, SweepReport, SweepSpec, merge_sweeps};
+use kinrepro::output::atomic::AtomicFile;
 use kinrepro::study::StudyOptions;
 
 use super::{
@@ -65,16 +67,26 @@ pub fn sweep(s: Sweep) -> Result {
     let bar = progress(seatings, plan.method())?;
     let report = run(&spec, &plan, shard, s.pareto_point.as_deref(), &|| bar.inc(1))?;
     bar.finish_and_clear();
+    // A stop asked for during the run leaves design points "interrupted":
+    // neither their table nor a file of them is a result.
+    if kinrepro::cancel::requested() {
+        return Err(Error::new("interrupted"));
+    }
     print_sweep(&report, s.output.format)?;
+    // Every output under its temporary name, then all renamed at once.
+    let force = s.output.force;
+    let mut staged = Vec::new();
     if let Some(dir) = &s.output.out {
-        for f in kinrepro::report::sweep::plot::write_charts(&report, dir, s.output.force)? {
-            eprintln!("wrote {f}");
-        }
+        staged.extend(kinrepro::report::sweep::plot::stage_charts(&report, dir, force)?);
     }
     if let Some(path) = &s.output.html {
         let html = kinrepro::report::html::sweep::sweep_html(&report, &text, (&base.0, &base.1))?;
-        kinrepro::output::atomic::write_file(path, &html, s.output.force)?;
-        eprintln!("wrote {}", path.display());
+        let mut f = AtomicFile::create(path, force)?;
+        f.write_all(html.as_bytes()).map_err(|e| Error::new(format!("{}: {e}", path.display())))?;
+        staged.push(f);
+    }
+    for f in crate::signals::commit(staged)? {
+        eprintln!("wrote {f}");
     }
     // Exit 1 only when no design point was evaluated (all listed with their status).
     Ok(report.check_any_valid()?)

@@ -65,6 +65,9 @@ pub enum Command {
     /// Predict sigma of other scenes with a calibrated friction spread, with
     /// a prediction interval.
     Predict(PredictArgs),
+    /// Remove the temporary files a killed run left in folders
+    /// (`.NAME.kinrepro-XXXXXX.tmp`, untouched for a minute).
+    Clean(CleanArgs),
 }
 
 /// A library parameter as the command line writes it: its flag

@@ -237,6 +237,13 @@ pub struct ReportArgs {
 }
 
 #[derive(Args)]
+pub struct CleanArgs {
+    /// Folders to clean (those of the outputs a killed run was writing).
+    #[arg(required = true)]
+    pub dirs: Vec<PathBuf>,
+}
+
+#[derive(Args)]
 pub struct MaterialsArgs {
     /// table (GPa, MPa, kg/m^3, with sources) | csv (SI) | json (SI).
     #[arg(long, value_enum, default_value_t = Format::Table)]
