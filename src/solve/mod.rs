@@ -281,6 +281,11 @@ pub struct SeatedPose {
     /// motion (`quasistatic::control`); `None` where not estimated (fixed
     /// increments, the dynamic solver).
     pub path_error: Option<f64>,
+    /// Whether a contact slid at some point of the seating (gross sliding
+    /// in an accepted increment or a time step; a frictionless contact
+    /// always slides). `false`: every contact stuck from the first load
+    /// on, the verdict of `study::verdict`.
+    pub slid: bool,
 }
 
 impl Seating {

@@ -96,6 +96,41 @@ fn a_coupling_that_cannot_seat_gets_one_verdict_and_exit_code_from_every_command
     }
 }
 
+/// The verdict is read from the contacts' stick/slip state, not from
+/// equal samples: a spread of 1e-17 (the probes' coefficients equal to
+/// rounding) or mu_d = 1e-20 mu_s (sliding contacts carry no friction, so
+/// the pose does not depend on mu_s) gives equal poses of a coupling whose
+/// six contacts all slide (`run`), and it seats.
+#[test]
+fn equal_samples_of_sliding_contacts_are_not_a_cannot_seat_verdict() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (name, edit) in [
+        ("tiny_spread.toml", ("spread = 0.05 ", "spread = 1e-17 ")),
+        ("no_mu_d.toml", ("dynamic_ratio = 0.8 ", "dynamic_ratio = 1e-20 ")),
+    ] {
+        let p = variant(d, name, &[edit]);
+        let s = p.to_str().unwrap();
+        let (rc, json, err) = run_in(d, &["run", s, "--json"]);
+        assert_eq!(rc, 0, "{name}: {err}");
+        let run: serde_json::Value = serde_json::from_str(&json).unwrap();
+        let states: Vec<&str> = run["contacts"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| c["state"].as_str().unwrap())
+            .collect();
+        assert!(states.iter().all(|s| *s == "slip"), "{name}: {states:?}");
+        let (rc, out, err) = run_in(d, &["check", s]);
+        assert_eq!(rc, 0, "{name}: {out}{err}");
+        assert!(!out.contains("CANNOT SEAT"), "{name}: {out}");
+        let (rc, json, err) = run_in(d, &["study", s, "--samples", "8", "--format", "json"]);
+        assert_eq!(rc, 0, "{name}: {err}");
+        let doc: kinrepro::study::StudyReport = serde_json::from_str(&json).unwrap();
+        assert!(doc.variants[0].cannot_seat.is_none(), "{name}");
+    }
+}
+
 #[test]
 fn a_frictionless_coupling_seats_and_its_zero_scatter_is_the_result() {
     let dir = tempfile::tempdir().unwrap();

@@ -156,6 +156,7 @@ pub fn seat_traced(
             path: crate::solve::SeatingPath::Dynamic,
             decay_cv: sim.decay_cv(),
             path_error: None,
+            slid: sim.slid(),
         },
         contacts: sim
             .contacts

@@ -308,6 +308,11 @@ impl<'a> Simulation<'a> {
         friction::seating_cv(&self.friction, &self.slip_path, time)
     }
 
+    /// Whether a contact has slipped so far (its slip path is not zero).
+    pub fn slid(&self) -> bool {
+        self.slip_path.iter().any(|p| *p > 0.0)
+    }
+
     /// Whether the state of the last step is at rest (module docs).
     pub fn settled(&self) -> bool {
         let v_tol = self.freq.omega_min * self.opts.settle_displacement;

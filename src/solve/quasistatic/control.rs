@@ -113,6 +113,7 @@ pub(super) fn seat_controlled(
                 path: super::path_of(halved),
                 path_error: Some(error),
                 decay_cv: fine.decay_cv,
+                slid: fine.slid,
             });
         }
         coarse = fine.pose;

@@ -179,6 +179,7 @@ pub fn seat_in(
         path: path_of(end.halved),
         decay_cv: end.decay_cv,
         path_error: None,
+        slid: end.slid,
     })
 }
 

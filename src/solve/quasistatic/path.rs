@@ -45,6 +45,8 @@ pub(super) struct End {
     /// Whether an increment was halved (else the path took the nominal
     /// increments s_k = k/N).
     pub halved: bool,
+    /// Whether a contact slid in an accepted increment.
+    pub slid: bool,
     /// The decay law's c v_slip of the path (`friction::seating_cv`).
     pub decay_cv: Option<f64>,
 }
@@ -64,6 +66,8 @@ pub(super) struct Walk<'w> {
     pub accepted: usize,
     pub iterations: usize,
     pub halved: bool,
+    /// Whether a contact slid in an accepted increment so far.
+    pub slid: bool,
 }
 
 /// What stays fixed along a path.
@@ -99,6 +103,7 @@ fn commit(
     for ((st, e), path) in w.states.iter_mut().zip(trial.iter()).zip(w.slip_path.iter_mut()) {
         st.clone_from(&e.tangential.state);
         *path += st.slip_velocity * duration;
+        w.slid |= st.sliding;
     }
     let step = (twist_between(&w.pose, &new_pose), s_next - w.s);
     w.pose = new_pose;
@@ -140,6 +145,7 @@ impl Solver<'_> {
             accepted: 0,
             iterations: 0,
             halved: false,
+            slid: false,
         };
         if !seating {
             self.evaluate_all(&start, &start, w.states, self.ramp_time, true, w.evals);
@@ -307,6 +313,7 @@ impl Solver<'_> {
             increments: w.accepted,
             newton_iterations: w.iterations,
             halved: w.halved,
+            slid: w.slid,
             decay_cv: friction::seating_cv(self.friction, w.slip_path, self.ramp_time),
         }
     }
