@@ -8,6 +8,8 @@ mod common;
 
 #[path = "adversarial/files.rs"]
 mod files;
+#[path = "adversarial/geometry.rs"]
+mod geometry;
 #[path = "adversarial/inputs.rs"]
 mod inputs;
 #[path = "adversarial/messages.rs"]

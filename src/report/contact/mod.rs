@@ -31,6 +31,18 @@ pub fn conformity_warning(h: &HertzLaw, load: f64) -> Option<String> {
     })
 }
 
+/// One line per contact of `c` too conformal for Hertz at its normal
+/// force in `forces` [N] (`contact i: too conformal ...`,
+/// [`conformity_warning`]): `check` at the frictionless preload forces,
+/// `run` at the seated ones, `study` before it starts.
+pub fn conformity_warnings(c: &crate::assembly::Coupling, forces: &[f64]) -> Vec<String> {
+    (c.contacts.iter().zip(forces).enumerate())
+        .filter_map(|(i, (k, &f))| {
+            conformity_warning(&k.law.hertz, f).map(|w| format!("contact {}: {w}", i + 1))
+        })
+        .collect()
+}
+
 /// A readable table of one contact evaluation (SI values with engineering units).
 pub fn contact_table(e: &ContactEvaluation) -> String {
     let mut s = String::new();

@@ -37,6 +37,15 @@ pub fn seating_note(scene: &Scene, c: &Coupling, cannot_seat: Option<&str>) -> S
     )
 }
 
+/// What a study of `scene` (assembled as `c`) warns about before it
+/// starts, as `check` does: a heavily truncated friction distribution,
+/// and contacts too conformal for Hertz at the frictionless preload forces.
+pub fn study_warnings(scene: &Scene, c: &Coupling) -> Vec<String> {
+    let forces = frictionless_preload_forces(c, &scene.preload);
+    let conformity = crate::report::contact::conformity_warnings(c, &forces);
+    scene.truncation_warning().into_iter().chain(conformity).collect()
+}
+
 /// Summary of one scene assembled as `c`: contacts, constraint status,
 /// friction limit.
 pub fn check_summary(s: &Scene, c: &Coupling) -> String {
@@ -143,9 +152,7 @@ fn contact_rows(out: &mut String, s: &Scene, c: &Coupling) {
     for note in crate::report::contact::safety::left_out_notes(left_out.iter().map(Vec::as_slice)) {
         let _ = writeln!(out, "  {note}");
     }
-    for (i, k) in c.contacts.iter().enumerate() {
-        if let Some(w) = crate::report::contact::conformity_warning(&k.law.hertz, forces[i]) {
-            let _ = writeln!(out, "  WARNING: contact {}: {w}", i + 1);
-        }
+    for w in crate::report::contact::conformity_warnings(c, &forces) {
+        let _ = writeln!(out, "  WARNING: {w}");
     }
 }

@@ -49,6 +49,10 @@ pub struct RunReport {
     /// phi_z is evaluated like the other five DOFs, as a study reports it
     /// (docs/model.md); the list stays for readers of the field.
     pub not_evaluated: Vec<String>,
+    /// What makes these numbers indicative only: each contact too
+    /// conformal for Hertz at its seated force (`contact i: ...`); empty
+    /// when none.
+    pub warnings: Vec<String>,
 }
 
 impl RunReport {
@@ -73,6 +77,7 @@ impl RunReport {
             })
             .collect();
         let seated = &seating.seated;
+        let forces: Vec<f64> = seating.contacts.iter().map(|c| c.normal_force_n).collect();
         RunReport {
             kinrepro_version: crate::study::provenance::VERSION.to_string(),
             schema_version: crate::study::provenance::SCHEMA_VERSION,
@@ -89,6 +94,7 @@ impl RunReport {
             path_error: seated.path_error,
             seating_path: seated.path,
             not_evaluated: Vec::new(),
+            warnings: crate::report::contact::conformity_warnings(coupling, &forces),
         }
     }
 
@@ -100,6 +106,9 @@ impl RunReport {
         self.pose_rows(&mut s);
         let _ = writeln!(s);
         self.contact_rows(&mut s);
+        for w in &self.warnings {
+            let _ = writeln!(s, "WARNING: {w}");
+        }
         s
     }
 

@@ -60,7 +60,7 @@ pub(super) fn check_coupling(
     let r_ball = positive(&c.ball_diameter, "coupling.ball_diameter")? / 2.0;
     let (groove, seat) = kinds(c);
     let (r_elem, r_groove) = element_radii(c, groove, seat, r_ball, ctx)?;
-    let moving = moving(c, r_groove, groove, ctx)?;
+    let moving = moving(c, (r_ball, r_groove), groove, ctx)?;
     let opening = *c.opening_angle_deg.get_ref();
     if !(opening > 0.0 && opening < 180.0) {
         return Err(ctx.error(
@@ -117,13 +117,14 @@ pub(super) enum Moving {
     Pins,
 }
 
-/// The moving element, checked: a canoe needs `canoe_radius`, and in a
-/// gothic arch a patch curved more than the flank (R_c < R_g), or the two
-/// do not touch at a point; crossed pins need a fixed pin at every contact
+/// The moving element, checked: a canoe needs `canoe_radius`, at least the
+/// ball's radius `r_ball` (its faces are flatter than the ball it
+/// replaces), and in a gothic arch a patch curved more than the flank
+/// (R_c < R_g), or the two do not touch at a point; crossed pins need a fixed pin at every contact
 /// (a pin on a plane touches along a line).
 fn moving(
     c: &CouplingFile,
-    r_groove: f64,
+    (r_ball, r_groove): (f64, f64),
     groove: GrooveKind,
     ctx: &ErrorContext,
 ) -> Result<Moving, SceneError> {
@@ -157,6 +158,17 @@ fn moving(
                 ));
             };
             let rc = ctx.positive(v, "coupling.canoe_radius", "a length in m")?;
+            if rc < r_ball {
+                return Err(ctx.error(
+                    Some(&v.span()),
+                    "coupling.canoe_radius",
+                    format!(
+                        "{rc} m is below the ball radius {r_ball} m (ball_diameter / 2): a canoe \
+                         ball's faces are flatter than the ball they replace; a more curved face \
+                         is a smaller ball (give that ball_diameter)"
+                    ),
+                ));
+            }
             if r_groove > 0.0 && rc >= r_groove {
                 return Err(ctx.error(
                     Some(&v.span()),

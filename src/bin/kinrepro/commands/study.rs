@@ -55,8 +55,8 @@ impl TryFrom<StudyArgs> for Study {
 
 pub fn study(s: Study) -> Result {
     let models = s.scenes.iter().map(|p| read_scene(p)).collect::<Result<Vec<_>>>()?;
-    for (scene, _) in &models {
-        if let Some(w) = scene.truncation_warning() {
+    for (scene, coupling) in &models {
+        for w in kinrepro::report::coupling::check::study_warnings(scene, coupling) {
             eprintln!("warning: {}: {w}", scene.file);
         }
     }

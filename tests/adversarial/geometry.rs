@@ -1,0 +1,70 @@
+//! Degenerate and interpenetrating geometry (issue 42): a contact too
+//! conformal for Hertz is warned about by every command that seats it, a
+//! canoe face more curved than its ball is refused, and fixed elements
+//! that overlap are refused like moving ones.
+
+use crate::common;
+use crate::verdicts::run_in;
+
+/// A bundled scene with `from` replaced by `to`, written as `dir/name`.
+fn edited(dir: &std::path::Path, scene: &str, from: &str, to: &str) -> String {
+    let text = std::fs::read_to_string(common::scene(scene)).unwrap();
+    assert!(text.contains(from), "{from}");
+    std::fs::write(dir.join("s.toml"), text.replace(from, to)).unwrap();
+    "s.toml".to_string()
+}
+
+/// A gothic arch whose flank is 1.000001 times the ball radius: the
+/// contact spreads over more than its radius. `check` warned; `run`
+/// (text and JSON) and `study` now warn too, at every contact.
+#[test]
+fn an_over_conformal_contact_is_warned_about_where_it_is_seated() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let s = edited(
+        d,
+        "maxwell_gothic_arch_steel.toml",
+        "groove_radius = 0.0055 ",
+        "groove_radius = 0.005000005 ",
+    );
+    let (rc, out, err) = run_in(d, &["run", &s]);
+    assert_eq!(rc, 0, "{err}");
+    assert_eq!(out.matches("WARNING: contact").count(), 6, "{out}");
+    assert!(out.contains("too conformal for Hertz"), "{out}");
+    let (rc, json, err) = run_in(d, &["run", &s, "--json"]);
+    assert_eq!(rc, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["warnings"].as_array().unwrap().len(), 6, "{json}");
+    // The study warns before it starts (whether or not its samples then
+    // seat: here one fails to converge, an error naming it).
+    let (_, _, err) = run_in(d, &["study", &s, "--samples", "4"]);
+    assert!(err.matches("too conformal for Hertz").count() == 6, "{err}");
+    // The bundled arch (1.1 r) is not warned about.
+    let arch = common::scene("maxwell_gothic_arch_steel.toml").display().to_string();
+    let (_, json, _) = run_in(d, &["run", &arch, "--json"]);
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert!(v["warnings"].as_array().unwrap().is_empty(), "{json}");
+}
+
+/// A canoe face of 1 um (or of 4 mm under a 10 mm ball) is more curved
+/// than the ball it replaces: refused at its line.
+#[test]
+fn a_canoe_face_more_curved_than_its_ball_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for r in ["1e-6", "0.004"] {
+        let s = edited(
+            d,
+            "maxwell_canoe_steel.toml",
+            "canoe_radius = 0.25 ",
+            &format!("canoe_radius = {r} "),
+        );
+        let (rc, _, err) = run_in(d, &["run", &s]);
+        assert_eq!(rc, 1, "{r}: {err}");
+        assert!(
+            err.contains("s.toml:14: coupling.canoe_radius")
+                && err.contains("below the ball radius"),
+            "{r}: {err}"
+        );
+    }
+}
