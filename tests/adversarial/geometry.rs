@@ -68,3 +68,43 @@ fn a_canoe_face_more_curved_than_its_ball_is_refused() {
         );
     }
 }
+
+/// Fixed elements that interpenetrate are refused as the moving balls are:
+/// 30 mm pins under a 10 mm ball (the two pins of a V stand 28.3 mm apart),
+/// 40 mm fixed balls under 8 mm balls (33.9 mm apart), and in the explicit
+/// form two fixed balls closer than the sum of their radii. A V of 24 mm
+/// pins (the largest apart: 2 r s / (1 - s) = 24.14 mm) is accepted.
+#[test]
+fn fixed_elements_that_overlap_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    for (scene, from, to, says) in [
+        ("02_maxwell_pins_steel.toml", "0.004 ", "0.030 ", "the two pins of each V overlap"),
+        ("06_kelvin_steel.toml", "0.006 ", "0.040 ", "the two balls of each V overlap"),
+    ] {
+        let from = format!("groove_element_diameter = {from}");
+        let s = edited(d, scene, &from, &format!("groove_element_diameter = {to}"));
+        let (rc, _, err) = run_in(d, &["check", &s]);
+        assert_eq!(rc, 1, "{err}");
+        assert!(
+            err.contains("s.toml:13: coupling.groove_element_diameter") && err.contains(says),
+            "{err}"
+        );
+    }
+    let s = edited(
+        d,
+        "02_maxwell_pins_steel.toml",
+        "groove_element_diameter = 0.004 ",
+        "groove_element_diameter = 0.024 ",
+    );
+    let (rc, _, err) = run_in(d, &["check", &s]);
+    assert!(!err.contains("overlap"), "{rc}: {err}");
+    // Explicit: scene 04 expanded, its fixed balls grown to 40 mm.
+    let (rc, text, err) =
+        run_in(d, &["expand", &common::scene("04_maxwell_balls_steel.toml").display().to_string()]);
+    assert_eq!(rc, 0, "{err}");
+    std::fs::write(d.join("e.toml"), text.replace("radius = 0.003\n", "radius = 0.02\n")).unwrap();
+    let (rc, _, err) = run_in(d, &["check", "e.toml"]);
+    assert_eq!(rc, 1, "{err}");
+    assert!(err.contains("surfaces[2].radius: overlaps surfaces[1] (both serve ball 1)"), "{err}");
+}

@@ -69,6 +69,8 @@ pub(super) fn check_coupling(
             format!("{opening} must lie strictly between 0 and 180 degrees"),
         ));
     }
+    let alpha = (90.0 - opening / 2.0).to_radians();
+    fixed_elements_apart(c, (groove, seat), (r_ball, r_elem), alpha, ctx)?;
     // Balls 120 deg apart on the circle of radius D/2 are D sqrt(3)/2 apart
     // (centre to centre); two touch when their diameter reaches that.
     let spacing = diameter * 3f64.sqrt() / 2.0;
@@ -83,16 +85,55 @@ pub(super) fn check_coupling(
             ),
         ));
     }
-    Ok(Dimensions {
-        diameter,
-        r_ball,
-        r_elem,
-        r_groove,
-        groove,
-        seat,
-        moving,
-        alpha: (90.0 - opening / 2.0).to_radians(),
-    })
+    Ok(Dimensions { diameter, r_ball, r_elem, r_groove, groove, seat, moving, alpha })
+}
+
+/// The fixed pins or balls of one ball must not overlap. Each touches the
+/// ball (radius r) at zero gap, so its axis or centre lies r + R from the
+/// ball's centre along the contact normal, alpha from z. The two of a V
+/// are 2 (r + R) sin(alpha) apart; the three balls of Kelvin's trihedral
+/// seat sqrt(3) (r + R) sin(alpha). Apart means at least 2R, i.e.
+/// R <= r s / (1 - s) for a V and R <= sqrt(3) r s / (2 - sqrt(3) s) for
+/// the seat (s = sin(alpha)). (A seat of three pins is not checked: its
+/// pins, finite in a real seat, are lines here that cross.)
+fn fixed_elements_apart(
+    c: &CouplingFile,
+    (groove, seat): (GrooveKind, GrooveKind),
+    (r, big_r): (f64, f64),
+    alpha: f64,
+    ctx: &ErrorContext,
+) -> Result<(), SceneError> {
+    let s = alpha.sin();
+    let element = |k: GrooveKind| if k == GrooveKind::Balls { "balls" } else { "pins" };
+    let pinned = |k: GrooveKind| matches!(k, GrooveKind::Cylinders | GrooveKind::Balls);
+    let mut limits = Vec::new();
+    if pinned(groove) {
+        limits.push((format!("the two {} of each V", element(groove)), 2.0, r * s / (1.0 - s)));
+    }
+    if c.arrangement == Arrangement::Kelvin && seat == GrooveKind::Balls {
+        let k = 3f64.sqrt();
+        limits.push(("the three balls of the trihedral seat".into(), k, k * r * s / (2.0 - k * s)));
+    }
+    for (what, factor, max_r) in limits {
+        if big_r > max_r {
+            let d = c.groove_element_diameter.as_ref();
+            return Err(ctx.error(
+                d.map(|d| d.span()).as_ref(),
+                "coupling.groove_element_diameter",
+                format!(
+                    "{} m: {what} overlap: touching a {} m ball they stand {:.6} m apart \
+                     (centre to centre, at opening_angle_deg {}), less than their diameter; \
+                     it must be at most {:.6} m",
+                    2.0 * big_r,
+                    2.0 * r,
+                    factor * (r + big_r) * s,
+                    c.opening_angle_deg.get_ref(),
+                    2.0 * max_r
+                ),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// The elements of the grooves and of the Kelvin seat (module docs of

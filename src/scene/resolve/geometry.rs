@@ -41,6 +41,7 @@ pub fn surfaces(f: &SceneFile, fx: &Fields, balls: &[Ball]) -> Result<Vec<Surfac
     let mut surfaces = (f.surfaces.iter().enumerate())
         .map(|(i, s)| surface(s, i, fx, balls.len()))
         .collect::<Result<Vec<_>, _>>()?;
+    fixed_apart(&surfaces, fx.ctx)?;
     // Contacts are numbered ball by ball (the order of --mu).
     surfaces.sort_by_key(|s| s.ball);
     match (0..balls.len()).find(|&k| !surfaces.iter().any(|s| s.ball == k)) {
@@ -54,6 +55,60 @@ pub fn surfaces(f: &SceneFile, fx: &Fields, balls: &[Ball]) -> Result<Vec<Surfac
         }),
         None => Ok(surfaces),
     }
+}
+
+/// The fixed balls and pins serving one ball must not overlap (file
+/// order, 0-based): two fixed balls closer than R1 + R2 (centre to
+/// centre), two parallel pins whose axes are closer than R1 + R2, a ball
+/// and a pin whose centre lies closer to the axis than R1 + R2. (Pins that
+/// cross are lines here, finite in a real part: not checked; nor are
+/// planes, whose half-spaces meet along a V's edge by design.)
+fn fixed_apart(surfaces: &[Surface], ctx: &ErrorContext) -> Result<(), SceneError> {
+    let line_distance = |p: &Vector3<f64>, a: &Vector3<f64>, d: &Vector3<f64>| {
+        let r = p - a;
+        (r - d * d.dot(&r)).norm()
+    };
+    for (j, b) in surfaces.iter().enumerate() {
+        for (i, a) in surfaces[..j].iter().enumerate().filter(|(_, a)| a.ball == b.ball) {
+            use SurfaceGeometry::{Cylinder, Sphere};
+            let apart = match (a.geometry, b.geometry) {
+                (Sphere { centre: c1, radius: r1 }, Sphere { centre: c2, radius: r2 }) => {
+                    Some(((c1 - c2).norm(), r1 + r2, "centres"))
+                }
+                (
+                    Cylinder { axis_point: p1, direction: d1, radius: r1 },
+                    Cylinder { axis_point: p2, direction: d2, radius: r2 },
+                ) if d1.cross(&d2).norm() < 1e-9 => {
+                    Some((line_distance(&p2, &p1, &d1), r1 + r2, "axes"))
+                }
+                (Sphere { centre, radius: r1 }, Cylinder { axis_point, direction, radius: r2 })
+                | (Cylinder { axis_point, direction, radius: r2 }, Sphere { centre, radius: r1 }) => {
+                    Some((
+                        line_distance(&centre, &axis_point, &direction),
+                        r1 + r2,
+                        "centre and axis",
+                    ))
+                }
+                _ => None,
+            };
+            if let Some((distance, reach, what)) = apart
+                && distance < reach * (1.0 - 1e-12)
+            {
+                return Err(SceneError {
+                    file: ctx.file.to_string(),
+                    line: b.line,
+                    field: format!("surfaces[{}].radius", j + 1),
+                    reason: format!(
+                        "overlaps surfaces[{}] (both serve ball {}): their {what} are {distance:.6} \
+                         m apart, less than the sum of their radii {reach:.6} m",
+                        i + 1,
+                        b.ball + 1
+                    ),
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Surface `i` (0-based) of the file, for a coupling of `n_balls` balls.
