@@ -15,7 +15,7 @@ use nalgebra::Vector3;
 use toml::Spanned;
 
 use super::error::{ErrorContext, SceneError};
-use super::file::{CouplingFile, SceneFile, SurfaceKind, number};
+use super::file::{CouplingFile, Numbers, SceneFile, SurfaceKind, number};
 
 /// Largest plausible moving-ball diameter [m].
 pub const BALL_DIAMETER_MAX: f64 = 0.5;
@@ -369,4 +369,85 @@ fn check_surfaces(f: &SceneFile, ctx: &ErrorContext) -> Result<(), SceneError> {
         }
     }
     Ok(())
+}
+
+/// The largest plausible tolerance of a length, as a share of the smallest
+/// moving ball's radius (0.5 mm for a 10 mm ball): beyond it the part is
+/// another design, not the drawn one within its tolerance.
+pub const TOLERANCE_SHARE_MAX: f64 = 0.1;
+/// The largest plausible preload tilt [rad] (about 29 deg).
+pub const PRELOAD_TILT_MAX: f64 = 0.5;
+/// The largest plausible surface tilt tolerance [rad] (about 5.7 deg).
+pub const SURFACE_TILT_MAX: f64 = 0.1;
+
+/// `[variation]` bounds against the coupling's own size (unit slips:
+/// millimetres for micrometres, degrees for radians): each length
+/// tolerance at most [`TOLERANCE_SHARE_MAX`] of the smallest ball radius
+/// `r_min`, the preload offset within the circle of ball centres (radius
+/// `reach`), the tilts below [`PRELOAD_TILT_MAX`] and [`SURFACE_TILT_MAX`].
+pub fn check_variation(
+    v: &crate::scene::file::VariationFile,
+    b: &crate::scene::VariationBounds,
+    (r_min, reach): (f64, f64),
+    ctx: &ErrorContext,
+) -> Result<(), SceneError> {
+    let tol = TOLERANCE_SHARE_MAX * r_min;
+    let tolerance = format!(
+        "a tolerance (limit {} m, {} % of the smallest ball radius {r_min} m)",
+        as_typed(tol),
+        100.0 * TOLERANCE_SHARE_MAX
+    );
+    let numbers = |s: &Option<Spanned<Numbers>>| s.as_ref().map(|s| s.span());
+    let scalar = |s: &Option<Spanned<f64>>| s.as_ref().map(|s| s.span());
+    let lengths = [
+        ("ball_diameter", b.ball_diameter_m, scalar(&v.ball_diameter), tol, tolerance.as_str()),
+        ("surface_normal", b.surface_normal_m, scalar(&v.surface_normal), tol, &tolerance),
+        ("ball_position", max(&b.ball_position_m), numbers(&v.ball_position), tol, &tolerance),
+        (
+            "groove_position",
+            max(&b.groove_position_m),
+            numbers(&v.groove_position),
+            tol,
+            &tolerance,
+        ),
+    ];
+    let offset =
+        format!("a preload offset (limit {} m, the circle of ball centres)", as_typed(reach));
+    let offsets = [(
+        "preload_offset",
+        max(&b.preload_offset_m),
+        numbers(&v.preload_offset),
+        reach,
+        offset.as_str(),
+    )];
+    for (key, x, span, limit, what) in lengths.into_iter().chain(offsets) {
+        if x > limit {
+            let field = format!("variation.{key}");
+            let what = format!("{} m is implausibly large for {what}", as_typed(x));
+            return Err(too_large(ctx, span.as_ref(), &field, what));
+        }
+    }
+    for (key, x, span, limit) in [
+        ("preload_tilt", b.preload_tilt_rad, scalar(&v.preload_tilt), PRELOAD_TILT_MAX),
+        ("surface_tilt", b.surface_tilt_rad, scalar(&v.surface_tilt), SURFACE_TILT_MAX),
+    ] {
+        if x > limit {
+            return Err(ctx.error(
+                span.as_ref(),
+                format!("variation.{key}"),
+                format!(
+                    "{} rad ({:.1} deg) is implausibly large for a tilt tolerance (limit {limit} \
+                     rad): did you give degrees? scene files are in SI (rad); if the value is \
+                     intended, set `{ALLOW_KEY} = true` at the top of the file",
+                    as_typed(x),
+                    x.to_degrees()
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn max(v: &[f64]) -> f64 {
+    v.iter().copied().fold(0.0, f64::max)
 }

@@ -268,3 +268,53 @@ fn a_cycles_file_refuses_absurd_readings() {
     let e = Measurement::parse(&bad, "m.csv", None).unwrap_err().to_string();
     assert!(e.starts_with("m.csv: line 2, column 1 (x_nm)") && e.contains("within 1 m"), "{e}");
 }
+
+/// `[variation]` bounds are checked against the coupling's size like its
+/// other lengths (a unit slip): a length tolerance above 10 % of the
+/// smallest ball radius (0.5 mm here), a preload offset beyond the circle
+/// of ball centres, a tilt above 0.1 rad (surfaces) or 0.5 rad (preload)
+/// is refused at its line, unless `allow_large_values`.
+#[test]
+fn variation_bounds_pass_the_plausibility_guard() {
+    let text = std::fs::read_to_string(common::scene("tolerances_maxwell_vgroove.toml")).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    for (from, to, field, says) in [
+        (
+            "surface_normal = 5e-6 ",
+            "surface_normal = 0.01 ",
+            "variation.surface_normal",
+            "millimetres",
+        ),
+        (
+            "ball_position = [10e-6, 10e-6, 5e-6]",
+            "ball_position = [10e-3, 0, 0]",
+            "variation.ball_position",
+            "millimetres",
+        ),
+        (
+            "groove_position = [10e-6, 10e-6]",
+            "groove_position = [0, 1e-3]",
+            "variation.groove_position",
+            "millimetres",
+        ),
+        (
+            "preload_offset = [1.0e-3, 1.0e-3]",
+            "preload_offset = [0.1, 0]",
+            "variation.preload_offset",
+            "circle of ball centres",
+        ),
+        ("surface_tilt = 1e-4 ", "surface_tilt = 2.0 ", "variation.surface_tilt", "degrees"),
+        ("preload_tilt = 0.01 ", "preload_tilt = 3.0 ", "variation.preload_tilt", "degrees"),
+    ] {
+        assert!(text.contains(from), "{from}");
+        let path = dir.path().join("v.toml");
+        std::fs::write(&path, text.replace(from, to)).unwrap();
+        let (ok, _, err) = common::kinrepro(&["check", path.to_str().unwrap()]);
+        assert!(!ok && err.contains(field) && err.contains(says), "{to}: {err}");
+        assert!(err.contains("v.toml:"), "{err}");
+        let allowed = format!("allow_large_values = true\n{}", text.replace(from, to));
+        std::fs::write(&path, allowed).unwrap();
+        let (_, _, err) = common::kinrepro(&["check", path.to_str().unwrap()]);
+        assert!(!err.contains("implausibly"), "{to}: {err}");
+    }
+}

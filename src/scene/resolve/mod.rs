@@ -48,7 +48,15 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
     };
     let variation = match &f.variation {
         None => VariationBounds::default(),
-        Some(v) => tables::variation_bounds(v, ctx)?,
+        Some(v) => {
+            let bounds = tables::variation_bounds(v, ctx)?;
+            if !f.allow_large_values {
+                let r_min = balls.iter().map(|b| b.radius).fold(f64::INFINITY, f64::min);
+                let reach = balls.iter().map(|b| b.centre.xy().norm()).fold(0.0, f64::max);
+                super::plausible::check_variation(v, &bounds, (r_min, reach), ctx)?;
+            }
+            bounds
+        }
     };
     let thermal = thermal::thermal(f, &fx, &balls, &surfaces)?;
     Ok(Scene {
