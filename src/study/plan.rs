@@ -82,12 +82,14 @@ impl StudyPlan {
             } else {
                 kept = kept.saturating_add(run);
             }
-            kept = bounds::check(
-                "seatings kept in memory",
-                kept.checked_add(sobol_rows),
-                MAX_KEPT_SEATINGS,
-            )
-            .map_err(|e| e.at(Param::Samples))?;
+            // Named after the larger part: the samples, or the Sobol rows.
+            let (what, param) = if sobol_rows > kept {
+                ("seatings kept in memory (mostly the Sobol rows N (d + 2))", Param::SobolSamples)
+            } else {
+                ("seatings kept in memory (mostly the samples)", Param::Samples)
+            };
+            kept = bounds::check(what, kept.checked_add(sobol_rows), MAX_KEPT_SEATINGS)
+                .map_err(|e| e.at(param))?;
             plan.seatings += run + sobol_rows;
             plan.variants.push(v);
         }

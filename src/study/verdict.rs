@@ -48,8 +48,10 @@ pub fn cannot_seat(
                 if lo < hi {
                     return if sign < 0.0 { lo.max(0.0) } else { hi };
                 }
+                // Within the coefficients a scene may give ([0, MU_MAX]):
+                // mu0 = 2 is probed at 1.8 and 2.
                 let mu0 = scene.friction_of(k).0;
-                (mu0 + sign * 0.1 * mu0).max(0.0)
+                (mu0 + sign * 0.1 * mu0).clamp(0.0, crate::scene::resolve::MU_MAX)
             })
             .collect()
     };

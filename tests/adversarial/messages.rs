@@ -450,3 +450,38 @@ fn a_document_with_an_impossible_distribution_is_refused() {
         refused(&["merge", path.to_str().unwrap(), "--format", "table"], &[says]);
     }
 }
+
+/// A negative number to an option that takes none names the option and
+/// the value (clap's tip `-- -1` would turn it into a file name); a
+/// `--samples` bound reached by the Sobol rows names `--sobol-samples`;
+/// mu_static = 2 without spread is probed within [0, 2] and gets the
+/// cannot-seat verdict, not an internal probe outside [0, 2].
+#[test]
+fn negative_numbers_sobol_bounds_and_the_probe_name_what_was_given() {
+    let s01 = common::scene("01_maxwell_vgroove_steel.toml").display().to_string();
+    for (args, says) in [
+        (
+            vec!["study", &s01, "--samples", "-1"],
+            "--samples -1: --samples takes no negative number",
+        ),
+        (
+            vec!["run", &s01, "--increments", "-5"],
+            "--increments -5: --increments takes no negative number",
+        ),
+    ] {
+        let (ok, _, err) = common::kinrepro(&args);
+        assert!(!ok && err.contains(says) && !err.contains("-- -"), "{args:?}: {err}");
+    }
+    let args = ["study", &s01, "--sensitivity", "--sobol-samples", "2097152"];
+    let (ok, _, err) = common::kinrepro(&args);
+    assert!(!ok && err.contains("--sobol-samples:") && !err.contains("--samples:"), "{err}");
+    let text = std::fs::read_to_string(&s01).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("mu2.toml");
+    let edited = text
+        .replace("mu_static = 0.5 ", "mu_static = 2.0 ")
+        .replace("spread = 0.05 ", "spread = 0.0 ");
+    std::fs::write(&path, edited).unwrap();
+    let (ok, out, err) = common::kinrepro(&["check", path.to_str().unwrap()]);
+    assert!(!ok && out.contains("CANNOT SEAT") && !err.contains("2.2"), "{out}{err}");
+}

@@ -13,7 +13,16 @@ use clap::Parser;
 fn main() -> ExitCode {
     // Temporaries modified before now are an earlier run's (`output::temporaries`).
     kinrepro::output::temporaries::run_started();
-    let cli = flags::Cli::parse();
+    let cli = match flags::Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => match flags::negative_value(&e, &std::env::args().collect::<Vec<_>>()) {
+            Some(msg) => {
+                eprintln!("error: {msg}");
+                return ExitCode::from(2);
+            }
+            None => e.exit(),
+        },
+    };
     // The library names its parameters; here they are flags.
     kinrepro::param::set_spelling(flags::spelling);
     // No output of this run replaces a file it read (`output::inputs`).

@@ -70,6 +70,32 @@ pub enum Command {
     Clean(CleanArgs),
 }
 
+/// The message for a negative number given to an option that takes none
+/// (clap reads `--samples -1` as an unknown flag `-1` and suggests
+/// `-- -1`, which would make it a file name): the option, the value and
+/// that the option takes no negative number. `None` for any
+/// other error (clap's own message then).
+pub fn negative_value(e: &clap::Error, args: &[String]) -> Option<String> {
+    use clap::error::{ContextKind, ContextValue, ErrorKind};
+    if e.kind() != ErrorKind::UnknownArgument {
+        return None;
+    }
+    let Some(ContextValue::String(value)) = e.get(ContextKind::InvalidArg) else {
+        return None;
+    };
+    value.parse::<f64>().ok().filter(|_| value.starts_with('-'))?;
+    let at = args.iter().position(|a| a == value)?;
+    let before = at.checked_sub(1).map(|i| args[i].as_str()).filter(|a| a.starts_with("--"));
+    Some(match before {
+        Some(flag) => format!(
+            "{flag} {value}: {flag} takes no negative number (`kinrepro {} --help` gives its \
+             range)",
+            args.get(1).map_or("COMMAND", String::as_str)
+        ),
+        None => format!("{value}: a negative number where an option or a file was expected"),
+    })
+}
+
 /// A library parameter as the command line writes it: its flag
 /// (`--path-tolerance`), followed by its value where the message gives one.
 pub fn spelling(param: Param, value: Option<&str>) -> String {
