@@ -156,6 +156,22 @@ impl Measurement {
                 format!("{} cycle(s), need at least {MIN_CYCLES} re-seating cycles", data.len());
             return Err(self.err(last, c, &names[c], r));
         }
+        // A column in the wrong unit (nm values under `x_mm`) scatters by
+        // millimetres: no seated coupling does (the summary's bound).
+        for (k, &(c, _)) in columns.iter().enumerate() {
+            let n = data.len() as f64;
+            let mean = data.iter().map(|r| r[k]).sum::<f64>() / n;
+            let s = (data.iter().map(|r| (r[k] - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
+            let rotation = usize::from(self.dofs[k] >= 3);
+            let (max, si) = (MAX_SIGMA[rotation], ["m", "rad"][rotation]);
+            if s > max {
+                let r = format!(
+                    "the readings scatter by sigma = {s:e} {si}, above any seated coupling's \
+                     {max:e} {si}: check the column's unit (values in nm under a `_mm` header?)"
+                );
+                return Err(self.err(header_line, c, &names[c], r));
+            }
+        }
         self.data = MeasuredData::Cycles(data);
         Ok(self)
     }

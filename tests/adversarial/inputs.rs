@@ -269,6 +269,21 @@ fn a_cycles_file_refuses_absurd_readings() {
     assert!(e.starts_with("m.csv: line 2, column 1 (x_nm)") && e.contains("within 1 m"), "{e}");
 }
 
+/// A cycles file whose `_mm` header carries nm values (the worked
+/// example's readings, 5 to 20 nm, read as millimetres) scatters by
+/// millimetres: refused at the header naming the column and the unit,
+/// where it used to fit the spread at the end of its range.
+#[test]
+fn a_cycles_column_in_the_wrong_unit_is_refused_at_its_header() {
+    use kinrepro::calibrate::measurement::Measurement;
+    let worked = std::fs::read_to_string(common::worked_measurement()).unwrap();
+    Measurement::parse(&worked, "m.csv", None).unwrap();
+    let slipped = worked.replace("x_nm,", "x_mm,");
+    assert_ne!(slipped, worked);
+    let e = Measurement::parse(&slipped, "m.csv", None).unwrap_err().to_string();
+    assert!(e.contains("(x_mm)") && e.contains("`_mm` header"), "{e}");
+}
+
 /// `[variation]` bounds are checked against the coupling's size like its
 /// other lengths (a unit slip): a length tolerance above 10 % of the
 /// smallest ball radius (0.5 mm here), a preload offset beyond the circle
