@@ -328,3 +328,42 @@ fn report_and_calibrate_outputs_never_replace_a_device() {
     assert!(std::fs::read_to_string(d.join("real.html")).unwrap().contains("<html"));
     assert!(hidden(d).is_empty(), "{:?}", hidden(d));
 }
+
+/// A run blocked opening a FIFO that has no reader (`--trace FIFO
+/// --force`), whose stderr reader has gone away, still stops 3 s after
+/// SIGTERM (the grace period): the stop's message to the closed stderr
+/// must not end the thread that exits. Waits at most 20 s.
+#[test]
+fn a_run_blocked_on_a_fifo_stops_after_sigterm_with_stderr_closed() {
+    use std::process::{Command, Stdio};
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("trace.fifo");
+    assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    let scene = variant(dir.path(), "s.toml", &[]);
+    let mut child = Command::new(env!("CARGO_BIN_EXE_kinrepro"))
+        .args(["run", "--solver", "dynamic", "--force", "--trace"])
+        .args([&fifo, &scene])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // The reader of its stderr dies.
+    drop(child.stderr.take());
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    let pid = child.id().to_string();
+    assert!(Command::new("kill").args(["-TERM", &pid]).status().unwrap().success());
+    let start = std::time::Instant::now();
+    let status = loop {
+        if let Some(s) = child.try_wait().unwrap() {
+            break Some(s);
+        }
+        if start.elapsed().as_secs() > 20 {
+            let _ = child.kill();
+            let _ = child.wait();
+            break None;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    };
+    let status = status.expect("still running 20 s after SIGTERM");
+    assert_eq!(status.code(), Some(143), "{status:?}");
+}

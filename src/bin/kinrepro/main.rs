@@ -17,7 +17,7 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => match flags::negative_value(&e, &std::env::args().collect::<Vec<_>>()) {
             Some(msg) => {
-                eprintln!("error: {msg}");
+                say(&format!("error: {msg}"));
                 return ExitCode::from(2);
             }
             None => e.exit(),
@@ -29,15 +29,15 @@ fn main() -> ExitCode {
     kinrepro::output::inputs::track();
     let run = signals::install().and_then(|()| commands::dispatch(cli.command));
     for p in kinrepro::output::temporaries::stale() {
-        eprintln!(
+        say(&format!(
             "warning: {}: a temporary file left by an earlier kinrepro run that was killed \
              before it could delete it; `kinrepro clean {}` removes such files",
             p.display(),
             p.parent().map_or(".".into(), |d| d.display().to_string())
-        );
+        ));
     }
     if let Some((code, msg)) = signals::received() {
-        eprintln!("kinrepro: {msg}");
+        say(&format!("kinrepro: {msg}"));
         return ExitCode::from(code);
     }
     match run {
@@ -45,8 +45,15 @@ fn main() -> ExitCode {
         Err(msg) => {
             // One line, whatever the names in it hold.
             let msg = msg.to_string();
-            eprintln!("error: {}", kinrepro::report::printable::printable(&msg));
+            say(&format!("error: {}", kinrepro::report::printable::printable(&msg)));
             ExitCode::FAILURE
         }
     }
+}
+
+/// One line to stderr, ignoring a closed stderr (`eprintln!` would panic
+/// and turn the exit code into 101).
+fn say(line: &str) {
+    use std::io::Write;
+    let _ = writeln!(std::io::stderr(), "{line}");
 }

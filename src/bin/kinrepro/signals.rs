@@ -9,6 +9,7 @@
 //! all. That exit does not unwind: it deletes the registered temporaries
 //! ([`kinrepro::output::temporaries`]) first.
 
+use std::io::Write;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicI32, Ordering};
 use std::time::Duration;
@@ -64,7 +65,10 @@ pub fn install() -> Result<(), Error> {
 fn stop(sig: i32) -> ! {
     let _hold = COMMITTING.lock();
     kinrepro::output::temporaries::remove_all();
-    eprintln!("kinrepro: {}: stopped", name(sig));
+    // Not `eprintln!`: it panics when stderr is closed (its reader gone),
+    // which would end this thread before the exit and leave a run blocked
+    // (opening a FIFO without a reader) running for ever.
+    let _ = writeln!(std::io::stderr(), "kinrepro: {}: stopped", name(sig));
     std::process::exit(128 + sig)
 }
 
