@@ -19,6 +19,7 @@ use crate::err;
 use crate::run::Failure;
 use crate::scene::{Scene, pose_rows};
 use crate::study::to_python;
+use crate::whole::Whole;
 
 /// A calibration (`kinrepro calibrate`): the fitted friction parameters
 /// with their intervals; `to_json()` is the file `calibrate --out` writes.
@@ -147,7 +148,7 @@ impl Measured {
 #[pyfunction]
 #[pyo3(signature = (
     scene, measured, fit = Vec::new(), noise = None, point = None,
-    model_samples = MODEL_SAMPLES, seed = MODEL_SEED, delimiter = None, jobs = None, dofs = None,
+    model_samples = Whole::of(MODEL_SAMPLES), seed = Whole::of(MODEL_SEED), delimiter = None, jobs = None, dofs = None,
 ))]
 #[allow(clippy::too_many_arguments)]
 pub fn calibrate(
@@ -157,12 +158,15 @@ pub fn calibrate(
     fit: Vec<String>,
     noise: Option<String>,
     point: Option<String>,
-    model_samples: usize,
-    seed: u64,
+    model_samples: Whole<usize>,
+    seed: Whole<u64>,
     delimiter: Option<String>,
-    jobs: Option<usize>,
+    jobs: Option<Whole<usize>>,
     dofs: Option<Vec<String>>,
 ) -> PyResult<Calibration> {
+    let model_samples = model_samples.get();
+    let seed = seed.get();
+    let jobs = jobs.map(Whole::get);
     let samples = check_model_samples(Param::ModelSamples, model_samples).map_err(err)?;
     let mut noise_si = [None; 6];
     if let Some(n) = &noise {
@@ -269,15 +273,18 @@ impl Prediction {
 /// Predict the scatter of other designs from a calibration
 /// (`kinrepro predict`).
 #[pyfunction]
-#[pyo3(signature = (scenes, calibration, samples = MODEL_SAMPLES, seed = MODEL_SEED, jobs = None))]
+#[pyo3(signature = (scenes, calibration, samples = Whole::of(MODEL_SAMPLES), seed = Whole::of(MODEL_SEED), jobs = None))]
 pub fn predict(
     py: Python<'_>,
     scenes: &Bound<'_, PyAny>,
     calibration: &Calibration,
-    samples: usize,
-    seed: u64,
-    jobs: Option<usize>,
+    samples: Whole<usize>,
+    seed: Whole<u64>,
+    jobs: Option<Whole<usize>>,
 ) -> PyResult<Prediction> {
+    let samples = samples.get();
+    let seed = seed.get();
+    let jobs = jobs.map(Whole::get);
     let samples = check_model_samples(Param::Samples, samples).map_err(err)?;
     let scenes = crate::scene::scenes(scenes, "scenes")?;
     let cal = calibration.cal.clone();

@@ -17,6 +17,7 @@ mod scene;
 mod study;
 mod sweep;
 mod thermal;
+mod whole;
 
 use pyo3::prelude::*;
 

@@ -15,6 +15,7 @@ use pyo3::prelude::*;
 
 use crate::err;
 use crate::run::Failure;
+use crate::whole::Whole;
 
 /// A kinematic coupling scene: the text of a scene file (TOML), validated
 /// and assembled exactly like `kinrepro check` does. Immutable: `set`
@@ -265,9 +266,10 @@ pub fn seat(
     scene: &Scene,
     mu: Option<Vec<f64>>,
     solver: &str,
-    increments: Option<usize>,
+    increments: Option<Whole<usize>>,
     path_tolerance: Option<f64>,
 ) -> PyResult<Seating> {
+    let increments = increments.map(Whole::get);
     let method = crate::options::method(solver, increments, path_tolerance)?;
     let (text, file) = (scene.text.clone(), scene.file.clone());
     let report = py.detach(move || -> Result<RunReport, Failure> {

@@ -8,6 +8,7 @@ use pyo3::prelude::*;
 
 use crate::err;
 use crate::options::Keywords;
+use crate::whole::Whole;
 use kinrepro::error::parse_scene;
 use kinrepro::study::StudyOptions;
 
@@ -79,14 +80,15 @@ impl Study {
     /// (n, 6) array of x, y, z [m], phi_x, phi_y, phi_z [rad], in sample
     /// order. `interchange=True`: the interchangeability outputs
     /// (tolerances varied).
-    #[pyo3(signature = (point = None, variant = 0, interchange = false))]
+    #[pyo3(signature = (point = None, variant = Whole::of(0), interchange = false))]
     fn poses<'py>(
         &self,
         py: Python<'py>,
         point: Option<&str>,
-        variant: usize,
+        variant: Whole<usize>,
         interchange: bool,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let variant = variant.get();
         let v = self.variant(variant)?;
         let point = match point {
             Some(p) => p.to_string(),
@@ -123,13 +125,14 @@ impl Study {
     /// at each cycle point, (n, n_cycle_points, 6): x, y, z [m], phi_x,
     /// phi_y, phi_z [rad], in sample order (the cycle's temperatures:
     /// `stats(point)["thermal"][k]["delta_t_k"]`).
-    #[pyo3(signature = (point = None, variant = 0))]
+    #[pyo3(signature = (point = None, variant = Whole::of(0)))]
     fn drift<'py>(
         &self,
         py: Python<'py>,
         point: Option<&str>,
-        variant: usize,
+        variant: Whole<usize>,
     ) -> PyResult<Bound<'py, PyArray3<f64>>> {
+        let variant = variant.get();
         let v = self.variant(variant)?;
         let cycle = v.thermal_cycle().len();
         if cycle == 0 {
@@ -158,8 +161,13 @@ impl Study {
 
     /// The physical value of every varied input per sample, (n, k) in SI
     /// (mu dimensionless, m, rad); columns named by `input_names()`.
-    #[pyo3(signature = (variant = 0))]
-    fn inputs<'py>(&self, py: Python<'py>, variant: usize) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    #[pyo3(signature = (variant = Whole::of(0)))]
+    fn inputs<'py>(
+        &self,
+        py: Python<'py>,
+        variant: Whole<usize>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let variant = variant.get();
         let v = self.variant(variant)?;
         if v.records.is_empty() && v.streamed {
             return Err(no_records("inputs"));
@@ -169,14 +177,16 @@ impl Study {
     }
 
     /// Names of the columns of `inputs()` (`mu_1`, `offset_x_m`, ...).
-    #[pyo3(signature = (variant = 0))]
-    fn input_names(&self, variant: usize) -> PyResult<Vec<String>> {
+    #[pyo3(signature = (variant = Whole::of(0)))]
+    fn input_names(&self, variant: Whole<usize>) -> PyResult<Vec<String>> {
+        let variant = variant.get();
         Ok(self.variant(variant)?.inputs.iter().map(|i| i.name()).collect())
     }
 
     /// Sample index of every row of `poses()` and `inputs()`.
-    #[pyo3(signature = (variant = 0))]
-    fn indices(&self, variant: usize) -> PyResult<Vec<usize>> {
+    #[pyo3(signature = (variant = Whole::of(0)))]
+    fn indices(&self, variant: Whole<usize>) -> PyResult<Vec<usize>> {
+        let variant = variant.get();
         Ok(self.variant(variant)?.records.iter().map(|r| r.index).collect())
     }
 
@@ -184,14 +194,15 @@ impl Study {
     /// first): a (6,) array x, y, z [m], phi_x, phi_y, phi_z [rad], as
     /// `Sweep.sigma` and `Prediction.sigma` give theirs (`stats()` has the
     /// JSON's nm and nrad). A shard has none (merge first).
-    #[pyo3(signature = (point = None, variant = 0, interchange = false))]
+    #[pyo3(signature = (point = None, variant = Whole::of(0), interchange = false))]
     fn sigma<'py>(
         &self,
         py: Python<'py>,
         point: Option<&str>,
-        variant: usize,
+        variant: Whole<usize>,
         interchange: bool,
     ) -> PyResult<Bound<'py, PyAny>> {
+        let variant = variant.get();
         let p = self.point_stats_of(point, variant, interchange)?;
         let array = numpy::PyArray1::from_vec(py, p.sigma.si().to_vec());
         // The array answers the old dict keys, deprecated (kinrepro._sigma).
@@ -200,14 +211,15 @@ impl Study {
 
     /// All statistics of `point` as in the JSON's `points` entry (n, sigma,
     /// its 90 % interval, three_sigma, mean, min, max; nm and nrad).
-    #[pyo3(signature = (point = None, variant = 0, interchange = false))]
+    #[pyo3(signature = (point = None, variant = Whole::of(0), interchange = false))]
     fn stats<'py>(
         &self,
         py: Python<'py>,
         point: Option<&str>,
-        variant: usize,
+        variant: Whole<usize>,
         interchange: bool,
     ) -> PyResult<Bound<'py, PyAny>> {
+        let variant = variant.get();
         let p = self.point_stats_of(point, variant, interchange)?;
         to_python(py, p)
     }
@@ -290,21 +302,27 @@ impl Study {
 pub fn study(
     py: Python<'_>,
     scene: &Bound<'_, PyAny>,
-    samples: Option<usize>,
+    samples: Option<Whole<usize>>,
     sampler: Option<String>,
-    seed: Option<u64>,
+    seed: Option<Whole<u64>>,
     vary: Vec<String>,
     shard: Option<&Bound<'_, PyAny>>,
-    jobs: Option<usize>,
+    jobs: Option<Whole<usize>>,
     solver: String,
-    increments: Option<usize>,
+    increments: Option<Whole<usize>>,
     path_tolerance: Option<f64>,
-    replicates: Option<usize>,
+    replicates: Option<Whole<usize>>,
     sensitivity: bool,
-    sobol_samples: Option<usize>,
+    sobol_samples: Option<Whole<usize>>,
     offset_bounds: Option<[f64; 3]>,
     tilt_bounds: Option<[f64; 3]>,
 ) -> PyResult<Study> {
+    let samples = samples.map(Whole::get);
+    let seed = seed.map(Whole::get);
+    let jobs = jobs.map(Whole::get);
+    let increments = increments.map(Whole::get);
+    let replicates = replicates.map(Whole::get);
+    let sobol_samples = sobol_samples.map(Whole::get);
     let scenes = crate::scene::scenes(scene, "scene")?;
     let (solver, vary) = crate::options::solver_and_vary(&solver, &vary)?;
     let options = StudyOptions {

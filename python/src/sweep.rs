@@ -14,6 +14,7 @@ use crate::err;
 use crate::options::Keywords;
 use crate::scene::{Scene, pose_rows};
 use crate::study::to_python;
+use crate::whole::Whole;
 
 /// A sweep over scene fields: the document of `kinrepro sweep --format json`.
 #[pyclass(module = "kinrepro", frozen)]
@@ -151,17 +152,23 @@ pub fn sweep(
     py: Python<'_>,
     scene: &Scene,
     sets: Vec<String>,
-    points: Option<usize>,
+    points: Option<Whole<usize>>,
     pareto_point: Option<String>,
-    samples: Option<usize>,
+    samples: Option<Whole<usize>>,
     sampler: Option<String>,
-    seed: Option<u64>,
+    seed: Option<Whole<u64>>,
     shard: Option<&Bound<'_, PyAny>>,
-    jobs: Option<usize>,
-    increments: Option<usize>,
+    jobs: Option<Whole<usize>>,
+    increments: Option<Whole<usize>>,
     path_tolerance: Option<f64>,
-    replicates: Option<usize>,
+    replicates: Option<Whole<usize>>,
 ) -> PyResult<Sweep> {
+    let points = points.map(Whole::get);
+    let samples = samples.map(Whole::get);
+    let seed = seed.map(Whole::get);
+    let jobs = jobs.map(Whole::get);
+    let increments = increments.map(Whole::get);
+    let replicates = replicates.map(Whole::get);
     let options =
         Keywords { samples, sampler, seed, shard, increments, path_tolerance, replicates }
             .options()?;
@@ -172,7 +179,11 @@ pub fn sweep(
         let spec = SweepSpec::new(&file, &text, &sets, design)?;
         let plan = study_plan(base, coupling, &options)?;
         let tick = &|| {};
-        Ok(run(&spec, &plan, options.shard, pareto_point.as_deref(), tick)?)
+        let report = run(&spec, &plan, options.shard, pareto_point.as_deref(), tick)?;
+        // No design point evaluated: an error, as the CLI's exit 1, not a
+        // table of NaN rows.
+        report.check_any_valid()?;
+        Ok(report)
     })?;
     Ok(Sweep { report })
 }

@@ -11,6 +11,7 @@ use pyo3::prelude::*;
 use crate::err;
 use crate::run::Failure;
 use crate::scene::Scene;
+use crate::whole::Whole;
 
 /// A thermal path (`kinrepro thermal --json`): per cycle point the drift
 /// of every evaluation point from where it was seated, SI and kelvin.
@@ -105,9 +106,10 @@ pub fn thermal(
     scene: &Scene,
     mu: Option<Vec<f64>>,
     cycle: Option<Vec<[f64; 2]>>,
-    increments: Option<usize>,
+    increments: Option<Whole<usize>>,
     path_tolerance: Option<f64>,
 ) -> PyResult<ThermalPath> {
+    let increments = increments.map(Whole::get);
     let method = crate::options::method("quasi-static", increments, path_tolerance)?;
     let tolerance = method.path_tolerance();
     let (text, file) = (scene.text.clone(), scene.file.clone());

@@ -271,6 +271,27 @@ def test_messages_name_the_python_parameter(scene01, call, keyword):
     assert keyword in str(e.value) and "--" not in str(e.value), str(e.value)
 
 
+@pytest.mark.parametrize("kwargs, says", [
+    (dict(samples=-1), "argument 'samples': -1 is negative"),
+    (dict(seed=-3), "argument 'seed': -3 is negative"),
+    (dict(samples=2.5), "argument 'samples': expected a whole number"),
+    (dict(jobs=True), "argument 'jobs': expected a whole number >= 0, got a bool"),
+    (dict(sobol_samples=10**30, sensitivity=True), "argument 'sobol_samples': "),
+])
+def test_bad_whole_numbers_name_the_argument(scene01, kwargs, says):
+    # pyo3's own conversion raised a bare OverflowError naming nothing.
+    with pytest.raises(TypeError) as e:
+        kinrepro.study(scene01, **kwargs)
+    assert says in str(e.value), str(e.value)
+
+
+def test_a_sweep_with_no_valid_point_raises_as_the_cli_exits_1(scene01):
+    # Grooves of 170 and 175 degrees cannot seat at mu 0.5:
+    # the CLI exits 1; Python raised nothing and returned NaN rows.
+    with pytest.raises(kinrepro.KinreproError, match="none of the 2 design points"):
+        kinrepro.sweep(scene01, {"coupling.opening_angle_deg": [170, 175]}, samples=4)
+
+
 def test_dynamic_start_study_is_the_clis(scene01, cli):
     # The options of the dynamic solver with a varied start pose, through
     # the same request: the same document.
