@@ -263,6 +263,29 @@ impl VariationBounds {
         self.preload_offset_m.iter().any(|b| *b > 0.0) || self.preload_tilt_rad > 0.0
     }
 
+    /// The `[variation]` keys with a non-zero bound: the preload's if
+    /// `preload`, the tolerances' if `tolerances` (for messages naming
+    /// what a sample drew).
+    pub fn keys(&self, preload: bool, tolerances: bool) -> Vec<&'static str> {
+        let any = |v: &[f64]| v.iter().any(|b| *b > 0.0);
+        let preload_keys = [
+            ("preload_offset", any(&self.preload_offset_m)),
+            ("preload_tilt", self.preload_tilt_rad > 0.0),
+        ];
+        let tolerance_keys = [
+            ("ball_diameter", self.ball_diameter_m > 0.0),
+            ("ball_position", any(&self.ball_position_m)),
+            ("surface_normal", self.surface_normal_m > 0.0),
+            ("surface_tilt", self.surface_tilt_rad > 0.0),
+            ("groove_position", any(&self.groove_position_m)),
+        ];
+        let chosen = preload_keys.iter().filter(|_| preload);
+        (chosen.chain(tolerance_keys.iter().filter(|_| tolerances)))
+            .filter(|(_, on)| *on)
+            .map(|(k, _)| *k)
+            .collect()
+    }
+
     /// True if any tolerance bound is non-zero.
     pub fn tolerances_vary(&self) -> bool {
         self.ball_diameter_m > 0.0

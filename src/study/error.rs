@@ -33,11 +33,13 @@ pub enum StudyError {
     #[error("interrupted")]
     Cancelled,
     #[error(
-        "sample {index}: the coupling perturbed by the drawn tolerances does not assemble: \
-         {source}"
+        "sample {index}: the coupling perturbed by the drawn tolerances ([variation] {keys}) \
+         does not assemble: {source}; a bound may reach beyond what the coupling can take"
     )]
     Perturbed {
         index: usize,
+        /// The `[variation]` keys drawn, comma-separated.
+        keys: String,
         #[source]
         source: AssemblyError,
     },
@@ -58,10 +60,13 @@ pub enum StudyError {
         #[source]
         source: SolveError,
     },
-    #[error("sample {index} (mu_s = {mu:?}): {source}")]
+    #[error("sample {index} (mu_s = {mu:?}{varied}): {source}")]
     Seating {
         index: usize,
         mu: Vec<f64>,
+        /// Empty, or the `[variation]` keys this sample drew within:
+        /// `; drawn within [variation] preload_offset, ...` and a hint.
+        varied: String,
         #[source]
         source: SolveError,
     },

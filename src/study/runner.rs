@@ -192,8 +192,20 @@ pub fn evaluate_rows<'a>(
     let (scene, coupling) = (&v.scene, &v.coupling);
     let var = s.variation;
     let file = v.file();
+    // A sample that drew preload or tolerances names the [variation]
+    // keys behind it: a bound may reach beyond what the coupling carries.
+    let keys = scene.variation.keys(var.preload, var.tolerances);
+    let varied = match keys.is_empty() {
+        true => String::new(),
+        false => format!(
+            "; preload or tolerances drawn within [variation] {}, whose bounds may reach beyond \
+             what the coupling can carry",
+            keys.join(", ")
+        ),
+    };
     let seat_err = |index: usize, mu: &[f64], source| {
-        StudyError::Seating { index, mu: mu.to_vec(), source }.in_file(file)
+        let varied = varied.clone();
+        StudyError::Seating { index, mu: mu.to_vec(), varied, source }.in_file(file)
     };
     // The reference: nominal friction and preload, from the touching pose, same solver.
     let nominal_load = Load::nominal(scene);
@@ -237,9 +249,10 @@ pub fn evaluate_rows<'a>(
                 outputs.extend(relative(seated.pose));
             }
             if let Some(t) = &sample.tolerances {
-                let perturbed = t
-                    .coupling(scene, coupling)
-                    .map_err(|source| StudyError::Perturbed { index, source }.in_file(file))?;
+                let perturbed = t.coupling(scene, coupling).map_err(|source| {
+                    let keys = scene.variation.keys(false, true).join(", ");
+                    StudyError::Perturbed { index, keys, source }.in_file(file)
+                })?;
                 let seated = s
                     .method
                     .seat(&perturbed, &nominal_load)

@@ -333,3 +333,20 @@ fn variation_bounds_pass_the_plausibility_guard() {
         assert!(!err.contains("implausibly"), "{to}: {err}");
     }
 }
+
+/// A `[variation]` bound that passes the guard but reaches beyond what
+/// the coupling carries (a preload offset of 35 mm on a 40 mm circle
+/// tips the half) fails at a sample whose error names the `[variation]`
+/// keys it drew within, not only "sample N".
+#[test]
+fn a_sample_that_fails_names_the_variation_keys_it_drew_within() {
+    let text = std::fs::read_to_string(common::scene("tolerances_maxwell_vgroove.toml")).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("v.toml");
+    let edited =
+        text.replace("preload_offset = [1.0e-3, 1.0e-3]", "preload_offset = [0.035, 0.035]");
+    std::fs::write(&path, edited).unwrap();
+    let args = ["study", path.to_str().unwrap(), "--vary", "friction,preload", "--samples", "20"];
+    let (ok, _, err) = common::kinrepro(&args);
+    assert!(!ok && err.contains("sample ") && err.contains("[variation] preload_offset"), "{err}");
+}
