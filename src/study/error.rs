@@ -39,7 +39,7 @@ pub enum StudyError {
     Perturbed {
         index: usize,
         /// The `[variation]` keys drawn, comma-separated.
-        keys: String,
+        keys: Box<str>,
         #[source]
         source: AssemblyError,
     },
@@ -66,9 +66,9 @@ pub enum StudyError {
         mu: Vec<f64>,
         /// Empty, or the `[variation]` keys this sample drew within:
         /// `; drawn within [variation] preload_offset, ...` and a hint.
-        varied: String,
+        varied: Box<str>,
         #[source]
-        source: SolveError,
+        source: Box<SolveError>,
     },
     /// The sink of a streamed study's records failed (e.g. its CSV file).
     #[error(transparent)]

@@ -195,16 +195,18 @@ pub fn evaluate_rows<'a>(
     // A sample that drew preload or tolerances names the [variation]
     // keys behind it: a bound may reach beyond what the coupling carries.
     let keys = scene.variation.keys(var.preload, var.tolerances);
-    let varied = match keys.is_empty() {
-        true => String::new(),
+    let varied: Box<str> = match keys.is_empty() {
+        true => "".into(),
         false => format!(
             "; preload or tolerances drawn within [variation] {}, whose bounds may reach beyond \
              what the coupling can carry",
             keys.join(", ")
-        ),
+        )
+        .into(),
     };
     let seat_err = |index: usize, mu: &[f64], source| {
         let varied = varied.clone();
+        let source = Box::new(source);
         StudyError::Seating { index, mu: mu.to_vec(), varied, source }.in_file(file)
     };
     // The reference: nominal friction and preload, from the touching pose, same solver.
@@ -250,7 +252,7 @@ pub fn evaluate_rows<'a>(
             }
             if let Some(t) = &sample.tolerances {
                 let perturbed = t.coupling(scene, coupling).map_err(|source| {
-                    let keys = scene.variation.keys(false, true).join(", ");
+                    let keys = scene.variation.keys(false, true).join(", ").into();
                     StudyError::Perturbed { index, keys, source }.in_file(file)
                 })?;
                 let seated = s
