@@ -41,10 +41,12 @@
 //!   lumping each cell's slip: largest when the slip annulus is about one
 //!   cell wide (tests/it/contact_laws.rs prints the measured errors).
 //! - Time: a step from P_old to P with increment du is split as
-//!   normal(P_old -> P), then tangential(du) at P: first order in the step
-//!   for a sticking contact under a changing load (k_t of the end radius;
-//!   measured 3.1e-3 in the proportional-loading test with 1.5 % load
-//!   steps), exact for a sliding one (Q = mu P at the end of the step). A
+//!   normal(P_old -> P), then tangential(du) at P, each spring taking its
+//!   share of du ([`Row::share`]: all of it if it was in contact at the
+//!   start, (a1^2 - x^2)/(a1^2 - a0^2) if it entered during the step):
+//!   exact along a proportional increment (P and Q linear in the step) for
+//!   a sticking contact, exact for a sliding one (Q = mu P at the end of
+//!   the step). A
 //!   split with the tangential stage at the mid load is second order but
 //!   leaves a spring that slid at the mid load below its end limit
 //!   (Q = mu (P - dP/2) in a sliding V groove), and pinning it there makes
@@ -76,15 +78,48 @@ struct Row {
     /// Principal values and axes (columns) of the shape C in the frame.
     c: [f64; 2],
     axes: Matrix2<f64>,
-    /// Each cell's weight and limit at the end of the normal stage (the
-    /// tangential stage, at the same load and radius, reads them).
+    /// Each cell's share of the step's tangential increment and its limit
+    /// at the end of the normal stage (the tangential stage, at the same
+    /// load and radius, reads them): the share is the cell's weight, less
+    /// for the springs that entered during the step ([`Row::share`]).
     stage: [(f64, f64); SPRINGS],
+    /// The radius at the start of the step [m].
+    a_start: f64,
+    /// The step's tangential increment in the frame, C du.
+    increment: Vector2<f64>,
 }
 
 impl Row {
     /// Fraction of cell j inside 0 <= x <= a.
     fn weight(&self, j: usize, a: f64) -> f64 {
         ((a - j as f64 * self.h) / self.h).clamp(0.0, 1.0)
+    }
+
+    /// Cell j's share of a step's tangential increment when the radius grows
+    /// from `a0` to `a1` along a proportional increment (P and Q linear in
+    /// the step): a spring at x < a0 takes all of it; one at a0 < x < a1
+    /// enters when a = x, after the part w(x) = (x^2 - a0^2)/(a1^2 - a0^2)
+    /// of the displacement (du ~ dP / a under force control, and P^(2/3) ~
+    /// a^2), so it takes (a1^2 - x^2)/(a1^2 - a0^2). Averaged over the cell
+    /// (width h, exact integral). From zero this gives Q = (16/3) G* a du,
+    /// s = 1.5 Q / (8 G* a), Mindlin's proportional loading exactly.
+    fn share(&self, j: usize, a0: f64, a1: f64) -> f64 {
+        let (x0, x1) = (j as f64 * self.h, ((j + 1) as f64 * self.h).min(a1));
+        if x1 <= x0 {
+            return 0.0;
+        }
+        if a1 <= a0 {
+            return (x1 - x0) / self.h;
+        }
+        let inside = (x1.min(a0) - x0).max(0.0);
+        let (r0, r1) = (x0.max(a0), x1);
+        let ring = if r1 > r0 {
+            let f = |x: f64| a1 * a1 * x - x * x * x / 3.0;
+            (f(r1) - f(r0)) / (a1 * a1 - a0 * a0)
+        } else {
+            0.0
+        };
+        (inside + ring) / self.h
     }
 
     /// Cell j's limit of |q| at load p and radius a: delta* times the cell
@@ -154,9 +189,10 @@ impl Row {
     fn normal(&mut self, p: f64, a: f64) {
         self.fit(a);
         let delta_star = self.delta_star(p, a);
+        self.a_start = self.a;
         for j in 0..SPRINGS {
             let (w_old, w_new) = (self.weight(j, self.a), self.weight(j, a));
-            self.stage[j].0 = w_new;
+            self.stage[j].0 = self.share(j, self.a, a);
             if w_new == 0.0 {
                 self.q[j] = Vector2::zeros();
                 self.d[j] = Matrix2::zeros();
@@ -176,10 +212,11 @@ impl Row {
     }
 
     /// Tangential stage, after [`Self::normal`] (whose end load and radius
-    /// it keeps: each cell's weight and limit are the normal stage's):
-    /// every cell in contact moves by w C du. Returns whether every cell in
-    /// contact is then at its limit (gross slip).
+    /// it keeps: each cell's share and limit are the normal stage's):
+    /// every cell in contact moves by its share of C du. Returns whether
+    /// every cell in contact is then at its limit (gross slip).
     fn tangential(&mut self, c: &Matrix2<f64>, du: &Vector2<f64>) -> bool {
+        self.increment = c * du;
         let mut all_capped = true;
         for j in 0..SPRINGS {
             let (w, l) = self.stage[j];
@@ -253,6 +290,8 @@ pub(super) fn update(
         c: c_principal,
         axes: c_axes,
         stage: [(0.0, 0.0); SPRINGS],
+        a_start: 0.0,
+        increment: Vector2::zeros(),
     };
     if fresh && old.force.norm() > 0.0 {
         rebuild(&mut row, &(basis.transpose() * old.force), old.normal_force);
@@ -319,9 +358,11 @@ fn tangent_of(
     (basis * d2 * basis.transpose() * proj, d_force_d_load(row, p, basis))
 }
 
-/// dQ/dP at fixed displacement from the springs at their limit at the end
-/// of the step (their limit grows with P; the others do not depend on P to
-/// first order). Central difference of the closed-form cell limit.
+/// dQ/dP at fixed displacement: the springs at their limit at the end of
+/// the step (their limit grows with P), and the others by their share of
+/// the increment (it grows with the end radius for the springs that
+/// entered during the step, [`Row::share`]). Central differences of the
+/// closed-form cell limit and share.
 fn d_force_d_load(row: &Row, p: f64, basis: &Matrix3x2<f64>) -> Vector3<f64> {
     let eps = 1e-6 * p;
     let (a_p, a_m) = (row.a * ((p + eps) / p).cbrt(), row.a * ((p - eps) / p).cbrt());
@@ -335,6 +376,10 @@ fn d_force_d_load(row: &Row, p: f64, basis: &Matrix3x2<f64>) -> Vector3<f64> {
             let dl = (row.limit_at(j, a_p, delta_star[1]) - row.limit_at(j, a_m, delta_star[2]))
                 / (2.0 * eps);
             sum += row.q[j] / norm * dl;
+        } else if l > 0.0 {
+            let a0 = row.a_start;
+            let ds = (row.share(j, a0, a_p) - row.share(j, a0, a_m)) / (2.0 * eps);
+            sum += row.increment * ds;
         }
     }
     basis * (8.0 * row.g_star * row.h * sum)

@@ -547,9 +547,9 @@ fn masing_loop_dissipates_the_mindlin_deresiewicz_energy() {
 fn proportional_loading_has_the_mindlin_deresiewicz_compliance() {
     let law = steel_ball_on_plane();
     let p_max = 20.0;
-    // Geometric load steps from 1e-6 P_max: the first step (P, then Q) is a
-    // Cattaneo loading whose error decays as (P_1/P)^(2/3), below 1e-3 from
-    // P = 1e-2 P_max on, where the check starts.
+    // Geometric load steps from 1e-6 P_max: each step is a proportional
+    // increment, which the law follows exactly (the springs that enter
+    // during a step take their share of it, `Row::share`), from the first.
     let n = 900;
     for lambda in [0.1, 0.4] {
         let rows: Vec<(f64, f64)> = (0..=n)
@@ -559,7 +559,7 @@ fn proportional_loading_has_the_mindlin_deresiewicz_compliance() {
         let out =
             drive_history(&law, TangentialLaw::MindlinDeresiewicz, MU, &steps(&rows)).unwrap();
         let mut worst: f64 = 0.0;
-        for st in out.iter().filter(|st| st.load.normal_force >= 1e-2 * p_max) {
+        for st in &out {
             let (p, q) = (st.load.normal_force, st.load.tangential_force[0]);
             let (a, g) = circle_constants(p);
             // Mindlin & Deresiewicz (1953); Johnson §7.3: dQ/dP = lambda < mu
@@ -573,8 +573,29 @@ fn proportional_loading_has_the_mindlin_deresiewicz_compliance() {
             assert!(st.displacement[0] / old > 1.2, "{} vs old {old}", st.displacement[0]);
             assert_eq!(st.slip, SlipState::Stick);
         }
-        assert!(worst < 1e-2, "lambda {lambda}: worst {worst:e}");
+        assert!(worst < 1e-9, "lambda {lambda}: worst {worst:e}");
         println!("proportional loading lambda = {lambda}: worst relative error {worst:.2e}");
+    }
+}
+
+/// The history: P to 5 N and Q to 1.5 N together from zero in 1, 5
+/// or 2000 force-controlled steps. Both laws give Mindlin's
+/// s = 1.5 Q / (8 G* a) within 1e-6 at every step count (the MD law was
+/// 23.8 % below it in one step, 10 % in 5, 0.25 % in 2000).
+#[test]
+fn a_proportional_step_from_zero_is_exact_in_both_laws() {
+    let law = steel_ball_on_plane();
+    for n in [1, 5, 2000] {
+        let rows: Vec<(f64, f64)> =
+            (1..=n).map(|i| i as f64 / n as f64).map(|f| (5.0 * f, 1.5 * f)).collect();
+        for tangential in [TangentialLaw::MindlinDeresiewicz, TangentialLaw::Coulomb] {
+            let out = drive_history(&law, tangential, MU, &steps(&rows)).unwrap();
+            let st = out.last().unwrap();
+            let (a, g) = circle_constants(5.0);
+            let md = 1.5 * 1.5 / (8.0 * g * a);
+            let e = rel(st.displacement[0], md);
+            assert!(e < 1e-6, "{tangential:?}, {n} steps: {:e} vs {md:e}", st.displacement[0]);
+        }
     }
 }
 
