@@ -41,6 +41,12 @@ impl TryFrom<ContactArgs> for Contact {
         let history = match a.history.clone() {
             None => None,
             Some(path) => {
+                if let Some(load) = a.load {
+                    usage!(
+                        "--load {load}: has no effect with --history, whose normal loads are the P_N column of {} (leave it out)",
+                        path.display()
+                    );
+                }
                 let c = a.tangential_compliance;
                 let across = a.tangential_compliance_across;
                 for (flag, c) in [("", Some(c)), ("-across", across)] {
@@ -132,12 +138,6 @@ fn principal_radii(flag: &str, v: &[f64]) -> Result<[f64; 2]> {
 
 pub fn contact(c: Contact) -> Result {
     if let Some((path, friction, law, compliance)) = &c.history {
-        if let Some(load) = c.load {
-            eprintln!(
-                "warning: --load {load} is not used with --history: the normal loads come from the P_N column of {}",
-                path.display()
-            );
-        }
         return history(&c.pair, path, *friction, (*law, *compliance));
     }
     // Without --history the flags require --load.
