@@ -271,6 +271,27 @@ fn static_checks(html: &str, study: &serde_json::Value) {
             assert!(html.contains(&format!("[{lo:.2},")), "interval {lo:.2} not in a table");
         }
     }
+    // The verdict first: +-3 sigma of every point with 3 times sigma's
+    // interval, and the friction-limit warning of the paper's scene 01
+    // (mu0 + spread = 0.55 above its limit 0.3066, as `check` says).
+    let verdict = html.find("<section id=\"verdict\">").expect("a verdict section");
+    assert!(verdict < html.find("<section id=\"run\">").unwrap(), "the verdict opens the report");
+    for v in study["variants"].as_array().unwrap() {
+        for p in v["points"].as_array().unwrap() {
+            let three = p["three_sigma"]["x_nm"].as_f64().unwrap();
+            let lo = 3.0 * p["sigma_ci90_low"]["x_nm"].as_f64().unwrap();
+            assert!(html.contains(&format!("<td>{three:.3}<span")), "+-3 sigma_x {three:.3}");
+            assert!(html.contains(&format!("[{lo:.2},")), "its interval from {lo:.2}");
+        }
+    }
+    let a = &study["variants"][0]["assessment"];
+    assert_eq!(a["above_friction_limit"], true, "{a}");
+    let limit = a["friction_limit"].as_f64().unwrap();
+    assert!(
+        html.contains(&format!("above the friction limit for seating {limit:.4}"))
+            && html.contains("<li class=\"warn\">"),
+        "the friction-limit warning"
+    );
     // The thermal example's drift: its table (each cycle point's mean z of
     // the centre) and its plot.
     let thermal = &study["variants"][2]["points"][0]["thermal"];

@@ -359,18 +359,6 @@ pub enum Distribution {
     Empirical,
 }
 
-impl Distribution {
-    /// The keyword as a scene file spells it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Distribution::Uniform => "uniform",
-            Distribution::Normal => "normal",
-            Distribution::Lognormal => "lognormal",
-            Distribution::Empirical => "empirical",
-        }
-    }
-}
-
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FrictionFile {

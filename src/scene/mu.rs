@@ -300,3 +300,15 @@ pub fn correlate(u: &mut [f64], ball: &[usize], rho: f64) {
         start = end;
     }
 }
+
+impl super::file::Distribution {
+    /// The keyword as a scene file spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            super::file::Distribution::Uniform => "uniform",
+            super::file::Distribution::Normal => "normal",
+            super::file::Distribution::Lognormal => "lognormal",
+            super::file::Distribution::Empirical => "empirical",
+        }
+    }
+}

@@ -44,6 +44,7 @@
 //! and recomputes the statistics, so the merged result is the one of a single run. A failed
 //! array task is simply re-run with the same `--shard`.
 
+pub mod assessment;
 pub mod bounds;
 pub mod document;
 pub mod error;

@@ -87,6 +87,11 @@ pub struct VariantReport {
     pub seating_failures: Option<usize>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seating_failure_share: Option<f64>,
+    /// The friction limit against the coefficients drawn and the contact
+    /// safety factors (`study::assessment`, the numbers of `kinrepro
+    /// check`); absent in documents written before it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub assessment: Option<super::assessment::Assessment>,
     /// True for one shard of several: statistics wait for `kinrepro merge`.
     pub partial: bool,
     /// Re-seating scatter of one pair of halves: statistics per evaluation
@@ -219,6 +224,7 @@ impl VariantReport {
             variation_bounds: (var.preload || var.tolerances).then_some(scene.variation),
             seating_failures: None,
             seating_failure_share: None,
+            assessment: Some(super::assessment::Assessment::new(scene, &v.coupling)),
             partial: run.shard.count > 1,
             points: Vec::new(),
             interchangeability: Vec::new(),

@@ -176,6 +176,22 @@ pub fn run_chunked<'a>(
     Ok(())
 }
 
+/// What a failed sample drew its preload or tolerances within: the
+/// `[variation]` keys behind it (a bound may reach beyond what the
+/// coupling carries), or empty.
+fn varied_note(scene: &crate::scene::Scene, var: &super::variation::Variation) -> Box<str> {
+    let keys = scene.variation.keys(var.preload, var.tolerances);
+    if keys.is_empty() {
+        return "".into();
+    }
+    format!(
+        "; preload or tolerances drawn within [variation] {}, whose bounds may reach beyond what \
+         the coupling can carry",
+        keys.join(", ")
+    )
+    .into()
+}
+
 /// Seat the coupling once per `(index, design row)` (rayon across rows)
 /// and record the outputs named by [`recorded_output_names`], relative to
 /// the nominal seating (nominal friction and preload, touching start, same
@@ -192,18 +208,7 @@ pub fn evaluate_rows<'a>(
     let (scene, coupling) = (&v.scene, &v.coupling);
     let var = s.variation;
     let file = v.file();
-    // A sample that drew preload or tolerances names the [variation]
-    // keys behind it: a bound may reach beyond what the coupling carries.
-    let keys = scene.variation.keys(var.preload, var.tolerances);
-    let varied: Box<str> = match keys.is_empty() {
-        true => "".into(),
-        false => format!(
-            "; preload or tolerances drawn within [variation] {}, whose bounds may reach beyond \
-             what the coupling can carry",
-            keys.join(", ")
-        )
-        .into(),
-    };
+    let varied = varied_note(scene, &var);
     let seat_err = |index: usize, mu: &[f64], source| {
         let varied = varied.clone();
         let source = Box::new(source);

@@ -478,3 +478,49 @@ fn run_reports_phi_z_as_evaluated() {
     assert!(ok && !table.contains("not evaluated"), "{table}");
     assert!(table.contains("phi_z[nrad]") && !table.contains("phi_z[nrad]*"));
 }
+
+/// The verdict of a study (issue 39): its JSON `assessment` holds the
+/// friction limit and safety factors `check` prints, and the text table
+/// opens each variant with +-3 sigma (with 3 times sigma's interval), the
+/// friction-limit line and the smallest safety factor naming what it
+/// leaves out (the stage's silicon-nitride balls, as `check` says).
+#[test]
+fn a_study_carries_the_verdict_check_gives() {
+    let stage = common::scene("example_stage_mount.toml").display().to_string();
+    let (ok, out, err) = common::kinrepro(&["check", &stage]);
+    assert!(ok, "{err}");
+    let limit: f64 = out
+        .split("friction limit for seating: mu < ")
+        .nth(1)
+        .and_then(|r| r.split_whitespace().next())
+        .and_then(|x| x.parse().ok())
+        .expect("check prints the limit");
+    assert!(out.contains("leave out `silicon-nitride`"), "{out}");
+    let args = ["study", &stage, "--samples", "20", "--format", "json"];
+    let (ok, json, err) = common::kinrepro(&args);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let a = &v["variants"][0]["assessment"];
+    assert!((a["friction_limit"].as_f64().unwrap() - limit).abs() < 5e-5, "{a}");
+    assert_eq!(a["above_friction_limit"], false);
+    let left: Vec<&str> = a["contacts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|c| c["left_out"].as_array().unwrap())
+        .map(|l| l["material"].as_str().unwrap())
+        .collect();
+    assert!(left.iter().all(|m| *m == "silicon-nitride") && left.len() == 6, "{left:?}");
+    let (ok, table, err) = common::kinrepro(&["study", &stage, "--samples", "20"]);
+    assert!(ok, "{err}");
+    let p = &v["variants"][0]["points"][0];
+    let three = p["three_sigma"]["x_nm"].as_f64().unwrap();
+    let hi = 3.0 * p["sigma_ci90_high"]["x_nm"].as_f64().unwrap();
+    assert!(
+        table.contains(&format!("+-3 sigma at centre [nm, nrad; 90 % interval]: x {three:.2} [")),
+        "{table}"
+    );
+    assert!(table.contains(&format!(", {hi:.2}], y ")), "{table}");
+    assert!(table.contains(&format!("friction limit for seating {limit:.4}")), "{table}");
+    assert!(table.contains("it leaves out silicon-nitride (no allowable_pressure)"), "{table}");
+}

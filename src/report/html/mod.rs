@@ -2,8 +2,10 @@
 //! --html FILE`): one file with inline CSS and inline SVG, no script, no
 //! external resource (a Content Security Policy forbids fetching anything).
 //!
-//! Sections, in order: the run's metadata (version, schema, solver, sampler,
-//! seed, samples, what varied), the sigma tables with intervals (nm, nrad)
+//! Sections, in order: the verdict ([`verdict`]: +-3 sigma with its
+//! interval, mean, min and max, the friction limit, the contact safety),
+//! the run's metadata (version, schema, solver, sampler, seed, samples,
+//! what varied), the sigma tables with intervals (nm, nrad)
 //! and reference values, the charts (`report::study::charts`: sigma bars
 //! with interval bars and reference ticks, x-y scatter of every evaluation
 //! point, convergence of sigma in all six DOFs, interchangeability), then per
@@ -28,6 +30,7 @@ pub mod prediction;
 mod svg;
 pub mod sweep;
 mod tables;
+mod verdict;
 
 use std::fmt::Write;
 
@@ -103,6 +106,7 @@ impl HtmlReport {
         let mut body = String::new();
         let mut toc: Vec<(String, String)> = Vec::new();
         if !self.studies.is_empty() {
+            toc.push(("verdict".into(), "Verdict".into()));
             toc.push(("run".into(), "Run".into()));
             toc.push(("sigma".into(), "σ tables".into()));
         }
@@ -115,7 +119,7 @@ impl HtmlReport {
         for (i, s) in self.sections.iter().enumerate() {
             toc.push((format!("extra-{}", i + 1), s.title.clone()));
         }
-        self.header(&mut body, &toc);
+        self.header(&mut body, &toc, &variants);
         if !self.studies.is_empty() {
             self.results(&mut body, &variants, &references);
         }
@@ -151,7 +155,8 @@ impl HtmlReport {
         Ok(page::document("kinrepro report", &body))
     }
 
-    fn header(&self, body: &mut String, toc: &[(String, String)]) {
+    /// Title, provenance, contents, then the verdict and the run.
+    fn header(&self, body: &mut String, toc: &[(String, String)], variants: &[&VariantReport]) {
         body.push_str("<header><h1>kinrepro: re-seating reproducibility report</h1>\n");
         for st in &self.studies {
             let _ = writeln!(
@@ -169,6 +174,7 @@ impl HtmlReport {
         if self.studies.is_empty() {
             return;
         }
+        body.push_str(&verdict::verdict_section(variants));
         body.push_str("<section id=\"run\"><h2>Run</h2>\n");
         for st in &self.studies {
             body.push_str(&tables::metadata(&st.source, &st.report));

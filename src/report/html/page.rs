@@ -20,6 +20,8 @@ h1 { font-size: 1.6rem; margin: 0.2rem 0 0.3rem; }
 h2 { font-size: 1.3rem; margin-top: 2.2rem; border-bottom: 2px solid var(--accent); padding-bottom: 0.2rem; }
 h3 { font-size: 1.05rem; margin: 1.4rem 0 0.5rem; }
 p.prov, p.note, figcaption, .muted { color: var(--muted); font-size: 0.9rem; }
+ul.verdict { padding-left: 1.2rem; }
+ul.verdict li.warn { color: #a4161a; font-weight: 600; }
 nav ul { display: flex; flex-wrap: wrap; gap: 0.3rem 1rem; padding: 0; list-style: none; margin: 0.6rem 0; }
 nav a { color: var(--accent); text-decoration: none; }
 .scroll { overflow-x: auto; max-width: 100%; }

@@ -12,3 +12,4 @@ pub mod sensitivity;
 pub mod table;
 pub mod text;
 pub mod thermal;
+pub mod verdict;

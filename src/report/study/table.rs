@@ -107,6 +107,7 @@ fn variant_text(v: &VariantReport) -> String {
         let _ = writeln!(s, "  CANNOT SEAT: {reason}");
         return s;
     }
+    s += &super::verdict::verdict_text(v);
     if !v.points.is_empty() {
         let _ = writeln!(s, "  re-seating scatter (one pair of halves):");
         s += &detail(&v.points);

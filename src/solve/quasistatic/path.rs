@@ -70,6 +70,29 @@ pub(super) struct Walk<'w> {
     pub slid: bool,
 }
 
+impl<'w> Walk<'w> {
+    /// A path at `pose` with nothing accepted yet.
+    fn at(
+        pose: BodyPose,
+        states: &'w mut Vec<TangentialState>,
+        evals: &'w mut Vec<ContactEval>,
+        slip_path: &'w mut Vec<f64>,
+    ) -> Self {
+        Walk {
+            pose,
+            states,
+            evals,
+            slip_path,
+            s: 0.0,
+            event: None,
+            accepted: 0,
+            iterations: 0,
+            halved: false,
+            slid: false,
+        }
+    }
+}
+
 /// What stays fixed along a path.
 struct Context {
     start: BodyPose,
@@ -135,18 +158,7 @@ impl Solver<'_> {
         bufs.slip_path.clear();
         bufs.slip_path.resize(bufs.states.len(), 0.0);
         let trial = &mut bufs.trial;
-        let mut w = Walk {
-            pose: start,
-            states: &mut bufs.states,
-            evals: &mut bufs.evals,
-            slip_path: &mut bufs.slip_path,
-            s: 0.0,
-            event: None,
-            accepted: 0,
-            iterations: 0,
-            halved: false,
-            slid: false,
-        };
+        let mut w = Walk::at(start, &mut bufs.states, &mut bufs.evals, &mut bufs.slip_path);
         if !seating {
             self.evaluate_all(&start, &start, w.states, self.ramp_time, true, w.evals);
         }
