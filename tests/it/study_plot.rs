@@ -176,7 +176,7 @@ fn scatter_names_every_point_and_convergence_has_six_dofs() {
     let n = 10;
     let v = study("06_kelvin_steel.toml", n, vec![Varied::Friction]);
     let charts = study_charts(&[&v], &[]).unwrap();
-    let names: Vec<&str> = charts.iter().map(|c| c.file_name).collect();
+    let names: Vec<&str> = charts.iter().map(|c| c.file_name.as_str()).collect();
     assert_eq!(names, ["sigma_bars.svg", "scatter_xy.svg", "sigma_convergence.svg"]);
     let scatter = &charts[1].svg;
     for point in ["centre", "trihedral ball"] {
@@ -235,7 +235,7 @@ fn interchangeability_is_plotted_when_tolerances_vary() {
     let tol = vec![Varied::Friction, Varied::Tolerances];
     let v = study("tolerances_maxwell_vgroove.toml", 8, tol);
     let charts = study_charts(&[&v], &[]).unwrap();
-    let names: Vec<&str> = charts.iter().map(|c| c.file_name).collect();
+    let names: Vec<&str> = charts.iter().map(|c| c.file_name.as_str()).collect();
     assert!(names.contains(&"interchange_sigma_bars.svg"), "{names:?}");
     assert!(names.contains(&"interchange_scatter_xy.svg"), "{names:?}");
     let bars = &charts.iter().find(|c| c.file_name == "interchange_sigma_bars.svg").unwrap().svg;
@@ -243,4 +243,57 @@ fn interchangeability_is_plotted_when_tolerances_vary() {
     let plain = study("tolerances_maxwell_vgroove.toml", 8, vec![Varied::Friction]);
     let charts = study_charts(&[&plain], &[]).unwrap();
     assert!(charts.iter().all(|c| !c.file_name.starts_with("interchange")));
+}
+
+/// `--sensitivity` reaches the charts and the report (issue 39): one chart
+/// per block, each DOF's panel with the variance share, S and ST of every
+/// input as bars whose heights are proportional to the JSON's values (the
+/// share bars of the x panel here), the Sobol bars with interval bars, and
+/// the chart in the HTML report.
+#[test]
+fn sensitivity_chart_bars_carry_the_json_values() {
+    let s01 = common::scene("01_maxwell_vgroove_steel.toml").display().to_string();
+    let dir = tempfile::tempdir().unwrap();
+    let (out, html) = (dir.path().join("out"), dir.path().join("r.html"));
+    let base = ["study", &s01, "--samples", "60", "--sensitivity", "--sobol-samples", "64"];
+    let (ok, json, err) = common::kinrepro(&[&base[..], &["--format", "json"]].concat());
+    assert!(ok, "{err}");
+    let files = ["--out", out.to_str().unwrap(), "--html", html.to_str().unwrap()];
+    let (ok, _, err) = common::kinrepro(&[&base[..], &files[..]].concat());
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let block = &v["variants"][0]["sensitivity"][0];
+    let share: Vec<f64> =
+        block["dofs"][0]["share"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    let svg = std::fs::read_to_string(out.join("sensitivity_1_reseating.svg")).unwrap();
+    for label in ["variance share (SRC²)", "Sobol S (first order)", "Sobol ST (total)", "mu_6"] {
+        assert!(svg.contains(label), "{label}");
+    }
+    // The share bars (the first colour) of the top row stand on one
+    // baseline; sorted by x, the first six are the x panel's.
+    let mut bars: Vec<(f64, f64, f64)> = elements(&svg, "rect")
+        .into_iter()
+        .filter(|r| r.contains("fill=\"#0072B2\"") && attr(r, "width").is_some_and(|w| w < 60.0))
+        .filter_map(|r| {
+            Some((attr(r, "x")?, attr(r, "y")? + attr(r, "height")?, attr(r, "height")?))
+        })
+        .collect();
+    // (The legend's swatch, in the 44 px title band, is not a bar.)
+    bars.retain(|b| b.1 > 44.0);
+    let top = bars.iter().map(|b| b.1).fold(f64::INFINITY, f64::min);
+    bars.retain(|b| (b.1 - top).abs() < 1.0 && b.2 > 0.0);
+    bars.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap());
+    let (k, _) =
+        share.iter().enumerate().fold((0, 0.0), |a, (j, &s)| if s > a.1 { (j, s) } else { a });
+    let scale = bars[k].2 / share[k];
+    for (j, s) in share.iter().enumerate().filter(|(_, s)| **s * scale > 1.0) {
+        let h = bars.iter().take(6).nth(j).map_or(0.0, |b| b.2);
+        assert!(
+            (h - s * scale).abs() < 1.5,
+            "input {j}: bar {h} px, share {s} -> {} px",
+            s * scale
+        );
+    }
+    let page = std::fs::read_to_string(&html).unwrap();
+    assert!(page.contains("id=\"sensitivity-1-reseating\"") && page.contains("Sobol ST (total)"));
 }

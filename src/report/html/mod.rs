@@ -128,7 +128,7 @@ impl HtmlReport {
             for c in &charts {
                 let id = c.file_name.trim_end_matches(".svg").replace('_', "-");
                 let _ = writeln!(body, "<h3>{}</h3>", escape(&c.title));
-                body.push_str(&page::figure(&id, &c.svg, chart_caption(c.file_name)));
+                body.push_str(&page::figure(&id, &c.svg, chart_caption(&c.file_name)));
             }
             body.push_str("</section>\n");
         }
@@ -213,6 +213,9 @@ fn chart_caption(file: &str) -> &'static str {
         }
         "scatter_xy.svg" | "interchange_scatter_xy.svg" => {
             "Every sample's x-y error relative to the nominal seating [nm], one panel per variant and evaluation point, common axes."
+        }
+        f if f.starts_with("sensitivity_") => {
+            "Per input and DOF: the share of the variance a linear fit gives it (normalised SRC², left), the first-order Sobol index S (middle) and the total index ST (right), each series one colour in every panel; black error bars: the 90 % bootstrap interval of S and ST. ST - S is the input's share through interactions."
         }
         "thermal_drift.svg" => {
             "Mean drift of each evaluation point from each sample's seated pose (line) and mean ± 3σ over the samples (band), at the seated state and each cycle point [nm, nrad]."

@@ -10,7 +10,7 @@ use crate::dof::{Dof, nano};
 use crate::report::study::plot::PlotError;
 use crate::report::study::plot::{
     ConvergenceSeries, DriftSeries, DriftStep, VariantScatter, VariantSigma, convergence_svg,
-    drift_svg, sigma_bars_svg, xy_scatter_svg,
+    drift_svg, sensitivity_svg, sigma_bars_svg, xy_scatter_svg,
 };
 use crate::report::study::reference::ReferenceRow;
 use crate::report::study::text::truncate;
@@ -21,7 +21,7 @@ use crate::study::{PointStats, VariantReport};
 /// One chart: the file name `--out` gives it, a title and the SVG text.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Chart {
-    pub file_name: &'static str,
+    pub file_name: String,
     pub title: String,
     pub svg: String,
 }
@@ -152,8 +152,8 @@ pub fn study_charts(
         .filter(|v| !v.partial && (!v.points.is_empty() || !v.interchangeability.is_empty()))
         .collect();
     let mut charts = Vec::new();
-    let mut add = |file_name, title: &str, svg| {
-        let title = title.into();
+    let mut add = |file_name: &str, title: &str, svg| {
+        let (file_name, title) = (file_name.into(), title.into());
         charts.push(Chart { file_name, title, svg });
     };
     let with = |f: fn(&VariantReport) -> bool| full.iter().copied().filter(|v| f(v)).collect();
@@ -184,6 +184,15 @@ pub fn study_charts(
     if !xy.is_empty() {
         let title = "Interchangeability x-y scatter, per evaluation point";
         add("interchange_scatter_xy.svg", title, xy_scatter_svg(&xy)?);
+    }
+    for (i, v) in full.iter().enumerate() {
+        for b in v.sensitivity.iter().flatten() {
+            let point = b.dofs.first().map_or("", |d| super::table::output_point(&d.output));
+            let what =
+                format!("{}: sensitivity of the {} scatter at {point}", variant_label(v), b.kind);
+            let file = format!("sensitivity_{}_{}.svg", i + 1, b.kind);
+            add(&file, &what, sensitivity_svg(b, &what)?);
+        }
     }
     Ok(charts)
 }

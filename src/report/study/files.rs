@@ -79,7 +79,7 @@ impl StudyReport {
         let variants: Vec<&VariantReport> = self.variants.iter().collect();
         let charts = study_charts(&variants, &[]).map_err(|e| WriteError::io(dir, e))?;
         for c in charts {
-            let path = dir.join(c.file_name);
+            let path = dir.join(&c.file_name);
             let mut f = AtomicFile::create(&path, force)?;
             f.write_all(c.svg.as_bytes()).map_err(|e| WriteError::io(&path, e))?;
             staged.push(f);

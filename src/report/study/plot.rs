@@ -13,6 +13,8 @@
 //! * [`xy_scatter_svg`]: x-y scatter of the samples \[nm\], one panel per variant and
 //!   evaluation point (each named), common axes.
 //! * [`convergence_svg`]: sigma of the first k samples against k, one panel per DOF (all six).
+//! * [`sensitivity_svg`]: with `--sensitivity`, the variance shares and the Sobol indices S
+//!   and ST (with their 90 % intervals) of each input, one panel per DOF.
 //! * [`drift_svg`]: the thermal drift along the cycle (mean and +- 3 sigma band), one panel
 //!   per DOF.
 //!
@@ -26,11 +28,13 @@ mod bars;
 mod convergence;
 mod drift;
 mod scatter;
+mod sensitivity;
 
 pub use bars::sigma_bars_svg;
 pub use convergence::convergence_svg;
 pub use drift::drift_svg;
 pub use scatter::xy_scatter_svg;
+pub use sensitivity::sensitivity_svg;
 
 use plotters::style::RGBColor;
 use serde::{Deserialize, Serialize};
