@@ -297,3 +297,92 @@ fn sensitivity_chart_bars_carry_the_json_values() {
     let page = std::fs::read_to_string(&html).unwrap();
     assert!(page.contains("id=\"sensitivity-1-reseating\"") && page.contains("Sobol ST (total)"));
 }
+
+/// Standard normal pairs by Box-Muller from a ChaCha stream.
+fn normals(n: usize, seed: u64) -> Vec<(f64, f64)> {
+    use rand::{Rng, SeedableRng};
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    (0..n)
+        .map(|_| {
+            let (u1, u2): (f64, f64) = (1.0 - rng.random::<f64>(), rng.random());
+            let r = (-2.0 * u1.ln()).sqrt();
+            let t = std::f64::consts::TAU * u2;
+            (r * t.cos(), r * t.sin())
+        })
+        .collect()
+}
+
+/// The scatter's ellipse: every point on m + sqrt(c) L u with c the 90 %
+/// quantile of chi-square with 2 degrees of freedom, -2 ln 0.1 (its
+/// Mahalanobis radius by the sample covariance, computed here), and it
+/// holds 90 % of fresh draws of the same correlated normal (within 3
+/// standard errors of a binomial proportion).
+#[test]
+fn the_scatter_ellipse_holds_90_percent_of_a_normal() {
+    use kinrepro::report::study::plot::covariance_ellipse;
+    // x = 3 z1, y = 1.2 z1 + 2 z2: correlated, not axis-aligned.
+    let correlated = |z: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        z.iter().map(|&(a, b)| (10.0 + 3.0 * a, -4.0 + 1.2 * a + 2.0 * b)).collect()
+    };
+    let xy = correlated(&normals(4000, 11));
+    let e = covariance_ellipse(&xy, 0.90).unwrap();
+    let n = xy.len() as f64;
+    let (mx, my) = xy.iter().fold((0.0, 0.0), |a, p| (a.0 + p.0 / n, a.1 + p.1 / n));
+    let s = |f: &dyn Fn(f64, f64) -> f64| {
+        xy.iter().map(|&(x, y)| f(x - mx, y - my)).sum::<f64>() / (n - 1.0)
+    };
+    let (sxx, sxy, syy) = (s(&|a, _| a * a), s(&|a, b| a * b), s(&|_, b| b * b));
+    let det = sxx * syy - sxy * sxy;
+    let mahalanobis = |x: f64, y: f64| {
+        let (dx, dy) = (x - mx, y - my);
+        (syy * dx * dx - 2.0 * sxy * dx * dy + sxx * dy * dy) / det
+    };
+    let c = -2.0 * 0.1f64.ln();
+    for &(x, y) in &e {
+        assert!((mahalanobis(x, y) / c - 1.0).abs() < 1e-9, "({x}, {y})");
+    }
+    let fresh = correlated(&normals(20_000, 12));
+    let inside = fresh.iter().filter(|&&(x, y)| mahalanobis(x, y) <= c).count() as f64;
+    let share = inside / fresh.len() as f64;
+    let se = (0.9 * 0.1 / fresh.len() as f64).sqrt();
+    assert!((share - 0.9).abs() < 3.0 * se + 0.01, "{share}");
+}
+
+/// Tick labels of the x axis never overlap: in a 16-panel scatter (the
+/// narrowest panels) each label's estimated width (0.6 em per character)
+/// leaves a gap to its neighbour in the same row.
+#[test]
+fn scatter_tick_labels_do_not_overlap() {
+    let xy = normals(50, 3).iter().map(|&(a, b)| (25.0 * a, 25.0 * b)).collect::<Vec<_>>();
+    let data: Vec<VariantScatter> = (0..16)
+        .map(|i| VariantScatter {
+            variant: format!("v{i}"),
+            point: "centre".into(),
+            xy: xy.clone(),
+        })
+        .collect();
+    let svg = xy_scatter_svg(&data).unwrap();
+    // (x, y, width) of each numeric label written centred (the x ticks).
+    let mut labels: Vec<(f64, f64, f64)> = Vec::new();
+    for chunk in svg.split("<text ").skip(1) {
+        let (head, rest) = chunk.split_once('>').unwrap();
+        let text = rest.split("</text>").next().unwrap().trim();
+        if !head.contains("text-anchor=\"middle\"") || text.parse::<f64>().is_err() {
+            continue;
+        }
+        let size = attr(head, "font-size").unwrap();
+        labels.push((
+            attr(head, "x").unwrap(),
+            attr(head, "y").unwrap(),
+            0.6 * size * text.len() as f64,
+        ));
+    }
+    assert!(labels.len() >= 16 * 3, "{} x tick labels", labels.len());
+    labels.sort_by(|a, b| (a.1, a.0).partial_cmp(&(b.1, b.0)).unwrap());
+    for w in labels.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        if a.1 == b.1 {
+            assert!(b.0 - a.0 > (a.2 + b.2) / 2.0 + 2.0, "labels at {a:?} and {b:?} overlap");
+        }
+    }
+}

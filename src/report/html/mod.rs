@@ -212,7 +212,7 @@ fn chart_caption(file: &str) -> &'static str {
             "Bars: σ per variant and evaluation point; black error bars: the 90 % interval of σ; black ticks: reference values. Left nm, right nrad."
         }
         "scatter_xy.svg" | "interchange_scatter_xy.svg" => {
-            "Every sample's x-y error relative to the nominal seating [nm], one panel per variant and evaluation point, common axes."
+            "Every sample's x-y error relative to the nominal seating [nm], one panel per variant and evaluation point, common axes; the line: the ellipse holding 90 % of a normal distribution with the samples' mean and covariance (chi-square quantile of 2 degrees of freedom, 4.605)."
         }
         f if f.starts_with("sensitivity_") => {
             "Per input and DOF: the share of the variance a linear fit gives it (normalised SRC², left), the first-order Sobol index S (middle) and the total index ST (right), each series one colour in every panel; black error bars: the 90 % bootstrap interval of S and ST. ST - S is the input's share through interactions."

@@ -33,7 +33,7 @@ mod sensitivity;
 pub use bars::sigma_bars_svg;
 pub use convergence::convergence_svg;
 pub use drift::drift_svg;
-pub use scatter::xy_scatter_svg;
+pub use scatter::{ELLIPSE_LEVEL, covariance_ellipse, xy_scatter_svg};
 pub use sensitivity::sensitivity_svg;
 
 use plotters::style::RGBColor;
