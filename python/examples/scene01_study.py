@@ -46,7 +46,10 @@ mu = study.inputs()
 corr = [np.corrcoef(mu[:, k], poses[:, 0])[0, 1] for k in range(mu.shape[1])]
 print("corr(mu_k, x):", dict(zip(study.input_names(), np.round(corr, 2))))
 
-# 4. The x-y scatter with its 1-sigma and 3-sigma ellipses.
+# 4. The x-y scatter with its 90 % covariance ellipse: the mean and the
+# sample covariance S of (x, y), the points m + c L (cos t, sin t) with
+# L L^T = S and c^2 = -2 ln(0.1), the chi-square quantile of 2 degrees of
+# freedom (as the report's scatter draws it).
 try:
     import matplotlib
 
@@ -60,9 +63,11 @@ if plt is not None:
     fig, ax = plt.subplots(figsize=(5, 5))
     ax.scatter(poses[:, 0] * 1e9, poses[:, 1] * 1e9, s=6, alpha=0.6, label="re-seatings")
     t = np.linspace(0, 2 * np.pi, 200)
-    for k in (1, 3):
-        ax.plot(k * sigma[0] * 1e9 * np.cos(t), k * sigma[1] * 1e9 * np.sin(t),
-                label=f"{k} sigma")
+    xy = poses[:, :2] * 1e9                                      # nm
+    L = np.linalg.cholesky(np.cov(xy.T, ddof=1))
+    c = np.sqrt(-2 * np.log(1 - 0.90))
+    ellipse = xy.mean(axis=0)[:, None] + c * L @ np.vstack([np.cos(t), np.sin(t)])
+    ax.plot(ellipse[0], ellipse[1], label="90 % covariance ellipse")
     ax.set_xlabel("x [nm]")
     ax.set_ylabel("y [nm]")
     ax.set_title(scene.name, fontsize=8)

@@ -386,3 +386,42 @@ fn scatter_tick_labels_do_not_overlap() {
         }
     }
 }
+
+/// One colour per series on a page: the i-th series (variant, then
+/// evaluation point) has the same colour in the sigma bars and in the
+/// scatter panels (scene 06 has two points, so three series with scene 01;
+/// the scatter once coloured by variant and gave two).
+#[test]
+fn a_series_has_one_colour_in_bars_and_scatter() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let (s06, s01) =
+        (common::scene("06_kelvin_steel.toml"), common::scene("01_maxwell_vgroove_steel.toml"));
+    let args = [
+        "study",
+        s06.to_str().unwrap(),
+        s01.to_str().unwrap(),
+        "--samples",
+        "20",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    let (ok, _, err) = common::kinrepro(&args);
+    assert!(ok, "{err}");
+    let fills = |file: &str, tag: &str, keep: &dyn Fn(&str) -> bool| -> Vec<String> {
+        let svg = std::fs::read_to_string(out.join(file)).unwrap();
+        let mut seen: Vec<String> = Vec::new();
+        for el in elements(&svg, tag).into_iter().filter(|e| keep(e)) {
+            let Some(i) = el.find("fill=\"#") else { continue };
+            let f = el[i + 6..i + 13].to_string();
+            if f != "#FFFFFF" && f != "#000000" && !seen.contains(&f) {
+                seen.push(f);
+            }
+        }
+        seen
+    };
+    let bars = fills("sigma_bars.svg", "rect", &|r| attr(r, "width").is_some_and(|w| w < 100.0));
+    let dots = fills("scatter_xy.svg", "circle", &|_| true);
+    assert_eq!(dots.len(), 3, "{dots:?}");
+    assert_eq!(bars[..3], dots[..], "bars {bars:?}, scatter {dots:?}");
+}

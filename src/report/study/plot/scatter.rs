@@ -9,7 +9,8 @@ use super::{VariantScatter, check_finite, color, headroom, plot_err};
 /// An SVG with one square panel per variant and evaluation point (grid),
 /// captioned `variant · point (n samples)`, all with the same symmetric axes
 /// `x [nm]`, `y [nm]` so that variants and points can be compared by eye.
-/// Panels of one variant share its colour. Each panel's ellipse
+/// Panel i has the colour of series i, as the bars of the same variants
+/// and points (`charts::study_charts` passes both in one order). Each panel's ellipse
 /// ([`covariance_ellipse`]) holds 90 % of a normal distribution with the
 /// samples' mean and covariance. Five ticks per axis at most, so that
 /// their labels stay apart in the narrowest panel.
@@ -25,19 +26,12 @@ pub fn xy_scatter_svg(data: &[VariantScatter]) -> Result<String> {
             .flat_map(|v| v.xy.iter().map(|(x, y)| x.abs().max(y.abs())))
             .fold(0.0, f64::max),
     )?;
-    // One colour per variant, in order of first appearance.
-    let mut variants: Vec<&str> = Vec::new();
-    for v in data {
-        if !variants.contains(&v.variant.as_str()) {
-            variants.push(&v.variant);
-        }
-    }
     let mut svg = String::new();
     {
         let size = (420 * cols as u32, 420 * rows as u32);
         let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        for (panel, area) in data.iter().zip(root.split_evenly((rows, cols))) {
+        for (i, (panel, area)) in data.iter().zip(root.split_evenly((rows, cols))).enumerate() {
             let caption = if panel.point.is_empty() {
                 format!("{} ({} samples)", panel.variant, panel.xy.len())
             } else {
@@ -60,7 +54,8 @@ pub fn xy_scatter_svg(data: &[VariantScatter]) -> Result<String> {
                 .y_desc("y [nm]")
                 .draw()
                 .map_err(plot_err)?;
-            let i = variants.iter().position(|v| *v == panel.variant).unwrap_or(0);
+            // The series' colour: the i-th series of the page (variant, then
+            // point), as in the sigma bars.
             let col = color(i);
             chart
                 .draw_series(
