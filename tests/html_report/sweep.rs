@@ -77,7 +77,15 @@ fn sweep_static_checks(html: &str, sweep: &serde_json::Value, scene_text: &str) 
         "<td class=\"l\">samples per design point</td><td class=\"l\">10</td>".to_string(),
         "<td class=\"l\">design</td><td class=\"l\">grid, 6 points</td>".to_string(),
         "preload.force [N] = 10,20".to_string(),
-        "<th class=\"l\">coupling.groove_element_diameter [m]</th>".to_string(),
+        // A field's header breaks between words only: after a dot or an
+        // underscore.
+        "<th class=\"l\">coupling.\u{200B}groove_\u{200B}element_\u{200B}diameter [m]</th>"
+            .to_string(),
+        // Sections titled by what they show, legends with units.
+        "<h3>σ against preload.force [N]</h3>".to_string(),
+        "<h3>Pareto front: the largest translational σ against k_min</h3>".to_string(),
+        "preload.force = 10 N, ".to_string(),
+        "coupling.groove_element_diameter = 0.006 m".to_string(),
         "<th>σ_x [nm]</th>".to_string(),
         "<th>σ_φz [nrad]</th>".to_string(),
         "<th>k_min [N/µm]</th>".to_string(),

@@ -33,8 +33,7 @@ td .ci { display: block; color: var(--muted); font-size: 0.78rem; }
 tr.ref td { background: #fffbe6; }
 table.runs td.l, table.meta td.l { overflow-wrap: anywhere; }
 table.designs { font-size: 0.8rem; }
-table.designs th { white-space: normal; }
-table.designs th.l { overflow-wrap: anywhere; }
+table.designs th { white-space: normal; overflow-wrap: normal; word-break: keep-all; hyphens: none; }
 table.designs td.l, table.designs th.l { min-width: 5em; }
 table.designs td .ci { white-space: normal; }
 figure { margin: 1rem 0 1.4rem; }
@@ -70,6 +69,7 @@ footer { margin-top: 3rem; border-top: 1px solid var(--line); padding-top: 0.6re
   td .ci { font-size: 7pt; }
   table.designs { font-size: 6.5pt; }
   table.designs td.l { overflow-wrap: anywhere; }
+  table.designs th { overflow-wrap: normal; word-break: keep-all; }
   table.designs th, table.designs td { padding: 0.05rem 0.15rem; }
   figure svg { border: none; }
   a { color: inherit; text-decoration: none; }

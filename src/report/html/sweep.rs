@@ -39,7 +39,9 @@ pub fn sweep_html(
     );
     body.push_str("<nav><ul>\n<li><a href=\"#run\">Run</a></li><li><a href=\"#designs\">Design points</a></li>\n");
     for (title, _) in &charts {
-        let _ = writeln!(body, "<li><a href=\"#{}\">{}</a></li>", chart_id(title), escape(title));
+        let heading = heading(r, title);
+        let _ =
+            writeln!(body, "<li><a href=\"#{}\">{}</a></li>", chart_id(title), escape(&heading));
     }
     body.push_str("<li><a href=\"#coupling\">Base coupling</a></li><li><a href=\"#scene\">Base scene</a></li>\n</ul></nav>\n");
     body.push_str("<section id=\"run\"><h2>Run</h2>\n");
@@ -48,7 +50,7 @@ pub fn sweep_html(
     body.push_str(&design_table(r));
     body.push_str("</section>\n<section id=\"charts\"><h2>Charts</h2>\n");
     for (title, svg) in &charts {
-        let _ = writeln!(body, "<h3>{}</h3>", escape(title));
+        let _ = writeln!(body, "<h3>{}</h3>", escape(&heading(r, title)));
         body.push_str(&page::figure(&chart_id(title), svg, caption(title)));
     }
     body.push_str(
@@ -66,6 +68,25 @@ pub fn sweep_html(
         "<footer class=\"muted\">Written by kinrepro {VERSION}. Self-contained: inline CSS and SVG, no script, no network.</footer>"
     );
     Ok(page::document(&format!("kinrepro sweep: {}", r.name), &body))
+}
+
+/// The heading of chart `name` (its file stem, `sweep_heatmap`): a title
+/// that says what it shows, with the swept field and its unit.
+fn heading(r: &SweepReport, name: &str) -> String {
+    match name {
+        "sweep_heatmap" => format!(
+            "Heat map: the largest translational σ at {} over the two swept fields",
+            r.pareto_point
+        ),
+        "sweep_pareto" => "Pareto front: the largest translational σ against k_min".to_string(),
+        "sweep_not_evaluated" => "Design points not evaluated".to_string(),
+        other => {
+            let field = (r.sets.iter())
+                .find(|s| other == format!("sweep_sigma_{}", s.field.replace('.', "_")))
+                .map_or_else(|| other.to_string(), |s| field_label(&s.field));
+            format!("σ against {field}")
+        }
+    }
 }
 
 fn chart_id(title: &str) -> String {
@@ -124,7 +145,11 @@ fn provenance(r: &SweepReport) -> String {
 /// sigma under it; the nominal seating's columns and the status on the
 /// design's first row.
 fn design_table(r: &SweepReport) -> String {
-    let fields = r.sets.iter().map(|s| Column::left(field_label(&s.field)));
+    // Headers break between words only: a field's path may also break
+    // after each dot and underscore (a zero-width space), never inside a
+    // word.
+    let breakable = |f: &str| field_label(f).replace('.', ".\u{200B}").replace('_', "_\u{200B}");
+    let fields = r.sets.iter().map(|s| Column::left(breakable(&s.field)));
     let sigma = sigma_columns(|d| format!("σ_{} [{}]", d.symbol(), d.unit()));
     let tail = Column::list(">k_min [N/µm]:.2; >SF_p:.2; >μ_lim:.4; >margin:.4; <Pareto; <status");
     let mut t = Table::new(">#").with(fields).with([Column::left("point")]).with(sigma).with(tail);

@@ -130,7 +130,11 @@ fn groups(r: &SweepReport, k: usize) -> Groups<'_> {
             .filter(|(j, _)| *j != k)
             .map(|(_, s)| {
                 let v = d.values.get(&s.field).map_or(String::new(), value_tick);
-                format!("{} = {v}", s.field)
+                // With its unit (`preload.force = 26.67 N`); a name has none.
+                match crate::report::sweep::text::field_unit(&s.field) {
+                    "" | "-" => format!("{} = {v}", s.field),
+                    unit => format!("{} = {v} {unit}", s.field),
+                }
             })
             .collect();
         let label = label.join(", ");
