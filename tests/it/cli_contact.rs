@@ -224,7 +224,7 @@ fn bad_history_is_one_clear_error_naming_file_line_and_column() {
 
 /// `contact` for a 10 mm steel ball on a steel plane with mu_s = 0.5 (the
 /// history tests' pair).
-const STEEL_BALL_ON_PLANE: [&str; 11] = [
+pub(crate) const STEEL_BALL_ON_PLANE: [&str; 11] = [
     "contact",
     "--shape",
     "sphere-plane",

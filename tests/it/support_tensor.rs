@@ -117,25 +117,10 @@ fn a_history_on_an_anisotropic_support_adds_c_along_and_c_across() {
     let g_star = e / (2.0 * (1.0 + nu)) / (2.0 * (2.0 - nu));
     let a = (3.0 * 10.0 * 5e-3 / (4.0 * e / (2.0 * (1.0 - nu * nu)))).cbrt();
     let (c_x, c_y) = (2e-7, 5e-8);
-    let (ok, out, err) = common::kinrepro(&[
-        "contact",
-        "--shape",
-        "sphere-plane",
-        "--radius1",
-        "5e-3",
-        "--material1",
-        "steel",
-        "--material2",
-        "steel",
-        "--mu",
-        "0.5",
-        "--history",
-        &file,
-        "--tangential-compliance",
-        "2e-7",
-        "--tangential-compliance-across",
-        "5e-8",
-    ]);
+    let support = ["--tangential-compliance", "2e-7", "--tangential-compliance-across", "5e-8"];
+    let history = ["--history", file.as_str()];
+    let args = [&crate::cli_contact::STEEL_BALL_ON_PLANE[..], &history[..], &support[..]].concat();
+    let (ok, out, err) = common::kinrepro(&args);
     assert!(ok, "{err}");
     assert!(out.contains("2e-7 m/N along x, 5e-8 m/N along y"), "{out}");
     let last: Vec<&str> = out.lines().last().unwrap().split(',').collect();
