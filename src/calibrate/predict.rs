@@ -96,7 +96,9 @@ pub fn predict(
         if let Some(reason) = run.cannot_seat {
             return Err(applied(k, format!("cannot seat: {reason}")));
         }
-        Ok(VariantReport::new(s, v, run).map_err(|e| e.in_file(&file))?)
+        let mut r = VariantReport::new(s, v, run).map_err(|e| e.in_file(&file))?;
+        r.assessment = Some(crate::study::assessment::Assessment::new(&v.scene, &v.coupling));
+        Ok(r)
     };
     let mut variant = report(&estimate, None)?;
     // A point at zero spread has no scatter (sigma 0): no study needed.

@@ -4,6 +4,7 @@
 //! Carlo design, streamed into moments ([`super::stream`]).
 
 use super::StudyError;
+use super::assessment::Assessment;
 use super::plan::{StudyPlan, Variant};
 use super::result::{StudyReport, VariantReport};
 use super::runner::{PathTally, Progress, run_variant};
@@ -24,13 +25,15 @@ impl StudyPlan {
         let mut variants = Vec::new();
         let mut sinks = Vec::new();
         for (i, v) in self.variants.iter().enumerate() {
-            if v.streamed {
+            let mut r = if v.streamed {
                 let (r, sink) = run_streamed(&self.settings, v, tick, |r| open(i, r))?;
-                variants.push(r);
                 sinks.extend(sink);
+                r
             } else {
-                variants.push(self.kept(v, tick)?);
-            }
+                self.kept(v, tick)?
+            };
+            r.assessment = Some(Assessment::new(&v.scene, &v.coupling));
+            variants.push(r);
         }
         Ok((StudyReport::new(variants, self.settings.shard), sinks))
     }

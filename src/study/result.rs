@@ -89,7 +89,10 @@ pub struct VariantReport {
     pub seating_failure_share: Option<f64>,
     /// The friction limit against the coefficients drawn and the contact
     /// safety factors (`study::assessment`, the numbers of `kinrepro
-    /// check`); absent in documents written before it.
+    /// check`): set once per scene by the study run that reports it
+    /// ([`StudyPlan::run`](super::StudyPlan::run), a prediction), not by the
+    /// many model studies of a calibration or a sweep (its friction limit
+    /// costs about 0.1 s); absent in documents written before it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub assessment: Option<super::assessment::Assessment>,
     /// True for one shard of several: statistics wait for `kinrepro merge`.
@@ -224,7 +227,7 @@ impl VariantReport {
             variation_bounds: (var.preload || var.tolerances).then_some(scene.variation),
             seating_failures: None,
             seating_failure_share: None,
-            assessment: Some(super::assessment::Assessment::new(scene, &v.coupling)),
+            assessment: None,
             partial: run.shard.count > 1,
             points: Vec::new(),
             interchangeability: Vec::new(),
