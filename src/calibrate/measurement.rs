@@ -156,14 +156,11 @@ impl Measurement {
                 format!("{} cycle(s), need at least {MIN_CYCLES} re-seating cycles", data.len());
             return Err(self.err(last, c, &names[c], r));
         }
+        self.data = MeasuredData::Cycles(data);
         // A column in the wrong unit (nm values under `x_mm`) scatters by
         // millimetres: no seated coupling does (the summary's bound).
-        for (k, &(c, _)) in columns.iter().enumerate() {
-            let n = data.len() as f64;
-            let mean = data.iter().map(|r| r[k]).sum::<f64>() / n;
-            let s = (data.iter().map(|r| (r[k] - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
-            let rotation = usize::from(self.dofs[k] >= 3);
-            let (max, si) = (MAX_SIGMA[rotation], ["m", "rad"][rotation]);
+        for ((&(c, _), &d), s) in columns.iter().zip(&self.dofs).zip(self.sigma()) {
+            let (max, si) = sigma_bound(d);
             if s > max {
                 let r = format!(
                     "the readings scatter by sigma = {s:e} {si}, above any seated coupling's \
@@ -172,7 +169,6 @@ impl Measurement {
                 return Err(self.err(header_line, c, &names[c], r));
             }
         }
-        self.data = MeasuredData::Cycles(data);
         Ok(self)
     }
 
@@ -231,7 +227,7 @@ impl Measurement {
                     format!("{n} cycle(s), need at least {MIN_CYCLES} and at most {MAX_CYCLES}");
                 return Err(self.err(line, cn, "cycles", r));
             }
-            let (max, si) = (MAX_SIGMA[usize::from(d >= 3)], ["m", "rad"][usize::from(d >= 3)]);
+            let (max, si) = sigma_bound(d);
             if !(s * f > 0.0 && s * f <= max) {
                 let r = format!(
                     "{s} {unit} = {:e} {si}: a measured sigma lies in (0, {max:e}] {si} (zero is below any sensor's noise)",
@@ -339,6 +335,12 @@ impl Measurement {
         };
         Some(super::model::covariance(rows))
     }
+}
+
+/// The largest measured sigma of DOF `dof` ([`MAX_SIGMA`]) and its SI unit.
+fn sigma_bound(dof: usize) -> (f64, &'static str) {
+    let rotation = usize::from(dof >= 3);
+    (MAX_SIGMA[rotation], ["m", "rad"][rotation])
 }
 
 /// Why a reading `v` [SI] of DOF `dof` cannot be a seated coupling's

@@ -4,13 +4,11 @@
 //! that overlap are refused like moving ones.
 
 use crate::common;
-use crate::verdicts::run_in;
+use crate::verdicts::{run_in, variant_of};
 
-/// A bundled scene with `from` replaced by `to`, written as `dir/name`.
+/// A bundled scene with `from` replaced by `to`, written as `dir/s.toml`.
 fn edited(dir: &std::path::Path, scene: &str, from: &str, to: &str) -> String {
-    let text = std::fs::read_to_string(common::scene(scene)).unwrap();
-    assert!(text.contains(from), "{from}");
-    std::fs::write(dir.join("s.toml"), text.replace(from, to)).unwrap();
+    variant_of(scene, dir, "s.toml", &[(from, to)]);
     "s.toml".to_string()
 }
 

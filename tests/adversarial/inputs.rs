@@ -6,7 +6,7 @@
 use std::path::Path;
 
 use crate::common;
-use crate::verdicts::{run_in, variant};
+use crate::verdicts::{run_in, variant, variant_of};
 
 #[test]
 fn a_measurement_summary_is_checked_like_a_scene() {
@@ -340,12 +340,9 @@ fn variation_bounds_pass_the_plausibility_guard() {
 /// keys it drew within, not only "sample N".
 #[test]
 fn a_sample_that_fails_names_the_variation_keys_it_drew_within() {
-    let text = std::fs::read_to_string(common::scene("tolerances_maxwell_vgroove.toml")).unwrap();
     let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("v.toml");
-    let edited =
-        text.replace("preload_offset = [1.0e-3, 1.0e-3]", "preload_offset = [0.035, 0.035]");
-    std::fs::write(&path, edited).unwrap();
+    let edit = ("preload_offset = [1.0e-3, 1.0e-3]", "preload_offset = [0.035, 0.035]");
+    let path = variant_of("tolerances_maxwell_vgroove.toml", dir.path(), "v.toml", &[edit]);
     let args = ["study", path.to_str().unwrap(), "--vary", "friction,preload", "--samples", "20"];
     let (ok, _, err) = common::kinrepro(&args);
     assert!(!ok && err.contains("sample ") && err.contains("[variation] preload_offset"), "{err}");

@@ -18,7 +18,13 @@ pub(crate) fn run_in(dir: &Path, args: &[&str]) -> (i32, String, String) {
 
 /// Scene 01 with `from` replaced by `to`, written as `dir/name`.
 pub(crate) fn variant(dir: &Path, name: &str, edits: &[(&str, &str)]) -> PathBuf {
-    let mut text = std::fs::read_to_string(common::scene("01_maxwell_vgroove_steel.toml")).unwrap();
+    variant_of("01_maxwell_vgroove_steel.toml", dir, name, edits)
+}
+
+/// The bundled `scene` with each `from` replaced by its `to` (each must
+/// occur), written as `dir/name`.
+pub(crate) fn variant_of(scene: &str, dir: &Path, name: &str, edits: &[(&str, &str)]) -> PathBuf {
+    let mut text = std::fs::read_to_string(common::scene(scene)).unwrap();
     for (from, to) in edits {
         assert!(text.contains(from), "{from}");
         text = text.replace(from, to);

@@ -53,7 +53,7 @@ fn main() -> ExitCode {
 
 /// One line to stderr, ignoring a closed stderr (`eprintln!` would panic
 /// and turn the exit code into 101).
-fn say(line: &str) {
+pub(crate) fn say(line: &str) {
     use std::io::Write;
     let _ = writeln!(std::io::stderr(), "{line}");
 }

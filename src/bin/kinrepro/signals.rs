@@ -9,7 +9,6 @@
 //! all. That exit does not unwind: it deletes the registered temporaries
 //! ([`kinrepro::output::temporaries`]) first.
 
-use std::io::Write;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicI32, Ordering};
 use std::time::Duration;
@@ -68,7 +67,7 @@ fn stop(sig: i32) -> ! {
     // Not `eprintln!`: it panics when stderr is closed (its reader gone),
     // which would end this thread before the exit and leave a run blocked
     // (opening a FIFO without a reader) running for ever.
-    let _ = writeln!(std::io::stderr(), "kinrepro: {}: stopped", name(sig));
+    crate::say(&format!("kinrepro: {}: stopped", name(sig)));
     std::process::exit(128 + sig)
 }
 
