@@ -13,6 +13,7 @@ pub mod file;
 pub mod magnet;
 pub mod mu;
 pub mod plausible;
+pub mod point;
 pub mod preload;
 pub mod resolve;
 pub mod thermal;
@@ -30,6 +31,7 @@ use error::ErrorContext;
 pub use error::SceneError;
 pub use file::{Arrangement, GrooveKind, SceneFile};
 pub use mu::MuDistribution;
+pub use point::{Direction, EvaluationPoint};
 pub use preload::{ForceLaw, Preload, PreloadForce};
 pub use thermal::{Body, Temperatures, Thermal, ThermalBodies};
 
@@ -177,13 +179,6 @@ impl std::str::FromStr for Sampler {
             )
         })
     }
-}
-
-/// A point of the moving half whose pose is reported.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct EvaluationPoint {
-    pub name: String,
-    pub position: Vector3<f64>,
 }
 
 /// Mass properties of the moving half given in the scene (`[dynamics]`).

@@ -75,10 +75,59 @@ pub struct PointStats {
     pub mean: Dofs,
     pub min: Dofs,
     pub max: Dofs,
+    /// The point's named directions (`directions`, `frame`): the same
+    /// statistics of the translation along each (or rotation about it).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub directions: Vec<DirectionStats>,
     /// A scene with `[thermal]`: the drift of this point from each
     /// sample's own seated pose at each cycle point, over the samples.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub thermal: Vec<CycleStats>,
+}
+
+/// Statistics of the translation of a point along a named direction (or
+/// its rotation about one), in `unit` (nm or nrad): the projection of each
+/// sample's pose onto the direction's unit vector, summarised as every DOF.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct DirectionStats {
+    pub name: String,
+    /// `along` (translation, nm) or `about` (rotation, nrad).
+    pub kind: String,
+    /// The unit vector (the scene's vector normalised; absent in documents
+    /// that do not carry their evaluation points).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vector: Option<[f64; 3]>,
+    /// `nm` or `nrad`: the unit of every value below.
+    pub unit: String,
+    pub sigma: f64,
+    pub sigma_ci90_low: Option<f64>,
+    pub sigma_ci90_high: Option<f64>,
+    pub three_sigma: f64,
+    pub mean: f64,
+    pub min: f64,
+    pub max: f64,
+}
+
+impl DirectionStats {
+    /// `along <name>` or `about <name>`: table and chart labels.
+    pub fn label(&self) -> String {
+        format!("{} {}", self.kind, self.name)
+    }
+
+    /// `along/<name>` or `about/<name>`: the CSV `dof` column.
+    pub fn key(&self) -> String {
+        format!("{}/{}", self.kind, self.name)
+    }
+
+    /// `m` or `rad`.
+    pub fn si_unit(&self) -> &'static str {
+        if self.unit == "nrad" { "rad" } else { "m" }
+    }
+
+    /// The 90 % interval of sigma, if the design gives one.
+    pub fn interval(&self) -> Option<[f64; 2]> {
+        Some([self.sigma_ci90_low?, self.sigma_ci90_high?])
+    }
 }
 
 /// One cycle point's drift statistics of an evaluation point (nm, nrad):

@@ -16,7 +16,7 @@ use super::sensitivity::SensitivityBlock;
 use super::variant::Variant;
 use super::{DesignSpec, Sampler, Shard, StudyError};
 use crate::contact::FrictionLaw;
-use crate::scene::{DEFAULT_RAMP_TIME, MuDistribution, VariationBounds};
+use crate::scene::{DEFAULT_RAMP_TIME, EvaluationPoint, MuDistribution, VariationBounds};
 
 /// One scene's study.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -118,6 +118,10 @@ pub struct VariantReport {
     pub shard: Shard,
     /// `point/component` of every output, unit as suffix (`_m`, `_rad`).
     pub output_names: Vec<String>,
+    /// The scene's evaluation points: names, positions [m] and the
+    /// directions each is read along (absent in documents written before).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub evaluation_points: Vec<EvaluationPoint>,
     /// Per sample: index, physical inputs (SI), design row, outputs (SI).
     pub records: Vec<StudyRecord>,
 }
@@ -236,6 +240,7 @@ impl VariantReport {
             design: run.design,
             shard: run.shard,
             output_names: run.output_names,
+            evaluation_points: scene.evaluation_points.clone(),
             records,
         }
     }

@@ -31,11 +31,9 @@ use super::variant::Variant;
 pub use super::variation::{START_CLEARANCE, Sample, StartBounds, Variation, lifted_clear};
 use super::{DesignSpec, Shard, StudyError};
 use crate::assembly::BodyPose;
-use crate::dof::Dof;
-use crate::scene::Scene;
+use crate::scene::{EvaluationPoint, Scene};
 use crate::solve::quasistatic::{SeatingSetup, Workspace, seat_and_cycle_in, seat_in};
 use crate::solve::{Load, Method, PointPose, SeatedPose, SolveError};
-use nalgebra::Vector3;
 
 /// What a run reports as it goes: `tick` once per finished sample, and
 /// the path of every sample seating counted into `tally` where one is
@@ -101,13 +99,10 @@ pub fn thermal_output_names(scene: &Scene) -> Vec<String> {
         .collect()
 }
 
-/// Names of the re-seating outputs (`<point>/<dof>_<SI unit>`, [`Dof::si_key`]).
+/// Names of the re-seating outputs: per evaluation point its six DOFs and
+/// its directions ([`EvaluationPoint::output_names`](crate::scene::EvaluationPoint::output_names)).
 pub fn output_names(scene: &Scene) -> Vec<String> {
-    scene
-        .evaluation_points
-        .iter()
-        .flat_map(|p| Dof::ALL.map(|d| format!("{}/{}", p.name, d.si_key())))
-        .collect()
+    scene.evaluation_points.iter().flat_map(|p| p.output_names()).collect()
 }
 
 /// Names of all recorded outputs under `variation`: the re-seating outputs
@@ -219,12 +214,13 @@ pub fn evaluate_rows<'a>(
     let nominal = s.method.seat(coupling, &nominal_load).map_err(|source| {
         StudyError::Nominal { mu: nominal_load.mu.clone(), source }.in_file(file)
     })?;
-    let points: Vec<_> = scene.evaluation_points.iter().map(|p| p.position).collect();
-    // Every evaluation point's six components from the nominal seating to `pose`.
+    let points = &scene.evaluation_points;
+    // Every evaluation point's outputs from the nominal seating to `pose`.
     let reference = nominal.pose();
     let relative = |pose: BodyPose| {
-        let pose_of = move |p| PointPose::between(&reference, &pose, p).components();
-        points.iter().flat_map(pose_of)
+        points
+            .iter()
+            .flat_map(move |p| p.outputs(PointPose::between(&reference, &pose, &p.position)))
     };
     let setup = SeatingSetup::new(coupling, &scene.preload);
     let thermal = coupling.thermal.as_ref();
@@ -237,12 +233,11 @@ pub fn evaluate_rows<'a>(
             let sample = var.sample(scene, coupling, &row);
             let mut outputs: Vec<f64> = Vec::new();
             if var.reseating() && thermal.is_some() {
-                let (seated, drift) =
-                    reseat_and_cycle(&setup, &s.method, &sample.load, &points, ws)
-                        .map_err(|e| seat_err(index, &sample.load.mu, e))?;
+                let (seated, drift) = reseat_and_cycle(&setup, &s.method, &sample.load, points, ws)
+                    .map_err(|e| seat_err(index, &sample.load.mu, e))?;
                 progress.record(&seated);
                 outputs.extend(relative(seated.pose));
-                outputs.extend(drift.iter().flat_map(|d| d.components()));
+                outputs.extend(drift);
             } else if var.reseating() {
                 let seated = match reseat(&setup, &s.method, &sample.load, ws) {
                     // A varied start that does not centre is counted: a record without outputs.
@@ -277,14 +272,15 @@ pub fn evaluate_rows<'a>(
 /// The re-seating of one sample under `load` and its temperature cycle
 /// (quasi-static only: the plan refuses the dynamic solver for a scene
 /// with `[thermal]`): the seated pose and, per cycle point and evaluation
-/// point, the drift from that pose ([`crate::solve::thermal::ThermalPath::drift`]).
+/// point, the outputs of the drift from that pose
+/// ([`crate::solve::thermal::ThermalPath::drift`]).
 fn reseat_and_cycle(
     setup: &SeatingSetup,
     method: &Method,
     load: &Load,
-    points: &[Vector3<f64>],
+    points: &[EvaluationPoint],
     ws: &mut Workspace,
-) -> Result<(SeatedPose, Vec<PointPose>), SolveError> {
+) -> Result<(SeatedPose, Vec<f64>), SolveError> {
     let Method::QuasiStatic(o) = method else {
         return Err(SolveError::ThermalNeedsQuasiStatic);
     };
@@ -293,7 +289,7 @@ fn reseat_and_cycle(
     let (seated, path) = seat_and_cycle_in(setup, load, o, ws)?;
     let drift = (0..path.points.len())
         .flat_map(|k| points.iter().map(move |p| (k, p)))
-        .map(|(k, p)| path.drift(bodies, k, p))
+        .flat_map(|(k, p)| p.outputs(path.drift(bodies, k, &p.position)))
         .collect();
     Ok((seated, drift))
 }

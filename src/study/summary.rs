@@ -6,14 +6,16 @@
 
 use super::StudyError;
 use super::inputs::Input;
-use super::record::{CycleStats, Dofs, PointStats, StudyRecord};
+use super::record::{CycleStats, DirectionStats, Dofs, PointStats, StudyRecord};
 use super::result::VariantReport;
 use super::runner::{INTERCHANGE_PREFIX, THERMAL_PREFIX};
 use super::sensitivity::sobol::SobolRun;
 use super::sensitivity::{self, SensitivityBlock};
 use super::stats::{SampleRecord, SigmaMethod, Summary, summarize_moments, summarize_outputs};
 use super::stream::{StreamStats, check_record, streams};
-use crate::dof::Dof;
+use crate::dof::{Dof, nano};
+use crate::scene::EvaluationPoint;
+use crate::scene::point::{ABOUT, ALONG};
 
 /// Re-seating statistics per evaluation point from one summary per output
 /// (in `names` order), each with its thermal drift statistics from the
@@ -24,12 +26,13 @@ fn split_points(
     names: &[String],
     summaries: &[Summary],
     cycle: &[[f64; 2]],
+    scene_points: &[EvaluationPoint],
 ) -> (Vec<PointStats>, Vec<PointStats>) {
     let first = |prefix: &str| names.iter().position(|n| n.starts_with(prefix));
     let k = first(INTERCHANGE_PREFIX).unwrap_or(names.len());
     let t = first(THERMAL_PREFIX).unwrap_or(k);
-    let mut points = point_stats(&names[..t], &summaries[..t]);
-    let drift = point_stats(&names[t..k], &summaries[t..k]);
+    let mut points = point_stats(&names[..t], &summaries[..t], scene_points);
+    let drift = point_stats(&names[t..k], &summaries[t..k], scene_points);
     if !points.is_empty() {
         for (j, mut d) in drift.into_iter().enumerate() {
             let (point, cycle_point) = (j % points.len(), j / points.len());
@@ -38,39 +41,90 @@ fn split_points(
             points[point].thermal.push(CycleStats { delta_t_k, drift: d });
         }
     }
-    (points, point_stats(&names[k..], &summaries[k..]))
+    (points, point_stats(&names[k..], &summaries[k..], scene_points))
 }
 
-/// One [`PointStats`] per six outputs (`point/<dof>_<SI unit>` over [`Dof::ALL`]),
-/// in nm and nrad; an interval of sigma only where every DOF has one.
-fn point_stats(names: &[String], summaries: &[Summary]) -> Vec<PointStats> {
-    names
-        .chunks(Dof::ALL.len())
-        .zip(summaries.chunks(Dof::ALL.len()))
-        .map(|(n, c)| {
-            let pick =
-                |f: &dyn Fn(&Summary) -> f64| Dofs::from_si(std::array::from_fn(|k| f(&c[k])));
-            let bound = |f: fn(&super::stats::Interval) -> f64| {
-                c.iter()
-                    .all(|s| s.sigma_interval.is_some())
-                    .then(|| pick(&|s| s.sigma_interval.as_ref().map_or(f64::NAN, f)))
-            };
-            let name = n[0].trim_start_matches(INTERCHANGE_PREFIX);
-            PointStats {
-                name: name.rsplit_once('/').map_or(name, |(p, _)| p).to_string(),
-                n: c[0].n,
-                sigma: pick(&|s| s.sigma),
-                sigma_ci90_low: bound(|i| i.lower),
-                sigma_ci90_high: bound(|i| i.upper),
-                sigma_interval_method: c[0].sigma_interval_method.clone(),
-                three_sigma: pick(&|s| s.three_sigma),
-                mean: pick(&|s| s.mean),
-                min: pick(&|s| s.min),
-                max: pick(&|s| s.max),
-                thermal: Vec::new(),
-            }
-        })
-        .collect()
+/// One [`PointStats`] per evaluation point: its six outputs
+/// (`point/<dof>_<SI unit>` over [`Dof::ALL`]) and the directions after
+/// them (`point/along/...`, `point/about/...`), in nm and nrad; an
+/// interval of sigma only where every DOF has one. `points` gives the
+/// directions' vectors (empty for a document that does not carry them).
+fn point_stats(
+    names: &[String],
+    summaries: &[Summary],
+    points: &[EvaluationPoint],
+) -> Vec<PointStats> {
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i + Dof::ALL.len() <= names.len() {
+        let dofs = i..i + Dof::ALL.len();
+        let head = names[i].strip_suffix(&format!("/{}", Dof::X.si_key())).unwrap_or(&names[i]);
+        let (along, about) = (format!("{head}/{ALONG}"), format!("{head}/{ABOUT}"));
+        let end = (dofs.end..names.len())
+            .find(|&j| !(names[j].starts_with(&along) || names[j].starts_with(&about)))
+            .unwrap_or(names.len());
+        let c = &summaries[dofs.clone()];
+        let pick = |f: &dyn Fn(&Summary) -> f64| Dofs::from_si(std::array::from_fn(|k| f(&c[k])));
+        let bound = |f: fn(&super::stats::Interval) -> f64| {
+            c.iter()
+                .all(|s| s.sigma_interval.is_some())
+                .then(|| pick(&|s| s.sigma_interval.as_ref().map_or(f64::NAN, f)))
+        };
+        let name = point_name(head).to_string();
+        let scene_point = points.iter().find(|p| p.name == name);
+        let directions = (dofs.end..end)
+            .map(|j| direction_stats(&names[j][head.len() + 1..], &summaries[j], scene_point))
+            .collect();
+        out.push(PointStats {
+            name,
+            n: c[0].n,
+            sigma: pick(&|s| s.sigma),
+            sigma_ci90_low: bound(|i| i.lower),
+            sigma_ci90_high: bound(|i| i.upper),
+            sigma_interval_method: c[0].sigma_interval_method.clone(),
+            three_sigma: pick(&|s| s.three_sigma),
+            mean: pick(&|s| s.mean),
+            min: pick(&|s| s.min),
+            max: pick(&|s| s.max),
+            directions,
+            thermal: Vec::new(),
+        });
+        i = end;
+    }
+    out
+}
+
+/// The evaluation point of an output's head: `<point>`,
+/// `interchange/<point>` or `thermal/<k>/<point>`.
+fn point_name(head: &str) -> &str {
+    match head.strip_prefix(THERMAL_PREFIX) {
+        Some(rest) => rest.split_once('/').map_or(rest, |(_, p)| p),
+        None => head.trim_start_matches(INTERCHANGE_PREFIX),
+    }
+}
+
+/// The statistics of the direction output `key` (`along/<name>_m` or
+/// `about/<name>_rad`) of `point`, in nm or nrad.
+fn direction_stats(key: &str, s: &Summary, point: Option<&EvaluationPoint>) -> DirectionStats {
+    let rotation = key.starts_with(ABOUT);
+    let (prefix, suffix) = if rotation { (ABOUT, "_rad") } else { (ALONG, "_m") };
+    let name = key.trim_start_matches(prefix).trim_end_matches(suffix).to_string();
+    let vector = point
+        .and_then(|p| p.directions.iter().find(|d| d.name == name && d.rotation == rotation))
+        .map(|d| d.unit.into());
+    DirectionStats {
+        kind: prefix.trim_end_matches('/').to_string(),
+        vector,
+        unit: if rotation { "nrad" } else { "nm" }.to_string(),
+        sigma: nano(s.sigma),
+        sigma_ci90_low: s.sigma_interval.as_ref().map(|i| nano(i.lower)),
+        sigma_ci90_high: s.sigma_interval.as_ref().map(|i| nano(i.upper)),
+        three_sigma: nano(s.three_sigma),
+        mean: nano(s.mean),
+        min: nano(s.min),
+        max: nano(s.max),
+        name,
+    }
 }
 
 impl VariantReport {
@@ -90,8 +144,12 @@ impl VariantReport {
             let samples: Vec<SampleRecord> = centred.iter().map(|r| r.sample()).collect();
             let failed = self.records.len() - samples.len();
             let summaries = summarize_outputs(&samples, self.sigma_method(failed))?;
-            (self.points, self.interchangeability) =
-                split_points(&self.output_names, &summaries, &self.thermal_cycle());
+            (self.points, self.interchangeability) = split_points(
+                &self.output_names,
+                &summaries,
+                &self.thermal_cycle(),
+                &self.evaluation_points,
+            );
             self.count_failures(failed, self.records.len());
         }
         if self.sensitivity.is_some() {
@@ -115,8 +173,12 @@ impl VariantReport {
                 })
             })
             .collect::<Result<Vec<_>, _>>()?;
-        (self.points, self.interchangeability) =
-            split_points(&self.output_names, &summaries, &self.thermal_cycle());
+        (self.points, self.interchangeability) = split_points(
+            &self.output_names,
+            &summaries,
+            &self.thermal_cycle(),
+            &self.evaluation_points,
+        );
         self.count_failures(st.not_centred, st.samples);
         self.streamed = true;
         Ok(())

@@ -411,7 +411,7 @@ fn long_runs_announce_their_estimate() {
 fn evaluation_points_are_bounded() {
     let dir = tempfile::tempdir().unwrap();
     let base = std::fs::read_to_string(scene()).unwrap();
-    let bound = kinrepro::scene::resolve::tables::MAX_EVALUATION_POINTS;
+    let bound = kinrepro::scene::resolve::points::MAX_EVALUATION_POINTS;
     for n in [bound, bound + 1] {
         let mut text = base.clone();
         for i in 0..n {

@@ -76,6 +76,11 @@ pub(crate) fn detail(points: &[PointStats]) -> String {
             row.extend(values.iter().map(|v| Cell::Num(v[d.index()])));
             t.row(row);
         }
+        for d in &p.directions {
+            let mut row = cells!["", format!("{} [{}]", d.label(), d.unit)];
+            row.extend([d.mean, d.min, d.max, d.sigma, d.three_sigma].map(Cell::Num));
+            t.row(row);
+        }
         s += &t.text();
     }
     s
@@ -179,8 +184,27 @@ pub(crate) fn thermal_output_point(k: usize, point: &str) -> String {
     format!("{}{}/{point}", crate::study::runner::THERMAL_PREFIX, k + 1)
 }
 
-/// One row per DOF of `p`'s statistics, the point named `name`.
+/// One row per DOF of `p`'s statistics, then one per direction (`dof`
+/// `along/<name>` or `about/<name>`), the point named `name`.
 fn dof_csv_rows(p: &PointStats, name: &str) -> Vec<Vec<String>> {
+    let si = |x: f64| format!("{:e}", x / crate::dof::NANO);
+    let directions = p.directions.iter().map(|d| {
+        let ci = |v: Option<f64>| v.map_or(String::new(), si);
+        vec![
+            name.to_string(),
+            d.key(),
+            d.si_unit().to_string(),
+            p.n.to_string(),
+            si(d.mean),
+            si(d.min),
+            si(d.max),
+            si(d.sigma),
+            si(d.three_sigma),
+            ci(d.sigma_ci90_low),
+            ci(d.sigma_ci90_high),
+            p.sigma_interval_method.clone(),
+        ]
+    });
     Dof::ALL
         .iter()
         .map(|d| {
@@ -202,5 +226,6 @@ fn dof_csv_rows(p: &PointStats, name: &str) -> Vec<Vec<String>> {
                 p.sigma_interval_method.clone(),
             ]
         })
+        .chain(directions)
         .collect()
 }

@@ -52,6 +52,12 @@ pub fn three_sigma_line(p: &PointStats) -> String {
                 _ => format!("{} {:.2}", d.name(), three[j]),
             }
         })
+        .chain(p.directions.iter().map(|d| match d.interval() {
+            Some([l, h]) => {
+                format!("{} {:.2} [{:.2}, {:.2}]", d.label(), d.three_sigma, 3.0 * l, 3.0 * h)
+            }
+            None => format!("{} {:.2}", d.label(), d.three_sigma),
+        }))
         .collect();
     format!("+-3 sigma at {} [nm, nrad; 90 % interval]: {}", p.name, each.join(", "))
 }

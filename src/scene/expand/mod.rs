@@ -227,12 +227,16 @@ fn evaluation_points(
         points.push(EvaluationPointFile {
             name: Spanned::new(0..0, "centre".to_string()),
             position: Spanned::new(0..0, Numbers::of(&[0.0; 3])),
+            directions: Vec::new(),
+            frame: None,
         });
         if c.arrangement == Arrangement::Kelvin {
             let c1 = centres[0];
             points.push(EvaluationPointFile {
                 name: Spanned::new(0..0, "trihedral ball".to_string()),
                 position: Spanned::new(0..0, Numbers::of(&[c1.x, c1.y, c1.z])),
+                directions: Vec::new(),
+                frame: None,
             });
         }
     }

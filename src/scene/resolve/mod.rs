@@ -6,6 +6,7 @@
 mod fields;
 pub mod geometry;
 pub mod materials;
+pub mod points;
 pub mod preload;
 pub mod support;
 pub mod tables;
@@ -41,7 +42,7 @@ pub fn resolve(f: &SceneFile, ctx: &ErrorContext) -> Result<Scene, SceneError> {
         ));
     }
     let study = tables::study(&f.study, ctx)?;
-    let evaluation_points = tables::evaluation_points(f, &fx)?;
+    let evaluation_points = points::evaluation_points(f, &fx)?;
     let dynamics = match &f.dynamics {
         None => None,
         Some(d) => Some(tables::dynamics(d, &fx)?),

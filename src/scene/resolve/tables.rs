@@ -8,12 +8,11 @@ use super::fields::Fields;
 use crate::contact::{FrictionLaw, TangentialLaw};
 use crate::scene::error::{ErrorContext, SceneError};
 use crate::scene::file::{
-    Distribution, DynamicsFile, FrictionFile, FrictionLawName, Numbers, SceneFile, StudyFile,
-    VariationFile, number,
+    Distribution, DynamicsFile, FrictionFile, FrictionLawName, Numbers, StudyFile, VariationFile,
+    number,
 };
 use crate::scene::{
-    DynamicsSettings, EvaluationPoint, FrictionSettings, MuDistribution, Sampler, StudyDefaults,
-    VariationBounds,
+    DynamicsSettings, FrictionSettings, MuDistribution, Sampler, StudyDefaults, VariationBounds,
 };
 
 /// Largest friction coefficient accepted in a scene.
@@ -273,47 +272,6 @@ pub fn study(st: &StudyFile, ctx: &ErrorContext) -> Result<StudyDefaults, SceneE
         )
     })?;
     Ok(StudyDefaults { samples: samples as usize, sampler, seed: st.seed })
-}
-
-/// Most `[[evaluation_points]]` of one scene: each adds six columns to the
-/// per-sample CSV and a panel to every chart and drawing; a hundred points
-/// already make a report no one reads.
-pub const MAX_EVALUATION_POINTS: usize = 100;
-
-/// `[[evaluation_points]]`, or the centre when there are none.
-pub fn evaluation_points(f: &SceneFile, fx: &Fields) -> Result<Vec<EvaluationPoint>, SceneError> {
-    let mut points = Vec::new();
-    for (i, e) in f.evaluation_points.iter().enumerate() {
-        if i == MAX_EVALUATION_POINTS {
-            let field = format!("evaluation_points[{}]", i + 1);
-            let reason = format!(
-                "{} evaluation points: at most {MAX_EVALUATION_POINTS} per scene (docs/output.md, Bounds)",
-                f.evaluation_points.len()
-            );
-            return Err(fx.ctx.error(Some(&e.name.span()), &field, reason));
-        }
-        let name = e.name.get_ref();
-        // A point's name heads its CSV columns and table rows: it must
-        // name one point.
-        let reason = if name.trim().is_empty() {
-            Some("empty: give the point a name".to_string())
-        } else {
-            (points.iter().position(|p: &EvaluationPoint| p.name == *name))
-                .map(|k| format!("`{name}` is also the name of evaluation point {}", k + 1))
-        };
-        if let Some(reason) = reason {
-            let field = format!("evaluation_points[{}].name", i + 1);
-            return Err(fx.ctx.error(Some(&e.name.span()), &field, reason));
-        }
-        points.push(EvaluationPoint {
-            name: name.clone(),
-            position: fx.finite(&e.position, &format!("evaluation_points[{}].position", i + 1))?,
-        });
-    }
-    if points.is_empty() {
-        points.push(EvaluationPoint { name: "centre".to_string(), position: Vector3::zeros() });
-    }
-    Ok(points)
 }
 
 /// `[dynamics]`: a positive mass and principal moments of inertia that a

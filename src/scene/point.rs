@@ -1,0 +1,102 @@
+//! Evaluation points of the moving half and the directions a designer
+//! reads them along: [`EvaluationPoint`] (`[[evaluation_points]]`) with its
+//! [`Direction`]s, and the outputs a study records per point, named and
+//! computed in one place ([`EvaluationPoint::output_names`],
+//! [`EvaluationPoint::outputs`]).
+//!
+//! The displacement of a point along a unit direction u is the projection
+//! u . (x, y, z) of its translation; the rotation about u is u . phi, with
+//! phi the body's rotation vector (both linear in the pose, so their sigma
+//! is sqrt(u^T C u) of the covariance C of the three components).
+
+use nalgebra::Vector3;
+use serde::{Deserialize, Serialize};
+
+use crate::dof::{Dof, PointPose};
+
+/// Prefix of a translation along a direction in an output name
+/// (`<point>/along/<direction>_m`).
+pub const ALONG: &str = "along/";
+/// Prefix of a rotation about a direction (`<point>/about/<direction>_rad`).
+pub const ABOUT: &str = "about/";
+
+/// A named direction at an evaluation point: the translation of the point
+/// along `unit` (or, for a frame's rotation axes, the rotation about it).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Direction {
+    pub name: String,
+    /// Unit vector in the moving half (world frame in the touching pose).
+    pub unit: Vector3<f64>,
+    /// True: the rotation about `unit` [rad]; false: the translation along it [m].
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub rotation: bool,
+}
+
+impl Direction {
+    /// The value of this direction in `pose` (m or rad).
+    pub fn value(&self, pose: &PointPose) -> f64 {
+        let c = pose.components();
+        let k = if self.rotation { 3 } else { 0 };
+        self.unit.dot(&Vector3::new(c[k], c[k + 1], c[k + 2]))
+    }
+
+    /// The SI unit: `m` or `rad`.
+    pub fn si_unit(&self) -> &'static str {
+        if self.rotation { "rad" } else { "m" }
+    }
+
+    /// The unit of tables and plots: `nm` or `nrad`.
+    pub fn unit_label(&self) -> &'static str {
+        if self.rotation { "nrad" } else { "nm" }
+    }
+
+    /// `along/<name>_m` or `about/<name>_rad`: the last part of the output name.
+    pub fn key(&self) -> String {
+        let kind = if self.rotation { ABOUT } else { ALONG };
+        format!("{kind}{}_{}", self.name, self.si_unit())
+    }
+
+    /// The table and chart label: `along <name>` or `about <name>`.
+    pub fn label(&self) -> String {
+        let kind = if self.rotation { "about" } else { "along" };
+        format!("{kind} {}", self.name)
+    }
+}
+
+/// A point of the moving half whose pose is reported, with the
+/// directions it is read along.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct EvaluationPoint {
+    pub name: String,
+    /// Position in the moving half [m].
+    pub position: Vector3<f64>,
+    /// `directions` and `frame` of the point, in file order (a frame gives
+    /// three translations and three rotations).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub directions: Vec<Direction>,
+}
+
+impl EvaluationPoint {
+    /// A point without directions.
+    pub fn at(name: &str, position: Vector3<f64>) -> Self {
+        EvaluationPoint { name: name.to_string(), position, directions: Vec::new() }
+    }
+
+    /// The names of the outputs of this point: `<name>/<dof>_<SI unit>`
+    /// over [`Dof::ALL`], then `<name>/<direction key>` per direction.
+    pub fn output_names(&self) -> impl Iterator<Item = String> + '_ {
+        let dofs = Dof::ALL.into_iter().map(|d| format!("{}/{}", self.name, d.si_key()));
+        dofs.chain(self.directions.iter().map(|d| format!("{}/{}", self.name, d.key())))
+    }
+
+    /// The values of [`EvaluationPoint::output_names`] for the pose `p` of
+    /// this point (m, rad).
+    pub fn outputs(&self, p: PointPose) -> impl Iterator<Item = f64> + '_ {
+        p.components().into_iter().chain(self.directions.iter().map(move |d| d.value(&p)))
+    }
+
+    /// How many outputs this point has.
+    pub fn output_count(&self) -> usize {
+        Dof::ALL.len() + self.directions.len()
+    }
+}
