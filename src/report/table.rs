@@ -223,6 +223,11 @@ impl Table {
         }
     }
 
+    /// True without rows or notes.
+    pub fn is_empty(&self) -> bool {
+        self.lines.is_empty()
+    }
+
     /// Add a line of free text after the rows so far.
     pub fn note(&mut self, text: impl Into<String>) {
         self.lines.push(Line::Note(text.into()));

@@ -100,3 +100,49 @@ impl EvaluationPoint {
         Dof::ALL.len() + self.directions.len()
     }
 }
+
+/// What one output measures: a DOF, or the translation along (rotation
+/// about) a named direction.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Measure<'a> {
+    Dof(Dof),
+    Along(&'a str),
+    About(&'a str),
+}
+
+impl Measure<'_> {
+    /// `x`, ..., `phi_z` (`symbol`: `x`, ..., `φz`), `along <direction>`
+    /// or `about <direction>`.
+    pub fn label(&self, symbol: bool) -> String {
+        match self {
+            Measure::Dof(d) if symbol => d.symbol().to_string(),
+            Measure::Dof(d) => d.name().to_string(),
+            Measure::Along(n) => format!("along {n}"),
+            Measure::About(n) => format!("about {n}"),
+        }
+    }
+}
+
+/// An output name split into its head (`[prefix]<point>`) and what it
+/// measures: `<head>/<dof>_<unit>`, `<head>/along/<direction>_m` or
+/// `<head>/about/<direction>_rad` (a direction's name holds no `/`).
+pub fn split_output(name: &str) -> Option<(&str, Measure<'_>)> {
+    for (kind, unit) in [(ALONG, "_m"), (ABOUT, "_rad")] {
+        let Some(k) = name.rfind(&format!("/{kind}")) else { continue };
+        let rest = &name[k + 1 + kind.len()..];
+        if let Some(d) = rest.strip_suffix(unit).filter(|d| !d.contains('/')) {
+            let m = if kind == ALONG { Measure::Along(d) } else { Measure::About(d) };
+            return Some((&name[..k], m));
+        }
+    }
+    Dof::ALL.into_iter().find_map(|d| {
+        let head = name.strip_suffix(&d.si_key())?.strip_suffix('/')?;
+        Some((head, Measure::Dof(d)))
+    })
+}
+
+/// The label of what an output measures ([`Measure::label`]), or the name
+/// itself if it is not an output name.
+pub fn output_label(name: &str, symbol: bool) -> String {
+    split_output(name).map_or_else(|| name.to_string(), |(_, m)| m.label(symbol))
+}

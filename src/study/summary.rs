@@ -15,7 +15,7 @@ use super::stats::{SampleRecord, SigmaMethod, Summary, summarize_moments, summar
 use super::stream::{StreamStats, check_record, streams};
 use crate::dof::{Dof, nano};
 use crate::scene::EvaluationPoint;
-use crate::scene::point::{ABOUT, ALONG};
+use crate::scene::point::{ABOUT, ALONG, Measure, split_output};
 
 /// Re-seating statistics per evaluation point from one summary per output
 /// (in `names` order), each with its thermal drift statistics from the
@@ -58,11 +58,7 @@ fn point_stats(
     let mut i = 0;
     while i + Dof::ALL.len() <= names.len() {
         let dofs = i..i + Dof::ALL.len();
-        let head = names[i].strip_suffix(&format!("/{}", Dof::X.si_key())).unwrap_or(&names[i]);
-        let (along, about) = (format!("{head}/{ALONG}"), format!("{head}/{ABOUT}"));
-        let end = (dofs.end..names.len())
-            .find(|&j| !(names[j].starts_with(&along) || names[j].starts_with(&about)))
-            .unwrap_or(names.len());
+        let (head, end) = point_outputs(names, i);
         let c = &summaries[dofs.clone()];
         let pick = |f: &dyn Fn(&Summary) -> f64| Dofs::from_si(std::array::from_fn(|k| f(&c[k])));
         let bound = |f: fn(&super::stats::Interval) -> f64| {
@@ -92,6 +88,18 @@ fn point_stats(
         i = end;
     }
     out
+}
+
+/// The outputs of the point whose six DOFs start at `names[i]`: its head
+/// (`[prefix]<point>`) and the end of its outputs (after its directions,
+/// `<head>/along/...` and `<head>/about/...`).
+fn point_outputs(names: &[String], i: usize) -> (&str, usize) {
+    let head = names[i].strip_suffix(&format!("/{}", Dof::X.si_key())).unwrap_or(&names[i]);
+    let (along, about) = (format!("{head}/{ALONG}"), format!("{head}/{ABOUT}"));
+    let end = (i + Dof::ALL.len()..names.len())
+        .find(|&j| !(names[j].starts_with(&along) || names[j].starts_with(&about)))
+        .unwrap_or(names.len());
+    (head, end)
 }
 
 /// The evaluation point of an output's head: `<point>`,
@@ -240,7 +248,8 @@ fn check_finite_records(records: &[&StudyRecord], names: &[String]) -> Result<()
     Ok(())
 }
 
-/// SRC tables of the first evaluation point: re-seating outputs on the
+/// SRC tables of the first evaluation point and every point's directions:
+/// re-seating outputs on the
 /// friction, preload and start inputs; interchangeability outputs on the
 /// tolerance inputs.
 fn sensitivity_blocks(v: &VariantReport) -> Vec<SensitivityBlock> {
@@ -260,8 +269,19 @@ fn sensitivity_blocks(v: &VariantReport) -> Vec<SensitivityBlock> {
         let (Some(first), false) = (first, inputs.is_empty()) else {
             continue;
         };
-        let outputs: Vec<(usize, String)> =
-            (first..first + Dof::ALL.len()).map(|k| (k, v.output_names[k].clone())).collect();
+        // The first point's six DOFs and its directions, then the other
+        // points' directions (of the same kind: not their thermal drift).
+        let (_, end) = point_outputs(&v.output_names, first);
+        let names = v.output_names.iter().enumerate();
+        let directions = names.skip(end).filter(|(_, n)| {
+            let kind =
+                n.starts_with(INTERCHANGE_PREFIX) == tolerance && !n.starts_with(THERMAL_PREFIX);
+            kind && matches!(split_output(n), Some((_, Measure::Along(_) | Measure::About(_))))
+        });
+        let outputs: Vec<(usize, String)> = (first..end)
+            .map(|k| (k, v.output_names[k].clone()))
+            .chain(directions.map(|(k, n)| (k, n.clone())))
+            .collect();
         blocks.push(sensitivity::block(kind, &inputs, &outputs, &samples));
     }
     blocks

@@ -13,6 +13,45 @@ use crate::report::study::verdict::{friction_line, safety_line};
 use crate::report::table::{Cell, Table, cells, escape};
 use crate::study::VariantReport;
 
+/// The named directions of every point (`directions`, `frame`): ±3σ with
+/// its interval, σ, mean, min and max of the translation along each (or
+/// rotation about it); empty where no point has directions.
+fn directions_table(variants: &[&VariantReport]) -> String {
+    let columns = ">#; <variant; <point; <direction; <unit; >±3σ:.2; <90 % interval of ±3σ; >σ:.3; >mean:.3; >min:.3; >max:.3";
+    let mut t = Table::new(columns);
+    let reported =
+        variants.iter().enumerate().filter(|(_, v)| !v.partial && v.cannot_seat.is_none());
+    for (i, v) in reported {
+        for p in &v.points {
+            for d in &p.directions {
+                let interval = d.interval().map_or("none (design)".to_string(), |[l, h]| {
+                    format!("[{:.2}, {:.2}]", 3.0 * l, 3.0 * h)
+                });
+                t.row(cells![
+                    i + 1,
+                    &v.name,
+                    &p.name,
+                    d.label(),
+                    &d.unit,
+                    d.three_sigma,
+                    interval,
+                    d.sigma,
+                    d.mean,
+                    d.min,
+                    d.max
+                ]);
+            }
+        }
+    }
+    if t.is_empty() {
+        return String::new();
+    }
+    let mut s = String::from("<h3>Along the named directions</h3>\n");
+    s += &t.html("verdict-directions");
+    s += "<p class=\"note\">along: the translation of the point projected on the direction's unit vector; about: the rotation of the half about it (a frame's axes). Computed per sample from the pose, summarised like every DOF.</p>\n";
+    s
+}
+
 /// The verdict section (`<section id="verdict">`).
 pub fn verdict_section(variants: &[&VariantReport]) -> String {
     let mut s = String::from("<section id=\"verdict\"><h2>Verdict</h2>\n");
@@ -48,7 +87,9 @@ pub fn verdict_section(variants: &[&VariantReport]) -> String {
         }
     }
     s += &t.html("verdict");
-    s += "<p class=\"note\">±3σ: three standard deviations of the seated pose relative to the nominal seating, the reproducibility in the sense of the paper; under each its 90 % interval (three times σ's). mean, min, max: of the samples, relative to the nominal seating.</p>\n<ul class=\"verdict\">\n";
+    s += "<p class=\"note\">±3σ: three standard deviations of the seated pose relative to the nominal seating, the reproducibility in the sense of the paper; under each its 90 % interval (three times σ's). mean, min, max: of the samples, relative to the nominal seating.</p>\n";
+    s += &directions_table(variants);
+    s += "<ul class=\"verdict\">\n";
     for (i, v) in variants.iter().enumerate().filter(|(_, v)| !v.partial) {
         let Some(a) = &v.assessment else { continue };
         let class = if a.above_friction_limit { " class=\"warn\"" } else { "" };

@@ -3,7 +3,7 @@
 //! the first-order index S and the total index ST with their 90 % bootstrap
 //! intervals (see [`crate::study::sensitivity::sobol`]).
 
-use crate::dof::Dof;
+use super::table::{block_label, output_point};
 use crate::report::table::{Cell, Column, Table};
 use crate::study::sensitivity::SensitivityBlock;
 use crate::study::sensitivity::sobol::SobolDof;
@@ -24,9 +24,10 @@ pub fn sobol_table(b: &SensitivityBlock) -> String {
         b.kind, sob.base_samples, sob.evaluations, sob.seed, sob.estimator
     );
     let t = Table::new("<input");
-    // The block's outputs are the six DOFs of one point, in order.
-    let dofs = Dof::ALL.iter().take(sob.dofs.len());
-    let mut t = t.with(dofs.map(|d| Column::right(format!("{} (S | ST)", d.name())))).indent(2);
+    let point = sob.dofs.first().map_or("", |d| output_point(&d.output));
+    let label = |o: &str| block_label(point, o, false);
+    let columns = sob.dofs.iter().map(|d| format!("{} (S | ST)", label(&d.output)));
+    let mut t = t.with(columns.map(Column::right)).indent(2);
     let cells = |f: &dyn Fn(&SobolDof) -> String| -> Vec<Cell> {
         sob.dofs.iter().map(|d| f(d).into()).collect()
     };

@@ -4,11 +4,11 @@
 use std::fmt::Write;
 
 use crate::contact::FrictionLaw;
-use crate::dof::Dof;
 use crate::report::study::text::{
     bounds_text, detail, interval_methods, sigma_estimates, sigma_table, varied,
 };
 use crate::report::table::{Cell, Column, Table, cells};
+use crate::scene::point::{output_label, split_output};
 use crate::study::runner::INTERCHANGE_PREFIX;
 use crate::study::sensitivity::{DofSensitivity, SensitivityBlock};
 use crate::study::{StudyReport, VariantReport};
@@ -133,7 +133,7 @@ fn sensitivity_table(b: &SensitivityBlock) -> String {
         "  sensitivity of the {} scatter at {point}: share of each DOF's variance per input (normalised SRC^2: R^2 SRC_j^2 / sum SRC^2; R^2 of the linear fit)\n",
         b.kind
     );
-    let dofs = Dof::ALL.map(|d| Column::right(d.name()).fixed(3));
+    let dofs = b.dofs.iter().map(|d| Column::right(block_label(point, &d.output, false)).fixed(3));
     let mut t = Table::new("<input").with(dofs).indent(2);
     let row = |label: String, f: &dyn Fn(&DofSensitivity) -> Option<f64>| {
         let mut r = cells![label];
@@ -155,10 +155,21 @@ fn sensitivity_table(b: &SensitivityBlock) -> String {
     s
 }
 
-/// The evaluation point of an output name (`[interchange/]<point>/<dof>`).
+/// The evaluation point of an output name (`[interchange/]<point>/<dof>`
+/// or `.../along/<direction>_m`).
 pub(crate) fn output_point(output: &str) -> &str {
-    let o = output.trim_start_matches(INTERCHANGE_PREFIX);
-    o.rsplit_once('/').map_or("", |(p, _)| p)
+    split_output(output).map_or("", |(head, _)| head.trim_start_matches(INTERCHANGE_PREFIX))
+}
+
+/// The label of `output` in a sensitivity block whose first output is at
+/// the point `point`: what it measures, after its point's name where that
+/// is another (`sample along beam`).
+pub(crate) fn block_label(point: &str, output: &str, symbol: bool) -> String {
+    let label = output_label(output, symbol);
+    match output_point(output) {
+        p if p == point => label,
+        p => format!("{p} {label}"),
+    }
 }
 
 /// The friction reading in words, for the study header.

@@ -1,4 +1,5 @@
-//! Sensitivity of one block (`--sensitivity`): one panel per DOF, the
+//! Sensitivity of one block (`--sensitivity`): one panel per DOF (and
+//! direction of the point), the
 //! inputs along x, per input three bars, each series one colour in every
 //! panel: the variance share of the linear fit (normalised SRC^2), the
 //! first-order Sobol index S and the total index ST, the two Sobol bars
@@ -7,7 +8,7 @@
 use plotters::prelude::*;
 
 use super::{PlotError, Result, check_finite, color, plot_err};
-use crate::dof::Dof;
+use crate::report::study::table::{block_label, output_point};
 use crate::study::sensitivity::SensitivityBlock;
 
 /// The three series: label and colour index (the palette's, as every chart).
@@ -16,7 +17,7 @@ const SERIES: [(&str, usize); 3] =
 
 /// One DOF's bars: per input (share, S, ST) and the intervals of S and ST.
 struct DofBars {
-    dof: Dof,
+    label: String,
     values: Vec<[Option<f64>; 3]>,
     intervals: Vec<[Option<(f64, f64)>; 2]>,
 }
@@ -35,13 +36,15 @@ pub fn sensitivity_svg(block: &SensitivityBlock, what: &str) -> Result<String> {
     let mut svg = String::new();
     {
         let width = (180 + 40 * names.len() as u32).clamp(360, 700);
-        let root = SVGBackend::with_string(&mut svg, (3 * width, 2 * 330 + 40)).into_drawing_area();
+        let rows = dofs.len().div_ceil(3);
+        let root = SVGBackend::with_string(&mut svg, (3 * width, rows as u32 * 330 + 44))
+            .into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
         let (top, body) = root.split_vertically(44);
         let title = Text::new(what.to_string(), (12, 4), ("sans-serif", 18));
         top.draw(&title).map_err(plot_err)?;
         legend(&top)?;
-        for (area, d) in body.split_evenly((2, 3)).iter().zip(&dofs) {
+        for (area, d) in body.split_evenly((rows, 3)).iter().zip(&dofs) {
             panel(area, d, &names)?;
         }
         root.present().map_err(plot_err)?;
@@ -52,6 +55,7 @@ pub fn sensitivity_svg(block: &SensitivityBlock, what: &str) -> Result<String> {
 /// The bars of each DOF of the block (in the order of its outputs).
 fn bars(block: &SensitivityBlock) -> Vec<DofBars> {
     let n = block.inputs.len();
+    let point = block.dofs.first().map_or("", |d| output_point(&d.output));
     (block.dofs.iter().enumerate())
         .map(|(k, d)| {
             let sobol = block.sobol.as_ref().and_then(|s| s.dofs.get(k)?.indices.as_ref());
@@ -68,7 +72,7 @@ fn bars(block: &SensitivityBlock) -> Vec<DofBars> {
                     ]
                 })
                 .collect();
-            DofBars { dof: Dof::ALL[k.min(5)], values, intervals }
+            DofBars { label: block_label(point, &d.output, true), values, intervals }
         })
         .collect()
 }
@@ -95,7 +99,7 @@ fn panel<DB: DrawingBackend>(
 ) -> Result<()> {
     let m = names.len();
     let mut chart = ChartBuilder::on(area)
-        .caption(d.dof.symbol(), ("sans-serif", 17))
+        .caption(&d.label, ("sans-serif", 17))
         .margin(8)
         .x_label_area_size(40)
         .y_label_area_size(45)
