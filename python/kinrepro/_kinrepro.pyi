@@ -98,6 +98,26 @@ class Study:
         """(n, 6) pose of ``point`` (None: the first evaluation point) per
         sample relative to the nominal seating: x, y, z [m], phi_x, phi_y,
         phi_z [rad]. ``np.std(poses, axis=0, ddof=1)`` is ``sigma``."""
+    def along(
+        self,
+        direction: str,
+        point: str | None = None,
+        variant: int = 0,
+        interchange: bool = False,
+    ) -> Array:
+        """(n,) translation of ``point`` (None: the first point with the
+        direction) along its named direction per sample [m]: the pose
+        projected on the direction's unit vector; its statistics (nm) are
+        ``stats(point)["directions"]``."""
+    def about(
+        self,
+        direction: str,
+        point: str | None = None,
+        variant: int = 0,
+        interchange: bool = False,
+    ) -> Array:
+        """(n,) rotation of the moving half about a frame's axis (e.g.
+        ``"tool.z"``) at ``point`` per sample [rad], as :meth:`along`."""
     def drift(self, point: str | None = None, variant: int = 0) -> Array:
         """A scene with ``[thermal]``: (n, n_cycle_points, 6) drift of
         ``point`` (None: the first) from each sample's own seated pose at
@@ -120,7 +140,8 @@ class Study:
         self, point: str | None = None, variant: int = 0, interchange: bool = False
     ) -> dict[str, Any]:
         """The JSON's ``points`` entry: n, sigma and its 90 % interval,
-        three_sigma, mean, min, max (nm, nrad)."""
+        three_sigma, mean, min, max (nm, nrad), and ``directions``: the
+        same per named direction of the point."""
     @property
     def shard(self) -> tuple[int, int]: ...
     def __len__(self) -> int: ...

@@ -1,9 +1,10 @@
 //! `study`, `Study` (the study document) and `merge`.
 
 use kinrepro::dof::Dof;
+use kinrepro::scene::point::{ABOUT, ALONG};
 use kinrepro::study::{StudyPlan, StudyReport};
 use numpy::ndarray::{Array2, Array3};
-use numpy::{IntoPyArray, PyArray2, PyArray3};
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3};
 use pyo3::prelude::*;
 
 use crate::err;
@@ -118,6 +119,36 @@ impl Study {
         }
         let r = &v.records;
         Ok(Array2::from_shape_fn((r.len(), 6), |(i, j)| r[i].outputs[cols[j]]).into_pyarray(py))
+    }
+
+    /// The translation of `point` (None: the first point with the
+    /// direction) along its direction `direction` per sample [m] (n,), in
+    /// sample order: the projection of the pose on the direction's unit
+    /// vector, whose statistics are `stats(point)["directions"]`.
+    #[pyo3(signature = (direction, point = None, variant = Whole::of(0), interchange = false))]
+    fn along<'py>(
+        &self,
+        py: Python<'py>,
+        direction: &str,
+        point: Option<&str>,
+        variant: Whole<usize>,
+        interchange: bool,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        self.direction_values(py, (ALONG, direction), point, variant.get(), interchange)
+    }
+
+    /// The rotation of the moving half about a frame's axis `direction`
+    /// (e.g. `"tool.z"`) at `point` per sample [rad] (n,), as `along`.
+    #[pyo3(signature = (direction, point = None, variant = Whole::of(0), interchange = false))]
+    fn about<'py>(
+        &self,
+        py: Python<'py>,
+        direction: &str,
+        point: Option<&str>,
+        variant: Whole<usize>,
+        interchange: bool,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        self.direction_values(py, (ABOUT, direction), point, variant.get(), interchange)
     }
 
     /// A study of a scene with `[thermal]`: each sample's drift of
@@ -264,6 +295,40 @@ impl Study {
 }
 
 impl Study {
+    /// The values of the output `<point>/<kind><direction>_<unit>` per
+    /// sample (`along`, `about`).
+    fn direction_values<'py>(
+        &self,
+        py: Python<'py>,
+        (kind, direction): (&str, &str),
+        point: Option<&str>,
+        variant: usize,
+        interchange: bool,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let v = self.variant(variant)?;
+        let prefix = if interchange { kinrepro::study::runner::INTERCHANGE_PREFIX } else { "" };
+        let unit = if kind == ABOUT { "rad" } else { "m" };
+        let tail = format!("/{kind}{direction}_{unit}");
+        let column = v.output_names.iter().position(|n| {
+            n.strip_prefix(prefix).and_then(|n| n.strip_suffix(&tail)).is_some_and(|p| {
+                point.map_or(!p.contains("thermal/") && !p.starts_with("interchange/"), |q| p == q)
+            })
+        });
+        let Some(k) = column else {
+            let at = point.map_or("any point".to_string(), |p| format!("point {p:?}"));
+            let what = kind.trim_end_matches('/');
+            return Err(err(format!(
+                "{what} {direction:?}: no such direction at {at} in this study"
+            )));
+        };
+        if v.records.is_empty() && v.streamed {
+            return Err(no_records(kind.trim_end_matches('/')));
+        }
+        let values: Vec<f64> =
+            v.records.iter().filter(|r| r.centred()).map(|r| r.outputs[k]).collect();
+        Ok(PyArray1::from_vec(py, values))
+    }
+
     fn point_stats_of(
         &self,
         point: Option<&str>,

@@ -10,6 +10,7 @@ use crate::report::study::text::{
     truncate,
 };
 use crate::report::table::{Cell, Column, Table, cells};
+use crate::study::PointStats;
 use crate::study::provenance::{SCHEMA_VERSION, VERSION};
 use crate::study::stats::SigmaMethod;
 
@@ -174,6 +175,9 @@ impl SweepReport {
                 }
                 None => t.note(format!("  (no interval: {})", p.sigma_interval_method)),
             }
+            if !p.directions.is_empty() {
+                t.note(format!("  {}: {}", p.name, directions_text(p)));
+            }
             for (k, c) in p.thermal.iter().enumerate() {
                 // The drift's scatter at cycle point k, under its mean.
                 let name = truncate(&thermal_output_point(k, &p.name), 15);
@@ -187,6 +191,15 @@ impl SweepReport {
             }
         }
     }
+}
+
+/// `σ along <name> <value> [<unit>] [<low>, <high>]` per direction of `p`.
+fn directions_text(p: &PointStats) -> String {
+    let each = p.directions.iter().map(|d| {
+        let ci = d.interval().map_or(String::new(), |[l, h]| format!(" [{l:.2}, {h:.2}]"));
+        format!("σ {} {:.3} {}{ci}", d.label(), d.sigma, d.unit)
+    });
+    each.collect::<Vec<_>>().join(", ")
 }
 
 /// The point estimate of sigma of the sampler that ran, in words
