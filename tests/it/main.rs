@@ -28,6 +28,7 @@ mod concept_sweep;
 mod contact_friction;
 mod contact_laws;
 mod coupling_shapes;
+mod directions;
 mod dynamic;
 mod fe_exact_gap;
 mod fe_validation;
