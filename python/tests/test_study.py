@@ -301,3 +301,22 @@ def test_dynamic_start_study_is_the_clis(scene01, cli):
                  "--seed", 2, "--vary", "friction,start", "--solver", "dynamic",
                  "--offset-bounds", "1e-5,1e-5,2e-5", "--tilt-bounds", "1e-3,1e-3,0", "--format", "json")
     assert json.loads(s.to_json()) == theirs
+
+
+def test_a_direction_is_the_projection_of_the_poses():
+    text = open("scenes/example_stage_mount.toml").read().rstrip()
+    text += '\ndirections = [{ name = "beam", vector = [1.0, 0.0, 1.0] }]\n'
+    text += 'frame = { name = "tool", z = [0.0, 0.0, 1.0], x = [1.0, 1.0, 0.0] }\n'
+    scene = kinrepro.Scene.from_toml(text, "stage.toml")
+    s = kinrepro.study(scene, samples=30, sampler="mc", seed=4)
+    poses = s.poses("sample")
+    beam = s.along("beam")
+    u = np.array([1.0, 0.0, 1.0]) / math.sqrt(2.0)
+    np.testing.assert_allclose(beam, poses[:, :3] @ u, rtol=1e-12, atol=0)
+    d = {x["kind"] + " " + x["name"]: x for x in s.stats("sample")["directions"]}
+    assert d["along beam"]["sigma"] == pytest.approx(beam.std(ddof=1) * 1e9, rel=1e-12)
+    assert d["along beam"]["unit"] == "nm"
+    # The frame's rotation about its z is phi_z.
+    np.testing.assert_allclose(s.about("tool.z"), poses[:, 5], rtol=1e-12, atol=0)
+    with pytest.raises(kinrepro.KinreproError, match='along "nope": no such direction'):
+        s.along("nope")

@@ -43,7 +43,7 @@ pub(crate) fn delta_t_text(d: [f64; 2]) -> String {
     format!("dT = [{}, {}] K", d[0], d[1])
 }
 
-/// One point's drift at one cycle point: a row per DOF.
+/// One point's drift at one cycle point: a row per DOF and direction.
 fn cycle_table(c: &CycleStats) -> String {
     let p = &c.drift;
     let title = format!("{} at {}", p.name, delta_t_text(c.delta_t_k));
@@ -64,6 +64,15 @@ fn cycle_table(c: &CycleStats) -> String {
             _ => Cell::Missing,
         });
         row.push(Cell::Num(three[i]));
+        t.row(row);
+    }
+    for d in &p.directions {
+        let mut row = cells!["", format!("{} [{}]", d.label(), d.unit)];
+        row.extend([d.mean, d.min, d.max, d.sigma].map(Cell::Num));
+        row.push(
+            d.interval().map_or(Cell::Missing, |[l, h]| Cell::Text(format!("[{l:.3}, {h:.3}]"))),
+        );
+        row.push(Cell::Num(d.three_sigma));
         t.row(row);
     }
     t.text()
