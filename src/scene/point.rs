@@ -21,13 +21,13 @@ pub const ALONG: &str = "along/";
 pub const ABOUT: &str = "about/";
 
 /// A named direction at an evaluation point: the translation of the point
-/// along `unit` (or, for a frame's rotation axes, the rotation about it).
+/// along `vector` (or, for a frame's rotation axes, the rotation about it).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Direction {
     pub name: String,
-    /// Unit vector in the moving half (world frame in the touching pose).
-    pub unit: Vector3<f64>,
-    /// True: the rotation about `unit` [rad]; false: the translation along it [m].
+    /// The unit vector in the moving half (world frame in the touching pose).
+    pub vector: Vector3<f64>,
+    /// True: the rotation about `vector` [rad]; false: the translation along it [m].
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub rotation: bool,
 }
@@ -37,7 +37,7 @@ impl Direction {
     pub fn value(&self, pose: &PointPose) -> f64 {
         let c = pose.components();
         let k = if self.rotation { 3 } else { 0 };
-        self.unit.dot(&Vector3::new(c[k], c[k + 1], c[k + 2]))
+        self.vector.dot(&Vector3::new(c[k], c[k + 1], c[k + 2]))
     }
 
     /// The SI unit: `m` or `rad`.
@@ -45,21 +45,10 @@ impl Direction {
         if self.rotation { "rad" } else { "m" }
     }
 
-    /// The unit of tables and plots: `nm` or `nrad`.
-    pub fn unit_label(&self) -> &'static str {
-        if self.rotation { "nrad" } else { "nm" }
-    }
-
     /// `along/<name>_m` or `about/<name>_rad`: the last part of the output name.
     pub fn key(&self) -> String {
         let kind = if self.rotation { ABOUT } else { ALONG };
         format!("{kind}{}_{}", self.name, self.si_unit())
-    }
-
-    /// The table and chart label: `along <name>` or `about <name>`.
-    pub fn label(&self) -> String {
-        let kind = if self.rotation { "about" } else { "along" };
-        format!("{kind} {}", self.name)
     }
 }
 
@@ -93,11 +82,6 @@ impl EvaluationPoint {
     /// this point (m, rad).
     pub fn outputs(&self, p: PointPose) -> impl Iterator<Item = f64> + '_ {
         p.components().into_iter().chain(self.directions.iter().map(move |d| d.value(&p)))
-    }
-
-    /// How many outputs this point has.
-    pub fn output_count(&self) -> usize {
-        Dof::ALL.len() + self.directions.len()
     }
 }
 

@@ -119,7 +119,7 @@ fn direction_stats(key: &str, s: &Summary, point: Option<&EvaluationPoint>) -> D
     let name = key.trim_start_matches(prefix).trim_end_matches(suffix).to_string();
     let vector = point
         .and_then(|p| p.directions.iter().find(|d| d.name == name && d.rotation == rotation))
-        .map(|d| d.unit.into());
+        .map(|d| d.vector.into());
     DirectionStats {
         kind: prefix.trim_end_matches('/').to_string(),
         vector,

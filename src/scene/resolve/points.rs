@@ -79,7 +79,7 @@ fn directions(
             return Err(bad(format!("`{name}` is also the name of direction {}", j + 1)));
         }
         let unit = fx.unit(&d.vector, &format!("{field}.vector"))?;
-        out.push(Direction { name: name.clone(), unit, rotation: false });
+        out.push(Direction { name: name.clone(), vector: unit, rotation: false });
     }
     if let Some(frame) = &e.frame {
         let axes = frame_axes(frame, fx, &format!("{point}.frame"))?;
@@ -93,7 +93,7 @@ fn directions(
                     let field = format!("{point}.frame.name");
                     return Err(fx.ctx.error(Some(&frame.name.span()), &field, reason));
                 }
-                out.push(Direction { name, unit, rotation });
+                out.push(Direction { name, vector: unit, rotation });
             }
         }
     }
