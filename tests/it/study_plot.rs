@@ -8,8 +8,8 @@ use crate::common;
 use kinrepro::dof::Dof;
 use kinrepro::report::study::charts::study_charts;
 use kinrepro::report::study::plot::{
-    ConvergenceSeries, PlotError, VariantScatter, VariantSigma, convergence_svg, sigma_bars_svg,
-    xy_scatter_svg,
+    ConvergenceSeries, PlotError, VariantScatter, VariantSigma, convergence_svg, histogram,
+    normal_count, sigma_bars_svg, xy_scatter_svg,
 };
 use kinrepro::study::stats::sigma_convergence;
 use kinrepro::study::{Sampler, StudyOptions, VariantReport, Varied};
@@ -177,7 +177,8 @@ fn scatter_names_every_point_and_convergence_has_six_dofs() {
     let v = study("06_kelvin_steel.toml", n, vec![Varied::Friction]);
     let charts = study_charts(&[&v], &[]).unwrap();
     let names: Vec<&str> = charts.iter().map(|c| c.file_name.as_str()).collect();
-    assert_eq!(names, ["sigma_bars.svg", "scatter_xy.svg", "sigma_convergence.svg"]);
+    let expected = ["sigma_bars.svg", "scatter_xy.svg", "sigma_convergence.svg"];
+    assert_eq!(names, [&expected[..], &["histogram_1_1.svg", "histogram_1_2.svg"]].concat());
     let scatter = &charts[1].svg;
     for point in ["centre", "trihedral ball"] {
         let caption = format!("06_kelvin_steel · {point} ({n} samples)");
@@ -424,4 +425,46 @@ fn a_series_has_one_colour_in_bars_and_scatter() {
     let dots = fills("scatter_xy.svg", "circle", &|_| true);
     assert_eq!(dots.len(), 3, "{dots:?}");
     assert_eq!(bars[..3], dots[..], "bars {bars:?}, scatter {dots:?}");
+    // Each point's histogram has its series' colour.
+    for (file, dot) in
+        ["histogram_1_1.svg", "histogram_1_2.svg", "histogram_2_1.svg"].iter().zip(&dots)
+    {
+        let hist = fills(file, "rect", &|r| r.contains("opacity=\"0.7\""));
+        assert_eq!(hist, [dot.clone()], "{file}");
+    }
+}
+
+/// Histograms: every sample is counted once, in the bin that holds it; the
+/// curve is the normal of the reported mean and sigma as expected counts
+/// (its sum over bins of a fine grid is n); the chart draws one bar per
+/// non-empty bin of each of the six panels, at the bin's count.
+#[test]
+fn histograms_count_every_sample_and_draw_the_normal_of_the_reported_sigma() {
+    let n = 40;
+    let v = study("01_maxwell_vgroove_steel.toml", n, vec![Varied::Friction]);
+    let charts = study_charts(&[&v], &[]).unwrap();
+    let chart = charts.iter().find(|c| c.file_name == "histogram_1_1.svg").unwrap();
+    let mut nonempty = 0;
+    for (k, dof) in Dof::ALL.iter().enumerate() {
+        let values: Vec<f64> = v.records.iter().map(|r| r.outputs[k] * 1e9).collect();
+        let (edges, counts) = histogram(&values).unwrap();
+        assert_eq!(counts.iter().sum::<usize>(), n);
+        assert_eq!(edges.len(), counts.len() + 1);
+        for x in &values {
+            let inside =
+                (0..counts.len()).filter(|&b| edges[b] <= *x && *x <= edges[b + 1]).count();
+            assert!(inside >= 1, "{x} in no bin");
+        }
+        nonempty += counts.iter().filter(|&&c| c > 0).count();
+        let label = format!("{} [{}]", dof.name(), dof.unit());
+        assert!(chart.svg.contains(&label), "missing {label}");
+        // The expected counts of a normal sum to n over a fine grid.
+        let (m, s) = (v.points[0].mean.values()[k], v.points[0].sigma.values()[k]);
+        let w = s / 100.0;
+        let total: f64 =
+            (-1000..1000).map(|i| normal_count(m + (i as f64 + 0.5) * w, n, w, m, s)).sum();
+        assert!((total / n as f64 - 1.0).abs() < 1e-9, "{total}");
+    }
+    let bars = elements(&chart.svg, "rect").into_iter().filter(|r| r.contains("opacity=\"0.7\""));
+    assert_eq!(bars.filter(|r| attr(r, "height").is_some_and(|h| h > 0.0)).count(), nonempty);
 }

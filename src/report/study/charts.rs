@@ -1,6 +1,7 @@
 //! The study's charts as SVG text: sigma bars with intervals (and reference
 //! values), x-y scatter of every evaluation point, convergence of sigma in
-//! all six DOFs, the thermal drift along a `[thermal]` cycle, and the same
+//! all six DOFs, histograms of every point's samples per DOF with the
+//! normal of the reported mean and sigma, the thermal drift along a `[thermal]` cycle, and the same
 //! bars and scatter for the interchangeability when tolerances vary. `kinrepro study --out` writes them as files, the
 //! HTML report inlines them; both take them from [`study_charts`].
 
@@ -9,11 +10,12 @@ use std::path::Path;
 use crate::dof::{Dof, nano};
 use crate::report::study::plot::PlotError;
 use crate::report::study::plot::{
-    ConvergenceSeries, DriftSeries, DriftStep, VariantScatter, VariantSigma, convergence_svg,
-    drift_svg, sensitivity_svg, sigma_bars_svg, xy_scatter_svg,
+    ConvergenceSeries, DriftSeries, DriftStep, HistogramPanel, VariantScatter, VariantSigma,
+    convergence_svg, drift_svg, histogram_svg, sensitivity_svg, sigma_bars_svg, xy_scatter_svg,
 };
 use crate::report::study::reference::ReferenceRow;
 use crate::report::study::text::truncate;
+use crate::scene::point::{Measure, split_output};
 use crate::study::runner::INTERCHANGE_PREFIX;
 use crate::study::stats::sigma_convergence;
 use crate::study::{PointStats, VariantReport};
@@ -140,6 +142,36 @@ fn drift_series(variants: &[&VariantReport]) -> Vec<DriftSeries> {
     out
 }
 
+/// The histogram panels of point `p` of `v` from its records: one per DOF
+/// and direction, with the reported mean and sigma (nm, nrad).
+fn histogram_panels(v: &VariantReport, p: &PointStats) -> Vec<HistogramPanel> {
+    let column = |k: usize| -> Vec<f64> {
+        v.records.iter().filter(|r| r.centred()).map(|r| nano(r.outputs[k])).collect()
+    };
+    let mut panels = Vec::new();
+    for (k, name) in v.output_names.iter().enumerate() {
+        let Some((head, measure)) = split_output(name).filter(|(h, _)| *h == p.name) else {
+            continue;
+        };
+        let (label, mean, sigma) = match measure {
+            Measure::Dof(d) => {
+                let label = format!("{} [{}]", d.name(), d.unit());
+                (label, p.mean.values()[d.index()], p.sigma.values()[d.index()])
+            }
+            Measure::Along(n) | Measure::About(n) => {
+                let label = measure.label(false);
+                let Some(s) = p.directions.iter().find(|s| s.label() == label) else {
+                    continue;
+                };
+                debug_assert_eq!((head, n), (p.name.as_str(), s.name.as_str()));
+                (format!("{label} [{}]", s.unit), s.mean, s.sigma)
+            }
+        };
+        panels.push(HistogramPanel { label, values: column(k), mean, sigma });
+    }
+    panels
+}
+
 /// The charts of the complete variants of a study. Scatter and convergence
 /// need the samples, which a streamed study does not keep.
 pub fn study_charts(
@@ -174,6 +206,22 @@ pub fn study_charts(
         add("scatter_xy.svg", title, xy_scatter_svg(&xy)?);
         let title = "Convergence of σ with the number of samples, all six DOFs";
         add("sigma_convergence.svg", title, convergence_svg(&convergence(&reseat)?)?);
+    }
+    let mut series = 0;
+    for (i, v) in reseat.iter().enumerate() {
+        for (j, p) in v.points.iter().enumerate() {
+            let panels = histogram_panels(v, p);
+            if !panels.is_empty() {
+                let title = format!(
+                    "{} · {}: samples per DOF, and the normal distribution of the reported mean and σ",
+                    variant_label(v),
+                    p.name
+                );
+                let file = format!("histogram_{}_{}.svg", i + 1, j + 1);
+                add(&file, &title, histogram_svg(&title, &panels, series)?);
+            }
+            series += 1;
+        }
     }
     let drift = drift_series(&reseat);
     if !drift.is_empty() {

@@ -27,12 +27,14 @@
 mod bars;
 mod convergence;
 mod drift;
+mod histogram;
 mod scatter;
 mod sensitivity;
 
 pub use bars::sigma_bars_svg;
 pub use convergence::convergence_svg;
 pub use drift::drift_svg;
+pub use histogram::{HistogramPanel, histogram, histogram_svg, normal_count};
 pub use scatter::{ELLIPSE_LEVEL, covariance_ellipse, xy_scatter_svg};
 pub use sensitivity::sensitivity_svg;
 
