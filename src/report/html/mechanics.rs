@@ -31,7 +31,7 @@ pub fn mechanics((scene, c): (&Scene, &Coupling), s: &Seating, k: &CouplingStiff
     let mut o = format!("<h4>Contacts at the nominal seating</h4>{}", t.html(""));
     o.push_str("<p class=\"note\">p0: peak Hertz pressure; τ_max: maximum subsurface shear stress; safety: allowable / actual (the smaller of pressure and shear, where the materials give an allowable).</p>\n");
     let mut t = Table::new(
-        "<point; >k_t1:.2; >k_t2:.2; >k_t3 [N/µm]:.2; >k_r1:.4; >k_r2:.4; >k_r3 [N m/µrad]:.4",
+        "<point; >k_t1 [N/µm]:.2; >k_t2 [N/µm]:.2; >k_t3 [N/µm]:.2; >k_r1 [N m/µrad]:.4; >k_r2 [N m/µrad]:.4; >k_r3 [N m/µrad]:.4",
     );
     for e in &scene.evaluation_points {
         let q = s.pose().apply(&e.position);
