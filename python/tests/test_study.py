@@ -304,9 +304,11 @@ def test_dynamic_start_study_is_the_clis(scene01, cli):
 
 
 def test_a_direction_is_the_projection_of_the_poses():
-    text = open("scenes/example_stage_mount.toml").read().rstrip()
-    text += '\ndirections = [{ name = "beam", vector = [1.0, 0.0, 1.0] }]\n'
-    text += 'frame = { name = "tool", z = [0.0, 0.0, 1.0], x = [1.0, 1.0, 0.0] }\n'
+    own = 'directions = [{ name = "ion beam", vector = [0.788, 0.0, 0.616] }]'
+    text = open("scenes/example_stage_mount.toml").read()
+    assert own in text
+    text = text.replace(own, 'directions = [{ name = "beam", vector = [1.0, 0.0, 1.0] }]\n'
+                        'frame = { name = "tool", z = [0.0, 0.0, 1.0], x = [1.0, 1.0, 0.0] }\n')
     scene = kinrepro.Scene.from_toml(text, "stage.toml")
     s = kinrepro.study(scene, samples=30, sampler="mc", seed=4)
     poses = s.poses("sample")

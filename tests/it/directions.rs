@@ -11,8 +11,9 @@ use crate::common::{kinrepro, scene};
 use kinrepro::study::StudyReport;
 use kinrepro::study::record::DirectionStats;
 
-/// The README's stage with a direction (not normalised) and a frame (z
-/// scaled, x not normal to z) at its sample point.
+/// The README's stage with, in place of its ion beam, a direction (not
+/// normalised) and a frame (z scaled, x not normal to z) at its sample
+/// point.
 const DIRECTIONS: &str = r#"
 directions = [{ name = "beam", vector = [1.0, 0.0, 1.0] }]
 frame = { name = "tool", z = [0.0, 0.0, 2.0], x = [1.0, 1.0, 0.5] }
@@ -20,9 +21,10 @@ frame = { name = "tool", z = [0.0, 0.0, 2.0], x = [1.0, 1.0, 0.5] }
 
 fn stage_with(dir: &Path, extra: &str) -> String {
     let text = std::fs::read_to_string(scene("example_stage_mount.toml")).unwrap();
-    assert!(text.trim_end().ends_with("position = [0.0, 0.0, 0.025]"));
+    let own = "directions = [{ name = \"ion beam\", vector = [0.788, 0.0, 0.616] }]";
+    assert!(text.trim_end().ends_with(&format!("position = [0.0, 0.0, 0.025]\n{own}")));
     let p = dir.join("stage.toml");
-    std::fs::write(&p, format!("{}\n{extra}", text.trim_end())).unwrap();
+    std::fs::write(&p, text.replace(own, extra)).unwrap();
     p.to_str().unwrap().to_string()
 }
 

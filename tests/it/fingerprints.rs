@@ -28,7 +28,7 @@ const PINNED: [(&str, &str); 17] = [
     ("06_kelvin_steel.toml", "cad54ab6352b9604"),
     ("07_kelvin_sic.toml", "a70fd7a1fb281b0d"),
     ("custom_kelvin_explicit.toml", "c8c196d6d068b2ac"),
-    ("example_stage_mount.toml", "15cbef60e306c243"),
+    ("example_stage_mount.toml", "3a783328ed0f3e22"),
     ("kelvin_magnet_wall_mount.toml", "cd11b75bbfdd6e08"),
     ("maxwell_canoe_steel.toml", "58d7618e6b6c7f90"),
     ("maxwell_crossed_pins_steel.toml", "3c6b9475e40986e1"),
