@@ -226,3 +226,16 @@ fn the_thermal_drift_along_a_direction_is_the_projection_of_the_drift() {
         close(d.mean, 1e9 * mean, 1e-12, "drift mean along radial");
     }
 }
+
+/// The README's walkthrough shows the stage's row along the ion beam as
+/// `kinrepro study scenes/example_stage_mount.toml --samples 500` prints it.
+#[test]
+fn the_readme_row_along_the_ion_beam_reproduces() {
+    let stage = scene("example_stage_mount.toml");
+    let (ok, table, err) = kinrepro(&["study", stage.to_str().unwrap(), "--samples", "500"]);
+    assert!(ok, "{err}");
+    let row = table.lines().find(|l| l.trim_start().starts_with("along ion beam [nm]")).unwrap();
+    let readme = Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md");
+    let readme = std::fs::read_to_string(readme).unwrap();
+    assert!(readme.contains(row.trim_end()), "README lacks the row\n{row}");
+}
