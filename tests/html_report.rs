@@ -302,10 +302,10 @@ fn static_checks(html: &str, study: &serde_json::Value) {
     assert!(
         html.contains("Thermal drift along the [thermal] cycle") && html.contains("thermal-drift")
     );
-    // 6 charts (bars, interchange bars, scatter, convergence, thermal drift,
-    // interchange scatter); per scene a layout and a top and a side view of
-    // each of 3 balls.
-    assert_eq!(html.matches("data-check=\"chart\"").count(), 6);
+    // 12 charts (bars, interchange bars, scatter, convergence, thermal drift,
+    // interchange scatter, and a histogram per re-seating point: 1 + 2 + 2
+    // + 1); per scene a layout and a top and a side view of each of 3 balls.
+    assert_eq!(html.matches("data-check=\"chart\"").count(), 12);
     assert_eq!(html.matches("data-check=\"drawing\"").count(), 4 * 7);
 }
 
@@ -320,7 +320,7 @@ struct Expect {
 }
 
 /// The study report of `make_report`.
-const STUDY_REPORT: Expect = Expect { charts: 6, drawings: 28, min_tables: 9, scenes: 8 };
+const STUDY_REPORT: Expect = Expect { charts: 12, drawings: 28, min_tables: 9, scenes: 8 };
 
 fn browser_checks(exe: &Path, tmp: &Path, html: &str, expect: &Expect) {
     let file = tmp.join("report.html");
@@ -408,7 +408,8 @@ fn study_html_and_bad_inputs() {
     ]);
     assert!(ok, "{err}");
     let text = std::fs::read_to_string(&html).unwrap();
-    assert_eq!(text.matches("data-check=\"chart\"").count(), 3);
+    // Bars, scatter, convergence and the centre's histogram.
+    assert_eq!(text.matches("data-check=\"chart\"").count(), 4);
     assert_eq!(text.matches("data-check=\"drawing\"").count(), 7);
     assert!(text.contains("this run") && text.contains("01_copy.toml"));
 
