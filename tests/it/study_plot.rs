@@ -430,7 +430,7 @@ fn a_series_has_one_colour_in_bars_and_scatter() {
         ["histogram_1_1.svg", "histogram_1_2.svg", "histogram_2_1.svg"].iter().zip(&dots)
     {
         let hist = fills(file, "rect", &|r| r.contains("opacity=\"0.7\""));
-        assert_eq!(hist, [dot.clone()], "{file}");
+        assert_eq!(hist, std::slice::from_ref(dot), "{file}");
     }
 }
 

@@ -235,7 +235,7 @@ pub fn study_charts(
     }
     for (i, v) in full.iter().enumerate() {
         for b in v.sensitivity.iter().flatten() {
-            let point = b.dofs.first().map_or("", |d| super::table::output_point(&d.output));
+            let point = b.dofs.first().map_or("", |d| super::labels::output_point(&d.output));
             let what =
                 format!("{}: sensitivity of the {} scatter at {point}", variant_label(v), b.kind);
             let file = format!("sensitivity_{}_{}.svg", i + 1, b.kind);

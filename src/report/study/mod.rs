@@ -6,6 +6,7 @@
 
 pub mod charts;
 pub mod files;
+pub mod labels;
 pub mod plot;
 pub mod reference;
 pub mod sensitivity;

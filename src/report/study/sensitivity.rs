@@ -3,7 +3,7 @@
 //! the first-order index S and the total index ST with their 90 % bootstrap
 //! intervals (see [`crate::study::sensitivity::sobol`]).
 
-use super::table::{block_label, output_point};
+use super::labels::{block_label, output_point};
 use crate::report::table::{Cell, Column, Table};
 use crate::study::sensitivity::SensitivityBlock;
 use crate::study::sensitivity::sobol::SobolDof;

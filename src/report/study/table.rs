@@ -3,13 +3,12 @@
 
 use std::fmt::Write;
 
+use super::labels::{block_label, output_point};
 use crate::contact::FrictionLaw;
 use crate::report::study::text::{
     bounds_text, detail, interval_methods, sigma_estimates, sigma_table, varied,
 };
 use crate::report::table::{Cell, Column, Table, cells};
-use crate::scene::point::{output_label, split_output};
-use crate::study::runner::INTERCHANGE_PREFIX;
 use crate::study::sensitivity::{DofSensitivity, SensitivityBlock};
 use crate::study::{StudyReport, VariantReport};
 
@@ -153,23 +152,6 @@ fn sensitivity_table(b: &SensitivityBlock) -> String {
         }
     }
     s
-}
-
-/// The evaluation point of an output name (`[interchange/]<point>/<dof>`
-/// or `.../along/<direction>_m`).
-pub(crate) fn output_point(output: &str) -> &str {
-    split_output(output).map_or("", |(head, _)| head.trim_start_matches(INTERCHANGE_PREFIX))
-}
-
-/// The label of `output` in a sensitivity block whose first output is at
-/// the point `point`: what it measures, after its point's name where that
-/// is another (`sample along beam`).
-pub(crate) fn block_label(point: &str, output: &str, symbol: bool) -> String {
-    let label = output_label(output, symbol);
-    match output_point(output) {
-        p if p == point => label,
-        p => format!("{p} {label}"),
-    }
 }
 
 /// The friction reading in words, for the study header.

@@ -71,7 +71,7 @@ fn directions(
         let field = format!("{point}.directions[{}]", k + 1);
         let name = d.name.get_ref();
         let bad =
-            |reason: String| fx.ctx.error(Some(&d.name.span()), &format!("{field}.name"), reason);
+            |reason: String| fx.ctx.error(Some(&d.name.span()), format!("{field}.name"), reason);
         if let Some(reason) = name_problem(name) {
             return Err(bad(reason));
         }
@@ -110,7 +110,7 @@ fn directions(
 /// A frame's unit axes x, y, z: z as given, x made normal to it, y = z x x.
 fn frame_axes(f: &FrameFile, fx: &Fields, field: &str) -> Result<[Vector3<f64>; 3], SceneError> {
     if let Some(reason) = name_problem(f.name.get_ref()) {
-        return Err(fx.ctx.error(Some(&f.name.span()), &format!("{field}.name"), reason));
+        return Err(fx.ctx.error(Some(&f.name.span()), format!("{field}.name"), reason));
     }
     let z = fx.unit(&f.z, &format!("{field}.z"))?;
     let x = fx.unit(&f.x, &format!("{field}.x"))?;
@@ -120,7 +120,7 @@ fn frame_axes(f: &FrameFile, fx: &Fields, field: &str) -> Result<[Vector3<f64>; 
         let reason = format!(
             "x lies {angle:.3} deg from z: the axes must be at least {FRAME_AXES_MIN_DEG} deg apart"
         );
-        return Err(fx.ctx.error(Some(&f.x.span()), &format!("{field}.x"), reason));
+        return Err(fx.ctx.error(Some(&f.x.span()), format!("{field}.x"), reason));
     }
     let x = normal.normalize();
     Ok([x, z.cross(&x), z])

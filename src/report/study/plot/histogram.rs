@@ -25,7 +25,7 @@ pub struct HistogramPanel {
 pub fn histogram(values: &[f64]) -> Option<(Vec<f64>, Vec<usize>)> {
     let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    if values.len() < 2 || !(hi > lo) || !(hi - lo).is_finite() {
+    if values.len() < 2 || hi <= lo || hi.is_nan() || lo.is_nan() || !(hi - lo).is_finite() {
         return None;
     }
     let bins = ((2.0 * (values.len() as f64).cbrt()).ceil() as usize).clamp(5, 40);

@@ -8,7 +8,7 @@
 use plotters::prelude::*;
 
 use super::{PlotError, Result, check_finite, color, plot_err};
-use crate::report::study::table::{block_label, output_point};
+use crate::report::study::labels::{block_label, output_point};
 use crate::study::sensitivity::SensitivityBlock;
 
 /// The three series: label and colour index (the palette's, as every chart).
