@@ -111,13 +111,15 @@ pub fn point_file(
 /// Validate and evaluate one design point, its scene `point` (from
 /// [`point_file`]) read from `source`; `label` names it in messages, and
 /// its study is `base`'s design and samples in `plan`. Never fails: a bad
-/// point is an [`Outcome`] other than `Ok`.
+/// point is an [`Outcome`] other than `Ok`. `friction_limit`: compute the
+/// friction limit for seating (about 0.1 s; an optimisation's candidates
+/// skip it unless a goal reads it).
 pub fn evaluate(
     point: Result<SceneFile, SetError>,
     source: &str,
     label: &str,
     plan: &StudyPlan,
-    base: &Variant,
+    (base, friction_limit): (&Variant, bool),
     tick: &(dyn Fn() + Sync),
 ) -> Evaluation {
     let mut e = Evaluation { outcome: Outcome::Ok, nominal: None, report: None };
@@ -142,7 +144,7 @@ pub fn evaluate(
         }
     };
     let v = base.with_model(scene, coupling);
-    e.outcome = match seat_and_study(&v, plan, tick, &mut e) {
+    e.outcome = match seat_and_study(&v, (plan, friction_limit), tick, &mut e) {
         Ok(o) => o,
         Err(reason) => Outcome::Failed(reason.to_string()),
     };
@@ -160,7 +162,7 @@ fn invalid(err: crate::scene::SceneError) -> String {
 
 fn seat_and_study(
     v: &Variant,
-    plan: &StudyPlan,
+    (plan, friction_limit): (&StudyPlan, bool),
     tick: &(dyn Fn() + Sync),
     e: &mut Evaluation,
 ) -> Result<Outcome, EvalError> {
@@ -169,7 +171,7 @@ fn seat_and_study(
         .method()
         .seat(&v.coupling, &load)
         .map_err(|source| EvalError::NominalSeating { mu: load.mu[0], source })?;
-    e.nominal = Some(nominal(&v.scene, &v.coupling, &seating, &load)?);
+    e.nominal = Some(nominal(&v.scene, &v.coupling, (&seating, &load), friction_limit)?);
     if let Some(reason) = crate::study::verdict::cannot_seat(&v.scene, &v.coupling, plan.method())?
     {
         return Ok(Outcome::CannotSeat(reason));
@@ -182,18 +184,22 @@ fn seat_and_study(
     Ok(Outcome::Ok)
 }
 
-/// Stiffness, safety, friction limit and approach of the nominal seating.
+/// Stiffness, safety, friction limit (if `with_limit`) and approach of the
+/// nominal seating.
 fn nominal(
     scene: &Scene,
     c: &Coupling,
-    seating: &Seating,
-    load: &Load,
+    (seating, load): (&Seating, &Load),
+    with_limit: bool,
 ) -> Result<Nominal, EvalError> {
     let point = scene.evaluation_points[0].position;
     let k = CouplingStiffness::new(c, seating, load).map_err(EvalError::Stiffness)?;
     let at = seating.pose().apply(&point);
     let principal = k.principal_at(&at).ok_or(EvalError::NotPositiveDefinite)?;
-    let limit = friction_limit(c, &load.preload).mu_limit;
+    let limit = match with_limit {
+        true => friction_limit(c, &load.preload).mu_limit,
+        false => f64::NAN,
+    };
     let f = &scene.friction;
     let limit = limit.is_finite().then_some(limit);
     let approach = PointPose::between(&c.touching_pose, &seating.pose(), &point);

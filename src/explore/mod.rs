@@ -18,7 +18,9 @@
 pub mod design;
 pub mod evaluate;
 pub mod field;
+pub mod goal;
 pub mod merge;
+pub mod optimize;
 pub mod pareto;
 pub mod run;
 pub mod values;
@@ -50,6 +52,12 @@ pub enum ExploreError {
     NotHighLevel { file: String },
     #[error("sweep design: {0}")]
     Design(String),
+    /// An optimisation's `FIELD=VALUES` not understood.
+    #[error("{}: {reason}", Param::Vary.with(format!("{path}={spec}")))]
+    Vary { path: String, spec: String, reason: String },
+    /// An objective or a constraint not understood.
+    #[error(transparent)]
+    Goal(#[from] goal::GoalError),
 }
 
 /// A sweep as asked for: the base scene and what to vary how.

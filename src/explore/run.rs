@@ -126,6 +126,9 @@ pub enum SweepError {
          invalid, cannot seat or failed)"
     )]
     NoValidDesign { file: String, points: usize },
+    /// The optimisation's search failed (argmin's message).
+    #[error("optimisation: {0}")]
+    Optimize(String),
     /// `pareto_point` names no evaluation point of the base scene.
     #[error("{file}: {}: no such evaluation point (the scene has {have})", Param::ParetoPoint.with(point))]
     ParetoPoint { file: String, point: String, have: String },
@@ -162,7 +165,7 @@ pub fn run(
         .par_iter()
         .map(|p| {
             let file = point_file(&spec.base, &spec.sets, &p.values);
-            let e = evaluate(file, &spec.text, &spec.label(p), plan, base, tick);
+            let e = evaluate(file, &spec.text, &spec.label(p), plan, (base, true), tick);
             let values =
                 spec.sets.iter().map(|s| s.path.clone()).zip(p.values.iter().cloned()).collect();
             design_report(p.index, values, e)
@@ -219,7 +222,7 @@ fn pareto_point_of(file: &str, base: &Scene, asked: Option<&str>) -> Result<Stri
 
 /// The report of one evaluated design point: the study statistics by the
 /// study's own machinery (its [`crate::study::VariantReport`]).
-fn design_report(
+pub(crate) fn design_report(
     index: usize,
     values: BTreeMap<String, SweptValue>,
     e: Evaluation,

@@ -16,6 +16,7 @@ pub mod contact;
 pub mod coupling;
 pub mod html;
 pub mod materials;
+pub mod optimize;
 pub mod printable;
 pub mod progress;
 pub mod seating;

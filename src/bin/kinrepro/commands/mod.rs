@@ -11,6 +11,7 @@ mod report;
 mod scene;
 mod seat;
 mod study;
+mod optimize;
 mod sweep;
 mod thermal;
 
@@ -36,6 +37,7 @@ pub fn dispatch(command: Command) -> Result {
         Command::Study(a) => study::study(a.try_into()?),
         Command::Merge(a) => study::merge(a),
         Command::Sweep(a) => sweep::sweep(a.try_into()?),
+        Command::Optimize(a) => optimize::optimize(a),
         Command::ValidateHertz(a) => fe::validate_hertz(a.try_into()?),
         Command::Report(a) => report::report(a),
         Command::Materials(a) => report::materials(a.format),

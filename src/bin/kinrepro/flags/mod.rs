@@ -13,7 +13,7 @@ use clap::{Parser, Subcommand};
 use kinrepro::param::Param;
 
 pub use groups::{Format, TextFormat};
-pub use studies::{CalibrateArgs, PredictArgs, StudyArgs, SweepArgs};
+pub use studies::{CalibrateArgs, OptimizeArgs, PredictArgs, StudyArgs, SweepArgs};
 pub use verbs::*;
 
 #[derive(Parser)]
@@ -50,6 +50,11 @@ pub enum Command {
     /// Sweep scene fields over a grid or an LHS: reproducibility, stiffness,
     /// safety and friction limit per design point, and the Pareto front.
     Sweep(SweepArgs),
+    /// The best design within bounds: one objective (e.g. the smallest
+    /// sigma at a point) under constraints (e.g. sf_p>=3, k_min>=2e8), by
+    /// Nelder-Mead over the varied fields, every candidate's study on the
+    /// same friction draws.
+    Optimize(OptimizeArgs),
     /// Check the Hertz law of every distinct contact pair of the scenes with
     /// the mini FE solver, at the load the nominal seating reaches.
     ValidateHertz(ValidateHertzArgs),

@@ -164,3 +164,49 @@ pub struct PredictArgs {
     #[arg(long)]
     pub jobs: Option<usize>,
 }
+
+#[derive(Args)]
+pub struct OptimizeArgs {
+    /// The high-level scene file (TOML) whose fields are searched.
+    pub scene: PathBuf,
+    /// FIELD=LOW:HIGH, a scene field by its TOML path searched between
+    /// LOW and HIGH (log:LOW:HIGH: in its logarithm), or FIELD=A,B,...
+    /// (each value tried: materials, keywords, numbers). Repeatable.
+    #[arg(long = "vary", required = true)]
+    pub vary: Vec<String>,
+    /// OUTPUT:min or OUTPUT:max, the one objective. OUTPUT is
+    /// sigma:POINT:DOF or pm3sigma:POINT:DOF (DOF: x, y, z, phi_x, phi_y,
+    /// phi_z, or a direction's name at the point; m or rad), k_min (the
+    /// lowest principal translational stiffness, N/m), sf_p (the smallest
+    /// contact pressure safety factor), friction_margin (mu_lim -
+    /// (mu_static + spread)) or a varied field such as preload.force.
+    #[arg(long)]
+    pub objective: String,
+    /// OUTPUT<=VALUE or OUTPUT>=VALUE, VALUE in the output's SI unit
+    /// (e.g. sf_p>=3, k_min>=2e8, sigma:centre:x<=5e-9). Repeatable.
+    #[arg(long)]
+    pub constraint: Vec<String>,
+    /// Most iterations of the Nelder-Mead search (per combination of listed values).
+    #[arg(long, default_value_t = kinrepro::explore::optimize::MAX_ITERATIONS)]
+    pub max_iterations: u64,
+    #[command(flatten)]
+    pub study: DesignFlags,
+    #[command(flatten)]
+    pub path: PathFlags,
+    /// Output: table (nm, nrad) | json (docs/output.md, "Optimisations": SI).
+    #[arg(long, value_enum, default_value_t = TextFormat::Table)]
+    pub format: TextFormat,
+    /// Shorthand for --format json.
+    #[arg(long, conflicts_with = "format")]
+    pub json: bool,
+    /// Also write the self-contained HTML page of the optimisation (the
+    /// optimum, its constraints, the history and its convergence plot).
+    #[arg(long)]
+    pub html: Option<PathBuf>,
+    /// Replace an existing --html file.
+    #[arg(long, requires = "html")]
+    pub force: bool,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+}

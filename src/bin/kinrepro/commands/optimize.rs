@@ -1,0 +1,50 @@
+//! `kinrepro optimize`: the best design within bounds on one objective
+//! under constraints (library: `explore::optimize`; output:
+//! `report::optimize`).
+
+use kinrepro::explore::goal::Goals;
+use kinrepro::explore::optimize::{OptimizeSpec, optimize as run};
+use kinrepro::explore::run::study_plan;
+use kinrepro::study::StudyOptions;
+
+use super::{emit, print_json, read_text, set_jobs};
+use crate::error::{Error, Result};
+use crate::flags::OptimizeArgs;
+use crate::flags::groups::TextFormat;
+
+pub fn optimize(a: OptimizeArgs) -> Result {
+    let file = a.scene.display().to_string();
+    let text = read_text(&a.scene)?;
+    let (scene, coupling) = kinrepro::error::parse_scene(&text, &file)?;
+    let varied: Vec<String> =
+        a.vary.iter().filter_map(|v| v.split_once('=').map(|(p, _)| p.trim().to_string())).collect();
+    let goals = Goals::parse(&[a.objective.clone()], &a.constraint, &scene, &varied)
+        .map_err(|e| Error::new(format!("{file}: {e}")))?;
+    let spec = OptimizeSpec::new(&file, &text, &a.vary, goals, a.max_iterations)?;
+    let options = StudyOptions {
+        sampler: a.study.sampler,
+        samples: a.study.samples,
+        seed: a.study.seed,
+        replicates: a.study.replicates,
+        increments: a.path.increments,
+        path_tolerance: a.path.path_tolerance,
+        ..StudyOptions::default()
+    };
+    let plan = study_plan(scene, coupling, &options)?;
+    set_jobs(a.jobs, plan.variants[0].design.n)?;
+    let report = run(&spec, &plan, &|| {})?;
+    if kinrepro::cancel::requested() {
+        return Err(Error::new("interrupted"));
+    }
+    match (a.json, a.format) {
+        (true, _) | (_, TextFormat::Json) => print_json(&report)?,
+        _ => emit(&report.table())?,
+    }
+    if report.optimum.is_none() {
+        return Err(Error::new(format!(
+            "{file}: no feasible design: none of the {} candidates meets every constraint",
+            report.history.len()
+        )));
+    }
+    Ok(())
+}
