@@ -31,14 +31,22 @@ use crate::scene::Scene;
 pub enum Output {
     /// Sigma of `measure` (a DOF's name, `along NAME` or `about NAME`) at
     /// the evaluation point `point`.
-    Sigma { point: String, measure: String },
+    Sigma {
+        point: String,
+        measure: String,
+    },
     /// Three times sigma, the reproducibility of the paper.
-    Pm3sigma { point: String, measure: String },
+    Pm3sigma {
+        point: String,
+        measure: String,
+    },
     KMin,
     SfP,
     FrictionMargin,
     /// A scene field the sweep or optimisation sets.
-    Field { path: String },
+    Field {
+        path: String,
+    },
 }
 
 /// Why an objective or a constraint is not understood.
@@ -57,7 +65,9 @@ pub enum GoalError {
     Unknown(String),
     #[error("`{text}`: no evaluation point `{point}` (the scene has {have})")]
     Point { text: String, point: String, have: String },
-    #[error("`{text}`: `{measure}` is neither a DOF ({dofs}) nor a direction of `{point}`{directions}")]
+    #[error(
+        "`{text}`: `{measure}` is neither a DOF ({dofs}) nor a direction of `{point}`{directions}"
+    )]
     Measure { text: String, point: String, measure: String, dofs: String, directions: String },
     #[error("`{text}`: the field `{path}` is not among those varied ({varied})")]
     NotVaried { text: String, path: String, varied: String },
@@ -68,15 +78,18 @@ impl Output {
     pub fn parse(text: &str) -> Result<Output, GoalError> {
         let t = text.trim();
         let point_measure = |rest: &str| {
-            let (point, measure) = rest.rsplit_once(':').filter(|(p, m)| !p.is_empty() && !m.is_empty())?;
+            let (point, measure) =
+                rest.rsplit_once(':').filter(|(p, m)| !p.is_empty() && !m.is_empty())?;
             Some((point.to_string(), measure.trim().to_string()))
         };
         if let Some(rest) = t.strip_prefix("sigma:") {
-            let (point, measure) = point_measure(rest).ok_or_else(|| GoalError::Unknown(t.into()))?;
+            let (point, measure) =
+                point_measure(rest).ok_or_else(|| GoalError::Unknown(t.into()))?;
             return Ok(Output::Sigma { point, measure });
         }
         if let Some(rest) = t.strip_prefix("pm3sigma:") {
-            let (point, measure) = point_measure(rest).ok_or_else(|| GoalError::Unknown(t.into()))?;
+            let (point, measure) =
+                point_measure(rest).ok_or_else(|| GoalError::Unknown(t.into()))?;
             return Ok(Output::Pm3sigma { point, measure });
         }
         match t {
@@ -125,7 +138,11 @@ impl Output {
                 let points = &scene.evaluation_points;
                 let Some(p) = points.iter().find(|p| p.name == *point) else {
                     let have = points.iter().map(|p| format!("`{}`", p.name)).collect::<Vec<_>>();
-                    return Err(GoalError::Point { text, point: point.clone(), have: have.join(", ") });
+                    return Err(GoalError::Point {
+                        text,
+                        point: point.clone(),
+                        have: have.join(", "),
+                    });
                 };
                 let known = Dof::from_name(measure).is_some()
                     || p.directions.iter().any(|d| direction_matches(measure, &d.name, d.rotation));
@@ -149,11 +166,9 @@ impl Output {
                     directions,
                 })
             }
-            Output::Field { path } if !varied.contains(path) => Err(GoalError::NotVaried {
-                text,
-                path: path.clone(),
-                varied: varied.join(", "),
-            }),
+            Output::Field { path } if !varied.contains(path) => {
+                Err(GoalError::NotVaried { text, path: path.clone(), varied: varied.join(", ") })
+            }
             _ => Ok(()),
         }
     }
@@ -263,9 +278,12 @@ impl Constraint {
         } else {
             return Err(GoalError::Relation(t.into()));
         };
-        let value: f64 = bound.trim().parse().ok().filter(|b: &f64| b.is_finite()).ok_or_else(|| {
-            GoalError::Bound { text: t.into(), bound: bound.trim().into() }
-        })?;
+        let value: f64 = bound
+            .trim()
+            .parse()
+            .ok()
+            .filter(|b: &f64| b.is_finite())
+            .ok_or_else(|| GoalError::Bound { text: t.into(), bound: bound.trim().into() })?;
         Ok(Constraint { output: Output::parse(output)?, relation, bound: value })
     }
 
@@ -312,7 +330,8 @@ impl Goals {
             objectives.iter().map(|o| Objective::parse(o)).collect::<Result<_, _>>()?;
         let constraints: Vec<Constraint> =
             constraints.iter().map(|c| Constraint::parse(c)).collect::<Result<_, _>>()?;
-        let outputs = objectives.iter().map(|o| &o.output).chain(constraints.iter().map(|c| &c.output));
+        let outputs =
+            objectives.iter().map(|o| &o.output).chain(constraints.iter().map(|c| &c.output));
         for o in outputs {
             o.check(scene, varied)?;
         }
@@ -322,7 +341,9 @@ impl Goals {
     /// True if an objective or a constraint reads the friction margin.
     pub fn reads_friction_limit(&self) -> bool {
         let outputs = self.objectives.iter().map(|o| &o.output);
-        outputs.chain(self.constraints.iter().map(|c| &c.output)).any(|o| *o == Output::FrictionMargin)
+        outputs
+            .chain(self.constraints.iter().map(|c| &c.output))
+            .any(|o| *o == Output::FrictionMargin)
     }
 
     pub fn is_empty(&self) -> bool {

@@ -40,6 +40,9 @@ use crate::study::provenance::{SCHEMA_VERSION, VERSION, produced_by};
 /// The weight of a normalised constraint violation (module docs).
 pub const PENALTY: f64 = 1e3;
 
+/// Most restarts of the search from its best point (module docs).
+pub const RESTARTS: usize = 6;
+
 /// Default cap on the search's iterations per combination of listed values.
 pub const MAX_ITERATIONS: u64 = 200;
 
@@ -82,12 +85,21 @@ pub struct Optimum {
     pub evaluation: usize,
     pub fields: BTreeMap<String, SweptValue>,
     pub objective: f64,
-    /// `constraint` text and `margin` (SI, >= 0).
-    pub constraint_margins: Vec<(String, f64)>,
+    /// Each constraint's margin at the optimum (its unit, >= 0).
+    pub constraint_margins: Vec<Margin>,
     /// The optimum's study statistics and nominal checks.
     pub design: DesignReport,
     /// The statistical error of the objective at the optimum, in words.
     pub statistical_error: String,
+}
+
+/// How far a design is inside one constraint.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Margin {
+    /// The constraint as written (`sf_p>=3`).
+    pub constraint: String,
+    /// bound - value for `<=`, value - bound for `>=` (the output's SI unit).
+    pub margin: f64,
 }
 
 /// The optimisation's document (`kinrepro optimize --json`).
@@ -117,6 +129,7 @@ pub struct OptimizeReport {
 
 /// The search's cost function: each call evaluates a candidate (or
 /// returns its cost from the history) and records it.
+#[derive(Clone)]
 struct Search<'a> {
     spec: &'a OptimizeSpec,
     plan: &'a StudyPlan,
@@ -158,7 +171,8 @@ impl Search<'_> {
         let evaluation = self.history.lock().map_or(0, |h| h.len()) + 1;
         let d = design_report(evaluation - 1, fields.clone(), e);
         let objective = self.objective().output.value(&d);
-        let margins: Vec<Option<f64>> = spec.goals.constraints.iter().map(|c| c.margin(&d)).collect();
+        let margins: Vec<Option<f64>> =
+            spec.goals.constraints.iter().map(|c| c.margin(&d)).collect();
         let feasible = d.status == "ok" && margins.iter().all(|m| m.is_some_and(|m| m >= 0.0));
         let outside: f64 = u.iter().map(|x| (x - x.clamp(0.0, 1.0)).powi(2)).sum();
         let cost = match (objective, d.status == "ok") {
@@ -172,7 +186,15 @@ impl Search<'_> {
             }
             _ => PENALTY * PENALTY * (1.0 + outside),
         };
-        let c = Candidate { evaluation, fields, objective, margins, feasible, cost, status: d.status.clone() };
+        let c = Candidate {
+            evaluation,
+            fields,
+            objective,
+            margins,
+            feasible,
+            cost,
+            status: d.status.clone(),
+        };
         (c, d)
     }
 
@@ -232,7 +254,9 @@ impl OptimizeSpec {
         let mut sets = Vec::new();
         for a in vary {
             let mut s = Set::parse(a, &base).map_err(|e| match e {
-                ExploreError::Values { path, spec, reason } => ExploreError::Vary { path, spec, reason: reason.to_string() },
+                ExploreError::Values { path, spec, reason } => {
+                    ExploreError::Vary { path, spec, reason: reason.to_string() }
+                }
                 e => e,
             })?;
             // A range's count (a grid's) has no meaning here.
@@ -257,7 +281,8 @@ pub fn optimize(
     plan: &StudyPlan,
     tick: &(dyn Fn() + Sync),
 ) -> Result<OptimizeReport, SweepError> {
-    let searched: Vec<usize> = (0..spec.sets.len()).filter(|&k| spec.sets[k].interval.is_some()).collect();
+    let searched: Vec<usize> =
+        (0..spec.sets.len()).filter(|&k| spec.sets[k].interval.is_some()).collect();
     let history = Mutex::new(Vec::new());
     let mut termination = Vec::new();
     for fixed in combinations(&spec.sets) {
@@ -277,26 +302,7 @@ pub fn optimize(
             termination.push("nothing to search: every field is a list".to_string());
             continue;
         }
-        let d = searched.len();
-        let centre = vec![0.5; d];
-        let simplex: Vec<Vec<f64>> = std::iter::once(centre.clone())
-            .chain((0..d).map(|i| {
-                let mut v = centre.clone();
-                v[i] += 0.25;
-                v
-            }))
-            .collect();
-        let solver = NelderMead::new(simplex)
-            .with_sd_tolerance(COST_TOLERANCE)
-            .map_err(|e| SweepError::Optimize(e.to_string()))?;
-        let res = Executor::new(search, solver)
-            .configure(|s| s.max_iters(spec.max_iterations))
-            .run()
-            .map_err(|e| SweepError::Optimize(e.to_string()))?;
-        termination.push(match res.state().get_termination_reason() {
-            Some(r) => r.text().to_string(),
-            None => "running".to_string(),
-        });
+        termination.push(restarted(&search, searched.len(), spec.max_iterations)?);
     }
     let mut history = history.into_inner().map_err(|_| SweepError::Optimize("history".into()))?;
     // The optimum's nominal checks in full (the candidates skipped the
@@ -310,6 +316,44 @@ pub fn optimize(
         history[i].1 = design_report(i, history[i].0.fields.clone(), e);
     }
     Ok(report(spec, plan, history, termination))
+}
+
+/// Nelder-Mead from the centre of the unit cube (simplex edge 0.25), then
+/// restarted from the best point with half the edge while a restart
+/// lowers the cost (at most [`RESTARTS`]): a simplex that collapsed on a
+/// kink of the cost (a constraint's bound, a change of the contacts'
+/// stick-slip pattern) starts afresh there. Why the last search stopped.
+fn restarted(search: &Search<'_>, d: usize, max_iterations: u64) -> Result<String, SweepError> {
+    let (mut start, mut edge, mut last) = (vec![0.5; d], 0.25, f64::INFINITY);
+    let mut reason = String::new();
+    for restart in 0..=RESTARTS {
+        let simplex: Vec<Vec<f64>> = std::iter::once(start.clone())
+            .chain((0..d).map(|i| {
+                let mut v = start.clone();
+                v[i] += if v[i] + edge <= 1.0 { edge } else { -edge };
+                v
+            }))
+            .collect();
+        let solver = NelderMead::new(simplex)
+            .with_sd_tolerance(COST_TOLERANCE)
+            .map_err(|e| SweepError::Optimize(e.to_string()))?;
+        let res = Executor::new(search.clone(), solver)
+            .configure(|s| s.max_iters(max_iterations))
+            .run()
+            .map_err(|e| SweepError::Optimize(e.to_string()))?;
+        let state = res.state();
+        reason = match state.get_termination_reason() {
+            Some(r) => format!("{} (search {})", r.text(), restart + 1),
+            None => "running".to_string(),
+        };
+        let cost = state.get_best_cost();
+        let Some(best) = state.get_best_param() else { break };
+        if cost >= last - 1e-9 * last.abs() {
+            break;
+        }
+        (start, edge, last) = (best.iter().map(|x| x.clamp(0.0, 1.0)).collect(), edge / 2.0, cost);
+    }
+    Ok(reason)
 }
 
 /// The best feasible candidate of `history` on `objective` (the first
@@ -339,7 +383,7 @@ fn report(
         fields: c.fields.clone(),
         objective: c.objective.unwrap_or(f64::NAN),
         constraint_margins: (spec.goals.constraints.iter().zip(&c.margins))
-            .map(|(k, m)| (k.name(), m.unwrap_or(f64::NAN)))
+            .map(|(k, m)| Margin { constraint: k.name(), margin: m.unwrap_or(f64::NAN) })
             .collect(),
         design: d.clone(),
         statistical_error: statistical_error(&spec.goals, d),
@@ -431,7 +475,13 @@ impl OptimizeReport {
     pub fn produced_by(&self) -> String {
         format!(
             "{}, optimisation of {}",
-            produced_by(&self.solver, &self.sampler.to_string(), &self.seed.to_string(), &self.samples.to_string(), "friction"),
+            produced_by(
+                &self.solver,
+                &self.sampler.to_string(),
+                &self.seed.to_string(),
+                &self.samples.to_string(),
+                "friction"
+            ),
             self.scene
         )
     }

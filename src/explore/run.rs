@@ -222,7 +222,7 @@ fn pareto_point_of(file: &str, base: &Scene, asked: Option<&str>) -> Result<Stri
 
 /// The report of one evaluated design point: the study statistics by the
 /// study's own machinery (its [`crate::study::VariantReport`]).
-pub(crate) fn design_report(
+pub fn design_report(
     index: usize,
     values: BTreeMap<String, SweptValue>,
     e: Evaluation,

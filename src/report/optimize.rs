@@ -47,10 +47,16 @@ impl OptimizeReport {
             }
             Some(o) => {
                 let unit = self.goals.objectives[0].output.unit();
-                let _ = writeln!(s, "\noptimum (candidate {}): {}", o.evaluation, fields_text(&o.fields));
-                let _ = writeln!(s, "  objective {} = {} {unit}", objective.join(""), sig(o.objective));
-                for (c, m) in &o.constraint_margins {
-                    let _ = writeln!(s, "  constraint {c}: margin {}", sig(*m));
+                let _ = writeln!(
+                    s,
+                    "\noptimum (candidate {}): {}",
+                    o.evaluation,
+                    fields_text(&o.fields)
+                );
+                let _ =
+                    writeln!(s, "  objective {} = {} {unit}", objective.join(""), sig(o.objective));
+                for m in &o.constraint_margins {
+                    let _ = writeln!(s, "  constraint {}: margin {}", m.constraint, sig(m.margin));
                 }
                 let _ = writeln!(s, "  statistical error: {}", o.statistical_error);
                 let _ = writeln!(s, "  re-seating scatter at the optimum:");

@@ -40,6 +40,7 @@ mod general_hertz;
 mod geometry;
 mod materials;
 mod mu_distribution;
+mod optimize;
 mod path_control;
 mod preloads;
 mod quasistatic;

@@ -7,11 +7,11 @@ mod calibrate;
 mod clean;
 mod contact;
 mod fe;
+mod optimize;
 mod report;
 mod scene;
 mod seat;
 mod study;
-mod optimize;
 mod sweep;
 mod thermal;
 

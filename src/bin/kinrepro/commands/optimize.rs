@@ -16,8 +16,11 @@ pub fn optimize(a: OptimizeArgs) -> Result {
     let file = a.scene.display().to_string();
     let text = read_text(&a.scene)?;
     let (scene, coupling) = kinrepro::error::parse_scene(&text, &file)?;
-    let varied: Vec<String> =
-        a.vary.iter().filter_map(|v| v.split_once('=').map(|(p, _)| p.trim().to_string())).collect();
+    let varied: Vec<String> = a
+        .vary
+        .iter()
+        .filter_map(|v| v.split_once('=').map(|(p, _)| p.trim().to_string()))
+        .collect();
     let goals = Goals::parse(&[a.objective.clone()], &a.constraint, &scene, &varied)
         .map_err(|e| Error::new(format!("{file}: {e}")))?;
     let spec = OptimizeSpec::new(&file, &text, &a.vary, goals, a.max_iterations)?;

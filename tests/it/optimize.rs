@@ -1,0 +1,161 @@
+//! `kinrepro optimize` against optima known independently (issue 44, item
+//! 4): the largest preload under a bound on sigma_x, from sigma ~ F^(2/3)
+//! at common random numbers (Hertz: contact stiffness ~ F^(1/3), friction
+//! forces ~ F); a two-dimensional optimum against a fine grid of the same
+//! studies; constraints met at the optimum; the same seed, the same
+//! optimum; goals that cannot be read are refused.
+
+use crate::common::{kinrepro, scene};
+use kinrepro::explore::goal::{Constraint, Objective};
+use kinrepro::explore::run::study_plan;
+use kinrepro::explore::{Set, SweptValue, evaluate, point_file};
+use kinrepro::scene::SceneFile;
+use kinrepro::study::{Sampler, StudyOptions};
+
+fn s01() -> String {
+    scene("01_maxwell_vgroove_steel.toml").to_str().unwrap().to_string()
+}
+
+fn optimize(args: &[&str]) -> serde_json::Value {
+    let s = s01();
+    let base = ["optimize", &s, "--sampler", "mc", "--samples", "20", "--seed", "1", "--json"];
+    let (ok, out, err) = kinrepro(&[&base[..], args].concat());
+    assert!(ok, "{err}");
+    serde_json::from_str(&out).unwrap()
+}
+
+/// sigma_x of scene 01 at preload `force` (the same 20 Monte Carlo draws).
+fn sigma_x(force: f64) -> f64 {
+    let text = std::fs::read_to_string(s01()).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("s.toml");
+    let set = text.replacen("force = 20.0 ", &format!("force = {force} "), 1);
+    assert_ne!(set, text);
+    std::fs::write(&p, set).unwrap();
+    let args = ["study", p.to_str().unwrap(), "--sampler", "mc", "--samples", "20", "--seed", "1"];
+    let (ok, out, err) = kinrepro(&[&args[..], &["--format", "json"]].concat());
+    assert!(ok, "{err}");
+    let r: serde_json::Value = serde_json::from_str(&out).unwrap();
+    r["variants"][0]["points"][0]["sigma"]["x_nm"].as_f64().unwrap() * 1e-9
+}
+
+#[test]
+fn the_largest_preload_under_a_bound_on_sigma_follows_the_hertz_power() {
+    let target = 6e-9;
+    let r = optimize(&[
+        "--vary",
+        "preload.force=5:40",
+        "--objective",
+        "preload.force:max",
+        "--constraint",
+        &format!("sigma:centre:x<={target:e}"),
+    ]);
+    // sigma = sigma_0 (F / F_0)^(2/3): F* = F_0 (target / sigma_0)^(3/2).
+    let f0 = 20.0;
+    let closed = f0 * (target / sigma_x(f0)).powf(1.5);
+    let found = r["optimum"]["fields"]["preload.force"].as_f64().unwrap();
+    assert!((found / closed - 1.0).abs() < 0.01, "optimum {found} N, closed form {closed} N");
+    let margin = r["optimum"]["constraint_margins"][0]["margin"].as_f64().unwrap();
+    assert!(margin >= 0.0, "the optimum breaks its constraint by {margin}");
+    // The same seed, the same optimum and history.
+    let again = optimize(&[
+        "--vary",
+        "preload.force=5:40",
+        "--objective",
+        "preload.force:max",
+        "--constraint",
+        &format!("sigma:centre:x<={target:e}"),
+    ]);
+    assert_eq!(r["optimum"], again["optimum"]);
+    assert_eq!(r["history"], again["history"]);
+}
+
+/// sigma_x of scene 01 grows with the preload and falls with the ball
+/// diameter (about F^(2/3) D^(-1/3): a scales as (F D)^(1/3)), k_min grows
+/// with both: the optimum lies on the stiffness bound at the largest
+/// ball. A 36 x 36 grid of the same studies (the same draws) finds no
+/// feasible design better by more than 1 %, and its best lies next to the
+/// optimum.
+#[test]
+fn a_two_dimensional_optimum_is_no_worse_than_a_fine_grid_of_the_same_studies() {
+    let (force, ball) = ("preload.force=5:40", "coupling.ball_diameter=0.006:0.016");
+    let r = optimize(&[
+        "--vary",
+        force,
+        "--vary",
+        ball,
+        "--objective",
+        "sigma:centre:x:min",
+        "--constraint",
+        "k_min>=6e7",
+    ]);
+    let best = r["optimum"]["objective"].as_f64().unwrap();
+    let margin = r["optimum"]["constraint_margins"][0]["margin"].as_f64().unwrap();
+    assert!(margin >= 0.0, "k_min below its bound at the optimum");
+    let d = r["optimum"]["fields"]["coupling.ball_diameter"].as_f64().unwrap();
+    let f = r["optimum"]["fields"]["preload.force"].as_f64().unwrap();
+    // The grid, by the library's own evaluation of a design point.
+    let text = std::fs::read_to_string(s01()).unwrap();
+    let (sc, coupling) = kinrepro::error::parse_scene(&text, "01").unwrap();
+    let options = StudyOptions {
+        sampler: Some(Sampler::MonteCarlo),
+        samples: Some(20),
+        seed: Some(1),
+        ..StudyOptions::default()
+    };
+    let plan = study_plan(sc, coupling, &options).unwrap();
+    let base = SceneFile::parse(&text, "01").unwrap();
+    let sets: Vec<Set> = [force, ball].iter().map(|a| Set::parse(a, &base).unwrap()).collect();
+    let objective = Objective::parse("sigma:centre:x:min").unwrap();
+    let constraint = Constraint::parse("k_min>=6e7").unwrap();
+    let n = 36;
+    let (mut grid_best, mut at) = (f64::INFINITY, (0.0, 0.0));
+    for i in 0..n {
+        for j in 0..n {
+            let x =
+                (5.0 + 35.0 * i as f64 / (n - 1) as f64, 0.006 + 0.01 * j as f64 / (n - 1) as f64);
+            let values = [SweptValue::Number(x.0), SweptValue::Number(x.1)];
+            let file = point_file(&base, &sets, &values);
+            let e = evaluate(file, &text, "grid", &plan, (&plan.variants[0], false), &|| {});
+            let d = kinrepro::explore::run::design_report(0, Default::default(), e);
+            let value = objective.output.value(&d).unwrap_or(f64::INFINITY);
+            if constraint.margin(&d).is_some_and(|m| m >= 0.0) && value < grid_best {
+                (grid_best, at) = (value, x);
+            }
+        }
+    }
+    assert!(grid_best.is_finite());
+    assert!(best <= grid_best * 1.01, "optimum {best:e} m, best of the grid {grid_best:e} m");
+    // Next to the grid's best: within two grid steps.
+    assert!(
+        (f - at.0).abs() <= 2.0 * 35.0 / 35.0 && (d - at.1).abs() <= 2.0 * 0.01 / 35.0,
+        "{f} N, {d} m; grid {at:?}"
+    );
+}
+
+#[test]
+fn goals_that_cannot_be_read_are_refused_naming_them() {
+    let s = s01();
+    let cases: [(&[&str], &str); 6] = [
+        (&["--objective", "sigma:centre:x"], "OUTPUT:min or OUTPUT:max"),
+        (&["--objective", "sigma:tip:x:min"], "no evaluation point `tip`"),
+        (&["--objective", "sigma:centre:beam:min"], "neither a DOF"),
+        (&["--objective", "coupling.diameter:max"], "not among those varied"),
+        (&["--objective", "k_min:max", "--constraint", "sf_p=3"], "OUTPUT<=VALUE"),
+        (&["--objective", "k_min:max", "--constraint", "sf_p>=x"], "not a finite number"),
+    ];
+    for (args, says) in cases {
+        let base = ["optimize", &s, "--vary", "preload.force=5:40", "--samples", "4"];
+        let (ok, _, err) = kinrepro(&[&base[..], args].concat());
+        assert!(!ok && err.contains(says), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+    // No feasible design: exit 1, the history printed.
+    let args = ["optimize", &s, "--vary", "preload.force=5:40", "--samples", "4"];
+    let (ok, out, err) = kinrepro(
+        &[&args[..], &["--objective", "k_min:max", "--constraint", "sigma:centre:x<=1e-15"]]
+            .concat(),
+    );
+    assert!(!ok && err.contains("no feasible design"), "{err}");
+    assert!(out.contains("NO FEASIBLE DESIGN") && out.contains("history"), "{out}");
+}
