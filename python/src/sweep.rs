@@ -2,9 +2,10 @@
 //! points) and the merge of sweep shards, as `kinrepro sweep` runs them.
 
 use kinrepro::error::parse_scene;
+use kinrepro::explore::goal::Goals;
 use kinrepro::explore::run::{run, study_plan};
 use kinrepro::explore::{
-    DesignKind, SweepReport, SweepSpec, SweptValue, merge_sweeps as lib_merge,
+    DesignKind, ExploreError, SweepReport, SweepSpec, SweptValue, merge_sweeps as lib_merge,
 };
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2};
@@ -145,7 +146,7 @@ pub fn merge_sweeps(py: Python<'_>, parts: &[Bound<'_, PyAny>]) -> PyResult<Py<P
 #[pyo3(signature = (
     scene, sets, points = None, pareto_point = None, samples = None, sampler = None,
     seed = None, shard = None, jobs = None, increments = None, path_tolerance = None,
-    replicates = None,
+    replicates = None, objectives = Vec::new(), constraints = Vec::new(),
 ))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep(
@@ -162,6 +163,8 @@ pub fn sweep(
     increments: Option<Whole<usize>>,
     path_tolerance: Option<f64>,
     replicates: Option<Whole<usize>>,
+    objectives: Vec<String>,
+    constraints: Vec<String>,
 ) -> PyResult<Sweep> {
     let points = points.map(Whole::get);
     let samples = samples.map(Whole::get);
@@ -177,9 +180,11 @@ pub fn sweep(
         let (base, coupling) = parse_scene(&text, &file)?;
         let design = DesignKind::new(points, options.seed, &base);
         let spec = SweepSpec::new(&file, &text, &sets, design)?;
+        let goals = Goals::parse(&objectives, &constraints, &base, &spec.paths())
+            .map_err(ExploreError::Goal)?;
         let plan = study_plan(base, coupling, &options)?;
         let tick = &|| {};
-        let report = run(&spec, &plan, options.shard, pareto_point.as_deref(), tick)?;
+        let report = run(&spec, &plan, options.shard, (pareto_point.as_deref(), &goals), tick)?;
         // No design point evaluated: an error, as the CLI's exit 1, not a
         // table of NaN rows.
         report.check_any_valid()?;

@@ -96,6 +96,11 @@ impl SweepSpec {
         design_points(&self.sets, self.design)
     }
 
+    /// The swept fields, by path.
+    pub fn paths(&self) -> Vec<String> {
+        self.sets.iter().map(|s| s.path.clone()).collect()
+    }
+
     /// The label of design point `p` in messages: `FILE [a = 1, b = 2]`.
     pub fn label(&self, p: &DesignPoint) -> String {
         let v: Vec<String> =

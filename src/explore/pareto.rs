@@ -33,17 +33,14 @@ pub fn dominates(b: &[f64], a: &[f64]) -> bool {
     b.iter().zip(a).all(|(b, a)| b >= a) && b.iter().zip(a).any(|(b, a)| b > a)
 }
 
-/// Per design: on the front (`Some(true)`), dominated (`Some(false)`), or
-/// not evaluated (`None` in, `false` out). The safety-factor objective
-/// takes part only if some evaluated design has one.
-pub fn front(designs: &[Option<Objectives>]) -> Vec<bool> {
-    let with_safety = designs.iter().flatten().any(|o| o.safety_factor.is_some());
-    let vals: Vec<Option<Vec<f64>>> =
-        designs.iter().map(|o| o.map(|o| o.values(with_safety))).collect();
-    vals.iter()
+/// Per design: on the front (`true`) or not; a design without values
+/// (`None`: not evaluated, infeasible) is never on it and dominates none.
+pub fn front_of(values: &[Option<Vec<f64>>]) -> Vec<bool> {
+    values
+        .iter()
         .map(|a| match a {
             None => false,
-            Some(a) => !vals.iter().flatten().any(|b| dominates(b, a)),
+            Some(a) => !values.iter().flatten().any(|b| dominates(b, a)),
         })
         .collect()
 }

@@ -13,7 +13,8 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use super::pareto::{Objectives, front};
+use super::goal::Goals;
+use super::pareto::{Objectives, front_of};
 use super::{DesignKind, Evaluation, FieldKind, Outcome, SweepSpec, SweptValue};
 use super::{ExploreError, evaluate, point_file};
 use crate::assembly::Coupling;
@@ -69,6 +70,10 @@ pub struct DesignReport {
     pub nominal_approach_m: Option<f64>,
     /// Largest contact approach of the nominal seating [m].
     pub max_contact_approach_m: Option<f64>,
+    /// The sweep's constraints this evaluated design breaks (or cannot be
+    /// shown to meet), as written; such a design is not on the front.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub broken_constraints: Vec<String>,
 }
 
 /// What a sweep's numbers depend on (`merge` compares it).
@@ -82,6 +87,9 @@ pub struct SweepFingerprint {
     pub pareto_point: String,
     /// The study settings of every design point (the base scene's).
     pub study: Fingerprint,
+    /// The objectives and constraints of the front.
+    #[serde(default, flatten)]
+    pub goals: Goals,
 }
 
 /// The whole sweep document.
@@ -105,6 +113,12 @@ pub struct SweepReport {
     pub sets: Vec<SetRecord>,
     /// The evaluation point whose sigma is the Pareto objective.
     pub pareto_point: String,
+    /// `--objective` and `--constraint` (explore::goal): the front is on
+    /// these objectives among the designs that meet these constraints
+    /// (none given: the largest translational sigma at `pareto_point`,
+    /// k_min and SF_p).
+    #[serde(default, flatten)]
+    pub goals: Goals,
     pub fingerprint: SweepFingerprint,
     pub shard: Shard,
     /// This shard's design points (all of them when `shard` is 1/1).
@@ -149,12 +163,13 @@ pub fn study_plan(
 /// Run shard `shard` of the design points of `spec` (rayon across designs
 /// and samples), each point's study the base scene's in `plan` (from
 /// [`study_plan`]); `pareto_point` names the evaluation point of the
-/// Pareto objective (None: the first).
+/// default Pareto objective (None: the first); `goals` the front's
+/// objectives and constraints (empty: the default objectives).
 pub fn run(
     spec: &SweepSpec,
     plan: &StudyPlan,
     shard: Shard,
-    pareto_point: Option<&str>,
+    (pareto_point, goals): (Option<&str>, &Goals),
     tick: &(dyn Fn() + Sync),
 ) -> Result<SweepReport, SweepError> {
     let base = &plan.variants[0];
@@ -191,6 +206,7 @@ pub fn run(
         design_points: points.len(),
         sets: sets.clone(),
         pareto_point: pareto_point.clone(),
+        goals: goals.clone(),
         fingerprint: SweepFingerprint {
             scene_content: format!("{:016x}", fnv1a64(spec.text.as_bytes())),
             sets,
@@ -198,6 +214,7 @@ pub fn run(
             design_points: points.len(),
             pareto_point,
             study: Fingerprint::new(&base.scene, &plan.settings, &base.design),
+            goals: goals.clone(),
         },
         shard,
         designs,
@@ -245,21 +262,40 @@ pub fn design_report(
         friction_limit_margin: n.and_then(|n| n.friction_limit_margin),
         nominal_approach_m: n.map(|n| n.approach_m),
         max_contact_approach_m: n.map(|n| n.max_contact_approach_m),
+        broken_constraints: Vec::new(),
     }
 }
 
 impl SweepReport {
-    /// Set each design's Pareto mark (only when this document holds every
-    /// design; a shard's marks stay null until `merge`).
+    /// Set each evaluated design's broken constraints, and each design's
+    /// Pareto mark (only when this document holds every design; a shard's
+    /// marks stay null until `merge`): the front among the designs that
+    /// meet every constraint, on the chosen objectives (or the default).
     pub fn mark_pareto(&mut self) {
+        for d in self.designs.iter_mut().filter(|d| d.status == "ok") {
+            d.broken_constraints = self.goals.broken(d);
+        }
         if self.shard.count != 1 {
             return;
         }
-        let obj: Vec<Option<Objectives>> =
-            self.designs.iter().map(|d| self.objectives(d)).collect();
-        for (d, on) in self.designs.iter_mut().zip(front(&obj)) {
+        let values: Vec<Option<Vec<f64>>> =
+            self.designs.iter().map(|d| self.front_values(d)).collect();
+        for (d, on) in self.designs.iter_mut().zip(front_of(&values)) {
             d.pareto = Some(on);
         }
+    }
+
+    /// The values the front compares of design `d`, larger is better (None:
+    /// not evaluated, breaking a constraint, or without every objective).
+    pub fn front_values(&self, d: &DesignReport) -> Option<Vec<f64>> {
+        if d.status != "ok" || !d.broken_constraints.is_empty() {
+            return None;
+        }
+        if self.goals.objectives.is_empty() {
+            let with_safety = self.designs.iter().any(|d| d.min_pressure_safety_factor.is_some());
+            return Some(self.objectives(d)?.values(with_safety));
+        }
+        self.goals.objectives.iter().map(|o| o.better(d)).collect()
     }
 
     /// The Pareto objectives of an evaluated design (None otherwise).

@@ -243,6 +243,11 @@ mod pareto {
         Some(Objectives { sigma_max: s, stiffness_min: k, safety_factor: Some(sf) })
     }
 
+    /// The front of the default objectives (every design with a safety factor).
+    fn front(d: &[Option<Objectives>]) -> Vec<bool> {
+        front_of(&d.iter().map(|o| o.map(|o| o.values(true))).collect::<Vec<_>>())
+    }
+
     #[test]
     fn a_hand_checked_front() {
         // 0: best sigma; 1: dominated by 0 (worse sigma, same k and SF);

@@ -78,6 +78,10 @@ fn heading(r: &SweepReport, name: &str) -> String {
             "Heat map: the largest translational σ at {} over the two swept fields",
             r.pareto_point
         ),
+        "sweep_pareto" if !r.goals.objectives.is_empty() => format!(
+            "Pareto front on {}",
+            r.goals.objectives.iter().map(|o| o.name()).collect::<Vec<_>>().join(", ")
+        ),
         "sweep_pareto" => "Pareto front: the largest translational σ against k_min".to_string(),
         "sweep_not_evaluated" => "Design points not evaluated".to_string(),
         other => {
@@ -99,7 +103,7 @@ fn caption(title: &str) -> &'static str {
             "The largest translational σ at the Pareto point over the two swept fields; grey: not evaluated."
         }
         "sweep_pareto" => {
-            "Every evaluated design point; the Pareto front in colour, labelled with its # in the table of design points."
+            "Every evaluated design point, one panel per pair of objectives; the Pareto front in colour, labelled with its # in the table of design points; dominated designs grey; grey crosses: designs that break a constraint."
         }
         "sweep_not_evaluated" => "The design points not evaluated, with the reason.",
         _ => {

@@ -10,7 +10,7 @@ use super::SweepPlotError;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use crate::explore::{DesignReport, SweepReport};
+use crate::explore::DesignReport;
 use crate::report::study::plot::color;
 
 /// Label font size [px] and the width of one of its characters (digits
@@ -88,35 +88,47 @@ pub fn place_labels(
     placed
 }
 
-/// The chart into `area`: `pts` the evaluated designs at (k_min [N/um],
-/// largest translational sigma [nm]), `(x0, x1)` the stiffness axis (the
+/// A panel's caption, axis titles and ranges.
+pub struct Axes {
+    pub caption: String,
+    pub x: String,
+    pub y: String,
+    pub x_range: (f64, f64),
+    pub y_range: (f64, f64),
+}
+
+/// The chart into `area`: `pts` the feasible evaluated designs at their
+/// (x, y), the front coloured and labelled, the dominated grey;
+/// `infeasible` the designs that break a constraint, grey crosses (the
 /// error: plotters' message).
 pub fn draw(
-    r: &SweepReport,
+    axes: &Axes,
     pts: &[(f64, f64, &DesignReport)],
-    (x0, x1): (f64, f64),
+    infeasible: &[(f64, f64)],
     area: &DrawingArea<SVGBackend<'_>, Shift>,
 ) -> Result<(), SweepPlotError> {
     let draw_err = |e: DrawingAreaErrorKind<_>| SweepPlotError::Draw(e.to_string());
-    let ymax = pts.iter().map(|p| p.1).fold(0.0, f64::max);
+    let ((x0, x1), (y0, y1)) = (axes.x_range, axes.y_range);
     let mut chart = ChartBuilder::on(area)
-        .caption(
-            "Pareto front: lower σ, higher k_min, higher SF_p (front: coloured, labelled with the # of the table)",
-            ("sans-serif", 16),
-        )
+        .caption(&axes.caption, ("sans-serif", 16))
         .margin(10)
         .margin_right(24)
         .x_label_area_size(40)
         .y_label_area_size(70)
-        .build_cartesian_2d(x0..x1, 0.0..(ymax * 1.15).max(1e-12))
+        .build_cartesian_2d(x0..x1, y0..y1)
         .map_err(draw_err)?;
     chart
         .configure_mesh()
-        .x_desc("lowest principal translational stiffness k_min [N/µm]")
-        .y_desc(format!("largest translational σ at {} [nm]", r.pareto_point))
+        .x_desc(&axes.x)
+        .y_desc(&axes.y)
+        .x_labels(5)
+        .y_labels(5)
         .label_style(("sans-serif", 12))
         .draw()
         .map_err(draw_err)?;
+    let grey = RGBColor(150, 150, 150);
+    let crosses = infeasible.iter().map(|&(x, y)| Cross::new((x, y), 4, grey.stroke_width(2)));
+    chart.draw_series(crosses).map_err(draw_err)?;
     for (x, y, d) in pts {
         let col = match d.pareto == Some(true) {
             true => color(5),

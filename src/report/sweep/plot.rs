@@ -16,6 +16,7 @@ use plotters::prelude::*;
 pub use super::SweepPlotError;
 use crate::dof::Dof;
 use crate::explore::SweptValue;
+use crate::explore::goal::{Objective, Output};
 use crate::explore::{DesignReport, SweepReport};
 use std::io::Write;
 
@@ -48,7 +49,13 @@ pub fn charts(r: &SweepReport) -> Result<Vec<(String, String)>, SweepPlotError> 
     if r.sets.len() == 2 && r.design.name() == "grid" {
         out.push(("sweep_heatmap".to_string(), svg(&foot, (1200, 700), |a| heatmap(r, a))?));
     }
-    if r.designs.iter().filter(|d| r.objectives(d).is_some()).count() >= 2 {
+    let objectives = r.goals.objectives.len();
+    if objectives >= 2 {
+        let panels = objectives * (objectives - 1) / 2;
+        let size = (1200, if panels == 1 { 700 } else { 60 + 420 * panels.div_ceil(3) as u32 });
+        out.push(("sweep_pareto".to_string(), svg(&foot, size, |a| goal_front_chart(r, a))?));
+    } else if objectives == 0 && r.designs.iter().filter(|d| r.objectives(d).is_some()).count() >= 2
+    {
         out.push(("sweep_pareto".to_string(), svg(&foot, (1200, 700), |a| pareto_chart(r, a))?));
     }
     if !super::status::not_evaluated(r).is_empty() {
@@ -341,15 +348,77 @@ fn levels(r: &SweepReport, k: usize) -> Vec<SweptValue> {
     v
 }
 
-/// The Pareto chart (`report::sweep::pareto`) of the evaluated designs.
+/// The Pareto chart (`report::sweep::pareto`) of the evaluated designs on
+/// the default objectives: the largest translational sigma against k_min.
 fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
-    let pts: Vec<(f64, f64, &DesignReport)> = r
-        .designs
-        .iter()
-        .filter_map(|d| Some((r.objectives(d)?.stiffness_min * 1e-6, sigma_max(r, d)?, d)))
+    let at = |d: &DesignReport| Some((r.objectives(d)?.stiffness_min * 1e-6, sigma_max(r, d)?));
+    let (mut pts, mut off) = (Vec::new(), Vec::new());
+    for d in &r.designs {
+        match (at(d), d.broken_constraints.is_empty()) {
+            (Some((x, y)), true) => pts.push((x, y, d)),
+            (Some(xy), false) => off.push(xy),
+            _ => {}
+        }
+    }
+    let xs: Vec<f64> = pts.iter().map(|p| p.0).chain(off.iter().map(|p| p.0)).collect();
+    let ymax = pts.iter().map(|p| p.1).chain(off.iter().map(|p| p.1)).fold(0.0, f64::max);
+    let axes = super::pareto::Axes {
+        caption: "Pareto front: lower σ, higher k_min, higher SF_p (front: coloured, labelled with the # of the table)".to_string(),
+        x: "lowest principal translational stiffness k_min [N/µm]".to_string(),
+        y: format!("largest translational σ at {} [nm]", r.pareto_point),
+        x_range: span(&xs),
+        y_range: (0.0, (ymax * 1.15).max(1e-12)),
+    };
+    super::pareto::draw(&axes, &pts, &off, area)
+}
+
+/// An objective's value in the chart's unit (sigma in nm or nrad, k_min
+/// in N/µm, others as they are) and its axis title.
+fn objective_axis(o: &Objective) -> (f64, String) {
+    let name = o.name();
+    match (&o.output, o.output.unit()) {
+        (Output::Sigma { .. } | Output::Pm3sigma { .. }, "m") => (1e9, format!("{name} [nm]")),
+        (Output::Sigma { .. } | Output::Pm3sigma { .. }, _) => (1e9, format!("{name} [nrad]")),
+        (Output::KMin, _) => (1e-6, format!("{name} [N/µm]")),
+        _ => (1.0, name),
+    }
+}
+
+/// The front in the chosen objectives: one panel per pair of objectives
+/// (a scatter matrix for three or more), the front coloured, dominated
+/// designs grey, designs that break a constraint grey crosses.
+fn goal_front_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
+    let objectives = &r.goals.objectives;
+    let pairs: Vec<(usize, usize)> = (0..objectives.len())
+        .flat_map(|i| (i + 1..objectives.len()).map(move |j| (i, j)))
         .collect();
-    let xr = span(&pts.iter().map(|p| p.0).collect::<Vec<_>>());
-    super::pareto::draw(r, &pts, xr, area)
+    let cols = pairs.len().min(3);
+    let panels = area.split_evenly((pairs.len().div_ceil(cols), cols));
+    for (&(i, j), panel) in pairs.iter().zip(&panels) {
+        let ((fx, tx), (fy, ty)) = (objective_axis(&objectives[i]), objective_axis(&objectives[j]));
+        let at = |d: &DesignReport| {
+            let v = |k: usize| objectives[k].output.value(d);
+            Some((v(i)? * fx, v(j)? * fy))
+        };
+        let (mut pts, mut off) = (Vec::new(), Vec::new());
+        for d in r.designs.iter().filter(|d| d.status == "ok") {
+            match (at(d), d.broken_constraints.is_empty()) {
+                (Some((x, y)), true) => pts.push((x, y, d)),
+                (Some(xy), false) => off.push(xy),
+                _ => {}
+            }
+        }
+        let all = || pts.iter().map(|p| (p.0, p.1)).chain(off.iter().copied());
+        let axes = super::pareto::Axes {
+            caption: format!("front: {} and {}", objectives[i].name(), objectives[j].name()),
+            x: tx,
+            y: ty,
+            x_range: span(&all().map(|p| p.0).collect::<Vec<_>>()),
+            y_range: span(&all().map(|p| p.1).collect::<Vec<_>>()),
+        };
+        super::pareto::draw(&axes, &pts, &off, panel)?;
+    }
+    Ok(())
 }
 
 /// Heat map over the two fields of a grid: cells by level index, coloured

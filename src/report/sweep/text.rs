@@ -114,13 +114,13 @@ impl SweepReport {
             self.sets.iter().map(|x| format!("{} = {}", x.field, x.values)).collect();
         let _ = writeln!(
             s,
-            "Sweep of {} ({}): {}. Per design point and evaluation point the standard deviation of the seated pose relative to the design's nominal seating ({}), its 90 % interval below ({}); then for the nominal seating: k_min, the lowest principal translational stiffness [N/um]; SF_p, the smallest safety factor against the allowable contact pressure; mu_lim, the friction limit for seating and its margin over mu_static + spread; approach along the preload [nm]; for a scene with [thermal], thermal/k/point: the mean and sigma of the point's drift from each sample's seated pose at cycle point k. P: on the Pareto front (largest translational sigma at {}, k_min, SF_p).",
+            "Sweep of {} ({}): {}. Per design point and evaluation point the standard deviation of the seated pose relative to the design's nominal seating ({}), its 90 % interval below ({}); then for the nominal seating: k_min, the lowest principal translational stiffness [N/um]; SF_p, the smallest safety factor against the allowable contact pressure; mu_lim, the friction limit for seating and its margin over mu_static + spread; approach along the preload [nm]; for a scene with [thermal], thermal/k/point: the mean and sigma of the point's drift from each sample's seated pose at cycle point k. {}",
             self.name,
             self.scene,
             sets.join("; "),
             sigma_estimates(self),
             interval_methods(self.designs.iter().flat_map(|d| &d.points), "no design evaluated"),
-            self.pareto_point
+            self.front_description()
         );
         let _ = writeln!(s);
         let sigma = sigma_columns(|d| format!("σ{} [{}]", d.symbol(), d.unit()));
@@ -150,7 +150,11 @@ impl SweepReport {
             d.friction_limit,
             d.friction_limit_margin,
             d.nominal_approach_m.map(nano),
-            if d.pareto == Some(true) { "*" } else { "" },
+            match (d.pareto, d.broken_constraints.is_empty()) {
+                (Some(true), _) => "*",
+                (_, false) => "x",
+                _ => "",
+            },
         ];
         let mut head = cells![d.index, truncate(&values.join(", "), 33)];
         if d.points.is_empty() {
@@ -178,6 +182,9 @@ impl SweepReport {
             if !p.directions.is_empty() {
                 t.note(format!("  {}: {}", p.name, directions_text(p)));
             }
+            if i == 0 && !d.broken_constraints.is_empty() {
+                t.note(format!("  breaks {}", d.broken_constraints.join(", ")));
+            }
             for (k, c) in p.thermal.iter().enumerate() {
                 // The drift's scatter at cycle point k, under its mean.
                 let name = truncate(&thermal_output_point(k, &p.name), 15);
@@ -189,6 +196,24 @@ impl SweepReport {
                 row.extend(sigma);
                 t.row(row);
             }
+        }
+    }
+}
+
+impl SweepReport {
+    /// What the P column marks: the front's objectives and constraints.
+    pub fn front_description(&self) -> String {
+        let g = &self.goals;
+        let objectives = match g.objectives.is_empty() {
+            true => format!("largest translational sigma at {}, k_min, SF_p", self.pareto_point),
+            false => g.objectives.iter().map(|o| o.name()).collect::<Vec<_>>().join(", "),
+        };
+        match g.constraints.is_empty() {
+            true => format!("P: on the Pareto front ({objectives})."),
+            false => format!(
+                "P: * on the Pareto front ({objectives}) of the designs that meet {} (SI units); x: breaks a constraint (named under its row), off the front.",
+                g.constraints.iter().map(|c| c.name()).collect::<Vec<_>>().join(", ")
+            ),
         }
     }
 }

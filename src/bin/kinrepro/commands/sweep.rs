@@ -4,6 +4,7 @@
 use std::io::Write;
 use std::path::PathBuf;
 
+use kinrepro::explore::goal::Goals;
 use kinrepro::explore::run::{run, study_plan};
 use kinrepro::explore::{DesignKind, SweepReport, SweepSpec, merge_sweeps};
 use kinrepro::output::atomic::AtomicFile;
@@ -23,6 +24,8 @@ pub struct Sweep {
     sets: Vec<String>,
     points: Option<usize>,
     pareto_point: Option<String>,
+    objectives: Vec<String>,
+    constraints: Vec<String>,
     options: StudyOptions,
     jobs: Option<usize>,
     output: OutputFlags,
@@ -44,6 +47,8 @@ impl TryFrom<SweepArgs> for Sweep {
             sets: a.sets,
             points: a.points,
             pareto_point: a.pareto_point,
+            objectives: a.objective,
+            constraints: a.constraint,
             jobs: a.run.jobs,
             output: a.output,
         })
@@ -56,6 +61,8 @@ pub fn sweep(s: Sweep) -> Result {
     let (scene, coupling) = kinrepro::error::parse_scene(&text, &file)?;
     let design = DesignKind::new(s.points, s.options.seed, &scene);
     let spec = SweepSpec::new(&file, &text, &s.sets, design)?;
+    let goals = Goals::parse(&s.objectives, &s.constraints, &scene, &spec.paths())
+        .map_err(|e| Error::new(format!("{file}: {e}")))?;
     let base = (scene.clone(), coupling.clone());
     let plan = study_plan(scene, coupling, &s.options)?;
     // One tick per seated sample (points that cannot seat tick none).
@@ -65,7 +72,7 @@ pub fn sweep(s: Sweep) -> Result {
     let seatings = share.saturating_mul(plan.variants[0].design.n);
     set_jobs(s.jobs, seatings)?;
     let bar = progress(seatings, plan.method())?;
-    let report = run(&spec, &plan, shard, s.pareto_point.as_deref(), &|| bar.inc(1))?;
+    let report = run(&spec, &plan, shard, (s.pareto_point.as_deref(), &goals), &|| bar.inc(1))?;
     bar.finish_and_clear();
     // A stop asked for during the run leaves design points "interrupted":
     // neither their table nor a file of them is a result.

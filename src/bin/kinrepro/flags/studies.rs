@@ -79,9 +79,20 @@ pub struct SweepArgs {
     #[arg(long)]
     pub points: Option<usize>,
     /// Evaluation point whose largest translational sigma is the Pareto
-    /// objective (default: the scene's first).
+    /// objective (default: the scene's first; without --objective).
     #[arg(long)]
     pub pareto_point: Option<String>,
+    /// OUTPUT:min or OUTPUT:max, an objective of the Pareto front
+    /// (repeatable; default: the largest translational sigma at
+    /// --pareto-point, k_min and sf_p). OUTPUT: sigma:POINT:DOF,
+    /// pm3sigma:POINT:DOF (DOF x..phi_z or a direction's name; m, rad),
+    /// k_min [N/m], sf_p, friction_margin, or a swept field.
+    #[arg(long, conflicts_with = "pareto_point")]
+    pub objective: Vec<String>,
+    /// OUTPUT<=VALUE or OUTPUT>=VALUE (SI): designs that break it are
+    /// listed apart, off the front (repeatable; e.g. sf_p>=3).
+    #[arg(long)]
+    pub constraint: Vec<String>,
     #[command(flatten)]
     pub study: DesignFlags,
     #[command(flatten)]
