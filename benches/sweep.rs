@@ -39,7 +39,9 @@ fn sweep(c: &mut Criterion) {
         };
         let plan = study_plan(scene.clone(), base.clone(), &opts).unwrap();
         g.bench_function(label, |b| {
-            b.iter(|| run(&spec, &plan, Shard::whole(), None, &|| {}).unwrap())
+            b.iter(|| {
+                run(&spec, &plan, Shard::whole(), (None, &Default::default()), &|| {}).unwrap()
+            })
         });
     }
     g.finish();

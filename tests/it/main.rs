@@ -59,6 +59,7 @@ mod study_stream;
 mod support_compliance;
 mod support_tensor;
 mod sweep_cli;
+mod sweep_goals;
 mod sweep_laws;
 mod tables;
 mod thermal;

@@ -24,7 +24,7 @@ fn sweep(text: &str, sets: &[&str], samples: usize) -> SweepReport {
     let opts =
         StudyOptions { samples: Some(samples), vary: vec![Varied::Friction], ..Default::default() };
     let plan = study_plan(scene, base, &opts).unwrap();
-    run(&spec, &plan, Shard::whole(), None, &|| {}).unwrap()
+    run(&spec, &plan, Shard::whole(), (None, &Default::default()), &|| {}).unwrap()
 }
 
 fn number(d: &DesignReport, field: &str) -> f64 {
