@@ -12,7 +12,7 @@ say (``x_nm``, ``phi_x_nrad``).
 
 from __future__ import annotations
 
-from typing import Iterable, List, Mapping, Optional, Tuple, Union
+from typing import Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 from ._kinrepro import (
     SCHEMA_VERSION,
@@ -33,12 +33,15 @@ from ._kinrepro import (
     study,
     thermal,
 )
+from ._kinrepro import Optimization
+from ._kinrepro import optimize as _optimize
 from ._kinrepro import sweep as _sweep
 
 __all__ = [
     "SCHEMA_VERSION",
     "Calibration",
     "KinreproError",
+    "Optimization",
     "Prediction",
     "Scene",
     "Seating",
@@ -48,6 +51,7 @@ __all__ = [
     "__version__",
     "calibrate",
     "merge",
+    "optimize",
     "predict",
     "seat",
     "stiffness",
@@ -84,6 +88,8 @@ def sweep(
     increments: Optional[int] = None,
     path_tolerance: Optional[float] = None,
     replicates: Optional[int] = None,
+    objectives: Sequence[str] = (),
+    constraints: Sequence[str] = (),
 ) -> Sweep:
     """Sweep scene fields (``kinrepro sweep``): every design point's
     reproducibility study (friction varied, the same seed for all: common
@@ -97,7 +103,9 @@ def sweep(
     point of the Pareto objective (None: the first). ``samples``,
     ``sampler``, ``seed``, ``shard``, ``jobs``, ``increments``,
     ``path_tolerance``, ``replicates``: as for :func:`study`, checked by the library as the
-    CLI's flags are. ``Sweep.names()`` and ``Sweep.values()`` (n_designs,
+    CLI's flags are. ``objectives`` (``"OUTPUT:min"``, ``"OUTPUT:max"``) and
+    ``constraints`` (``"OUTPUT>=VALUE"``, SI) choose the front's objectives
+    and the designs it is drawn from, as :func:`optimize` takes them. ``Sweep.names()`` and ``Sweep.values()`` (n_designs,
     k) give the design points, ``Sweep.sigma(point)`` (n_designs, 6) their
     sigma in m and rad; ``Sweep.to_dict()["designs"]`` holds everything
     (sigma in nm and nrad). GIL released; Ctrl-C raises KeyboardInterrupt.
@@ -107,4 +115,50 @@ def sweep(
         scene, args, points=points, pareto_point=pareto_point, samples=samples,
         sampler=sampler, seed=seed, shard=shard, jobs=jobs, increments=increments,
         path_tolerance=path_tolerance, replicates=replicates,
+        objectives=list(objectives), constraints=list(constraints),
+    )
+
+
+VaryValues = Union[str, Tuple[float, float], Iterable[Union[float, int, str]]]
+
+
+def optimize(
+    scene: Scene,
+    vary: Mapping[str, VaryValues],
+    objective: str,
+    constraints: Sequence[str] = (),
+    samples: Optional[int] = None,
+    sampler: Optional[str] = None,
+    seed: Optional[int] = None,
+    jobs: Optional[int] = None,
+    increments: Optional[int] = None,
+    path_tolerance: Optional[float] = None,
+    replicates: Optional[int] = None,
+    max_iterations: int = 200,
+) -> Optimization:
+    """The best design within bounds (``kinrepro optimize``): one
+    ``objective`` (``"OUTPUT:min"`` or ``"OUTPUT:max"``) under
+    ``constraints`` (``"OUTPUT<=VALUE"``, ``"OUTPUT>=VALUE"``, SI units), by
+    Nelder-Mead over the fields of ``vary``, every candidate's study on the
+    same friction draws (common random numbers).
+
+    OUTPUT is ``sigma:POINT:DOF`` or ``pm3sigma:POINT:DOF`` (DOF ``x`` ...
+    ``phi_z`` or a direction's name at the point; m, rad), ``k_min`` (N/m),
+    ``sf_p``, ``friction_margin`` or a varied field. ``vary`` maps a TOML
+    path to a ``(low, high)`` range (searched) or a list of values (each
+    tried: materials, keywords), or a string in the CLI's syntax
+    (``"5:40"``, ``"log:1e-9:1e-6"``). ``Optimization.optimum["fields"]``
+    holds the optimum's values; ``to_dict()["history"]`` every candidate.
+    """
+    def arg(field: str, values: VaryValues) -> str:
+        if isinstance(values, tuple) and len(values) == 2 and all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) for v in values
+        ):
+            return f"{field}={values[0]}:{values[1]}"
+        return _set_arg(field, values)  # type: ignore[arg-type]
+
+    return _optimize(
+        scene, [arg(f, v) for f, v in vary.items()], objective, constraints=list(constraints),
+        samples=samples, sampler=sampler, seed=seed, jobs=jobs, increments=increments,
+        path_tolerance=path_tolerance, replicates=replicates, max_iterations=max_iterations,
     )

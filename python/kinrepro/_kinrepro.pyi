@@ -316,9 +316,40 @@ def sweep(
     increments: int | None = None,
     path_tolerance: float | None = None,
     replicates: int | None = None,
+    objectives: Sequence[str] = (),
+    constraints: Sequence[str] = (),
 ) -> Sweep:
     """The compiled sweep: ``sets`` as ``"FIELD=VALUES"`` strings
     (``kinrepro.sweep`` takes a dict)."""
+
+class Optimization:
+    """An optimisation: the document of ``kinrepro optimize --json``."""
+    @staticmethod
+    def from_json(text: str) -> Optimization: ...
+    def to_json(self) -> str: ...
+    def to_dict(self) -> dict[str, Any]: ...
+    def table(self) -> str: ...
+    @property
+    def optimum(self) -> dict[str, Any] | None:
+        """``fields``, ``objective``, ``constraint_margins``, ``design``,
+        ``statistical_error``; None when no candidate met every constraint."""
+
+def optimize(
+    scene: Scene,
+    vary: list[str],
+    objective: str,
+    constraints: Sequence[str] = (),
+    samples: int | None = None,
+    sampler: str | None = None,
+    seed: int | None = None,
+    jobs: int | None = None,
+    increments: int | None = None,
+    path_tolerance: float | None = None,
+    replicates: int | None = None,
+    max_iterations: int = 200,
+) -> Optimization:
+    """The compiled optimisation: ``vary`` as ``"FIELD=VALUES"`` strings
+    (``kinrepro.optimize`` takes a dict)."""
 
 def calibrate(
     scene: Scene,

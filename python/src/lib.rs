@@ -11,6 +11,7 @@
 //! request and raises `KeyboardInterrupt`.
 
 mod calibrate;
+mod optimize;
 mod options;
 mod run;
 mod scene;
@@ -43,6 +44,7 @@ fn _kinrepro(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<thermal::ThermalPath>()?;
     m.add_class::<study::Study>()?;
     m.add_class::<sweep::Sweep>()?;
+    m.add_class::<optimize::Optimization>()?;
     m.add_class::<calibrate::Calibration>()?;
     m.add_class::<calibrate::Prediction>()?;
     m.add_function(wrap_pyfunction!(scene::seat, m)?)?;
@@ -51,6 +53,7 @@ fn _kinrepro(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(study::study, m)?)?;
     m.add_function(wrap_pyfunction!(study::merge, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(optimize::optimize, m)?)?;
     m.add_function(wrap_pyfunction!(calibrate::calibrate, m)?)?;
     m.add_function(wrap_pyfunction!(calibrate::predict, m)?)?;
     Ok(())

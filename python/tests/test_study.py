@@ -322,3 +322,29 @@ def test_a_direction_is_the_projection_of_the_poses():
     np.testing.assert_allclose(s.about("tool.z"), poses[:, 5], rtol=1e-12, atol=0)
     with pytest.raises(kinrepro.KinreproError, match='along "nope": no such direction'):
         s.along("nope")
+
+
+def test_optimize_is_the_clis_and_its_optimum_meets_the_bound(scene01, cli):
+    o = kinrepro.optimize(
+        scene01, {"preload.force": (5, 40)}, "preload.force:max",
+        constraints=["sigma:centre:x<=6e-9"], samples=20, sampler="mc", seed=1,
+    )
+    theirs = cli(
+        "optimize", "scenes/01_maxwell_vgroove_steel.toml", "--vary", "preload.force=5:40",
+        "--objective", "preload.force:max", "--constraint", "sigma:centre:x<=6e-9",
+        "--samples", 20, "--sampler", "mc", "--seed", 1, "--json",
+    )
+    ours = o.to_dict()
+    assert ours["optimum"]["fields"] == theirs["optimum"]["fields"]
+    assert o.optimum["constraint_margins"][0]["margin"] >= 0
+    sigma_x = o.optimum["design"]["points"][0]["sigma"]["x_nm"]
+    assert sigma_x <= 6.0 + 1e-9
+    s = kinrepro.sweep(
+        scene01, {"preload.force": [10, 20, 40]}, samples=10,
+        objectives=["sigma:centre:x:min", "k_min:max"], constraints=["sf_p>=5"],
+    )
+    designs = s.to_dict()["designs"]
+    assert [d["pareto"] for d in designs][2] is False
+    assert designs[2]["broken_constraints"] == ["sf_p>=5"]
+    with pytest.raises(kinrepro.KinreproError, match="not among those varied"):
+        kinrepro.optimize(scene01, {"preload.force": (5, 40)}, "coupling.diameter:max")
