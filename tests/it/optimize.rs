@@ -159,3 +159,35 @@ fn goals_that_cannot_be_read_are_refused_naming_them() {
     assert!(!ok && err.contains("no feasible design"), "{err}");
     assert!(out.contains("NO FEASIBLE DESIGN") && out.contains("history"), "{out}");
 }
+
+/// docs/guide-design.md shows the optimisation of the README's stage as
+/// this command prints it.
+#[test]
+fn the_guide_optimisation_of_the_stage_reproduces() {
+    let stage = scene("example_stage_mount.toml");
+    let (ok, out, err) = kinrepro(&[
+        "optimize",
+        stage.to_str().unwrap(),
+        "--vary",
+        "preload.force=10:60",
+        "--vary",
+        "coupling.opening_angle_deg=70:120",
+        "--objective",
+        "pm3sigma:sample:ion beam:min",
+        "--constraint",
+        "sf_p>=3",
+        "--constraint",
+        "k_min>=6e7",
+        "--samples",
+        "100",
+        "--sampler",
+        "mc",
+    ]);
+    assert!(ok, "{err}");
+    let guide = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/guide-design.md");
+    let guide = std::fs::read_to_string(guide).unwrap();
+    for starts in ["optimum (candidate", "  objective pm3sigma", "  constraint sf_p", "         along ion beam", "history ("] {
+        let line = out.lines().find(|l| l.starts_with(starts)).unwrap_or_else(|| panic!("{starts}"));
+        assert!(guide.contains(line.trim_end()), "the guide lacks\n{line}");
+    }
+}
