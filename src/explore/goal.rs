@@ -20,8 +20,8 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use super::design_report::DesignReport;
 use super::field::SweptValue;
-use super::run::DesignReport;
 use crate::dof::{Dof, NANO};
 use crate::scene::Scene;
 

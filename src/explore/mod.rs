@@ -16,6 +16,7 @@
 //! `report::sweep::plot`.
 
 pub mod design;
+pub mod design_report;
 pub mod evaluate;
 pub mod field;
 pub mod goal;

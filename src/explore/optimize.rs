@@ -28,8 +28,9 @@ use argmin::core::{CostFunction, Executor, State};
 use argmin::solver::neldermead::NelderMead;
 use serde::{Deserialize, Serialize};
 
+use super::design_report::{DesignReport, design_report};
 use super::goal::{Goals, Objective, Output, Sense};
-use super::run::{DesignReport, SetRecord, SweepError, design_report};
+use super::run::{SetRecord, SweepError};
 use super::values::Levels;
 use super::{ExploreError, Set, SweptValue, evaluate, point_file};
 use crate::param::Param;

@@ -68,6 +68,39 @@ fn the_largest_preload_under_a_bound_on_sigma_follows_the_hertz_power() {
     ]);
     assert_eq!(r["optimum"], again["optimum"]);
     assert_eq!(r["history"], again["history"]);
+    // The HTML page: the optimum's force, its margin, the convergence plot
+    // with one marker per candidate that gave an objective.
+    let dir = tempfile::tempdir().unwrap();
+    let html = dir.path().join("o.html");
+    let bound = format!("sigma:centre:x<={target:e}");
+    let s = s01();
+    let (ok, _, err) = kinrepro(&[
+        "optimize",
+        &s,
+        "--sampler",
+        "mc",
+        "--samples",
+        "20",
+        "--seed",
+        "1",
+        "--vary",
+        "preload.force=5:40",
+        "--objective",
+        "preload.force:max",
+        "--constraint",
+        &bound,
+        "--html",
+        html.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let page = std::fs::read_to_string(&html).unwrap();
+    assert!(page.contains(&format!("<td class=\"l\">{found}</td>")), "the optimum's force");
+    assert!(
+        page.contains("margin of sigma:centre:x&lt;=6e-9") && page.contains("data-check=\"chart\"")
+    );
+    let history = r["history"].as_array().unwrap();
+    let feasible = history.iter().filter(|c| c["feasible"] == true).count();
+    assert_eq!(page.matches("<circle").count(), feasible, "one dot per feasible candidate");
 }
 
 /// sigma_x of scene 01 grows with the preload and falls with the ball
@@ -186,8 +219,15 @@ fn the_guide_optimisation_of_the_stage_reproduces() {
     assert!(ok, "{err}");
     let guide = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/guide-design.md");
     let guide = std::fs::read_to_string(guide).unwrap();
-    for starts in ["optimum (candidate", "  objective pm3sigma", "  constraint sf_p", "         along ion beam", "history ("] {
-        let line = out.lines().find(|l| l.starts_with(starts)).unwrap_or_else(|| panic!("{starts}"));
+    for starts in [
+        "optimum (candidate",
+        "  objective pm3sigma",
+        "  constraint sf_p",
+        "         along ion beam",
+        "history (",
+    ] {
+        let line =
+            out.lines().find(|l| l.starts_with(starts)).unwrap_or_else(|| panic!("{starts}"));
         assert!(guide.contains(line.trim_end()), "the guide lacks\n{line}");
     }
 }

@@ -25,6 +25,7 @@ mod dimensions;
 mod drawing;
 pub mod inputs;
 mod mechanics;
+pub mod optimize;
 pub(crate) mod page;
 pub mod prediction;
 mod svg;

@@ -2,9 +2,12 @@
 //! under constraints (library: `explore::optimize`; output:
 //! `report::optimize`).
 
+use std::io::Write;
+
 use kinrepro::explore::goal::Goals;
 use kinrepro::explore::optimize::{OptimizeSpec, optimize as run};
 use kinrepro::explore::run::study_plan;
+use kinrepro::output::atomic::AtomicFile;
 use kinrepro::study::StudyOptions;
 
 use super::{emit, print_json, read_text, set_jobs};
@@ -21,7 +24,7 @@ pub fn optimize(a: OptimizeArgs) -> Result {
         .iter()
         .filter_map(|v| v.split_once('=').map(|(p, _)| p.trim().to_string()))
         .collect();
-    let goals = Goals::parse(&[a.objective.clone()], &a.constraint, &scene, &varied)
+    let goals = Goals::parse(std::slice::from_ref(&a.objective), &a.constraint, &scene, &varied)
         .map_err(|e| Error::new(format!("{file}: {e}")))?;
     let spec = OptimizeSpec::new(&file, &text, &a.vary, goals, a.max_iterations)?;
     let options = StudyOptions {
@@ -42,6 +45,14 @@ pub fn optimize(a: OptimizeArgs) -> Result {
     match (a.json, a.format) {
         (true, _) | (_, TextFormat::Json) => print_json(&report)?,
         _ => emit(&report.table())?,
+    }
+    if let Some(path) = &a.html {
+        let html = kinrepro::report::html::optimize::optimize_html(&report, &text)?;
+        let mut f = AtomicFile::create(path, a.force)?;
+        f.write_all(html.as_bytes()).map_err(|e| Error::new(format!("{}: {e}", path.display())))?;
+        for f in crate::signals::commit(vec![f])? {
+            eprintln!("wrote {f}");
+        }
     }
     if report.optimum.is_none() {
         return Err(Error::new(format!(
