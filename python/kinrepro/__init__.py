@@ -125,7 +125,7 @@ VaryValues = Union[str, Tuple[float, float], Iterable[Union[float, int, str]]]
 def optimize(
     scene: Scene,
     vary: Mapping[str, VaryValues],
-    objective: str,
+    objective: Optional[str] = None,
     constraints: Sequence[str] = (),
     samples: Optional[int] = None,
     sampler: Optional[str] = None,
@@ -137,8 +137,9 @@ def optimize(
     max_iterations: int = 200,
 ) -> Optimization:
     """The best design within bounds (``kinrepro optimize``): one
-    ``objective`` (``"OUTPUT:min"`` or ``"OUTPUT:max"``) under
-    ``constraints`` (``"OUTPUT<=VALUE"``, ``"OUTPUT>=VALUE"``, SI units), by
+    ``objective`` (``"OUTPUT:min"`` or ``"OUTPUT:max"``; None: the scene's
+    ``[goals]``) under ``constraints`` (``"OUTPUT<=VALUE"``,
+    ``"OUTPUT>=VALUE"``, SI units; empty: the scene's), by
     Nelder-Mead over the fields of ``vary``, every candidate's study on the
     same friction draws (common random numbers).
 

@@ -337,7 +337,7 @@ class Optimization:
 def optimize(
     scene: Scene,
     vary: list[str],
-    objective: str,
+    objective: str | None = None,
     constraints: Sequence[str] = (),
     samples: int | None = None,
     sampler: str | None = None,

@@ -2,7 +2,6 @@
 //! runs them.
 
 use kinrepro::error::parse_scene;
-use kinrepro::explore::ExploreError;
 use kinrepro::explore::goal::Goals;
 use kinrepro::explore::optimize::{MAX_ITERATIONS, OptimizeReport, OptimizeSpec, optimize as run};
 use kinrepro::explore::run::study_plan;
@@ -68,7 +67,7 @@ impl Optimization {
 /// (`kinrepro optimize`); `vary`: `FIELD=VALUES` strings.
 #[pyfunction]
 #[pyo3(signature = (
-    scene, vary, objective, constraints = Vec::new(), samples = None, sampler = None,
+    scene, vary, objective = None, constraints = Vec::new(), samples = None, sampler = None,
     seed = None, jobs = None, increments = None, path_tolerance = None, replicates = None,
     max_iterations = Whole::of(MAX_ITERATIONS),
 ))]
@@ -77,7 +76,7 @@ pub fn optimize(
     py: Python<'_>,
     scene: &Scene,
     vary: Vec<String>,
-    objective: String,
+    objective: Option<String>,
     constraints: Vec<String>,
     samples: Option<Whole<usize>>,
     sampler: Option<String>,
@@ -103,9 +102,10 @@ pub fn optimize(
         let (base, coupling) = parse_scene(&text, &file)?;
         let varied: Vec<String> =
             vary.iter().filter_map(|v| v.split_once('=').map(|(p, _)| p.trim().into())).collect();
-        let goals =
-            Goals::parse(&[objective], &constraints, &base, &varied).map_err(ExploreError::Goal)?;
-        let spec = OptimizeSpec::new(&file, &text, &vary, goals, max_iterations)?;
+        let mut spec = OptimizeSpec::new(&file, &text, &vary, Goals::default(), max_iterations)?;
+        let objectives: Vec<String> = objective.into_iter().collect();
+        let asked = (objectives.as_slice(), constraints.as_slice());
+        spec.goals = Goals::asked(asked, (&spec.base, &file, &text), &base, &varied)?;
         let plan = study_plan(base, coupling, &options)?;
         Ok(run(&spec, &plan, &|| {})?)
     })?;

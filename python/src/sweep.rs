@@ -5,7 +5,7 @@ use kinrepro::error::parse_scene;
 use kinrepro::explore::goal::Goals;
 use kinrepro::explore::run::{run, study_plan};
 use kinrepro::explore::{
-    DesignKind, ExploreError, SweepReport, SweepSpec, SweptValue, merge_sweeps as lib_merge,
+    DesignKind, SweepReport, SweepSpec, SweptValue, merge_sweeps as lib_merge,
 };
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray2};
@@ -180,8 +180,12 @@ pub fn sweep(
         let (base, coupling) = parse_scene(&text, &file)?;
         let design = DesignKind::new(points, options.seed, &base);
         let spec = SweepSpec::new(&file, &text, &sets, design)?;
-        let goals = Goals::parse(&objectives, &constraints, &base, &spec.paths())
-            .map_err(ExploreError::Goal)?;
+        let goals = Goals::asked(
+            (&objectives, &constraints),
+            (&spec.base, &file, &text),
+            &base,
+            &spec.paths(),
+        )?;
         let plan = study_plan(base, coupling, &options)?;
         let tick = &|| {};
         let report = run(&spec, &plan, options.shard, (pareto_point.as_deref(), &goals), tick)?;

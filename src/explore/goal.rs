@@ -21,9 +21,13 @@ use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 use super::design_report::DesignReport;
+use toml::Spanned;
+
+use super::ExploreError;
 use super::field::SweptValue;
 use crate::dof::{Dof, NANO};
-use crate::scene::Scene;
+use crate::scene::error::ErrorContext;
+use crate::scene::{Scene, SceneFile};
 
 /// A quantity a design point gives.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -344,6 +348,63 @@ impl Goals {
         outputs
             .chain(self.constraints.iter().map(|c| &c.output))
             .any(|o| *o == Output::FrictionMargin)
+    }
+
+    /// The goals asked for: `objectives` and `constraints` as given (the
+    /// command line's, the Python call's), each list in place of the base
+    /// scene's `[goals]` list of the same kind where given (the file's read
+    /// from `source`, named `file` in its errors, which give the line).
+    pub fn asked(
+        (objectives, constraints): (&[String], &[String]),
+        (base, file, source): (&SceneFile, &str, &str),
+        scene: &Scene,
+        varied: &[String],
+    ) -> Result<Goals, ExploreError> {
+        let on_line = |list: &[Spanned<String>], key: &str, k: usize, e: GoalError| {
+            let ctx = ErrorContext::new(file, source);
+            ExploreError::Scene(ctx.error(
+                Some(&list[k].span()),
+                format!("goals.{key}[{}]", k + 1),
+                e.to_string(),
+            ))
+        };
+        let from_file = base.goals.clone().unwrap_or_default();
+        let mut goals = Goals::default();
+        match objectives.is_empty() {
+            false => {
+                goals.objectives =
+                    objectives.iter().map(|o| Objective::parse(o)).collect::<Result<_, _>>()?
+            }
+            true => {
+                for (k, o) in from_file.objectives.iter().enumerate() {
+                    let parsed = Objective::parse(o.get_ref())
+                        .and_then(|p| p.output.check(scene, varied).map(|()| p));
+                    goals.objectives.push(
+                        parsed.map_err(|e| on_line(&from_file.objectives, "objectives", k, e))?,
+                    );
+                }
+            }
+        }
+        match constraints.is_empty() {
+            false => {
+                goals.constraints =
+                    constraints.iter().map(|c| Constraint::parse(c)).collect::<Result<_, _>>()?
+            }
+            true => {
+                for (k, c) in from_file.constraints.iter().enumerate() {
+                    let parsed = Constraint::parse(c.get_ref())
+                        .and_then(|p| p.output.check(scene, varied).map(|()| p));
+                    goals.constraints.push(
+                        parsed.map_err(|e| on_line(&from_file.constraints, "constraints", k, e))?,
+                    );
+                }
+            }
+        }
+        let outputs = goals.objectives.iter().map(|o| &o.output);
+        for o in outputs.chain(goals.constraints.iter().map(|c| &c.output)) {
+            o.check(scene, varied)?;
+        }
+        Ok(goals)
     }
 
     pub fn is_empty(&self) -> bool {

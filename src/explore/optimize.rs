@@ -282,6 +282,12 @@ pub fn optimize(
     plan: &StudyPlan,
     tick: &(dyn Fn() + Sync),
 ) -> Result<OptimizeReport, SweepError> {
+    let n = spec.goals.objectives.len();
+    if n != 1 {
+        return Err(SweepError::Optimize(format!(
+            "an optimisation takes exactly one objective (given or from the scene's [goals]), got {n}"
+        )));
+    }
     let searched: Vec<usize> =
         (0..spec.sets.len()).filter(|&k| spec.sets[k].interval.is_some()).collect();
     let history = Mutex::new(Vec::new());

@@ -231,3 +231,58 @@ fn the_guide_optimisation_of_the_stage_reproduces() {
         assert!(guide.contains(line.trim_end()), "the guide lacks\n{line}");
     }
 }
+
+/// A scene's `[goals]` serve `optimize` and `sweep` where no objective or
+/// constraint is given, the same as given on the command line; a goal the
+/// scene cannot read is refused with its file, line and key.
+#[test]
+fn a_scenes_goals_are_the_command_lines() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(s01()).unwrap();
+    let with = |goals: &str| {
+        let p = dir.path().join("goals.toml");
+        std::fs::write(&p, format!("{text}\n[goals]\n{goals}\n")).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let s = with("objectives = [\"preload.force:max\"]\nconstraints = [\"sigma:centre:x<=6e-9\"]");
+    let args = [
+        "--sampler",
+        "mc",
+        "--samples",
+        "20",
+        "--seed",
+        "1",
+        "--vary",
+        "preload.force=5:40",
+        "--json",
+    ];
+    let (ok, from_file, err) = kinrepro(&[&["optimize", &s][..], &args[..]].concat());
+    assert!(ok, "{err}");
+    let flags = ["--objective", "preload.force:max", "--constraint", "sigma:centre:x<=6e-9"];
+    let (ok, given, err) = kinrepro(&[&["optimize", &s01()][..], &args[..], &flags[..]].concat());
+    assert!(ok, "{err}");
+    let (a, b): (serde_json::Value, serde_json::Value) =
+        (serde_json::from_str(&from_file).unwrap(), serde_json::from_str(&given).unwrap());
+    assert_eq!(a["optimum"], b["optimum"]);
+    // The sweep takes them too.
+    let (ok, sweep, err) = kinrepro(&[
+        "sweep",
+        &s,
+        "--set",
+        "preload.force=10,40",
+        "--samples",
+        "10",
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{err}");
+    let sweep: serde_json::Value = serde_json::from_str(&sweep).unwrap();
+    assert_eq!(sweep["objectives"][0]["path"], "preload.force");
+    // A bad goal in the file: file, line, key.
+    let bad = with("objectives = [\"sigma:tip:x:min\"]");
+    let (ok, _, err) =
+        kinrepro(&["optimize", &bad, "--vary", "preload.force=5:40", "--samples", "4"]);
+    let line = text.lines().count() + 3;
+    assert!(!ok && err.contains(&format!("goals.toml:{line}: goals.objectives[1]")), "{err}");
+    assert!(err.contains("no evaluation point `tip`"), "{err}");
+}

@@ -81,6 +81,22 @@ pub struct SceneFile {
     /// temperature cycle (`kinrepro thermal`, a study's thermal drift).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub thermal: Option<ThermalFile>,
+    /// What `sweep` and `optimize` seek when no objective or constraint is
+    /// given on the command line (docs/guide-design.md, "Objectives and
+    /// constraints"); the scene's physics does not read it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub goals: Option<GoalsFile>,
+}
+
+/// `[goals]`: objectives (`"sigma:tip:z:min"`) and constraints
+/// (`"sf_p>=3"`) in the language of `explore::goal`, checked there.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GoalsFile {
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub objectives: Vec<Spanned<String>>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub constraints: Vec<Spanned<String>>,
 }
 
 /// `[thermal]`: the body carrying the moving elements and the body carrying

@@ -24,9 +24,14 @@ pub fn optimize(a: OptimizeArgs) -> Result {
         .iter()
         .filter_map(|v| v.split_once('=').map(|(p, _)| p.trim().to_string()))
         .collect();
-    let goals = Goals::parse(std::slice::from_ref(&a.objective), &a.constraint, &scene, &varied)
-        .map_err(|e| Error::new(format!("{file}: {e}")))?;
-    let spec = OptimizeSpec::new(&file, &text, &a.vary, goals, a.max_iterations)?;
+    let mut spec = OptimizeSpec::new(&file, &text, &a.vary, Goals::default(), a.max_iterations)?;
+    let objectives: Vec<String> = a.objective.iter().cloned().collect();
+    let asked = (objectives.as_slice(), a.constraint.as_slice());
+    spec.goals =
+        Goals::asked(asked, (&spec.base, &file, &text), &scene, &varied).map_err(|e| match e {
+            kinrepro::explore::ExploreError::Goal(g) => Error::new(format!("{file}: {g}")),
+            e => e.into(),
+        })?;
     let options = StudyOptions {
         sampler: a.study.sampler,
         samples: a.study.samples,

@@ -61,8 +61,13 @@ pub fn sweep(s: Sweep) -> Result {
     let (scene, coupling) = kinrepro::error::parse_scene(&text, &file)?;
     let design = DesignKind::new(s.points, s.options.seed, &scene);
     let spec = SweepSpec::new(&file, &text, &s.sets, design)?;
-    let goals = Goals::parse(&s.objectives, &s.constraints, &scene, &spec.paths())
-        .map_err(|e| Error::new(format!("{file}: {e}")))?;
+    let asked = (s.objectives.as_slice(), s.constraints.as_slice());
+    let goals = Goals::asked(asked, (&spec.base, &file, &text), &scene, &spec.paths()).map_err(
+        |e| match e {
+            kinrepro::explore::ExploreError::Goal(g) => Error::new(format!("{file}: {g}")),
+            e => e.into(),
+        },
+    )?;
     let base = (scene.clone(), coupling.clone());
     let plan = study_plan(scene, coupling, &s.options)?;
     // One tick per seated sample (points that cannot seat tick none).

@@ -90,7 +90,8 @@ pub struct SweepArgs {
     #[arg(long, conflicts_with = "pareto_point")]
     pub objective: Vec<String>,
     /// OUTPUT<=VALUE or OUTPUT>=VALUE (SI): designs that break it are
-    /// listed apart, off the front (repeatable; e.g. sf_p>=3).
+    /// listed apart, off the front (repeatable; e.g. sf_p>=3). Objectives
+    /// and constraints given replace the scene's [goals] lists.
     #[arg(long)]
     pub constraint: Vec<String>,
     #[command(flatten)]
@@ -191,10 +192,12 @@ pub struct OptimizeArgs {
     /// lowest principal translational stiffness, N/m), sf_p (the smallest
     /// contact pressure safety factor), friction_margin (mu_lim -
     /// (mu_static + spread)) or a varied field such as preload.force.
+    /// Default: the scene's [goals] objectives (exactly one).
     #[arg(long)]
-    pub objective: String,
+    pub objective: Option<String>,
     /// OUTPUT<=VALUE or OUTPUT>=VALUE, VALUE in the output's SI unit
-    /// (e.g. sf_p>=3, k_min>=2e8, sigma:centre:x<=5e-9). Repeatable.
+    /// (e.g. sf_p>=3, k_min>=2e8, sigma:centre:x<=5e-9). Repeatable;
+    /// given, they replace the scene's [goals] constraints.
     #[arg(long)]
     pub constraint: Vec<String>,
     /// Most iterations of the Nelder-Mead search (per combination of listed values).
