@@ -12,6 +12,10 @@
 //!   pressure [1];
 //! * `friction_margin`: mu_lim - (mu_static + spread) [1] (positive: every
 //!   coefficient drawn is below the friction limit for seating);
+//! * `drift:POINT:DOF` and `residual:POINT:DOF` (a scene with `[thermal]`):
+//!   the largest |mean drift| of the point over the cycle's points, and the
+//!   |mean drift| at its last point (back at the seating temperature: the
+//!   residual), from each sample's own seated pose [m or rad];
 //! * a swept or varied scene field by its TOML path (`preload.force`).
 //!
 //! An [`Objective`] is `OUTPUT:min` or `OUTPUT:max`; a [`Constraint`] is
@@ -44,6 +48,16 @@ pub enum Output {
         point: String,
         measure: String,
     },
+    /// The largest |mean drift| over a `[thermal]` cycle's points.
+    Drift {
+        point: String,
+        measure: String,
+    },
+    /// The |mean drift| at the cycle's last point.
+    Residual {
+        point: String,
+        measure: String,
+    },
     KMin,
     SfP,
     FrictionMargin,
@@ -62,9 +76,11 @@ pub enum GoalError {
     Relation(String),
     #[error("`{text}`: the bound `{bound}` is not a finite number")]
     Bound { text: String, bound: String },
+    #[error("`{text}`: the scene has no [thermal] cycle to drift along")]
+    NoThermal { text: String },
     #[error(
-        "`{0}`: unknown output: expected sigma:POINT:DOF, pm3sigma:POINT:DOF, k_min, sf_p, \
-         friction_margin or a scene field such as preload.force"
+        "`{0}`: unknown output: expected sigma:POINT:DOF, pm3sigma:POINT:DOF, drift:POINT:DOF, \
+         residual:POINT:DOF, k_min, sf_p, friction_margin or a scene field such as preload.force"
     )]
     Unknown(String),
     #[error("`{text}`: no evaluation point `{point}` (the scene has {have})")]
@@ -96,6 +112,16 @@ impl Output {
                 point_measure(rest).ok_or_else(|| GoalError::Unknown(t.into()))?;
             return Ok(Output::Pm3sigma { point, measure });
         }
+        if let Some(rest) = t.strip_prefix("drift:") {
+            let (point, measure) =
+                point_measure(rest).ok_or_else(|| GoalError::Unknown(t.into()))?;
+            return Ok(Output::Drift { point, measure });
+        }
+        if let Some(rest) = t.strip_prefix("residual:") {
+            let (point, measure) =
+                point_measure(rest).ok_or_else(|| GoalError::Unknown(t.into()))?;
+            return Ok(Output::Residual { point, measure });
+        }
         match t {
             "k_min" => Ok(Output::KMin),
             "sf_p" => Ok(Output::SfP),
@@ -112,6 +138,8 @@ impl Output {
         match self {
             Output::Sigma { point, measure } => format!("sigma:{point}:{measure}"),
             Output::Pm3sigma { point, measure } => format!("pm3sigma:{point}:{measure}"),
+            Output::Drift { point, measure } => format!("drift:{point}:{measure}"),
+            Output::Residual { point, measure } => format!("residual:{point}:{measure}"),
             Output::KMin => "k_min".into(),
             Output::SfP => "sf_p".into(),
             Output::FrictionMargin => "friction_margin".into(),
@@ -122,7 +150,10 @@ impl Output {
     /// Its SI unit (`m`, `rad`, `N/m`, `1`; a field's: empty).
     pub fn unit(&self) -> &'static str {
         match self {
-            Output::Sigma { measure, .. } | Output::Pm3sigma { measure, .. } => {
+            Output::Sigma { measure, .. }
+            | Output::Pm3sigma { measure, .. }
+            | Output::Drift { measure, .. }
+            | Output::Residual { measure, .. } => {
                 let rotation = Dof::from_name(measure).is_some_and(Dof::is_rotation)
                     || measure.starts_with("about ");
                 if rotation { "rad" } else { "m" }
@@ -138,7 +169,13 @@ impl Output {
     pub fn check(&self, scene: &Scene, varied: &[String]) -> Result<(), GoalError> {
         let text = self.name();
         match self {
-            Output::Sigma { point, measure } | Output::Pm3sigma { point, measure } => {
+            Output::Drift { .. } | Output::Residual { .. } if scene.thermal.is_none() => {
+                Err(GoalError::NoThermal { text })
+            }
+            Output::Sigma { point, measure }
+            | Output::Pm3sigma { point, measure }
+            | Output::Drift { point, measure }
+            | Output::Residual { point, measure } => {
                 let points = &scene.evaluation_points;
                 let Some(p) = points.iter().find(|p| p.name == *point) else {
                     let have = points.iter().map(|p| format!("`{}`", p.name)).collect::<Vec<_>>();
@@ -183,6 +220,8 @@ impl Output {
         match self {
             Output::Sigma { point, measure } => point_value(d, point, measure, false),
             Output::Pm3sigma { point, measure } => point_value(d, point, measure, true),
+            Output::Drift { point, measure } => drift_value(d, point, measure, false),
+            Output::Residual { point, measure } => drift_value(d, point, measure, true),
             Output::KMin => d.principal_stiffness_n_per_m.map(|k| k[0]),
             Output::SfP => d.min_pressure_safety_factor,
             Output::FrictionMargin => d.friction_limit_margin,
@@ -212,6 +251,26 @@ fn point_value(d: &DesignReport, point: &str, measure: &str, three: bool) -> Opt
     }
     let s = p.directions.iter().find(|s| direction_matches(measure, &s.name, s.kind == "about"))?;
     Some(if three { s.three_sigma } else { s.sigma } / NANO)
+}
+
+/// The largest |mean drift| of `measure` at `point` of `d` over the cycle
+/// points, or (`last`) the |mean drift| at the last [m or rad].
+fn drift_value(d: &DesignReport, point: &str, measure: &str, last: bool) -> Option<f64> {
+    let p = d.points.iter().find(|p| p.name == point)?;
+    let mean = |c: &crate::study::record::CycleStats| -> Option<f64> {
+        if let Some(dof) = Dof::from_name(measure) {
+            return Some(c.drift.mean.values()[dof.index()].abs() / NANO);
+        }
+        let s = (c.drift.directions.iter())
+            .find(|s| direction_matches(measure, &s.name, s.kind == "about"))?;
+        Some(s.mean.abs() / NANO)
+    };
+    match last {
+        true => mean(p.thermal.last()?),
+        false => {
+            p.thermal.iter().map(mean).collect::<Option<Vec<f64>>>()?.into_iter().reduce(f64::max)
+        }
+    }
 }
 
 /// Lower or higher is better.

@@ -448,12 +448,37 @@ fn statistical_error(goals: &Goals, d: &DesignReport) -> String {
     )
 }
 
+/// `value (standard error s / sqrt(n))` of a mean drift output at `d`:
+/// the drift's sigma s at the cycle point the output reads, over n
+/// samples (the standard error of a mean of independent draws; a Latin
+/// hypercube's is smaller).
+fn mean_error(o: &Output, d: &DesignReport, point: &str) -> Option<String> {
+    let value = o.value(d)?;
+    let p = d.points.iter().find(|p| p.name == point)?;
+    // The cycle point whose |mean| the output is: the last, or the largest.
+    let unit = if o.unit() == "rad" { 3 } else { 0 };
+    let largest = p
+        .thermal
+        .iter()
+        .map(|c| c.drift.sigma.values()[unit..unit + 3].iter().cloned().fold(0.0, f64::max))
+        .fold(0.0, f64::max);
+    let n = p.n.max(1) as f64;
+    Some(format!(
+        "{value:.4e} (standard error of the mean at most {:.4e}: the largest drift sigma over the cycle / sqrt({}) for independent draws; a Latin hypercube's is smaller)",
+        largest / crate::dof::NANO / n.sqrt(),
+        p.n
+    ))
+}
+
 /// `value [low, high] (method, n)` of a sigma or 3-sigma output at `d`
 /// (SI), None for another output.
 fn sampled_interval(o: &Output, d: &DesignReport) -> Option<String> {
     let (point, measure, factor) = match o {
         Output::Sigma { point, measure } => (point, measure, 1.0),
         Output::Pm3sigma { point, measure } => (point, measure, 3.0),
+        Output::Drift { point, .. } | Output::Residual { point, .. } => {
+            return mean_error(o, d, point);
+        }
         _ => return None,
     };
     let value = o.value(d)?;

@@ -286,3 +286,56 @@ fn a_scenes_goals_are_the_command_lines() {
     assert!(!ok && err.contains(&format!("goals.toml:{line}: goals.objectives[1]")), "{err}");
     assert!(err.contains("no evaluation point `tip`"), "{err}");
 }
+
+/// A `[thermal]` scene's residual and drift are outputs: the optimum's
+/// residual is the |mean drift| at the cycle's last point of a study of
+/// the optimum's preload (the study's own JSON, read here), and its
+/// largest drift bounds a constraint.
+#[test]
+fn thermal_residual_and_drift_are_objectives_and_constraints() {
+    let th = scene("maxwell_thermal_alu_invar.toml");
+    let th = th.to_str().unwrap();
+    let args = ["--vary", "preload.force=20:120", "--samples", "12", "--sampler", "mc", "--json"];
+    let goals =
+        ["--objective", "residual:tool tip:x:min", "--constraint", "drift:tool tip:x<=1e-3"];
+    let (ok, out, err) = kinrepro(&[&["optimize", th][..], &args[..], &goals[..]].concat());
+    assert!(ok, "{err}");
+    let r: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let f = r["optimum"]["fields"]["preload.force"].as_f64().unwrap();
+    let residual = r["optimum"]["objective"].as_f64().unwrap();
+    let text = std::fs::read_to_string(th).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("t.toml");
+    let set = text.replacen("force = 20.0 ", &format!("force = {f} "), 1);
+    assert_ne!(set, text);
+    std::fs::write(&p, set).unwrap();
+    let study =
+        ["study", p.to_str().unwrap(), "--samples", "12", "--sampler", "mc", "--format", "json"];
+    let (ok, out, err) = kinrepro(&study);
+    assert!(ok, "{err}");
+    let s: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let tip = s["variants"][0]["points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| p["name"] == "tool tip")
+        .unwrap();
+    let cycle = tip["thermal"].as_array().unwrap();
+    let last = cycle.last().unwrap()["mean"]["x_nm"].as_f64().unwrap().abs() * 1e-9;
+    assert!((residual / last - 1.0).abs() < 1e-12, "{residual} vs {last}");
+    let drift =
+        cycle.iter().map(|c| c["mean"]["x_nm"].as_f64().unwrap().abs() * 1e-9).fold(0.0, f64::max);
+    assert!(drift <= 1e-3 && drift >= residual);
+    // A scene without [thermal] has no drift.
+    let (ok, _, err) = kinrepro(&[
+        "optimize",
+        &s01(),
+        "--vary",
+        "preload.force=5:40",
+        "--objective",
+        "drift:centre:x:min",
+        "--samples",
+        "4",
+    ]);
+    assert!(!ok && err.contains("no [thermal] cycle"), "{err}");
+}

@@ -377,8 +377,15 @@ fn pareto_chart(r: &SweepReport, area: &Area) -> Result<(), SweepPlotError> {
 fn objective_axis(o: &Objective) -> (f64, String) {
     let name = o.name();
     match (&o.output, o.output.unit()) {
-        (Output::Sigma { .. } | Output::Pm3sigma { .. }, "m") => (1e9, format!("{name} [nm]")),
-        (Output::Sigma { .. } | Output::Pm3sigma { .. }, _) => (1e9, format!("{name} [nrad]")),
+        (
+            Output::Sigma { .. }
+            | Output::Pm3sigma { .. }
+            | Output::Drift { .. }
+            | Output::Residual { .. },
+            unit,
+        ) if unit == "m" || unit == "rad" => {
+            (1e9, format!("{name} [{}]", if unit == "m" { "nm" } else { "nrad" }))
+        }
         (Output::KMin, _) => (1e-6, format!("{name} [N/µm]")),
         _ => (1.0, name),
     }
