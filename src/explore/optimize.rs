@@ -26,6 +26,7 @@ use std::sync::Mutex;
 
 use argmin::core::{CostFunction, Executor, State};
 use argmin::solver::neldermead::NelderMead;
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::design_report::{DesignReport, design_report};
@@ -290,28 +291,43 @@ pub fn optimize(
     }
     let searched: Vec<usize> =
         (0..spec.sets.len()).filter(|&k| spec.sets[k].interval.is_some()).collect();
-    let history = Mutex::new(Vec::new());
+    // One search per combination of listed values, the combinations in
+    // parallel (rayon), their histories joined in combination order: the
+    // result does not depend on the number of threads.
+    let runs: Vec<(Vec<(Candidate, DesignReport)>, String)> = combinations(&spec.sets)
+        .into_par_iter()
+        .map(|fixed| {
+            let (history, scale) = (Mutex::new(Vec::new()), Mutex::new(None));
+            let search = Search {
+                spec,
+                plan,
+                fixed,
+                searched: searched.clone(),
+                history: &history,
+                scale: &scale,
+                friction_limit: spec.goals.reads_friction_limit(),
+                tick,
+            };
+            let reason = match searched.is_empty() {
+                true => {
+                    let _ = search.cost(&Vec::new());
+                    "nothing to search: every field is a list".to_string()
+                }
+                false => restarted(&search, searched.len(), spec.max_iterations)?,
+            };
+            let h = history.into_inner().map_err(|_| SweepError::Optimize("history".into()))?;
+            Ok((h, reason))
+        })
+        .collect::<Result<_, SweepError>>()?;
     let mut termination = Vec::new();
-    for fixed in combinations(&spec.sets) {
-        let scale = Mutex::new(None);
-        let search = Search {
-            spec,
-            plan,
-            fixed,
-            searched: searched.clone(),
-            history: &history,
-            scale: &scale,
-            friction_limit: spec.goals.reads_friction_limit(),
-            tick,
-        };
-        if searched.is_empty() {
-            let _ = search.cost(&Vec::new());
-            termination.push("nothing to search: every field is a list".to_string());
-            continue;
-        }
-        termination.push(restarted(&search, searched.len(), spec.max_iterations)?);
+    let mut history: Vec<(Candidate, DesignReport)> = Vec::new();
+    for (h, reason) in runs {
+        history.extend(h);
+        termination.push(reason);
     }
-    let mut history = history.into_inner().map_err(|_| SweepError::Optimize("history".into()))?;
+    for (i, (c, d)) in history.iter_mut().enumerate() {
+        (c.evaluation, d.index) = (i + 1, i);
+    }
     // The optimum's nominal checks in full (the candidates skipped the
     // friction limit unless a goal read it).
     if let Some(i) = best(&history, &spec.goals.objectives[0]) {

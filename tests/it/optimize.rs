@@ -339,3 +339,50 @@ fn thermal_residual_and_drift_are_objectives_and_constraints() {
     ]);
     assert!(!ok && err.contains("no [thermal] cycle"), "{err}");
 }
+
+/// Listed values are enumerated, one search each (in parallel): the best
+/// of the searches, the same with one thread or two.
+#[test]
+fn listed_fields_are_enumerated_and_threads_do_not_change_the_result() {
+    let s = s01();
+    let run = |jobs: &str| {
+        let (ok, out, err) = kinrepro(&[
+            "optimize",
+            &s,
+            "--vary",
+            "preload.force=5:40",
+            "--vary",
+            "coupling.ball_material=steel,silicon-carbide",
+            "--objective",
+            "k_min:max",
+            "--constraint",
+            "sigma:centre:x<=4e-9",
+            "--samples",
+            "10",
+            "--sampler",
+            "mc",
+            "--jobs",
+            jobs,
+            "--json",
+        ]);
+        assert!(ok, "{err}");
+        serde_json::from_str::<serde_json::Value>(&out).unwrap()
+    };
+    let (one, two) = (run("1"), run("2"));
+    assert_eq!(one["optimum"], two["optimum"]);
+    assert_eq!(one["history"], two["history"]);
+    assert_eq!(one["termination"].as_array().unwrap().len(), 2, "one search per material");
+    let materials: Vec<&str> = (one["history"].as_array().unwrap().iter())
+        .map(|c| c["fields"]["coupling.ball_material"].as_str().unwrap())
+        .collect();
+    assert!(materials.contains(&"steel") && materials.contains(&"silicon-carbide"));
+    // The optimum is the better of the two materials' best feasible candidates.
+    let best = |m: &str| {
+        (one["history"].as_array().unwrap().iter())
+            .filter(|c| c["feasible"] == true && c["fields"]["coupling.ball_material"] == m)
+            .map(|c| c["objective"].as_f64().unwrap())
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let optimum = one["optimum"]["objective"].as_f64().unwrap();
+    assert_eq!(optimum, best("steel").max(best("silicon-carbide")));
+}
