@@ -51,6 +51,8 @@ pub enum Param {
     Jobs,
     /// The temperature changes a thermal path visits.
     Cycle,
+    /// The iterations of an optimisation's search.
+    MaxIterations,
 }
 
 impl Param {
@@ -85,6 +87,7 @@ impl Param {
             Param::Force => "force",
             Param::Jobs => "jobs",
             Param::Cycle => "cycle",
+            Param::MaxIterations => "max_iterations",
         }
     }
 

@@ -259,8 +259,21 @@ impl OptimizeSpec {
                 ExploreError::Values { path, spec, reason } => {
                     ExploreError::Vary { path, spec, reason: reason.to_string() }
                 }
+                ExploreError::Field { path, reason } => {
+                    let spec = a.split_once('=').map_or("", |(_, v)| v).trim().to_string();
+                    ExploreError::Vary { path, spec, reason: reason.to_string() }
+                }
+                ExploreError::SetSyntax { arg } => ExploreError::Vary {
+                    path: arg,
+                    spec: String::new(),
+                    reason: "expected FIELD=LOW:HIGH or FIELD=A,B,...".to_string(),
+                },
                 e => e,
             })?;
+            if sets.iter().any(|o: &Set| o.path == s.path) {
+                let reason = "the field is varied twice".to_string();
+                return Err(ExploreError::Vary { path: s.path, spec: s.spec, reason });
+            }
             // A range's count (a grid's) has no meaning here.
             if s.interval.is_some() {
                 s.levels = Levels::Numbers(Vec::new());
@@ -283,6 +296,10 @@ pub fn optimize(
     plan: &StudyPlan,
     tick: &(dyn Fn() + Sync),
 ) -> Result<OptimizeReport, SweepError> {
+    if spec.max_iterations == 0 {
+        let at = Param::MaxIterations.with(0);
+        return Err(SweepError::Optimize(format!("{at}: the search needs at least 1 iteration")));
+    }
     let n = spec.goals.objectives.len();
     if n != 1 {
         return Err(SweepError::Optimize(format!(
@@ -533,9 +550,4 @@ impl OptimizeReport {
             self.scene
         )
     }
-}
-
-/// `Param::Vary` for messages about an optimisation's ranges.
-pub fn vary_param() -> Param {
-    Param::Vary
 }

@@ -188,7 +188,9 @@ pub struct OptimizeArgs {
     pub vary: Vec<String>,
     /// OUTPUT:min or OUTPUT:max, the one objective. OUTPUT is
     /// sigma:POINT:DOF or pm3sigma:POINT:DOF (DOF: x, y, z, phi_x, phi_y,
-    /// phi_z, or a direction's name at the point; m or rad), k_min (the
+    /// phi_z, or a direction's name at the point; m or rad),
+    /// drift:POINT:DOF or residual:POINT:DOF (a [thermal] cycle's largest
+    /// and final |mean drift|), k_min (the
     /// lowest principal translational stiffness, N/m), sf_p (the smallest
     /// contact pressure safety factor), friction_margin (mu_lim -
     /// (mu_static + spread)) or a varied field such as preload.force.
