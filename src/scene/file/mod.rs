@@ -6,11 +6,13 @@
 //! `[[surfaces]]`. Both share `[preload]`, `[friction]`, `[study]`,
 //! `[[evaluation_points]]` and `[[materials]]`. See docs/scenes.md.
 
+mod goals;
 mod points;
 
 use serde::{Deserialize, Serialize};
 use toml::Spanned;
 
+pub use goals::GoalsFile;
 pub use points::{DirectionFile, EvaluationPointFile, FrameFile};
 
 use crate::contact::TangentialLaw;
@@ -86,17 +88,6 @@ pub struct SceneFile {
     /// constraints"); the scene's physics does not read it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub goals: Option<GoalsFile>,
-}
-
-/// `[goals]`: objectives (`"sigma:tip:z:min"`) and constraints
-/// (`"sf_p>=3"`) in the language of `explore::goal`, checked there.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct GoalsFile {
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub objectives: Vec<Spanned<String>>,
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub constraints: Vec<Spanned<String>>,
 }
 
 /// `[thermal]`: the body carrying the moving elements and the body carrying

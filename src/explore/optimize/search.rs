@@ -1,0 +1,149 @@
+//! The search of one combination of listed values: the penalised cost of
+//! a candidate ([`Search`], argmin's cost function, which records every
+//! candidate) and Nelder-Mead with restarts ([`restarted`]).
+
+use std::collections::BTreeMap;
+use std::sync::Mutex;
+
+use argmin::core::{CostFunction, Executor, State};
+use argmin::solver::neldermead::NelderMead;
+
+use super::{COST_TOLERANCE, Candidate, OptimizeSpec, PENALTY, RESTARTS};
+use crate::explore::design_report::{DesignReport, design_report};
+use crate::explore::goal::{Objective, Sense};
+use crate::explore::run::SweepError;
+use crate::explore::{SweptValue, evaluate, point_file};
+use crate::study::StudyPlan;
+
+/// The search's cost function: each call evaluates a candidate (or
+/// returns its cost from the history) and records it.
+#[derive(Clone)]
+pub(super) struct Search<'a> {
+    pub(super) spec: &'a OptimizeSpec,
+    pub(super) plan: &'a StudyPlan,
+    /// The listed values of this combination, by field.
+    pub(super) fixed: Vec<(usize, SweptValue)>,
+    /// The searched fields' indices in `spec.sets`.
+    pub(super) searched: Vec<usize>,
+    pub(super) history: &'a Mutex<Vec<(Candidate, DesignReport)>>,
+    pub(super) scale: &'a Mutex<Option<f64>>,
+    /// Compute the friction limit (a goal reads `friction_margin`).
+    pub(super) friction_limit: bool,
+    pub(super) tick: &'a (dyn Fn() + Sync),
+}
+
+impl Search<'_> {
+    /// The design point of unit coordinates `u` (clamped into the box).
+    fn values(&self, u: &[f64]) -> Vec<SweptValue> {
+        let mut values: Vec<SweptValue> = vec![SweptValue::Number(f64::NAN); self.spec.sets.len()];
+        for (k, v) in &self.fixed {
+            values[*k] = v.clone();
+        }
+        for (&k, &x) in self.searched.iter().zip(u) {
+            let interval = self.spec.sets[k].interval.expect("a searched field has a range");
+            values[k] = SweptValue::Number(interval.at(x.clamp(0.0, 1.0)));
+        }
+        values
+    }
+
+    /// Evaluate `u`: the candidate and its design report.
+    fn candidate(&self, u: &[f64]) -> (Candidate, DesignReport) {
+        let spec = self.spec;
+        let values = self.values(u);
+        let file = point_file(&spec.base, &spec.sets, &values);
+        let fields: BTreeMap<String, SweptValue> =
+            spec.sets.iter().map(|s| s.path.clone()).zip(values.iter().cloned()).collect();
+        let label = format!("{} {:?}", spec.file, fields);
+        let base = (&self.plan.variants[0], self.friction_limit);
+        let e = evaluate(file, &spec.text, &label, self.plan, base, self.tick);
+        let evaluation = self.history.lock().map_or(0, |h| h.len()) + 1;
+        let d = design_report(evaluation - 1, fields.clone(), e);
+        let objective = self.objective().output.value(&d);
+        let margins: Vec<Option<f64>> =
+            spec.goals.constraints.iter().map(|c| c.margin(&d)).collect();
+        let feasible = d.status == "ok" && margins.iter().all(|m| m.is_some_and(|m| m >= 0.0));
+        let outside: f64 = u.iter().map(|x| (x - x.clamp(0.0, 1.0)).powi(2)).sum();
+        let cost = match (objective, d.status == "ok") {
+            (Some(f), true) => {
+                let scale = *self.scale.lock().expect("scale").get_or_insert(f.abs().max(1e-300));
+                let sign = if self.objective().sense == Sense::Min { 1.0 } else { -1.0 };
+                let violation: f64 = (spec.goals.constraints.iter().zip(&margins))
+                    .map(|(c, m)| m.map_or(1.0, |m| (-m).max(0.0) / c.bound.abs().max(1e-300)))
+                    .sum();
+                sign * f / scale + PENALTY * (violation + outside)
+            }
+            _ => PENALTY * PENALTY * (1.0 + outside),
+        };
+        let c = Candidate {
+            evaluation,
+            fields,
+            objective,
+            margins,
+            feasible,
+            cost,
+            status: d.status.clone(),
+        };
+        (c, d)
+    }
+
+    fn objective(&self) -> &Objective {
+        &self.spec.goals.objectives[0]
+    }
+}
+
+impl CostFunction for Search<'_> {
+    type Param = Vec<f64>;
+    type Output = f64;
+
+    fn cost(&self, u: &Vec<f64>) -> Result<f64, argmin::core::Error> {
+        if crate::cancel::requested() {
+            return Err(argmin::core::Error::msg("stopped: a stop was requested"));
+        }
+        let (c, d) = self.candidate(u);
+        let cost = c.cost;
+        self.history.lock().map_err(|_| argmin::core::Error::msg("history"))?.push((c, d));
+        Ok(cost)
+    }
+}
+
+/// Nelder-Mead from the centre of the unit cube (simplex edge 0.25), then
+/// restarted from the best point with half the edge while a restart
+/// lowers the cost (at most [`RESTARTS`]): a simplex that collapsed on a
+/// kink of the cost (a constraint's bound, a change of the contacts'
+/// stick-slip pattern) starts afresh there. Why the last search stopped.
+pub(super) fn restarted(
+    search: &Search<'_>,
+    d: usize,
+    max_iterations: u64,
+) -> Result<String, SweepError> {
+    let (mut start, mut edge, mut last) = (vec![0.5; d], 0.25, f64::INFINITY);
+    let mut reason = String::new();
+    for restart in 0..=RESTARTS {
+        let simplex: Vec<Vec<f64>> = std::iter::once(start.clone())
+            .chain((0..d).map(|i| {
+                let mut v = start.clone();
+                v[i] += if v[i] + edge <= 1.0 { edge } else { -edge };
+                v
+            }))
+            .collect();
+        let solver = NelderMead::new(simplex)
+            .with_sd_tolerance(COST_TOLERANCE)
+            .map_err(|e| SweepError::Optimize(e.to_string()))?;
+        let res = Executor::new(search.clone(), solver)
+            .configure(|s| s.max_iters(max_iterations))
+            .run()
+            .map_err(|e| SweepError::Optimize(e.to_string()))?;
+        let state = res.state();
+        reason = match state.get_termination_reason() {
+            Some(r) => format!("{} (search {})", r.text(), restart + 1),
+            None => "running".to_string(),
+        };
+        let cost = state.get_best_cost();
+        let Some(best) = state.get_best_param() else { break };
+        if cost >= last - 1e-9 * last.abs() {
+            break;
+        }
+        (start, edge, last) = (best.iter().map(|x| x.clamp(0.0, 1.0)).collect(), edge / 2.0, cost);
+    }
+    Ok(reason)
+}
