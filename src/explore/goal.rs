@@ -273,6 +273,30 @@ fn drift_value(d: &DesignReport, point: &str, measure: &str, last: bool) -> Opti
     }
 }
 
+/// One list of goals: `given` parsed where given, else the scene's
+/// `[goals]` list `key` parsed and checked by `check` item by item, an
+/// error naming the item's line.
+fn one_list<T>(
+    given: &[String],
+    (listed, key): (&[Spanned<String>], &str),
+    ctx: &ErrorContext,
+    parse: fn(&str) -> Result<T, GoalError>,
+    check: impl Fn(&T) -> Result<(), GoalError>,
+) -> Result<Vec<T>, ExploreError> {
+    if !given.is_empty() {
+        return Ok(given.iter().map(|g| parse(g)).collect::<Result<_, _>>()?);
+    }
+    let mut out = Vec::new();
+    for (k, item) in listed.iter().enumerate() {
+        let parsed = parse(item.get_ref()).and_then(|p| check(&p).map(|()| p));
+        let field = format!("goals.{key}[{}]", k + 1);
+        out.push(parsed.map_err(|e| {
+            ExploreError::Scene(ctx.error(Some(&item.span()), field, e.to_string()))
+        })?);
+    }
+    Ok(out)
+}
+
 /// Lower or higher is better.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -419,46 +443,25 @@ impl Goals {
         scene: &Scene,
         varied: &[String],
     ) -> Result<Goals, ExploreError> {
-        let on_line = |list: &[Spanned<String>], key: &str, k: usize, e: GoalError| {
-            let ctx = ErrorContext::new(file, source);
-            ExploreError::Scene(ctx.error(
-                Some(&list[k].span()),
-                format!("goals.{key}[{}]", k + 1),
-                e.to_string(),
-            ))
-        };
         let from_file = base.goals.clone().unwrap_or_default();
-        let mut goals = Goals::default();
-        match objectives.is_empty() {
-            false => {
-                goals.objectives =
-                    objectives.iter().map(|o| Objective::parse(o)).collect::<Result<_, _>>()?
-            }
-            true => {
-                for (k, o) in from_file.objectives.iter().enumerate() {
-                    let parsed = Objective::parse(o.get_ref())
-                        .and_then(|p| p.output.check(scene, varied).map(|()| p));
-                    goals.objectives.push(
-                        parsed.map_err(|e| on_line(&from_file.objectives, "objectives", k, e))?,
-                    );
-                }
-            }
-        }
-        match constraints.is_empty() {
-            false => {
-                goals.constraints =
-                    constraints.iter().map(|c| Constraint::parse(c)).collect::<Result<_, _>>()?
-            }
-            true => {
-                for (k, c) in from_file.constraints.iter().enumerate() {
-                    let parsed = Constraint::parse(c.get_ref())
-                        .and_then(|p| p.output.check(scene, varied).map(|()| p));
-                    goals.constraints.push(
-                        parsed.map_err(|e| on_line(&from_file.constraints, "constraints", k, e))?,
-                    );
-                }
-            }
-        }
+        let ctx = ErrorContext::new(file, source);
+        let check = |o: &Output| o.check(scene, varied);
+        let goals = Goals {
+            objectives: one_list(
+                objectives,
+                (&from_file.objectives, "objectives"),
+                &ctx,
+                Objective::parse,
+                |o| check(&o.output),
+            )?,
+            constraints: one_list(
+                constraints,
+                (&from_file.constraints, "constraints"),
+                &ctx,
+                Constraint::parse,
+                |c| check(&c.output),
+            )?,
+        };
         let outputs = goals.objectives.iter().map(|o| &o.output);
         for o in outputs.chain(goals.constraints.iter().map(|c| &c.output)) {
             o.check(scene, varied)?;
