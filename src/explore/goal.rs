@@ -235,7 +235,7 @@ impl Output {
 
 /// True if `measure` names the direction `name` (`NAME` or `along NAME`
 /// for a translation, `about NAME` for a rotation).
-fn direction_matches(measure: &str, name: &str, rotation: bool) -> bool {
+pub(crate) fn direction_matches(measure: &str, name: &str, rotation: bool) -> bool {
     match rotation {
         true => measure.strip_prefix("about ") == Some(name),
         false => measure == name || measure.strip_prefix("along ") == Some(name),
@@ -273,9 +273,9 @@ fn drift_value(d: &DesignReport, point: &str, measure: &str, last: bool) -> Opti
     }
 }
 
-/// One list of goals: `given` parsed where given, else the scene's
-/// `[goals]` list `key` parsed and checked by `check` item by item, an
-/// error naming the item's line.
+/// One list of goals, each parsed and checked by `check`: `given` where
+/// given, else the scene's `[goals]` list `key`, whose errors name the
+/// item's line.
 fn one_list<T>(
     given: &[String],
     (listed, key): (&[Spanned<String>], &str),
@@ -284,7 +284,8 @@ fn one_list<T>(
     check: impl Fn(&T) -> Result<(), GoalError>,
 ) -> Result<Vec<T>, ExploreError> {
     if !given.is_empty() {
-        return Ok(given.iter().map(|g| parse(g)).collect::<Result<_, _>>()?);
+        let each = given.iter().map(|g| parse(g).and_then(|p| check(&p).map(|()| p)));
+        return Ok(each.collect::<Result<_, _>>()?);
     }
     let mut out = Vec::new();
     for (k, item) in listed.iter().enumerate() {
@@ -405,26 +406,6 @@ pub struct Goals {
 }
 
 impl Goals {
-    /// Parse `--objective` and `--constraint` texts and check them against
-    /// the base scene and the varied fields.
-    pub fn parse(
-        objectives: &[String],
-        constraints: &[String],
-        scene: &Scene,
-        varied: &[String],
-    ) -> Result<Goals, GoalError> {
-        let objectives: Vec<Objective> =
-            objectives.iter().map(|o| Objective::parse(o)).collect::<Result<_, _>>()?;
-        let constraints: Vec<Constraint> =
-            constraints.iter().map(|c| Constraint::parse(c)).collect::<Result<_, _>>()?;
-        let outputs =
-            objectives.iter().map(|o| &o.output).chain(constraints.iter().map(|c| &c.output));
-        for o in outputs {
-            o.check(scene, varied)?;
-        }
-        Ok(Goals { objectives, constraints })
-    }
-
     /// True if an objective or a constraint reads the friction margin.
     pub fn reads_friction_limit(&self) -> bool {
         let outputs = self.objectives.iter().map(|o| &o.output);
@@ -462,10 +443,6 @@ impl Goals {
                 |c| check(&c.output),
             )?,
         };
-        let outputs = goals.objectives.iter().map(|o| &o.output);
-        for o in outputs.chain(goals.constraints.iter().map(|c| &c.output)) {
-            o.check(scene, varied)?;
-        }
         Ok(goals)
     }
 

@@ -196,6 +196,24 @@ impl OptimizeSpec {
         Ok(OptimizeSpec { file: file.into(), text: text.into(), base, sets, goals, max_iterations })
     }
 
+    /// The design point of `values` (one per field) evaluated with the
+    /// study of `plan` (and the friction limit if `friction_limit`): its
+    /// fields by path and its report.
+    pub(crate) fn evaluate(
+        &self,
+        plan: &StudyPlan,
+        values: &[SweptValue],
+        friction_limit: bool,
+        tick: &(dyn Fn() + Sync),
+    ) -> (BTreeMap<String, SweptValue>, DesignReport) {
+        let file = point_file(&self.base, &self.sets, values);
+        let fields: BTreeMap<String, SweptValue> =
+            self.sets.iter().map(|s| s.path.clone()).zip(values.iter().cloned()).collect();
+        let label = format!("{} {:?}", self.file, fields);
+        let e = evaluate(file, &self.text, &label, plan, (&plan.variants[0], friction_limit), tick);
+        (fields.clone(), design_report(0, fields, e))
+    }
+
     /// The fields varied, by path.
     pub fn paths(&self) -> Vec<String> {
         self.sets.iter().map(|s| s.path.clone()).collect()
@@ -235,7 +253,6 @@ pub fn optimize(
                 searched: searched.clone(),
                 history: &history,
                 scale: &scale,
-                friction_limit: spec.goals.reads_friction_limit(),
                 tick,
             };
             let reason = match searched.is_empty() {
@@ -263,10 +280,8 @@ pub fn optimize(
     if let Some(i) = best(&history, &spec.goals.objectives[0]) {
         let values: Vec<SweptValue> =
             spec.sets.iter().map(|s| history[i].0.fields[&s.path].clone()).collect();
-        let file = point_file(&spec.base, &spec.sets, &values);
-        let label = format!("{} {:?}", spec.file, history[i].0.fields);
-        let e = evaluate(file, &spec.text, &label, plan, (&plan.variants[0], true), tick);
-        history[i].1 = design_report(i, history[i].0.fields.clone(), e);
+        history[i].1 = spec.evaluate(plan, &values, true, tick).1;
+        history[i].1.index = i;
     }
     Ok(report(spec, plan, history, termination))
 }

@@ -5,7 +5,7 @@
 use super::{COST_TOLERANCE, PENALTY};
 use super::{Candidate, Margin, OptimizeReport, OptimizeSpec, Optimum};
 use crate::explore::design_report::DesignReport;
-use crate::explore::goal::{Goals, Objective, Output, Sense};
+use crate::explore::goal::{Goals, Objective, Output, Sense, direction_matches};
 use crate::explore::run::SetRecord;
 use crate::study::StudyPlan;
 use crate::study::provenance::{SCHEMA_VERSION, VERSION, produced_by};
@@ -134,7 +134,8 @@ fn sampled_interval(o: &Output, d: &DesignReport) -> Option<String> {
         let (l, h) = p.sigma_ci90_low.zip(p.sigma_ci90_high)?;
         Some([l.si()[dof.index()], h.si()[dof.index()]])
     } else {
-        let s = p.directions.iter().find(|s| s.name == *measure || s.label() == *measure)?;
+        let s = (p.directions.iter())
+            .find(|s| direction_matches(measure, &s.name, s.kind == "about"))?;
         s.interval().map(|[l, h]| [l / crate::dof::NANO, h / crate::dof::NANO])
     };
     Some(match interval {

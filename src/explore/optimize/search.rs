@@ -2,21 +2,20 @@
 //! a candidate ([`Search`], argmin's cost function, which records every
 //! candidate) and Nelder-Mead with restarts ([`restarted`]).
 
-use std::collections::BTreeMap;
 use std::sync::Mutex;
 
 use argmin::core::{CostFunction, Executor, State};
 use argmin::solver::neldermead::NelderMead;
 
 use super::{COST_TOLERANCE, Candidate, OptimizeSpec, PENALTY, RESTARTS};
-use crate::explore::design_report::{DesignReport, design_report};
+use crate::explore::SweptValue;
+use crate::explore::design_report::DesignReport;
 use crate::explore::goal::{Objective, Sense};
 use crate::explore::run::SweepError;
-use crate::explore::{SweptValue, evaluate, point_file};
 use crate::study::StudyPlan;
 
-/// The search's cost function: each call evaluates a candidate (or
-/// returns its cost from the history) and records it.
+/// The search's cost function: each call evaluates a candidate and
+/// records it (numbered when the searches' histories are joined).
 #[derive(Clone)]
 pub(super) struct Search<'a> {
     pub(super) spec: &'a OptimizeSpec,
@@ -27,8 +26,6 @@ pub(super) struct Search<'a> {
     pub(super) searched: Vec<usize>,
     pub(super) history: &'a Mutex<Vec<(Candidate, DesignReport)>>,
     pub(super) scale: &'a Mutex<Option<f64>>,
-    /// Compute the friction limit (a goal reads `friction_margin`).
-    pub(super) friction_limit: bool,
     pub(super) tick: &'a (dyn Fn() + Sync),
 }
 
@@ -49,15 +46,9 @@ impl Search<'_> {
     /// Evaluate `u`: the candidate and its design report.
     fn candidate(&self, u: &[f64]) -> (Candidate, DesignReport) {
         let spec = self.spec;
-        let values = self.values(u);
-        let file = point_file(&spec.base, &spec.sets, &values);
-        let fields: BTreeMap<String, SweptValue> =
-            spec.sets.iter().map(|s| s.path.clone()).zip(values.iter().cloned()).collect();
-        let label = format!("{} {:?}", spec.file, fields);
-        let base = (&self.plan.variants[0], self.friction_limit);
-        let e = evaluate(file, &spec.text, &label, self.plan, base, self.tick);
-        let evaluation = self.history.lock().map_or(0, |h| h.len()) + 1;
-        let d = design_report(evaluation - 1, fields.clone(), e);
+        // The friction limit only where a goal reads it (about 0.1 s).
+        let checks = spec.goals.reads_friction_limit();
+        let (fields, d) = spec.evaluate(self.plan, &self.values(u), checks, self.tick);
         let objective = self.objective().output.value(&d);
         let margins: Vec<Option<f64>> =
             spec.goals.constraints.iter().map(|c| c.margin(&d)).collect();
@@ -75,7 +66,7 @@ impl Search<'_> {
             _ => PENALTY * PENALTY * (1.0 + outside),
         };
         let c = Candidate {
-            evaluation,
+            evaluation: 0,
             fields,
             objective,
             margins,
