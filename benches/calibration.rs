@@ -12,7 +12,7 @@ use kinrepro::calibrate::{Measurement, calibrate};
 use kinrepro::solve::Solver;
 
 fn calibration(c: &mut Criterion) {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
     let (scene, coupling) =
         kinrepro::error::read_scene(&root.join("scenes/02_maxwell_pins_steel.toml")).unwrap();
     let m = Measurement::load(&root.join("docs/calibration/measured_02.csv"), None).unwrap();

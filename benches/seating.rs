@@ -22,7 +22,7 @@ fn seating(c: &mut Criterion) {
     for name in
         ["01_maxwell_vgroove_steel.toml", "02_maxwell_pins_steel.toml", "06_kelvin_steel.toml"]
     {
-        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name);
+        let path = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("scenes").join(name);
         let (scene, coupling) = kinrepro::error::read_scene(&path).unwrap();
         let mu = Load::nominal(&scene).with_mu(&[0.46, 0.53, 0.51, 0.47, 0.545, 0.455]);
         let opts = SolverOptions::default();

@@ -23,7 +23,7 @@ const SCENES: [&str; 7] = [
 ];
 
 fn load(name: &str) -> (Scene, Coupling) {
-    kinrepro::error::read_scene(&Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name))
+    kinrepro::error::read_scene(&Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("scenes").join(name))
         .unwrap()
 }
 
