@@ -12,7 +12,8 @@ use kinrepro::assembly::constraint::analyse;
 use kinrepro::scene::Scene;
 
 fn scene01() -> std::path::PathBuf {
-    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("scenes/01_maxwell_vgroove_steel.toml")
+    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+        .join("scenes/01_maxwell_vgroove_steel.toml")
 }
 
 /// Scene 01 in explicit form with its first surface repeated up to `m` surfaces.

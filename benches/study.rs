@@ -23,8 +23,10 @@ const SCENES: [&str; 7] = [
 ];
 
 fn load(name: &str) -> (Scene, Coupling) {
-    kinrepro::error::read_scene(&Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("scenes").join(name))
-        .unwrap()
+    kinrepro::error::read_scene(
+        &Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("scenes").join(name),
+    )
+    .unwrap()
 }
 
 fn mc(samples: usize) -> StudyOptions {

@@ -10,7 +10,8 @@ use kinrepro::explore::{DesignKind, SweepSpec};
 use kinrepro::study::{Sampler, Shard, StudyOptions, Varied};
 
 fn sweep(c: &mut Criterion) {
-    let path = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("scenes/01_maxwell_vgroove_steel.toml");
+    let path = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+        .join("scenes/01_maxwell_vgroove_steel.toml");
     let text = std::fs::read_to_string(&path).unwrap();
     let (scene, base) = kinrepro::error::read_scene(&path).unwrap();
     let mut g = c.benchmark_group("sweep");

@@ -23,7 +23,9 @@ fn without_thermal(text: &str) -> String {
 }
 
 fn thermal(c: &mut Criterion) {
-    let text = std::fs::read_to_string(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join(SCENE)).unwrap();
+    let text =
+        std::fs::read_to_string(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join(SCENE))
+            .unwrap();
     let opts = StudyOptions {
         sampler: Some(Sampler::MonteCarlo),
         samples: Some(2000),

@@ -6,6 +6,7 @@
 use super::*;
 
 use crate::common::PAPER_SCENES as SCENES;
+use rayon::prelude::*;
 
 /// The dimensions a scene's drawing must show, from its `[coupling]`:
 /// circle of ball centres and ball diameter [mm], opening angle [deg], and
@@ -63,20 +64,24 @@ fn study_html_of_every_bundled_scene_fits_and_is_dimensioned() {
         .replacen("opening_angle_deg = 90.0", "opening_angle_deg = 100.0", 1);
     std::fs::write(&other, text).unwrap();
     files.push(other);
-    for file in &files {
+    // The scenes side by side (each in a folder of its own): the study and
+    // the two Chromium runs of a scene are independent of the others'.
+    files.par_iter().enumerate().for_each(|(i, file)| {
+        let dir = tmp.path().join(i.to_string());
+        std::fs::create_dir(&dir).unwrap();
         let name = file.file_name().unwrap().to_str().unwrap();
-        let html = study_html(tmp.path(), file);
-        let Some(exe) = &exe else { continue };
-        let r = probe_result(&probe_dom(exe, tmp.path(), &html, "1400,2000"), name);
+        let html = study_html(&dir, file);
+        let Some(exe) = &exe else { return };
+        let r = probe_result(&probe_dom(exe, &dir, &html, "1400,2000"), name);
         tables_fit(&r, &format!("{name} 1400"));
         let want = dimensions(&std::fs::read_to_string(file).unwrap());
         drawing_labels(&r, name, &want);
         // The print rules on screen, at A4's width less its margins:
         // (210 - 2 x 12) mm at 96 px per inch = 703 px.
         let print = html.replace("@media print", "@media all");
-        let r = probe_result(&probe_dom(exe, tmp.path(), &print, "703,2000"), name);
+        let r = probe_result(&probe_dom(exe, &dir, &print, "703,2000"), name);
         tables_fit(&r, &format!("{name} A4 print"));
-    }
+    });
 }
 
 /// Every text of every drawing at least 11 px, no two in one drawing
