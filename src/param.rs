@@ -53,6 +53,8 @@ pub enum Param {
     Cycle,
     /// The iterations of an optimisation's search.
     MaxIterations,
+    /// The searches of an optimisation per combination of listed values.
+    Starts,
 }
 
 impl Param {
@@ -88,6 +90,7 @@ impl Param {
             Param::Jobs => "jobs",
             Param::Cycle => "cycle",
             Param::MaxIterations => "max_iterations",
+            Param::Starts => "starts",
         }
     }
 

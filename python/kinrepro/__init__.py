@@ -135,6 +135,8 @@ def optimize(
     path_tolerance: Optional[float] = None,
     replicates: Optional[int] = None,
     max_iterations: int = 200,
+    starts: int = 1,
+    shard: Union[str, Tuple[int, int], None] = None,
 ) -> Optimization:
     """The best design within bounds (``kinrepro optimize``): one
     ``objective`` (``"OUTPUT:min"`` or ``"OUTPUT:max"``; None: the scene's
@@ -150,6 +152,12 @@ def optimize(
     tried: materials, keywords), or a string in the CLI's syntax
     (``"5:40"``, ``"log:1e-9:1e-6"``). ``Optimization.optimum["fields"]``
     holds the optimum's values; ``to_dict()["history"]`` every candidate.
+
+    ``starts`` searches per combination of listed values: from the centre
+    of the ranges, then from ``starts - 1`` points of a Latin hypercube
+    (seeded by ``seed``). ``shard`` (``(index, count)`` or ``"I/N"``)
+    makes only that shard of the searches; :func:`merge` of every shard's
+    result is the whole optimisation (:func:`kinrepro.cluster.optimize`).
     """
     def arg(field: str, values: VaryValues) -> str:
         if isinstance(values, tuple) and len(values) == 2 and all(
@@ -162,4 +170,5 @@ def optimize(
         scene, [arg(f, v) for f, v in vary.items()], objective, constraints=list(constraints),
         samples=samples, sampler=sampler, seed=seed, jobs=jobs, increments=increments,
         path_tolerance=path_tolerance, replicates=replicates, max_iterations=max_iterations,
+        starts=starts, shard=shard,
     )

@@ -299,9 +299,10 @@ def study(
     with the CLI's message, naming the flag (``--samples`` for
     ``samples``). GIL released; Ctrl-C raises KeyboardInterrupt."""
 
-def merge(parts: Sequence[Study | str] | Sequence[Sweep]) -> Any:
+def merge(parts: Sequence[Study | str] | Sequence[Sweep] | Sequence[Optimization]) -> Any:
     """Merge the shards of a study (``Study`` objects or JSON texts; returns
-    a ``Study`` equal to the unsharded run) or of a sweep (``Sweep``)."""
+    a ``Study`` equal to the unsharded run), of a sweep (``Sweep``) or of an
+    optimisation (``Optimization``)."""
 
 def sweep(
     scene: Scene,
@@ -329,6 +330,7 @@ class Optimization:
     def to_json(self) -> str: ...
     def to_dict(self) -> dict[str, Any]: ...
     def table(self) -> str: ...
+    def __eq__(self, other: object) -> bool: ...
     @property
     def optimum(self) -> dict[str, Any] | None:
         """``fields``, ``objective``, ``constraint_margins``, ``design``,
@@ -347,6 +349,8 @@ def optimize(
     path_tolerance: float | None = None,
     replicates: int | None = None,
     max_iterations: int = 200,
+    starts: int = 1,
+    shard: Shard | None = None,
 ) -> Optimization:
     """The compiled optimisation: ``vary`` as ``"FIELD=VALUES"`` strings
     (``kinrepro.optimize`` takes a dict)."""

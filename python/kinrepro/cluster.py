@@ -1,7 +1,8 @@
-"""Studies and sweeps split into shards on a Dask cluster (docs/python.md).
+"""Studies, sweeps and optimisations split into shards on a Dask cluster
+(docs/python.md).
 
 Each shard is one task, ``kinrepro.study(..., shard=(i, n))`` (or
-``kinrepro.sweep``) run on a worker; :func:`kinrepro.merge` of the results
+``kinrepro.sweep``, ``kinrepro.optimize``) run on a worker; :func:`kinrepro.merge` of the results
 equals the unsharded run. ``client`` is a ``dask.distributed.Client`` of any
 cluster: a ``LocalCluster`` on one machine, dask-jobqueue's
 ``SLURMCluster`` on a Slurm cluster; only the cluster differs, the code path
@@ -13,7 +14,8 @@ from __future__ import annotations
 
 from typing import Any, Mapping
 
-from . import Scene, Study, Sweep, merge
+from . import Optimization, Scene, Study, Sweep, merge
+from . import optimize as _optimize
 from . import study as _study
 from . import sweep as _sweep
 
@@ -39,3 +41,12 @@ def sweep(client: Any, scene: Scene, sets: Mapping[str, Any], shards: int, **opt
     """``kinrepro.sweep(scene, sets, **options)`` with its design points in
     ``shards`` tasks on the cluster of ``client``, merged."""
     return _sharded(client, _sweep, shards, (scene, sets), options)
+
+
+def optimize(client: Any, scene: Scene, vary: Mapping[str, Any], shards: int,
+             **options: Any) -> Optimization:
+    """``kinrepro.optimize(scene, vary, **options)`` with its searches
+    (combinations of listed values x ``starts``) in ``shards`` tasks on
+    the cluster of ``client``, merged: equal to the optimisation run in
+    one piece."""
+    return _sharded(client, _optimize, shards, (scene, vary), options)

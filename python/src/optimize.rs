@@ -3,7 +3,9 @@
 
 use kinrepro::error::parse_scene;
 use kinrepro::explore::goal::Goals;
-use kinrepro::explore::optimize::{MAX_ITERATIONS, OptimizeReport, OptimizeSpec, optimize as run};
+use kinrepro::explore::optimize::{
+    MAX_ITERATIONS, OptimizeReport, OptimizeSpec, merge_optimizations as lib_merge, optimize as run,
+};
 use kinrepro::explore::run::study_plan;
 use pyo3::prelude::*;
 
@@ -52,6 +54,15 @@ impl Optimization {
         to_python(py, &self.report.optimum)
     }
 
+    fn __reduce__(&self, py: Python<'_>) -> PyResult<(Py<PyAny>, (String,))> {
+        let ctor = py.get_type::<Optimization>().getattr("from_json")?.unbind();
+        Ok((ctor, (self.to_json()?,)))
+    }
+
+    fn __eq__(&self, other: &Optimization) -> bool {
+        self.report == other.report
+    }
+
     fn __repr__(&self) -> String {
         let r = &self.report;
         format!(
@@ -63,13 +74,29 @@ impl Optimization {
     }
 }
 
+/// `kinrepro merge` of optimisation parts.
+pub fn merge_optimizations(py: Python<'_>, parts: &[Bound<'_, PyAny>]) -> PyResult<Py<PyAny>> {
+    let docs = parts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let o = p
+                .cast::<Optimization>()
+                .map_err(|_| err(format!("merge: part {i} is not an Optimization")))?;
+            Ok((format!("part {}", i + 1), o.get().report.clone()))
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    let merged = py.detach(move || lib_merge(docs)).map_err(err)?;
+    Ok(Py::new(py, Optimization { report: merged })?.into_any())
+}
+
 /// Optimise one objective under constraints over the varied fields
 /// (`kinrepro optimize`); `vary`: `FIELD=VALUES` strings.
 #[pyfunction]
 #[pyo3(signature = (
     scene, vary, objective = None, constraints = Vec::new(), samples = None, sampler = None,
     seed = None, jobs = None, increments = None, path_tolerance = None, replicates = None,
-    max_iterations = Whole::of(MAX_ITERATIONS),
+    max_iterations = Whole::of(MAX_ITERATIONS), starts = Whole::of(1), shard = None,
 ))]
 #[allow(clippy::too_many_arguments)]
 pub fn optimize(
@@ -86,6 +113,8 @@ pub fn optimize(
     path_tolerance: Option<f64>,
     replicates: Option<Whole<usize>>,
     max_iterations: Whole<u64>,
+    starts: Whole<usize>,
+    shard: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Optimization> {
     let samples = samples.map(Whole::get);
     let seed = seed.map(Whole::get);
@@ -93,7 +122,7 @@ pub fn optimize(
     let increments = increments.map(Whole::get);
     let replicates = replicates.map(Whole::get);
     let max_iterations = max_iterations.get();
-    let shard = None;
+    let starts = starts.get();
     let options =
         Keywords { samples, sampler, seed, shard, increments, path_tolerance, replicates }
             .options()?;
@@ -103,6 +132,8 @@ pub fn optimize(
         let varied: Vec<String> =
             vary.iter().filter_map(|v| v.split_once('=').map(|(p, _)| p.trim().into())).collect();
         let mut spec = OptimizeSpec::new(&file, &text, &vary, Goals::default(), max_iterations)?;
+        spec.starts = starts;
+        spec.shard = options.shard;
         let objectives: Vec<String> = objective.into_iter().collect();
         let asked = (objectives.as_slice(), constraints.as_slice());
         spec.goals = Goals::asked(asked, (&spec.base, &file, &text), &base, &varied)?;

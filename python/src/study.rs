@@ -422,7 +422,7 @@ impl kinrepro::study::stream::RecordSink for NoSink {
 
 /// Merge shards of a study (`kinrepro merge`): a list of `Study` (or JSON
 /// texts); the result equals the unsharded run. Sweep shards: a list of
-/// `Sweep`.
+/// `Sweep`; optimisation shards: a list of `Optimization`.
 #[pyfunction]
 pub fn merge(py: Python<'_>, parts: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny>> {
     if parts.is_empty() {
@@ -430,6 +430,9 @@ pub fn merge(py: Python<'_>, parts: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny>
     }
     if parts[0].extract::<PyRef<crate::sweep::Sweep>>().is_ok() {
         return crate::sweep::merge_sweeps(py, &parts);
+    }
+    if parts[0].extract::<PyRef<crate::optimize::Optimization>>().is_ok() {
+        return crate::optimize::merge_optimizations(py, &parts);
     }
     let docs = parts
         .iter()

@@ -47,6 +47,19 @@ def test_sweep_shards_on_a_local_cluster(client, scene01):
     assert kinrepro.cluster.sweep(client, scene01, sets, shards=2, samples=10, seed=4, jobs=1) == one
 
 
+def test_optimisation_searches_on_a_local_cluster(client, scene01):
+    """Two materials x two starts: four searches in three tasks, merged:
+    the optimisation run in one piece (the same document)."""
+    vary = {"preload.force": (5, 40), "coupling.ball_material": ["steel", "silicon-carbide"]}
+    options = dict(objective="k_min:max", constraints=["sigma:centre:x<=5e-9"], samples=10,
+                   sampler="mc", seed=3, max_iterations=20, starts=2)
+    one = kinrepro.optimize(scene01, vary, **options)
+    assert one.to_dict()["searches"] == 4
+    merged = kinrepro.cluster.optimize(client, scene01, vary, shards=3, jobs=1, **options)
+    assert merged == one
+    assert merged.to_json() == one.to_json()
+
+
 def test_the_doc_example_runs_and_the_slurm_one_is_the_same_call(study01, tmp_path):
     """The LocalCluster example saved to a file and run by a fresh
     interpreter, as a user runs it (its workers import the script)."""

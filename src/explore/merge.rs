@@ -50,7 +50,11 @@ pub fn merge_sweeps(parts: Vec<(String, SweepReport)>) -> Result<SweepReport, Sw
 }
 
 /// The dotted path of the first field where two JSON values differ.
-fn first_difference(a: &serde_json::Value, b: &serde_json::Value, at: &str) -> Option<String> {
+pub(crate) fn first_difference(
+    a: &serde_json::Value,
+    b: &serde_json::Value,
+    at: &str,
+) -> Option<String> {
     use serde_json::Value::Object;
     match (a, b) {
         (Object(x), Object(y)) => x

@@ -21,6 +21,25 @@ fn fields_text(fields: &std::collections::BTreeMap<String, SweptValue>) -> Strin
 }
 
 impl OptimizeReport {
+    /// Which searches the document holds and why each stopped:
+    /// `searches 1-4 of 4: 1 Solver converged after 2 runs; 2 ...`.
+    pub fn searches_text(&self) -> String {
+        let first = self.shard.range(self.searches).map_or(0, |r| r.start);
+        let each: Vec<String> = (self.termination.iter().enumerate())
+            .map(|(k, t)| format!("{} {t}", first + k + 1))
+            .collect();
+        let held = match each.len() {
+            0 => "no search".to_string(),
+            1 => format!("search {}", first + 1),
+            n => format!("searches {}-{}", first + 1, first + n),
+        };
+        let shard = match self.shard.count {
+            1 => String::new(),
+            _ => format!(" (shard {}; `kinrepro merge` joins the shards)", self.shard),
+        };
+        format!("{held} of {}{shard}; why each stopped: {}", self.searches, each.join("; "))
+    }
+
     /// The terminal table.
     pub fn table(&self) -> String {
         let mut s = String::new();
@@ -36,7 +55,7 @@ impl OptimizeReport {
             if constraints.is_empty() { "none".to_string() } else { constraints.join(", ") }
         );
         let _ = writeln!(s, "method: {}", self.method);
-        let _ = writeln!(s, "search stopped: {}", self.termination.join("; "));
+        let _ = writeln!(s, "{}", self.searches_text());
         match &self.optimum {
             None => {
                 let _ = writeln!(

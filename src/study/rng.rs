@@ -18,6 +18,8 @@ pub(crate) const DOMAIN_MC: u64 = 0x4d43_5f53_5452_4d31; // "MC_STRM1"
 pub(crate) const DOMAIN_REPLICATE: u64 = 0x5245_504c_4943_4131; // "REPLICA1"
 /// Domain constant of the Sobol (Saltelli) base matrices.
 pub(crate) const DOMAIN_SOBOL: u64 = 0x534f_424f_4c5f_4d31; // "SOBOL_M1"
+/// Domain constant of an optimisation's starting points.
+pub(crate) const DOMAIN_STARTS: u64 = 0x4f50_5453_5452_5431; // "OPTSTRT1"
 /// Domain constant of the bootstrap stream.
 pub(crate) const DOMAIN_BOOT: u64 = 0x424f_4f54_5354_5231; // "BOOTSTR1"
 

@@ -85,8 +85,7 @@ fn coarse_mesh_within_5_percent_and_errors_follow_the_scaling_law() {
         cases().iter().map(|(name, c)| check(name, c, &mesh, 0.05, 0.05)).collect();
     // cases(): 0 sphere-plane, 1-2 sphere-cylinder steel/SiC, 3-4 sphere-sphere steel/SiC.
     for (a, b) in [(0, 3), (0, 4), (1, 2)] {
-        for k in 0..3 {
-            let (ea, eb) = (errs[a][k], errs[b][k]);
+        for (k, (ea, eb)) in errs[a].iter().zip(&errs[b]).enumerate() {
             assert!((ea - eb).abs() < 1e-9, "pairings {a} and {b}, error {k}: {ea} vs {eb}");
         }
     }

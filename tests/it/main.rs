@@ -41,6 +41,7 @@ mod geometry;
 mod materials;
 mod mu_distribution;
 mod optimize;
+mod optimize_shards;
 mod path_control;
 mod preloads;
 mod quasistatic;

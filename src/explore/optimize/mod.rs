@@ -3,7 +3,13 @@
 //! FIELD=LOW:HIGH`, `log:LOW:HIGH` searched in the logarithm) are searched
 //! by Nelder-Mead (argmin) in the unit cube of their ranges, from its
 //! centre; fields given as a list (materials, keywords, numbers) are
-//! enumerated outside the search, one search per combination.
+//! enumerated outside the search, one search per combination. With
+//! `starts` > 1 each combination is searched from further starting
+//! points too (an optimised Latin hypercube of the box, seeded by the
+//! study's seed): a multi-start for objectives with several local minima.
+//! The searches (combination x start) are independent: a run may make a
+//! shard of them (`shard`), and [`merge_optimizations`] joins the shards'
+//! documents into the single run's.
 //!
 //! Every candidate's study is the base scene's plan: the same sampler,
 //! seed and samples, so the same friction draws (common random numbers):
@@ -21,6 +27,7 @@
 //! feasible candidate evaluated (feasible first), whatever the search's
 //! last simplex.
 
+mod merge;
 mod outcome;
 mod search;
 
@@ -31,6 +38,7 @@ use argmin::core::CostFunction;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+pub use merge::{OptimizeMergeError, merge_optimizations};
 use outcome::{best, report};
 use search::{Search, restarted};
 
@@ -41,13 +49,17 @@ use super::values::Levels;
 use super::{ExploreError, Set, SweptValue, evaluate, point_file};
 use crate::param::Param;
 use crate::scene::SceneFile;
-use crate::study::StudyPlan;
+use crate::study::sampling::lhs::start_points;
+use crate::study::{Shard, StudyPlan};
 
 /// The weight of a normalised constraint violation (module docs).
 pub const PENALTY: f64 = 1e3;
 
 /// Most restarts of the search from its best point (module docs).
 pub const RESTARTS: usize = 6;
+
+/// Most searches per combination of listed values (`starts`).
+pub const MAX_STARTS: usize = crate::study::sampling::lhs::MAX_LHS_SAMPLES;
 
 /// Default cap on the search's iterations per combination of listed values.
 pub const MAX_ITERATIONS: u64 = 200;
@@ -66,13 +78,22 @@ pub struct OptimizeSpec {
     pub sets: Vec<Set>,
     pub goals: Goals,
     pub max_iterations: u64,
+    /// Searches per combination of listed values: from the centre of the
+    /// box, then from `starts - 1` points of a Latin hypercube (>= 1).
+    pub starts: usize,
+    /// The searches this run makes (1/1: all).
+    pub shard: Shard,
 }
 
 /// One candidate the search evaluated.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Candidate {
-    /// 1-based, in the order evaluated.
+    /// 1-based, in the order evaluated (the searches' histories joined in
+    /// search order).
     pub evaluation: usize,
+    /// The search that evaluated it, 1-based: combination c (0-based) and
+    /// start k (0-based) make search c * starts + k + 1.
+    pub search: usize,
     pub fields: BTreeMap<String, SweptValue>,
     /// The objective's value (SI), None if the design gave none.
     pub objective: Option<f64>,
@@ -126,7 +147,14 @@ pub struct OptimizeReport {
     pub goals: Goals,
     /// The search and the constraint rule, in words.
     pub method: String,
-    /// Why each search stopped (one per combination of listed values).
+    /// Searches per combination of listed values.
+    pub starts: usize,
+    /// Searches of the whole optimisation (combinations x starts).
+    pub searches: usize,
+    /// The searches this document holds (`1/1`: all; see
+    /// [`merge_optimizations`]).
+    pub shard: Shard,
+    /// Why each search of this document stopped, in search order.
     pub termination: Vec<String>,
     /// None: no candidate met every constraint.
     pub optimum: Option<Optimum>,
@@ -193,7 +221,16 @@ impl OptimizeSpec {
             }
             sets.push(s);
         }
-        Ok(OptimizeSpec { file: file.into(), text: text.into(), base, sets, goals, max_iterations })
+        Ok(OptimizeSpec {
+            file: file.into(),
+            text: text.into(),
+            base,
+            sets,
+            goals,
+            max_iterations,
+            starts: 1,
+            shard: Shard::whole(),
+        })
     }
 
     /// The design point of `values` (one per field) evaluated with the
@@ -239,17 +276,22 @@ pub fn optimize(
     }
     let searched: Vec<usize> =
         (0..spec.sets.len()).filter(|&k| spec.sets[k].interval.is_some()).collect();
-    // One search per combination of listed values, the combinations in
-    // parallel (rayon), their histories joined in combination order: the
-    // result does not depend on the number of threads.
-    let runs: Vec<(Vec<(Candidate, DesignReport)>, String)> = combinations(&spec.sets)
+    let starts = starting_points(spec, plan, searched.len())?;
+    let combinations = combinations(&spec.sets);
+    let searches = combinations.len() * starts.len();
+    let mine = spec.shard.range(searches)?;
+    // The searches in parallel (rayon), their histories joined in search
+    // order: the result depends neither on the number of threads nor on
+    // the shards.
+    let runs: Vec<(Vec<(Candidate, DesignReport)>, String)> = mine
         .into_par_iter()
-        .map(|fixed| {
+        .map(|s| {
             let (history, scale) = (Mutex::new(Vec::new()), Mutex::new(None));
             let search = Search {
                 spec,
                 plan,
-                fixed,
+                number: s + 1,
+                fixed: combinations[s / starts.len()].clone(),
                 searched: searched.clone(),
                 history: &history,
                 scale: &scale,
@@ -260,7 +302,7 @@ pub fn optimize(
                     let _ = search.cost(&Vec::new());
                     "nothing to search: every field is a list".to_string()
                 }
-                false => restarted(&search, searched.len(), spec.max_iterations)?,
+                false => restarted(&search, &starts[s % starts.len()], spec.max_iterations)?,
             };
             let h = history.into_inner().map_err(|_| SweepError::Optimize("history".into()))?;
             Ok((h, reason))
@@ -283,5 +325,28 @@ pub fn optimize(
         history[i].1 = spec.evaluate(plan, &values, true, tick).1;
         history[i].1.index = i;
     }
-    Ok(report(spec, plan, history, termination))
+    Ok(report(spec, plan, history, termination, (searches, starts.len())))
+}
+
+/// Where each search of a combination starts, in the unit cube of the
+/// searched fields: its centre, then `spec.starts - 1` points of an
+/// optimised Latin hypercube seeded by the study's seed (one start, the
+/// centre's, when nothing is searched).
+fn starting_points(
+    spec: &OptimizeSpec,
+    plan: &StudyPlan,
+    d: usize,
+) -> Result<Vec<Vec<f64>>, SweepError> {
+    if spec.starts == 0 || spec.starts > MAX_STARTS {
+        let at = Param::Starts.with(spec.starts);
+        return Err(SweepError::Optimize(format!(
+            "{at}: give 1 to {MAX_STARTS} searches per combination"
+        )));
+    }
+    let mut points = vec![vec![0.5; d]];
+    if d > 0 && spec.starts > 1 {
+        let seed = plan.variants[0].design.seed;
+        points.extend(start_points(d, spec.starts - 1, seed)?);
+    }
+    Ok(points)
 }

@@ -30,6 +30,7 @@ pub(super) fn report(
     plan: &StudyPlan,
     history: Vec<(Candidate, DesignReport)>,
     termination: Vec<String>,
+    (searches, starts): (usize, usize),
 ) -> OptimizeReport {
     let objective = &spec.goals.objectives[0];
     let optimum = best(&history, objective).map(|i| &history[i]).map(|(c, d)| Optimum {
@@ -60,14 +61,23 @@ pub(super) fn report(
             .collect(),
         goals: spec.goals.clone(),
         method: format!(
-            "Nelder-Mead (argmin) in the unit cube of the ranges from its centre, stopping when the \
-             simplex's costs spread less than {COST_TOLERANCE:e} or after {} iterations; listed \
-             fields enumerated, one search each; constraints by an exact L1 penalty of weight \
+            "Nelder-Mead (argmin) in the unit cube of the ranges from its centre{}, stopping when \
+             the simplex's costs spread less than {COST_TOLERANCE:e} or after {} iterations, \
+             restarted from its best point while that helps; listed fields enumerated, each \
+             combination searched alike; constraints by an exact L1 penalty of weight \
              {PENALTY} on violations relative to their bounds; the optimum is the best feasible \
              candidate evaluated; every candidate's study uses the same friction draws (common \
              random numbers)",
+            match starts {
+                1 => String::new(),
+                2 => " and from 1 point of a Latin hypercube".to_string(),
+                n => format!(" and from {} points of a Latin hypercube", n - 1),
+            },
             spec.max_iterations
         ),
+        starts,
+        searches,
+        shard: spec.shard,
         termination,
         optimum,
         history: history.into_iter().map(|(c, _)| c).collect(),

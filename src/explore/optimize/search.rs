@@ -20,6 +20,8 @@ use crate::study::StudyPlan;
 pub(super) struct Search<'a> {
     pub(super) spec: &'a OptimizeSpec,
     pub(super) plan: &'a StudyPlan,
+    /// The search's number (1-based, [`Candidate::search`]).
+    pub(super) number: usize,
     /// The listed values of this combination, by field.
     pub(super) fixed: Vec<(usize, SweptValue)>,
     /// The searched fields' indices in `spec.sets`.
@@ -67,6 +69,7 @@ impl Search<'_> {
         };
         let c = Candidate {
             evaluation: 0,
+            search: self.number,
             fields,
             objective,
             margins,
@@ -97,17 +100,19 @@ impl CostFunction for Search<'_> {
     }
 }
 
-/// Nelder-Mead from the centre of the unit cube (simplex edge 0.25), then
+/// Nelder-Mead from `start` in the unit cube (simplex edge 0.25), then
 /// restarted from the best point with half the edge while a restart
 /// lowers the cost (at most [`RESTARTS`]): a simplex that collapsed on a
 /// kink of the cost (a constraint's bound, a change of the contacts'
-/// stick-slip pattern) starts afresh there. Why the last search stopped.
+/// stick-slip pattern) starts afresh there. Why the last run stopped,
+/// and after how many runs.
 pub(super) fn restarted(
     search: &Search<'_>,
-    d: usize,
+    start: &[f64],
     max_iterations: u64,
 ) -> Result<String, SweepError> {
-    let (mut start, mut edge, mut last) = (vec![0.5; d], 0.25, f64::INFINITY);
+    let d = start.len();
+    let (mut start, mut edge, mut last) = (start.to_vec(), 0.25, f64::INFINITY);
     let mut reason = String::new();
     for restart in 0..=RESTARTS {
         let simplex: Vec<Vec<f64>> = std::iter::once(start.clone())
@@ -126,7 +131,10 @@ pub(super) fn restarted(
             .map_err(|e| SweepError::Optimize(e.to_string()))?;
         let state = res.state();
         reason = match state.get_termination_reason() {
-            Some(r) => format!("{} (search {})", r.text(), restart + 1),
+            Some(r) => match restart {
+                0 => format!("{} after 1 run", r.text()),
+                k => format!("{} after {} runs", r.text(), k + 1),
+            },
             None => "running".to_string(),
         };
         let cost = state.get_best_cost();

@@ -29,10 +29,10 @@ pub fn optimize_html(r: &OptimizeReport, scene_text: &str) -> Result<String, Htm
         .collect();
     let _ = writeln!(
         b,
-        "<section id=\"run\"><h2>Run</h2>\n<p>{}</p>\n<p class=\"note\">{}; search stopped: {}.</p>\n</section>",
+        "<section id=\"run\"><h2>Run</h2>\n<p>{}</p>\n<p class=\"note\">{}; {}.</p>\n</section>",
         escape(&goals.join("; ")),
         escape(&r.method),
-        escape(&r.termination.join("; "))
+        escape(&r.searches_text())
     );
     b += "<section id=\"optimum\"><h2>Optimum</h2>\n";
     match &r.optimum {

@@ -19,7 +19,7 @@
 use rand_chacha::ChaCha8Rng;
 
 use super::super::error::{Result, StudyError};
-use super::super::rng::{DOMAIN_LHS, chacha, shuffle, unit_f64};
+use super::super::rng::{DOMAIN_LHS, DOMAIN_STARTS, chacha, shuffle, unit_f64};
 use super::ese::{EseParams, optimise};
 
 /// Largest n accepted: the optimiser keeps n x n distance matrices and its cost grows ~n^2.
@@ -39,9 +39,28 @@ pub fn optimised_lhs(
     seed: u64,
     params: &EseParams,
 ) -> Result<Vec<Vec<f64>>> {
+    optimised_lhs_in(dims, n, seed, params, DOMAIN_LHS)
+}
+
+/// The starting points of an optimisation's searches beyond the first
+/// (`kinrepro optimize --starts`): the optimised Latin hypercube of `n`
+/// points in `dims` dimensions from a stream of their own (`seed`, the
+/// domain [`DOMAIN_STARTS`]), so they spread over the box like the study's
+/// designs without sharing its draws.
+pub fn start_points(dims: usize, n: usize, seed: u64) -> Result<Vec<Vec<f64>>> {
+    optimised_lhs_in(dims, n, seed, &EseParams::default(), DOMAIN_STARTS)
+}
+
+fn optimised_lhs_in(
+    dims: usize,
+    n: usize,
+    seed: u64,
+    params: &EseParams,
+    domain: u64,
+) -> Result<Vec<Vec<f64>>> {
     check(dims, n)?;
     params.validate()?;
-    let mut rng = chacha(seed, DOMAIN_LHS);
+    let mut rng = chacha(seed, domain);
     let start = start_design(&mut rng, dims, n);
     let best = if n >= 2 && dims >= 2 {
         // With one dimension every swap only relabels rows: nothing to optimise.

@@ -126,8 +126,10 @@ pub fn merge(args: MergeArgs) -> Result {
     // The first part (clap asks for one at least) says which kind of
     // document is merged; it is read once.
     let first = read_text(&parts[0])?;
-    if super::sweep::is_sweep(&first) {
-        return super::sweep::merge(&parts, first, format);
+    match super::sweep::document_kind(&first).as_deref() {
+        Some("sweep") => return super::sweep::merge(&parts, first, format),
+        Some("optimize") => return super::optimize::merge(&parts, first, format),
+        _ => {}
     }
     let docs = read_json_parts::<StudyReport>(&parts, first, "study")?;
     let merged =

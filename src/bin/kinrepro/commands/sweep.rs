@@ -117,13 +117,14 @@ pub fn merge(parts: &[PathBuf], first: String, format: Format) -> Result {
     Ok(merged.check_any_valid()?)
 }
 
-/// True if a JSON text is a sweep document (`"document": "sweep"`); only
-/// that field is read, the rest is skipped without building a tree.
-pub fn is_sweep(text: &str) -> bool {
+/// The `"document"` field of a JSON text (`sweep`, `optimize`; a study's
+/// has none); only that field is read, the rest is skipped without
+/// building a tree.
+pub fn document_kind(text: &str) -> Option<String> {
     #[derive(serde::Deserialize)]
     struct Document {
         #[serde(default)]
         document: Option<String>,
     }
-    serde_json::from_str::<Document>(text).is_ok_and(|d| d.document.as_deref() == Some("sweep"))
+    serde_json::from_str::<Document>(text).ok().and_then(|d| d.document)
 }

@@ -45,7 +45,7 @@ pub enum Command {
     /// Reproducibility study: seat each scene once per friction sample and
     /// report the scatter of the pose (Table 2 of the paper).
     Study(StudyArgs),
-    /// Merge the JSON outputs of sharded studies (or sweeps) into the result of one run.
+    /// Merge the JSON outputs of sharded studies (or sweeps, or optimisations) into the result of one run.
     Merge(MergeArgs),
     /// Sweep scene fields over a grid or an LHS: reproducibility, stiffness,
     /// safety and friction limit per design point, and the Pareto front.

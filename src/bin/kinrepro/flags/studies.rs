@@ -202,9 +202,20 @@ pub struct OptimizeArgs {
     /// given, they replace the scene's [goals] constraints.
     #[arg(long)]
     pub constraint: Vec<String>,
-    /// Most iterations of the Nelder-Mead search (per combination of listed values).
+    /// Most iterations of each Nelder-Mead search.
     #[arg(long, default_value_t = kinrepro::explore::optimize::MAX_ITERATIONS)]
     pub max_iterations: u64,
+    /// Searches per combination of listed values: from the centre of the
+    /// ranges, then from STARTS - 1 points of a Latin hypercube (seeded by
+    /// --seed); the best feasible candidate of all is the optimum. For
+    /// objectives with several local minima.
+    #[arg(long, default_value_t = 1)]
+    pub starts: usize,
+    /// Make only shard I of N (1-based, e.g. 2/4) of the searches
+    /// (combinations of listed values x starts); `kinrepro merge` of the
+    /// shards' --json outputs is the whole optimisation.
+    #[arg(long)]
+    pub shard: Option<kinrepro::study::Shard>,
     #[command(flatten)]
     pub study: DesignFlags,
     #[command(flatten)]

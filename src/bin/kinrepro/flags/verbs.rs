@@ -170,7 +170,8 @@ pub struct LoadArgs {
 #[derive(Args)]
 pub struct MergeArgs {
     /// JSON files written by `kinrepro study --shard I/N --format json` (or
-    /// `kinrepro sweep --shard I/N --format json`).
+    /// `kinrepro sweep --shard I/N --format json`, or `kinrepro optimize
+    /// --shard I/N --json`).
     #[arg(required = true)]
     pub parts: Vec<PathBuf>,
     #[arg(long, value_enum, default_value_t = Format::Json)]
