@@ -8,8 +8,11 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::solve::dynamic::{DynamicOptions, seat};
 
 fn dynamic_seating(c: &mut Criterion) {
-    let (scene, coupling) =
-        kinrepro::error::read_scene(Path::new("scenes/01_maxwell_vgroove_steel.toml")).unwrap();
+    let (scene, coupling) = kinrepro::error::read_scene(
+        &Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+            .join("scenes/01_maxwell_vgroove_steel.toml"),
+    )
+    .unwrap();
     let mu = kinrepro::solve::Load::nominal(&scene);
     let opts = DynamicOptions::default();
     c.bench_function("dynamic seating, scene 01", |b| {
