@@ -23,7 +23,7 @@ pub enum SweepMergeError {
 pub fn merge_sweeps(parts: Vec<(String, SweepReport)>) -> Result<SweepReport, SweepMergeError> {
     let shards: Vec<(&str, Shard)> = parts.iter().map(|(f, p)| (f.as_str(), p.shard)).collect();
     let n = parts.first().map_or(0, |(_, p)| p.design_points);
-    check_shards(&shards, n, "design points")?;
+    check_shards(&shards, n, ("design points", 0))?;
     let (first_name, first) = &parts[0];
     let fp = serde_json::to_value(&first.fingerprint).unwrap_or_default();
     for (name, p) in &parts {

@@ -69,7 +69,7 @@ pub fn merge_parts(parts: Vec<(String, StudyReport)>) -> Result<StudyReport, Mer
     }
     let shards: Vec<(&str, Shard)> = parts.iter().map(|(f, p)| (f.as_str(), p.shard)).collect();
     let n = first.variants.first().map_or(0, |v| v.samples);
-    check_shards(&shards, n, "samples")?;
+    check_shards(&shards, n, ("samples", 0))?;
     let mut variants = Vec::new();
     for (j, proto) in first.variants.iter().enumerate() {
         let mine: Vec<&VariantReport> = parts.iter().map(|(_, p)| &p.variants[j]).collect();
@@ -121,8 +121,13 @@ fn check_same_study(
 
 /// Every shard 1..=N exactly once, N the same in every part (file name and
 /// shard); a missing shard is named with its range of the `n` `unit`
-/// (`samples` of a study, `design points` of a sweep).
-pub fn check_shards(parts: &[(&str, Shard)], n: usize, unit: &str) -> Result<(), MergeError> {
+/// (`samples` of a study, `design points` of a sweep: numbered from 0;
+/// `searches` of an optimisation: from 1), `(unit, first number)`.
+pub fn check_shards(
+    parts: &[(&str, Shard)],
+    n: usize,
+    (unit, origin): (&str, usize),
+) -> Result<(), MergeError> {
     let Some(&(first_file, first)) = parts.first() else {
         return Err(MergeError::Empty);
     };
@@ -157,7 +162,7 @@ pub fn check_shards(parts: &[(&str, Shard)], n: usize, unit: &str) -> Result<(),
             let s = Shard { index: i, count };
             match s.range(n) {
                 Ok(r) if !r.is_empty() => {
-                    format!("shard {s} ({unit} {}..{})", r.start, r.end - 1)
+                    format!("shard {s} ({unit} {}..{})", r.start + origin, r.end - 1 + origin)
                 }
                 _ => format!("shard {s} (no {unit})"),
             }

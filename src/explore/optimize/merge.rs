@@ -67,7 +67,7 @@ pub fn merge_optimizations(
 ) -> Result<OptimizeReport, OptimizeMergeError> {
     let shards: Vec<(&str, Shard)> = parts.iter().map(|(f, p)| (f.as_str(), p.shard)).collect();
     let n = parts.first().map_or(0, |(_, p)| p.searches);
-    check_shards(&shards, n, "searches")?;
+    check_shards(&shards, n, ("searches", 1))?;
     let (first_name, first) = &parts[0];
     let key = common(first);
     for (name, p) in &parts {
