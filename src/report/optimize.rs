@@ -35,7 +35,10 @@ impl OptimizeReport {
         };
         let shard = match self.shard.count {
             1 => String::new(),
-            _ => format!(" (shard {}; `kinrepro merge` joins the shards)", self.shard),
+            _ => format!(
+                " (shard {}: merged with the other shards, the whole optimisation)",
+                self.shard
+            ),
         };
         format!("{held} of {}{shard}; why each stopped: {}", self.searches, each.join("; "))
     }
@@ -66,9 +69,10 @@ impl OptimizeReport {
             }
             Some(o) => {
                 let unit = self.goals.objectives[0].output.unit();
+                let of = if self.shard.count > 1 { " of this shard" } else { "" };
                 let _ = writeln!(
                     s,
-                    "\noptimum (candidate {}): {}",
+                    "\noptimum{of} (candidate {}): {}",
                     o.evaluation,
                     fields_text(&o.fields)
                 );
