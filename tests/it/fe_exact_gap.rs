@@ -250,7 +250,10 @@ fn far_from_conformity_exact_and_quadratic_gaps_agree() {
 fn near_conformity_the_exact_gap_needs_a_larger_approach() {
     let (r, rg, load) = (5e-3, 5.05e-3, 70.0);
     let p = pair(ContactShape::SphereGroove, r, Some(rg));
-    let mesh = MeshOptions::coarse();
+    // Both gaps on one mesh: their ratio is what is tested, and it hardly
+    // depends on the mesh (effect 0.0042 at 0.45 a, 0.0040 at the coarse
+    // 0.3 a, against a bound of 0.0099), so the coarser mesh serves.
+    let mesh = MeshOptions { element_size_rel: 0.45, ..MeshOptions::default() };
     let (ce, cq) = (fe_case(&p, load, true).unwrap(), fe_case(&p, load, false).unwrap());
     let hz = hertz(cq.rx, cq.ry, cq.e_star, load).unwrap();
     let a = hz.semi_axes[1]; // across the groove
