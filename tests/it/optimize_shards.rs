@@ -146,3 +146,41 @@ fn bad_starts_and_shards_are_refused_naming_the_flag() {
         assert!(!ok && err.contains(want), "{args:?}: {err}");
     }
 }
+
+/// A shard run on an edited scene under the same file name, or with other
+/// study settings, is not a part of the same optimisation: `merge` names
+/// the fingerprint's field.
+#[test]
+fn parts_of_an_edited_scene_or_other_settings_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("s.toml");
+    let text = std::fs::read_to_string(scene("01_maxwell_vgroove_steel.toml")).unwrap();
+    let part = |text: &str, shard: &str, extra: &[&str]| {
+        std::fs::write(&file, text).unwrap();
+        let f = file.to_str().unwrap();
+        let args = [
+            &["optimize", f, "--vary", "preload.force=5:40", "--starts", "2"][..],
+            &["--objective", "k_min:max", "--samples", "10", "--sampler", "mc"],
+            &["--max-iterations", "10", "--shard", shard, "--json"],
+            extra,
+        ]
+        .concat();
+        let (ok, out, err) = kinrepro(&args);
+        assert!(ok, "{err}");
+        let p = dir.path().join(format!("part-{}-{}.json", shard.replace('/', "-"), extra.len()));
+        std::fs::write(&p, out).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let first = part(&text, "1/2", &[]);
+    let edited = text.replacen("mu_static = 0.5 ", "mu_static = 0.4 ", 1);
+    assert_ne!(edited, text);
+    let second = part(&edited, "2/2", &[]);
+    let (ok, _, err) = kinrepro(&["merge", &first, &second]);
+    assert!(!ok && err.contains("fingerprint.scene_content"), "{err}");
+    let second = part(&text, "2/2", &["--path-tolerance", "1e-6"]);
+    let (ok, _, err) = kinrepro(&["merge", &first, &second]);
+    assert!(!ok && err.contains("fingerprint.study"), "{err}");
+    let second = part(&text, "2/2", &[]);
+    let (ok, _, err) = kinrepro(&["merge", &first, &second]);
+    assert!(ok, "{err}");
+}

@@ -85,6 +85,15 @@ pub struct OptimizeSpec {
     pub shard: Shard,
 }
 
+/// The inputs of an optimisation a merge checks beyond its flags.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct OptimizeFingerprint {
+    /// FNV-1a 64 (hex) of the base scene text as read.
+    pub scene_content: String,
+    /// The study settings of every candidate (the base scene's).
+    pub study: crate::study::provenance::Fingerprint,
+}
+
 /// One candidate the search evaluated.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Candidate {
@@ -143,6 +152,9 @@ pub struct OptimizeReport {
     pub scene: String,
     pub name: String,
     pub vary: Vec<SetRecord>,
+    /// What every shard of one optimisation shares beyond the fields
+    /// above: the scene as read and the study's settings.
+    pub fingerprint: OptimizeFingerprint,
     #[serde(flatten)]
     pub goals: Goals,
     /// The search and the constraint rule, in words.

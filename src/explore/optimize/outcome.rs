@@ -3,12 +3,12 @@
 //! constraints.
 
 use super::{COST_TOLERANCE, PENALTY};
-use super::{Candidate, Margin, OptimizeReport, OptimizeSpec, Optimum};
+use super::{Candidate, Margin, OptimizeFingerprint, OptimizeReport, OptimizeSpec, Optimum};
 use crate::explore::design_report::DesignReport;
 use crate::explore::goal::{Goals, Objective, Output, Sense, direction_matches};
 use crate::explore::run::SetRecord;
 use crate::study::StudyPlan;
-use crate::study::provenance::{SCHEMA_VERSION, VERSION, produced_by};
+use crate::study::provenance::{Fingerprint, SCHEMA_VERSION, VERSION, fnv1a64, produced_by};
 
 /// The best feasible candidate of `history` on `objective` (the first
 /// of equals), if any is feasible.
@@ -59,6 +59,10 @@ pub(super) fn report(
             .iter()
             .map(|s| SetRecord { field: s.path.clone(), values: s.spec.clone(), kind: s.kind })
             .collect(),
+        fingerprint: OptimizeFingerprint {
+            scene_content: format!("{:016x}", fnv1a64(spec.text.as_bytes())),
+            study: Fingerprint::new(&base.scene, &plan.settings, &base.design),
+        },
         goals: spec.goals.clone(),
         method: format!(
             "Nelder-Mead (argmin) in the unit cube of the ranges from its centre{}, stopping when \
