@@ -93,6 +93,9 @@ pub enum GoalError {
     NotVaried { text: String, path: String, varied: String },
 }
 
+/// Makes an output read at an evaluation point from (point, DOF or direction).
+type AtPoint = fn(String, String) -> Output;
+
 impl Output {
     /// Read `text` (module docs).
     pub fn parse(text: &str) -> Result<Output, GoalError> {
@@ -102,25 +105,19 @@ impl Output {
                 rest.rsplit_once(':').filter(|(p, m)| !p.is_empty() && !m.is_empty())?;
             Some((point.to_string(), measure.trim().to_string()))
         };
-        if let Some(rest) = t.strip_prefix("sigma:") {
-            let (point, measure) =
-                point_measure(rest).ok_or_else(|| GoalError::Unknown(t.into()))?;
-            return Ok(Output::Sigma { point, measure });
-        }
-        if let Some(rest) = t.strip_prefix("pm3sigma:") {
-            let (point, measure) =
-                point_measure(rest).ok_or_else(|| GoalError::Unknown(t.into()))?;
-            return Ok(Output::Pm3sigma { point, measure });
-        }
-        if let Some(rest) = t.strip_prefix("drift:") {
-            let (point, measure) =
-                point_measure(rest).ok_or_else(|| GoalError::Unknown(t.into()))?;
-            return Ok(Output::Drift { point, measure });
-        }
-        if let Some(rest) = t.strip_prefix("residual:") {
-            let (point, measure) =
-                point_measure(rest).ok_or_else(|| GoalError::Unknown(t.into()))?;
-            return Ok(Output::Residual { point, measure });
+        // The outputs read at an evaluation point: `KIND:POINT:DOF`.
+        let at_point: [(&str, AtPoint); 4] = [
+            ("sigma:", |point, measure| Output::Sigma { point, measure }),
+            ("pm3sigma:", |point, measure| Output::Pm3sigma { point, measure }),
+            ("drift:", |point, measure| Output::Drift { point, measure }),
+            ("residual:", |point, measure| Output::Residual { point, measure }),
+        ];
+        for (prefix, make) in at_point {
+            if let Some(rest) = t.strip_prefix(prefix) {
+                let (point, measure) =
+                    point_measure(rest).ok_or_else(|| GoalError::Unknown(t.into()))?;
+                return Ok(make(point, measure));
+            }
         }
         match t {
             "k_min" => Ok(Output::KMin),
