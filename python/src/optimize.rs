@@ -76,16 +76,7 @@ impl Optimization {
 
 /// `kinrepro merge` of optimisation parts.
 pub fn merge_optimizations(py: Python<'_>, parts: &[Bound<'_, PyAny>]) -> PyResult<Py<PyAny>> {
-    let docs = parts
-        .iter()
-        .enumerate()
-        .map(|(i, p)| {
-            let o = p
-                .cast::<Optimization>()
-                .map_err(|_| err(format!("merge: part {i} is not an Optimization")))?;
-            Ok((format!("part {}", i + 1), o.get().report.clone()))
-        })
-        .collect::<PyResult<Vec<_>>>()?;
+    let docs = crate::study::parts_of(parts, "an Optimization", |o: &Optimization| &o.report)?;
     let merged = py.detach(move || lib_merge(docs)).map_err(err)?;
     Ok(Py::new(py, Optimization { report: merged })?.into_any())
 }

@@ -420,6 +420,27 @@ impl kinrepro::study::stream::RecordSink for NoSink {
     }
 }
 
+/// The parts of a merge as `(label, document)`: each must be a `T` (named
+/// `kind` in the error), its document read by `report`.
+pub(crate) fn parts_of<T, R>(
+    parts: &[Bound<'_, PyAny>],
+    kind: &str,
+    report: impl Fn(&T) -> &R,
+) -> PyResult<Vec<(String, R)>>
+where
+    T: pyo3::PyClass<Frozen = pyo3::pyclass::boolean_struct::True> + Sync,
+    R: Clone,
+{
+    parts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let part = p.cast::<T>().map_err(|_| err(format!("merge: part {i} is not {kind}")))?;
+            Ok((format!("part {}", i + 1), report(part.get()).clone()))
+        })
+        .collect()
+}
+
 /// Merge shards of a study (`kinrepro merge`): a list of `Study` (or JSON
 /// texts); the result equals the unsharded run. Sweep shards: a list of
 /// `Sweep`; optimisation shards: a list of `Optimization`.

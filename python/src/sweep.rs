@@ -126,15 +126,7 @@ impl Sweep {
 
 /// `kinrepro merge` of sweep parts.
 pub fn merge_sweeps(py: Python<'_>, parts: &[Bound<'_, PyAny>]) -> PyResult<Py<PyAny>> {
-    let docs = parts
-        .iter()
-        .enumerate()
-        .map(|(i, p)| {
-            let s =
-                p.cast::<Sweep>().map_err(|_| err(format!("merge: part {i} is not a Sweep")))?;
-            Ok((format!("part {}", i + 1), s.get().report.clone()))
-        })
-        .collect::<PyResult<Vec<_>>>()?;
+    let docs = crate::study::parts_of(parts, "a Sweep", |s: &Sweep| &s.report)?;
     let merged = py.detach(move || lib_merge(docs)).map_err(err)?;
     Ok(Py::new(py, Sweep { report: merged })?.into_any())
 }
