@@ -42,14 +42,16 @@ fn sigma_x(force: f64) -> f64 {
 #[test]
 fn the_largest_preload_under_a_bound_on_sigma_follows_the_hertz_power() {
     let target = 6e-9;
-    let r = optimize(&[
+    let bound = format!("sigma:centre:x<={target:e}");
+    let args = [
         "--vary",
         "preload.force=5:40",
         "--objective",
         "preload.force:max",
         "--constraint",
-        &format!("sigma:centre:x<={target:e}"),
-    ]);
+        &bound,
+    ];
+    let r = optimize(&args);
     // sigma = sigma_0 (F / F_0)^(2/3): F* = F_0 (target / sigma_0)^(3/2).
     let f0 = 20.0;
     let closed = f0 * (target / sigma_x(f0)).powf(1.5);
@@ -58,40 +60,17 @@ fn the_largest_preload_under_a_bound_on_sigma_follows_the_hertz_power() {
     let margin = r["optimum"]["constraint_margins"][0]["margin"].as_f64().unwrap();
     assert!(margin >= 0.0, "the optimum breaks its constraint by {margin}");
     // The same seed, the same optimum and history.
-    let again = optimize(&[
-        "--vary",
-        "preload.force=5:40",
-        "--objective",
-        "preload.force:max",
-        "--constraint",
-        &format!("sigma:centre:x<={target:e}"),
-    ]);
+    let again = optimize(&args);
     assert_eq!(r["optimum"], again["optimum"]);
     assert_eq!(r["history"], again["history"]);
     // The HTML page: the optimum's force, its margin, the convergence plot
     // with one marker per candidate that gave an objective.
     let dir = tempfile::tempdir().unwrap();
     let html = dir.path().join("o.html");
-    let bound = format!("sigma:centre:x<={target:e}");
     let s = s01();
-    let (ok, _, err) = kinrepro(&[
-        "optimize",
-        &s,
-        "--sampler",
-        "mc",
-        "--samples",
-        "20",
-        "--seed",
-        "1",
-        "--vary",
-        "preload.force=5:40",
-        "--objective",
-        "preload.force:max",
-        "--constraint",
-        &bound,
-        "--html",
-        html.to_str().unwrap(),
-    ]);
+    let base = ["optimize", &s, "--sampler", "mc", "--samples", "20", "--seed", "1"];
+    let (ok, _, err) =
+        kinrepro(&[&base[..], &args[..], &["--html", html.to_str().unwrap()]].concat());
     assert!(ok, "{err}");
     let page = std::fs::read_to_string(&html).unwrap();
     assert!(page.contains(&format!("<td class=\"l\">{found}</td>")), "the optimum's force");

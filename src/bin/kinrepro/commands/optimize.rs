@@ -54,7 +54,7 @@ pub fn optimize(a: OptimizeArgs) -> Result {
     }
     print_optimization(&report, a.json, a.format, a.html.as_deref(), a.force, &text)?;
     if report.optimum.is_none() && report.shard == Shard::whole() {
-        return Err(no_feasible_design(&file, &report));
+        return Err(no_feasible_design(&report));
     }
     Ok(())
 }
@@ -75,14 +75,15 @@ pub fn merge(parts: &[PathBuf], first: String, format: Format) -> Result {
     let merged = merge_optimizations(docs).map_err(|e| Error::new(format!("merge: {e}")))?;
     print_optimization(&merged, json, TextFormat::Table, None, false, "")?;
     match merged.optimum {
-        None => Err(no_feasible_design(&merged.scene, &merged)),
+        None => Err(no_feasible_design(&merged)),
         Some(_) => Ok(()),
     }
 }
 
-fn no_feasible_design(file: &str, report: &OptimizeReport) -> Error {
+fn no_feasible_design(report: &OptimizeReport) -> Error {
     Error::new(format!(
-        "{file}: no feasible design: none of the {} candidates meets every constraint",
+        "{}: no feasible design: none of the {} candidates meets every constraint",
+        report.scene,
         report.history.len()
     ))
 }
