@@ -168,7 +168,7 @@ impl OptimizeReport {
     /// The line naming what produced this document.
     pub fn produced_by(&self) -> String {
         format!(
-            "{}, optimisation of {}",
+            "{}, optimisation of {}, shard {}",
             produced_by(
                 &self.solver,
                 &self.sampler.to_string(),
@@ -176,7 +176,8 @@ impl OptimizeReport {
                 &self.samples.to_string(),
                 "friction"
             ),
-            self.scene
+            self.scene,
+            self.shard
         )
     }
 }
