@@ -121,12 +121,24 @@ fn refuse_unseated(report: &StudyReport, allow: bool) -> Result {
     )))
 }
 
+/// The `"document"` field of a JSON text (`sweep`, `optimize`; a study's
+/// has none); only that field is read, the rest is skipped without
+/// building a tree.
+fn document_kind(text: &str) -> Option<String> {
+    #[derive(serde::Deserialize)]
+    struct Document {
+        #[serde(default)]
+        document: Option<String>,
+    }
+    serde_json::from_str::<Document>(text).ok().and_then(|d| d.document)
+}
+
 pub fn merge(args: MergeArgs) -> Result {
     let MergeArgs { parts, format, allow_unseated } = args;
     // The first part (clap asks for one at least) says which kind of
     // document is merged; it is read once.
     let first = read_text(&parts[0])?;
-    match super::sweep::document_kind(&first).as_deref() {
+    match document_kind(&first).as_deref() {
         Some("sweep") => return super::sweep::merge(&parts, first, format),
         Some("optimize") => return super::optimize::merge(&parts, first, format),
         _ => {}

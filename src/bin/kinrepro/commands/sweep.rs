@@ -116,15 +116,3 @@ pub fn merge(parts: &[PathBuf], first: String, format: Format) -> Result {
     print_sweep(&merged, format)?;
     Ok(merged.check_any_valid()?)
 }
-
-/// The `"document"` field of a JSON text (`sweep`, `optimize`; a study's
-/// has none); only that field is read, the rest is skipped without
-/// building a tree.
-pub fn document_kind(text: &str) -> Option<String> {
-    #[derive(serde::Deserialize)]
-    struct Document {
-        #[serde(default)]
-        document: Option<String>,
-    }
-    serde_json::from_str::<Document>(text).ok().and_then(|d| d.document)
-}
