@@ -1,5 +1,5 @@
 //! Contact forces of one time step: the compliant contact layer
-//! ([`contact_layer::evaluate`]: Hertz normal force, Coulomb stick/slip with
+//! ([`contact_layer::evaluate_into`]: Hertz normal force, Coulomb stick/slip with
 //! history) plus the damping that lets the motion settle.
 //!
 //! Normal damping, the nonlinear viscoelastic law of Tsuji, Tanaka & Ishida
@@ -44,7 +44,9 @@ use nalgebra::{Matrix3, Vector3};
 use super::mass::MassModel;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, SlipState, TangentialState};
-use crate::solve::contact_layer::{ContactEval, evaluate};
+use crate::solve::contact_layer::{
+    ContactEval, Motion as LayerMotion, Moved, NormalPart, evaluate_into,
+};
 
 /// The damping ratios of the contact dashpots.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -67,6 +69,18 @@ pub struct StepContact {
     pub tangential_force: f64,
 }
 
+impl StepContact {
+    /// An empty slot for [`contact_force`].
+    pub fn empty() -> Self {
+        StepContact {
+            eval: ContactEval::empty(),
+            force: Vector3::zeros(),
+            normal_force: 0.0,
+            tangential_force: 0.0,
+        }
+    }
+}
+
 /// Rigid-body state used by the damping: pose, centre of mass (world),
 /// linear velocity of the centre of mass, angular velocity, world inverse inertia.
 pub struct Motion<'a> {
@@ -85,26 +99,48 @@ impl Motion<'_> {
     }
 }
 
-/// Evaluate contact `i` at the current motion state (contact layer plus dashpots).
+/// Evaluate contact `i` at the current motion state (contact layer plus
+/// dashpots), with `back` the motion from its pose to the committed one,
+/// into the slot `out` (the simulation's buffer: nothing is
+/// built and then moved). No consistent tangent is formed: an explicit
+/// step reads forces only ([`evaluate_into`] forms them by the same
+/// operations with or without it).
 #[allow(clippy::too_many_arguments)]
 pub fn contact_force(
+    out: &mut StepContact,
     coupling: &Coupling,
     i: usize,
     motion: &Motion,
-    committed_pose: &BodyPose,
+    back: &LayerMotion,
     committed: &TangentialState,
     friction: Friction,
     damping: Damping,
-) -> StepContact {
-    let eval = evaluate(coupling, i, motion.pose, committed_pose, committed, friction);
+) {
+    let g = coupling.geometry(i, motion.pose);
+    let moved = Moved { du: back.displacement(&g.point), committed, friction };
+    let normal = NormalPart::new(coupling, i, &g, committed);
+    out.eval.geometry = g;
+    evaluate_into(&mut out.eval, coupling, i, &moved, &normal, false);
+    let (force, normal_force, tangential_force) =
+        damped(&out.eval, coupling, i, motion, friction, damping);
+    out.force = force;
+    out.normal_force = normal_force;
+    out.tangential_force = tangential_force;
+}
+
+/// The total force on the body, the normal force and the tangential
+/// force's magnitude of the evaluation `eval` with the dashpots (module docs).
+fn damped(
+    eval: &ContactEval,
+    coupling: &Coupling,
+    i: usize,
+    motion: &Motion,
+    friction: Friction,
+    damping: Damping,
+) -> (Vector3<f64>, f64, f64) {
     let fh = eval.normal_force;
     if fh <= 0.0 {
-        return StepContact {
-            eval,
-            force: Vector3::zeros(),
-            normal_force: 0.0,
-            tangential_force: 0.0,
-        };
+        return (Vector3::zeros(), 0.0, 0.0);
     }
     let n = eval.geometry.normal;
     let p = eval.geometry.point;
@@ -137,10 +173,5 @@ pub fn contact_force(
             }
         }
     }
-    StepContact {
-        eval,
-        force: n * f_n + tangential,
-        normal_force: f_n,
-        tangential_force: tangential.norm(),
-    }
+    (n * f_n + tangential, f_n, tangential.norm())
 }

@@ -86,7 +86,7 @@ pub fn seat(
     load: &Load,
     opts: &DynamicOptions,
 ) -> Result<Seating, SolveError> {
-    seat_traced(coupling, load, opts, &mut |_| {})
+    seat_with(coupling, load, opts, None)
 }
 
 /// Most time steps of one dynamic seating: 10^7, about a minute and a
@@ -100,6 +100,17 @@ pub fn seat_traced(
     opts: &DynamicOptions,
     trace: &mut dyn FnMut(&TraceSample),
 ) -> Result<Seating, SolveError> {
+    seat_with(coupling, load, opts, Some(trace))
+}
+
+/// [`seat`], with the trace sample of every step given to `trace` if
+/// there is one (a seating without it builds none).
+fn seat_with(
+    coupling: &Coupling,
+    load: &Load,
+    opts: &DynamicOptions,
+    mut trace: Option<&mut dyn FnMut(&TraceSample)>,
+) -> Result<Seating, SolveError> {
     let mut sim = Simulation::new(coupling, load, opts)?;
     let max_time = sim.ramp_time + opts.max_settle_periods * sim.freq.longest_period();
     check_steps(&sim, max_time)?;
@@ -108,7 +119,9 @@ pub fn seat_traced(
             return Err(SolveError::Cancelled);
         }
         sim.step()?;
-        trace(&sim.sample());
+        if let Some(trace) = trace.as_mut() {
+            trace(&sim.sample());
+        }
         let travel = (sim.pose.translation - coupling.touching_pose.translation).norm();
         if travel > sim.max_travel {
             return Err(SolveError::SlidAway {

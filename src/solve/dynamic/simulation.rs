@@ -14,6 +14,7 @@ use crate::assembly::{BodyPose, Coupling};
 use crate::contact::friction;
 use crate::contact::{Friction, SlipState, TangentialState};
 use crate::scene::Preload;
+use crate::solve::contact_layer::Motion as LayerMotion;
 use crate::solve::preload_forces::{Applied, applied};
 use crate::solve::{Load, SolveError};
 
@@ -46,8 +47,18 @@ pub struct Simulation<'a> {
     /// Pose x_n at which the last step evaluated its forces, and those forces.
     pub(super) pose: BodyPose,
     pub(super) contacts: Vec<StepContact>,
-    energy: Energy,
+    /// The slots the next step evaluates its contacts into (the last
+    /// step's but one: no evaluation is allocated per step).
+    spare: Vec<StepContact>,
+    /// The preload forces of the last step (a buffer reused every step).
+    preload_forces: Vec<Applied>,
+    /// The velocity (linear, angular) at the start of the last step, for
+    /// the synchronized kinetic energy of [`Simulation::energy`].
+    velocity: (Vector3<f64>, Vector3<f64>),
     pub(super) status: Status,
+    /// Work of the preload up to t_n (the state of the last step) and up
+    /// to t_(n+1) [J].
+    work_at_state: f64,
     work: f64,
     length: f64,
     pub(super) max_travel: f64,
@@ -106,13 +117,11 @@ impl<'a> Simulation<'a> {
             slip_path: vec![0.0; n],
             pose: start,
             contacts: Vec::new(),
-            energy: Energy {
-                kinetic: 0.0,
-                kinetic_synchronized: 0.0,
-                hertz: 0.0,
-                preload_work: 0.0,
-            },
+            spare: Vec::new(),
+            preload_forces: Vec::new(),
+            velocity: (Vector3::zeros(), Vector3::zeros()),
             status: Status { kinetic: 0.0, max_speed: 0.0, residual: f64::INFINITY },
+            work_at_state: 0.0,
             work: 0.0,
             length,
             max_travel,
@@ -153,9 +162,30 @@ impl<'a> Simulation<'a> {
         &self.contacts
     }
 
-    /// Energy at t_n (see [`Energy`]).
+    /// Energy at t_n (see [`Energy`]), formed on request (a seating reads
+    /// none): the kinetic energy with the velocities before and after the
+    /// last step, the Hertz energy of its contacts.
     pub fn energy(&self) -> Energy {
-        self.energy
+        if self.steps == 0 {
+            return Energy {
+                kinetic: 0.0,
+                kinetic_synchronized: 0.0,
+                hertz: 0.0,
+                preload_work: 0.0,
+            };
+        }
+        let rb = &self.world.bodies[self.body];
+        let (v0, w0) = self.velocity;
+        let (v1, w1) = (nvec(rb.linvel()), nvec(rb.angvel()));
+        let rot = self.pose.rotation.to_rotation_matrix().into_inner();
+        let hertz = (self.contacts.iter().zip(&self.coupling.contacts))
+            .fold(0.0, |e, (sc, c)| e + c.normal.energy(sc.eval.approach));
+        Energy {
+            kinetic: self.status.kinetic,
+            kinetic_synchronized: self.kinetic(&((v0 + v1) * 0.5), &((w0 + w1) * 0.5), &rot),
+            hertz,
+            preload_work: self.work_at_state,
+        }
     }
 
     /// Preload fraction lambda(t).
@@ -194,9 +224,12 @@ impl<'a> Simulation<'a> {
             inv_inertia: self.mass.world_inverse_inertia(&pose.rotation),
             mass: &self.mass,
         };
-        let contacts = self.contact_forces(&motion);
-        let preload: Vec<Applied> = applied(self.coupling, self.preload, &pose, lambda).collect();
-        let (residual, max_speed, hertz) = self.balance(&motion, &contacts, &preload);
+        let mut contacts = std::mem::take(&mut self.spare);
+        self.contact_forces(&motion, &mut contacts);
+        let mut preload = std::mem::take(&mut self.preload_forces);
+        preload.clear();
+        preload.extend(applied(self.coupling, self.preload, &pose, lambda));
+        let (residual, max_speed) = self.balance(&motion, &contacts, &preload);
         let kinetic_before = self.kinetic(&linvel, &angvel, &rot);
         self.apply_and_commit(&contacts, &preload, pose);
         self.world.step();
@@ -209,54 +242,49 @@ impl<'a> Simulation<'a> {
         if !finite || !residual.is_finite() {
             return Err(SolveError::NonFinite { time_s: t, step: self.steps });
         }
-        self.energy = Energy {
-            kinetic: kinetic_before,
-            kinetic_synchronized: self.kinetic(
-                &((linvel + v1) * 0.5),
-                &((angvel + w1) * 0.5),
-                &rot,
-            ),
-            hertz,
-            preload_work: self.work,
-        };
+        self.velocity = (linvel, angvel);
+        self.work_at_state = self.work;
         let points = self.preload.forces.iter().map(|f| f.point);
         for (a, point) in preload.iter().zip(points) {
             self.work += a.force.dot(&(new_pose.apply(&point) - a.point));
         }
         self.status = Status { kinetic: kinetic_before, max_speed, residual };
         self.pose = pose;
-        self.contacts = contacts;
+        self.spare = std::mem::replace(&mut self.contacts, contacts);
+        self.preload_forces = preload;
         self.steps += 1;
         Ok(())
     }
 
-    /// Every contact's force at the pose of `motion` (contact layer and dashpots).
-    fn contact_forces(&self, motion: &forces::Motion) -> Vec<StepContact> {
+    /// Every contact's force at the pose of `motion` (contact layer and
+    /// dashpots) into `out`, one slot per contact.
+    fn contact_forces(&self, motion: &forces::Motion, out: &mut Vec<StepContact>) {
         let c = self.coupling;
-        (0..c.contacts.len())
-            .map(|i| {
-                forces::contact_force(
-                    c,
-                    i,
-                    motion,
-                    &self.committed_pose,
-                    &self.states[i],
-                    self.friction[i].during(self.dt),
-                    self.opts.damping,
-                )
-            })
-            .collect()
+        out.resize_with(c.contacts.len(), StepContact::empty);
+        let back = LayerMotion::between(motion.pose, &self.committed_pose);
+        for (i, slot) in out.iter_mut().enumerate() {
+            forces::contact_force(
+                slot,
+                c,
+                i,
+                motion,
+                &back,
+                &self.states[i],
+                self.friction[i].during(self.dt),
+                self.opts.damping,
+            );
+        }
     }
 
     /// Residual of the contact-layer forces (no dashpots) and the preload
     /// forces, relative to F_p and F_p L (F_p the preload's scale); the
-    /// largest speed of a ball centre or contact point; the Hertz energy.
+    /// largest speed of a ball centre or contact point.
     fn balance(
         &self,
         motion: &forces::Motion,
         contacts: &[StepContact],
         preload: &[Applied],
-    ) -> (f64, f64, f64) {
+    ) -> (f64, f64) {
         let c = self.coupling;
         let scale = self.preload.scale();
         let (mut rf, mut rm) = (Vector3::zeros(), Vector3::zeros());
@@ -265,7 +293,6 @@ impl<'a> Simulation<'a> {
             rm += a.point.cross(&a.force);
         }
         let mut max_speed: f64 = 0.0;
-        let mut hertz = 0.0;
         for (i, sc) in contacts.iter().enumerate() {
             let e = &sc.eval;
             rf += e.force;
@@ -274,10 +301,9 @@ impl<'a> Simulation<'a> {
             max_speed = max_speed
                 .max(motion.velocity_at(&centre).norm())
                 .max(motion.velocity_at(&e.geometry.point).norm());
-            hertz += c.contacts[i].normal.energy(e.approach);
         }
         let residual = (rf.norm() / scale).max(rm.norm() / (scale * self.length));
-        (residual, max_speed, hertz)
+        (residual, max_speed)
     }
 
     /// Set the contact forces and the preload as rapier user forces (they
