@@ -50,8 +50,13 @@ impl StartPose {
 /// `solve::Load::start`).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct DynamicOptions {
-    /// Time steps per period of the highest natural mode at full preload.
+    /// Time steps per period of the highest natural mode at full preload,
+    /// for a seating from the touching pose (the preload is the largest
+    /// load the contacts meet).
     pub steps_per_period: f64,
+    /// The same for a half that arrives moving (an offset or tilted
+    /// start): its impacts load the contacts beyond the preload.
+    pub arrival_steps_per_period: f64,
     /// Ramp duration in periods of the fundamental (lowest) mode; 0: step load.
     pub ramp_periods: f64,
     pub damping: Damping,
@@ -66,7 +71,8 @@ pub struct DynamicOptions {
 impl Default for DynamicOptions {
     fn default() -> Self {
         DynamicOptions {
-            steps_per_period: 30.0,
+            steps_per_period: 20.0,
+            arrival_steps_per_period: 30.0,
             ramp_periods: 40.0,
             damping: Damping { normal: 0.3, tangential: 1.0 },
             settle_displacement: 1e-14,
@@ -77,13 +83,22 @@ impl Default for DynamicOptions {
 }
 
 impl DynamicOptions {
+    /// The time steps per shortest period of a seating from `start`.
+    pub fn steps_per_period_from(&self, start: &StartPose) -> f64 {
+        if start.is_offset() { self.arrival_steps_per_period } else { self.steps_per_period }
+    }
+
     pub(super) fn check(&self) -> Result<(), SolveError> {
         let bad = |m: String| Err(SolveError::BadOption(m));
-        if !(self.steps_per_period >= 20.0 && self.steps_per_period.is_finite()) {
-            return bad(format!(
-                "steps_per_period = {} must be at least 20 (explicit damping needs zeta omega dt < 1)",
-                self.steps_per_period
-            ));
+        for (name, n) in [
+            ("steps_per_period", self.steps_per_period),
+            ("arrival_steps_per_period", self.arrival_steps_per_period),
+        ] {
+            if !(n >= 20.0 && n.is_finite()) {
+                return bad(format!(
+                    "{name} = {n} must be at least 20 (explicit damping needs zeta omega dt < 1)"
+                ));
+            }
         }
         if !(self.ramp_periods >= 0.0 && self.ramp_periods.is_finite()) {
             return bad(format!("ramp_periods = {} must be >= 0", self.ramp_periods));

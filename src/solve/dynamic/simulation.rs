@@ -94,7 +94,7 @@ impl<'a> Simulation<'a> {
             }
             states.push(TangentialState::new(g.normal));
         }
-        let dt = freq.shortest_period() / opts.steps_per_period;
+        let dt = freq.shortest_period() / opts.steps_per_period_from(&load.start);
         let (world, body) = world::build(coupling, &mass, &start, dt);
         let length = coupling.length_scale();
         let max_travel = coupling.slide_away_travel()
@@ -195,7 +195,8 @@ impl<'a> Simulation<'a> {
         } else {
             let tau = t / self.ramp_time;
             let s = tau * tau * (3.0 - 2.0 * tau);
-            s.powf(1.5)
+            // s^1.5 as s sqrt(s): one square root instead of pow.
+            s * s.sqrt()
         }
     }
 
