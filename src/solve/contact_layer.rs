@@ -93,16 +93,34 @@ pub fn evaluate(
     committed: &TangentialState,
     friction: Friction,
 ) -> ContactEval {
-    let g = coupling.geometry(i, pose);
-    let moved = Moved {
-        du: Motion::between(pose, committed_pose).displacement(&g.point),
-        committed,
-        friction,
-    };
-    let normal = NormalPart::new(coupling, i, &g, committed);
-    let mut out = ContactEval::open(g);
-    evaluate_into(&mut out, coupling, i, &moved, &normal, true);
+    let mut out = ContactEval::empty();
+    let back = Motion::between(pose, committed_pose);
+    evaluate_at(&mut out, coupling, i, pose, &back, committed, friction, true);
     out
+}
+
+/// Contact `i` at `pose` into the slot `out` ([`evaluate_into`], with the
+/// tangent if `tangent`), `back` the motion from `pose` to the committed
+/// pose: for callers that evaluate one contact at a time into their own
+/// buffers (the dynamic solver's step, which forms `back` once for all
+/// contacts and reads no tangent).
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn evaluate_at(
+    out: &mut ContactEval,
+    coupling: &Coupling,
+    i: usize,
+    pose: &BodyPose,
+    back: &Motion,
+    committed: &TangentialState,
+    friction: Friction,
+    tangent: bool,
+) {
+    let g = coupling.geometry(i, pose);
+    let moved = Moved { du: back.displacement(&g.point), committed, friction };
+    let normal = NormalPart::new(coupling, i, &g, committed);
+    out.geometry = g;
+    evaluate_into(out, coupling, i, &moved, &normal, tangent);
 }
 
 /// The rigid motion that takes the moving half from a trial pose T back to

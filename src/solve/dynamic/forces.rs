@@ -1,5 +1,5 @@
 //! Contact forces of one time step: the compliant contact layer
-//! ([`contact_layer::evaluate_into`]: Hertz normal force, Coulomb stick/slip with
+//! ([`contact_layer::evaluate_at`]: Hertz normal force, Coulomb stick/slip with
 //! history) plus the damping that lets the motion settle.
 //!
 //! Normal damping, the nonlinear viscoelastic law of Tsuji, Tanaka & Ishida
@@ -44,9 +44,7 @@ use nalgebra::{Matrix3, Vector3};
 use super::mass::MassModel;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, SlipState, TangentialState};
-use crate::solve::contact_layer::{
-    ContactEval, Motion as LayerMotion, Moved, NormalPart, evaluate_into,
-};
+use crate::solve::contact_layer::{ContactEval, Motion as LayerMotion, evaluate_at};
 
 /// The damping ratios of the contact dashpots.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -103,7 +101,7 @@ impl Motion<'_> {
 /// dashpots), with `back` the motion from its pose to the committed one,
 /// into the slot `out` (the simulation's buffer: nothing is
 /// built and then moved). No consistent tangent is formed: an explicit
-/// step reads forces only ([`evaluate_into`] forms them by the same
+/// step reads forces only ([`evaluate_at`] forms them by the same
 /// operations with or without it).
 #[allow(clippy::too_many_arguments)]
 pub fn contact_force(
@@ -116,11 +114,7 @@ pub fn contact_force(
     friction: Friction,
     damping: Damping,
 ) {
-    let g = coupling.geometry(i, motion.pose);
-    let moved = Moved { du: back.displacement(&g.point), committed, friction };
-    let normal = NormalPart::new(coupling, i, &g, committed);
-    out.eval.geometry = g;
-    evaluate_into(&mut out.eval, coupling, i, &moved, &normal, false);
+    evaluate_at(&mut out.eval, coupling, i, motion.pose, back, committed, friction, false);
     let (force, normal_force, tangential_force) =
         damped(&out.eval, coupling, i, motion, friction, damping);
     out.force = force;

@@ -166,14 +166,6 @@ impl<'a> Simulation<'a> {
     /// none): the kinetic energy with the velocities before and after the
     /// last step, the Hertz energy of its contacts.
     pub fn energy(&self) -> Energy {
-        if self.steps == 0 {
-            return Energy {
-                kinetic: 0.0,
-                kinetic_synchronized: 0.0,
-                hertz: 0.0,
-                preload_work: 0.0,
-            };
-        }
         let rb = &self.world.bodies[self.body];
         let (v0, w0) = self.velocity;
         let (v1, w1) = (nvec(rb.linvel()), nvec(rb.angvel()));
