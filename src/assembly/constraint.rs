@@ -12,6 +12,9 @@
 //! when there are six contacts and the matrix has rank 6; free motions span
 //! its null space, redundant constraints the null space of its transpose.
 
+use std::collections::HashMap;
+use std::sync::{LazyLock, Mutex};
+
 use microlp::{ComparisonOp, OptimizationDirection, Problem};
 use nalgebra::{DMatrix, Vector3, Vector6};
 
@@ -258,24 +261,62 @@ const MU_RESOLUTION: f64 = 1e-4;
 pub fn friction_limit(coupling: &Coupling, preload: &Preload) -> FrictionLimit {
     let (o, l) = reference(coupling);
     let pose = coupling.touching_pose;
-    let m = coupling.contacts.len();
-    let geoms: Vec<_> = (0..m).map(|i| coupling.geometry(i, &pose)).collect();
+    // Each contact's normal and its point's arm (p - o) / L.
+    let cones: Vec<(Vector3<f64>, Vector3<f64>)> = (0..coupling.contacts.len())
+        .map(|i| coupling.geometry(i, &pose))
+        .map(|g| (g.normal, (g.point - o) / l))
+        .collect();
     // The preload per unit of its scale (a single force: its direction).
     let (target_f, target_m) = preload_wrench(preload, &pose, Some(o));
-    let target_f = -target_f;
-    let target_m = -target_m / l;
+    let target = [-target_f, -target_m / l];
+    let key: Vec<u64> = (cones.iter().flat_map(|(n, a)| [n, a]))
+        .chain(&target)
+        .flat_map(|v| v.iter().map(|x| x.to_bits()))
+        .collect();
+    let solved = || SOLVED.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    if let Some(limit) = solved().get(&key) {
+        return *limit;
+    }
+    let limit = solve_limit(&cones, &target);
+    let mut memo = solved();
+    if memo.len() >= SOLVED_MAX {
+        memo.clear();
+    }
+    memo.insert(key, limit);
+    limit
+}
+
+/// Limits already solved, by the bits of their programs' inputs (the
+/// contact normals and arms, the preload's direction): the limit depends on
+/// the geometry and the preload's direction only, so a sweep over any
+/// other field (preload force, materials, friction, samples) solves each
+/// geometry once. Equal bits give the same programs and so the same
+/// result; a different rounding of the same geometry is solved anew.
+static SOLVED: LazyLock<Mutex<HashMap<Vec<u64>, FrictionLimit>>> =
+    LazyLock::new(|| Mutex::new(HashMap::new()));
+
+/// Limits kept at most (then the memo starts again).
+const SOLVED_MAX: usize = 4096;
+
+/// [`friction_limit`] of the contacts `cones` (normal, arm) under the unit
+/// preload wrench `target` (force, moment / L): the bisection per open
+/// contact.
+fn solve_limit(
+    cones: &[(Vector3<f64>, Vector3<f64>)],
+    target: &[Vector3<f64>; 2],
+) -> FrictionLimit {
+    let m = cones.len();
+    let [target_f, target_m] = *target;
     let feasible = |open: usize, mu: f64| -> bool {
         let mut lp = Problem::new(OptimizationDirection::Minimize);
         let mut rows: [Vec<(microlp::Variable, f64)>; 6] = Default::default();
-        for (j, g) in geoms.iter().enumerate() {
+        for (j, (n, arm)) in cones.iter().enumerate() {
             if j == open {
                 continue;
             }
-            let n = g.normal;
             let e1 =
                 n.cross(&if n.x.abs() < 0.9 { Vector3::x() } else { Vector3::y() }).normalize();
             let e2 = n.cross(&e1);
-            let arm = (g.point - o) / l;
             for k in 0..CONE_FACETS {
                 let phi = 2.0 * std::f64::consts::PI * k as f64 / CONE_FACETS as f64;
                 let generator = n + (e1 * phi.cos() + e2 * phi.sin()) * mu;

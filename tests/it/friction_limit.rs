@@ -104,3 +104,34 @@ fn maxwell_friction_limit_matches_an_independent_statics_solution() {
         .unwrap();
     assert!((shown.parse::<f64>().unwrap() - code).abs() <= 5e-5, "{shown} vs {code}");
 }
+
+/// Statics is homogeneous in the load: the friction limit of a coupling
+/// does not depend on the preload's size (only on the geometry and the
+/// preload's line of action). Scaled by factors that change the bits of
+/// the preload's unit wrench (so that the code's memo of solved limits
+/// misses), the limit and its critical contact stay within the bisection's
+/// resolution; the same preload again gives the same limit.
+#[test]
+fn friction_limit_does_not_depend_on_the_preload_size() {
+    use kinrepro::assembly::constraint::friction_limit;
+    for name in ["01_maxwell_vgroove_steel.toml", "06_kelvin_steel.toml"] {
+        let (scene, c) = common::load(name);
+        let reference = friction_limit(&c, &scene.preload);
+        assert!(reference.mu_limit.is_finite() && reference.mu_limit > 0.05, "{name}");
+        for factor in [0.013, 3.7, 250.0] {
+            let mut preload = scene.preload.clone();
+            for f in &mut preload.forces {
+                f.force *= factor;
+            }
+            let scaled = friction_limit(&c, &preload);
+            assert!(
+                (scaled.mu_limit - reference.mu_limit).abs() <= 1e-4,
+                "{name} x{factor}: {} vs {}",
+                scaled.mu_limit,
+                reference.mu_limit
+            );
+            assert_eq!(scaled.critical_contact, reference.critical_contact, "{name} x{factor}");
+        }
+        assert_eq!(friction_limit(&c, &scene.preload), reference, "{name}");
+    }
+}
