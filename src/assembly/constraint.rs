@@ -259,16 +259,7 @@ const MU_RESOLUTION: f64 = 1e-4;
 /// the least over i. Below it the preload always drives the last contact
 /// closed.
 pub fn friction_limit(coupling: &Coupling, preload: &Preload) -> FrictionLimit {
-    let (o, l) = reference(coupling);
-    let pose = coupling.touching_pose;
-    // Each contact's normal and its point's arm (p - o) / L.
-    let cones: Vec<(Vector3<f64>, Vector3<f64>)> = (0..coupling.contacts.len())
-        .map(|i| coupling.geometry(i, &pose))
-        .map(|g| (g.normal, (g.point - o) / l))
-        .collect();
-    // The preload per unit of its scale (a single force: its direction).
-    let (target_f, target_m) = preload_wrench(preload, &pose, Some(o));
-    let target = [-target_f, -target_m / l];
+    let (cones, target) = program(coupling, preload);
     let key: Vec<u64> = (cones.iter().flat_map(|(n, a)| [n, a]))
         .chain(&target)
         .flat_map(|v| v.iter().map(|x| x.to_bits()))
@@ -284,6 +275,31 @@ pub fn friction_limit(coupling: &Coupling, preload: &Preload) -> FrictionLimit {
     }
     memo.insert(key, limit);
     limit
+}
+
+/// [`friction_limit`] solved anew, without the memo of solved limits.
+pub fn friction_limit_solved_anew(coupling: &Coupling, preload: &Preload) -> FrictionLimit {
+    let (cones, target) = program(coupling, preload);
+    solve_limit(&cones, &target)
+}
+
+/// The inputs of the friction limit's programs: each contact's normal and
+/// its point's arm (p - o) / L in the touching pose, and the preload's
+/// wrench per unit of its scale (force, moment / L; a single force: its
+/// direction), negated.
+#[allow(clippy::type_complexity)]
+fn program(
+    coupling: &Coupling,
+    preload: &Preload,
+) -> (Vec<(Vector3<f64>, Vector3<f64>)>, [Vector3<f64>; 2]) {
+    let (o, l) = reference(coupling);
+    let pose = coupling.touching_pose;
+    let cones = (0..coupling.contacts.len())
+        .map(|i| coupling.geometry(i, &pose))
+        .map(|g| (g.normal, (g.point - o) / l))
+        .collect();
+    let (target_f, target_m) = preload_wrench(preload, &pose, Some(o));
+    (cones, [-target_f, -target_m / l])
 }
 
 /// Limits already solved, by the bits of their programs' inputs (the

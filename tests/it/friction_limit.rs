@@ -107,23 +107,24 @@ fn maxwell_friction_limit_matches_an_independent_statics_solution() {
 
 /// Statics is homogeneous in the load: the friction limit of a coupling
 /// does not depend on the preload's size (only on the geometry and the
-/// preload's line of action). Scaled by factors that change the bits of
-/// the preload's unit wrench (so that the code's memo of solved limits
-/// misses), the limit and its critical contact stay within the bisection's
-/// resolution; the same preload again gives the same limit.
+/// preload's line of action). Solved anew for scaled preloads, the limit
+/// and its critical contact stay within the bisection's resolution; and
+/// the code's memo of solved limits returns exactly what a solve anew
+/// gives, for each of them.
 #[test]
 fn friction_limit_does_not_depend_on_the_preload_size() {
-    use kinrepro::assembly::constraint::friction_limit;
+    use kinrepro::assembly::constraint::{friction_limit, friction_limit_solved_anew};
     for name in ["01_maxwell_vgroove_steel.toml", "06_kelvin_steel.toml"] {
         let (scene, c) = common::load(name);
-        let reference = friction_limit(&c, &scene.preload);
+        let reference = friction_limit_solved_anew(&c, &scene.preload);
         assert!(reference.mu_limit.is_finite() && reference.mu_limit > 0.05, "{name}");
         for factor in [0.013, 3.7, 250.0] {
             let mut preload = scene.preload.clone();
             for f in &mut preload.forces {
                 f.force *= factor;
             }
-            let scaled = friction_limit(&c, &preload);
+            let scaled = friction_limit_solved_anew(&c, &preload);
+            assert_eq!(friction_limit(&c, &preload), scaled, "{name} x{factor}");
             assert!(
                 (scaled.mu_limit - reference.mu_limit).abs() <= 1e-4,
                 "{name} x{factor}: {} vs {}",
