@@ -12,12 +12,9 @@
 //! when there are six contacts and the matrix has rank 6; free motions span
 //! its null space, redundant constraints the null space of its transpose.
 
-use std::collections::HashMap;
-use std::sync::{LazyLock, Mutex};
-
-use microlp::{ComparisonOp, OptimizationDirection, Problem};
 use nalgebra::{DMatrix, Vector3, Vector6};
 
+pub use super::friction_limit::{FrictionLimit, friction_limit, friction_limit_solved_anew};
 use super::{BodyPose, Coupling};
 use crate::scene::Preload;
 
@@ -85,7 +82,7 @@ fn ranges(v: &[usize]) -> String {
     out.join(", ")
 }
 
-fn reference(coupling: &Coupling) -> (Vector3<f64>, f64) {
+pub(super) fn reference(coupling: &Coupling) -> (Vector3<f64>, f64) {
     let n = coupling.balls.len() as f64;
     let o = coupling.balls.iter().map(|b| b.centre).sum::<Vector3<f64>>() / n;
     let l = coupling
@@ -212,7 +209,7 @@ pub fn frictionless_forces(coupling: &Coupling, preload: &Preload) -> Vector6<f6
 /// The preload's full-load force and moment about the origin in the
 /// touching pose `pose` (each spring gives its `force` there); with `unit`,
 /// per unit of [`Preload::scale`] and about that point.
-fn preload_wrench(
+pub(super) fn preload_wrench(
     p: &Preload,
     pose: &BodyPose,
     unit: Option<Vector3<f64>>,
@@ -229,144 +226,4 @@ fn preload_wrench(
         m += (point - unit.unwrap_or_else(Vector3::zeros)).cross(&fk);
     }
     (f, m)
-}
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FrictionLimit {
-    /// Largest mu at which no contact can stay open while the others hold
-    /// the preload in their friction cones; infinite if none can at mu = 10.
-    pub mu_limit: f64,
-    /// The contact whose opening needs the least friction (1-based).
-    pub critical_contact: usize,
-    /// Relative error bound of the polyhedral friction cone: the true limit
-    /// lies in [mu_limit cos(pi/K), mu_limit].
-    pub cone_error_bound: f64,
-}
-
-/// Number of facets of the inscribed friction pyramid.
-const CONE_FACETS: usize = 64;
-/// Search range and resolution of the limit.
-const MU_SEARCH_MAX: f64 = 10.0;
-const MU_RESOLUTION: f64 = 1e-4;
-
-/// The friction limit for seating (centring ability, after Hale 1999,
-/// "Friction-based design of kinematic couplings", and Patti & Vogels 2019):
-/// the coupling cannot centre if, with one contact i still open, the other
-/// five can balance the preload with forces inside their friction cones
-/// |F_t| <= mu F_n — the half then sticks off its seat. For each i the least
-/// such mu is found by bisection on a linear feasibility problem (friction
-/// cone replaced by an inscribed pyramid of K facets, microlp); the limit is
-/// the least over i. Below it the preload always drives the last contact
-/// closed.
-pub fn friction_limit(coupling: &Coupling, preload: &Preload) -> FrictionLimit {
-    let (cones, target) = program(coupling, preload);
-    let key: Vec<u64> = (cones.iter().flat_map(|(n, a)| [n, a]))
-        .chain(&target)
-        .flat_map(|v| v.iter().map(|x| x.to_bits()))
-        .collect();
-    let solved = || SOLVED.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
-    if let Some(limit) = solved().get(&key) {
-        return *limit;
-    }
-    let limit = solve_limit(&cones, &target);
-    let mut memo = solved();
-    if memo.len() >= SOLVED_MAX {
-        memo.clear();
-    }
-    memo.insert(key, limit);
-    limit
-}
-
-/// [`friction_limit`] solved anew, without the memo of solved limits.
-pub fn friction_limit_solved_anew(coupling: &Coupling, preload: &Preload) -> FrictionLimit {
-    let (cones, target) = program(coupling, preload);
-    solve_limit(&cones, &target)
-}
-
-/// The inputs of the friction limit's programs: each contact's normal and
-/// its point's arm (p - o) / L in the touching pose, and the preload's
-/// wrench per unit of its scale (force, moment / L; a single force: its
-/// direction), negated.
-#[allow(clippy::type_complexity)]
-fn program(
-    coupling: &Coupling,
-    preload: &Preload,
-) -> (Vec<(Vector3<f64>, Vector3<f64>)>, [Vector3<f64>; 2]) {
-    let (o, l) = reference(coupling);
-    let pose = coupling.touching_pose;
-    let cones = (0..coupling.contacts.len())
-        .map(|i| coupling.geometry(i, &pose))
-        .map(|g| (g.normal, (g.point - o) / l))
-        .collect();
-    let (target_f, target_m) = preload_wrench(preload, &pose, Some(o));
-    (cones, [-target_f, -target_m / l])
-}
-
-/// Limits already solved, by the bits of their programs' inputs (the
-/// contact normals and arms, the preload's direction): the limit depends on
-/// the geometry and the preload's direction only, so a sweep over any
-/// other field (preload force, materials, friction, samples) solves each
-/// geometry once. Equal bits give the same programs and so the same
-/// result; a different rounding of the same geometry is solved anew.
-static SOLVED: LazyLock<Mutex<HashMap<Vec<u64>, FrictionLimit>>> =
-    LazyLock::new(|| Mutex::new(HashMap::new()));
-
-/// Limits kept at most (then the memo starts again).
-const SOLVED_MAX: usize = 4096;
-
-/// [`friction_limit`] of the contacts `cones` (normal, arm) under the unit
-/// preload wrench `target` (force, moment / L): the bisection per open
-/// contact.
-fn solve_limit(
-    cones: &[(Vector3<f64>, Vector3<f64>)],
-    target: &[Vector3<f64>; 2],
-) -> FrictionLimit {
-    let m = cones.len();
-    let [target_f, target_m] = *target;
-    let feasible = |open: usize, mu: f64| -> bool {
-        let mut lp = Problem::new(OptimizationDirection::Minimize);
-        let mut rows: [Vec<(microlp::Variable, f64)>; 6] = Default::default();
-        for (j, (n, arm)) in cones.iter().enumerate() {
-            if j == open {
-                continue;
-            }
-            let e1 =
-                n.cross(&if n.x.abs() < 0.9 { Vector3::x() } else { Vector3::y() }).normalize();
-            let e2 = n.cross(&e1);
-            for k in 0..CONE_FACETS {
-                let phi = 2.0 * std::f64::consts::PI * k as f64 / CONE_FACETS as f64;
-                let generator = n + (e1 * phi.cos() + e2 * phi.sin()) * mu;
-                let mom = arm.cross(&generator);
-                let var = lp.add_var(1.0, (0.0, f64::INFINITY));
-                for r in 0..3 {
-                    rows[r].push((var, generator[r]));
-                    rows[3 + r].push((var, mom[r]));
-                }
-            }
-        }
-        let rhs = [target_f.x, target_f.y, target_f.z, target_m.x, target_m.y, target_m.z];
-        for (r, row) in rows.iter().enumerate() {
-            lp.add_constraint(row.as_slice(), ComparisonOp::Eq, rhs[r]);
-        }
-        lp.solve().is_ok()
-    };
-    let mut best = (f64::INFINITY, 1);
-    for open in 0..m {
-        if !feasible(open, MU_SEARCH_MAX.min(best.0)) {
-            continue;
-        }
-        let (mut lo, mut hi) = (0.0, MU_SEARCH_MAX.min(best.0));
-        while hi - lo > MU_RESOLUTION {
-            let mid = 0.5 * (lo + hi);
-            if feasible(open, mid) { hi = mid } else { lo = mid }
-        }
-        if hi < best.0 {
-            best = (hi, open + 1);
-        }
-    }
-    FrictionLimit {
-        mu_limit: best.0,
-        critical_contact: best.1,
-        cone_error_bound: 1.0 - (std::f64::consts::PI / CONE_FACETS as f64).cos(),
-    }
 }

@@ -3,6 +3,7 @@
 
 pub mod constraint;
 mod contacts;
+mod friction_limit;
 pub mod geometry;
 pub mod thermal;
 
