@@ -1,6 +1,6 @@
 //! Kinematic design check: the constraint matrix of the six contacts, exact
-//! constraint, the frictionless preload distribution, and the friction limit
-//! for seating.
+//! constraint and the frictionless preload distribution (the friction limit
+//! for seating, which builds on them: `super::friction_limit`).
 //!
 //! Constraint matrix (Plücker coordinates of the contact normals; Blanding,
 //! *Exact Constraint*, 1999; Hale, *Principles and Techniques for Designing
@@ -14,7 +14,6 @@
 
 use nalgebra::{DMatrix, Vector3, Vector6};
 
-pub use super::friction_limit::{FrictionLimit, friction_limit, friction_limit_solved_anew};
 use super::{BodyPose, Coupling};
 use crate::scene::Preload;
 

@@ -3,7 +3,7 @@
 
 pub mod constraint;
 mod contacts;
-mod friction_limit;
+pub mod friction_limit;
 pub mod geometry;
 pub mod thermal;
 
@@ -16,7 +16,8 @@ use crate::contact::{
 };
 use crate::material::Material;
 use crate::scene::{DynamicsSettings, Scene, SurfaceGeometry, ThermalBodies};
-pub use constraint::{ConstraintReport, FrictionLimit};
+pub use constraint::ConstraintReport;
+pub use friction_limit::FrictionLimit;
 pub use geometry::ContactGeometry;
 
 /// Pose of the moving half: world = rotation * body + translation. The body

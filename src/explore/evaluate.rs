@@ -10,7 +10,7 @@ use super::field::{SetError, SweptValue, set};
 use super::values::Set;
 use crate::analysis::stiffness::CouplingStiffness;
 use crate::assembly::Coupling;
-use crate::assembly::constraint::friction_limit;
+use crate::assembly::friction_limit::friction_limit;
 use crate::scene::{Scene, SceneFile};
 use crate::solve::{Load, PointPose, Seating, SolveError};
 use crate::study::{StudyError, StudyPlan, Variant, VariantReport};
@@ -73,7 +73,7 @@ pub struct Nominal {
     /// Smallest allowable / peak pressure over the contacts (None: no
     /// contact's materials give an allowable pressure).
     pub min_pressure_safety_factor: Option<f64>,
-    /// Friction limit for seating (`assembly::constraint::friction_limit`,
+    /// Friction limit for seating (`assembly::friction_limit`,
     /// as `check` prints it; None: no limit below mu = 10).
     pub friction_limit: Option<f64>,
     /// friction_limit - (mu_static + spread): positive below the limit.

@@ -9,7 +9,8 @@
 use serde::{Deserialize, Serialize};
 
 use crate::assembly::Coupling;
-use crate::assembly::constraint::{friction_limit, frictionless_preload_forces};
+use crate::assembly::constraint::frictionless_preload_forces;
+use crate::assembly::friction_limit::friction_limit;
 use crate::contact::stress::contact_stress;
 use crate::scene::Scene;
 
@@ -18,7 +19,7 @@ use crate::scene::Scene;
 pub struct Assessment {
     /// mu_lim: the largest mu at which no contact can stay open while the
     /// others hold the preload in their friction cones
-    /// (`assembly::constraint::friction_limit`); null where none is below
+    /// (`assembly::friction_limit`); null where none is below
     /// mu = 10.
     pub friction_limit: Option<f64>,
     /// The contact that can stay open first (1-based); null with the limit.

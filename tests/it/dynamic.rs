@@ -5,7 +5,7 @@
 use crate::common;
 
 use kinrepro::assembly::Coupling;
-use kinrepro::assembly::constraint::friction_limit;
+use kinrepro::assembly::friction_limit::friction_limit;
 use kinrepro::scene::Scene;
 use kinrepro::solve::dynamic::{self, Damping, DynamicOptions, Simulation, StartPose};
 use kinrepro::solve::{Load, PointPose, Seating, SolveError, SolverOptions, quasistatic};

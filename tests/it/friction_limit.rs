@@ -1,4 +1,4 @@
-//! The friction limit for seating (`check`, `assembly::constraint::friction_limit`)
+//! The friction limit for seating (`check`, `assembly::friction_limit`)
 //! against a second, independent statics solver of the symmetric Maxwell coupling.
 //!
 //! Statics (Hale 1999; Patti & Vogels 2019): the coupling can stick off its seat
@@ -83,7 +83,7 @@ fn maxwell_friction_limit_matches_an_independent_statics_solution() {
     assert!(other >= lower - 1e-6 && other * (2.0 - widen) <= upper + 1e-6, "{other}");
 
     let (scene, c) = common::load("01_maxwell_vgroove_steel.toml");
-    let limit = kinrepro::assembly::constraint::friction_limit(&c, &scene.preload);
+    let limit = kinrepro::assembly::friction_limit::friction_limit(&c, &scene.preload);
     // The code reports its inscribed 64-facet pyramid's limit (bisection to
     // 1e-4), which lies in [true, true / cos(pi/64)] = true + at most 0.12 %.
     let code = limit.mu_limit;
@@ -113,7 +113,7 @@ fn maxwell_friction_limit_matches_an_independent_statics_solution() {
 /// gives, for each of them.
 #[test]
 fn friction_limit_does_not_depend_on_the_preload_size() {
-    use kinrepro::assembly::constraint::{friction_limit, friction_limit_solved_anew};
+    use kinrepro::assembly::friction_limit::{friction_limit, friction_limit_solved_anew};
     for name in ["01_maxwell_vgroove_steel.toml", "06_kelvin_steel.toml"] {
         let (scene, c) = common::load(name);
         let reference = friction_limit_solved_anew(&c, &scene.preload);

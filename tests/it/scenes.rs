@@ -157,7 +157,8 @@ fn friction_limit_is_scale_free_and_grows_with_groove_steepness() {
     let base = std::fs::read_to_string(scene_path("01_maxwell_vgroove_steel.toml")).unwrap();
     let limit = |src: &str| {
         let s = Scene::parse(src, "t.toml").unwrap();
-        constraint::friction_limit(&Coupling::new(&s).unwrap(), &s.preload).mu_limit
+        kinrepro::assembly::friction_limit::friction_limit(&Coupling::new(&s).unwrap(), &s.preload)
+            .mu_limit
     };
     let l0 = limit(&base);
     // Scale-free: preload and size do not change a friction coefficient.

@@ -3,7 +3,8 @@
 use std::fmt::Write;
 
 use crate::assembly::Coupling;
-use crate::assembly::constraint::{analyse, friction_limit, frictionless_preload_forces};
+use crate::assembly::constraint::{analyse, frictionless_preload_forces};
+use crate::assembly::friction_limit::friction_limit;
 use crate::contact::stress::contact_stress;
 use crate::report::coupling::preload;
 use crate::report::table::{Table, cells};

@@ -83,7 +83,7 @@ pub mod world;
 
 use super::{ContactResult, Load, SeatedPose, Seating, SolveError};
 use crate::assembly::Coupling;
-use crate::assembly::constraint::friction_limit;
+use crate::assembly::friction_limit::friction_limit;
 pub use forces::{Damping, StepContact};
 pub use frequency::Frequencies;
 pub use mass::{MassModel, MassSource};
