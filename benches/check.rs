@@ -1,5 +1,7 @@
 //! `kinrepro check` on many surfaces: parsing and validating a scene of m
-//! surfaces, and the constraint analysis of m contacts. Both should grow
+//! surfaces, and the constraint analysis of m contacts; and the friction
+//! limit for seating of scenes 01, 02 and 06, solved anew (every study
+//! and `check` solves it once per geometry). Both should grow
 //! about linearly in m (issue 12: 3000 surfaces took 24 s when the analysis
 //! decomposed the m x m matrix A A^T and line numbers were counted from the
 //! file's start for every surface).
@@ -9,11 +11,15 @@ use std::path::Path;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use kinrepro::assembly::constraint::analyse;
+use kinrepro::assembly::friction_limit::friction_limit_solved_anew;
 use kinrepro::scene::Scene;
 
+fn scene(name: &str) -> std::path::PathBuf {
+    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("scenes").join(name)
+}
+
 fn scene01() -> std::path::PathBuf {
-    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-        .join("scenes/01_maxwell_vgroove_steel.toml")
+    scene("01_maxwell_vgroove_steel.toml")
 }
 
 /// Scene 01 in explicit form with its first surface repeated up to `m` surfaces.
@@ -48,5 +54,19 @@ fn check(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, check);
+fn limit(c: &mut Criterion) {
+    let mut group = c.benchmark_group("friction limit");
+    group.sample_size(10);
+    for name in
+        ["01_maxwell_vgroove_steel.toml", "02_maxwell_pins_steel.toml", "06_kelvin_steel.toml"]
+    {
+        let (s, coupling) = kinrepro::error::read_scene(&scene(name)).unwrap();
+        group.bench_function(&name[..2], |b| {
+            b.iter(|| friction_limit_solved_anew(black_box(&coupling), &s.preload))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, check, limit);
 criterion_main!(benches);

@@ -3,6 +3,8 @@
 //! and Sobol sensitivity when asked), or, for a large unsharded Monte
 //! Carlo design, streamed into moments ([`super::stream`]).
 
+use rayon::prelude::*;
+
 use super::StudyError;
 use super::assessment::Assessment;
 use super::plan::{StudyPlan, Variant};
@@ -22,9 +24,14 @@ impl StudyPlan {
         tick: &(dyn Fn() + Sync),
         mut open: impl FnMut(usize, &VariantReport) -> Result<Option<S>, S::Error>,
     ) -> Result<(StudyReport, Vec<S>), StudyError> {
+        // The scenes' design checks (the friction limit's linear programs
+        // above all) side by side: for a small study they take longer than
+        // its seatings, which run in parallel within each scene.
+        let assessments: Vec<Assessment> =
+            self.variants.par_iter().map(|v| Assessment::new(&v.scene, &v.coupling)).collect();
         let mut variants = Vec::new();
         let mut sinks = Vec::new();
-        for (i, v) in self.variants.iter().enumerate() {
+        for ((i, v), assessment) in self.variants.iter().enumerate().zip(assessments) {
             let mut r = if v.streamed {
                 let (r, sink) = run_streamed(&self.settings, v, tick, |r| open(i, r))?;
                 sinks.extend(sink);
@@ -32,7 +39,7 @@ impl StudyPlan {
             } else {
                 self.kept(v, tick)?
             };
-            r.assessment = Some(Assessment::new(&v.scene, &v.coupling));
+            r.assessment = Some(assessment);
             variants.push(r);
         }
         Ok((StudyReport::new(variants, self.settings.shard), sinks))
