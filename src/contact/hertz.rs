@@ -106,7 +106,14 @@ impl HertzLaw {
     /// instructions): the contact layer's K_t at every evaluation.
     #[inline]
     pub fn major_semi_axis_fast(&self, load: f64) -> f64 {
-        self.semi_axis_coef * cbrt(load.max(0.0))
+        self.major_semi_axis_of_root(load_root(load))
+    }
+
+    /// [`Self::major_semi_axis_fast`] from the load's cube root
+    /// [`load_root`] already formed.
+    #[inline]
+    pub fn major_semi_axis_of_root(&self, root: f64) -> f64 {
+        self.semi_axis_coef * root
     }
 
     /// The major semi-axis a at load F over the smaller relative radius of
@@ -124,6 +131,13 @@ impl HertzLaw {
         let [a, b] = self.semi_axes(load);
         3.0 * load / (2.0 * PI * a * b)
     }
+}
+
+/// F^(1/3) of a load F ([`cbrt`]; zero for F <= 0), the law-free part of
+/// [`HertzLaw::major_semi_axis_fast`].
+#[inline]
+pub fn load_root(load: f64) -> f64 {
+    cbrt(load.max(0.0))
 }
 
 /// The cube root of x to within one ulp of libm's (measured over 2e6

@@ -387,7 +387,14 @@ impl ContactLaw {
     /// forms for all contacts before the rest.
     #[inline]
     pub fn increment_semi_axis(&self, committed_fn: f64, fn_: f64) -> (f64, f64) {
-        let a0 = self.hertz.major_semi_axis_fast(committed_fn);
+        self.increment_semi_axis_from(self.hertz.major_semi_axis_fast(committed_fn), fn_)
+    }
+
+    /// [`Self::increment_semi_axis`] from a0 = a(committed force) already
+    /// formed (`HertzLaw::major_semi_axis_fast`): a Newton iteration's
+    /// evaluations share the committed force, and its cube root.
+    #[inline]
+    pub fn increment_semi_axis_from(&self, a0: f64, fn_: f64) -> (f64, f64) {
         let a1 = self.hertz.major_semi_axis_fast(fn_);
         let sum = a0 + a1;
         if sum <= 0.0 || fn_ <= 0.0 {

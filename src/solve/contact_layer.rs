@@ -32,6 +32,7 @@
 use nalgebra::{Matrix3, Vector3};
 
 use crate::assembly::{BodyPose, ContactGeometry, Coupling};
+use crate::contact::hertz::load_root;
 use crate::contact::{Friction, SlipState, TangentialInput, TangentialResponse, TangentialState};
 use crate::scene::{Temperatures, ThermalBodies};
 
@@ -53,6 +54,38 @@ pub struct ContactEval {
     /// this evaluation's ([`evaluate_into`] without the tangent
     /// leaves them as they were).
     pub tangent: bool,
+    /// The committed force's cube root this slot last formed ([`CommittedRoot`]).
+    pub committed_root: CommittedRoot,
+}
+
+/// The cube root F_c^(1/3) of a committed normal force F_c
+/// (`contact::hertz::load_root`), kept with the exact bits of the F_c it
+/// was formed from: the evaluations of one increment share the committed
+/// state, so a slot forms the cube root of its a0 = a(F_c) once per
+/// increment instead of at every evaluation, and a different F_c (the
+/// next increment, another seating) is never answered from the memo. The
+/// root is the law-free part of a0 = c_a F_c^(1/3), so a slot reused for
+/// another coupling's contact answers right.
+#[derive(Debug, Clone, Copy)]
+pub struct CommittedRoot {
+    force_bits: u64,
+    root: f64,
+}
+
+impl CommittedRoot {
+    /// A memo that holds nothing (NaN bits: no force is looked up as them,
+    /// and a NaN force is formed anew each time).
+    pub const EMPTY: CommittedRoot = CommittedRoot { force_bits: f64::NAN.to_bits(), root: 0.0 };
+
+    /// F_c^(1/3) of `committed_fn`, from the memo if it holds that force.
+    #[inline]
+    pub fn of(&mut self, committed_fn: f64) -> f64 {
+        let bits = committed_fn.to_bits();
+        if bits != self.force_bits || committed_fn.is_nan() {
+            *self = CommittedRoot { force_bits: bits, root: load_root(committed_fn) };
+        }
+        self.root
+    }
 }
 
 impl ContactEval {
@@ -68,6 +101,7 @@ impl ContactEval {
             force: Vector3::zeros(),
             stiffness: Matrix3::zeros(),
             tangent: false,
+            committed_root: CommittedRoot::EMPTY,
         }
     }
 
@@ -118,7 +152,7 @@ pub fn evaluate_at(
 ) {
     let g = coupling.geometry(i, pose);
     let moved = Moved { du: back.displacement(&g.point), committed, friction };
-    let normal = NormalPart::new(coupling, i, &g, committed);
+    let normal = NormalPart::new(coupling, i, &g, committed, &mut out.committed_root);
     out.geometry = g;
     evaluate_into(out, coupling, i, &moved, &normal, tangent);
 }
@@ -255,19 +289,22 @@ pub struct NormalPart {
 }
 
 impl NormalPart {
-    /// Contact `i` of `coupling` at geometry `g`, from the committed state.
+    /// Contact `i` of `coupling` at geometry `g`, from the committed state
+    /// (its force's cube root through the slot's `memo`).
     #[inline]
     pub fn new(
         coupling: &Coupling,
         i: usize,
         g: &ContactGeometry,
         committed: &TangentialState,
+        memo: &mut CommittedRoot,
     ) -> Self {
         let contact = &coupling.contacts[i];
         let approach = -g.gap;
         // Hertz in series with the support compliance (`contact::series`).
         let (fn_, kn) = contact.normal.force_and_stiffness(approach);
-        let (a_eff, dlog) = contact.law.increment_semi_axis(committed.normal_force, fn_);
+        let a0 = contact.law.hertz.major_semi_axis_of_root(memo.of(committed.normal_force));
+        let (a_eff, dlog) = contact.law.increment_semi_axis_from(a0, fn_);
         NormalPart { approach, normal_force: fn_, normal_stiffness: kn, dlog, a_eff }
     }
 }
@@ -328,4 +365,26 @@ pub fn evaluate_into(
     out.approach = approach;
     out.normal_force = fn_;
     out.normal_stiffness = kn;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The memo answers exactly what forming the root anew gives, for any
+    /// sequence of committed forces: repeats (an increment's evaluations),
+    /// changes (the next increment), zero of both signs, a negative force
+    /// (an open contact), NaN, and a force of the same value after others.
+    #[test]
+    fn committed_root_answers_what_a_root_formed_anew_gives() {
+        let forces =
+            [3.7, 3.7, 3.7, 12.5, 0.0, -0.0, -2.0, f64::NAN, f64::NAN, 1e-300, 3.7, 12.5, 12.5];
+        let mut memo = CommittedRoot::EMPTY;
+        for f in forces {
+            let got = memo.of(f);
+            let anew = load_root(f);
+            assert!(got.to_bits() == anew.to_bits() || (got.is_nan() && anew.is_nan()), "{f}");
+        }
+        assert_eq!(CommittedRoot::EMPTY.of(8.0), 2.0);
+    }
 }

@@ -205,7 +205,8 @@ impl<'a> Solver<'a> {
             let end = (start + GROUP).min(states.len());
             for i in start..end {
                 let g = self.coupling.geometry(i, pose);
-                normal[i - start] = NormalPart::new(self.coupling, i, &g, &states[i]);
+                let memo = &mut out[i].committed_root;
+                normal[i - start] = NormalPart::new(self.coupling, i, &g, &states[i], memo);
                 out[i].geometry = g;
             }
             for i in start..end {
