@@ -103,7 +103,9 @@ impl HertzLaw {
 
     /// The major semi-axis a = c_a F^(1/3) of [`Self::semi_axes`] by the
     /// cube root [`cbrt`] (within one ulp of libm's, a fifth of its
-    /// instructions): the contact layer's K_t at every evaluation.
+    /// instructions): the contact layer's K_t (a0 once per increment; a1
+    /// from the Hertz law's own root, `SeriesNormal::force_stiffness_and_root`,
+    /// where the contact has no support compliance).
     #[inline]
     pub fn major_semi_axis_fast(&self, load: f64) -> f64 {
         self.major_semi_axis_of_root(load_root(load))
@@ -142,8 +144,9 @@ pub fn load_root(load: f64) -> f64 {
 
 /// The cube root of x to within one ulp of libm's (measured over 2e6
 /// values from 1e-60 to 1e60), about a fifth of its instructions: the
-/// contact layer evaluates a(F) = c_a F^(1/3) at every contact evaluation
-/// ([`HertzLaw::major_semi_axis_fast`]; elsewhere libm's, whose bits the
+/// contact layer's a(F) = c_a F^(1/3) ([`HertzLaw::major_semi_axis_fast`]:
+/// at the committed force once per increment, at the trial one where a
+/// support compliance is in series; elsewhere libm's, whose bits the
 /// dynamic solver's time step depends on). A
 /// bit-level start (the exponent divided by 3; within 3 %) and three
 /// Halley steps y <- y + y (x - y^3) / (2 y^3 + x) (cubic convergence:

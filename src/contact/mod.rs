@@ -387,15 +387,19 @@ impl ContactLaw {
     /// forms for all contacts before the rest.
     #[inline]
     pub fn increment_semi_axis(&self, committed_fn: f64, fn_: f64) -> (f64, f64) {
-        self.increment_semi_axis_from(self.hertz.major_semi_axis_fast(committed_fn), fn_)
+        let hertz = &self.hertz;
+        self.increment_semi_axis_of(
+            hertz.major_semi_axis_fast(committed_fn),
+            hertz.major_semi_axis_fast(fn_),
+            fn_,
+        )
     }
 
-    /// [`Self::increment_semi_axis`] from a0 = a(committed force) already
-    /// formed (`HertzLaw::major_semi_axis_fast`): a Newton iteration's
-    /// evaluations share the committed force, and its cube root.
+    /// [`Self::increment_semi_axis`] from both semi-axes already formed
+    /// (the contact layer's: a0 once per increment, a1 from the Hertz
+    /// law's root).
     #[inline]
-    pub fn increment_semi_axis_from(&self, a0: f64, fn_: f64) -> (f64, f64) {
-        let a1 = self.hertz.major_semi_axis_fast(fn_);
+    pub fn increment_semi_axis_of(&self, a0: f64, a1: f64, fn_: f64) -> (f64, f64) {
         let sum = a0 + a1;
         if sum <= 0.0 || fn_ <= 0.0 {
             return (0.5 * sum, 0.0);

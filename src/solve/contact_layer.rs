@@ -271,10 +271,13 @@ pub struct Moved<'s> {
 /// The normal part of one contact's evaluation: approach, Hertz (with the
 /// support compliance) force and stiffness, and the increment's effective
 /// semi-axis for K_t with its relative derivative d(ln a_eff)/dF_n
-/// (`ContactLaw::increment_semi_axis`). It holds the evaluation's long chains of
-/// dependent operations (square root, cube roots); [`Solver::evaluate_all`]
-/// forms it for every contact before the rest of any, so that the
-/// processor overlaps the contacts' chains.
+/// (`ContactLaw::increment_semi_axis`): a1 = a(F_n) from the Hertz law's
+/// square root (`SeriesNormal::force_stiffness_and_root`: F^(1/3) =
+/// K^(1/3) delta^(1/2)), a0 = a(F_c) from the slot's [`CommittedRoot`]. It
+/// holds the evaluation's long chains of dependent operations (square
+/// root, and a cube root where a support compliance is in series);
+/// [`Solver::evaluate_all`] forms it for every contact before the rest of
+/// any, so that the processor overlaps the contacts' chains.
 ///
 /// [`Solver::evaluate_all`]: crate::solve::quasistatic
 #[derive(Debug, Clone, Copy, Default)]
@@ -302,9 +305,11 @@ impl NormalPart {
         let contact = &coupling.contacts[i];
         let approach = -g.gap;
         // Hertz in series with the support compliance (`contact::series`).
-        let (fn_, kn) = contact.normal.force_and_stiffness(approach);
-        let a0 = contact.law.hertz.major_semi_axis_of_root(memo.of(committed.normal_force));
-        let (a_eff, dlog) = contact.law.increment_semi_axis_from(a0, fn_);
+        let (fn_, kn, root) = contact.normal.force_stiffness_and_root(approach);
+        let hertz = &contact.law.hertz;
+        let a0 = hertz.major_semi_axis_of_root(memo.of(committed.normal_force));
+        let a1 = hertz.major_semi_axis_of_root(root);
+        let (a_eff, dlog) = contact.law.increment_semi_axis_of(a0, a1, fn_);
         NormalPart { approach, normal_force: fn_, normal_stiffness: kn, dlog, a_eff }
     }
 }
