@@ -1,10 +1,10 @@
 //! `kinrepro check` on many surfaces: parsing and validating a scene of m
-//! surfaces, and the constraint analysis of m contacts; and the friction
-//! limit for seating of scenes 01, 02 and 06, solved anew (every study
-//! and `check` solves it once per geometry). Both should grow
+//! surfaces, and the constraint analysis of m contacts. Both should grow
 //! about linearly in m (issue 12: 3000 surfaces took 24 s when the analysis
 //! decomposed the m x m matrix A A^T and line numbers were counted from the
-//! file's start for every surface).
+//! file's start for every surface). And the friction limit for seating of
+//! scenes 01, 02 and 06, solved anew (every study and `check` solves it
+//! once per geometry).
 
 use std::hint::black_box;
 use std::path::Path;
