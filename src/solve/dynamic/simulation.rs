@@ -95,7 +95,7 @@ impl<'a> Simulation<'a> {
             states.push(TangentialState::new(g.normal));
         }
         let dt = freq.shortest_period() / opts.steps_per_period_from(&load.start);
-        let (world, body) = world::build(coupling, &mass, &start, dt);
+        let (world, body) = world::build(coupling, &mass, &start);
         let length = coupling.length_scale();
         let max_travel = coupling.slide_away_travel()
             + load.start.offset.norm()
@@ -199,7 +199,7 @@ impl<'a> Simulation<'a> {
 
     /// Advance one time step (module docs): evaluate the contacts at x_n,
     /// the residual of the contact-layer forces and the preload, apply the
-    /// forces and commit, then let rapier step.
+    /// forces and commit, then let rapier integrate the body ([`world::integrate`]).
     pub fn step(&mut self) -> Result<(), SolveError> {
         let t = self.steps as f64 * self.dt;
         let lambda = self.load_fraction(t);
@@ -225,7 +225,7 @@ impl<'a> Simulation<'a> {
         let (residual, max_speed) = self.balance(&motion, &contacts, &preload);
         let kinetic_before = self.kinetic(&linvel, &angvel, &rot);
         self.apply_and_commit(&contacts, &preload, pose);
-        self.world.step();
+        world::integrate(&mut self.world.bodies[self.body], self.dt);
         let rb = &self.world.bodies[self.body];
         let new_pose = from_rapier(rb.position());
         let (v1, w1) = (nvec(rb.linvel()), nvec(rb.angvel()));
@@ -365,11 +365,5 @@ impl<'a> Simulation<'a> {
                 })
                 .collect(),
         }
-    }
-
-    /// Number of contact pairs rapier's narrow phase holds (0: its rigid
-    /// contact is off for every coupling pair).
-    pub fn rapier_contact_pairs(&self) -> usize {
-        self.world.narrow_phase.contact_pairs().count()
     }
 }

@@ -4,36 +4,31 @@
 //!
 //! rapier's own rigid contact is off for every coupling pair: all colliders
 //! carry collision groups whose filter is empty
-//! (`InteractionGroups::new(GROUP_1, Group::NONE, And)`), so the broad phase
-//! never creates a pair and the narrow phase and constraint solver never see
-//! one (a test checks the narrow phase stays empty). The contact forces come
-//! only from the compliant contact layer, applied as user forces.
+//! (`InteractionGroups::new(GROUP_1, Group::NONE, And)`). The contact forces
+//! come only from the compliant contact layer, applied as user forces.
 //!
-//! Integration settings, and why:
-//! - gravity zero: the preload is the load, as in the quasi-static model
-//!   and the paper's FE model (the weight of the moving half is part of, or
-//!   negligible against, the preload);
-//! - `num_solver_iterations = 1`: rapier runs one sub-step per step, so a
-//!   step is exactly the semi-implicit (symplectic) Euler update
-//!   v+ = v + dt M^-1 F(x),  x+ = x + dt v+ (Hairer, Lubich & Wanner,
-//!   *Geometric Numerical Integration*, 2006, §VI.3). With the default four
-//!   sub-steps the user force would be held over sub-steps of dt/4, which
-//!   is no longer symplectic and lets the energy grow;
-//! - `num_internal_stabilization_iterations = 0` and `max_ccd_substeps = 0`:
-//!   with no constraint and no contact pair, rapier's stabilisation pass
-//!   has nothing to solve and its continuous collision detection nothing
-//!   to detect; both passes are skipped (the same poses bit for bit, 4 %
-//!   fewer instructions per step);
-//! - `can_sleep(false)`: rapier would put the body to sleep at the um/s
-//!   speeds of the final settling;
+//! A step is rapier's own integrator of the body, without the physics
+//! pipeline ([`integrate`]): with no contact pair and no constraint, the
+//! pipeline's broad phase, narrow phase, islands and constraint solver had
+//! nothing to do, yet they were 60 % of a dynamic seating's instructions.
+//! The step is the semi-implicit (symplectic) Euler update
+//! v+ = v + dt M^-1 F(x),  x+ = x + dt v+ (Hairer, Lubich & Wanner,
+//! *Geometric Numerical Integration*, 2006, §VI.3), as the pipeline's one
+//! sub-step per step gave; the sigmas of scenes 01 and 06 moved by 3.4e-11
+//! of themselves (rounding; the time step's own error is 1e-4).
+//! Settings, and why:
+//! - no gravity: the preload is the load, as in the quasi-static model
+//!   and the paper's FE model (the weight of the moving half is part of the
+//!   preload, `[preload] gravity`);
 //! - no linear or angular damping from rapier: all damping is in the
-//!   contact layer, where it is documented.
+//!   contact layer, where it is documented; no gyroscopic term (the
+//!   pipeline's default).
 
 use nalgebra::{Quaternion, UnitQuaternion, Vector3};
 use rapier3d_f64::math::{Pose as DPose3, Rotation as DQuat, Vector as DVec3};
 use rapier3d_f64::prelude::{
     ColliderBuilder, Group, InteractionGroups, InteractionTestMode, MassProperties, PhysicsWorld,
-    RigidBodyBuilder, RigidBodyHandle,
+    RigidBody, RigidBodyBuilder, RigidBodyForces, RigidBodyHandle,
 };
 
 use super::mass::MassModel;
@@ -68,19 +63,13 @@ fn no_contact() -> InteractionGroups {
     InteractionGroups::new(Group::GROUP_1, Group::NONE, InteractionTestMode::And)
 }
 
-/// Build the world with the moving half at `start` (at rest) and time step `dt`.
+/// Build the world with the moving half at `start` (at rest).
 pub(crate) fn build(
     coupling: &Coupling,
     mass: &MassModel,
     start: &BodyPose,
-    dt: f64,
 ) -> (PhysicsWorld, RigidBodyHandle) {
     let mut world = PhysicsWorld::new();
-    world.gravity = DVec3::ZERO;
-    world.integration_parameters.dt = dt;
-    world.integration_parameters.num_solver_iterations = 1;
-    world.integration_parameters.num_internal_stabilization_iterations = 0;
-    world.integration_parameters.max_ccd_substeps = 0;
     let i = mass.inertia;
     let props = MassProperties::with_inertia_matrix(
         dvec(&mass.centre_of_mass),
@@ -95,7 +84,6 @@ pub(crate) fn build(
         RigidBodyBuilder::dynamic()
             .pose(to_rapier(start))
             .additional_mass_properties(props)
-            .can_sleep(false)
             .linear_damping(0.0)
             .angular_damping(0.0),
     );
@@ -123,5 +111,92 @@ pub(crate) fn build(
             Some(ground),
         );
     }
+    // The pipeline would form the mass properties at its first step.
+    let PhysicsWorld { bodies, colliders, .. } = &mut world;
+    bodies[body].recompute_mass_properties_from_colliders(colliders);
     (world, body)
+}
+
+/// One time step of the free body under its user force and torque, by
+/// rapier's own symplectic Euler: v+ = v + dt M^-1 F, w+ = w + dt I^-1 tau
+/// (`RigidBodyForces::integrate`), then the pose moved by dt v+, dt w+
+/// about the centre of mass (`RigidBodyVelocity::integrate`).
+pub(crate) fn integrate(rb: &mut RigidBody, dt: f64) {
+    let forces = RigidBodyForces {
+        force: rb.user_force(),
+        torque: rb.user_torque(),
+        ..RigidBodyForces::default()
+    };
+    let mprops = rb.mass_properties();
+    let vels = forces.integrate(dt, rb.vels(), mprops);
+    let pose = vels.integrate(dt, rb.position(), &mprops.local_mprops.local_com);
+    rb.set_vels(vels, false);
+    rb.set_position(pose, false);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Matrix3;
+
+    /// A step of [`integrate`] is the symplectic Euler update, formed here
+    /// by hand: a body of mass m and inertia I about an off-origin centre
+    /// of mass c, turned and moving, under a force F at a world point p:
+    /// v+ = v + dt F/m, w+ = w + dt I_w^-1 ((p - c_w) x F) with
+    /// I_w = R I R^T, then the centre moved by dt v+ and the body turned by
+    /// exp(dt w+) about it. Two steps, so that the second starts from the
+    /// pose, velocity and world inertia the first left.
+    #[test]
+    fn a_step_is_symplectic_euler() {
+        let (m, c) = (0.7, Vector3::new(0.01, -0.02, 0.005));
+        let inertia = Matrix3::from_diagonal(&Vector3::new(2e-4, 3e-4, 4.5e-4));
+        let start = BodyPose {
+            rotation: UnitQuaternion::from_scaled_axis(Vector3::new(0.2, -0.1, 0.4)),
+            translation: Vector3::new(0.3, 0.1, -0.2),
+        };
+        let (mut v, mut w) = (Vector3::new(0.01, 0.0, -0.02), Vector3::new(0.5, -0.3, 0.1));
+        let mut world = PhysicsWorld::new();
+        let props = MassProperties::with_inertia_matrix(dvec(&c), m, {
+            let i = inertia;
+            rapier3d_f64::math::Matrix::from_cols(
+                DVec3::new(i[(0, 0)], i[(1, 0)], i[(2, 0)]),
+                DVec3::new(i[(0, 1)], i[(1, 1)], i[(2, 1)]),
+                DVec3::new(i[(0, 2)], i[(1, 2)], i[(2, 2)]),
+            )
+        });
+        let handle = world.insert_body(
+            RigidBodyBuilder::dynamic()
+                .pose(to_rapier(&start))
+                .additional_mass_properties(props)
+                .linvel(dvec(&v))
+                .angvel(dvec(&w)),
+        );
+        let PhysicsWorld { bodies, colliders, .. } = &mut world;
+        bodies[handle].recompute_mass_properties_from_colliders(colliders);
+        let (f, p, dt) = (Vector3::new(3.0, -1.0, 2.0), Vector3::new(0.35, 0.05, -0.1), 1e-3);
+        let mut pose = start;
+        for _ in 0..2 {
+            let rb = &mut bodies[handle];
+            rb.reset_forces(false);
+            rb.reset_torques(false);
+            rb.add_force_at_point(dvec(&f), dvec(&p), false);
+            integrate(rb, dt);
+            // By hand.
+            let r = pose.rotation.to_rotation_matrix().into_inner();
+            let com = pose.rotation * c + pose.translation;
+            let i_world = r * inertia * r.transpose();
+            v += f * (dt / m);
+            w += i_world.try_inverse().unwrap() * ((p - com).cross(&f)) * dt;
+            let turn = UnitQuaternion::from_scaled_axis(w * dt);
+            let rotation = turn * pose.rotation;
+            let com_next = com + v * dt;
+            pose = BodyPose { rotation, translation: com_next - rotation * c };
+            let got = from_rapier(bodies[handle].position());
+            let rb = &bodies[handle];
+            assert!((nvec(rb.linvel()) - v).norm() <= 1e-14 * v.norm(), "{:?} {v:?}", rb.linvel());
+            assert!((nvec(rb.angvel()) - w).norm() <= 1e-12 * w.norm(), "{:?} {w:?}", rb.angvel());
+            assert!((got.translation - pose.translation).norm() <= 1e-15, "{got:?} {pose:?}");
+            assert!(got.rotation.angle_to(&pose.rotation) <= 1e-14, "{got:?} {pose:?}");
+        }
+    }
 }
