@@ -1,5 +1,6 @@
 //! Studies: the seven bundled scenes at 25 LHS samples (a full Table 2
-//! study), the seven at 2000 Monte Carlo samples, and 10^5 Monte Carlo
+//! study), the seven at 2000 Monte Carlo samples, scenes 01, 02 and 06
+//! each at 1000 Monte Carlo samples, and 10^5 Monte Carlo
 //! samples of scene 01 streamed into moments (chunks of 8192, the route of
 //! large studies, `study::stream`). rayon uses every core.
 
@@ -62,6 +63,12 @@ fn study(c: &mut Criterion) {
             }
         })
     });
+    for (i, name) in [(0, "01"), (1, "02"), (5, "06")] {
+        let one = StudyPlan::new(vec![load(SCENES[i])], &mc(1000)).unwrap();
+        g.bench_function(format!("scene {name} x 1000 MC samples"), |b| {
+            b.iter(|| run_variant(&one.settings, &one.variants[0], &|| {}).unwrap())
+        });
+    }
     let streamed = StudyPlan::new(vec![load(SCENES[0])], &mc(100_000)).unwrap();
     let scene01 = &streamed.variants[0];
     let names = output_names(&scene01.scene);
