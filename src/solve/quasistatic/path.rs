@@ -55,8 +55,12 @@ pub(super) struct End {
 pub(super) struct Walk<'w> {
     pub pose: BodyPose,
     pub states: &'w mut Vec<TangentialState>,
-    /// The contacts at `pose` (empty before the first increment of a seating).
+    /// The contacts at `pose` where `committed` (a seating's slots hold
+    /// the last seating's contacts before its first increment: they are
+    /// kept, not cleared, so that no slot is made anew).
     pub evals: &'w mut Vec<ContactEval>,
+    /// Whether `evals` hold the contacts at `pose`.
+    pub committed: bool,
     /// Each contact's slip so far [m] ([`Buffers::slip_path`]).
     pub slip_path: &'w mut Vec<f64>,
     /// Path parameter reached.
@@ -82,6 +86,7 @@ impl<'w> Walk<'w> {
             pose,
             states,
             evals,
+            committed: false,
             slip_path,
             s: 0.0,
             event: None,
@@ -131,6 +136,7 @@ fn commit(
     let step = (twist_between(&w.pose, &new_pose), s_next - w.s);
     w.pose = new_pose;
     std::mem::swap(w.evals, trial);
+    w.committed = true;
     w.accepted += 1;
     w.s = s_next;
     step
@@ -144,6 +150,7 @@ fn commit(
 fn stick_slip_changed(w: &Walk, trial: &[ContactEval]) -> bool {
     trial.iter().zip(w.states.iter()).enumerate().any(|(i, (e, st))| {
         (e.slip() == SlipState::Slip) != st.sliding
+            && w.committed
             && w.evals.get(i).is_some_and(|old| old.normal_force > 0.0)
     })
 }
@@ -154,17 +161,20 @@ impl Solver<'_> {
         let seating = self.program == Program::Seat;
         let nominal = 1.0 / self.opts.increments.max(1) as f64;
         let h_min = nominal / f64::powi(2.0, self.opts.max_splits as i32);
-        bufs.evals.clear();
         bufs.slip_path.clear();
         bufs.slip_path.resize(bufs.states.len(), 0.0);
         let trial = &mut bufs.trial;
         let mut w = Walk::at(start, &mut bufs.states, &mut bufs.evals, &mut bufs.slip_path);
         if !seating {
             self.evaluate_all(&start, &start, w.states, self.ramp_time, true, w.evals);
+            w.committed = true;
         }
         let ctx = Context {
             start,
-            start_fn: w.evals.iter().map(|e| e.normal_force).collect(),
+            start_fn: match seating {
+                true => Vec::new(),
+                false => w.evals.iter().map(|e| e.normal_force).collect(),
+            },
             factor: match self.program {
                 Program::Seat | Program::Hold => 1.0,
                 Program::Load { factor, .. } => factor,
