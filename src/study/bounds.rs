@@ -1,15 +1,15 @@
 //! Bounds on the run sizes a user controls (samples, the Sobol base size),
 //! derived from what one machine can do. A seating of a three-contact
-//! coupling costs about 50 us of one core (the quasi-static solver, scene 01).
+//! coupling costs about 21 us of one core (the quasi-static solver, scene 01).
 //!
 //! - A run that keeps its records (a Latin hypercube or small Monte Carlo
 //!   design, a shard, the Saltelli matrices of `--sensitivity`) holds each
 //!   seating's inputs and outputs as f64: with a few inputs and one
 //!   evaluation point about 200 bytes. [`MAX_KEPT_SEATINGS`] = 2^24
-//!   (16.8 M) records are about 3.4 GB and 14 core-minutes.
+//!   (16.8 M) records are about 3.4 GB and 6 core-minutes of scene 01.
 //! - A streamed Monte Carlo study keeps only moments, so its memory is
 //!   bounded whatever its size; its time and its per-sample CSV are not:
-//!   [`MAX_STREAMED_SAMPLES`] = 10^8 samples are about 80 core-minutes and a
+//!   [`MAX_STREAMED_SAMPLES`] = 10^8 samples are about 35 core-minutes and a
 //!   CSV of about 20 GB.
 
 use super::error::StudyError;
@@ -32,19 +32,22 @@ pub fn check(what: &'static str, count: Option<usize>, max: usize) -> Result<usi
     }
 }
 
-/// Typical cost of one seating on one core [s]: a quasi-static seating of a
-/// three-contact coupling (scene 01, about 50 us on the controlled path of
-/// 9 increments), or [`SECONDS_PER_INCREMENT`] per increment where fixed
-/// increments (`--increments N`) cost more; a dynamic one about 0.08 s.
-/// Measured on the development machine; a run's progress line gives the
-/// measured rate.
+/// Typical cost of one seating on one core [s], rounded up: a quasi-static
+/// seating of a three-contact coupling on the controlled path of 9
+/// increments, 50 us (measured 21 us for scene 01, 38 us for scene 02 and
+/// 20 us for scene 06 in 20 000-sample one-job studies), or
+/// [`SECONDS_PER_INCREMENT`] per increment where fixed increments
+/// (`--increments N`) cost more; a dynamic one 4 ms (measured 1.6 to 2.2
+/// ms from the touching pose, 2.3 to 3.2 ms arriving off-centre, scenes 01
+/// and 06). Measured on the development machine; a run's progress line
+/// gives the measured rate.
 pub fn seating_seconds(method: &crate::solve::Method) -> f64 {
     match method {
         crate::solve::Method::QuasiStatic(o) if o.path_tolerance.is_none() => {
             (o.increments as f64 * SECONDS_PER_INCREMENT).max(50e-6)
         }
         crate::solve::Method::QuasiStatic(_) => 50e-6,
-        crate::solve::Method::Dynamic(_) => 0.08,
+        crate::solve::Method::Dynamic(_) => 4e-3,
     }
 }
 
