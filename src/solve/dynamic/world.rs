@@ -11,6 +11,9 @@
 //! pipeline ([`integrate`]): with no contact pair and no constraint, the
 //! pipeline's broad phase, narrow phase, islands and constraint solver had
 //! nothing to do, yet they were 60 % of a dynamic seating's instructions.
+//! (The colliders therefore stay where [`build`] put them: nothing reads
+//! their poses; the contact geometry is `assembly::geometry`'s, at the
+//! body's pose.)
 //! The step is the semi-implicit (symplectic) Euler update
 //! v+ = v + dt M^-1 F(x),  x+ = x + dt v+ (Hairer, Lubich & Wanner,
 //! *Geometric Numerical Integration*, 2006, §VI.3), as the pipeline's one
@@ -24,7 +27,7 @@
 //!   contact layer, where it is documented; no gyroscopic term (the
 //!   pipeline's default).
 
-use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 use rapier3d_f64::math::{Pose as DPose3, Rotation as DQuat, Vector as DVec3};
 use rapier3d_f64::prelude::{
     ColliderBuilder, Group, InteractionGroups, InteractionTestMode, MassProperties, PhysicsWorld,
@@ -58,6 +61,15 @@ pub(crate) fn from_rapier(pose: &DPose3) -> BodyPose {
     }
 }
 
+/// rapier's mass properties of a body of mass `mass` [kg] with its centre
+/// of mass at `centre` and the inertia tensor `inertia` about it, both in
+/// the body frame.
+fn mass_properties(mass: f64, centre: &Vector3<f64>, inertia: &Matrix3<f64>) -> MassProperties {
+    let column = |j: usize| DVec3::new(inertia[(0, j)], inertia[(1, j)], inertia[(2, j)]);
+    let matrix = rapier3d_f64::math::Matrix::from_cols(column(0), column(1), column(2));
+    MassProperties::with_inertia_matrix(dvec(centre), mass, matrix)
+}
+
 /// Collision groups that interact with nothing: rapier's rigid contact off.
 fn no_contact() -> InteractionGroups {
     InteractionGroups::new(Group::GROUP_1, Group::NONE, InteractionTestMode::And)
@@ -70,16 +82,7 @@ pub(crate) fn build(
     start: &BodyPose,
 ) -> (PhysicsWorld, RigidBodyHandle) {
     let mut world = PhysicsWorld::new();
-    let i = mass.inertia;
-    let props = MassProperties::with_inertia_matrix(
-        dvec(&mass.centre_of_mass),
-        mass.mass,
-        rapier3d_f64::math::Matrix::from_cols(
-            DVec3::new(i[(0, 0)], i[(1, 0)], i[(2, 0)]),
-            DVec3::new(i[(0, 1)], i[(1, 1)], i[(2, 1)]),
-            DVec3::new(i[(0, 2)], i[(1, 2)], i[(2, 2)]),
-        ),
-    );
+    let props = mass_properties(mass.mass, &mass.centre_of_mass, &mass.inertia);
     let body = world.insert_body(
         RigidBodyBuilder::dynamic()
             .pose(to_rapier(start))
@@ -137,11 +140,10 @@ pub(crate) fn integrate(rb: &mut RigidBody, dt: f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Matrix3;
 
     /// A step of [`integrate`] is the symplectic Euler update, formed here
-    /// by hand: a body of mass m and inertia I about an off-origin centre
-    /// of mass c, turned and moving, under a force F at a world point p:
+    /// by hand: a body of mass m and inertia I (not diagonal) about an
+    /// off-origin centre of mass c, turned and moving, under a force F at a world point p:
     /// v+ = v + dt F/m, w+ = w + dt I_w^-1 ((p - c_w) x F) with
     /// I_w = R I R^T, then the centre moved by dt v+ and the body turned by
     /// exp(dt w+) about it. Two steps, so that the second starts from the
@@ -149,21 +151,20 @@ mod tests {
     #[test]
     fn a_step_is_symplectic_euler() {
         let (m, c) = (0.7, Vector3::new(0.01, -0.02, 0.005));
-        let inertia = Matrix3::from_diagonal(&Vector3::new(2e-4, 3e-4, 4.5e-4));
+        // Not diagonal in the body frame (the principal axes turned).
+        #[rustfmt::skip]
+        let inertia = Matrix3::new(
+            2e-4, 1e-5, -2e-5,
+            1e-5, 3e-4, 3e-5,
+            -2e-5, 3e-5, 4.5e-4,
+        );
         let start = BodyPose {
             rotation: UnitQuaternion::from_scaled_axis(Vector3::new(0.2, -0.1, 0.4)),
             translation: Vector3::new(0.3, 0.1, -0.2),
         };
         let (mut v, mut w) = (Vector3::new(0.01, 0.0, -0.02), Vector3::new(0.5, -0.3, 0.1));
         let mut world = PhysicsWorld::new();
-        let props = MassProperties::with_inertia_matrix(dvec(&c), m, {
-            let i = inertia;
-            rapier3d_f64::math::Matrix::from_cols(
-                DVec3::new(i[(0, 0)], i[(1, 0)], i[(2, 0)]),
-                DVec3::new(i[(0, 1)], i[(1, 1)], i[(2, 1)]),
-                DVec3::new(i[(0, 2)], i[(1, 2)], i[(2, 2)]),
-            )
-        });
+        let props = mass_properties(m, &c, &inertia);
         let handle = world.insert_body(
             RigidBodyBuilder::dynamic()
                 .pose(to_rapier(&start))
