@@ -70,8 +70,7 @@ impl PrincipalStiffness {
         // an ellipse by. Both values are then the mean, K_t = k (I - n n^T)
         // (0.5 (k + k) is k exactly).
         let circle = PrincipalStiffness { k: [0.5 * (k[0] + k[1]); 2], axes: None };
-        let round = (k[0] - k[1]).abs() <= 1e-12 * k[0].abs().max(k[1].abs());
-        if round || *major_axis == Vector3::zeros() {
+        if equal_to_rounding(k) || *major_axis == Vector3::zeros() {
             // (The zero axis would fail the length test below as well.)
             return circle;
         }
@@ -134,6 +133,13 @@ impl PrincipalStiffness {
             }
         }
     }
+}
+
+/// Whether two principal values are equal but for rounding (within 1e-12
+/// of the larger): the contact is then circular (the two may be computed
+/// by different formulas that agree mathematically).
+pub fn equal_to_rounding(k: [f64; 2]) -> bool {
+    (k[0] - k[1]).abs() <= 1e-12 * k[0].abs().max(k[1].abs())
 }
 
 /// The radial return of a circular contact onto |F| = L
