@@ -207,7 +207,8 @@ pub fn symmetric_eigen2(m: &Matrix2<f64>) -> ([f64; 2], Matrix2<f64>) {
 /// A = diag(1/(1 + g k_i)), h = sum k_i A_i F_i^2
 /// ```
 ///
-/// For equal k_i it is the radial return F = L F_trial/|F_trial|. Requires
+/// For equal k_i (equal but for rounding, [`equal_to_rounding`]) it is the
+/// radial return F = L F_trial/|F_trial|, formed in closed form. Requires
 /// |F_trial| > L >= 0 (L = 0: F = 0). g by Newton from (|F_trial|/L - 1)/k_max, a lower
 /// bound from which the convex, decreasing |F(g)|^2 - L^2 converges
 /// monotonically. Returns (F, dF/dF_trial, dF/dL).
@@ -220,6 +221,13 @@ pub fn project_on_circle(
         // Frictionless: F = 0, and dF/dL along K^-1 F_trial (the limit g -> inf).
         let dir = Vector2::new(trial.x / k[0], trial.y / k[1]).normalize();
         return (Vector2::zeros(), Matrix2::zeros(), dir);
+    }
+    if equal_to_rounding(k) {
+        // A circle: the radial return in closed form, F = L t with
+        // t = F_trial/T, dF/dF_trial = (L/T) (I - t t^T), dF/dL = t.
+        let norm = trial.norm();
+        let t = trial / norm;
+        return (t * limit, (Matrix2::identity() - t * t.transpose()) * (limit / norm), t);
     }
     let k_max = k[0].max(k[1]);
     let mut g = (trial.norm() / limit - 1.0) / k_max;

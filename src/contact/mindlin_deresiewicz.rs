@@ -57,7 +57,7 @@
 
 use nalgebra::{Matrix2, Matrix3, Matrix3x2, Vector2, Vector3};
 
-use super::mindlin::{equal_to_rounding, project_on_circle, symmetric_eigen2};
+use super::mindlin::{project_on_circle, symmetric_eigen2};
 pub use super::tangential_types::{SPRINGS, SpringRow};
 use super::tangential_types::{SlipState, TangentialInput, TangentialResponse, TangentialState};
 
@@ -78,9 +78,6 @@ struct Row {
     /// Principal values and axes (columns) of the shape C in the frame.
     c: [f64; 2],
     axes: Matrix2<f64>,
-    /// Whether the principal values are equal but for rounding (a circular
-    /// contact: the cap is the radial return).
-    round: bool,
     /// Each cell's share of the step's tangential increment and its limit
     /// at the end of the normal stage (the tangential stage, at the same
     /// load and radius, reads them): the share is the cell's weight, less
@@ -150,9 +147,8 @@ impl Row {
 
     /// Cap cell j at `limit`, chaining the derivative: the closest point in
     /// the complementary-energy norm of C (`mindlin::project_on_circle`), so
-    /// that a spring slides opposite to its force. For a circle (equal
-    /// principal values) that is the radial return, q = L t with
-    /// t = q/|q| and dq/dq_trial = (L/|q|) (I - t t^T), in closed form.
+    /// that a spring slides opposite to its force (for a circle the radial
+    /// return, which the map forms in closed form).
     /// Returns whether it capped, and |q| before.
     fn cap(&mut self, j: usize, limit: f64) -> (bool, f64) {
         let norm = self.q[j].norm();
@@ -162,13 +158,6 @@ impl Row {
         if limit <= 0.0 {
             self.q[j] = Vector2::zeros();
             self.d[j] = Matrix2::zeros();
-            return (true, norm);
-        }
-        if self.round {
-            let t = self.q[j] / norm;
-            let m = (Matrix2::identity() - t * t.transpose()) * (limit / norm);
-            self.q[j] = t * limit;
-            self.d[j] = m * self.d[j];
             return (true, norm);
         }
         let r = self.axes;
@@ -301,7 +290,6 @@ pub(super) fn update(
         g_star: input.g_star,
         c: c_principal,
         axes: c_axes,
-        round: equal_to_rounding(c_principal),
         stage: [(0.0, 0.0); SPRINGS],
         a_start: 0.0,
         increment: Vector2::zeros(),
