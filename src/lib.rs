@@ -17,6 +17,7 @@ pub mod error;
 pub mod explore;
 pub mod fe;
 pub mod input;
+pub mod lane;
 pub mod material;
 pub mod output;
 pub mod param;

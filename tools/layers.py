@@ -21,7 +21,7 @@ import re
 import sys
 
 LAYER = {
-    "cancel": 0, "input": 0, "output": 0, "param": 0, "dof": 0, "delimited": 0, "material": 0, "contact": 0, "scene": 1, "assembly": 2, "error": 2,
+    "cancel": 0, "input": 0, "output": 0, "param": 0, "dof": 0, "delimited": 0, "lane": 0, "material": 0, "contact": 0, "scene": 1, "assembly": 2, "error": 2,
     "solve": 3, "analysis": 4, "fe": 4, "study": 5, "explore": 6,
     "calibrate": 6, "report": 7, "bin": 8,
 }

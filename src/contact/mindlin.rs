@@ -23,9 +23,11 @@
 //! the equal-area circle's 8 G* sqrt(a b), 7 % apart.
 
 use nalgebra::{Matrix2, Matrix3, Vector2, Vector3};
+use simba::simd::SimdBool;
 use std::f64::consts::PI;
 
 use super::elliptic::EllipticIntegrals;
+use crate::lane::{Both, Lane, Mask, branch, splat};
 use crate::material::Material;
 
 /// k_t / a along the major and the minor axis [N/m^2] for the materials of
@@ -137,9 +139,11 @@ impl PrincipalStiffness {
 
 /// Whether two principal values are equal but for rounding (within 1e-12
 /// of the larger): the contact is then circular (the two may be computed
-/// by different formulas that agree mathematically).
-pub fn equal_to_rounding(k: [f64; 2]) -> bool {
-    (k[0] - k[1]).abs() <= 1e-12 * k[0].abs().max(k[1].abs())
+/// by different formulas that agree mathematically). Per lane for lanes.
+#[inline]
+pub fn equal_to_rounding<T: Lane>(k: [T; 2]) -> Mask<T> {
+    let larger = k[0].simd_abs().simd_max(k[1].simd_abs());
+    (k[0] - k[1]).simd_abs().simd_le(splat::<T>(1e-12) * larger)
 }
 
 /// The radial return of a circular contact onto |F| = L
@@ -212,35 +216,65 @@ pub fn symmetric_eigen2(m: &Matrix2<f64>) -> ([f64; 2], Matrix2<f64>) {
 /// |F_trial| > L >= 0 (L = 0: F = 0). g by Newton from (|F_trial|/L - 1)/k_max, a lower
 /// bound from which the convex, decreasing |F(g)|^2 - L^2 converges
 /// monotonically. Returns (F, dF/dF_trial, dF/dL).
-pub fn project_on_circle(
-    k: [f64; 2],
-    trial: &Vector2<f64>,
-    limit: f64,
-) -> (Vector2<f64>, Matrix2<f64>, Vector2<f64>) {
-    if limit <= 0.0 {
+///
+/// Written over [`Lane`]s: for f64 lanes, each lane takes the branch its
+/// own values select ([`branch`]), and its Newton iteration stops where
+/// that lane's would (a lane that has converged keeps its g while the
+/// others go on), so that lane i is bit for bit the f64 map of lane i's
+/// inputs.
+#[inline]
+pub fn project_on_circle<T: Lane>(
+    k: [T; 2],
+    trial: &Vector2<T>,
+    limit: T,
+) -> (Vector2<T>, Matrix2<T>, Vector2<T>) {
+    let frictionless = limit.simd_le(T::zero());
+    let Both(f, Both(d_trial, d_limit)) = branch::<T, _>(
+        frictionless,
         // Frictionless: F = 0, and dF/dL along K^-1 F_trial (the limit g -> inf).
-        let dir = Vector2::new(trial.x / k[0], trial.y / k[1]).normalize();
-        return (Vector2::zeros(), Matrix2::zeros(), dir);
-    }
-    if equal_to_rounding(k) {
-        // A circle: the radial return in closed form, F = L t with
-        // t = F_trial/T, dF/dF_trial = (L/T) (I - t t^T), dF/dL = t.
-        let norm = trial.norm();
-        let t = trial / norm;
-        return (t * limit, (Matrix2::identity() - t * t.transpose()) * (limit / norm), t);
-    }
-    let k_max = k[0].max(k[1]);
-    let mut g = (trial.norm() / limit - 1.0) / k_max;
+        |_| {
+            let dir = Vector2::new(trial.x / k[0], trial.y / k[1]).normalize();
+            Both(Vector2::zeros(), Both(Matrix2::zeros(), dir))
+        },
+        |limited| {
+            branch::<T, _>(
+                equal_to_rounding(k),
+                // A circle: the radial return in closed form, F = L t with
+                // t = F_trial/T, dF/dF_trial = (L/T) (I - t t^T), dF/dL = t.
+                |_| {
+                    let norm = trial.norm();
+                    let t = trial / norm;
+                    let d = (Matrix2::identity() - t * t.transpose()) * (limit / norm);
+                    Both(t * limit, Both(d, t))
+                },
+                |ellipse| project_on_ellipse(k, trial, limit, limited & ellipse),
+            )
+        },
+    );
+    (f, d_trial, d_limit)
+}
+
+/// [`project_on_circle`] for unequal k, in the lanes of `active` (the
+/// others' results are left to the caller to discard).
+#[inline]
+fn project_on_ellipse<T: Lane>(
+    k: [T; 2],
+    trial: &Vector2<T>,
+    limit: T,
+    mut active: Mask<T>,
+) -> Both<Vector2<T>, Both<Matrix2<T>, Vector2<T>>> {
+    let (one, k_max) = (T::one(), k[0].simd_max(k[1]));
+    let mut g = (trial.norm() / limit - one) / k_max;
     for _ in 0..60 {
-        let (mut phi, mut dphi) = (-limit * limit, 0.0);
+        let (mut phi, mut dphi) = (-limit * limit, T::zero());
         for i in 0..2 {
-            let a = 1.0 / (1.0 + g * k[i]);
+            let a = one / (one + g * k[i]);
             let f = a * trial[i];
             phi += f * f;
-            dphi -= 2.0 * k[i] * a * f * f;
+            dphi -= splat::<T>(2.0) * k[i] * a * f * f;
         }
         let step = phi / dphi;
-        g -= step;
+        g = (g - step).select(active, g);
         // Converged once the step in u = g k_max is below 1e-9 (1 + u).
         // Newton's error after a step e is about 3 e^2 / (1 + u) in u
         // (phi''/(2 phi') of the curve above), so the step just taken
@@ -251,15 +285,18 @@ pub fn project_on_circle(
         // phi is known to a few ulps of L^2 only, so near the root g moves
         // by ~eps (1 + u) / k_max per step in that noise (a rule of 1e-15 g
         // ran to the 60-step cap where |F_trial| is within ~5 % of L).
-        if step.abs() * k_max <= 1e-9 * (1.0 + g * k_max) {
+        // A lane that has converged keeps its g from here on.
+        let done = (step.simd_abs() * k_max).simd_le(splat::<T>(1e-9) * (one + g * k_max));
+        active = active & !done;
+        if active.none() {
             break;
         }
     }
-    let a = Vector2::new(1.0 / (1.0 + g * k[0]), 1.0 / (1.0 + g * k[1]));
+    let a = Vector2::new(one / (one + g * k[0]), one / (one + g * k[1]));
     let f = a.component_mul(trial);
     let af = a.component_mul(&f);
     let kaf = Vector2::new(k[0] * af.x, k[1] * af.y);
     let h = kaf.dot(&f);
     let d_trial = Matrix2::from_diagonal(&a) - kaf * af.transpose() / h;
-    (f, d_trial, kaf * (limit / h))
+    Both(f, Both(d_trial, kaf * (limit / h)))
 }

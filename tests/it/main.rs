@@ -38,6 +38,7 @@ mod friction_limit;
 mod friction_readings;
 mod general_hertz;
 mod geometry;
+mod lanes;
 mod materials;
 mod mu_distribution;
 mod optimize;

@@ -1,0 +1,78 @@
+//! The scalar type a seating's arithmetic is written over, so that one
+//! source seats one friction vector (`f64`) or several at once in SIMD
+//! lanes ([`F64x4`]: four seatings, one per lane).
+//!
+//! A [`Lane`] is simba's `SimdRealField` of f64 lanes, the trait nalgebra's
+//! vectors, matrices and quaternions are generic over, so that
+//! `Vector3<T>`, `Matrix3<T>` and their operations are the same code for
+//! both. Lane i of a result equals bit for bit what the same function
+//! gives for f64 on lane i's inputs: the operations are the same IEEE
+//! operations in the same order (Rust contracts no `a * b + c` into a
+//! fused multiply-add, and square roots and divisions are correctly
+//! rounded in both), and where the scalar code branches on a value, the
+//! lanes take both sides where their lanes differ and keep each lane's
+//! own ([`branch`]); an iteration freezes each lane where the scalar one
+//! would have stopped.
+
+use simba::simd::{SimdBool, SimdRealField, SimdValue};
+
+/// Four f64 lanes (simba's wrapper of `wide::f64x4`).
+pub type F64x4 = simba::simd::WideF64x4;
+
+/// The scalar type of a seating: f64 (one lane) or f64 lanes.
+pub trait Lane: SimdRealField<Element = f64> + Copy {}
+
+impl<T: SimdRealField<Element = f64> + Copy> Lane for T {}
+
+/// A lane mask: `bool` for f64.
+pub type Mask<T> = <T as SimdValue>::SimdBool;
+
+/// Every lane of `T` set to `x`.
+#[inline(always)]
+pub fn splat<T: Lane>(x: f64) -> T {
+    T::splat(x)
+}
+
+/// `then()` in the lanes where `mask` holds, `otherwise()` in the others:
+/// for f64 an `if`; for lanes, each side is evaluated only if some lane
+/// takes it, and both where the lanes differ (each side must then give
+/// finite or infinite values, never trap, in the lanes it does not serve;
+/// float arithmetic does not trap).
+#[inline(always)]
+pub fn branch<T: Lane, R: Select<T>>(
+    mask: Mask<T>,
+    then: impl FnOnce(Mask<T>) -> R,
+    otherwise: impl FnOnce(Mask<T>) -> R,
+) -> R {
+    if mask.all() {
+        then(mask)
+    } else if mask.none() {
+        otherwise(!mask)
+    } else {
+        then(mask).select_where(mask, otherwise(!mask))
+    }
+}
+
+/// A value made of lanes: picks each lane from `self` where `mask` holds,
+/// else from `other`.
+pub trait Select<T: Lane> {
+    fn select_where(self, mask: Mask<T>, other: Self) -> Self;
+}
+
+impl<T: Lane, V: SimdValue<SimdBool = Mask<T>>> Select<T> for V {
+    #[inline(always)]
+    fn select_where(self, mask: Mask<T>, other: Self) -> Self {
+        self.select(mask, other)
+    }
+}
+
+/// A pair of values of lanes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Both<A, B>(pub A, pub B);
+
+impl<T: Lane, A: Select<T>, B: Select<T>> Select<T> for Both<A, B> {
+    #[inline(always)]
+    fn select_where(self, mask: Mask<T>, other: Self) -> Self {
+        Both(self.0.select_where(mask, other.0), self.1.select_where(mask, other.1))
+    }
+}
