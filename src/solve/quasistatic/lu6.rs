@@ -10,24 +10,33 @@
 //! LU and permutation objects or its dynamically sized views: a seating
 //! takes 4 % fewer instructions than with nalgebra's LU (callgrind).
 
+//!
+//! Written over [`Lane`]s: each lane pivots on its own row (the swaps are
+//! blends, made where some lane pivots on that row), so that lane i is bit
+//! for bit the f64 solve of lane i's system; `None` if any lane's system
+//! is singular.
+
 use nalgebra::{Matrix6, Vector6};
+use simba::simd::SimdBool;
+
+use crate::lane::{Lane, splat};
 
 /// The solution of `a x = b`, or `None` where `a` is singular (a column
 /// with no non-zero pivot), as nalgebra's `a.lu().solve(b)`.
-pub(super) fn solve6(a: &Matrix6<f64>, b: &Vector6<f64>) -> Option<Vector6<f64>> {
+pub(super) fn solve6<T: Lane>(a: &Matrix6<T>, b: &Vector6<T>) -> Option<Vector6<T>> {
     // Column-major: m[c][r] is a_rc.
     let mut m = a.data.0;
     let mut x = b.data.0[0];
     // One function per elimination step: its bounds are constants, so
     // every loop unrolls without index checks.
-    eliminate::<0>(&mut m, &mut x)?;
-    eliminate::<1>(&mut m, &mut x)?;
-    eliminate::<2>(&mut m, &mut x)?;
-    eliminate::<3>(&mut m, &mut x)?;
-    eliminate::<4>(&mut m, &mut x)?;
-    eliminate::<5>(&mut m, &mut x)?;
+    eliminate::<T, 0>(&mut m, &mut x)?;
+    eliminate::<T, 1>(&mut m, &mut x)?;
+    eliminate::<T, 2>(&mut m, &mut x)?;
+    eliminate::<T, 3>(&mut m, &mut x)?;
+    eliminate::<T, 4>(&mut m, &mut x)?;
+    eliminate::<T, 5>(&mut m, &mut x)?;
     for i in (0..6).rev() {
-        if m[i][i] == 0.0 {
+        if m[i][i].simd_eq(T::zero()).any() {
             return None;
         }
         let c = x[i] / m[i][i];
@@ -43,25 +52,29 @@ pub(super) fn solve6(a: &Matrix6<f64>, b: &Vector6<f64>) -> Option<Vector6<f64>>
 /// l_rI = a_rI / a_II of the rows below, their forward substitution into
 /// `x`, and the update of the columns right of `I`. `None`: no pivot.
 #[inline(always)]
-fn eliminate<const I: usize>(m: &mut [[f64; 6]; 6], x: &mut [f64; 6]) -> Option<()> {
-    let mut piv = I;
-    let mut max = m[I][I].abs();
+fn eliminate<T: Lane, const I: usize>(m: &mut [[T; 6]; 6], x: &mut [T; 6]) -> Option<()> {
+    // The pivot row of each lane (as a number: lanes hold f64).
+    let mut piv = splat::<T>(I as f64);
+    let mut max = m[I][I].simd_abs();
     for (r, v) in m[I].iter().enumerate().skip(I + 1) {
-        if v.abs() > max {
-            max = v.abs();
-            piv = r;
-        }
+        let larger = v.simd_abs().simd_gt(max);
+        max = v.simd_abs().select(larger, max);
+        piv = splat::<T>(r as f64).select(larger, piv);
     }
-    if max == 0.0 {
+    if max.simd_eq(T::zero()).any() {
         return None;
     }
-    if piv != I {
-        for col in m.iter_mut() {
-            col.swap(I, piv);
+    for r in I + 1..6 {
+        let here = piv.simd_eq(splat::<T>(r as f64));
+        if here.any() {
+            // Swap rows I and r in the lanes that pivot on r.
+            for col in m.iter_mut() {
+                (col[I], col[r]) = (col[r].select(here, col[I]), col[I].select(here, col[r]));
+            }
+            (x[I], x[r]) = (x[r].select(here, x[I]), x[I].select(here, x[r]));
         }
-        x.swap(I, piv);
     }
-    let inv = 1.0 / m[I][I];
+    let inv = T::one() / m[I][I];
     for r in I + 1..6 {
         m[I][r] *= inv;
         x[r] -= x[I] * m[I][r];
@@ -99,6 +112,32 @@ mod tests {
             // and it solves the system (the residual of a backward-stable solve)
             let r = a * x - b;
             assert!(r.amax() < 1e-6 * (a.amax() * x.amax() + 1.0), "case {k}");
+        }
+    }
+
+    /// Four systems in lanes, each lane pivoting on its own rows: lane i
+    /// is bit for bit the f64 solve of system i.
+    #[test]
+    fn lanes_solve_each_lane_as_f64() {
+        use crate::lane::F64x4;
+        use simba::simd::SimdValue;
+        let mut rng = ChaCha8Rng::seed_from_u64(7);
+        for k in 0..500 {
+            let systems: [(Matrix6<f64>, Vector6<f64>); 4] = std::array::from_fn(|_| {
+                let a = Matrix6::from_fn(|_, _| {
+                    rng.random_range(-1.0..1.0) * 10f64.powi(rng.random_range(-3..9))
+                });
+                (a, Vector6::from_fn(|_, _| rng.random_range(-1.0..1.0)))
+            });
+            let a = Matrix6::from_fn(|r, c| F64x4::from(systems.map(|s| s.0[(r, c)])));
+            let b = Vector6::from_fn(|r, _| F64x4::from(systems.map(|s| s.1[r])));
+            let x = solve6(&a, &b).unwrap();
+            for (i, (a, b)) in systems.iter().enumerate() {
+                let xs = solve6(a, b).unwrap();
+                for r in 0..6 {
+                    assert_eq!(x[r].extract(i).to_bits(), xs[r].to_bits(), "case {k} lane {i}");
+                }
+            }
         }
     }
 
