@@ -297,9 +297,9 @@ fn respond(
 /// 0.1 %, 1 %, 10 % and 50 % outside the limit: 1 to 3 Newton steps each.
 fn return_map_lanes(c: &mut Criterion) {
     use kinrepro::contact::mindlin::project_on_circle;
-    use kinrepro::lane::{F64x4, Lane};
+    use kinrepro::lane::Lane;
     use nalgebra::Vector2;
-    use simba::simd::{AutoF64x4, SimdValue};
+    use simba::simd::{AutoF64x4, SimdValue, WideF64x4};
     let k = [2.9e7, 3.1e7];
     let limit = 0.37;
     let trial: [Vector2<f64>; 4] = std::array::from_fn(|i| {
@@ -314,9 +314,11 @@ fn return_map_lanes(c: &mut Criterion) {
     group.bench_function("4 x f64", |b| {
         b.iter(|| black_box(&trial).map(|t| project_on_circle(k, &t, limit)))
     });
-    let wide: Vector2<F64x4> = lanes(&trial);
-    group.bench_function("f64x4", |b| {
-        b.iter(|| project_on_circle(k.map(F64x4::splat), black_box(&wide), F64x4::splat(limit)))
+    let wide: Vector2<WideF64x4> = lanes(&trial);
+    group.bench_function("wide f64x4", |b| {
+        b.iter(|| {
+            project_on_circle(k.map(WideF64x4::splat), black_box(&wide), WideF64x4::splat(limit))
+        })
     });
     let auto: Vector2<AutoF64x4> = lanes(&trial);
     group.bench_function("auto f64x4", |b| {

@@ -16,8 +16,12 @@
 
 use simba::simd::{SimdBool, SimdRealField, SimdValue};
 
-/// Four f64 lanes (simba's wrapper of `wide::f64x4`).
-pub type F64x4 = simba::simd::WideF64x4;
+/// Four f64 lanes: simba's `AutoF64x4`, an array of four f64 whose
+/// arithmetic the compiler vectorises, and whose functions without a
+/// single instruction (sin, cos, exp, cube root) are f64's own, lane by
+/// lane, so that they give f64's bits (simba's `WideF64x4` has its own
+/// polynomial sine and exponential, which do not).
+pub type F64x4 = simba::simd::AutoF64x4;
 
 /// The scalar type of a seating: f64 (one lane) or f64 lanes.
 pub trait Lane: SimdRealField<Element = f64> + Copy {}
@@ -64,6 +68,17 @@ impl<T: Lane, V: SimdValue<SimdBool = Mask<T>>> Select<T> for V {
     fn select_where(self, mask: Mask<T>, other: Self) -> Self {
         self.select(mask, other)
     }
+}
+
+/// `f` of each lane of `a`, for a value whose f64 function has no form
+/// over lanes: lane i of the result is `f` of lane i of `a` (for f64, `f`).
+#[inline(always)]
+pub fn each_lane<A: SimdValue, R: SimdValue>(a: &A, f: impl Fn(A::Element) -> R::Element) -> R {
+    let mut r = R::splat(f(a.extract(0)));
+    for i in 1..A::LANES {
+        r.replace(i, f(a.extract(i)));
+    }
+    r
 }
 
 /// A pair of values of lanes.

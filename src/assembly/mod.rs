@@ -14,6 +14,7 @@ use crate::contact::stress::ShearRatios;
 use crate::contact::{
     ContactError, ContactLaw, ContactPair, ContactShape, FrictionLaw, SeriesNormal, TangentialLaw,
 };
+use crate::lane::{Lane, branch, splat};
 use crate::material::Material;
 use crate::scene::{DynamicsSettings, Scene, SurfaceGeometry, ThermalBodies};
 pub use constraint::ConstraintReport;
@@ -21,11 +22,12 @@ pub use friction_limit::FrictionLimit;
 pub use geometry::ContactGeometry;
 
 /// Pose of the moving half: world = rotation * body + translation. The body
-/// frame coincides with the world frame in the scene as written.
+/// frame coincides with the world frame in the scene as written. Over
+/// [`Lane`]s, one pose per lane.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BodyPose {
-    pub rotation: UnitQuaternion<f64>,
-    pub translation: Vector3<f64>,
+pub struct BodyPose<T: Lane = f64> {
+    pub rotation: UnitQuaternion<T>,
+    pub translation: Vector3<T>,
 }
 
 impl Default for BodyPose {
@@ -39,15 +41,19 @@ impl BodyPose {
     pub fn identity() -> Self {
         BodyPose { rotation: UnitQuaternion::identity(), translation: Vector3::zeros() }
     }
+}
 
+impl<T: Lane> BodyPose<T> {
     /// World position of a body point.
-    pub fn apply(&self, p: &Vector3<f64>) -> Vector3<f64> {
+    #[inline]
+    pub fn apply(&self, p: &Vector3<T>) -> Vector3<T> {
         self.rotation * p + self.translation
     }
 
     /// This pose moved by a small spatial twist (v, w): rotation exp(w)
     /// about the world origin, then translation v (exact finite rotation).
-    pub fn moved(&self, v: &Vector3<f64>, w: &Vector3<f64>) -> Self {
+    #[inline]
+    pub fn moved(&self, v: &Vector3<T>, w: &Vector3<T>) -> Self {
         let dq = rotation_exp(w);
         BodyPose { rotation: dq * self.rotation, translation: dq * self.translation + v }
     }
@@ -62,18 +68,26 @@ impl BodyPose {
 /// nalgebra's `UnitQuaternion::from_scaled_axis`. A turn t <= 2 eps is
 /// none, as in nalgebra's: the rounding noise of a symmetric seating's
 /// corrections leaves its pose exactly unrotated (`study::verdict` asks
-/// whether two seated poses are equal).
-pub fn rotation_exp(w: &Vector3<f64>) -> UnitQuaternion<f64> {
+/// whether two seated poses are equal). Each lane by its own turn.
+#[inline]
+pub fn rotation_exp<T: Lane>(w: &Vector3<T>) -> UnitQuaternion<T> {
     let t2 = w.norm_squared();
-    if t2 >= 1e-6 {
-        return UnitQuaternion::from_scaled_axis(*w);
-    }
-    if 0.25 * t2 <= f64::EPSILON * f64::EPSILON {
-        return UnitQuaternion::identity();
-    }
-    let c = 1.0 - t2 / 8.0 * (1.0 - t2 / 48.0);
-    let s = 0.5 * (1.0 - t2 / 24.0 * (1.0 - t2 / 80.0));
-    UnitQuaternion::new_unchecked(Quaternion::from_parts(c, w * s))
+    branch::<T, _>(
+        t2.simd_ge(splat(1e-6)),
+        |_| UnitQuaternion::from_scaled_axis(*w),
+        |_| {
+            branch::<T, _>(
+                (splat::<T>(0.25) * t2).simd_le(splat(f64::EPSILON * f64::EPSILON)),
+                |_| UnitQuaternion::identity(),
+                |_| {
+                    let one = T::one();
+                    let c = one - t2 / splat(8.0) * (one - t2 / splat(48.0));
+                    let s = splat::<T>(0.5) * (one - t2 / splat(24.0) * (one - t2 / splat(80.0)));
+                    UnitQuaternion::new_unchecked(Quaternion::from_parts(c, w * s))
+                },
+            )
+        },
+    )
 }
 
 /// One contact: a moving ball (or its patch) against a fixed surface.

@@ -3,9 +3,10 @@
 //! lanes take different branches of it or stop their iterations at
 //! different steps.
 
+use kinrepro::assembly::BodyPose;
 use kinrepro::contact::mindlin::{equal_to_rounding, project_on_circle};
 use kinrepro::lane::F64x4;
-use nalgebra::Vector2;
+use nalgebra::{Quaternion, UnitQuaternion, Vector2, Vector3, Vector4};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use simba::simd::SimdValue;
@@ -75,4 +76,40 @@ fn the_return_map_in_lanes_is_the_scalar_map_of_each_lane() {
     }
     // Most sets of four lanes take more than one branch.
     assert!(mixed > 600, "{mixed} mixed sets");
+}
+
+/// A rotation vector of a turn drawn over 1e-18 to 1 rad: the three
+/// forms of `rotation_exp` (none, the series, nalgebra's) in one set.
+fn turn(rng: &mut ChaCha8Rng) -> Vector3<f64> {
+    let axis = Vector3::from_fn(|_, _| rng.random_range(-1.0..1.0)).normalize();
+    axis * 10f64.powf(rng.random_range(-18.0..0.0))
+}
+
+/// Four poses moved by four twists at once (`BodyPose::moved`: the exact
+/// finite rotation exp(w) about the origin, then the translation): each
+/// lane's rotation and translation bit for bit the f64 move of its own.
+#[test]
+fn poses_move_in_lanes_as_each_lane_alone() {
+    let mut rng = ChaCha8Rng::seed_from_u64(42);
+    for _ in 0..1000 {
+        let cases: [(BodyPose, Vector3<f64>, Vector3<f64>); 4] = std::array::from_fn(|_| {
+            let start =
+                BodyPose::identity().moved(&Vector3::new(1e-3, -2e-4, 5e-5), &turn(&mut rng));
+            (start, Vector3::from_fn(|_, _| rng.random_range(-1e-6..1e-6)), turn(&mut rng))
+        });
+        let pose = BodyPose::<F64x4> {
+            rotation: UnitQuaternion::new_unchecked(Quaternion::from(Vector4::from_fn(|i, _| {
+                lanes(cases.map(|c| c.0.rotation.coords[i]))
+            }))),
+            translation: Vector3::from_fn(|i, _| lanes(cases.map(|c| c.0.translation[i]))),
+        };
+        let v = Vector3::from_fn(|i, _| lanes(cases.map(|c| c.1[i])));
+        let w = Vector3::from_fn(|i, _| lanes(cases.map(|c| c.2[i])));
+        let moved = pose.moved(&v, &w);
+        for (i, (start, v, w)) in cases.iter().enumerate() {
+            let alone = start.moved(v, w);
+            assert!(same_bits(&moved.rotation.coords, i, &alone.rotation.coords), "{cases:?}");
+            assert!(same_bits(&moved.translation, i, &alone.translation), "{cases:?}");
+        }
+    }
 }

@@ -37,6 +37,7 @@ use super::lu6::solve6;
 use crate::assembly::constraint::frictionless_forces;
 use crate::assembly::{BodyPose, Coupling};
 use crate::contact::{Friction, TangentialState};
+use crate::lane::{Lane, branch, each_lane, splat};
 use crate::scene::Preload;
 use crate::solve::contact_layer::{
     ContactEval, Expansion, Motion, Moved, NormalPart, evaluate_into,
@@ -416,8 +417,8 @@ pub(super) fn predictor(coupling: &Coupling, preload: &Preload) -> Vector6<f64> 
     w.lu().solve(&rhs).unwrap_or_else(Vector6::zeros)
 }
 
-/// The twist (v, w) with `from.moved(v, w) == to`.
-pub(super) fn twist_between(from: &BodyPose, to: &BodyPose) -> Vector6<f64> {
+/// The twist (v, w) with `from.moved(v, w) == to` (per lane for lanes).
+pub(super) fn twist_between<T: Lane>(from: &BodyPose<T>, to: &BodyPose<T>) -> Vector6<T> {
     let dq = to.rotation * from.rotation.inverse();
     let w = rotation_log(&dq);
     let v = to.translation - dq * from.translation;
@@ -429,15 +430,19 @@ pub(super) fn twist_between(from: &BodyPose, to: &BodyPose) -> Vector6<f64> {
 /// nalgebra's `UnitQuaternion::scaled_axis`. For |v| < 1e-4 (an
 /// increment's turn) by the series 2 atan(r)/r = 2 (1 - r^2/3 + r^4/5),
 /// r = |v|/|c|, whose first omitted term r^6/7 is below 1e-24: equal to
-/// rounding, without atan2 and the normalisation.
-fn rotation_log(q: &UnitQuaternion<f64>) -> Vector3<f64> {
+/// rounding, without atan2 and the normalisation. Each lane by its own
+/// turn (nalgebra's form lane by lane: it has none over lanes).
+fn rotation_log<T: Lane>(q: &UnitQuaternion<T>) -> Vector3<T> {
     let (c, v) = (q.w, q.imag());
     let vv = v.norm_squared();
-    if vv >= 1e-8 {
-        return q.scaled_axis();
-    }
-    let r2 = vv / (c * c);
-    v * (2.0 / c * (1.0 - r2 / 3.0 * (1.0 - 0.6 * r2)))
+    branch::<T, _>(
+        vv.simd_ge(splat(1e-8)),
+        |_| each_lane(q, |q: UnitQuaternion<f64>| q.scaled_axis()),
+        |_| {
+            let (one, r2) = (T::one(), vv / (c * c));
+            v * (splat::<T>(2.0) / c * (one - r2 / splat(3.0) * (one - splat::<T>(0.6) * r2)))
+        },
+    )
 }
 
 #[cfg(test)]
@@ -472,7 +477,21 @@ mod tests {
                 assert!((rotation_log(&negated) - expected).amax() <= 1e-15 * w.norm());
             }
         }
-        assert_eq!(rotation_log(&UnitQuaternion::identity()), Vector3::zeros());
+        assert_eq!(rotation_log(&UnitQuaternion::<f64>::identity()), Vector3::zeros());
+        // Over lanes, each lane is its own f64 log (turns on both sides of
+        // the series' threshold in one set of four).
+        use crate::lane::F64x4;
+        use simba::simd::SimdValue;
+        let turns = [1e-12, 3e-5, 1e-3, 0.7].map(|t| axes[0] * t);
+        let q = turns.map(UnitQuaternion::from_scaled_axis);
+        let lanes = UnitQuaternion::new_unchecked(nalgebra::Quaternion::from(
+            nalgebra::Vector4::from_fn(|i, _| F64x4::from(q.map(|q| q.coords[i]))),
+        ));
+        let logs = rotation_log(&lanes);
+        for (i, q) in q.iter().enumerate() {
+            let alone = rotation_log(q);
+            assert!((0..3).all(|r| logs[r].extract(i).to_bits() == alone[r].to_bits()), "{i}");
+        }
         // A turn of rounding size is none, as in nalgebra's exp.
         let noise = Vector3::new(1e-19, -2e-19, 4e-17);
         assert_eq!(rotation_exp(&noise), UnitQuaternion::identity());
