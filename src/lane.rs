@@ -37,6 +37,14 @@ pub fn splat<T: Lane>(x: f64) -> T {
     T::splat(x)
 }
 
+/// A vector of f64 (a fixed surface's, a body point's) in every lane.
+#[inline(always)]
+pub fn lift<T: Lane, const R: usize, const C: usize>(
+    v: &nalgebra::SMatrix<f64, R, C>,
+) -> nalgebra::SMatrix<T, R, C> {
+    v.map(splat)
+}
+
 /// `then()` in the lanes where `mask` holds, `otherwise()` in the others:
 /// for f64 an `if`; for lanes, each side is evaluated only if some lane
 /// takes it, and both where the lanes differ (each side must then give

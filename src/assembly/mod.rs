@@ -14,7 +14,7 @@ use crate::contact::stress::ShearRatios;
 use crate::contact::{
     ContactError, ContactLaw, ContactPair, ContactShape, FrictionLaw, SeriesNormal, TangentialLaw,
 };
-use crate::lane::{Lane, branch, splat};
+use crate::lane::{Lane, branch, lift, splat};
 use crate::material::Material;
 use crate::scene::{DynamicsSettings, Scene, SurfaceGeometry, ThermalBodies};
 pub use constraint::ConstraintReport;
@@ -278,13 +278,13 @@ impl Coupling {
     /// Geometry of contact `i` with the moving half at `pose`
     /// ([`geometry::contact`], or [`geometry::pin_contact`] for a moving pin).
     #[inline]
-    pub fn geometry(&self, i: usize, pose: &BodyPose) -> ContactGeometry {
+    pub fn geometry<T: Lane>(&self, i: usize, pose: &BodyPose<T>) -> ContactGeometry<T> {
         let c = &self.contacts[i];
-        let centre = pose.apply(&c.centre);
+        let centre = pose.apply(&lift(&c.centre));
         match c.axis {
             None => geometry::contact(&c.surface, &centre, c.radius),
             Some(axis) => {
-                geometry::pin_contact(&c.surface, &centre, &(pose.rotation * axis), c.radius)
+                geometry::pin_contact(&c.surface, &centre, &(pose.rotation * lift(&axis)), c.radius)
             }
         }
     }

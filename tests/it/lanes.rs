@@ -97,12 +97,7 @@ fn poses_move_in_lanes_as_each_lane_alone() {
                 BodyPose::identity().moved(&Vector3::new(1e-3, -2e-4, 5e-5), &turn(&mut rng));
             (start, Vector3::from_fn(|_, _| rng.random_range(-1e-6..1e-6)), turn(&mut rng))
         });
-        let pose = BodyPose::<F64x4> {
-            rotation: UnitQuaternion::new_unchecked(Quaternion::from(Vector4::from_fn(|i, _| {
-                lanes(cases.map(|c| c.0.rotation.coords[i]))
-            }))),
-            translation: Vector3::from_fn(|i, _| lanes(cases.map(|c| c.0.translation[i]))),
-        };
+        let pose = pose_lanes(&cases.map(|c| c.0));
         let v = Vector3::from_fn(|i, _| lanes(cases.map(|c| c.1[i])));
         let w = Vector3::from_fn(|i, _| lanes(cases.map(|c| c.2[i])));
         let moved = pose.moved(&v, &w);
@@ -112,4 +107,50 @@ fn poses_move_in_lanes_as_each_lane_alone() {
             assert!(same_bits(&moved.translation, i, &alone.translation), "{cases:?}");
         }
     }
+}
+
+/// Four poses as one pose of lanes.
+fn pose_lanes(p: &[BodyPose; 4]) -> BodyPose<F64x4> {
+    BodyPose {
+        rotation: UnitQuaternion::new_unchecked(Quaternion::from(Vector4::from_fn(|i, _| {
+            lanes(p.map(|p| p.rotation.coords[i]))
+        }))),
+        translation: Vector3::from_fn(|i, _| lanes(p.map(|p| p.translation[i]))),
+    }
+}
+
+/// The geometry of every contact of every bundled scene (balls on planes,
+/// pins, balls and grooves, canoe patches, crossed pins) at four poses
+/// about the touching pose at once: each lane's gap, normal and point bit
+/// for bit the f64 geometry at its own pose.
+#[test]
+fn contact_geometry_in_lanes_is_each_lanes_own() {
+    let mut rng = ChaCha8Rng::seed_from_u64(43);
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut names: Vec<_> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
+    names.sort();
+    let mut pins = 0;
+    for path in names {
+        let scene = kinrepro::scene::Scene::load(&path).unwrap();
+        let c = kinrepro::assembly::Coupling::new(&scene).unwrap();
+        for _ in 0..50 {
+            let poses: [BodyPose; 4] = std::array::from_fn(|_| {
+                let v = Vector3::from_fn(|_, _| rng.random_range(-2e-6..2e-6));
+                c.touching_pose.moved(&v, &(turn(&mut rng) * 1e-4))
+            });
+            let at = pose_lanes(&poses);
+            for i in 0..c.contacts.len() {
+                pins += usize::from(c.contacts[i].axis.is_some());
+                let g = c.geometry(i, &at);
+                for (lane, pose) in poses.iter().enumerate() {
+                    let alone = c.geometry(i, pose);
+                    let what = format!("{} contact {i} lane {lane}", path.display());
+                    assert_eq!(g.gap.extract(lane).to_bits(), alone.gap.to_bits(), "{what}");
+                    assert!(same_bits(&g.normal, lane, &alone.normal), "{what}");
+                    assert!(same_bits(&g.point, lane, &alone.point), "{what}");
+                }
+            }
+        }
+    }
+    assert!(pins > 0, "a scene with moving pins");
 }

@@ -6,16 +6,18 @@
 
 use nalgebra::Vector3;
 
+use crate::lane::{Lane, lift, splat};
+
 use super::ContactGeometry;
 
 #[inline(always)]
-pub(super) fn contact(
-    centre: &Vector3<f64>,
+pub(super) fn contact<T: Lane>(
+    centre: &Vector3<T>,
     radius: f64,
     fixed_centre: &Vector3<f64>,
     fixed_radius: f64,
-) -> ContactGeometry {
-    let v = centre - fixed_centre;
+) -> ContactGeometry<T> {
+    let v = centre - lift(fixed_centre);
     let d = v.norm();
-    ContactGeometry::midway(centre, radius, d - fixed_radius - radius, v / d)
+    ContactGeometry::midway(centre, radius, d - splat(fixed_radius) - splat(radius), v / d)
 }

@@ -11,17 +11,19 @@
 
 use nalgebra::Vector3;
 
+use crate::lane::{Lane, lift, splat};
+
 use super::{ContactGeometry, axis_offset};
 
 #[inline(always)]
-pub(super) fn contact(
-    centre: &Vector3<f64>,
+pub(super) fn contact<T: Lane>(
+    centre: &Vector3<T>,
     radius: f64,
     axis_point: &Vector3<f64>,
     direction: &Vector3<f64>,
     groove_radius: f64,
-) -> ContactGeometry {
-    let v = axis_offset(centre, axis_point, direction);
+) -> ContactGeometry<T> {
+    let v = axis_offset(centre, &lift(axis_point), &lift(direction));
     let d = v.norm();
-    ContactGeometry::midway(centre, radius, groove_radius - d - radius, -v / d)
+    ContactGeometry::midway(centre, radius, splat::<T>(groove_radius) - d - splat(radius), -v / d)
 }

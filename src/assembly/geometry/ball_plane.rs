@@ -6,15 +6,18 @@
 
 use nalgebra::Vector3;
 
+use crate::lane::{Lane, lift, splat};
+
 use super::ContactGeometry;
 
 #[inline(always)]
-pub(super) fn contact(
-    centre: &Vector3<f64>,
+pub(super) fn contact<T: Lane>(
+    centre: &Vector3<T>,
     radius: f64,
     point: &Vector3<f64>,
     normal: &Vector3<f64>,
-) -> ContactGeometry {
-    let gap = (centre - point).dot(normal) - radius;
-    ContactGeometry::midway(centre, radius, gap, *normal)
+) -> ContactGeometry<T> {
+    let normal = lift(normal);
+    let gap = (centre - lift(point)).dot(&normal) - splat(radius);
+    ContactGeometry::midway(centre, radius, gap, normal)
 }

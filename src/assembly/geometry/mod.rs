@@ -24,25 +24,27 @@ use nalgebra::Vector3;
 use parry3d_f64::math::{Pose, Rotation, Vector};
 use parry3d_f64::shape::{Ball, Capsule, Cylinder, HalfSpace, SharedShape};
 
+use crate::lane::{Lane, splat};
 use crate::scene::SurfaceGeometry;
 
 /// Contact geometry of one ball against one fixed surface.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct ContactGeometry {
+pub struct ContactGeometry<T: Lane = f64> {
     /// Signed distance [m]; negative = overlap (the Hertz approach is -gap).
-    pub gap: f64,
+    pub gap: T,
     /// Unit normal from the fixed surface into the ball.
-    pub normal: Vector3<f64>,
+    pub normal: Vector3<T>,
     /// Contact point: midway between the two surface points [m].
-    pub point: Vector3<f64>,
+    pub point: Vector3<T>,
 }
 
-impl ContactGeometry {
+impl<T: Lane> ContactGeometry<T> {
     /// The geometry of a ball (centre `centre`, radius `radius`) at `gap`
     /// along the unit `normal`, with the point midway (module docs).
     #[inline(always)]
-    fn midway(centre: &Vector3<f64>, radius: f64, gap: f64, normal: Vector3<f64>) -> Self {
-        ContactGeometry { gap, normal, point: centre - normal * (radius + 0.5 * gap) }
+    fn midway(centre: &Vector3<T>, radius: f64, gap: T, normal: Vector3<T>) -> Self {
+        let point = centre - normal * (splat::<T>(radius) + splat::<T>(0.5) * gap);
+        ContactGeometry { gap, normal, point }
     }
 }
 
@@ -50,11 +52,11 @@ impl ContactGeometry {
 /// unit `direction`: v = (c - a) - ((c - a) . d) d (a pin's or a groove's
 /// axis; its length is the centre's distance from the axis).
 #[inline(always)]
-fn axis_offset(
-    centre: &Vector3<f64>,
-    axis_point: &Vector3<f64>,
-    direction: &Vector3<f64>,
-) -> Vector3<f64> {
+fn axis_offset<T: Lane>(
+    centre: &Vector3<T>,
+    axis_point: &Vector3<T>,
+    direction: &Vector3<T>,
+) -> Vector3<T> {
     let w = centre - axis_point;
     w - direction * w.dot(direction)
 }
@@ -62,7 +64,11 @@ fn axis_offset(
 /// The geometry of a ball of `radius` centred at `centre` (world
 /// coordinates) against the fixed `surface`.
 #[inline]
-pub fn contact(surface: &SurfaceGeometry, centre: &Vector3<f64>, radius: f64) -> ContactGeometry {
+pub fn contact<T: Lane>(
+    surface: &SurfaceGeometry,
+    centre: &Vector3<T>,
+    radius: f64,
+) -> ContactGeometry<T> {
     match surface {
         SurfaceGeometry::Plane { point, normal } => {
             ball_plane::contact(centre, radius, point, normal)
@@ -84,19 +90,19 @@ pub fn contact(surface: &SurfaceGeometry, centre: &Vector3<f64>, radius: f64) ->
 /// fixed `surface`: a fixed pin crossing it. Other fixed surfaces do not
 /// touch a pin at a point (the assembly refuses them): their gap is NaN.
 #[inline]
-pub fn pin_contact(
+pub fn pin_contact<T: Lane>(
     surface: &SurfaceGeometry,
-    axis_point: &Vector3<f64>,
-    direction: &Vector3<f64>,
+    axis_point: &Vector3<T>,
+    direction: &Vector3<T>,
     radius: f64,
-) -> ContactGeometry {
+) -> ContactGeometry<T> {
     match surface {
         SurfaceGeometry::Cylinder {
             axis_point: fixed,
             direction: fixed_direction,
             radius: fixed_radius,
         } => pin_pin::contact(axis_point, direction, radius, fixed, fixed_direction, *fixed_radius),
-        _ => ContactGeometry { gap: f64::NAN, normal: Vector3::zeros(), point: *axis_point },
+        _ => ContactGeometry { gap: splat(f64::NAN), normal: Vector3::zeros(), point: *axis_point },
     }
 }
 

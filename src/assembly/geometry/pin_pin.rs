@@ -12,24 +12,28 @@
 
 use nalgebra::Vector3;
 
+use crate::lane::{Lane, lift, splat};
+
 use super::ContactGeometry;
 
 #[inline]
-pub(super) fn contact(
-    axis_point: &Vector3<f64>,
-    direction: &Vector3<f64>,
+pub(super) fn contact<T: Lane>(
+    axis_point: &Vector3<T>,
+    direction: &Vector3<T>,
     radius: f64,
     fixed_point: &Vector3<f64>,
     fixed_direction: &Vector3<f64>,
     fixed_radius: f64,
-) -> ContactGeometry {
-    let m = direction.cross(fixed_direction);
+) -> ContactGeometry<T> {
+    let (fixed_point, fixed_direction) = (lift(fixed_point), lift(fixed_direction));
+    let m = direction.cross(&fixed_direction);
     let m2 = m.norm_squared();
     let w = axis_point - fixed_point;
-    let s = w.dot(&m) / m2.sqrt();
-    let n = m * (s.signum() / m2.sqrt());
+    let s = w.dot(&m) / m2.simd_sqrt();
+    let n = m * (s.simd_signum() / m2.simd_sqrt());
     let t2 = w.dot(&m.cross(direction)) / m2;
     let fixed_foot = fixed_point + fixed_direction * t2;
-    let moving_foot = fixed_foot + n * s.abs();
-    ContactGeometry::midway(&moving_foot, radius, s.abs() - fixed_radius - radius, n)
+    let moving_foot = fixed_foot + n * s.simd_abs();
+    let gap = s.simd_abs() - splat(fixed_radius) - splat(radius);
+    ContactGeometry::midway(&moving_foot, radius, gap, n)
 }
