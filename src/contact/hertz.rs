@@ -20,6 +20,7 @@
 //! c_a = a / F^(1/3), so evaluating it costs a few flops.
 
 use super::elliptic::{EllipticIntegrals, solve_kp};
+use crate::lane::{Lane, each_lane, splat};
 use std::f64::consts::PI;
 
 /// Hertz treats the bodies as half-spaces, which needs a contact small
@@ -114,8 +115,8 @@ impl HertzLaw {
     /// [`Self::major_semi_axis_fast`] from the load's cube root
     /// [`load_root`] already formed.
     #[inline]
-    pub fn major_semi_axis_of_root(&self, root: f64) -> f64 {
-        self.semi_axis_coef * root
+    pub fn major_semi_axis_of_root<T: Lane>(&self, root: T) -> T {
+        splat::<T>(self.semi_axis_coef) * root
     }
 
     /// The major semi-axis a at load F over the smaller relative radius of
@@ -140,6 +141,12 @@ impl HertzLaw {
 #[inline]
 pub fn load_root(load: f64) -> f64 {
     cbrt(load.max(0.0))
+}
+
+/// [`load_root`] of each lane.
+#[inline]
+pub fn load_roots<T: Lane>(load: T) -> T {
+    each_lane(&load, load_root)
 }
 
 /// The cube root of x to within one ulp of libm's (measured over 2e6

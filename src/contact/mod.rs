@@ -37,6 +37,7 @@ use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+use crate::lane::{Both, Lane, branch, splat};
 use crate::material::{Material, effective_modulus, effective_shear_modulus};
 pub use curvature::{PairCurvature, RelativeCurvature};
 pub use friction::FrictionLaw;
@@ -399,15 +400,19 @@ impl ContactLaw {
     /// (the contact layer's: a0 once per increment, a1 from the Hertz
     /// law's root).
     #[inline]
-    pub fn increment_semi_axis_of(&self, a0: f64, a1: f64, fn_: f64) -> (f64, f64) {
+    pub fn increment_semi_axis_of<T: Lane>(&self, a0: T, a1: T, fn_: T) -> (T, T) {
         let sum = a0 + a1;
-        if sum <= 0.0 || fn_ <= 0.0 {
-            return (0.5 * sum, 0.0);
-        }
-        let q = a0 * a0 + a0 * a1 + a1 * a1;
-        let a_eff = (2.0 / 3.0) * q / sum;
-        // d a_eff / d a1 = (2/3) (2 a0 a1 + a1^2) / (a0 + a1)^2, d a1 / dF = a1 / (3 F).
-        let dlog = (2.0 * a0 + a1) * a1 * a1 / (sum * q * 3.0 * fn_);
+        let Both(a_eff, dlog) = branch::<T, _>(
+            sum.simd_le(T::zero()) | fn_.simd_le(T::zero()),
+            |_| Both(splat::<T>(0.5) * sum, T::zero()),
+            |_| {
+                let q = a0 * a0 + a0 * a1 + a1 * a1;
+                let a_eff = splat::<T>(2.0 / 3.0) * q / sum;
+                // d a_eff / d a1 = (2/3) (2 a0 a1 + a1^2) / (a0 + a1)^2, d a1 / dF = a1 / (3 F).
+                let dlog = (splat::<T>(2.0) * a0 + a1) * a1 * a1 / (sum * q * splat(3.0) * fn_);
+                Both(a_eff, dlog)
+            },
+        );
         (a_eff, dlog)
     }
 

@@ -14,7 +14,10 @@
 //! (quadratic convergence; a handful of steps). With c = 0 the Hertz law
 //! is used as it is.
 
-use super::hertz::{HertzLaw, load_root};
+use simba::simd::SimdBool;
+
+use super::hertz::{HertzLaw, load_roots};
+use crate::lane::{Both, Lane, Mask, branch, splat};
 
 /// The normal law of one contact: Hertz plus a series support compliance.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -58,7 +61,7 @@ impl SeriesNormal {
             let (f, k, _) = self.hertz_alone(approach);
             return (f, k);
         }
-        self.series_force_and_stiffness(approach)
+        self.series_force_and_stiffness(approach, true)
     }
 
     /// [`Self::force_and_stiffness`] and F^(1/3) (the contact layer's
@@ -72,48 +75,64 @@ impl SeriesNormal {
     /// two (measured), where the Hertz law's root moves the paper scenes'
     /// by at most 4e-13.
     #[inline]
-    pub fn force_stiffness_and_root(&self, approach: f64) -> (f64, f64, f64) {
-        if self.compliance == 0.0 || approach <= 0.0 {
+    pub fn force_stiffness_and_root<T: Lane>(&self, approach: T) -> (T, T, T) {
+        let hertz_alone = |_| {
             let (f, k, root) = self.hertz_alone(approach);
-            return (f, k, self.force_root * root);
+            Both(f, Both(k, splat::<T>(self.force_root) * root))
+        };
+        if self.compliance == 0.0 {
+            let Both(f, Both(k, root)) = hertz_alone(approach.simd_le(T::zero()));
+            return (f, k, root);
         }
-        let (f, k) = self.series_force_and_stiffness(approach);
-        (f, k, load_root(f))
+        let Both(f, Both(k, root)) =
+            branch::<T, _>(approach.simd_le(T::zero()), hertz_alone, |closed| {
+                let (f, k) = self.series_force_and_stiffness(approach, closed);
+                Both(f, Both(k, load_roots(f)))
+            });
+        (f, k, root)
     }
 
     /// The Hertz law alone (no compliance, or delta <= 0): F = K delta^1.5,
     /// dF/d delta = 1.5 K delta^0.5 (`HertzLaw::force` and `::stiffness`, one
     /// square root) and delta^0.5; zeros for delta <= 0.
     #[inline]
-    fn hertz_alone(&self, approach: f64) -> (f64, f64, f64) {
-        if approach > 0.0 {
-            let (k, root) = (self.hertz.hertz_constant, approach.sqrt());
-            return (k * approach * root, 1.5 * k * root, root);
-        }
-        (0.0, 0.0, 0.0)
+    fn hertz_alone<T: Lane>(&self, approach: T) -> (T, T, T) {
+        let Both(f, Both(k, root)) = branch::<T, _>(
+            approach.simd_gt(T::zero()),
+            |_| {
+                let (k, root) = (self.hertz.hertz_constant, approach.simd_sqrt());
+                Both(splat::<T>(k) * approach * root, Both(splat::<T>(1.5 * k) * root, root))
+            },
+            |_| Both(T::zero(), Both(T::zero(), T::zero())),
+        );
+        (f, k, root)
     }
 
     /// [`Self::force_and_stiffness`] with a compliance c > 0 and delta > 0:
     /// the Newton iteration of the module docs.
-    fn series_force_and_stiffness(&self, approach: f64) -> (f64, f64) {
-        let c = self.compliance;
-        let q = self.q;
-        let mut t = (approach / q).sqrt().min((approach / c).cbrt());
+    /// Over lanes, in those of `active` (a lane stops where its f64
+    /// iteration would and keeps its t while the others go on).
+    fn series_force_and_stiffness<T: Lane>(&self, approach: T, mut active: Mask<T>) -> (T, T) {
+        let c = splat::<T>(self.compliance);
+        let q = splat::<T>(self.q);
+        let mut t = (approach / q).simd_sqrt().simd_min((approach / c).simd_cbrt());
         for _ in 0..100 {
             let r = c * t * t * t + q * t * t - approach;
-            let step = r / (3.0 * c * t * t + 2.0 * q * t);
-            if step.is_nan() || step <= 0.0 {
+            let step = r / (splat::<T>(3.0) * c * t * t + splat::<T>(2.0) * q * t);
+            active = active & !(step.simd_ne(step) | step.simd_le(T::zero()));
+            if active.none() {
                 break;
             }
-            t -= step;
-            if step <= 1e-16 * t {
+            t = (t - step).select(active, t);
+            active = active & !step.simd_le(splat::<T>(1e-16) * t);
+            if active.none() {
                 break;
             }
         }
         let f = t * t * t;
         // k_H = dF/d delta_H = 3 t / (2 q); in series with 1/c.
-        let k_hertz = 1.5 * t / q;
-        (f, k_hertz / (1.0 + c * k_hertz))
+        let k_hertz = splat::<T>(1.5) * t / q;
+        (f, k_hertz / (T::one() + c * k_hertz))
     }
 
     /// Elastic energy stored at approach delta: the Hertz part

@@ -34,6 +34,7 @@ use nalgebra::{Matrix3, Vector3};
 use crate::assembly::{BodyPose, ContactGeometry, Coupling};
 use crate::contact::hertz::load_root;
 use crate::contact::{Friction, SlipState, TangentialInput, TangentialResponse, TangentialState};
+use crate::lane::Lane;
 use crate::scene::{Temperatures, ThermalBodies};
 
 /// One contact evaluated at a trial pose.
@@ -281,14 +282,14 @@ pub struct Moved<'s> {
 ///
 /// [`Solver::evaluate_all`]: crate::solve::quasistatic
 #[derive(Debug, Clone, Copy, Default)]
-pub struct NormalPart {
-    pub approach: f64,
-    pub normal_force: f64,
-    pub normal_stiffness: f64,
+pub struct NormalPart<T: Lane = f64> {
+    pub approach: T,
+    pub normal_force: T,
+    pub normal_stiffness: T,
     /// d(ln a_eff)/dF_n [1/N].
-    pub dlog: f64,
+    pub dlog: T,
     /// The increment's effective semi-axis a_eff [m].
-    pub a_eff: f64,
+    pub a_eff: T,
 }
 
 impl NormalPart {
@@ -302,12 +303,26 @@ impl NormalPart {
         committed: &TangentialState,
         memo: &mut CommittedRoot,
     ) -> Self {
+        Self::of_root(coupling, i, g, || memo.of(committed.normal_force))
+    }
+}
+
+impl<T: Lane> NormalPart<T> {
+    /// [`NormalPart::new`] with the committed force's cube root from
+    /// `committed_root` (per lane for lanes).
+    #[inline]
+    pub fn of_root(
+        coupling: &Coupling,
+        i: usize,
+        g: &ContactGeometry<T>,
+        committed_root: impl FnOnce() -> T,
+    ) -> Self {
         let contact = &coupling.contacts[i];
         let approach = -g.gap;
         // Hertz in series with the support compliance (`contact::series`).
         let (fn_, kn, root) = contact.normal.force_stiffness_and_root(approach);
         let hertz = &contact.law.hertz;
-        let a0 = hertz.major_semi_axis_of_root(memo.of(committed.normal_force));
+        let a0 = hertz.major_semi_axis_of_root(committed_root());
         let a1 = hertz.major_semi_axis_of_root(root);
         let (a_eff, dlog) = contact.law.increment_semi_axis_of(a0, a1, fn_);
         NormalPart { approach, normal_force: fn_, normal_stiffness: kn, dlog, a_eff }

@@ -3,7 +3,7 @@
 //! lanes take different branches of it or stop their iterations at
 //! different steps.
 
-use kinrepro::assembly::BodyPose;
+use kinrepro::assembly::{BodyPose, ContactGeometry};
 use kinrepro::contact::mindlin::{equal_to_rounding, project_on_circle};
 use kinrepro::lane::F64x4;
 use nalgebra::{Quaternion, UnitQuaternion, Vector2, Vector3, Vector4};
@@ -126,13 +126,8 @@ fn pose_lanes(p: &[BodyPose; 4]) -> BodyPose<F64x4> {
 #[test]
 fn contact_geometry_in_lanes_is_each_lanes_own() {
     let mut rng = ChaCha8Rng::seed_from_u64(43);
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
-    let mut names: Vec<_> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
-    names.sort();
     let mut pins = 0;
-    for path in names {
-        let scene = kinrepro::scene::Scene::load(&path).unwrap();
-        let c = kinrepro::assembly::Coupling::new(&scene).unwrap();
+    for (path, c) in bundled_couplings() {
         for _ in 0..50 {
             let poses: [BodyPose; 4] = std::array::from_fn(|_| {
                 let v = Vector3::from_fn(|_, _| rng.random_range(-2e-6..2e-6));
@@ -144,7 +139,7 @@ fn contact_geometry_in_lanes_is_each_lanes_own() {
                 let g = c.geometry(i, &at);
                 for (lane, pose) in poses.iter().enumerate() {
                     let alone = c.geometry(i, pose);
-                    let what = format!("{} contact {i} lane {lane}", path.display());
+                    let what = format!("{path} contact {i} lane {lane}");
                     assert_eq!(g.gap.extract(lane).to_bits(), alone.gap.to_bits(), "{what}");
                     assert!(same_bits(&g.normal, lane, &alone.normal), "{what}");
                     assert!(same_bits(&g.point, lane, &alone.point), "{what}");
@@ -153,4 +148,66 @@ fn contact_geometry_in_lanes_is_each_lanes_own() {
         }
     }
     assert!(pins > 0, "a scene with moving pins");
+}
+
+/// Every bundled scene's couplings (`Coupling::new` of each file).
+fn bundled_couplings() -> Vec<(String, kinrepro::assembly::Coupling)> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut paths: Vec<_> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
+    paths.sort();
+    paths
+        .into_iter()
+        .map(|p| {
+            let scene = kinrepro::scene::Scene::load(&p).unwrap();
+            (p.display().to_string(), kinrepro::assembly::Coupling::new(&scene).unwrap())
+        })
+        .collect()
+}
+
+/// The normal part of every contact of every bundled scene (Hertz alone,
+/// or in series with a support compliance: its Newton iteration) at four
+/// approaches at once, some open, from committed forces some zero: each
+/// lane bit for bit its f64 value.
+#[test]
+fn the_normal_part_in_lanes_is_each_lanes_own() {
+    use kinrepro::solve::contact_layer::NormalPart;
+    let mut rng = ChaCha8Rng::seed_from_u64(44);
+    let mut compliant = 0;
+    for (name, c) in bundled_couplings() {
+        for i in 0..c.contacts.len() {
+            compliant += usize::from(c.contacts[i].normal.compliance > 0.0);
+            for _ in 0..50 {
+                let cases: [(f64, f64); 4] = std::array::from_fn(|_| {
+                    let approach = match rng.random_range(0..5) {
+                        0 => -1e-7,
+                        1 => 0.0,
+                        _ => 10f64.powf(rng.random_range(-9.0..-5.0)),
+                    };
+                    let root = [0.0, rng.random_range(0.1..3.0)][rng.random_range(0..2)];
+                    (approach, root)
+                });
+                let geometry = |gap| ContactGeometry { gap, ..Default::default() };
+                let g = ContactGeometry::<F64x4> {
+                    gap: lanes(cases.map(|x| -x.0)),
+                    normal: Vector3::zeros(),
+                    point: Vector3::zeros(),
+                };
+                let p = NormalPart::of_root(&c, i, &g, || lanes(cases.map(|x| x.1)));
+                for (lane, (approach, root)) in cases.iter().enumerate() {
+                    let s = NormalPart::of_root(&c, i, &geometry(-approach), || *root);
+                    let what = format!("{name} contact {i} lane {lane}: {cases:?}");
+                    for (l, x) in [
+                        (p.approach, s.approach),
+                        (p.normal_force, s.normal_force),
+                        (p.normal_stiffness, s.normal_stiffness),
+                        (p.dlog, s.dlog),
+                        (p.a_eff, s.a_eff),
+                    ] {
+                        assert_eq!(l.extract(lane).to_bits(), x.to_bits(), "{what}");
+                    }
+                }
+            }
+        }
+    }
+    assert!(compliant > 0, "a scene with a support compliance");
 }
