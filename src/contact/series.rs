@@ -150,6 +150,7 @@ impl SeriesNormal {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::contact::hertz::load_root;
 
     /// Without a compliance the law is Hertz's own F and dF/d delta (one
     /// square root shared instead of two; zero when open); with one, the
