@@ -27,7 +27,7 @@ use simba::simd::SimdBool;
 use std::f64::consts::PI;
 
 use super::elliptic::EllipticIntegrals;
-use crate::lane::{Both, Lane, Mask, branch, splat};
+use crate::lane::{Both, Lane, Mask, branch, lift, splat};
 use crate::material::Material;
 
 /// k_t / a along the major and the minor axis [N/m^2] for the materials of
@@ -57,9 +57,9 @@ pub fn tangential_tensor(k: [f64; 2], n: &Vector3<f64>, major_axis: &Vector3<f64
 /// (K_t = k (I - n n^T), equal principal values), else the unit axes
 /// (e1, e2) in the tangent plane with K_t = k_1 e1 e1^T + k_2 e2 e2^T.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PrincipalStiffness {
-    pub k: [f64; 2],
-    pub axes: Option<[Vector3<f64>; 2]>,
+pub struct PrincipalStiffness<T: Lane = f64> {
+    pub k: [T; 2],
+    pub axes: Option<[Vector3<T>; 2]>,
 }
 
 impl PrincipalStiffness {
@@ -67,32 +67,53 @@ impl PrincipalStiffness {
     /// major axis along `major_axis` projected into the tangent plane.
     #[inline]
     pub fn new(k: [f64; 2], n: &Vector3<f64>, major_axis: &Vector3<f64>) -> Self {
+        match Self::of_lanes(k, n, major_axis) {
+            Some(p) => p,
+            None => unreachable!("one lane takes one form"),
+        }
+    }
+}
+
+impl<T: Lane> PrincipalStiffness<T> {
+    /// [`PrincipalStiffness::new`] over lanes, one stiffness per lane;
+    /// `None` where some lanes are circles and others ellipses (the form
+    /// is the contact's: a lane that differs is reseated alone).
+    #[inline]
+    pub fn of_lanes(k: [T; 2], n: &Vector3<T>, major_axis: &Vector3<f64>) -> Option<Self> {
         // A circular contact: equal principal values (to rounding: the two
         // may be computed by different formulas), or no major axis to orient
         // an ellipse by. Both values are then the mean, K_t = k (I - n n^T)
         // (0.5 (k + k) is k exactly).
-        let circle = PrincipalStiffness { k: [0.5 * (k[0] + k[1]); 2], axes: None };
-        if equal_to_rounding(k) || *major_axis == Vector3::zeros() {
+        let circle = PrincipalStiffness { k: [splat::<T>(0.5) * (k[0] + k[1]); 2], axes: None };
+        let round = equal_to_rounding(k);
+        if round.all() || *major_axis == Vector3::zeros() {
             // (The zero axis would fail the length test below as well.)
-            return circle;
+            return Some(circle);
         }
-        let in_plane = major_axis - n * n.dot(major_axis);
+        if round.any() {
+            return None;
+        }
+        let major = lift(major_axis);
+        let in_plane = major - n * n.dot(&major);
         let length = in_plane.norm();
-        if length <= 1e-12 * major_axis.norm() {
-            return circle;
+        let short = length.simd_le(splat(1e-12 * major_axis.norm()));
+        if short.all() {
+            return Some(circle);
+        }
+        if short.any() {
+            return None;
         }
         let e1 = in_plane / length;
-        PrincipalStiffness { k, axes: Some([e1, n.cross(&e1)]) }
+        Some(PrincipalStiffness { k, axes: Some([e1, n.cross(&e1)]) })
     }
 
     /// The 3x3 tensor K_t in the tangent plane of `n`.
     #[inline]
-    pub fn tensor(&self, n: &Vector3<f64>) -> Matrix3<f64> {
+    pub fn tensor(&self, n: &Vector3<T>) -> Matrix3<T> {
+        let delta = |i, j| splat::<T>(if i == j { 1.0 } else { 0.0 });
         match self.axes {
             // k (I - n n^T) and k1 e1 e1^T + k2 e2 e2^T, entry by entry.
-            None => {
-                Matrix3::from_fn(|i, j| self.k[0] * (if i == j { 1.0 } else { 0.0 } - n[i] * n[j]))
-            }
+            None => Matrix3::from_fn(|i, j| self.k[0] * (delta(i, j) - n[i] * n[j])),
             Some([e1, e2]) => {
                 Matrix3::from_fn(|i, j| self.k[0] * e1[i] * e1[j] + self.k[1] * e2[i] * e2[j])
             }
@@ -112,10 +133,10 @@ impl PrincipalStiffness {
     #[inline]
     pub fn project(
         &self,
-        n: &Vector3<f64>,
-        trial: &Vector3<f64>,
-        limit: f64,
-    ) -> (Vector3<f64>, Matrix3<f64>, Vector3<f64>) {
+        n: &Vector3<T>,
+        trial: &Vector3<T>,
+        limit: T,
+    ) -> (Vector3<T>, Matrix3<T>, Vector3<T>) {
         match self.axes {
             None => {
                 let r = RadialReturn::new(n, trial, limit);
@@ -127,7 +148,7 @@ impl PrincipalStiffness {
                 // E f, E d E^T and E d_limit with E = [e1 e2] (3x2):
                 // (E d)_ik = e1_i d_0k + e2_i d_1k, then
                 // (E d E^T)_ij = (E d)_i0 e1_j + (E d)_i1 e2_j.
-                let in_3d = |v: &Vector2<f64>| Vector3::from_fn(|i, _| e1[i] * v.x + e2[i] * v.y);
+                let in_3d = |v: &Vector2<T>| Vector3::from_fn(|i, _| e1[i] * v.x + e2[i] * v.y);
                 let column = |k: usize| Vector2::new(d[(0, k)], d[(1, k)]);
                 let ed = [in_3d(&column(0)), in_3d(&column(1))];
                 let d_trial = Matrix3::from_fn(|i, j| ed[0][i] * e1[j] + ed[1][i] * e2[j]);
@@ -152,34 +173,35 @@ pub fn equal_to_rounding<T: Lane>(k: [T; 2]) -> Mask<T> {
 /// plane, T its length, the limit L (negative taken as 0) and the ratio
 /// L/T, so that F = L t and dF/dF_trial = (L/T) (I - n n^T - t t^T).
 #[derive(Debug, Clone, Copy)]
-pub struct RadialReturn {
-    pub t: Vector3<f64>,
-    pub limit: f64,
+pub struct RadialReturn<T: Lane = f64> {
+    pub t: Vector3<T>,
+    pub limit: T,
     /// L / T.
-    pub ratio: f64,
+    pub ratio: T,
 }
 
-impl RadialReturn {
+impl<T: Lane> RadialReturn<T> {
     #[inline]
-    pub fn new(n: &Vector3<f64>, trial: &Vector3<f64>, limit: f64) -> Self {
+    pub fn new(n: &Vector3<T>, trial: &Vector3<T>, limit: T) -> Self {
         let in_plane = trial - n * n.dot(trial);
         let norm = in_plane.norm();
-        let limit = limit.max(0.0);
+        let limit = limit.simd_max(T::zero());
         RadialReturn { t: in_plane / norm, limit, ratio: limit / norm }
     }
 
     /// F = L t.
     #[inline]
-    pub fn force(&self) -> Vector3<f64> {
+    pub fn force(&self) -> Vector3<T> {
         self.t * self.limit
     }
 
     /// s (I - n n^T - t t^T), entry by entry: the projector onto the
     /// tangent plane without t, scaled (s = L/T is dF/dF_trial).
     #[inline]
-    pub fn scaled_plane(&self, n: &Vector3<f64>, s: f64) -> Matrix3<f64> {
+    pub fn scaled_plane(&self, n: &Vector3<T>, s: T) -> Matrix3<T> {
         let t = &self.t;
-        Matrix3::from_fn(|i, j| s * (if i == j { 1.0 } else { 0.0 } - n[i] * n[j] - t[i] * t[j]))
+        let delta = |i, j| splat::<T>(if i == j { 1.0 } else { 0.0 });
+        Matrix3::from_fn(|i, j| s * (delta(i, j) - n[i] * n[j] - t[i] * t[j]))
     }
 }
 
