@@ -65,7 +65,7 @@ pub struct PrincipalStiffness<T: Lane = f64> {
 impl PrincipalStiffness {
     /// Principal values `k` (major, minor) about the unit normal `n`, the
     /// major axis along `major_axis` projected into the tangent plane.
-    #[inline]
+    #[inline(always)]
     pub fn new(k: [f64; 2], n: &Vector3<f64>, major_axis: &Vector3<f64>) -> Self {
         match Self::of_lanes(k, n, major_axis) {
             Some(p) => p,
@@ -78,7 +78,7 @@ impl<T: Lane> PrincipalStiffness<T> {
     /// [`PrincipalStiffness::new`] over lanes, one stiffness per lane;
     /// `None` where some lanes are circles and others ellipses (the form
     /// is the contact's: a lane that differs is reseated alone).
-    #[inline]
+    #[inline(always)]
     pub fn of_lanes(k: [T; 2], n: &Vector3<T>, major_axis: &Vector3<f64>) -> Option<Self> {
         // A circular contact: equal principal values (to rounding: the two
         // may be computed by different formulas), or no major axis to orient

@@ -425,7 +425,7 @@ impl ContactLaw {
     /// laws read it only for the tangent (the Coulomb law applies a
     /// circle's K_t by its value k, `coulomb::Circle`; Mindlin-Deresiewicz
     /// reads its shape).
-    #[inline]
+    #[inline(always)]
     pub fn increment_stiffness(
         &self,
         a_eff: f64,

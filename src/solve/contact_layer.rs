@@ -295,7 +295,7 @@ pub struct NormalPart<T: Lane = f64> {
 impl NormalPart {
     /// Contact `i` of `coupling` at geometry `g`, from the committed state
     /// (its force's cube root through the slot's `memo`).
-    #[inline]
+    #[inline(always)]
     pub fn new(
         coupling: &Coupling,
         i: usize,
@@ -310,7 +310,7 @@ impl NormalPart {
 impl<T: Lane> NormalPart<T> {
     /// [`NormalPart::new`] with the committed force's cube root from
     /// `committed_root` (per lane for lanes).
-    #[inline]
+    #[inline(always)]
     pub fn of_root(
         coupling: &Coupling,
         i: usize,
