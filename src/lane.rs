@@ -24,9 +24,15 @@ use simba::simd::{SimdBool, SimdRealField, SimdValue};
 pub type F64x4 = simba::simd::AutoF64x4;
 
 /// The scalar type of a seating: f64 (one lane) or f64 lanes.
-pub trait Lane: SimdRealField<Element = f64> + Copy {}
+pub trait Lane:
+    SimdRealField<Element = f64, SimdBool: SimdValue<Element = bool> + std::fmt::Debug> + Copy
+{
+}
 
-impl<T: SimdRealField<Element = f64> + Copy> Lane for T {}
+impl<T> Lane for T where
+    T: SimdRealField<Element = f64, SimdBool: SimdValue<Element = bool> + std::fmt::Debug> + Copy
+{
+}
 
 /// A lane mask: `bool` for f64.
 pub type Mask<T> = <T as SimdValue>::SimdBool;

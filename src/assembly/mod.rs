@@ -52,7 +52,7 @@ impl<T: Lane> BodyPose<T> {
 
     /// This pose moved by a small spatial twist (v, w): rotation exp(w)
     /// about the world origin, then translation v (exact finite rotation).
-    #[inline]
+    #[inline(always)]
     pub fn moved(&self, v: &Vector3<T>, w: &Vector3<T>) -> Self {
         let dq = rotation_exp(w);
         BodyPose { rotation: dq * self.rotation, translation: dq * self.translation + v }

@@ -50,6 +50,9 @@
 //! With the lagged velocity mu is constant within the increment.
 
 use serde::{Deserialize, Serialize};
+use simba::simd::SimdValue;
+
+use crate::lane::{Lane, Mask};
 
 /// Which coefficient acts while a contact slides.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
@@ -129,20 +132,85 @@ pub fn deepest(cv: impl IntoIterator<Item = f64>) -> Option<f64> {
 /// derivatives with respect to the trial force magnitude T, the normal
 /// force F_n and the tangential stiffness k (each the others held fixed).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Sliding {
-    pub mu: f64,
+pub struct Sliding<T: Lane = f64> {
+    pub mu: T,
     /// Slip increment gamma [m] (0 for the switch law, which does not need it).
-    pub slip: f64,
-    pub d_mu_d_trial: f64,
-    pub d_mu_d_fn: f64,
-    pub d_mu_d_k: f64,
+    pub slip: T,
+    pub d_mu_d_trial: T,
+    pub d_mu_d_fn: T,
+    pub d_mu_d_k: T,
 }
 
-impl Sliding {
+impl<T: Lane> Sliding<T> {
     /// A constant sliding coefficient (the switch law's mu_d).
-    pub fn constant(mu: f64) -> Self {
-        Sliding { mu, slip: 0.0, d_mu_d_trial: 0.0, d_mu_d_fn: 0.0, d_mu_d_k: 0.0 }
+    pub fn constant(mu: T) -> Self {
+        let zero = T::zero();
+        Sliding { mu, slip: zero, d_mu_d_trial: zero, d_mu_d_fn: zero, d_mu_d_k: zero }
     }
+
+    /// Whether mu is constant (no derivative): the switch law, a sliding
+    /// contact of the decay law.
+    #[inline]
+    pub fn constant_mask(&self) -> Mask<T> {
+        let zero = T::zero();
+        self.d_mu_d_trial.simd_eq(zero) & self.d_mu_d_fn.simd_eq(zero) & self.d_mu_d_k.simd_eq(zero)
+    }
+}
+
+/// [`slide`] over lanes: the lanes that slide, and their coefficient
+/// (lanes that stick hold any value). The switch law in lanes; the decay
+/// law lane by lane through [`slide`] (its Newton iteration has no form
+/// over lanes here).
+#[inline]
+pub fn slide_lanes<T: Lane>(x: &SlideLanes<T>) -> (Mask<T>, Sliding<T>) {
+    match x.law {
+        FrictionLaw::Switch => {
+            let limit = x.mu_d.select(x.was_sliding, x.mu_s) * x.normal_force;
+            (x.trial.simd_gt(limit), Sliding::constant(x.mu_d))
+        }
+        FrictionLaw::Decay { .. } => {
+            let mut slides = Mask::<T>::splat(false);
+            let mut s = Sliding::constant(T::zero());
+            for i in 0..T::LANES {
+                let one = SlideInput {
+                    mu_s: x.mu_s.extract(i),
+                    mu_d: x.mu_d.extract(i),
+                    law: x.law,
+                    duration: x.duration,
+                    trial: x.trial.extract(i),
+                    normal_force: x.normal_force.extract(i),
+                    stiffness: x.stiffness.extract(i),
+                    was_sliding: x.was_sliding.extract(i),
+                    previous_velocity: x.previous_velocity.extract(i),
+                };
+                let slid = slide(&one);
+                slides.replace(i, slid.is_some());
+                if let Some(v) = slid {
+                    s.mu.replace(i, v.mu);
+                    s.slip.replace(i, v.slip);
+                    s.d_mu_d_trial.replace(i, v.d_mu_d_trial);
+                    s.d_mu_d_fn.replace(i, v.d_mu_d_fn);
+                    s.d_mu_d_k.replace(i, v.d_mu_d_k);
+                }
+            }
+            (slides, s)
+        }
+    }
+}
+
+/// [`SlideInput`] over lanes (the law and the increment's duration are
+/// every lane's).
+#[derive(Debug, Clone, Copy)]
+pub struct SlideLanes<T: Lane> {
+    pub mu_s: T,
+    pub mu_d: T,
+    pub law: FrictionLaw,
+    pub duration: f64,
+    pub trial: T,
+    pub normal_force: T,
+    pub stiffness: T,
+    pub was_sliding: Mask<T>,
+    pub previous_velocity: T,
 }
 
 /// The inputs of one sliding decision.

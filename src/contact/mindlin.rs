@@ -130,7 +130,7 @@ impl<T: Lane> PrincipalStiffness<T> {
     /// ```
     /// An elliptical contact projects in its principal axes by
     /// [`project_on_circle`]. Returns (F, dF/dF_trial, dF/dL).
-    #[inline]
+    #[inline(always)]
     pub fn project(
         &self,
         n: &Vector3<T>,

@@ -4,9 +4,10 @@
 //! different steps.
 
 use kinrepro::assembly::{BodyPose, ContactGeometry};
-use kinrepro::contact::mindlin::{equal_to_rounding, project_on_circle};
+use kinrepro::contact::FrictionLaw;
+use kinrepro::contact::mindlin::{PrincipalStiffness, equal_to_rounding, project_on_circle};
 use kinrepro::lane::F64x4;
-use nalgebra::{Quaternion, UnitQuaternion, Vector2, Vector3, Vector4};
+use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector2, Vector3, Vector4};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use simba::simd::SimdValue;
@@ -210,4 +211,102 @@ fn the_normal_part_in_lanes_is_each_lanes_own() {
         }
     }
     assert!(compliant > 0, "a scene with a support compliance");
+}
+
+/// One lane's input of the Coulomb law: a contact that sticks or slips
+/// (the old force from inside to twice outside the cone), was sliding or
+/// not, on a circle (`ratio` 1) or an ellipse about the x axis.
+fn coulomb_case(
+    rng: &mut ChaCha8Rng,
+    ratio: f64,
+    law: FrictionLaw,
+) -> kinrepro::contact::coulomb::CoulombInput<f64> {
+    let n = Vector3::from_fn(|_, _| rng.random_range(-1.0..1.0)).normalize();
+    let k0 = rng.random_range(1e7..5e7);
+    let k = [k0, k0 * ratio];
+    let major = if ratio == 1.0 { Vector3::zeros() } else { Vector3::x() };
+    let principal = PrincipalStiffness::new([k[0], k[1]], &n, &major);
+    let scaled = PrincipalStiffness::new([0.3 * k[0], 0.3 * k[1]], &n, &major);
+    let (normal_force, mu_s) = (rng.random_range(1.0..100.0), rng.random_range(0.1..0.5));
+    let push = Vector3::from_fn(|_, _| rng.random_range(-1.0..1.0));
+    let old = (push - n * n.dot(&push)).normalize() * mu_s * normal_force;
+    kinrepro::contact::coulomb::CoulombInput {
+        old_force: old * rng.random_range(0.0..1.2),
+        was_sliding: rng.random_bool(0.5),
+        previous_velocity: rng.random_range(0.0..1e-5),
+        normal: n,
+        du: Vector3::from_fn(|_, _| rng.random_range(-1e-6..1e-6)),
+        normal_force,
+        stiffness: principal.tensor(&n),
+        principal,
+        d_stiffness_d_fn: scaled.tensor(&n),
+        mu_s,
+        mu_d: 0.8 * mu_s,
+        law,
+        duration: 0.1,
+    }
+}
+
+/// The Coulomb law of four contacts in lanes, against the f64 law of
+/// each: force, stick or slip, slip velocity and the tangent bit for bit,
+/// for circles and ellipses, the switch and the decay friction law, with
+/// and without the tangent, lanes that stick beside lanes that slip.
+#[test]
+fn the_coulomb_law_in_lanes_is_each_lanes_own() {
+    use kinrepro::contact::coulomb::{CoulombInput, coulomb};
+    use simba::simd::AutoBoolx4;
+    let mut rng = ChaCha8Rng::seed_from_u64(45);
+    let (mut mixed, mut tangents) = (0, 0);
+    for case in 0..2000 {
+        let ratio = [1.0, 1.3][case % 2];
+        let law = [FrictionLaw::Switch, FrictionLaw::Decay { coefficient: 1e3 }][(case / 2) % 2];
+        let tangent = (case / 4) % 2 == 0;
+        let x: [CoulombInput<f64>; 4] = std::array::from_fn(|_| coulomb_case(&mut rng, ratio, law));
+        let v3 = |f: &dyn Fn(&CoulombInput<f64>) -> Vector3<f64>| {
+            Vector3::from_fn(|i, _| lanes(x.each_ref().map(|c| f(c)[i])))
+        };
+        let m3 = |f: &dyn Fn(&CoulombInput<f64>) -> Matrix3<f64>| {
+            Matrix3::from_fn(|i, j| lanes(x.each_ref().map(|c| f(c)[(i, j)])))
+        };
+        let s = |f: &dyn Fn(&CoulombInput<f64>) -> f64| lanes(x.each_ref().map(f));
+        let normal = v3(&|c| c.normal);
+        let principal = PrincipalStiffness::of_lanes(
+            [s(&|c| c.principal.k[0]), s(&|c| c.principal.k[1])],
+            &normal,
+            &if ratio == 1.0 { Vector3::zeros() } else { Vector3::x() },
+        )
+        .expect("one form in every lane");
+        let input = CoulombInput::<F64x4> {
+            old_force: v3(&|c| c.old_force),
+            was_sliding: AutoBoolx4::from(x.each_ref().map(|c| c.was_sliding)),
+            previous_velocity: s(&|c| c.previous_velocity),
+            normal,
+            du: v3(&|c| c.du),
+            normal_force: s(&|c| c.normal_force),
+            stiffness: m3(&|c| c.stiffness),
+            principal,
+            d_stiffness_d_fn: m3(&|c| c.d_stiffness_d_fn),
+            mu_s: s(&|c| c.mu_s),
+            mu_d: s(&|c| c.mu_d),
+            law,
+            duration: 0.1,
+        };
+        let (y, t) = coulomb(&input, tangent);
+        let slid: Vec<bool> = (0..4).map(|i| y.sliding.extract(i)).collect();
+        mixed += usize::from(slid.iter().any(|&b| b != slid[0]));
+        for (i, xi) in x.iter().enumerate() {
+            let (yi, ti) = coulomb(xi, tangent);
+            let what = format!("case {case} lane {i}: {xi:?}");
+            assert!(same_bits(&y.force, i, &yi.force), "{what}");
+            assert_eq!(y.sliding.extract(i), yi.sliding, "{what}");
+            assert_eq!(y.slip_velocity.extract(i).to_bits(), yi.slip_velocity.to_bits(), "{what}");
+            assert_eq!(t.is_some(), ti.is_some());
+            if let (Some((d_du, d_fn)), Some((di_du, di_fn))) = (t, ti) {
+                tangents += 1;
+                assert!(same_bits(&d_du, i, &di_du), "{what}");
+                assert!(same_bits(&d_fn, i, &di_fn), "{what}");
+            }
+        }
+    }
+    assert!(mixed > 500 && tangents > 1000, "{mixed} mixed, {tangents} tangents");
 }
