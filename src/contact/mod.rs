@@ -37,7 +37,7 @@ use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-use crate::lane::{Both, Lane, branch, splat};
+use crate::lane::{Both, Lane, branch, lift, splat};
 use crate::material::{Material, effective_modulus, effective_shear_modulus};
 pub use curvature::{PairCurvature, RelativeCurvature};
 pub use friction::FrictionLaw;
@@ -434,19 +434,50 @@ impl ContactLaw {
         major_axis: &Vector3<f64>,
         tangent: bool,
     ) -> (PrincipalStiffness, Matrix3<f64>, Matrix3<f64>) {
-        let k = self.mindlin.map(|c| c * a_eff);
+        match self.increment_stiffness_lanes(a_eff, dlog, normal, major_axis, tangent) {
+            Some(k) => k,
+            None => unreachable!("one lane takes one form"),
+        }
+    }
+
+    /// [`Self::increment_stiffness`] over lanes; `None` where the lanes
+    /// differ in the form of K_t (circle or ellipse), and for an
+    /// anisotropic support compliance (its series stiffness, an
+    /// eigen-decomposition, is f64's alone: one lane only).
+    #[inline(always)]
+    pub fn increment_stiffness_lanes<T: Lane>(
+        &self,
+        a_eff: T,
+        dlog: T,
+        normal: &Vector3<T>,
+        major_axis: &Vector3<f64>,
+        tangent: bool,
+    ) -> Option<(PrincipalStiffness<T>, Matrix3<T>, Matrix3<T>)> {
+        let k = self.mindlin.map(|c| splat::<T>(c) * a_eff);
         let support = &self.tangential_support;
         if !support.is_isotropic() {
-            let series = support.series(k, normal, major_axis);
-            let dkt = if tangent { series.derivative * dlog } else { Matrix3::zeros() };
-            return (series.principal, series.tensor, dkt);
+            if T::LANES > 1 {
+                return None;
+            }
+            // One lane: f64's own form, read out of and back into the lane.
+            let one = |x: &T| x.extract(0);
+            let n = normal.map(|x| x.extract(0));
+            let series = support.series(k.map(|x| one(&x)), &n, major_axis);
+            let dkt = if tangent { series.derivative * one(&dlog) } else { Matrix3::zeros() };
+            let p = series.principal;
+            let principal = PrincipalStiffness {
+                k: p.k.map(splat),
+                axes: p.axes.map(|axes| axes.map(|e| lift(&e))),
+            };
+            return Some((principal, lift(&series.tensor), lift(&dkt)));
         }
         let c_t = support.along;
         // In series with the support: k' = k / (1 + k c_t) per principal
         // axis (the increment's, since the support is linear), and
         // dk'/dF_n = (dk/dF_n) / (1 + k c_t)^2 with dk/dF_n = k dlog.
-        let series = if c_t > 0.0 { k.map(|k| k / (1.0 + k * c_t)) } else { k };
-        let principal = PrincipalStiffness::new(series, normal, major_axis);
+        let (one, c) = (T::one(), splat::<T>(c_t));
+        let series = if c_t > 0.0 { k.map(|k| k / (one + k * c)) } else { k };
+        let principal = PrincipalStiffness::of_lanes(series, normal, major_axis)?;
         let kt = if tangent || principal.axes.is_some() {
             principal.tensor(normal)
         } else {
@@ -456,11 +487,11 @@ impl ContactLaw {
             (false, _) => Matrix3::zeros(),
             (true, false) => kt * dlog,
             (true, true) => {
-                let d = k.map(|k| k * dlog / ((1.0 + k * c_t) * (1.0 + k * c_t)));
-                PrincipalStiffness::new(d, normal, major_axis).tensor(normal)
+                let d = k.map(|k| k * dlog / ((one + k * c) * (one + k * c)));
+                PrincipalStiffness::of_lanes(d, normal, major_axis)?.tensor(normal)
             }
         };
-        (principal, kt, dkt)
+        Some((principal, kt, dkt))
     }
 
     /// Mindlin-Deresiewicz: the equal-area radius sqrt(ab) at `fn_` and the
