@@ -11,6 +11,7 @@ use serde::{Deserialize, Serialize};
 
 use super::friction::FrictionLaw;
 use super::mindlin::PrincipalStiffness;
+use crate::lane::{Lane, branch, splat};
 
 /// Which tangential law a contact follows (scene key `tangential_law`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -269,25 +270,29 @@ impl Default for SpringRow {
 /// applied by Rodrigues' formula v' = v + w x v + w x (w x v) / (1 + c),
 /// w = from x to, c = from . to.
 #[derive(Debug, Clone, Copy)]
-pub struct Rotation {
-    w: Vector3<f64>,
-    c: f64,
+pub struct Rotation<T: Lane = f64> {
+    w: Vector3<T>,
+    c: T,
 }
 
-impl Rotation {
+impl<T: Lane> Rotation<T> {
     #[inline]
-    pub fn between(from: &Vector3<f64>, to: &Vector3<f64>) -> Self {
+    pub fn between(from: &Vector3<T>, to: &Vector3<T>) -> Self {
         Rotation { w: from.cross(to), c: from.dot(to) }
     }
 
+    /// Per lane for lanes.
     #[inline]
-    pub fn apply(&self, v: &Vector3<f64>) -> Vector3<f64> {
-        if self.c <= -1.0 + 1e-12 {
+    pub fn apply(&self, v: &Vector3<T>) -> Vector3<T> {
+        branch::<T, _>(
+            self.c.simd_le(splat(-1.0 + 1e-12)),
             // Opposite normals never occur between two steps of a seating;
             // keep the vector rather than pick an arbitrary axis.
-            return *v;
-        }
-        let wv = self.w.cross(v);
-        v + wv + self.w.cross(&wv) / (1.0 + self.c)
+            |_| *v,
+            |_| {
+                let wv = self.w.cross(v);
+                v + wv + self.w.cross(&wv) / (T::one() + self.c)
+            },
+        )
     }
 }

@@ -34,8 +34,9 @@ use nalgebra::{Matrix3, Vector3};
 use crate::assembly::{BodyPose, ContactGeometry, Coupling};
 use crate::contact::hertz::load_root;
 use crate::contact::{Friction, SlipState, TangentialInput, TangentialResponse, TangentialState};
-use crate::lane::Lane;
+use crate::lane::{Lane, lift, splat};
 use crate::scene::{Temperatures, ThermalBodies};
+use crate::solve::contact_lanes::contact_stiffness;
 
 /// One contact evaluated at a trial pose.
 #[derive(Debug, Clone)]
@@ -166,23 +167,23 @@ pub fn evaluate_at(
 /// du = p - p_c = -(D p + b) of the contact law keeps the full relative
 /// precision of the rotation and the translation increments.
 #[derive(Debug, Clone, Copy)]
-pub struct Motion {
-    d: Matrix3<f64>,
-    b: Vector3<f64>,
+pub struct Motion<T: Lane = f64> {
+    d: Matrix3<T>,
+    b: Vector3<T>,
     /// The bodies' expansion over the increment (a thermal path's).
-    thermal: Option<ThermalMotion>,
+    thermal: Option<ThermalMotion<T>>,
 }
 
 /// The expansion terms of [`Motion::displacement`] (module docs):
 /// eps_f (p - o_f) - eps_m (Q (p - t) - R_c o_m), Q = R_c R^T.
 #[derive(Debug, Clone, Copy)]
-struct ThermalMotion {
-    eps_f: f64,
-    o_f: Vector3<f64>,
-    eps_m: f64,
-    q: Matrix3<f64>,
-    t: Vector3<f64>,
-    rc_om: Vector3<f64>,
+struct ThermalMotion<T: Lane> {
+    eps_f: T,
+    o_f: Vector3<T>,
+    eps_m: T,
+    q: Matrix3<T>,
+    t: Vector3<T>,
+    rc_om: Vector3<T>,
 }
 
 /// How the two bodies expand between a trial state and the committed one
@@ -210,24 +211,25 @@ impl Expansion {
     }
 }
 
-impl Motion {
-    /// The motion from `pose` back to `committed`.
-    pub fn between(pose: &BodyPose, committed: &BodyPose) -> Self {
+impl<T: Lane> Motion<T> {
+    /// The motion from `pose` back to `committed` (per lane for lanes).
+    pub fn between(pose: &BodyPose<T>, committed: &BodyPose<T>) -> Self {
         let dq = committed.rotation * pose.rotation.inverse();
         let (w, v) = (dq.w, dq.imag());
         // [v]x^2 = v v^T - |v|^2 I, entry by entry (no 3x3 products; the
         // diagonal -(v_j^2 + v_k^2) without cancellation).
         let (xx, yy, zz) = (v.x * v.x, v.y * v.y, v.z * v.z);
+        let (two, minus_two) = (splat::<T>(2.0), splat::<T>(-2.0));
         let d = Matrix3::new(
-            -2.0 * (yy + zz),
-            2.0 * (v.x * v.y - w * v.z),
-            2.0 * (v.x * v.z + w * v.y),
-            2.0 * (v.y * v.x + w * v.z),
-            -2.0 * (xx + zz),
-            2.0 * (v.y * v.z - w * v.x),
-            2.0 * (v.z * v.x - w * v.y),
-            2.0 * (v.z * v.y + w * v.x),
-            -2.0 * (xx + yy),
+            minus_two * (yy + zz),
+            two * (v.x * v.y - w * v.z),
+            two * (v.x * v.z + w * v.y),
+            two * (v.y * v.x + w * v.z),
+            minus_two * (xx + zz),
+            two * (v.y * v.z - w * v.x),
+            two * (v.z * v.x - w * v.y),
+            two * (v.z * v.y + w * v.x),
+            minus_two * (xx + yy),
         );
         let b = (committed.translation - pose.translation) - d * pose.translation;
         Motion { d, b, thermal: None }
@@ -235,21 +237,21 @@ impl Motion {
 
     /// The motion from `pose` back to `committed` with the bodies'
     /// `expansion` over the increment (module docs).
-    pub fn expanding(pose: &BodyPose, committed: &BodyPose, expansion: &Expansion) -> Self {
+    pub fn expanding(pose: &BodyPose<T>, committed: &BodyPose<T>, expansion: &Expansion) -> Self {
         let rigid = Motion::between(pose, committed);
         let thermal = ThermalMotion {
-            eps_f: expansion.fixed,
-            o_f: expansion.fixed_origin,
-            eps_m: expansion.moving,
+            eps_f: splat(expansion.fixed),
+            o_f: lift(&expansion.fixed_origin),
+            eps_m: splat(expansion.moving),
             q: Matrix3::identity() + rigid.d,
             t: pose.translation,
-            rc_om: committed.rotation * expansion.moving_origin,
+            rc_om: committed.rotation * lift(&expansion.moving_origin),
         };
         Motion { thermal: Some(thermal), ..rigid }
     }
 
     /// du = p_f - p_m of the material points now at `p` (module docs).
-    pub fn displacement(&self, p: &Vector3<f64>) -> Vector3<f64> {
+    pub fn displacement(&self, p: &Vector3<T>) -> Vector3<T> {
         let rigid = -(self.d * p + self.b);
         match &self.thermal {
             None => rigid,
@@ -377,8 +379,8 @@ pub fn evaluate_into(
     // d(F_t) = T dp + (dF_t/dF_n)(-k_n n^T dp); the force on the body is F_n n - F_t:
     // K = -k_n (n - dF_t/dF_n) n^T - T.
     if tangent {
-        out.stiffness =
-            (tangential.d_force_d_fn - n) * (kn * n).transpose() - tangential.d_force_d_du;
+        let (d_du, d_fn) = (&tangential.d_force_d_du, &tangential.d_force_d_fn);
+        out.stiffness = contact_stiffness(&n, kn, d_du, d_fn);
     }
     out.tangent = tangent;
     out.force = n * fn_ - tangential.force;

@@ -5,6 +5,7 @@
 //! shares the compliant contact layer ([`contact_layer`]) with the dynamic
 //! solver.
 
+pub mod contact_lanes;
 pub mod contact_layer;
 pub mod dynamic;
 pub mod load;

@@ -4,8 +4,8 @@
 //! different steps.
 
 use kinrepro::assembly::{BodyPose, ContactGeometry};
-use kinrepro::contact::FrictionLaw;
 use kinrepro::contact::mindlin::{PrincipalStiffness, equal_to_rounding, project_on_circle};
+use kinrepro::contact::{Friction, FrictionLaw, TangentialState};
 use kinrepro::lane::F64x4;
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector2, Vector3, Vector4};
 use rand::{Rng, SeedableRng};
@@ -309,4 +309,109 @@ fn the_coulomb_law_in_lanes_is_each_lanes_own() {
         }
     }
     assert!(mixed > 500 && tangents > 1000, "{mixed} mixed, {tangents} tangents");
+}
+
+/// One lane of a contact evaluation: the committed pose and state (its
+/// force inside or outside the cone, sliding or not, loaded or not), the
+/// trial pose a small step away, and the friction.
+fn contact_case(
+    rng: &mut ChaCha8Rng,
+    c: &kinrepro::assembly::Coupling,
+    i: usize,
+    law: FrictionLaw,
+    loaded: bool,
+) -> (BodyPose, BodyPose, TangentialState, Friction) {
+    let step = |rng: &mut ChaCha8Rng, p: &BodyPose, size: f64| {
+        let v = Vector3::from_fn(|_, _| rng.random_range(-size..size));
+        p.moved(&v, &(turn(rng) * (size / 10.0).min(1e-4)))
+    };
+    let committed = step(rng, &c.touching_pose, 1e-6);
+    let trial = step(rng, &committed, 2e-7);
+    let n = c.geometry(i, &committed).normal;
+    let mu_s = rng.random_range(0.1..0.5);
+    let fc = if loaded { rng.random_range(1.0..50.0) } else { 0.0 };
+    let push = Vector3::from_fn(|_, _| rng.random_range(-1.0..1.0));
+    let state = TangentialState {
+        force: (push - n * n.dot(&push)).normalize() * (mu_s * fc * rng.random_range(0.0..1.2)),
+        sliding: rng.random_bool(0.5),
+        normal_force: fc,
+        slip_velocity: rng.random_range(0.0..1e-5),
+        ..TangentialState::new(n)
+    };
+    let friction = Friction { mu_s, mu_d: 0.8 * mu_s, law, duration: 0.05 };
+    (committed, trial, state, friction)
+}
+
+/// Every contact of every bundled scene with the Coulomb law evaluated
+/// for four seatings at once (`solve::contact_lanes::evaluate_lanes`),
+/// against the f64 contact layer of each (`contact_layer::evaluate_at`):
+/// gap, normal force and stiffness, the contact's force and stiffness and
+/// the trial state bit for bit, with and without the tangent, contacts
+/// open and closed, sticking and slipping in the same set.
+#[test]
+fn contacts_evaluated_in_lanes_are_each_lanes_own() {
+    use kinrepro::contact::hertz::load_roots;
+    use kinrepro::solve::contact_lanes::{LaneFriction, LaneState, evaluate_lanes};
+    use kinrepro::solve::contact_layer::{ContactEval, Motion, evaluate_at};
+    let mut rng = ChaCha8Rng::seed_from_u64(46);
+    let mut evaluated = 0;
+    for (name, c) in bundled_couplings() {
+        for i in 0..c.contacts.len() {
+            for case in 0..40 {
+                let law = [FrictionLaw::Switch, FrictionLaw::Decay { coefficient: 1e3 }][case % 2];
+                let tangent = case % 4 < 2;
+                let loaded = case % 8 < 6;
+                let x: [_; 4] = std::array::from_fn(|_| contact_case(&mut rng, &c, i, law, loaded));
+                let committed = pose_lanes(&x.each_ref().map(|x| x.0));
+                let trial = pose_lanes(&x.each_ref().map(|x| x.1));
+                let g = c.geometry(i, &trial);
+                let du = Motion::between(&trial, &committed).displacement(&g.point);
+                let states = LaneState::from_states(&x.each_ref().map(|x| &x.2));
+                let friction = LaneFriction {
+                    mu_s: lanes(x.each_ref().map(|x| x.3.mu_s)),
+                    mu_d: lanes(x.each_ref().map(|x| x.3.mu_d)),
+                    law,
+                    duration: 0.05,
+                };
+                let root = load_roots(states.normal_force);
+                let Some(e) = evaluate_lanes(&c, i, g, du, &states, root, &friction, tangent)
+                else {
+                    // Only what the lanes do not follow (module docs): the
+                    // Mindlin-Deresiewicz law, an anisotropic support, and
+                    // an ellipse unloaded (k = 0, a circle) in some lanes only.
+                    let law = c.friction.tangential;
+                    let anisotropic = !c.contacts[i].law.tangential_support.is_isotropic();
+                    let open = (0..4).filter(|&l| g.gap.extract(l) >= 0.0).count();
+                    let mixed = !loaded && open > 0 && open < 4;
+                    assert!(
+                        law != kinrepro::contact::TangentialLaw::Coulomb || anisotropic || mixed,
+                        "{name} contact {i} case {case}"
+                    );
+                    continue;
+                };
+                evaluated += 1;
+                for (lane, (committed, trial, state, friction)) in x.iter().enumerate() {
+                    let mut s = ContactEval::empty();
+                    let back = Motion::between(trial, committed);
+                    evaluate_at(&mut s, &c, i, trial, &back, state, *friction, tangent);
+                    let what = format!("{name} contact {i} case {case} lane {lane}");
+                    let bits = |a: f64, b: f64| a.to_bits() == b.to_bits();
+                    assert!(bits(e.geometry.gap.extract(lane), s.geometry.gap), "{what}");
+                    assert!(bits(e.approach.extract(lane), s.approach), "{what}");
+                    assert!(bits(e.normal_force.extract(lane), s.normal_force), "{what}");
+                    assert!(bits(e.normal_stiffness.extract(lane), s.normal_stiffness), "{what}");
+                    assert!(same_bits(&e.force, lane, &s.force), "{what}");
+                    if tangent {
+                        assert!(same_bits(&e.stiffness, lane, &s.stiffness), "{what}");
+                    }
+                    let (a, b) = (e.state.lane(lane), &s.tangential.state);
+                    assert!(a.normal == b.normal && a.sliding == b.sliding, "{what}");
+                    assert!(same_bits(&e.state.force, lane, &b.force), "{what}");
+                    assert!(bits(a.normal_force, b.normal_force), "{what}");
+                    assert!(bits(a.slip_velocity, b.slip_velocity), "{what}");
+                }
+            }
+        }
+    }
+    assert!(evaluated > 1000, "{evaluated}");
 }
