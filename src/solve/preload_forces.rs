@@ -23,48 +23,58 @@
 use nalgebra::{Matrix3, Vector3};
 
 use crate::assembly::{BodyPose, Coupling};
+use crate::lane::{Lane, lift, splat};
 use crate::scene::{ForceLaw, Preload};
 
 /// One preload force at a pose.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Applied {
+pub struct Applied<T: Lane = f64> {
     /// Force on the moving half [N].
-    pub force: Vector3<f64>,
+    pub force: Vector3<T>,
     /// Its point in the world [m].
-    pub point: Vector3<f64>,
+    pub point: Vector3<T>,
     /// d(force)/d(displacement of the point): -k d d^T for a spring,
     /// -lambda dF/dgap d d^T for a magnet (None for a constant force).
-    pub stiffness: Option<Matrix3<f64>>,
+    pub stiffness: Option<Matrix3<T>>,
 }
 
 /// Every force of `preload` on `coupling`'s moving half at `pose` and load
 /// factor `lambda`, in scene order (module docs).
-pub fn applied<'a>(
+pub fn applied<'a, T: Lane>(
     coupling: &'a Coupling,
     preload: &'a Preload,
-    pose: &'a BodyPose,
+    pose: &'a BodyPose<T>,
     lambda: f64,
-) -> impl Iterator<Item = Applied> + 'a {
+) -> impl Iterator<Item = Applied<T>> + 'a {
     preload.forces.iter().map(move |f| {
-        let point = pose.apply(&f.point);
-        let stretch = || (point - coupling.touching_pose.apply(&f.point)).dot(&f.direction);
-        let dd = || f.direction * f.direction.transpose();
+        let point = pose.apply(&lift(&f.point));
+        let direction = lift::<T, 3, 1>(&f.direction);
+        let rest = lift::<T, 3, 1>(&coupling.touching_pose.apply(&f.point));
+        let stretch = || (point - rest).dot(&direction);
+        let dd = || lift::<T, 3, 3>(&(f.direction * f.direction.transpose()));
         match &f.law {
             ForceLaw::Spring { stiffness: k, .. } => Applied {
-                force: f.direction * (f.force * lambda - k * stretch()),
+                force: direction * (splat::<T>(f.force * lambda) - splat::<T>(*k) * stretch()),
                 point,
-                stiffness: Some(dd() * -k),
+                stiffness: Some(dd() * splat::<T>(-k)),
             },
             ForceLaw::Magnet(m) => {
-                let (force, slope) = m.force(m.gap - stretch());
+                // The magnet's force table lane by lane (f64's own interpolation).
+                let gap = splat::<T>(m.gap) - stretch();
+                let (mut force, mut slope) = (T::zero(), T::zero());
+                for i in 0..T::LANES {
+                    let (f, s) = m.force(gap.extract(i));
+                    force.replace(i, f);
+                    slope.replace(i, s);
+                }
                 Applied {
-                    force: f.direction * (force * lambda),
+                    force: direction * (force * splat(lambda)),
                     point,
-                    stiffness: Some(dd() * (-lambda * slope)),
+                    stiffness: Some(dd() * (splat::<T>(-lambda) * slope)),
                 }
             }
             ForceLaw::Constant | ForceLaw::Weight => {
-                Applied { force: f.direction * (f.force * lambda), point, stiffness: None }
+                Applied { force: direction * splat::<T>(f.force * lambda), point, stiffness: None }
             }
         }
     })

@@ -415,3 +415,42 @@ fn contacts_evaluated_in_lanes_are_each_lanes_own() {
     }
     assert!(evaluated > 1000, "{evaluated}");
 }
+
+/// The preload forces (springs, weights, constant forces, magnets) of
+/// every bundled scene at four poses at once: each lane's force, point
+/// and stiffness bit for bit its f64 value.
+#[test]
+fn preload_forces_in_lanes_are_each_lanes_own() {
+    use kinrepro::solve::preload_forces::applied;
+    let mut rng = ChaCha8Rng::seed_from_u64(47);
+    let mut magnets = 0;
+    for (name, c) in bundled_couplings() {
+        let scene = kinrepro::scene::Scene::load(std::path::Path::new(&name)).unwrap();
+        let preload = &scene.preload;
+        magnets += preload
+            .forces
+            .iter()
+            .filter(|f| matches!(f.law, kinrepro::scene::ForceLaw::Magnet(_)))
+            .count();
+        for _ in 0..20 {
+            let poses: [BodyPose; 4] = std::array::from_fn(|_| {
+                let v = Vector3::from_fn(|_, _| rng.random_range(-2e-6..2e-6));
+                c.touching_pose.moved(&v, &(turn(&mut rng) * 1e-4))
+            });
+            let lambda = rng.random_range(0.0..1.0);
+            let at = pose_lanes(&poses);
+            let forces: Vec<_> = applied(&c, preload, &at, lambda).collect();
+            for (l, pose) in poses.iter().enumerate() {
+                for (a, s) in forces.iter().zip(applied(&c, preload, pose, lambda)) {
+                    assert!(same_bits(&a.force, l, &s.force), "{name}");
+                    assert!(same_bits(&a.point, l, &s.point), "{name}");
+                    assert_eq!(a.stiffness.is_some(), s.stiffness.is_some());
+                    if let (Some(a), Some(s)) = (a.stiffness, s.stiffness) {
+                        assert!(same_bits(&a, l, &s), "{name}");
+                    }
+                }
+            }
+        }
+    }
+    assert!(magnets > 0, "a scene with a magnet");
+}
