@@ -7,7 +7,7 @@
 //! (`ContactLaw::increment_stiffness_lanes`), the committed force turned
 //! into the new tangent plane (`Rotation`), the law
 //! (`contact::coulomb::coulomb`) and the contact's force and stiffness
-//! ([`contact_stiffness`], which the f64 layer calls too), so that lane i is
+//! (`contact_layer::contact_stiffness`, which the f64 layer calls too), so that lane i is
 //! bit for bit the f64 evaluation of lane i's seating (tests/it/lanes.rs).
 //!
 //! What the lanes do not follow, [`evaluate_lanes`] answers with `None`
@@ -25,7 +25,7 @@ use crate::contact::coulomb::{CoulombInput, coulomb};
 use crate::contact::tangential_types::Rotation;
 use crate::contact::{FrictionLaw, TangentialLaw, TangentialState};
 use crate::lane::{Lane, Mask};
-use crate::solve::contact_layer::NormalPart;
+use crate::solve::contact_layer::{NormalPart, contact_stiffness};
 
 /// The committed tangential state of one contact, per lane: the
 /// [`TangentialState`] of the Coulomb law.
@@ -181,17 +181,4 @@ pub fn evaluate_lanes<T: Lane>(
         force: n * np.normal_force - ft,
         stiffness,
     })
-}
-
-/// A contact's stiffness dF/du = (dF_t/dF_n - n) (k_n n)^T - dF_t/d(du)
-/// (F = n F_n - F_t its force on the fixed surface), from the normal
-/// stiffness k_n and the tangential law's tangent.
-#[inline(always)]
-pub fn contact_stiffness<T: Lane>(
-    n: &Vector3<T>,
-    normal_stiffness: T,
-    d_du: &Matrix3<T>,
-    d_fn: &Vector3<T>,
-) -> Matrix3<T> {
-    (d_fn - n) * (n * normal_stiffness).transpose() - d_du
 }

@@ -36,7 +36,6 @@ use crate::contact::hertz::load_root;
 use crate::contact::{Friction, SlipState, TangentialInput, TangentialResponse, TangentialState};
 use crate::lane::{Lane, lift, splat};
 use crate::scene::{Temperatures, ThermalBodies};
-use crate::solve::contact_lanes::contact_stiffness;
 
 /// One contact evaluated at a trial pose.
 #[derive(Debug, Clone)]
@@ -387,6 +386,19 @@ pub fn evaluate_into(
     out.approach = approach;
     out.normal_force = fn_;
     out.normal_stiffness = kn;
+}
+
+/// A contact's stiffness dF/du = (dF_t/dF_n - n) (k_n n)^T - dF_t/d(du)
+/// (F = n F_n - F_t its force on the fixed surface), from the normal
+/// stiffness k_n and the tangential law's tangent.
+#[inline(always)]
+pub fn contact_stiffness<T: Lane>(
+    n: &Vector3<T>,
+    normal_stiffness: T,
+    d_du: &Matrix3<T>,
+    d_fn: &Vector3<T>,
+) -> Matrix3<T> {
+    (d_fn - n) * (n * normal_stiffness).transpose() - d_du
 }
 
 #[cfg(test)]

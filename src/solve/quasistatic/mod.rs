@@ -55,6 +55,7 @@
 mod control;
 mod cycle;
 mod external;
+mod jacobian;
 mod load;
 mod lu6;
 mod path;
