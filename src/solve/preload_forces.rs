@@ -49,8 +49,10 @@ pub fn applied<'a, T: Lane>(
     preload.forces.iter().map(move |f| {
         let point = pose.apply(&lift(&f.point));
         let direction = lift::<T, 3, 1>(&f.direction);
-        let rest = lift::<T, 3, 1>(&coupling.touching_pose.apply(&f.point));
-        let stretch = || (point - rest).dot(&direction);
+        let stretch = || {
+            let rest = lift::<T, 3, 1>(&coupling.touching_pose.apply(&f.point));
+            (point - rest).dot(&direction)
+        };
         let dd = || lift::<T, 3, 3>(&(f.direction * f.direction.transpose()));
         match &f.law {
             ForceLaw::Spring { stiffness: k, .. } => Applied {
