@@ -58,6 +58,7 @@ mod external;
 mod jacobian;
 mod load;
 mod lu6;
+mod newton_lanes;
 mod path;
 mod solver;
 mod thermal;

@@ -93,9 +93,9 @@ pub(super) struct Solver<'a> {
     pub opts: SolverOptions,
     pub program: Program,
     /// Force scale of the residual [N].
-    force_scale: f64,
+    pub(super) force_scale: f64,
     /// Coupling radius, the length scale of moments [m].
-    length: f64,
+    pub(super) length: f64,
     /// Predictor twist per unit s.
     pub x1: Vector6<f64>,
     /// Slide-away bound on the translation [m].
