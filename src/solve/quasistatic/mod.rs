@@ -56,10 +56,13 @@ mod control;
 mod cycle;
 mod external;
 mod jacobian;
+#[cfg(test)]
+mod lanes_testing;
 mod load;
 mod lu6;
 mod newton_lanes;
 mod path;
+mod path_lanes;
 mod solver;
 mod thermal;
 

@@ -195,9 +195,9 @@ mod tests {
     use crate::scene::Scene;
     use crate::solve::SolverOptions;
     use crate::solve::contact_layer::ContactEval;
-    use crate::solve::frictions_into;
+    use crate::solve::quasistatic::lanes_testing::{draw_frictions, lane_frictions, pose_lanes};
     use crate::solve::quasistatic::solver::{Step, predictor, twist_between};
-    use rand::{Rng, SeedableRng};
+    use rand::SeedableRng;
 
     /// The six increments of four seatings of scenes 01, 02 and 06
     /// (their contacts' mu drawn apart, so that lanes stick and slip
@@ -216,14 +216,7 @@ mod tests {
             let opts = SolverOptions { increments: 6, path_tolerance: None, ..Default::default() };
             let x1 = predictor(&c, preload);
             // One f64 solver per lane, with that lane's frictions.
-            let frictions: Vec<Vec<_>> = (0..4)
-                .map(|_| {
-                    let mu: Vec<f64> = (0..6).map(|_| rng.random_range(0.05..0.4)).collect();
-                    let mut f = Vec::new();
-                    frictions_into(&c, &mu, &mut f).unwrap();
-                    f
-                })
-                .collect();
+            let frictions = draw_frictions(&mut rng, &c, 0.05..0.4);
             let solvers: Vec<_> = frictions
                 .iter()
                 .map(|f| Solver::new(&c, f, preload, opts, Program::Seat, x1))
@@ -315,14 +308,7 @@ mod tests {
         let lane_states =
             (0..6).map(|i| LaneState::from_states(&[0, 1, 2, 3].map(|l| &states[l][i]))).collect();
         let roots = (0..6).map(|i| lanes(&|l| load_root(states[l][i].normal_force))).collect();
-        let fr = (0..6)
-            .map(|i| LaneFriction {
-                mu_s: lanes(&|l| frictions[l][i].mu_s),
-                mu_d: lanes(&|l| frictions[l][i].mu_d),
-                law: frictions[0][i].law,
-                duration: 0.0,
-            })
-            .collect();
+        let fr = lane_frictions(frictions);
         (lane_states, roots, fr)
     }
 
@@ -346,16 +332,6 @@ mod tests {
             let st = e.state.lane(l);
             assert_eq!(st.sliding, a.tangential.state.sliding, "{what} contact {i}");
             assert!((0..3).all(|q| bits(st.force[q], a.tangential.state.force[q])), "{what}");
-        }
-    }
-
-    /// Four poses as one pose of lanes.
-    fn pose_lanes(p: &[BodyPose; 4]) -> BodyPose<F64x4> {
-        BodyPose {
-            rotation: nalgebra::UnitQuaternion::new_unchecked(nalgebra::Quaternion::from(
-                nalgebra::Vector4::from_fn(|i, _| F64x4::from(p.map(|p| p.rotation.coords[i]))),
-            )),
-            translation: Vector3::from_fn(|i, _| F64x4::from(p.map(|p| p.translation[i]))),
         }
     }
 }
