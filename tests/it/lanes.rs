@@ -454,3 +454,94 @@ fn preload_forces_in_lanes_are_each_lanes_own() {
     }
     assert!(magnets > 0, "a scene with a magnet");
 }
+
+/// Four seatings at once (`quasistatic::seat4_in`: lanes, with the
+/// error-controlled levels and the Richardson pose) against `seat_in` of
+/// each load, for every paper scene: the same `SeatedPose` bit for bit
+/// (pose, increments, Newton count, path error, slid), for sets the lanes
+/// follow and for sets with a lane they cannot (a preload of its own, a
+/// mu out of range: that lane seated alone, its error its own).
+#[test]
+fn four_seatings_at_once_are_each_seatings_own() {
+    use kinrepro::solve::quasistatic::{SeatingSetup, Workspace, seat_in, seat4_in};
+    use kinrepro::solve::{Load, SolverOptions};
+    let mut rng = ChaCha8Rng::seed_from_u64(48);
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    for k in 1..=7 {
+        let name = std::fs::read_dir(&dir)
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .find(|p| p.file_name().unwrap().to_str().unwrap().starts_with(&format!("0{k}_")))
+            .unwrap();
+        let scene = kinrepro::scene::Scene::load(&name).unwrap();
+        let c = kinrepro::assembly::Coupling::new(&scene).unwrap();
+        let nominal = Load::nominal(&scene);
+        let setup = SeatingSetup::new(&c, &nominal.preload);
+        for (set, opts) in [
+            SolverOptions::default(),
+            SolverOptions { path_tolerance: None, ..SolverOptions::default() },
+        ]
+        .iter()
+        .cycle()
+        .take(6)
+        .enumerate()
+        {
+            let mut loads: Vec<Load> = (0..4)
+                .map(|_| {
+                    nominal
+                        .with_mu(&(0..6).map(|_| rng.random_range(0.05..0.3)).collect::<Vec<_>>())
+                })
+                .collect();
+            if set == 4 {
+                loads[1].preload.ramp_time *= 2.0;
+            }
+            if set == 5 {
+                loads[2] = nominal.with_mu(&[0.1, 0.1, 99.0, 0.1, 0.1, 0.1]);
+            }
+            let mut ws = Workspace::new();
+            let four =
+                seat4_in(&setup, [&loads[0], &loads[1], &loads[2], &loads[3]], opts, &mut ws);
+            for (l, (got, load)) in four.iter().zip(&loads).enumerate() {
+                let alone = seat_in(&setup, load, opts, &mut Workspace::new());
+                let what = format!("{} set {set} lane {l}", name.display());
+                match (got, &alone) {
+                    (Ok(a), Ok(b)) => {
+                        assert!(
+                            same_bits(
+                                &a.pose.rotation.coords.map(F64x4::splat),
+                                0,
+                                &b.pose.rotation.coords
+                            ),
+                            "{what}"
+                        );
+                        assert!(
+                            same_bits(
+                                &a.pose.translation.map(F64x4::splat),
+                                0,
+                                &b.pose.translation
+                            ),
+                            "{what}"
+                        );
+                        assert_eq!(
+                            (a.increments, a.newton_iterations, a.path, a.slid),
+                            (b.increments, b.newton_iterations, b.path, b.slid),
+                            "{what}"
+                        );
+                        assert_eq!(
+                            a.path_error.map(f64::to_bits),
+                            b.path_error.map(f64::to_bits),
+                            "{what}"
+                        );
+                        assert_eq!(
+                            a.decay_cv.map(f64::to_bits),
+                            b.decay_cv.map(f64::to_bits),
+                            "{what}"
+                        );
+                    }
+                    (Err(a), Err(b)) => assert_eq!(a.to_string(), b.to_string(), "{what}"),
+                    _ => panic!("{what}: {got:?} against {alone:?}"),
+                }
+            }
+        }
+    }
+}

@@ -63,6 +63,7 @@ mod lu6;
 mod newton_lanes;
 mod path;
 mod path_lanes;
+mod seat_lanes;
 mod solver;
 mod thermal;
 
@@ -70,6 +71,7 @@ pub use control::FINEST;
 pub use cycle::{seat_and_cycle, seat_and_cycle_in};
 pub use external::{ExternalLoad, LIFT_OFF_RATIO, LoadEvent, LoadEventKind};
 pub use load::{LoadPath, apply_load, at_rest_states};
+pub use seat_lanes::seat4_in;
 
 use path::Buffers;
 use solver::contact_results;
