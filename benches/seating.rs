@@ -2,7 +2,9 @@
 //! pins) and 06 (Kelvin): `seat` (set-up, a fresh workspace and the
 //! per-contact report included) and the seat kernel as a study runs it
 //! (`seat_in`: set-up shared, the buffers of one reused workspace, pose
-//! only). And one contact's geometry (the first contact of each scene: a
+//! only), and four seatings of different mu as a study would seat them:
+//! `seat_in` four times (`four seatings/f64`) against `seat4_in`, one
+//! seating per SIMD lane (`four seatings/lanes`). And one contact's geometry (the first contact of each scene: a
 //! plane, a pin, a seat plane) by the closed form the solvers call
 //! (`assembly::geometry::contact`) and by parry's query, its reference.
 
@@ -11,7 +13,7 @@ use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::assembly::geometry::{contact, parry_shape};
-use kinrepro::solve::quasistatic::{SeatingSetup, Workspace, seat, seat_in};
+use kinrepro::solve::quasistatic::{SeatingSetup, Workspace, seat, seat_in, seat4_in};
 use kinrepro::solve::{Load, SeatingPath, SolverOptions};
 use nalgebra::Vector3;
 use parry3d_f64::math::{Pose, Vector};
@@ -35,6 +37,22 @@ fn seating(c: &mut Criterion) {
         let mut ws = Workspace::new();
         c.bench_function(&format!("quasi-static seating/workspace/{name}"), |b| {
             b.iter(|| seat_in(black_box(&setup), black_box(&mu), &opts, &mut ws).unwrap())
+        });
+        let four: Vec<Load> = [0.0, 0.02, -0.03, 0.05]
+            .iter()
+            .map(|d| {
+                let mu = [0.46, 0.53, 0.51, 0.47, 0.545, 0.455].map(|m| m + d);
+                Load::nominal(&scene).with_mu(&mu)
+            })
+            .collect();
+        let four = [&four[0], &four[1], &four[2], &four[3]];
+        c.bench_function(&format!("four seatings/f64/{name}"), |b| {
+            b.iter(|| {
+                four.map(|l| seat_in(black_box(&setup), black_box(l), &opts, &mut ws).unwrap())
+            })
+        });
+        c.bench_function(&format!("four seatings/lanes/{name}"), |b| {
+            b.iter(|| seat4_in(black_box(&setup), black_box(four), &opts, &mut ws))
         });
         // The ball pressed 0.5 um into its first surface and moved sideways.
         let k = &coupling.contacts[0];
