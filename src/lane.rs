@@ -16,12 +16,16 @@
 
 use simba::simd::{SimdBool, SimdRealField, SimdValue};
 
-/// Four f64 lanes: simba's `AutoF64x4`, an array of four f64 whose
-/// arithmetic the compiler vectorises, and whose functions without a
-/// single instruction (sin, cos, exp, cube root) are f64's own, lane by
-/// lane, so that they give f64's bits (simba's `WideF64x4` has its own
-/// polynomial sine and exponential, which do not).
-pub type F64x4 = simba::simd::AutoF64x4;
+/// Four f64 lanes: simba's `WideF64x4` (`wide::f64x4`: two SSE2 or one
+/// AVX register). Its arithmetic, square root and division are the IEEE
+/// operations f64 uses; its sine, cosine and exponential are its own
+/// polynomials, so the functions written over lanes call f64's lane by
+/// lane where they need one ([`each_lane`]: a quaternion's exp of a large
+/// turn, a magnet's table, the decay law), and simba's cube root of it is
+/// f64's lane by lane. (simba's `AutoF64x4`, four f64 in an array, gives
+/// the same bits and was 1.5x slower per seating: its operations went
+/// through array maps the compiler left out of line.)
+pub type F64x4 = simba::simd::WideF64x4;
 
 /// The scalar type of a seating: f64 (one lane) or f64 lanes.
 pub trait Lane:

@@ -14,7 +14,7 @@ use crate::contact::stress::ShearRatios;
 use crate::contact::{
     ContactError, ContactLaw, ContactPair, ContactShape, FrictionLaw, SeriesNormal, TangentialLaw,
 };
-use crate::lane::{Lane, branch, lift, splat};
+use crate::lane::{Lane, branch, each_lane, lift, splat};
 use crate::material::Material;
 use crate::scene::{DynamicsSettings, Scene, SurfaceGeometry, ThermalBodies};
 pub use constraint::ConstraintReport;
@@ -74,7 +74,8 @@ pub fn rotation_exp<T: Lane>(w: &Vector3<T>) -> UnitQuaternion<T> {
     let t2 = w.norm_squared();
     branch::<T, _>(
         t2.simd_ge(splat(1e-6)),
-        |_| UnitQuaternion::from_scaled_axis(*w),
+        // nalgebra's sin and cos lane by lane (f64's own).
+        |_| each_lane(w, |w: Vector3<f64>| UnitQuaternion::from_scaled_axis(w)),
         |_| {
             branch::<T, _>(
                 (splat::<T>(0.25) * t2).simd_le(splat(f64::EPSILON * f64::EPSILON)),

@@ -254,7 +254,7 @@ fn coulomb_case(
 #[test]
 fn the_coulomb_law_in_lanes_is_each_lanes_own() {
     use kinrepro::contact::coulomb::{CoulombInput, coulomb};
-    use simba::simd::AutoBoolx4;
+    use kinrepro::lane::Mask;
     let mut rng = ChaCha8Rng::seed_from_u64(45);
     let (mut mixed, mut tangents) = (0, 0);
     for case in 0..2000 {
@@ -278,7 +278,7 @@ fn the_coulomb_law_in_lanes_is_each_lanes_own() {
         .expect("one form in every lane");
         let input = CoulombInput::<F64x4> {
             old_force: v3(&|c| c.old_force),
-            was_sliding: AutoBoolx4::from(x.each_ref().map(|c| c.was_sliding)),
+            was_sliding: <Mask<F64x4>>::from(x.each_ref().map(|c| c.was_sliding)),
             previous_velocity: s(&|c| c.previous_velocity),
             normal,
             du: v3(&|c| c.du),
