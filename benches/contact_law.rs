@@ -291,9 +291,10 @@ fn respond(
 
 /// The elliptical return map (`mindlin::project_on_circle`) of four
 /// trial forces: four f64 calls (`return map/4 x f64`) against one call
-/// over four lanes (`return map/f64x4`: simba's `WideF64x4`, and
-/// `return map/auto f64x4`: simba's `AutoF64x4`, arrays the compiler
-/// vectorises). The four are 2 mm-pin contacts (k_minor/k_major = 1.07)
+/// over four lanes (`return map/wide f64x4`: simba's `WideF64x4`, the
+/// product's `lane::F64x4`; `return map/auto f64x4`: simba's
+/// `AutoF64x4`, arrays the compiler vectorises; `auto f64x4 avx2`: the
+/// same compiled for AVX2). The four are 2 mm-pin contacts (k_minor/k_major = 1.07)
 /// 0.1 %, 1 %, 10 % and 50 % outside the limit: 1 to 3 Newton steps each.
 fn return_map_lanes(c: &mut Criterion) {
     use kinrepro::contact::mindlin::project_on_circle;

@@ -17,7 +17,7 @@
 
 use std::ops::{AddAssign, SubAssign};
 
-use nalgebra::{Matrix6, Vector3, Vector6};
+use nalgebra::{Matrix6, Vector6};
 use simba::simd::{SimdBool, SimdValue};
 
 use super::jacobian::add_contact;
@@ -127,26 +127,14 @@ impl Solver<'_> {
         Some(())
     }
 
-    /// [`Solver::residual`] of a seating in lanes: the preload forces,
-    /// then the contacts, in the same order.
+    /// [`Solver::residual`] of a seating in lanes ([`Solver::net_wrench`]).
     fn residual_lanes<T: Lane>(
         &self,
         pose: &BodyPose<T>,
         evals: &[LaneContact<T>],
         loads: &Loads,
     ) -> Vector6<T> {
-        let mut r = Vector6::zeros();
-        let mut add = |f: &Vector3<T>, at: &Vector3<T>| {
-            let m = at.cross(f);
-            r += Vector6::new(f.x, f.y, f.z, m.x, m.y, m.z);
-        };
-        for a in applied(self.coupling, self.preload, pose, loads.lambda) {
-            add(&a.force, &a.point);
-        }
-        for e in evals {
-            add(&e.force, &e.geometry.point);
-        }
-        r
+        self.net_wrench(pose, loads.lambda, evals.iter().map(|e| (&e.force, &e.geometry.point)))
     }
 
     /// [`Solver::relative`] per lane (f64's `max`: a NaN side gives the other).

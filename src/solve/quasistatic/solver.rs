@@ -225,21 +225,36 @@ impl<'a> Solver<'a> {
     /// Net force and moment on the moving half: the preload forces
     /// ([`applied`]), the contacts, and the extra load.
     fn residual(&self, pose: &BodyPose, evals: &[ContactEval], loads: &Loads) -> Vector6<f64> {
+        let contacts = evals.iter().map(|e| (&e.force, &e.geometry.point));
+        let mut r = self.net_wrench(pose, loads.lambda, contacts);
+        if let Some((fe, pe)) = self.extra_force(pose, loads) {
+            let m = pe.cross(&fe);
+            r += Vector6::new(fe.x, fe.y, fe.z, m.x, m.y, m.z);
+            let me = self.extra_moment(loads);
+            r += Vector6::new(0.0, 0.0, 0.0, me.x, me.y, me.z);
+        }
+        r
+    }
+
+    /// The net force and moment about the origin of the preload forces at
+    /// `lambda` and then of `contacts` (force, point), in that order (per
+    /// lane for lanes: the residual of [`Self::newton`] and of the lanes').
+    pub(super) fn net_wrench<'e, T: Lane>(
+        &self,
+        pose: &BodyPose<T>,
+        lambda: f64,
+        contacts: impl Iterator<Item = (&'e Vector3<T>, &'e Vector3<T>)>,
+    ) -> Vector6<T> {
         let mut r = Vector6::zeros();
-        let mut add = |f: &Vector3<f64>, at: &Vector3<f64>| {
+        let mut add = |f: &Vector3<T>, at: &Vector3<T>| {
             let m = at.cross(f);
             r += Vector6::new(f.x, f.y, f.z, m.x, m.y, m.z);
         };
-        for a in applied(self.coupling, self.preload, pose, loads.lambda) {
+        for a in applied(self.coupling, self.preload, pose, lambda) {
             add(&a.force, &a.point);
         }
-        for e in evals {
-            add(&e.force, &e.geometry.point);
-        }
-        if let Some((fe, pe)) = self.extra_force(pose, loads) {
-            add(&fe, &pe);
-            let me = self.extra_moment(loads);
-            r += Vector6::new(0.0, 0.0, 0.0, me.x, me.y, me.z);
+        for (f, at) in contacts {
+            add(f, at);
         }
         r
     }
