@@ -1,6 +1,8 @@
 //! A contact's columns of the Newton corrector's Jacobian (`super::solver`),
 //! over lanes ([`crate::lane`]) and, as their f64 form, for one seating.
 
+use std::ops::{AddAssign, SubAssign};
+
 use nalgebra::{Matrix3, Matrix6, Vector3};
 
 use crate::lane::Lane;
@@ -47,6 +49,15 @@ fn add3<T: Lane>(col: &mut [T; 6], top: &Vector3<T>, bottom: &Vector3<T>) {
         col[r] += top[r];
         col[r + 3] += bottom[r];
     }
+}
+
+/// Add a force of fixed direction `f` at a point `p` of the body (K = 0):
+/// moment rows only, d(p x f) = dp x f = -[f]x (v - [p]x w).
+#[inline(always)]
+pub(super) fn add_fixed_force<T: Lane>(j: &mut Matrix6<T>, f: &Vector3<T>, p: &Vector3<T>) {
+    let fx = f.cross_matrix();
+    j.fixed_view_mut::<3, 3>(3, 0).sub_assign(&fx);
+    j.fixed_view_mut::<3, 3>(3, 3).add_assign(&(fx * p.cross_matrix()));
 }
 
 #[cfg(test)]

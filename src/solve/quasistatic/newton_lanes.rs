@@ -15,19 +15,15 @@
 //! lanes, and for a program other than a seating: the set of four is then
 //! seated one by one.
 
-use std::ops::{AddAssign, SubAssign};
-
-use nalgebra::{Matrix6, Vector6};
+use nalgebra::Vector6;
 use simba::simd::{SimdBool, SimdValue};
 
-use super::jacobian::add_contact;
 use super::lu6::solve6;
 use super::solver::{Loads, Program, Solver};
 use crate::assembly::BodyPose;
 use crate::lane::{Lane, Mask, splat};
 use crate::solve::contact_lanes::{LaneContact, LaneFriction, LaneState, evaluate_lanes};
 use crate::solve::contact_layer::Motion;
-use crate::solve::preload_forces::applied;
 
 /// The committed side of an increment in lanes: the pose, each contact's
 /// state, its normal force's cube root and its friction. (The lanes' path
@@ -62,7 +58,7 @@ impl Solver<'_> {
             let eager = (last.simd_gt(splat(self.opts.tolerance.sqrt())) & active).any();
             self.evaluate_lanes_all(&pose, inc, loads.duration, eager, evals)?;
             let r = self.residual_lanes(&pose, evals, loads);
-            let rel = self.relative_lanes(&r);
+            let rel = self.relative(&r);
             if (!rel.simd_eq(rel) | rel.simd_abs().simd_eq(splat(f64::INFINITY))).any() {
                 return None;
             }
@@ -77,7 +73,8 @@ impl Solver<'_> {
             if !eager {
                 self.evaluate_lanes_all(&pose, inc, loads.duration, true, evals)?;
             }
-            let j = self.jacobian_lanes(evals, &pose, loads);
+            let contacts = evals.iter().map(|e| (&e.stiffness, &e.force, &e.geometry));
+            let j = self.wrench_jacobian(&pose, loads.lambda, contacts);
             let dx = solve6(&j, &(-r))?;
             let v = dx.fixed_rows::<3>(0).into_owned();
             let w = dx.fixed_rows::<3>(3).into_owned();
@@ -89,9 +86,7 @@ impl Solver<'_> {
             if ((!finite | far) & active).any() {
                 return None;
             }
-            let size = v.norm() + splat::<T>(self.length) * w.norm();
-            let fine = size.simd_le(splat(64.0 * f64::EPSILON * self.length));
-            let done = stalled & fine & active;
+            let done = stalled & self.at_resolution(&dx) & active;
             its = splat::<T>((it + 1) as f64).select(done, its);
             active = active & !done;
             if active.none() {
@@ -135,41 +130,6 @@ impl Solver<'_> {
         loads: &Loads,
     ) -> Vector6<T> {
         self.net_wrench(pose, loads.lambda, evals.iter().map(|e| (&e.force, &e.geometry.point)))
-    }
-
-    /// [`Solver::relative`] per lane (f64's `max`: a NaN side gives the other).
-    fn relative_lanes<T: Lane>(&self, r: &Vector6<T>) -> T {
-        let fp = splat::<T>(self.force_scale);
-        let rf = r.fixed_rows::<3>(0).norm() / fp;
-        let rm = r.fixed_rows::<3>(3).norm() / (fp * splat(self.length));
-        let larger = rf.simd_max(rm);
-        rm.select(rf.simd_ne(rf), rf.select(rm.simd_ne(rm), larger))
-    }
-
-    /// [`Solver::jacobian`] of a seating in lanes.
-    fn jacobian_lanes<T: Lane>(
-        &self,
-        evals: &[LaneContact<T>],
-        pose: &BodyPose<T>,
-        loads: &Loads,
-    ) -> Matrix6<T> {
-        let mut j = Matrix6::zeros();
-        for (i, e) in evals.iter().enumerate() {
-            let radius = splat::<T>(self.coupling.contacts[i].radius);
-            let centre = e.geometry.point + e.geometry.normal * radius;
-            add_contact(&mut j, &e.stiffness, &e.force, &e.geometry.point, &centre);
-        }
-        for a in applied(self.coupling, self.preload, pose, loads.lambda) {
-            match a.stiffness {
-                Some(k) => add_contact(&mut j, &k, &a.force, &a.point, &a.point),
-                None => {
-                    let fx = a.force.cross_matrix();
-                    j.fixed_view_mut::<3, 3>(3, 0).sub_assign(&fx);
-                    j.fixed_view_mut::<3, 3>(3, 3).add_assign(&(fx * a.point.cross_matrix()));
-                }
-            }
-        }
-        j
     }
 }
 

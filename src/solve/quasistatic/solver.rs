@@ -28,17 +28,15 @@
 //! with or without the tangent, so the seating does not depend on the
 //! rule; it only decides where the tangent work is spent.
 
-use std::ops::{AddAssign, SubAssign};
-
-use nalgebra::{Matrix6, UnitQuaternion, Vector3, Vector6};
+use nalgebra::{Matrix3, Matrix6, UnitQuaternion, Vector3, Vector6};
 
 use super::external::ExternalLoad;
-use super::jacobian::add_contact;
+use super::jacobian::{add_contact, add_fixed_force};
 use super::lu6::solve6;
 use crate::assembly::constraint::frictionless_forces;
-use crate::assembly::{BodyPose, Coupling};
+use crate::assembly::{BodyPose, ContactGeometry, Coupling};
 use crate::contact::{Friction, TangentialState};
-use crate::lane::{Lane, branch, each_lane, splat};
+use crate::lane::{Lane, Mask, branch, each_lane, splat};
 use crate::scene::Preload;
 use crate::solve::contact_layer::{
     ContactEval, Expansion, Motion, Moved, NormalPart, evaluate_into,
@@ -239,6 +237,7 @@ impl<'a> Solver<'a> {
     /// The net force and moment about the origin of the preload forces at
     /// `lambda` and then of `contacts` (force, point), in that order (per
     /// lane for lanes: the residual of [`Self::newton`] and of the lanes').
+    #[inline(always)]
     pub(super) fn net_wrench<'e, T: Lane>(
         &self,
         pose: &BodyPose<T>,
@@ -275,11 +274,14 @@ impl<'a> Solver<'a> {
         }
     }
 
-    fn relative(&self, r: &Vector6<f64>) -> f64 {
-        let fp = self.force_scale;
+    /// Per lane for lanes, with f64's `max` (a NaN side gives the other).
+    #[inline(always)]
+    pub(super) fn relative<T: Lane>(&self, r: &Vector6<T>) -> T {
+        let fp = splat::<T>(self.force_scale);
         let rf = r.fixed_rows::<3>(0).norm() / fp;
-        let rm = r.fixed_rows::<3>(3).norm() / (fp * self.length);
-        rf.max(rm)
+        let rm = r.fixed_rows::<3>(3).norm() / (fp * splat(self.length));
+        let larger = rf.simd_max(rm);
+        rm.select(rf.simd_ne(rf), rf.select(rm.simd_ne(rm), larger))
     }
 
     /// Newton from `start` on the increment with `loads` from the committed
@@ -329,9 +331,12 @@ impl<'a> Solver<'a> {
 
     /// A Newton correction below what f64 resolves in a pose of size L:
     /// |dv| + L |dw| <= 64 eps L (module docs).
-    fn at_resolution(&self, dx: &Vector6<f64>) -> bool {
-        let size = dx.fixed_rows::<3>(0).norm() + self.length * dx.fixed_rows::<3>(3).norm();
-        size <= 64.0 * f64::EPSILON * self.length
+    /// Per lane for lanes.
+    #[inline(always)]
+    pub(super) fn at_resolution<T: Lane>(&self, dx: &Vector6<T>) -> Mask<T> {
+        let size =
+            dx.fixed_rows::<3>(0).norm() + splat::<T>(self.length) * dx.fixed_rows::<3>(3).norm();
+        size.simd_le(splat(64.0 * f64::EPSILON * self.length))
     }
 
     /// dR/d(v, w) for a twist about the world origin: contact stiffness K_i
@@ -339,24 +344,36 @@ impl<'a> Solver<'a> {
     /// points move with the body ([`add_contact`]), plus each preload
     /// spring's stiffness the same way.
     fn jacobian(&self, evals: &[ContactEval], pose: &BodyPose, loads: &Loads) -> Matrix6<f64> {
-        let mut j = Matrix6::zeros();
-        for (i, e) in evals.iter().enumerate() {
+        let contacts = evals.iter().enumerate().map(|(i, e)| {
             debug_assert!(e.tangent, "contact {i} evaluated without its tangent");
-            let centre = e.geometry.point + e.geometry.normal * self.coupling.contacts[i].radius;
-            add_contact(&mut j, &e.stiffness, &e.force, &e.geometry.point, &centre);
+            (&e.stiffness, &e.force, &e.geometry)
+        });
+        let mut j = self.wrench_jacobian(pose, loads.lambda, contacts);
+        if let Some((f, p)) = self.extra_force(pose, loads) {
+            add_fixed_force(&mut j, &f, &p);
         }
-        let preload = applied(self.coupling, self.preload, pose, loads.lambda);
-        let forces = preload.map(|a| (a.force, a.point, a.stiffness));
-        for (f, p, k) in forces.chain(self.extra_force(pose, loads).map(|(f, p)| (f, p, None))) {
-            match k {
-                Some(k) => add_contact(&mut j, &k, &f, &p, &p),
-                // A load of fixed direction at a point of the body (K = 0):
-                // moment rows only, d(p x f) = dp x f = -[f]x (v - [p]x w).
-                None => {
-                    let fx = f.cross_matrix();
-                    j.fixed_view_mut::<3, 3>(3, 0).sub_assign(&fx);
-                    j.fixed_view_mut::<3, 3>(3, 3).add_assign(&(fx * p.cross_matrix()));
-                }
+        j
+    }
+
+    /// The Jacobian of [`Self::net_wrench`]: each contact's (stiffness,
+    /// force, geometry), then each preload force (per lane for lanes: the
+    /// Jacobian of [`Self::newton`] and of the lanes').
+    #[inline(always)]
+    pub(super) fn wrench_jacobian<'e, T: Lane>(
+        &self,
+        pose: &BodyPose<T>,
+        lambda: f64,
+        contacts: impl Iterator<Item = (&'e Matrix3<T>, &'e Vector3<T>, &'e ContactGeometry<T>)>,
+    ) -> Matrix6<T> {
+        let mut j = Matrix6::zeros();
+        for (i, (k, f, g)) in contacts.enumerate() {
+            let centre = g.point + g.normal * splat::<T>(self.coupling.contacts[i].radius);
+            add_contact(&mut j, k, f, &g.point, &centre);
+        }
+        for a in applied(self.coupling, self.preload, pose, lambda) {
+            match a.stiffness {
+                Some(k) => add_contact(&mut j, &k, &a.force, &a.point, &a.point),
+                None => add_fixed_force(&mut j, &a.force, &a.point),
             }
         }
         j
