@@ -99,6 +99,20 @@ pub fn each_lane<A: SimdValue, R: SimdValue>(a: &A, f: impl Fn(A::Element) -> R:
     r
 }
 
+/// The value of lanes whose lane i is `lanes[i]` (one f64 value, vector
+/// or quaternion per lane; for f64, `lanes[0]`).
+#[inline]
+pub fn gather<V: SimdValue>(lanes: &[V::Element]) -> V
+where
+    V::Element: Copy,
+{
+    let mut v = V::splat(lanes[0]);
+    for (i, x) in lanes.iter().enumerate().skip(1) {
+        v.replace(i, *x);
+    }
+    v
+}
+
 /// A pair of values of lanes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Both<A, B>(pub A, pub B);

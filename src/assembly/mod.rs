@@ -14,12 +14,13 @@ use crate::contact::stress::ShearRatios;
 use crate::contact::{
     ContactError, ContactLaw, ContactPair, ContactShape, FrictionLaw, SeriesNormal, TangentialLaw,
 };
-use crate::lane::{Lane, branch, each_lane, lift, splat};
+use crate::lane::{Lane, branch, each_lane, gather, lift, splat};
 use crate::material::Material;
 use crate::scene::{DynamicsSettings, Scene, SurfaceGeometry, ThermalBodies};
 pub use constraint::ConstraintReport;
 pub use friction_limit::FrictionLimit;
 pub use geometry::ContactGeometry;
+use simba::simd::SimdValue;
 
 /// Pose of the moving half: world = rotation * body + translation. The body
 /// frame coincides with the world frame in the scene as written. Over
@@ -44,6 +45,18 @@ impl BodyPose {
 }
 
 impl<T: Lane> BodyPose<T> {
+    /// The pose of lanes whose lane i is `poses[i]`.
+    pub fn from_lanes(poses: &[BodyPose]) -> Self {
+        let rotations: Vec<_> = poses.iter().map(|p| p.rotation).collect();
+        let translations: Vec<_> = poses.iter().map(|p| p.translation).collect();
+        BodyPose { rotation: gather(&rotations), translation: gather(&translations) }
+    }
+
+    /// Lane `i`'s pose.
+    pub fn lane(&self, i: usize) -> BodyPose {
+        BodyPose { rotation: self.rotation.extract(i), translation: self.translation.extract(i) }
+    }
+
     /// World position of a body point.
     #[inline]
     pub fn apply(&self, p: &Vector3<T>) -> Vector3<T> {

@@ -24,7 +24,6 @@
 //! tangential force along it that the moving body exerts on the fixed
 //! surface (a spring stretched by du). The friction force on the moving
 //! body is its negative.
-
 //!
 //! The law's arithmetic ([`coulomb`]) is written over lanes (one contact of
 //! several seatings: lane i is bit for bit the f64 law of lane i's inputs,

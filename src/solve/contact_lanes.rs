@@ -23,8 +23,8 @@ use simba::simd::{SimdBool, SimdValue};
 use crate::assembly::{ContactGeometry, Coupling};
 use crate::contact::coulomb::{CoulombInput, coulomb};
 use crate::contact::tangential_types::Rotation;
-use crate::contact::{FrictionLaw, TangentialLaw, TangentialState};
-use crate::lane::{Lane, Mask};
+use crate::contact::{Friction, FrictionLaw, TangentialLaw, TangentialState};
+use crate::lane::{Lane, Mask, gather};
 use crate::solve::contact_layer::{NormalPart, contact_stiffness};
 
 /// The committed tangential state of one contact, per lane: the
@@ -41,26 +41,18 @@ pub struct LaneState<T: Lane> {
 impl<T: Lane> LaneState<T> {
     /// Lane i holds `states[i]` (one state per lane).
     pub fn from_states(states: &[&TangentialState]) -> Self {
-        let lanes = |f: &dyn Fn(&TangentialState) -> f64| {
-            let mut x = T::splat(f(states[0]));
-            for (i, s) in states.iter().enumerate().skip(1) {
-                x.replace(i, f(s));
-            }
-            x
+        let of = |f: &dyn Fn(&TangentialState) -> f64| {
+            gather::<T>(&states.iter().map(|s| f(s)).collect::<Vec<_>>())
         };
         let v3 = |f: &dyn Fn(&TangentialState) -> Vector3<f64>| {
-            Vector3::from_fn(|r, _| lanes(&|s| f(s)[r]))
+            gather::<Vector3<T>>(&states.iter().map(|s| f(s)).collect::<Vec<_>>())
         };
-        let mut sliding = Mask::<T>::splat(states[0].sliding);
-        for (i, s) in states.iter().enumerate().skip(1) {
-            sliding.replace(i, s.sliding);
-        }
         LaneState {
             normal: v3(&|s| s.normal),
             force: v3(&|s| s.force),
-            sliding,
-            normal_force: lanes(&|s| s.normal_force),
-            slip_velocity: lanes(&|s| s.slip_velocity),
+            sliding: gather(&states.iter().map(|s| s.sliding).collect::<Vec<_>>()),
+            normal_force: of(&|s| s.normal_force),
+            slip_velocity: of(&|s| s.slip_velocity),
         }
     }
 
@@ -85,6 +77,23 @@ pub struct LaneFriction<T: Lane> {
     pub mu_d: T,
     pub law: FrictionLaw,
     pub duration: f64,
+}
+
+impl<T: Lane> LaneFriction<T> {
+    /// Lane i holds `frictions[i]` (the law and the duration are the
+    /// first's: a coupling's contacts share their law, an increment its
+    /// duration).
+    pub fn from_frictions(frictions: &[&Friction]) -> Self {
+        let of = |f: &dyn Fn(&Friction) -> f64| {
+            gather::<T>(&frictions.iter().map(|x| f(x)).collect::<Vec<_>>())
+        };
+        LaneFriction {
+            mu_s: of(&|f| f.mu_s),
+            mu_d: of(&|f| f.mu_d),
+            law: frictions[0].law,
+            duration: frictions[0].duration,
+        }
+    }
 }
 
 /// One contact evaluated in lanes: [`super::contact_layer::ContactEval`]

@@ -7,7 +7,7 @@ use kinrepro::assembly::{BodyPose, ContactGeometry};
 use kinrepro::contact::mindlin::{PrincipalStiffness, equal_to_rounding, project_on_circle};
 use kinrepro::contact::{Friction, FrictionLaw, TangentialState};
 use kinrepro::lane::F64x4;
-use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector2, Vector3, Vector4};
+use nalgebra::{Matrix3, Vector2, Vector3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use simba::simd::SimdValue;
@@ -112,12 +112,7 @@ fn poses_move_in_lanes_as_each_lane_alone() {
 
 /// Four poses as one pose of lanes.
 fn pose_lanes(p: &[BodyPose; 4]) -> BodyPose<F64x4> {
-    BodyPose {
-        rotation: UnitQuaternion::new_unchecked(Quaternion::from(Vector4::from_fn(|i, _| {
-            lanes(p.map(|p| p.rotation.coords[i]))
-        }))),
-        translation: Vector3::from_fn(|i, _| lanes(p.map(|p| p.translation[i]))),
-    }
+    BodyPose::from_lanes(p)
 }
 
 /// The geometry of every contact of every bundled scene (balls on planes,

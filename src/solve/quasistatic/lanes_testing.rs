@@ -1,7 +1,6 @@
 //! What the lane tests of the seating share (`newton_lanes`, `path_lanes`):
 //! four seatings' frictions and poses, and their forms over lanes.
 
-use nalgebra::{Quaternion, UnitQuaternion, Vector3, Vector4};
 use rand::Rng;
 
 use crate::assembly::{BodyPose, Coupling};
@@ -30,23 +29,12 @@ pub fn draw_frictions(
 
 /// The four seatings' frictions as one per contact over lanes.
 pub fn lane_frictions(frictions: &[Vec<Friction>]) -> Vec<LaneFriction<F64x4>> {
-    let lanes = |f: &dyn Fn(usize) -> f64| F64x4::from([0, 1, 2, 3].map(f));
     (0..frictions[0].len())
-        .map(|i| LaneFriction {
-            mu_s: lanes(&|l| frictions[l][i].mu_s),
-            mu_d: lanes(&|l| frictions[l][i].mu_d),
-            law: frictions[0][i].law,
-            duration: 0.0,
-        })
+        .map(|i| LaneFriction::from_frictions(&[0, 1, 2, 3].map(|l| &frictions[l][i])))
         .collect()
 }
 
 /// Four poses as one pose of lanes.
 pub fn pose_lanes(p: &[BodyPose; 4]) -> BodyPose<F64x4> {
-    BodyPose {
-        rotation: UnitQuaternion::new_unchecked(Quaternion::from(Vector4::from_fn(|i, _| {
-            F64x4::from(p.map(|p| p.rotation.coords[i]))
-        }))),
-        translation: Vector3::from_fn(|i, _| F64x4::from(p.map(|p| p.translation[i]))),
-    }
+    BodyPose::from_lanes(p)
 }

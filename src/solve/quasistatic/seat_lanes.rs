@@ -17,7 +17,7 @@ use super::solver::{Program, Solver, twist_between};
 use super::{SeatingSetup, Workspace, seat_in};
 use crate::assembly::BodyPose;
 use crate::contact::{Friction, friction};
-use crate::lane::{F64x4, Lane, lift, splat};
+use crate::lane::{F64x4, splat};
 use crate::solve::contact_lanes::{LaneFriction, LaneState};
 use crate::solve::{Load, SeatedPose, SeatingPath, SolveError, SolverOptions, frictions_into};
 
@@ -29,13 +29,10 @@ pub fn seat4_in(
     ws: &mut Workspace,
 ) -> [Result<SeatedPose, SolveError>; 4] {
     let lanes = seat_in_lanes(setup, loads, opts);
-    let mut out = lanes.map(|p| p.map(Ok));
-    for (l, slot) in out.iter_mut().enumerate() {
-        if slot.is_none() {
-            *slot = Some(seat_in(setup, loads[l], opts, ws));
-        }
-    }
-    out.map(|r| r.expect("every lane seated"))
+    std::array::from_fn(|l| match lanes[l] {
+        Some(seated) => Ok(seated),
+        None => seat_in(setup, loads[l], opts, ws),
+    })
 }
 
 /// The lanes' seatings; `None` for a lane they cannot follow.
@@ -54,12 +51,7 @@ fn seat_in_lanes(
     };
     let virgin: Vec<LaneState<F64x4>> =
         setup.virgin.iter().map(|s| LaneState::from_states(&[s, s, s, s])).collect();
-    let start = BodyPose {
-        rotation: nalgebra::UnitQuaternion::new_unchecked(nalgebra::Quaternion::from(lift(
-            &c.touching_pose.rotation.coords,
-        ))),
-        translation: lift(&c.touching_pose.translation),
-    };
+    let start = BodyPose::from_lanes(&[c.touching_pose; 4]);
     let level = |n: usize| {
         let opts = SolverOptions { increments: n, ..*opts };
         let solver = Solver::new(c, &frictions[0], &setup.preload, opts, Program::Seat, setup.x1);
@@ -73,7 +65,7 @@ fn seat_in_lanes(
         let Some(end) = level(opts.increments) else { return none };
         return std::array::from_fn(|l| {
             Some(SeatedPose {
-                pose: lane_pose(&end.pose, l),
+                pose: end.pose.lane(l),
                 increments: end.increments,
                 newton_iterations: end.newton_iterations.extract(l) as usize,
                 path: SeatingPath::Uniform,
@@ -101,7 +93,7 @@ fn seat_in_lanes(
     std::array::from_fn(|l| {
         let e = error.extract(l);
         (e <= tolerance).then(|| SeatedPose {
-            pose: lane_pose(&pose, l),
+            pose: pose.lane(l),
             increments: coarse.increments + fine.increments,
             newton_iterations: (coarse.newton_iterations + fine.newton_iterations).extract(l)
                 as usize,
@@ -127,24 +119,9 @@ fn frictions_of(
         frictions_into(c, &load.mu, f).ok()?;
     }
     let lanes = (0..c.contacts.len())
-        .map(|i| LaneFriction {
-            mu_s: F64x4::from([0, 1, 2, 3].map(|l| frictions[l][i].mu_s)),
-            mu_d: F64x4::from([0, 1, 2, 3].map(|l| frictions[l][i].mu_d)),
-            law: frictions[0][i].law,
-            duration: 0.0,
-        })
+        .map(|i| LaneFriction::from_frictions(&[0, 1, 2, 3].map(|l| &frictions[l][i])))
         .collect();
     Some((frictions, lanes))
-}
-
-/// Lane `l` of a pose over lanes.
-fn lane_pose<T: Lane>(p: &BodyPose<T>, l: usize) -> BodyPose {
-    BodyPose {
-        rotation: nalgebra::UnitQuaternion::new_unchecked(nalgebra::Quaternion::from(
-            p.rotation.coords.map(|x| x.extract(l)),
-        )),
-        translation: p.translation.map(|x| x.extract(l)),
-    }
 }
 
 #[cfg(test)]
