@@ -10,6 +10,7 @@ pub use super::inputs::Varied;
 use super::variation::{StartBounds, Variation};
 use super::{Sampler, Shard};
 use crate::param::{Param, ParamError};
+use crate::solve::quasistatic::Lanes;
 use crate::solve::{Method, Solver};
 
 /// The default base sample size N of the Sobol indices (`sobol_samples`):
@@ -44,6 +45,9 @@ pub struct StudyOptions {
     pub sobol_samples: Option<usize>,
     /// LHS replicates (None: [`super::sampling::default_replicates`]).
     pub replicates: Option<usize>,
+    /// Whether quasi-static samples are seated four at a time in lanes
+    /// (the same results; [`Lanes`]).
+    pub lanes: Lanes,
 }
 
 impl Default for StudyOptions {
@@ -63,6 +67,7 @@ impl Default for StudyOptions {
             sensitivity: false,
             sobol_samples: None,
             replicates: None,
+            lanes: Lanes::Auto,
         }
     }
 }
@@ -78,6 +83,8 @@ pub struct Settings {
     pub sensitivity: bool,
     /// Base sample size of the Sobol indices, when sensitivity is asked for.
     pub sobol_samples: Option<usize>,
+    /// Seat quasi-static samples four at a time in lanes ([`Lanes::used`]).
+    pub lanes: bool,
 }
 
 fn fail<T>(param: Param, message: impl Into<String>) -> Result<T, ParamError> {
@@ -125,6 +132,7 @@ impl StudyOptions {
             shard: self.shard,
             sensitivity: self.sensitivity,
             sobol_samples,
+            lanes: self.lanes.used(),
         })
     }
 

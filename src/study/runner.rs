@@ -32,7 +32,7 @@ pub use super::variation::{START_CLEARANCE, Sample, StartBounds, Variation, lift
 use super::{DesignSpec, Shard, StudyError};
 use crate::assembly::BodyPose;
 use crate::scene::{EvaluationPoint, Scene};
-use crate::solve::quasistatic::{SeatingSetup, Workspace, seat_and_cycle_in, seat_in};
+use crate::solve::quasistatic::{SeatingSetup, Workspace, seat_and_cycle_in, seat_in, seat4_in};
 use crate::solve::{Load, Method, PointPose, SeatedPose, SolveError};
 
 /// What a run reports as it goes: `tick` once per finished sample, and
@@ -224,49 +224,78 @@ pub fn evaluate_rows<'a>(
     };
     let setup = SeatingSetup::new(coupling, &scene.preload);
     let thermal = coupling.thermal.as_ref();
+    // One sample's record, its re-seating `lanes` if the lanes seated it.
+    let record = |ws: &mut Workspace,
+                  (index, row): &(usize, Vec<f64>),
+                  sample: Sample,
+                  lanes: Option<Result<SeatedPose, SolveError>>| {
+        let (index, row) = (*index, row.clone());
+        let mut outputs: Vec<f64> = Vec::new();
+        if var.reseating() && thermal.is_some() {
+            let (seated, drift) = reseat_and_cycle(&setup, &s.method, &sample.load, points, ws)
+                .map_err(|e| seat_err(index, &sample.load.mu, e))?;
+            progress.record(&seated);
+            outputs.extend(relative(seated.pose));
+            outputs.extend(drift);
+        } else if var.reseating() {
+            let seated = match lanes.unwrap_or_else(|| reseat(&setup, &s.method, &sample.load, ws))
+            {
+                // A varied start that does not centre is counted: a record without outputs.
+                Err(SolveError::NotCentred { .. }) if var.start.is_some() => {
+                    (progress.tick)();
+                    return Ok(SampleRecord::not_centred(index, row));
+                }
+                r => r.map_err(|e| seat_err(index, &sample.load.mu, e))?,
+            };
+            progress.record(&seated);
+            outputs.extend(relative(seated.pose));
+        }
+        if let Some(t) = &sample.tolerances {
+            let perturbed = t.coupling(scene, coupling).map_err(|source| {
+                let keys = scene.variation.keys(false, true).join(", ").into();
+                StudyError::Perturbed { index, keys, source }.in_file(file)
+            })?;
+            let seated = s
+                .method
+                .seat(&perturbed, &nominal_load)
+                .map_err(|e| seat_err(index, &nominal_load.mu, e))?
+                .seated;
+            progress.record(&seated);
+            outputs.extend(relative(seated.pose));
+        }
+        (progress.tick)();
+        Ok(SampleRecord { index, inputs: row, outputs })
+    };
+    // Quasi-static re-seatings without a thermal cycle go four at a time
+    // in lanes (`seat4_in`: each the seating `seat_in` gives, so the
+    // records are the same bits), in sample order.
+    let four = match &s.method {
+        Method::QuasiStatic(o) if s.lanes && var.reseating() && thermal.is_none() => Some(o),
+        _ => None,
+    };
     // One workspace per rayon job, reused by the samples it seats.
-    rows.into_par_iter()
-        .map_init(Workspace::new, |ws, (index, row)| {
+    let groups = rows
+        .par_chunks(if four.is_some() { 4 } else { 1 })
+        .map_init(Workspace::new, |ws, group| {
             if crate::cancel::requested() {
                 return Err(StudyError::Cancelled);
             }
-            let sample = var.sample(scene, coupling, &row);
-            let mut outputs: Vec<f64> = Vec::new();
-            if var.reseating() && thermal.is_some() {
-                let (seated, drift) = reseat_and_cycle(&setup, &s.method, &sample.load, points, ws)
-                    .map_err(|e| seat_err(index, &sample.load.mu, e))?;
-                progress.record(&seated);
-                outputs.extend(relative(seated.pose));
-                outputs.extend(drift);
-            } else if var.reseating() {
-                let seated = match reseat(&setup, &s.method, &sample.load, ws) {
-                    // A varied start that does not centre is counted: a record without outputs.
-                    Err(SolveError::NotCentred { .. }) if var.start.is_some() => {
-                        (progress.tick)();
-                        return Ok(SampleRecord::not_centred(index, row));
-                    }
-                    r => r.map_err(|e| seat_err(index, &sample.load.mu, e))?,
-                };
-                progress.record(&seated);
-                outputs.extend(relative(seated.pose));
-            }
-            if let Some(t) = &sample.tolerances {
-                let perturbed = t.coupling(scene, coupling).map_err(|source| {
-                    let keys = scene.variation.keys(false, true).join(", ").into();
-                    StudyError::Perturbed { index, keys, source }.in_file(file)
-                })?;
-                let seated = s
-                    .method
-                    .seat(&perturbed, &nominal_load)
-                    .map_err(|e| seat_err(index, &nominal_load.mu, e))?
-                    .seated;
-                progress.record(&seated);
-                outputs.extend(relative(seated.pose));
-            }
-            (progress.tick)();
-            Ok(SampleRecord { index, inputs: row, outputs })
+            let samples: Vec<Sample> =
+                group.iter().map(|(_, row)| var.sample(scene, coupling, row)).collect();
+            let mut lanes: Vec<Option<Result<SeatedPose, SolveError>>> = match (four, &samples[..])
+            {
+                (Some(o), [a, b, c, d]) => {
+                    seat4_in(&setup, [&a.load, &b.load, &c.load, &d.load], o, ws)
+                        .map(Some)
+                        .into()
+                }
+                _ => samples.iter().map(|_| None).collect(),
+            };
+            let records = group.iter().zip(samples).zip(lanes.drain(..));
+            records.map(|((r, sample), seated)| record(ws, r, sample, seated)).collect()
         })
-        .collect::<Result<Vec<_>, StudyError>>()
+        .collect::<Result<Vec<Vec<_>>, StudyError>>()?;
+    Ok(groups.into_iter().flatten().collect())
 }
 
 /// The re-seating of one sample under `load` and its temperature cycle

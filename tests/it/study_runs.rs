@@ -255,3 +255,41 @@ fn dynamic_studies_with_random_start_poses() {
         StudyPlan::new(vec![(s, c)], &none).unwrap_err().to_string().contains("varies nothing")
     );
 }
+
+/// Seating four samples at a time in SIMD lanes changes no byte of a
+/// study, nor does the number of jobs: the paper scenes (followed in lanes),
+/// a magnet scene (its magnets' force table read lane by lane), a flexure
+/// scene (an anisotropic support: the lanes hand its seatings to the f64
+/// kernel), a varied preload (each lane its own preload: seated one by
+/// one) and 22 samples (five sets of four and two left over).
+#[test]
+fn lanes_and_jobs_change_no_byte_of_a_study() {
+    let names = [
+        "01_maxwell_vgroove_steel.toml",
+        "02_maxwell_pins_steel.toml",
+        "06_kelvin_steel.toml",
+        "kelvin_magnet_wall_mount.toml",
+        "maxwell_flexure_grooves.toml",
+    ];
+    let paths: Vec<String> = names.iter().map(|n| scene(n).display().to_string()).collect();
+    let preload = scene("tolerances_maxwell_vgroove.toml").display().to_string();
+    let cases: [Vec<&str>; 2] = [
+        paths.iter().map(String::as_str).collect(),
+        vec![preload.as_str(), "--vary", "friction,preload"],
+    ];
+    for case in &cases {
+        let run = |lanes: &str, jobs: &str| {
+            let mut args = vec!["study"];
+            args.extend(case.iter().copied());
+            args.extend(["--samples", "22", "--seed", "5", "--format", "json"]);
+            args.extend(["--lanes", lanes, "--jobs", jobs]);
+            let (ok, out, err) = kinrepro(&args);
+            assert!(ok, "{args:?}: {err}");
+            out
+        };
+        let off = run("off", "1");
+        assert_eq!(run("on", "1"), off, "{case:?}: lanes on");
+        assert_eq!(run("on", "2"), off, "{case:?}: lanes on, 2 jobs");
+        assert_eq!(run("auto", "2"), off, "{case:?}: lanes auto, 2 jobs");
+    }
+}

@@ -71,7 +71,7 @@ pub use control::FINEST;
 pub use cycle::{seat_and_cycle, seat_and_cycle_in};
 pub use external::{ExternalLoad, LIFT_OFF_RATIO, LoadEvent, LoadEventKind};
 pub use load::{LoadPath, apply_load, at_rest_states};
-pub use seat_lanes::seat4_in;
+pub use seat_lanes::{LANES_ARE_FAST, Lanes, seat4_in};
 
 use path::Buffers;
 use solver::contact_results;

@@ -21,6 +21,39 @@ use crate::lane::{F64x4, splat};
 use crate::solve::contact_lanes::{LaneFriction, LaneState};
 use crate::solve::{Load, SeatedPose, SeatingPath, SolveError, SolverOptions, frictions_into};
 
+/// Whether a study seats its samples four at a time in lanes (`lanes`).
+/// The results are the same bits either way ([`seat4_in`]); only the time
+/// differs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Lanes {
+    /// In lanes where this build's lanes are the faster way (built for a
+    /// CPU with AVX), else one seating at a time.
+    #[default]
+    Auto,
+    /// Always in lanes.
+    On,
+    /// One seating at a time.
+    Off,
+}
+
+/// True if this build runs [`F64x4`]'s operations on 256-bit registers
+/// (built for a CPU with AVX, e.g. `-C target-cpu=native` on one): four
+/// seatings in lanes then take half the time of four one at a time or
+/// less (docs/benchmarks.md). Built for the x86-64 baseline (SSE2), each
+/// lane operation is two 128-bit ones and the lanes are no faster.
+pub const LANES_ARE_FAST: bool = cfg!(target_feature = "avx");
+
+impl Lanes {
+    /// Whether the seatings go in lanes.
+    pub fn used(self) -> bool {
+        match self {
+            Lanes::Auto => LANES_ARE_FAST,
+            Lanes::On => true,
+            Lanes::Off => false,
+        }
+    }
+}
+
 /// Seat `setup`'s coupling under each of four `loads` (module docs).
 pub fn seat4_in(
     setup: &SeatingSetup,

@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
 use kinrepro::study::{Sampler, Shard, StudyOptions};
+use kinrepro::solve::quasistatic::Lanes;
 
 /// The design of each scene's study (`study`, `sweep`).
 #[derive(Args)]
@@ -51,6 +52,11 @@ pub struct RunFlags {
     /// number of samples).
     #[arg(long)]
     pub jobs: Option<usize>,
+    /// Seat quasi-static samples four at a time in SIMD lanes: auto (where
+    /// this build's lanes are faster: built for a CPU with AVX) | on |
+    /// off. The results are the same bits either way.
+    #[arg(long, value_enum, default_value_t = Lanes::Auto)]
+    pub lanes: Lanes,
 }
 
 /// What a study or sweep writes.
@@ -86,6 +92,7 @@ impl DesignFlags {
             shard: run.shard.unwrap_or_else(Shard::whole),
             increments: path.increments,
             path_tolerance: path.path_tolerance,
+            lanes: run.lanes,
             ..StudyOptions::default()
         }
     }
