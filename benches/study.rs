@@ -1,6 +1,7 @@
 //! Studies: the seven bundled scenes at 25 LHS samples (a full Table 2
 //! study), the seven at 2000 Monte Carlo samples, scenes 01, 02 and 06
-//! each at 1000 Monte Carlo samples, and 10^5 Monte Carlo
+//! each at 1000 Monte Carlo samples (by default, and one seating at a
+//! time: `lanes` off), and 10^5 Monte Carlo
 //! samples of scene 01 streamed into moments (chunks of 8192, the route of
 //! large studies, `study::stream`). rayon uses every core.
 
@@ -9,6 +10,7 @@ use std::path::Path;
 use criterion::{Criterion, criterion_group, criterion_main};
 use kinrepro::assembly::Coupling;
 use kinrepro::scene::Scene;
+use kinrepro::solve::quasistatic::Lanes;
 use kinrepro::study::runner::{output_names, run_chunked, run_variant};
 use kinrepro::study::stream::StreamStats;
 use kinrepro::study::{Sampler, StudyOptions, StudyPlan};
@@ -63,11 +65,16 @@ fn study(c: &mut Criterion) {
             }
         })
     });
+    // The default (`lanes` auto: four seatings at a time in lanes where the
+    // build has AVX) and one seating at a time.
     for (i, name) in [(0, "01"), (1, "02"), (5, "06")] {
-        let one = StudyPlan::new(vec![load(SCENES[i])], &mc(1000)).unwrap();
-        g.bench_function(format!("scene {name} x 1000 MC samples"), |b| {
-            b.iter(|| run_variant(&one.settings, &one.variants[0], &|| {}).unwrap())
-        });
+        for (lanes, how) in [(Lanes::Auto, ""), (Lanes::Off, ", lanes off")] {
+            let opts = StudyOptions { lanes, ..mc(1000) };
+            let one = StudyPlan::new(vec![load(SCENES[i])], &opts).unwrap();
+            g.bench_function(format!("scene {name} x 1000 MC samples{how}"), |b| {
+                b.iter(|| run_variant(&one.settings, &one.variants[0], &|| {}).unwrap())
+            });
+        }
     }
     let streamed = StudyPlan::new(vec![load(SCENES[0])], &mc(100_000)).unwrap();
     let scene01 = &streamed.variants[0];

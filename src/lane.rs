@@ -123,3 +123,29 @@ impl<T: Lane, A: Select<T>, B: Select<T>> Select<T> for Both<A, B> {
         Both(self.0.select_where(mask, other.0), self.1.select_where(mask, other.1))
     }
 }
+
+/// The instruction-set extensions this build was compiled to use that the
+/// CPU it runs on lacks (empty where it has them all, and off x86-64).
+/// kinrepro is built for the CPU it is built on (`.cargo/config.toml`:
+/// `target-cpu=native`), so a binary copied to an older machine would
+/// stop on an illegal instruction; a front end asks this first and says
+/// why instead.
+pub fn missing_cpu_features() -> Vec<&'static str> {
+    #[allow(unused_mut)]
+    let mut missing = Vec::new();
+    #[cfg(target_arch = "x86_64")]
+    {
+        macro_rules! check {
+            ($($f:tt),*) => {$(
+                if cfg!(target_feature = $f) && !std::arch::is_x86_feature_detected!($f) {
+                    missing.push($f);
+                }
+            )*};
+        }
+        check!(
+            "sse3", "ssse3", "sse4.1", "sse4.2", "popcnt", "avx", "avx2", "fma", "bmi1", "bmi2",
+            "lzcnt", "f16c", "avx512f", "avx512bw", "avx512dq", "avx512vl"
+        );
+    }
+    missing
+}

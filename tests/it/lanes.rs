@@ -540,3 +540,16 @@ fn four_seatings_at_once_are_each_seatings_own() {
         }
     }
 }
+
+/// A build runs on the machine it was built for: no instruction-set
+/// extension it was compiled to use is missing here (the check the CLI
+/// makes before anything else), and the study's `auto` lanes follow what
+/// this build was compiled for.
+#[test]
+fn this_build_runs_here_and_auto_lanes_follow_the_build() {
+    use kinrepro::solve::quasistatic::{LANES_ARE_FAST, Lanes};
+    assert_eq!(kinrepro::lane::missing_cpu_features(), Vec::<&str>::new());
+    assert_eq!(Lanes::Auto.used(), cfg!(target_feature = "avx"));
+    assert_eq!(Lanes::Auto.used(), LANES_ARE_FAST);
+    assert!(Lanes::On.used() && !Lanes::Off.used());
+}

@@ -11,6 +11,16 @@ use std::process::ExitCode;
 use clap::Parser;
 
 fn main() -> ExitCode {
+    let missing = kinrepro::lane::missing_cpu_features();
+    if !missing.is_empty() {
+        say(&format!(
+            "error: this kinrepro was built for a CPU with {} and this CPU lacks them; build it \
+             here (cargo build --release), or for the oldest machine it must run on, e.g. \
+             RUSTFLAGS=\"-C target-cpu=x86-64-v2\" cargo build --release",
+            missing.join(", ")
+        ));
+        return ExitCode::from(2);
+    }
     // Temporaries modified before now are an earlier run's (`output::temporaries`).
     kinrepro::output::temporaries::run_started();
     let cli = match flags::Cli::try_parse() {
