@@ -4,8 +4,8 @@
 use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
-use kinrepro::study::{Sampler, Shard, StudyOptions};
 use kinrepro::solve::quasistatic::Lanes;
+use kinrepro::study::{Sampler, Shard, StudyOptions};
 
 /// The design of each scene's study (`study`, `sweep`).
 #[derive(Args)]
