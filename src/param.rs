@@ -55,6 +55,8 @@ pub enum Param {
     MaxIterations,
     /// The searches of an optimisation per combination of listed values.
     Starts,
+    /// Whether a study seats four samples at a time in SIMD lanes.
+    Lanes,
 }
 
 impl Param {
@@ -91,6 +93,7 @@ impl Param {
             Param::Cycle => "cycle",
             Param::MaxIterations => "max_iterations",
             Param::Starts => "starts",
+            Param::Lanes => "lanes",
         }
     }
 

@@ -282,6 +282,7 @@ def study(
     sobol_samples: int | None = None,
     offset_bounds: Sequence[float] | None = None,
     tilt_bounds: Sequence[float] | None = None,
+    lanes: str = "auto",
 ) -> Study:
     """A reproducibility study (``kinrepro study``). ``samples``,
     ``sampler`` (``"lhs"``, ``"mc"``, ``"corners"``) and ``seed``: None takes
@@ -294,7 +295,10 @@ def study(
     ``increments`` fixed load increments) or ``"dynamic"``. ``sensitivity``: SRC and Sobol
     indices (``sobol_samples``: base sample size N, None: 32768).
     ``shard``: run one part (merge the parts with :func:`merge`).
-    ``jobs``: worker threads (None: all cores). The options are checked by
+    ``jobs``: worker threads (None: all cores). ``lanes``: ``"auto"``
+    (quasi-static samples four at a time in SIMD lanes where the build has
+    AVX), ``"on"`` or ``"off"``; the results are the same bits either way.
+    The options are checked by
     the library, as the CLI's flags are: a bad one raises KinreproError
     with the CLI's message, naming the flag (``--samples`` for
     ``samples``). GIL released; Ctrl-C raises KeyboardInterrupt."""

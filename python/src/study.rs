@@ -11,6 +11,7 @@ use crate::err;
 use crate::options::Keywords;
 use crate::whole::Whole;
 use kinrepro::error::parse_scene;
+use kinrepro::solve::quasistatic::Lanes;
 use kinrepro::study::StudyOptions;
 
 /// A reproducibility study: the document of `kinrepro study --format json`
@@ -361,7 +362,7 @@ impl Study {
     scene, samples = None, sampler = None, seed = None, vary = vec!["friction".to_string()],
     shard = None, jobs = None, solver = "quasi-static".to_string(), increments = None,
     path_tolerance = None, replicates = None, sensitivity = false, sobol_samples = None, offset_bounds = None,
-    tilt_bounds = None,
+    tilt_bounds = None, lanes = "auto".to_string(),
 ))]
 #[allow(clippy::too_many_arguments)]
 pub fn study(
@@ -381,6 +382,7 @@ pub fn study(
     sobol_samples: Option<Whole<usize>>,
     offset_bounds: Option<[f64; 3]>,
     tilt_bounds: Option<[f64; 3]>,
+    lanes: String,
 ) -> PyResult<Study> {
     let samples = samples.map(Whole::get);
     let seed = seed.map(Whole::get);
@@ -397,6 +399,7 @@ pub fn study(
         tilt_bounds,
         sensitivity,
         sobol_samples,
+        lanes: lanes.parse::<Lanes>().map_err(err)?,
         ..Keywords { samples, sampler, seed, shard, increments, path_tolerance, replicates }
             .options()?
     };

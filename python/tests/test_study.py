@@ -179,6 +179,17 @@ def test_bad_options_raise(scene01):
         kinrepro.study(scene01, shard="5/4")
     with pytest.raises(kinrepro.KinreproError, match="jobs"):
         kinrepro.study(scene01, jobs=0)
+    with pytest.raises(kinrepro.KinreproError, match="lanes=sometimes: unknown, need auto, on or off"):
+        kinrepro.study(scene01, lanes="sometimes")
+
+
+def test_lanes_change_no_result(scene01):
+    # Four seatings at a time in SIMD lanes, or one at a time: the same
+    # records bit for bit (22 samples: five sets of four and two alone).
+    runs = [kinrepro.study(scene01, samples=22, sampler="mc", lanes=l, jobs=j)
+            for l, j in [("off", 1), ("on", 2), ("auto", 1)]]
+    assert runs[1].to_json() == runs[0].to_json()
+    assert runs[2].to_json() == runs[0].to_json()
 
 
 def test_scene_defaults_and_jobs(scene01, cli):

@@ -43,6 +43,19 @@ pub enum Lanes {
 /// lane operation is two 128-bit ones and the lanes are no faster.
 pub const LANES_ARE_FAST: bool = cfg!(target_feature = "avx");
 
+impl std::str::FromStr for Lanes {
+    type Err = crate::param::ParamError;
+
+    /// `auto`, `on`, `off`.
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        use crate::param::{Param, ParamError};
+        <Lanes as clap::ValueEnum>::from_str(s, false).map_err(|_| {
+            let msg = format!("{}: unknown, need auto, on or off", Param::Lanes.with(s));
+            ParamError::new(Param::Lanes, msg)
+        })
+    }
+}
+
 impl Lanes {
     /// Whether the seatings go in lanes.
     pub fn used(self) -> bool {
