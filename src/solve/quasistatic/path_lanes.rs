@@ -64,7 +64,7 @@ impl Solver<'_> {
         };
         let (mut s, mut t) = (0.0, 0.0);
         let mut last_step: Option<(Vector6<T>, f64)> = None;
-        let mut trial = Vec::new();
+        let (mut trial, mut roots) = (Vec::new(), Vec::with_capacity(states.len()));
         while s < 1.0 {
             let t_next = if t + nominal > 1.0 - 1e-12 { 1.0 } else { t + nominal };
             let s_next = if graded { t_next * t_next } else { t_next };
@@ -77,7 +77,8 @@ impl Solver<'_> {
             let predictor =
                 pose.moved(&dx.fixed_rows::<3>(0).into(), &dx.fixed_rows::<3>(3).into());
             let loads = Loads { lambda, extra, duration: (s_next - s) * self.ramp_time, s: s_next };
-            let roots: Vec<T> = states.iter().map(|st| load_roots(st.normal_force)).collect();
+            roots.clear();
+            roots.extend(states.iter().map(|st| load_roots(st.normal_force)));
             let inc = LaneIncrement { pose, states: &states, roots: &roots, frictions };
             let (new_pose, its) = self.newton_lanes(&inc, predictor, &loads, &mut trial)?;
             if (self.stick_slip_changed_lanes(&end.evals, &states, &trial) && can_halve)
