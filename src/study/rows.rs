@@ -1,6 +1,6 @@
-//! Seating a study's rows: one seating (or one per load of a set) per
-//! design row, rayon across rows, each row's outputs relative to the
-//! nominal seating ([`evaluate_rows`]). Quasi-static re-seatings without
+//! Seating a study's rows: each design row's sample seated (rayon across
+//! rows) and its outputs recorded relative to the nominal seating
+//! ([`evaluate_rows`]). Quasi-static re-seatings without
 //! a thermal cycle go four at a time in SIMD lanes
 //! ([`seat4_in`]: each lane the seating [`seat_in`] gives, bit for bit),
 //! in sample order, so that neither the lanes nor the number of jobs
