@@ -99,16 +99,15 @@ pub fn each_lane<A: SimdValue, R: SimdValue>(a: &A, f: impl Fn(A::Element) -> R:
     r
 }
 
-/// The value of lanes whose lane i is `lanes[i]` (one f64 value, vector
-/// or quaternion per lane; for f64, `lanes[0]`).
+/// The value of lanes whose lane i is the i-th of `lanes` (one f64
+/// value, vector or quaternion per lane; for f64, the first). `lanes`
+/// must not be empty.
 #[inline]
-pub fn gather<V: SimdValue>(lanes: &[V::Element]) -> V
-where
-    V::Element: Copy,
-{
-    let mut v = V::splat(lanes[0]);
-    for (i, x) in lanes.iter().enumerate().skip(1) {
-        v.replace(i, *x);
+pub fn gather<V: SimdValue>(lanes: impl IntoIterator<Item = V::Element>) -> V {
+    let mut lanes = lanes.into_iter();
+    let mut v = V::splat(lanes.next().expect("gather: no lanes"));
+    for (i, x) in lanes.enumerate() {
+        v.replace(i + 1, x);
     }
     v
 }

@@ -47,9 +47,10 @@ impl BodyPose {
 impl<T: Lane> BodyPose<T> {
     /// The pose of lanes whose lane i is `poses[i]`.
     pub fn from_lanes(poses: &[BodyPose]) -> Self {
-        let rotations: Vec<_> = poses.iter().map(|p| p.rotation).collect();
-        let translations: Vec<_> = poses.iter().map(|p| p.translation).collect();
-        BodyPose { rotation: gather(&rotations), translation: gather(&translations) }
+        BodyPose {
+            rotation: gather(poses.iter().map(|p| p.rotation)),
+            translation: gather(poses.iter().map(|p| p.translation)),
+        }
     }
 
     /// Lane `i`'s pose.

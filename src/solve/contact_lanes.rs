@@ -41,18 +41,12 @@ pub struct LaneState<T: Lane> {
 impl<T: Lane> LaneState<T> {
     /// Lane i holds `states[i]` (one state per lane).
     pub fn from_states(states: &[&TangentialState]) -> Self {
-        let of = |f: &dyn Fn(&TangentialState) -> f64| {
-            gather::<T>(&states.iter().map(|s| f(s)).collect::<Vec<_>>())
-        };
-        let v3 = |f: &dyn Fn(&TangentialState) -> Vector3<f64>| {
-            gather::<Vector3<T>>(&states.iter().map(|s| f(s)).collect::<Vec<_>>())
-        };
         LaneState {
-            normal: v3(&|s| s.normal),
-            force: v3(&|s| s.force),
-            sliding: gather(&states.iter().map(|s| s.sliding).collect::<Vec<_>>()),
-            normal_force: of(&|s| s.normal_force),
-            slip_velocity: of(&|s| s.slip_velocity),
+            normal: gather(states.iter().map(|s| s.normal)),
+            force: gather(states.iter().map(|s| s.force)),
+            sliding: gather(states.iter().map(|s| s.sliding)),
+            normal_force: gather(states.iter().map(|s| s.normal_force)),
+            slip_velocity: gather(states.iter().map(|s| s.slip_velocity)),
         }
     }
 
@@ -84,12 +78,9 @@ impl<T: Lane> LaneFriction<T> {
     /// first's: a coupling's contacts share their law, an increment its
     /// duration).
     pub fn from_frictions(frictions: &[&Friction]) -> Self {
-        let of = |f: &dyn Fn(&Friction) -> f64| {
-            gather::<T>(&frictions.iter().map(|x| f(x)).collect::<Vec<_>>())
-        };
         LaneFriction {
-            mu_s: of(&|f| f.mu_s),
-            mu_d: of(&|f| f.mu_d),
+            mu_s: gather(frictions.iter().map(|f| f.mu_s)),
+            mu_d: gather(frictions.iter().map(|f| f.mu_d)),
             law: frictions[0].law,
             duration: frictions[0].duration,
         }

@@ -57,15 +57,14 @@ pub fn evaluate_rows<'a>(
             }
             let samples: Vec<Sample> =
                 set.iter().map(|(_, row)| s.variation.sample(scene, coupling, row)).collect();
-            let mut lanes: Vec<Option<Result<SeatedPose, SolveError>>> = match (four, &samples[..])
-            {
+            let lanes: Vec<Option<Result<SeatedPose, SolveError>>> = match (four, &samples[..]) {
                 (Some(o), [a, b, c, d]) => {
                     let loads = [&a.load, &b.load, &c.load, &d.load];
                     seat4_in(&r.setup, loads, o, ws).map(Some).into()
                 }
                 _ => samples.iter().map(|_| None).collect(),
             };
-            let records = set.iter().zip(samples).zip(lanes.drain(..));
+            let records = set.iter().zip(samples).zip(lanes);
             records.map(|((row, sample), seated)| r.record(ws, row, sample, seated)).collect()
         })
         .collect::<Result<Vec<Vec<_>>, StudyError>>()?;

@@ -26,9 +26,7 @@ use crate::solve::contact_lanes::{LaneContact, LaneFriction, LaneState, evaluate
 use crate::solve::contact_layer::Motion;
 
 /// The committed side of an increment in lanes: the pose, each contact's
-/// state, its normal force's cube root and its friction. (The lanes' path
-/// follower, next, is its first caller outside the tests.)
-#[cfg_attr(not(test), allow(dead_code))]
+/// state, its normal force's cube root and its friction.
 pub(super) struct LaneIncrement<'a, T: Lane> {
     pub pose: &'a BodyPose<T>,
     pub states: &'a [LaneState<T>],
@@ -36,7 +34,6 @@ pub(super) struct LaneIncrement<'a, T: Lane> {
     pub frictions: &'a [LaneFriction<T>],
 }
 
-#[cfg_attr(not(test), allow(dead_code))]
 impl Solver<'_> {
     /// Newton from `start` on the increment with `loads`: the converged
     /// pose and iteration count of each lane, its contacts left in

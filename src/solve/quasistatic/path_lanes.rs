@@ -23,7 +23,6 @@ use crate::lane::{Lane, Mask, lift, splat};
 use crate::solve::contact_lanes::{LaneContact, LaneFriction, LaneState};
 
 /// The end of a seating's path in lanes (each field per lane).
-#[cfg_attr(not(test), allow(dead_code))]
 pub(super) struct LaneEnd<T: Lane> {
     pub pose: BodyPose<T>,
     /// Accepted increments (the schedule's: every lane's).
@@ -37,7 +36,6 @@ pub(super) struct LaneEnd<T: Lane> {
     pub evals: Vec<LaneContact<T>>,
 }
 
-#[cfg_attr(not(test), allow(dead_code))]
 impl Solver<'_> {
     /// The seating's path from `start` with the contacts' `virgin` states
     /// and `frictions`, in lanes (module docs).
