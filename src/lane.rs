@@ -148,3 +148,16 @@ pub fn missing_cpu_features() -> Vec<&'static str> {
     }
     missing
 }
+
+/// Why this build cannot run on this CPU, if it cannot
+/// ([`missing_cpu_features`]); each front end adds how to build one that
+/// can.
+pub fn cpu_mismatch() -> Option<String> {
+    let missing = missing_cpu_features();
+    (!missing.is_empty()).then(|| {
+        format!(
+            "this kinrepro was built for a CPU with {} and this CPU lacks them",
+            missing.join(", ")
+        )
+    })
+}

@@ -38,13 +38,10 @@ pub(crate) fn err(e: impl std::fmt::Display) -> PyErr {
 fn _kinrepro(m: &Bound<'_, PyModule>) -> PyResult<()> {
     // Built for the CPU it was built on: on an older one, say so at import
     // rather than stop on an illegal instruction later.
-    let missing = kinrepro::lane::missing_cpu_features();
-    if !missing.is_empty() {
+    if let Some(why) = kinrepro::lane::cpu_mismatch() {
         return Err(pyo3::exceptions::PyImportError::new_err(format!(
-            "this kinrepro was built for a CPU with {} and this CPU lacks them; build it here \
-             (pip install ./python), or for the oldest machine it must run on, e.g. with \
-             RUSTFLAGS=\"-C target-cpu=x86-64-v2\"",
-            missing.join(", ")
+            "{why}; build it here (pip install ./python), or for the oldest machine it must run \
+             on, e.g. with RUSTFLAGS=\"-C target-cpu=x86-64-v2\""
         )));
     }
     m.add("__version__", kinrepro::study::provenance::VERSION)?;

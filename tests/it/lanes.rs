@@ -549,6 +549,7 @@ fn four_seatings_at_once_are_each_seatings_own() {
 fn this_build_runs_here_and_auto_lanes_follow_the_build() {
     use kinrepro::solve::quasistatic::{LANES_ARE_FAST, Lanes};
     assert_eq!(kinrepro::lane::missing_cpu_features(), Vec::<&str>::new());
+    assert_eq!(kinrepro::lane::cpu_mismatch(), None);
     assert_eq!(Lanes::Auto.used(), cfg!(target_feature = "avx"));
     assert_eq!(Lanes::Auto.used(), LANES_ARE_FAST);
     assert!(Lanes::On.used() && !Lanes::Off.used());

@@ -11,13 +11,10 @@ use std::process::ExitCode;
 use clap::Parser;
 
 fn main() -> ExitCode {
-    let missing = kinrepro::lane::missing_cpu_features();
-    if !missing.is_empty() {
+    if let Some(why) = kinrepro::lane::cpu_mismatch() {
         say(&format!(
-            "error: this kinrepro was built for a CPU with {} and this CPU lacks them; build it \
-             here (cargo build --release), or for the oldest machine it must run on, e.g. \
-             RUSTFLAGS=\"-C target-cpu=x86-64-v2\" cargo build --release",
-            missing.join(", ")
+            "error: {why}; build it here (cargo build --release), or for the oldest machine it \
+             must run on, e.g. RUSTFLAGS=\"-C target-cpu=x86-64-v2\" cargo build --release"
         ));
         return ExitCode::from(2);
     }
